@@ -1,0 +1,2 @@
+/* stub: to be written */
+typedef int acbb_stub_scene;
