@@ -1,2 +1,46 @@
-/* stub: to be written */
-typedef int acbb_stub_kinematics;
+/* acbb — Level 1 (race control) ball kinematics, MODEL.md section 4. */
+#include <math.h>
+#include "acbb/kinematics.h"
+
+void acbb_kinematics_race_control(double alpha_i, double alpha_o, double D, double dm,
+                                  double omega_i, acbb_control control, acbb_kin *k)
+{
+    double g = D / dm; /* gamma' */
+    double si = sin(alpha_i), ci = cos(alpha_i), so = sin(alpha_o), co = cos(alpha_o);
+    double tb = control == ACBB_CONTROL_OUTER ? so / (co + g) : si / (ci - g);
+    double beta = atan(tb);
+    double ratio = 1.0 / (1.0 + (1.0 + g * co) * (ci + tb * si)
+                                    / ((1.0 - g * ci) * (co + tb * so)));
+    double wm = ratio * omega_i;
+    double wR = wm * (1.0 + g * co) / (g * cos(alpha_o - beta));
+    double rm = 0.5 * dm;
+
+    k->beta = beta;
+    k->omega_m = wm;
+    k->omega_R = wR;
+    k->wx = -wR * cos(beta);
+    k->wy = 0.0;
+    k->wz = wR * sin(beta);
+    k->spin_o = wm * so - wR * sin(alpha_o - beta);
+    k->spin_i = (omega_i - wm) * si + wR * sin(alpha_i - beta);
+    k->roll_o = wR * cos(alpha_o - beta);
+    k->roll_i = wR * cos(alpha_i - beta);
+    k->u_o = 0.5 * (0.5 * D * k->roll_o + wm * (rm + 0.5 * D * co));
+    k->u_i = 0.5 * (0.5 * D * k->roll_i + (omega_i - wm) * (rm - 0.5 * D * ci));
+}
+
+acbb_control acbb_race_control_choose(double Qi, double ai, double Ei, double Qo, double ao,
+                                      double Eo, double alpha_i, double alpha_o,
+                                      acbb_control previous)
+{
+    /* Jones: outer control if Qo ao Eo cos(ai - ao) > Qi ai Ei. A +-5 % band
+     * keeps the choice from chattering between steps (MODEL.md section 11). */
+    double lhs = Qo * ao * Eo * cos(alpha_i - alpha_o);
+    double rhs = Qi * ai * Ei;
+    if (rhs <= 0.0)
+        return ACBB_CONTROL_OUTER;
+    double r = lhs / rhs;
+    if (previous == ACBB_CONTROL_OUTER)
+        return r < 0.95 ? ACBB_CONTROL_INNER : ACBB_CONTROL_OUTER;
+    return r > 1.05 ? ACBB_CONTROL_OUTER : ACBB_CONTROL_INNER;
+}

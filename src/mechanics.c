@@ -1,2 +1,527 @@
-/* stub: to be written */
-typedef int acbb_stub_mechanics;
+/* acbb — quasi-static Jones-Harris equilibrium, MODEL.md section 3.
+ *
+ * Two levels as in [HK-AC]: per ball a 2x2 system in the ball-centre
+ * position (X1, X2) (GSL hybrids, unknowns in micrometres so the finite-
+ * difference Jacobian steps are sensible), inside a ring equilibrium over
+ * the force-controlled inner-ring DOFs (GSL Brent for the common pure-thrust
+ * case where every ball is identical, GSL hybrids otherwise). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
+#include <gsl/gsl_roots.h>
+#include <gsl/gsl_vector.h>
+#include "acbb/mechanics.h"
+
+#define UM 1e-6          /* unknowns of the ball problem are in um */
+#define MRAD 1e-3
+#define MAX_RING_DOF 3
+
+struct acbb_mech {
+    acbb_geometry g;
+    int centrifugal, gyroscopic;
+    acbb_race_control race;
+    acbb_hertz_mode hertz;
+    acbb_geom_mode geom;
+    double tol;
+    double Fx, Fz, My;          /* applied loads on the IR */
+    int fix_axial;
+    double dx_fixed;
+    int dof_dz, dof_thy;        /* active ring DOFs besides dx */
+    gsl_multiroot_fsolver *ball_solver;
+    gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
+    gsl_root_fsolver *brent;
+    /* context of the solve in progress */
+    double omega;
+    const acbb_expansion *e;
+    acbb_mech_state *trial;
+    acbb_status inner_status;
+};
+
+typedef struct {
+    const acbb_mech *m;
+    acbb_ball_state *b;
+    double A1, A2;
+    acbb_thermal_offsets off;
+} ball_ctx;
+
+static double pos15(double d) { return d > 0.0 ? d * sqrt(d) : 0.0; }
+
+static void zeta_split(acbb_control c, acbb_race_control mode, double *zi, double *zo)
+{
+    if (mode == ACBB_RACE_EQUAL) { *zi = 1.0; *zo = 1.0; return; }
+    if (c == ACBB_CONTROL_INNER) { *zi = 2.0; *zo = 0.0; return; }
+    *zi = 0.0; *zo = 2.0;
+}
+
+/* Evaluate the ball at (X1, X2): loads, angles, kinematics, body forces.
+ * Writes b and returns the two ball-equilibrium residuals (N). */
+static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, double *r2)
+{
+    const acbb_mech *m = c->m;
+    const acbb_geometry *g = &m->g;
+    acbb_ball_state *b = c->b;
+    double Lo = hypot(X1, X2);
+    double xi = c->A1 - X1, zi = c->A2 - X2;
+    double Li = hypot(xi, zi);
+    b->X1 = X1;
+    b->X2 = X2;
+    b->delta_o = Lo - (g->lambda_o - 0.5 * g->D - c->off.dL_o);
+    b->delta_i = Li - (g->lambda_i - 0.5 * g->D - c->off.dL_i);
+    b->alpha_o = atan2(X1, X2);
+    b->alpha_i = atan2(xi, zi);
+    b->Qo = b->hc_o.Kc * pos15(b->delta_o);
+    b->Qi = b->hc_i.Kc * pos15(b->delta_i);
+    acbb_kinematics_race_control(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega,
+                                 b->control, &b->kin);
+    double wm = b->kin.omega_m;
+    b->Fc = m->centrifugal ? g->mass * (g->Re_o + X2) * wm * wm : 0.0;
+    b->Mg = m->gyroscopic ? g->J * wm * b->kin.wz : 0.0;
+    double zi_, zo_;
+    zeta_split(b->control, m->race, &zi_, &zo_);
+    double si = sin(b->alpha_i), ci = cos(b->alpha_i);
+    double so = sin(b->alpha_o), co = cos(b->alpha_o);
+    double mg = b->Mg / g->D;
+    *r1 = b->Qi * si - b->Qo * so + mg * (zi_ * ci - zo_ * co);
+    *r2 = b->Qi * ci - b->Qo * co + b->Fc + mg * (zo_ * so - zi_ * si);
+}
+
+static int ball_f(const gsl_vector *x, void *p, gsl_vector *f)
+{
+    const ball_ctx *c = p;
+    double r1, r2;
+    ball_eval(c, gsl_vector_get(x, 0) * UM, gsl_vector_get(x, 1) * UM, &r1, &r2);
+    if (!isfinite(r1) || !isfinite(r2))
+        return GSL_EBADFUNC;
+    gsl_vector_set(f, 0, r1);
+    gsl_vector_set(f, 1, r2);
+    return GSL_SUCCESS;
+}
+
+/* Force scale for the ball residual test: one ball's share of the load,
+ * at least 1 N (MODEL.md section 3 tolerance 1e-8 max(Q, 1 N)). */
+static double ball_force_scale(const acbb_mech *m)
+{
+    double F = fabs(m->Fx) + fabs(m->Fz);
+    return fmax(F / m->g.Z, 1.0);
+}
+
+/* Park a ball whose contacts are both open (zero speed under radial load):
+ * centre on the line between the groove centres, touching nothing. */
+static void ball_freeze(ball_ctx *c)
+{
+    const acbb_geometry *g = &c->m->g;
+    double L = hypot(c->A1, c->A2);
+    double Lo = g->lambda_o - 0.5 * g->D - c->off.dL_o;
+    double r1, r2;
+    ball_eval(c, c->A1 / L * Lo, c->A2 / L * Lo, &r1, &r2);
+    c->b->Qi = c->b->Qo = 0.0;
+    c->b->loaded = 0;
+}
+
+static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, double A2)
+{
+    ball_ctx c = { .m = m, .b = b, .A1 = A1, .A2 = A2 };
+    acbb_geometry_offsets(&m->g, m->geom, m->e, b->alpha_i, b->alpha_o, &c.off);
+    /* A1, A2 were built with the nominal A0; SEED mode swaps in its A0'. */
+    c.A1 += (c.off.A0 - m->g.A0) * sin(m->g.alpha0) + c.off.dA1;
+    c.A2 += (c.off.A0 - m->g.A0) * cos(m->g.alpha0) + c.off.dA2;
+
+    /* Quick exit: no speed and no inner contact possible -> frozen ball. */
+    double Lmax = (m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o)
+                + (m->g.lambda_i - 0.5 * m->g.D - c.off.dL_i);
+    if (m->omega == 0.0 && hypot(c.A1, c.A2) <= Lmax) {
+        ball_freeze(&c);
+        return ACBB_OK;
+    }
+    double x0[2] = { b->X1 / UM, b->X2 / UM };
+    gsl_vector_view xv = gsl_vector_view_array(x0, 2);
+    gsl_multiroot_function F = { ball_f, 2, &c };
+    gsl_multiroot_fsolver *s = m->ball_solver;
+    if (gsl_multiroot_fsolver_set(s, &F, &xv.vector) != GSL_SUCCESS)
+        return ACBB_DIVERGED;
+    double tol = fmax(m->tol, 1e-14) * ball_force_scale(m);
+    int status = gsl_multiroot_test_residual(s->f, tol);
+    for (int it = 0; status == GSL_CONTINUE && it < 200; it++) {
+        if (gsl_multiroot_fsolver_iterate(s) != GSL_SUCCESS)
+            break;
+        status = gsl_multiroot_test_residual(s->f, tol);
+    }
+    if (status != GSL_SUCCESS) {
+        /* Accept a stalled solve that is within 1e3 x tol (round-off floor). */
+        if (gsl_multiroot_test_residual(s->f, 1e3 * tol) != GSL_SUCCESS)
+            return ACBB_DIVERGED;
+    }
+    double r1, r2;
+    ball_eval(&c, gsl_vector_get(s->x, 0) * UM, gsl_vector_get(s->x, 1) * UM, &r1, &r2);
+    b->loaded = b->Qi > 0.0 || b->Qo > 0.0;
+    return ACBB_OK;
+}
+
+/* Groove-centre offsets of ball j for ring displacements (MODEL.md 3). */
+static void ring_offsets(const acbb_mech *m, const acbb_mech_state *st, double psi,
+                         double *A1, double *A2)
+{
+    const acbb_geometry *g = &m->g;
+    *A1 = g->A0 * sin(g->alpha0) + st->dx
+        + g->Re_i * (st->thy * cos(psi) + st->thz * sin(psi));
+    *A2 = g->A0 * cos(g->alpha0) + st->dz * cos(psi) - st->dy * sin(psi);
+}
+
+/* Solve every (distinct) ball and sum the ring reactions. */
+static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
+{
+    const acbb_geometry *g = &m->g;
+    int nb = st->symmetric ? 1 : st->n;
+    st->Fx = st->Fy = st->Fz = st->My = st->Mz = 0.0;
+    for (int j = 0; j < nb; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        double A1, A2;
+        ring_offsets(m, st, b->psi, &A1, &A2);
+        acbb_status rc = ball_solve(m, b, A1, A2);
+        if (rc != ACBB_OK)
+            return rc;
+        double zi, zo;
+        zeta_split(b->control, m->race, &zi, &zo);
+        double si = sin(b->alpha_i), ci = cos(b->alpha_i);
+        double mg = b->Mg / g->D;
+        double ax = b->Qi * si + zi * mg * ci;
+        double rad = b->Qi * ci - zi * mg * si;
+        double w = st->symmetric ? st->n : 1.0;
+        st->Fx += w * ax;
+        st->Fz += w * rad * cos(b->psi);
+        st->Fy -= w * rad * sin(b->psi);
+        double mom = g->Re_i * ax - zi * g->f_i * b->Mg;
+        st->My += w * mom * cos(b->psi);
+        st->Mz += w * mom * sin(b->psi);
+    }
+    if (st->symmetric) {
+        st->Fz = st->Fy = st->My = st->Mz = 0.0;
+        for (int j = 1; j < st->n; j++) {
+            double psi = st->ball[j].psi;
+            st->ball[j] = st->ball[0];
+            st->ball[j].psi = psi;
+        }
+    }
+    return ACBB_OK;
+}
+
+/* ---- ring equilibrium ---- */
+
+static void ring_set(acbb_mech *m, acbb_mech_state *st, const double *x)
+{
+    int k = 0;
+    if (!m->fix_axial) st->dx = x[k++] * UM;
+    if (m->dof_dz) st->dz = x[k++] * UM;
+    if (m->dof_thy) st->thy = x[k++] * MRAD;
+}
+
+static int ring_dof(const acbb_mech *m)
+{
+    return !m->fix_axial + m->dof_dz + m->dof_thy;
+}
+
+static double ring_force_scale(const acbb_mech *m)
+{
+    return fmax(fabs(m->Fx) + fabs(m->Fz), 1.0);
+}
+
+static int ring_f(const gsl_vector *x, void *p, gsl_vector *f)
+{
+    acbb_mech *m = p;
+    acbb_mech_state *st = m->trial;
+    ring_set(m, st, x->data);
+    acbb_status rc = solve_balls(m, st);
+    if (rc != ACBB_OK) {
+        m->inner_status = rc;
+        return GSL_EBADFUNC;
+    }
+    int k = 0;
+    if (!m->fix_axial) gsl_vector_set(f, k++, m->Fx - st->Fx);
+    if (m->dof_dz) gsl_vector_set(f, k++, m->Fz - st->Fz);
+    if (m->dof_thy) gsl_vector_set(f, k++, (m->My - st->My) / m->g.Re_i);
+    return GSL_SUCCESS;
+}
+
+static double thrust_residual(double dx_um, void *p)
+{
+    acbb_mech *m = p;
+    m->trial->dx = dx_um * UM;
+    acbb_status rc = solve_balls(m, m->trial);
+    if (rc != ACBB_OK) {
+        m->inner_status = rc;
+        return NAN;
+    }
+    return m->trial->Fx - m->Fx;
+}
+
+/* Pure thrust on identical balls: 1-D, monotone in dx, so a bracketed
+ * Brent solve is both robust and cheap. */
+static acbb_status solve_thrust(acbb_mech *m, acbb_mech_state *st)
+{
+    double x = st->dx / UM;
+    double fx = thrust_residual(x, m);
+    if (!isfinite(fx)) return m->inner_status;
+    if (fabs(fx) <= m->tol * ring_force_scale(m))
+        return ACBB_OK;
+    double step = 0.05 + 1e-3 * fabs(x), lo = x, hi = x, flo = fx, fhi = fx;
+    for (int i = 0; i < 60 && flo * fhi > 0.0; i++) {
+        if (fx > 0.0) { hi = lo; fhi = flo; lo -= step; flo = thrust_residual(lo, m); }
+        else { lo = hi; flo = fhi; hi += step; fhi = thrust_residual(hi, m); }
+        if (!isfinite(flo) || !isfinite(fhi)) return m->inner_status;
+        step *= 2.0;
+    }
+    if (flo * fhi > 0.0)
+        return ACBB_DIVERGED;
+    gsl_function F = { thrust_residual, m };
+    if (gsl_root_fsolver_set(m->brent, &F, lo, hi) != GSL_SUCCESS)
+        return ACBB_DIVERGED;
+    for (int it = 0; it < 200; it++) {
+        if (gsl_root_fsolver_iterate(m->brent) != GSL_SUCCESS)
+            return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+        double r = gsl_root_fsolver_root(m->brent);
+        double a = gsl_root_fsolver_x_lower(m->brent), b = gsl_root_fsolver_x_upper(m->brent);
+        double fr = thrust_residual(r, m);
+        if (fabs(fr) <= m->tol * ring_force_scale(m) || b - a < 1e-12 * (1.0 + fabs(r)))
+            return ACBB_OK;
+    }
+    return ACBB_DIVERGED;
+}
+
+static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
+{
+    int n = ring_dof(m);
+    m->trial = st;
+    m->inner_status = ACBB_OK;
+    if (n == 0)
+        return solve_balls(m, st);
+    if (n == 1 && !m->fix_axial)
+        return solve_thrust(m, st);
+    double x0[MAX_RING_DOF];
+    int k = 0;
+    if (!m->fix_axial) x0[k++] = st->dx / UM;
+    if (m->dof_dz) x0[k++] = st->dz / UM;
+    if (m->dof_thy) x0[k++] = st->thy / MRAD;
+    gsl_vector_view xv = gsl_vector_view_array(x0, n);
+    gsl_multiroot_function F = { ring_f, (size_t)n, m };
+    gsl_multiroot_fsolver *s = m->ring_solver[n];
+    if (gsl_multiroot_fsolver_set(s, &F, &xv.vector) != GSL_SUCCESS)
+        return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+    double tol = m->tol * ring_force_scale(m);
+    int status = gsl_multiroot_test_residual(s->f, tol);
+    for (int it = 0; status == GSL_CONTINUE && it < 300; it++) {
+        if (gsl_multiroot_fsolver_iterate(s) != GSL_SUCCESS)
+            break;
+        status = gsl_multiroot_test_residual(s->f, tol);
+    }
+    if (status != GSL_SUCCESS && gsl_multiroot_test_residual(s->f, 1e3 * tol) != GSL_SUCCESS)
+        return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+    ring_set(m, st, s->x->data);
+    return solve_balls(m, st); /* leave st exactly at the accepted root */
+}
+
+/* ---- Hertz constants at the operating angles ---- */
+
+static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st)
+{
+    const acbb_geometry *g = &m->g;
+    int nb = st->symmetric ? 1 : st->n;
+    for (int j = 0; j < nb; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        double Rx, Ry;
+        acbb_contact_radii(g->D, g->dm, b->alpha_i, g->f_i, 1, &Rx, &Ry);
+        acbb_status rc = acbb_hertz_const_compute(Rx, Ry, g->E_eff, m->hertz, &b->hc_i);
+        if (rc != ACBB_OK) return rc;
+        acbb_contact_radii(g->D, g->dm, b->alpha_o, g->f_o, 0, &Rx, &Ry);
+        rc = acbb_hertz_const_compute(Rx, Ry, g->E_eff, m->hertz, &b->hc_o);
+        if (rc != ACBB_OK) return rc;
+    }
+    return ACBB_OK;
+}
+
+static void finish_contacts(const acbb_mech *m, acbb_mech_state *st)
+{
+    for (int j = 0; j < st->n; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        acbb_hertz_from_load(&b->hc_i, b->Qi, &b->ct_i);
+        acbb_hertz_from_load(&b->hc_o, b->Qo, &b->ct_o);
+        if (m->race == ACBB_RACE_AUTO && b->loaded)
+            b->control = acbb_race_control_choose(b->Qi, b->ct_i.a, b->hc_i.E, b->Qo,
+                                                  b->ct_o.a, b->hc_o.E, b->alpha_i,
+                                                  b->alpha_o, b->control);
+    }
+}
+
+static int state_finite(const acbb_mech_state *st)
+{
+    for (int j = 0; j < st->n; j++) {
+        const acbb_ball_state *b = &st->ball[j];
+        if (!isfinite(b->Qi) || !isfinite(b->Qo) || !isfinite(b->alpha_i)
+            || !isfinite(b->alpha_o) || !isfinite(b->kin.omega_m))
+            return 0;
+    }
+    return isfinite(st->dx) && isfinite(st->dz) && isfinite(st->Fx);
+}
+
+acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
+                            acbb_mech_state *st, acbb_error *err)
+{
+    static const char *what = "mechanics";
+    acbb_mech_state *w = malloc(sizeof *w);
+    if (!w) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
+    *w = *st;
+    m->omega = omega_i;
+    m->e = e;
+    if (m->fix_axial) w->dx = m->dx_fixed;
+    acbb_status rc = ACBB_OK;
+    /* The Hertz constants depend on the operating angles: iterate the
+     * solve with refreshed constants until the angles stop moving. */
+    for (int pass = 0; pass < 8; pass++) {
+        double ai = w->ball[0].alpha_i, ao = w->ball[0].alpha_o;
+        if ((rc = refresh_hertz(m, w)) != ACBB_OK) break;
+        if ((rc = solve_ring(m, w)) != ACBB_OK) break;
+        if (fabs(w->ball[0].alpha_i - ai) < 1e-13 && fabs(w->ball[0].alpha_o - ao) < 1e-13)
+            break;
+    }
+    if (rc == ACBB_OK && !state_finite(w))
+        rc = ACBB_NONFINITE;
+    if (rc == ACBB_OK) {
+        int any = 0;
+        for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > 0.0;
+        if (!any && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || m->fix_axial))
+            rc = ACBB_CONTACT_LOST;
+    }
+    if (rc != ACBB_OK) {
+        free(w);
+        return acbb_error_set(err, rc, "%s: equilibrium %s at %.0f rpm", what,
+                              rc == ACBB_CONTACT_LOST ? "lost every inner contact"
+                                                      : "did not converge",
+                              omega_i * 30.0 / M_PI);
+    }
+    finish_contacts(m, w);
+    *st = *w;
+    free(w);
+    return ACBB_OK;
+}
+
+/* ---- set-up ---- */
+
+static double thrust_closed_form(double a, void *p)
+{
+    const double *q = p; /* Fx, Z, Kn, A0, alpha0 */
+    double c = cos(q[4]) / cos(a) - 1.0;
+    return q[1] * q[2] * pow(q[3], 1.5) * pow(fmax(c, 0.0), 1.5) * sin(a) - q[0];
+}
+
+double acbb_static_thrust_angle(double Fx, int Z, double Kn, double A0, double alpha0)
+{
+    double q[5] = { Fx, (double)Z, Kn, A0, alpha0 };
+    if (Fx <= 0.0) return alpha0;
+    gsl_function F = { thrust_closed_form, q };
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return NAN;
+    double lo = alpha0, hi = 0.5 * M_PI - 1e-9, r = NAN;
+    if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS) {
+        for (int it = 0; it < 200; it++) {
+            if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+            r = gsl_root_fsolver_root(s);
+            if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s),
+                                       gsl_root_fsolver_x_upper(s), 1e-15, 1e-14) == GSL_SUCCESS)
+                break;
+        }
+    }
+    gsl_root_fsolver_free(s);
+    return r;
+}
+
+acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
+{
+    acbb_mech *m = calloc(1, sizeof *m);
+    if (!m) return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
+    acbb_geometry_init(s, &m->g);
+    if (m->g.Z > ACBB_MECH_MAX_BALLS) {
+        int Z = m->g.Z;
+        free(m);
+        return acbb_error_set(err, ACBB_EINVAL, "bearing.n_balls = %d: at most %d supported",
+                              Z, ACBB_MECH_MAX_BALLS);
+    }
+    int dyn = s->model != ACBB_MODEL_STATIC;
+    m->centrifugal = dyn && s->centrifugal;
+    m->gyroscopic = dyn && s->gyroscopic;
+    m->race = s->race_control;
+    m->hertz = s->hertz;
+    m->geom = s->geometry;
+    m->tol = s->mech_tol;
+    m->Fx = s->axial_load;
+    m->Fz = s->radial_load;
+    m->My = s->moment_load;
+    m->dof_dz = s->radial_load != 0.0 || s->moment_load != 0.0;
+    m->dof_thy = s->moment_load != 0.0;
+    m->ball_solver = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, 2);
+    m->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    int ok = m->ball_solver && m->brent;
+    for (int n = 1; n <= MAX_RING_DOF; n++) {
+        m->ring_solver[n] = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n);
+        ok = ok && m->ring_solver[n];
+    }
+    if (!ok) {
+        acbb_mech_free(m);
+        return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
+    }
+    *out = m;
+    return ACBB_OK;
+}
+
+void acbb_mech_free(acbb_mech *m)
+{
+    if (!m) return;
+    if (m->ball_solver) gsl_multiroot_fsolver_free(m->ball_solver);
+    if (m->brent) gsl_root_fsolver_free(m->brent);
+    for (int n = 1; n <= MAX_RING_DOF; n++)
+        if (m->ring_solver[n]) gsl_multiroot_fsolver_free(m->ring_solver[n]);
+    free(m);
+}
+
+const acbb_geometry *acbb_mech_geometry(const acbb_mech *m) { return &m->g; }
+
+void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
+{
+    m->fix_axial = fixed;
+    m->dx_fixed = dx;
+}
+
+acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err)
+{
+    const acbb_geometry *g = &m->g;
+    memset(st, 0, sizeof *st);
+    st->n = g->Z;
+    st->symmetric = !m->dof_dz && !m->dof_thy;
+    acbb_race_control rc0 = m->race;
+    for (int j = 0; j < st->n; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        b->psi = 2.0 * M_PI * j / g->Z;
+        b->alpha_i = b->alpha_o = g->alpha0;
+        b->control = rc0 == ACBB_RACE_INNER ? ACBB_CONTROL_INNER : ACBB_CONTROL_OUTER;
+    }
+    acbb_status rc = refresh_hertz(m, st);
+    if (rc != ACBB_OK)
+        return acbb_error_set(err, rc, "mechanics: Hertz constants failed");
+    /* Static thrust guess [HK-EC]: K_n from both contacts, closed-form angle. */
+    acbb_ball_state *b0 = &st->ball[0];
+    double Kn = pow(pow(b0->hc_i.Kc, -2.0 / 3.0) + pow(b0->hc_o.Kc, -2.0 / 3.0), -1.5);
+    double Fx = m->fix_axial ? 0.0 : fmax(m->Fx, 1.0);
+    double a = acbb_static_thrust_angle(Fx, g->Z, Kn, g->A0, g->alpha0);
+    if (!isfinite(a)) a = g->alpha0;
+    double dn = g->A0 * (cos(g->alpha0) / cos(a) - 1.0);
+    double q = pow(fmax(dn, 0.0), 1.5) * Kn;
+    double Lo = g->lambda_o - 0.5 * g->D + pow(q / b0->hc_o.Kc, 2.0 / 3.0);
+    st->dx = m->fix_axial ? m->dx_fixed : (g->A0 + dn) * sin(a) - g->A0 * sin(g->alpha0);
+    for (int j = 0; j < st->n; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        b->alpha_i = b->alpha_o = a;
+        b->X1 = Lo * sin(a);
+        b->X2 = Lo * cos(a);
+    }
+    return acbb_mech_solve(m, 0.0, NULL, st, err);
+}

@@ -1,2 +1,564 @@
-/* stub: to be written */
-typedef int acbb_stub_sim;
+/* acbb — the coupled stepper of the seed's Fig. 5 (MODEL.md section 9).
+ *
+ * One step k: expansions from T^k -> mechanics (warm start) -> kinematics,
+ * film and the five losses -> heat sources -> backward-Euler thermal step
+ * to T^{k+1}. The coupling is lagged (mechanics at T^k); the time step
+ * adapts so that no node moves more than 2 K per step. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "acbb/sim.h"
+#include "acbb/mechanics.h"
+#include "acbb/network.h"
+#include "acbb/losses.h"
+#include "acbb/lubrication.h"
+#include "acbb/expansion.h"
+
+#define DT_MIN 0.05            /* s, MODEL.md section 9 */
+#define DT_MAX 30.0            /* s */
+#define DT_MAX_DT_K 2.0        /* reject a step that moves a node more than this */
+#define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
+#define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
+#define POLISH_ITERS 60        /* direct steady iterations after the transient */
+
+typedef struct {
+    acbb_contact_loss in, out;
+} ball_loss;
+
+struct acbb_sim {
+    acbb_scene s;
+    acbb_mech *mech;
+    acbb_mech_state ms;        /* last accepted mechanics */
+    acbb_network nw;
+    acbb_quad quad;
+    double T[ACBB_MAX_NODES];  /* T^k */
+    acbb_expansion exp;
+    ball_loss bl[ACBB_MAX_BALLS];
+    acbb_losses loss;
+    acbb_heat_sources heat;
+    double q[ACBB_MAX_NODES];
+    double heat_out;
+    double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_dFx;
+    int growth_count;
+    long iter;
+    int quiet;
+    acbb_run_state state;
+    acbb_status status;
+    char msg[256];
+};
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+static acbb_status fail(acbb_sim *sim, acbb_status st, const char *fmt, const char *detail)
+{
+    sim->state = ACBB_RUN_FAILED;
+    sim->status = st;
+    snprintf(sim->msg, sizeof sim->msg, fmt, detail);
+    return st;
+}
+
+/* ---- one evaluation of the mechanical/tribological state at T^k ---- */
+
+static void expansions(acbb_sim *sim)
+{
+    acbb_part_temps pt;
+    acbb_network_part_temps(&sim->nw, sim->T, &pt);
+    acbb_expansion_compute(&sim->s, &pt, &sim->exp);
+}
+
+static void contact_input(const acbb_sim *sim, const acbb_ball_state *b, int inner,
+                          acbb_contact_in *c)
+{
+    const acbb_geometry *g = acbb_mech_geometry(sim->mech);
+    const acbb_hertz_const *hc = inner ? &b->hc_i : &b->hc_o;
+    const acbb_hertz_contact *ct = inner ? &b->ct_i : &b->ct_o;
+    c->inner = inner;
+    c->Q = ct->Q;
+    c->a = ct->a;
+    c->b = ct->b;
+    c->pmax = ct->pmax;
+    c->delta = inner ? b->delta_i : b->delta_o;
+    c->alpha = inner ? b->alpha_i : b->alpha_o;
+    c->f = inner ? g->f_i : g->f_o;
+    c->D = g->D;
+    c->dm = g->dm;
+    c->Rx = hc->Rx;
+    c->kappa = hc->kappa;
+    c->E_eff = hc->E_eff;
+    c->roll = inner ? b->kin.roll_i : b->kin.roll_o;
+    c->race = inner ? sim->s.inner_speed - b->kin.omega_m : -b->kin.omega_m;
+    c->spin = inner ? b->kin.spin_i : b->kin.spin_o;
+    c->u = inner ? b->kin.u_i : b->kin.u_o;
+    c->omega_m = b->kin.omega_m;
+}
+
+/* The five losses at the current mechanics; fills sim->loss and heat. */
+static acbb_status losses(acbb_sim *sim)
+{
+    const acbb_scene *s = &sim->s;
+    double Tin_i, Tin_o;
+    acbb_network_inlet_temps(&sim->nw, sim->T, &Tin_i, &Tin_o);
+    acbb_oil_state oil_i, oil_o, oil_c;
+    acbb_oil_at(s, Tin_i, &oil_i);
+    acbb_oil_at(s, Tin_o, &oil_o);
+    int nb = sim->ms.symmetric ? 1 : sim->ms.n;
+    double w = sim->ms.symmetric ? sim->ms.n : 1.0;
+    acbb_losses L = { 0 };
+    acbb_heat_sources H = { 0 };
+    double wm_sum = 0.0;
+    for (int j = 0; j < nb; j++) {
+        const acbb_ball_state *b = &sim->ms.ball[j];
+        acbb_contact_in ci, co;
+        contact_input(sim, b, 1, &ci);
+        contact_input(sim, b, 0, &co);
+        ball_loss *bl = &sim->bl[j];
+        acbb_status rc = acbb_contact_losses(s, &sim->quad, &ci, &oil_i, &bl->in);
+        if (rc == ACBB_OK)
+            rc = acbb_contact_losses(s, &sim->quad, &co, &oil_o, &bl->out);
+        if (rc != ACBB_OK)
+            return rc;
+        L.shear += w * (bl->in.P_L + bl->out.P_L);
+        L.slip += w * (bl->in.P_t + bl->out.P_t);
+        L.spin += w * (bl->in.P_s + bl->out.P_s);
+        L.rolling += w * (bl->in.P_r + bl->out.P_r);
+        H.inner_contact += w * (bl->in.P_L + bl->in.P_t + bl->in.P_r);
+        H.outer_contact += w * (bl->out.P_L + bl->out.P_t + bl->out.P_r);
+        wm_sum += w * b->kin.omega_m;
+    }
+    if (sim->ms.symmetric)
+        for (int j = 1; j < sim->ms.n; j++) sim->bl[j] = sim->bl[0];
+    if (s->loss_drag) {
+        /* Each ball at its own orbital speed; drag heats the cavity air. */
+        acbb_mixture mix;
+        acbb_oil_at(s, sim->T[sim->nw.node_cavity], &oil_c);
+        acbb_mixture_at(s, &oil_c, &mix);
+        double wm = wm_sum / sim->ms.n;
+        L.drag = acbb_drag_loss(s, &mix, wm);
+    }
+    H.spin = L.spin;
+    H.drag = L.drag;
+    L.total = L.shear + L.slip + L.spin + L.rolling + L.drag;
+    L.inner = H.inner_contact;
+    L.outer = H.outer_contact;
+    if (!isfinite(L.total))
+        return ACBB_NONFINITE;
+    sim->loss = L;
+    sim->heat = H;
+    return ACBB_OK;
+}
+
+static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
+{
+    *in = (acbb_net_inputs){ 0 };
+    int n = 0;
+    double wm = 0.0;
+    for (int j = 0; j < sim->ms.n; j++) {
+        const acbb_ball_state *b = &sim->ms.ball[j];
+        wm += b->kin.omega_m;
+        if (b->Qi <= 0.0 && b->Qo <= 0.0) continue;
+        in->a_i += b->ct_i.a; in->b_i += b->ct_i.b;
+        in->a_o += b->ct_o.a; in->b_o += b->ct_o.b;
+        n++;
+    }
+    if (n > 0) {
+        in->a_i /= n; in->b_i /= n; in->a_o /= n; in->b_o /= n;
+    }
+    in->omega_i = sim->s.inner_speed;
+    in->omega_m = wm / sim->ms.n;
+    in->T_cavity_C = sim->T[sim->nw.node_cavity];
+}
+
+/* Mechanics + losses + network resistances at T^k. */
+static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
+{
+    if (sim->s.thermal_expansion || sim->s.ring_centrifugal)
+        expansions(sim);
+    else
+        sim->exp = (acbb_expansion){ 0 };
+    acbb_status rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+    if (rc != ACBB_OK) return rc;
+    rc = losses(sim);
+    if (rc != ACBB_OK)
+        return acbb_error_set(err, rc, "losses: non-finite value");
+    acbb_net_inputs in;
+    network_inputs(sim, &in);
+    rc = acbb_network_update(&sim->nw, &sim->s, &in);
+    if (rc != ACBB_OK)
+        return acbb_error_set(err, rc, "thermal network: update failed");
+    acbb_network_heat(&sim->nw, &sim->s, &sim->heat, sim->q);
+    return ACBB_OK;
+}
+
+/* ---- checks ---- */
+
+static double max_pmax(const acbb_mech_state *ms)
+{
+    double p = 0.0;
+    for (int j = 0; j < ms->n; j++)
+        p = fmax(p, fmax(ms->ball[j].ct_i.pmax, ms->ball[j].ct_o.pmax));
+    return p;
+}
+
+static int temps_finite(const double *T, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(T[i])) return 0;
+    return 1;
+}
+
+static acbb_status check_runaway(acbb_sim *sim, const double *T)
+{
+    char d[160];
+    for (int i = 0; i < sim->nw.n; i++)
+        if (T[i] > sim->s.temp_limit_C) {
+            snprintf(d, sizeof d, "node %s reached %.1f C (limit thermal.temp_limit_C = %.0f C) at t = %.0f s",
+                     sim->nw.names[i], T[i], sim->s.temp_limit_C, sim->time);
+            return fail(sim, ACBB_RUNAWAY, "thermal runaway: %s", d);
+        }
+    double p = max_pmax(&sim->ms);
+    if (p > PMAX_LIMIT) {
+        snprintf(d, sizeof d, "contact pressure %.2f GPa exceeds the 4.2 GPa static limit at t = %.0f s",
+                 p * 1e-9, sim->time);
+        return fail(sim, ACBB_RUNAWAY, "thermal runaway: %s", d);
+    }
+    if (sim->s.preload == ACBB_PRELOAD_DISPLACEMENT && sim->iter > 0) {
+        /* Rigid preload: a reaction that keeps growing faster and faster
+         * over 50 accepted steps is the runaway of MODEL.md section 9. */
+        double dF = sim->ms.Fx - sim->prev_Fx;
+        sim->growth_count = (dF > 0.0 && dF > sim->prev_dFx) ? sim->growth_count + 1 : 0;
+        sim->prev_dFx = dF;
+        if (sim->growth_count >= 50) {
+            snprintf(d, sizeof d, "axial reaction grows ever faster (%.0f N at t = %.0f s)",
+                     sim->ms.Fx, sim->time);
+            return fail(sim, ACBB_RUNAWAY, "thermal runaway: %s", d);
+        }
+    }
+    sim->prev_Fx = sim->ms.Fx;
+    return ACBB_OK;
+}
+
+/* ---- stepping ---- */
+
+static double max_change(const double *a, const double *b, int n)
+{
+    double m = 0.0;
+    for (int i = 0; i < n; i++) m = fmax(m, fabs(a[i] - b[i]));
+    return m;
+}
+
+/* Backward-Euler step with step rejection on large temperature moves. */
+static acbb_status thermal_step(acbb_sim *sim, double *Tn, double *dT)
+{
+    int n = sim->nw.n;
+    for (;;) {
+        memcpy(Tn, sim->T, sizeof(double) * n);
+        acbb_status rc = acbb_tnet_step(sim->nw.net, sim->q, sim->dt, Tn);
+        if (rc != ACBB_OK) return rc;
+        *dT = max_change(Tn, sim->T, n);
+        if (*dT <= DT_MAX_DT_K || sim->dt <= DT_MIN) return ACBB_OK;
+        sim->dt = fmax(0.5 * sim->dt, DT_MIN);
+    }
+}
+
+static acbb_status steady_step(acbb_sim *sim, double *Tn, double *dT)
+{
+    int n = sim->nw.n;
+    acbb_status rc = acbb_tnet_steady(sim->nw.net, sim->q, Tn);
+    if (rc != ACBB_OK) return rc;
+    /* Under-relaxed Picard (MODEL.md section 9, 0.5 in steady mode). */
+    for (int i = 0; i < n; i++) Tn[i] = sim->T[i] + 0.5 * (Tn[i] - sim->T[i]);
+    *dT = max_change(Tn, sim->T, n);
+    return ACBB_OK;
+}
+
+/* After the transient has settled, iterate the direct steady solve so the
+ * reported state balances energy to round-off (MODEL.md section 8.2). */
+static acbb_status polish(acbb_sim *sim, acbb_error *err)
+{
+    double Tn[ACBB_MAX_NODES], dT = 0.0;
+    for (int it = 0; it < POLISH_ITERS; it++) {
+        acbb_status rc = steady_step(sim, Tn, &dT);
+        if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
+        memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
+        rc = evaluate(sim, err);
+        if (rc != ACBB_OK) return rc;
+        if (dT < 1e-9) break;
+    }
+    return ACBB_OK;
+}
+
+static void finish_energy(acbb_sim *sim)
+{
+    sim->heat_out = acbb_tnet_heat_to_fixed(sim->nw.net, sim->T);
+}
+
+acbb_status acbb_sim_step(acbb_sim *sim)
+{
+    if (sim->state != ACBB_RUN_RUNNING)
+        return sim->status;
+    double t0 = now_ms();
+    acbb_error err = { "" };
+    double Tn[ACBB_MAX_NODES], dT = 0.0;
+    int steady_mode = sim->s.thermal_mode == ACBB_THERMAL_STEADY;
+    acbb_status rc = steady_mode ? steady_step(sim, Tn, &dT) : thermal_step(sim, Tn, &dT);
+    if (rc != ACBB_OK)
+        return fail(sim, rc, "thermal network: %s", acbb_status_name(rc));
+    if (!temps_finite(Tn, sim->nw.n))
+        return fail(sim, ACBB_NONFINITE, "%s", "non-finite temperature caught; last good state kept");
+    double step_dt = steady_mode ? 1.0 : sim->dt;
+    acbb_mech_state ms_keep = sim->ms;
+    double T_keep[ACBB_MAX_NODES];
+    memcpy(T_keep, sim->T, sizeof T_keep);
+    memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
+    rc = evaluate(sim, &err);
+    if (rc != ACBB_OK) {
+        sim->ms = ms_keep;
+        memcpy(sim->T, T_keep, sizeof T_keep);
+        evaluate(sim, &err); /* restore losses of the last good state */
+        return fail(sim, rc, "%s", err.msg[0] ? err.msg : acbb_status_name(rc));
+    }
+    sim->iter++;
+    if (!steady_mode) sim->time += sim->dt;
+    sim->residual = dT / step_dt;
+    if ((rc = check_runaway(sim, sim->T)) != ACBB_OK) {
+        sim->wall_ms += now_ms() - t0;
+        return rc;
+    }
+    double dP = fabs(sim->loss.total - sim->prev_total) / fmax(sim->loss.total, 1e-12);
+    sim->prev_total = sim->loss.total;
+    int quiet = steady_mode ? dT < 1e-7 && dP < 1e-9
+                            : sim->residual < sim->s.steady_tol && dP < 1e-4;
+    sim->quiet = quiet ? sim->quiet + 1 : 0;
+    if (!steady_mode) {
+        /* Grow while the losses barely move and nodes move < 0.5 K. */
+        if (dP > 0.05) sim->dt = fmax(0.5 * sim->dt, DT_MIN);
+        else if (dP < 0.005 && dT < 0.25 * DT_MAX_DT_K) sim->dt = fmin(1.5 * sim->dt, DT_MAX);
+    }
+    if (sim->quiet >= (steady_mode ? 3 : STEADY_COUNT)) {
+        rc = polish(sim, &err);
+        if (rc != ACBB_OK) {
+            sim->wall_ms += now_ms() - t0;
+            return fail(sim, rc, "%s", err.msg);
+        }
+        finish_energy(sim);
+        sim->state = ACBB_RUN_CONVERGED;
+        snprintf(sim->msg, sizeof sim->msg, "thermal steady state after %ld steps", sim->iter);
+    } else if (sim->iter >= sim->s.max_steps || sim->time >= sim->s.max_time) {
+        finish_energy(sim);
+        sim->wall_ms += now_ms() - t0;
+        char d[96];
+        snprintf(d, sizeof d, "%ld steps, %.0f s simulated", sim->iter, sim->time);
+        return fail(sim, ACBB_NOT_CONVERGED,
+                    "no steady state within the limits (%s); raise thermal.max_steps or thermal.max_time_s", d);
+    }
+    finish_energy(sim);
+    sim->wall_ms += now_ms() - t0;
+    return ACBB_OK;
+}
+
+acbb_run_state acbb_sim_state(const acbb_sim *sim) { return sim->state; }
+
+acbb_status acbb_sim_run(acbb_sim *sim)
+{
+    while (sim->state == ACBB_RUN_RUNNING)
+        acbb_sim_step(sim);
+    return sim->status;
+}
+
+/* ---- set-up ---- */
+
+static acbb_status check_supported(const acbb_scene *s, acbb_error *err)
+{
+    if (s->model == ACBB_MODEL_QUASI_DYNAMIC || s->model == ACBB_MODEL_DYNAMIC)
+        return acbb_error_set(err, ACBB_EINVAL,
+                              "fidelity.model = %s: not available yet; use quasi-static or static",
+                              acbb_model_level_name(s->model));
+    if (s->n_balls > ACBB_MAX_BALLS)
+        return acbb_error_set(err, ACBB_EINVAL, "bearing.n_balls = %d: at most %d supported",
+                              s->n_balls, ACBB_MAX_BALLS);
+    return ACBB_OK;
+}
+
+/* Displacement preload: fix dx at the value the preload force gives at
+ * zero speed and room temperature (MODEL.md section 1). */
+static acbb_status fix_preload(acbb_sim *sim, acbb_error *err)
+{
+    acbb_scene s0 = sim->s;
+    s0.axial_load = s0.preload_force;
+    s0.preload = ACBB_PRELOAD_FORCE;
+    acbb_mech *m0;
+    acbb_status rc = acbb_mech_new(&s0, &m0, err);
+    if (rc != ACBB_OK) return rc;
+    acbb_mech_state st;
+    rc = acbb_mech_init_state(m0, &st, err);
+    acbb_mech_free(m0);
+    if (rc != ACBB_OK) return rc;
+    acbb_mech_fix_axial(sim->mech, 1, st.dx);
+    return ACBB_OK;
+}
+
+/* Room-temperature mechanics at speed, reached by continuation in speed. */
+static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
+{
+    acbb_status rc = acbb_mech_init_state(sim->mech, &sim->ms, err);
+    if (rc != ACBB_OK) return rc;
+    for (int k = 1; k <= 4 && sim->s.inner_speed > 0.0; k++) {
+        rc = acbb_mech_solve(sim->mech, sim->s.inner_speed * k / 4.0, NULL, &sim->ms, err);
+        if (rc != ACBB_OK) return rc;
+    }
+    return ACBB_OK;
+}
+
+static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
+                            acbb_error *err)
+{
+    sim->s = *s;
+    acbb_status rc = acbb_scene_validate(s, err);
+    if (rc != ACBB_OK) return rc;
+    if ((rc = check_supported(s, err)) != ACBB_OK) return rc;
+    if ((rc = acbb_quad_init(&sim->quad, s->contact_grid)) != ACBB_OK)
+        return acbb_error_set(err, rc, "fidelity.contact_grid = %d: 1..%d", s->contact_grid,
+                              ACBB_QUAD_MAX);
+    if ((rc = acbb_network_build(s, &sim->nw, err)) != ACBB_OK) return rc;
+    if ((rc = acbb_mech_new(s, &sim->mech, err)) != ACBB_OK) return rc;
+    if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
+        return rc;
+    for (int i = 0; i < sim->nw.n; i++)
+        sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
+    if ((rc = initial_mechanics(sim, err)) != ACBB_OK) return rc;
+    if ((rc = evaluate(sim, err)) != ACBB_OK) return rc;
+    sim->dt = s->time_step;
+    sim->state = ACBB_RUN_RUNNING;
+    sim->status = ACBB_OK;
+    sim->prev_total = sim->loss.total;
+    sim->prev_Fx = sim->ms.Fx;
+    finish_energy(sim);
+    snprintf(sim->msg, sizeof sim->msg, "running");
+    return ACBB_OK;
+}
+
+static void sim_release(acbb_sim *sim)
+{
+    acbb_mech_free(sim->mech);
+    sim->mech = NULL;
+    if (sim->nw.net) acbb_network_free(&sim->nw);
+    sim->nw.net = NULL;
+}
+
+acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err)
+{
+    acbb_sim *sim = calloc(1, sizeof *sim);
+    if (!sim) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    acbb_status rc = sim_init(sim, s, NULL, err);
+    if (rc != ACBB_OK) {
+        sim_release(sim);
+        free(sim);
+        return rc;
+    }
+    *out = sim;
+    return ACBB_OK;
+}
+
+void acbb_sim_free(acbb_sim *sim)
+{
+    if (!sim) return;
+    sim_release(sim);
+    free(sim);
+}
+
+acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
+{
+    double T[ACBB_MAX_NODES];
+    int keep = warm && s->network == sim->s.network;
+    memcpy(T, sim->T, sizeof T);
+    acbb_sim *fresh = calloc(1, sizeof *fresh);
+    if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
+    if (rc != ACBB_OK) {
+        sim_release(fresh);
+        free(fresh);
+        return rc; /* the running sim is untouched */
+    }
+    sim_release(sim);
+    *sim = *fresh;
+    free(fresh);
+    return ACBB_OK;
+}
+
+/* ---- snapshot ---- */
+
+static double fin(double v) { return isfinite(v) ? v : 0.0; }
+
+static void ball_view(const acbb_sim *sim, int j, acbb_ball_view *v)
+{
+    const acbb_ball_state *b = &sim->ms.ball[j];
+    const ball_loss *bl = &sim->bl[j];
+    v->psi = b->psi;
+    v->Qi = b->Qi; v->Qo = b->Qo;
+    v->alpha_i = b->alpha_i; v->alpha_o = b->alpha_o;
+    v->slide_i = bl->in.slide; v->slide_o = bl->out.slide;
+    v->spin_i = b->kin.spin_i; v->spin_o = b->kin.spin_o;
+    v->film_i = bl->in.film.hc; v->film_o = bl->out.film.hc;
+    v->pmax_i = b->ct_i.pmax; v->pmax_o = b->ct_o.pmax;
+    v->a_i = b->ct_i.a; v->b_i = b->ct_i.b; v->a_o = b->ct_o.a; v->b_o = b->ct_o.b;
+    v->omega_m = b->kin.omega_m;
+    v->omega_x = b->kin.wx; v->omega_y = b->kin.wy; v->omega_z = b->kin.wz;
+    v->loss = bl->in.P_L + bl->in.P_t + bl->in.P_s + bl->in.P_r
+            + bl->out.P_L + bl->out.P_t + bl->out.P_s + bl->out.P_r;
+    double *f = &v->psi;
+    for (size_t k = 0; k < sizeof *v / sizeof(double); k++) f[k] = fin(f[k]);
+}
+
+void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
+{
+    const acbb_network *nw = &sim->nw;
+    memset(o, 0, sizeof *o);
+    o->state = sim->state;
+    o->status = sim->status;
+    snprintf(o->message, sizeof o->message, "%s", sim->msg);
+    o->iteration = sim->iter;
+    o->time = sim->time;
+    o->dt = sim->dt;
+    o->residual = fin(sim->residual);
+    o->wall_ms = sim->wall_ms;
+    o->n_nodes = nw->n;
+    o->node_names = nw->names;
+    for (int i = 0; i < nw->n; i++) o->T[i] = fin(sim->T[i]);
+    acbb_part_temps pt;
+    acbb_network_part_temps(nw, sim->T, &pt);
+    o->T_outer_ring = fin(sim->T[nw->node_outer_ring]);
+    o->T_inner_ring = fin(pt.inner_ring);
+    o->T_ball = fin(pt.ball);
+    o->T_housing = fin(pt.housing);
+    o->T_shaft = fin(pt.shaft);
+    o->T_cavity = fin(sim->T[nw->node_cavity]);
+    o->losses = sim->loss;
+    double *l = &o->losses.shear;
+    for (size_t k = 0; k < sizeof o->losses / sizeof(double); k++) l[k] = fin(l[k]);
+    o->exp_ball = fin(sim->exp.ball);
+    o->exp_inner = fin(sim->exp.inner);
+    o->exp_inner_cen = fin(sim->exp.inner_cen);
+    o->exp_outer = fin(sim->exp.outer);
+    o->delta_x = fin(sim->ms.dx);
+    o->delta_z = fin(sim->ms.dz);
+    o->reaction_x = fin(sim->ms.Fx);
+    o->heat_in = fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.spin
+                     + sim->heat.drag);
+    o->heat_out = fin(sim->heat_out);
+    o->n_balls = sim->ms.n;
+    for (int j = 0; j < sim->ms.n; j++) ball_view(sim, j, &o->balls[j]);
+}
+
+const char *acbb_run_status_name(const acbb_snapshot *snap)
+{
+    if (snap->state == ACBB_RUN_CONVERGED) return "converged";
+    if (snap->state == ACBB_RUN_RUNNING) return "running";
+    return acbb_status_name(snap->status);
+}

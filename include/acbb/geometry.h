@@ -1,0 +1,40 @@
+/* acbb — derived bearing geometry (MODEL.md section 1) and the thermal
+ * geometry terms of the seed's eqs (12)-(13) (MODEL.md section 3 table). */
+#ifndef ACBB_GEOMETRY_H
+#define ACBB_GEOMETRY_H
+
+#include "acbb/scene.h"
+#include "acbb/expansion.h"
+
+typedef struct {
+    double D, dm;               /* ball and pitch diameter, m */
+    int Z;                      /* balls */
+    double lambda_i, lambda_o;  /* groove radii, m */
+    double f_i, f_o;            /* groove curvature factors */
+    double A0;                  /* groove-centre distance lambda_i + lambda_o - D, m */
+    double alpha0;              /* free contact angle, rad */
+    double Pd;                  /* diametral clearance 2 A0 (1 - cos alpha0), m */
+    double d_i, d_o;            /* raceway diameters, m */
+    double Re_i, Re_o;          /* loci of groove curvature centres (radius), m */
+    double E_eff;               /* ball-ring effective modulus, Pa */
+    double mass, J;             /* ball mass (kg) and polar inertia (kg m^2) */
+} acbb_geometry;
+
+void acbb_geometry_init(const acbb_scene *s, acbb_geometry *g);
+
+/* Thermal offsets entering the compatibility equations for one ball. */
+typedef struct {
+    double A0;      /* groove-centre distance used in A1, A2 (SEED: with f') */
+    double dA1;     /* added to A1 */
+    double dA2;     /* added to A2 */
+    double dL_i;    /* subtracted from the inner groove-to-ball-centre length */
+    double dL_o;    /* subtracted from the outer groove-to-ball-centre length */
+} acbb_thermal_offsets;
+
+/* CLEAN: dA2 = th_i + th_icen - th_o, dL_i = dL_o = th_ba. SEED: the literal seed
+ * projections, evaluated at the ball's current angles (lagged). */
+void acbb_geometry_offsets(const acbb_geometry *g, acbb_geom_mode mode,
+                           const acbb_expansion *e, double alpha_i, double alpha_o,
+                           acbb_thermal_offsets *out);
+
+#endif

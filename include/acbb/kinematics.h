@@ -1,0 +1,28 @@
+/* acbb — ball kinematics, Level 1 race control (MODEL.md section 4). */
+#ifndef ACBB_KINEMATICS_H
+#define ACBB_KINEMATICS_H
+
+typedef enum { ACBB_CONTROL_OUTER, ACBB_CONTROL_INNER } acbb_control;
+
+typedef struct {
+    double beta;                /* spin-axis angle, rad */
+    double omega_m;             /* orbital speed, rad/s */
+    double omega_R;             /* ball spin magnitude, rad/s */
+    double wx, wy, wz;          /* ball angular velocity in the orbiting frame */
+    double spin_i, spin_o;      /* spin about the contact normals, rad/s */
+    double roll_i, roll_o;      /* rolling components omega_R cos(alpha - beta) */
+    double u_i, u_o;            /* entrainment speeds at the contact centres, m/s */
+} acbb_kin;
+
+/* Race-control kinematics for contact angles (alpha_i, alpha_o), ball
+ * diameter D, pitch diameter dm, inner-ring speed omega_i. For inner
+ * control only beta changes. Finite for every input, incl. omega_i = 0. */
+void acbb_kinematics_race_control(double alpha_i, double alpha_o, double D, double dm,
+                                  double omega_i, acbb_control control, acbb_kin *k);
+
+/* Jones' criterion with a +-5 % hysteresis band around the previous choice. */
+acbb_control acbb_race_control_choose(double Qi, double ai, double Ei, double Qo, double ao,
+                                      double Eo, double alpha_i, double alpha_o,
+                                      acbb_control previous);
+
+#endif

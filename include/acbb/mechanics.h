@@ -1,0 +1,65 @@
+/* acbb — quasi-static Jones-Harris bearing equilibrium (MODEL.md section 3)
+ * with centrifugal force, gyroscopic moment and the thermal terms of the
+ * seed's eqs (12)-(13).
+ *
+ * Ownership: acbb_mech_new allocates a solver workspace (GSL multiroot
+ * solvers) bound to a copy of the scene's relevant values; free it with
+ * acbb_mech_free. acbb_mech_state is a caller-owned plain value that also
+ * serves as the warm start of the next solve. */
+#ifndef ACBB_MECHANICS_H
+#define ACBB_MECHANICS_H
+
+#include "acbb/scene.h"
+#include "acbb/status.h"
+#include "acbb/hertz.h"
+#include "acbb/geometry.h"
+#include "acbb/kinematics.h"
+
+#define ACBB_MECH_MAX_BALLS 64
+
+typedef struct {
+    double psi;                  /* azimuth, rad */
+    double X1, X2;               /* ball centre relative to the OR groove centre, m */
+    double Qi, Qo;               /* N */
+    double alpha_i, alpha_o;     /* rad */
+    double delta_i, delta_o;     /* contact deflections (negative: gap), m */
+    acbb_hertz_const hc_i, hc_o; /* constants at the operating angles */
+    acbb_hertz_contact ct_i, ct_o;
+    double Fc, Mg;               /* centrifugal force (N), gyroscopic moment (N m) */
+    acbb_kin kin;
+    acbb_control control;
+    int loaded;                  /* 0: both contacts open, ball frozen */
+} acbb_ball_state;
+
+typedef struct {
+    double dx, dy, dz, thy, thz; /* inner-ring displacements (m) and tilts (rad) */
+    double Fx, Fy, Fz, My, Mz;   /* ring reactions (N, N m) */
+    int n;                       /* balls */
+    int symmetric;               /* 1: every ball identical, ball 0 solved */
+    acbb_ball_state ball[ACBB_MECH_MAX_BALLS];
+} acbb_mech_state;
+
+typedef struct acbb_mech acbb_mech;
+
+acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err);
+void acbb_mech_free(acbb_mech *m);
+const acbb_geometry *acbb_mech_geometry(const acbb_mech *m);
+
+/* Initial state: static thrust solution at zero speed and no expansion
+ * (MODEL.md section 3 "Initial guesses"). */
+acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err);
+
+/* Solve the equilibrium at speed omega_i with expansions e (NULL = none),
+ * warm-started from and written to st. On failure st keeps its input. */
+acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
+                            acbb_mech_state *st, acbb_error *err);
+
+/* Fix the axial displacement (displacement-controlled preload) or free it. */
+void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);
+
+/* Combined inner-outer stiffness K_n and the static closed-form angle for
+ * a pure thrust Fx at zero speed (independent reference used by tests and
+ * for the initial guess): solves Fx = Z K_n A0^1.5 (cos a0/cos a - 1)^1.5 sin a. */
+double acbb_static_thrust_angle(double Fx, int Z, double Kn, double A0, double alpha0);
+
+#endif

@@ -1,0 +1,105 @@
+/* acbb — the coupled thermo-mechanical stepper (seed Fig. 5, MODEL.md 9).
+ *
+ * acbb_sim_step advances one thermal step: mechanics at the current
+ * geometry, kinematics, film, the five losses, the implicit thermal update,
+ * then the expansions for the next step. A client drives it (the CLI to
+ * steady state, the TUI worker while publishing snapshots).
+ *
+ * Ownership: acbb_sim_new allocates a Sim that owns a copy of the Scene;
+ * release it with acbb_sim_free. Snapshots are plain values the caller owns.
+ * A Sim is not thread-safe: one thread drives it. */
+#ifndef ACBB_SIM_H
+#define ACBB_SIM_H
+
+#include "acbb/scene.h"
+#include "acbb/status.h"
+
+#define ACBB_MAX_BALLS 64
+#define ACBB_MAX_NODES 48
+
+/* What a user sees of one ball. Sliding speeds are the pressure-weighted
+ * mean magnitude of the translational (Heathcote + gross) slip over the
+ * contact ellipse; spin is the ball-race relative angular speed about the
+ * contact normal. */
+typedef struct {
+    double psi;                 /* azimuth, rad */
+    double Qi, Qo;              /* contact loads, N */
+    double alpha_i, alpha_o;    /* contact angles, rad */
+    double slide_i, slide_o;    /* sliding speeds, m/s */
+    double spin_i, spin_o;      /* spin speeds, rad/s */
+    double film_i, film_o;      /* central film thickness, m */
+    double pmax_i, pmax_o;      /* max Hertz pressure, Pa */
+    double a_i, b_i, a_o, b_o;  /* contact semi-axes, m */
+    double omega_m;             /* orbital speed, rad/s */
+    double omega_x, omega_y, omega_z; /* ball angular velocity in the orbiting frame, rad/s */
+    double loss;                /* this ball's share of P_L+P_t+P_s+P_r, W */
+} acbb_ball_view;
+
+/* The five losses of the seed, W. */
+typedef struct {
+    double shear;    /* P_L lubricant shear */
+    double slip;     /* P_t differential slipping (asperity) */
+    double spin;     /* P_s spinning */
+    double rolling;  /* P_r rolling (elastic hysteresis) */
+    double drag;     /* P_v oil-air drag */
+    double total;
+    double inner, outer; /* contact heat to the inner / outer contact nodes */
+} acbb_losses;
+
+typedef enum { ACBB_RUN_RUNNING, ACBB_RUN_CONVERGED, ACBB_RUN_FAILED } acbb_run_state;
+
+typedef struct {
+    acbb_run_state state;
+    acbb_status status;         /* ACBB_OK while running or converged; named failure otherwise */
+    char message[256];          /* why it stopped, if it did */
+    long iteration;             /* coupled steps taken ("iteration step" of the seed) */
+    double time;                /* simulated time, s */
+    double dt;                  /* current thermal step, s */
+    double residual;            /* max |dT/dt| of the last step, K/s */
+    double wall_ms;             /* wall time spent in acbb_sim_step so far */
+    int n_nodes;
+    double T[ACBB_MAX_NODES];   /* node temperatures, C */
+    const char *const *node_names; /* static strings, n_nodes of them */
+    double T_outer_ring;        /* seed node 5, C */
+    double T_inner_ring, T_ball, T_housing, T_shaft, T_cavity; /* C */
+    acbb_losses losses;
+    double exp_ball, exp_inner, exp_inner_cen, exp_outer; /* radial expansions, m */
+    double delta_x, delta_z;    /* inner-ring displacement, m */
+    double reaction_x;          /* axial reaction (== load under force control), N */
+    double heat_in, heat_out;   /* W: sources vs heat into fixed nodes (energy balance) */
+    int n_balls;
+    acbb_ball_view balls[ACBB_MAX_BALLS];
+} acbb_snapshot;
+
+typedef struct acbb_sim acbb_sim;
+
+/* Compile the scene (validated again) and set the initial state: all
+ * temperatures at ambient, mechanics solved at room-temperature geometry.
+ * Returns ACBB_EINVAL / ACBB_ILL_POSED with a message for bad scenes, or a
+ * solver status if the initial mechanics fails. */
+acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err);
+void acbb_sim_free(acbb_sim *sim);
+
+/* One coupled step. Returns ACBB_OK while running and at convergence
+ * (check acbb_sim_state); a named failure otherwise, with the last good
+ * state kept for the snapshot. Calling step after the run ended is a no-op
+ * returning the final status. */
+acbb_status acbb_sim_step(acbb_sim *sim);
+acbb_run_state acbb_sim_state(const acbb_sim *sim);
+
+/* Step until converged, failed, or the scene's max_steps / max_time. */
+acbb_status acbb_sim_run(acbb_sim *sim);
+
+/* Copy out what a user sees (never NaN/Inf: checked before publication). */
+void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *out);
+
+/* Restart with an edited scene, keeping the current temperatures (warm)
+ * or from ambient (warm == 0). The network kind must be unchanged for a
+ * warm restart, else it falls back to ambient. */
+acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err);
+
+/* JSON/CLI name of a finished run's status: "converged", "not_converged",
+ * "runaway", "contact_lost", "diverged", "ill_posed", "nonfinite", ... */
+const char *acbb_run_status_name(const acbb_snapshot *snap);
+
+#endif
