@@ -4,7 +4,8 @@
  * position (X1, X2) (GSL hybrids, unknowns in micrometres so the finite-
  * difference Jacobian steps are sensible), inside a ring equilibrium over
  * the force-controlled inner-ring DOFs (GSL Brent for the common pure-thrust
- * case where every ball is identical, GSL hybrids otherwise). */
+ * case where every ball is identical, GSL hybrids otherwise). The ball
+ * problem is a hand-written damped Newton (see ball_newton for why). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,7 +15,7 @@
 #include <gsl/gsl_vector.h>
 #include "acbb/mechanics.h"
 
-#define UM 1e-6          /* unknowns of the ball problem are in um */
+#define UM 1e-6          /* ring unknowns are in um and mrad for GSL's scaling */
 #define MRAD 1e-3
 #define MAX_RING_DOF 3
 
@@ -25,11 +26,11 @@ struct acbb_mech {
     acbb_hertz_mode hertz;
     acbb_geom_mode geom;
     double tol;
+    double mu;                  /* friction available for the gyroscopic moment */
     double Fx, Fz, My;          /* applied loads on the IR */
     int fix_axial;
     double dx_fixed;
     int dof_dz, dof_thy;        /* active ring DOFs besides dx */
-    gsl_multiroot_fsolver *ball_solver;
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     gsl_root_fsolver *brent;
     /* context of the solve in progress */
@@ -44,15 +45,37 @@ typedef struct {
     acbb_ball_state *b;
     double A1, A2;
     acbb_thermal_offsets off;
+    double L0;              /* unloaded groove-to-ball-centre length, outer */
 } ball_ctx;
 
-static double pos15(double d) { return d > 0.0 ? d * sqrt(d) : 0.0; }
+/* Smoothed Hertz law s(d)^1.5, s(d) = (d + sqrt(d^2 + eps^2)) / 2 with
+ * eps = 1 nm (MODEL.md section 3 "Unloaded contacts"): keeps the Jacobian
+ * regular when a contact opens; changes a loaded contact by < 1e-8. */
+#define SMOOTH_EPS 1e-9
+static double pos15(double d)
+{
+    double s = 0.5 * (d + sqrt(d * d + SMOOTH_EPS * SMOOTH_EPS));
+    return s * sqrt(s);
+}
 
 static void zeta_split(acbb_control c, acbb_race_control mode, double *zi, double *zo)
 {
     if (mode == ACBB_RACE_EQUAL) { *zi = 1.0; *zo = 1.0; return; }
     if (c == ACBB_CONTROL_INNER) { *zi = 2.0; *zo = 0.0; return; }
     *zi = 0.0; *zo = 2.0;
+}
+
+/* Friction force F that a contact must supply for the gyroscopic moment,
+ * limited by what friction can give (mu Q): beyond it the ball pivots
+ * ("gyroscopic slip", MODEL.md section 11). The smooth minimum
+ * F / (1 + (F/cap)^8)^(1/8) differs from F by < 1e-9 below cap/10 and
+ * keeps the Jacobian continuous. */
+static double gyro_friction(double F, double cap)
+{
+    if (F == 0.0) return 0.0;
+    if (cap <= 0.0) return 0.0;
+    double r = F / cap, r2 = r * r, r4 = r2 * r2;
+    return F / pow(1.0 + r4 * r4, 0.125);
 }
 
 /* Evaluate the ball at (X1, X2): loads, angles, kinematics, body forces.
@@ -83,20 +106,78 @@ static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, doubl
     double si = sin(b->alpha_i), ci = cos(b->alpha_i);
     double so = sin(b->alpha_o), co = cos(b->alpha_o);
     double mg = b->Mg / g->D;
-    *r1 = b->Qi * si - b->Qo * so + mg * (zi_ * ci - zo_ * co);
-    *r2 = b->Qi * ci - b->Qo * co + b->Fc + mg * (zo_ * so - zi_ * si);
+    double fi = gyro_friction(zi_ * mg, m->mu * b->Qi), fo = gyro_friction(zo_ * mg, m->mu * b->Qo);
+    *r1 = b->Qi * si - b->Qo * so + fi * ci - fo * co;
+    *r2 = b->Qi * ci - b->Qo * co + b->Fc + fo * so - fi * si;
 }
 
-static int ball_f(const gsl_vector *x, void *p, gsl_vector *f)
+/* The ball unknowns are polar about the OR groove centre: the angle a and
+ * z with outer deflection delta_o = sign(z) |z|^(2/3) um, so that the outer
+ * load Kc delta^1.5 is linear in z. Newton on delta itself crawls when a
+ * ball is held only by the centrifugal force (delta ~ 1 nm, where delta^1.5
+ * is strongly curved). */
+static double z_to_delta(double z) { return copysign(pow(fabs(z), 2.0 / 3.0), z) * UM; }
+static double delta_to_z(double d) { return copysign(pow(fabs(d) / UM, 1.5), d); }
+
+static int ball_polar(const ball_ctx *c, double z, double a, double r[2])
 {
-    const ball_ctx *c = p;
-    double r1, r2;
-    ball_eval(c, gsl_vector_get(x, 0) * UM, gsl_vector_get(x, 1) * UM, &r1, &r2);
-    if (!isfinite(r1) || !isfinite(r2))
-        return GSL_EBADFUNC;
-    gsl_vector_set(f, 0, r1);
-    gsl_vector_set(f, 1, r2);
-    return GSL_SUCCESS;
+    double L = c->L0 + z_to_delta(z);
+    ball_eval(c, L * sin(a), L * cos(a), &r[0], &r[1]);
+    return isfinite(r[0]) && isfinite(r[1]);
+}
+
+static double norm2(const double r[2]) { return r[0] * r[0] + r[1] * r[1]; }
+
+/* Damped Newton on the 2x2 ball problem, written by hand: GSL's hybrids
+ * stalls (GSL_ENOPROG) on lightly loaded balls because its relative finite-
+ * difference steps and trust region do not fit the ~1e6:1 contrast between
+ * the radial and the angular stiffness. Capped, backtracked steps as in
+ * MODEL.md section 3 ("damped Newton"). */
+static acbb_status ball_newton(const ball_ctx *c, double *z, double *a, double tol)
+{
+    const double ha = 1e-9, capa = 0.05;
+    double r[2], rz[2], ra[2];
+    if (!ball_polar(c, *z, *a, r)) return ACBB_NONFINITE;
+    for (int it = 0; it < 100; it++) {
+        if (fabs(r[0]) <= tol && fabs(r[1]) <= tol) return ACBB_OK;
+        double hz = 1e-7 * fmax(fabs(*z), 1e-3);
+        if (!ball_polar(c, *z + hz, *a, rz) || !ball_polar(c, *z, *a + ha, ra))
+            return ACBB_NONFINITE;
+        double J00 = (rz[0] - r[0]) / hz, J10 = (rz[1] - r[1]) / hz;
+        double J01 = (ra[0] - r[0]) / ha, J11 = (ra[1] - r[1]) / ha;
+        double det = J00 * J11 - J01 * J10;
+        if (det == 0.0 || !isfinite(det)) return ACBB_DIVERGED;
+        double dz = -(J11 * r[0] - J01 * r[1]) / det;
+        double da = -(J00 * r[1] - J10 * r[0]) / det;
+        /* Two candidate directions: each component capped on its own (lets
+         * the radial load settle while the angle walks), then the plain
+         * Newton direction scaled as a whole. Backtrack along each. */
+        double capz = 2.0 * fmax(fabs(*z), 1.0);
+        double d1z = fmax(fmin(dz, capz), -capz), d1a = fmax(fmin(da, capa), -capa);
+        double k = fmax(fabs(dz) / capz, fabs(da) / capa);
+        double d2z = k > 1.0 ? dz / k : dz, d2a = k > 1.0 ? da / k : da;
+        double n0 = norm2(r), lam = 1.0, rt[2];
+        int found = 0;
+        for (int pass = 0; pass < 2 && !found; pass++) {
+            dz = pass ? d2z : d1z;
+            da = pass ? d2a : d1a;
+            for (lam = 1.0; lam >= 1e-10; lam *= 0.5)
+                if (ball_polar(c, *z + lam * dz, *a + lam * da, rt)
+                    && norm2(rt) < n0 * (1.0 - 1e-4 * lam)) {
+                    found = 1;
+                    break;
+                }
+        }
+        if (!found) {
+            ball_polar(c, *z, *a, r);
+            return fabs(r[0]) <= 1e3 * tol && fabs(r[1]) <= 1e3 * tol ? ACBB_OK : ACBB_DIVERGED;
+        }
+        *z += lam * dz;
+        *a += lam * da;
+        r[0] = rt[0];
+        r[1] = rt[1];
+    }
+    return fabs(r[0]) <= 1e3 * tol && fabs(r[1]) <= 1e3 * tol ? ACBB_OK : ACBB_DIVERGED;
 }
 
 /* Force scale for the ball residual test: one ball's share of the load,
@@ -135,26 +216,14 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, doubl
         ball_freeze(&c);
         return ACBB_OK;
     }
-    double x0[2] = { b->X1 / UM, b->X2 / UM };
-    gsl_vector_view xv = gsl_vector_view_array(x0, 2);
-    gsl_multiroot_function F = { ball_f, 2, &c };
-    gsl_multiroot_fsolver *s = m->ball_solver;
-    if (gsl_multiroot_fsolver_set(s, &F, &xv.vector) != GSL_SUCCESS)
-        return ACBB_DIVERGED;
+    c.L0 = m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o;
+    double z = delta_to_z(hypot(b->X1, b->X2) - c.L0), a = atan2(b->X1, b->X2);
     double tol = fmax(m->tol, 1e-14) * ball_force_scale(m);
-    int status = gsl_multiroot_test_residual(s->f, tol);
-    for (int it = 0; status == GSL_CONTINUE && it < 200; it++) {
-        if (gsl_multiroot_fsolver_iterate(s) != GSL_SUCCESS)
-            break;
-        status = gsl_multiroot_test_residual(s->f, tol);
-    }
-    if (status != GSL_SUCCESS) {
-        /* Accept a stalled solve that is within 1e3 x tol (round-off floor). */
-        if (gsl_multiroot_test_residual(s->f, 1e3 * tol) != GSL_SUCCESS)
-            return ACBB_DIVERGED;
-    }
-    double r1, r2;
-    ball_eval(&c, gsl_vector_get(s->x, 0) * UM, gsl_vector_get(s->x, 1) * UM, &r1, &r2);
+    acbb_status rc = ball_newton(&c, &z, &a, tol);
+    if (rc != ACBB_OK)
+        return rc;
+    double r[2];
+    ball_polar(&c, z, a, r);
     b->loaded = b->Qi > 0.0 || b->Qo > 0.0;
     return ACBB_OK;
 }
@@ -185,14 +254,14 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         double zi, zo;
         zeta_split(b->control, m->race, &zi, &zo);
         double si = sin(b->alpha_i), ci = cos(b->alpha_i);
-        double mg = b->Mg / g->D;
-        double ax = b->Qi * si + zi * mg * ci;
-        double rad = b->Qi * ci - zi * mg * si;
+        double fi = gyro_friction(zi * b->Mg / g->D, m->mu * b->Qi);
+        double ax = b->Qi * si + fi * ci;
+        double rad = b->Qi * ci - fi * si;
         double w = st->symmetric ? st->n : 1.0;
         st->Fx += w * ax;
         st->Fz += w * rad * cos(b->psi);
         st->Fy -= w * rad * sin(b->psi);
-        double mom = g->Re_i * ax - zi * g->f_i * b->Mg;
+        double mom = g->Re_i * ax - fi * g->f_i * g->D;
         st->My += w * mom * cos(b->psi);
         st->Mz += w * mom * sin(b->psi);
     }
@@ -453,14 +522,14 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
     m->hertz = s->hertz;
     m->geom = s->geometry;
     m->tol = s->mech_tol;
+    m->mu = s->mu_bd;
     m->Fx = s->axial_load;
     m->Fz = s->radial_load;
     m->My = s->moment_load;
     m->dof_dz = s->radial_load != 0.0 || s->moment_load != 0.0;
     m->dof_thy = s->moment_load != 0.0;
-    m->ball_solver = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, 2);
     m->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    int ok = m->ball_solver && m->brent;
+    int ok = m->brent != NULL;
     for (int n = 1; n <= MAX_RING_DOF; n++) {
         m->ring_solver[n] = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n);
         ok = ok && m->ring_solver[n];
@@ -476,7 +545,6 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
 void acbb_mech_free(acbb_mech *m)
 {
     if (!m) return;
-    if (m->ball_solver) gsl_multiroot_fsolver_free(m->ball_solver);
     if (m->brent) gsl_root_fsolver_free(m->brent);
     for (int n = 1; n <= MAX_RING_DOF; n++)
         if (m->ring_solver[n]) gsl_multiroot_fsolver_free(m->ring_solver[n]);
