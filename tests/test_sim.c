@@ -1,3 +1,191 @@
-/* stub test: to be written */
+/* Tests of the coupled stepper on the 7008C scene (MODEL.md 9, 12) and
+ * its hard cases (MODEL.md 11). */
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
 #include "tap.h"
-int main(void) { ok(1, "stub"); return done_testing(); }
+#include "acbb/sim.h"
+
+#define RPM (M_PI / 30.0)
+
+static acbb_scene base(double rpm, double Fx, int te)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.inner_speed = rpm * RPM;
+    s.axial_load = Fx;
+    s.thermal_expansion = te;
+    return s;
+}
+
+static int snapshot_finite(const acbb_snapshot *o)
+{
+    const double *l = &o->losses.shear;
+    for (size_t k = 0; k < sizeof o->losses / sizeof(double); k++)
+        if (!isfinite(l[k])) return 0;
+    for (int i = 0; i < o->n_nodes; i++)
+        if (!isfinite(o->T[i])) return 0;
+    for (int j = 0; j < o->n_balls; j++) {
+        const double *b = &o->balls[j].psi;
+        for (size_t k = 0; k < sizeof o->balls[j] / sizeof(double); k++)
+            if (!isfinite(b[k])) return 0;
+    }
+    return isfinite(o->T_outer_ring) && isfinite(o->exp_inner);
+}
+
+/* Run a scene to its end; returns the final status and fills snap. */
+static acbb_status run(const acbb_scene *s, acbb_snapshot *snap, acbb_error *err)
+{
+    acbb_sim *sim;
+    acbb_status rc = acbb_sim_new(s, &sim, err);
+    if (rc != ACBB_OK) return rc;
+    rc = acbb_sim_run(sim);
+    acbb_sim_snapshot(sim, snap);
+    acbb_sim_free(sim);
+    return rc;
+}
+
+static acbb_snapshot snap_a, snap_b; /* large structs off the stack */
+
+static void test_seed_conclusion_1(void)
+{
+    double loads[] = { 50, 1000 };
+    double Qi[2][2];
+    for (int l = 0; l < 2; l++)
+        for (int te = 0; te < 2; te++) {
+            acbb_scene s = base(15000, loads[l], te);
+            acbb_error err = { "" };
+            acbb_status rc = run(&s, &snap_a, &err);
+            ok(rc == ACBB_OK && snap_a.state == ACBB_RUN_CONVERGED,
+               "15000 rpm, %.0f N, %s converges (%s %s)", loads[l], te ? "TE" : "WTE",
+               acbb_status_name(rc), snap_a.message);
+            ok(snapshot_finite(&snap_a), "snapshot finite");
+            ok(snap_a.T_outer_ring > s.ambient_C + 1, "outer ring heats up (%.1f C)",
+               snap_a.T_outer_ring);
+            double sum = snap_a.losses.shear + snap_a.losses.slip + snap_a.losses.spin
+                       + snap_a.losses.rolling + snap_a.losses.drag;
+            is_close(snap_a.losses.total, sum, 1e-12, 0, "total = sum of the five losses");
+            ok(snap_a.losses.shear >= 0 && snap_a.losses.slip >= 0 && snap_a.losses.spin >= 0
+               && snap_a.losses.rolling >= 0 && snap_a.losses.drag >= 0, "every loss >= 0");
+            is_close(snap_a.heat_out, snap_a.heat_in, 1e-6, 0,
+                     "steady state: heat in = heat out (1e-6)");
+            Qi[l][te] = snap_a.balls[0].Qi;
+        }
+    ok(Qi[1][1] > Qi[1][0], "seed conclusion 1: at 1000 N TE Qi %.2f N > WTE Qi %.2f N",
+       Qi[1][1], Qi[1][0]);
+}
+
+static void test_zero_speed(void)
+{
+    acbb_scene s = base(0, 500, 1);
+    acbb_error err = { "" };
+    acbb_status rc = run(&s, &snap_a, &err);
+    ok(rc == ACBB_OK && snap_a.state == ACBB_RUN_CONVERGED, "zero speed converges: %s",
+       snap_a.message);
+    is_close(snap_a.losses.total, 0.0, 0, 1e-12, "zero speed: no loss");
+    double dmax = 0;
+    for (int i = 0; i < snap_a.n_nodes; i++) dmax = fmax(dmax, fabs(snap_a.T[i] - s.ambient_C));
+    is_close(dmax, 0.0, 0, 1e-9, "zero speed: every node at ambient");
+}
+
+static void test_steady_mode_matches_transient(void)
+{
+    acbb_scene s = base(12000, 400, 1);
+    acbb_error err = { "" };
+    run(&s, &snap_a, &err);
+    s.thermal_mode = ACBB_THERMAL_STEADY;
+    acbb_status rc = run(&s, &snap_b, &err);
+    ok(rc == ACBB_OK, "direct steady mode converges: %s", snap_b.message);
+    is_close(snap_b.T_outer_ring, snap_a.T_outer_ring, 1e-6, 1e-6,
+             "direct steady = end of the transient (outer ring T)");
+    is_close(snap_b.losses.total, snap_a.losses.total, 1e-6, 0,
+             "direct steady = end of the transient (total loss)");
+    ok(snap_b.iteration < snap_a.iteration, "direct steady needs fewer steps (%ld < %ld)",
+       snap_b.iteration, snap_a.iteration);
+}
+
+static void test_hard_cases(void)
+{
+    acbb_error err = { "" };
+    /* Light load, high speed (skidding regime of MODEL.md 11). */
+    acbb_scene s = base(16000, 50, 1);
+    acbb_status rc = run(&s, &snap_a, &err);
+    ok(rc == ACBB_OK && snapshot_finite(&snap_a), "50 N at 16000 rpm: converged, finite (%s)",
+       snap_a.message);
+    ok(snap_a.balls[0].alpha_o < snap_a.balls[0].alpha_i,
+       "light load, high speed: alpha_o < alpha_i");
+    /* Combined load with a load zone. */
+    s = base(10000, 600, 1);
+    s.radial_load = 1200;
+    rc = run(&s, &snap_a, &err);
+    ok(rc == ACBB_OK && snapshot_finite(&snap_a), "combined load converges (%s)",
+       snap_a.message);
+    ok(snap_a.balls[0].Qi > 3 * snap_a.balls[snap_a.n_balls / 2].Qi,
+       "load zone: ball under the load carries > 3x the opposite one");
+    /* Runaway: a temperature limit below the steady temperature. */
+    s = base(15000, 1000, 1);
+    s.temp_limit_C = 30;
+    rc = run(&s, &snap_a, &err);
+    ok(rc == ACBB_RUNAWAY && snap_a.state == ACBB_RUN_FAILED, "temp limit -> ACBB_RUNAWAY (%s)",
+       acbb_status_name(rc));
+    has_substr(snap_a.message, "thermal runaway", "runaway message names it");
+    ok(snapshot_finite(&snap_a), "runaway keeps a finite last good state");
+    /* Step limit. */
+    s = base(15000, 1000, 1);
+    s.max_steps = 3;
+    rc = run(&s, &snap_a, &err);
+    ok(rc == ACBB_NOT_CONVERGED && snap_a.iteration == 3, "max_steps -> ACBB_NOT_CONVERGED");
+    /* Rigid (displacement) preload at high speed: ends with a named status,
+     * never NaN. */
+    s = base(16000, 0, 1);
+    s.preload = ACBB_PRELOAD_DISPLACEMENT;
+    s.preload_force = 1000;
+    rc = run(&s, &snap_a, &err);
+    ok((rc == ACBB_OK || rc == ACBB_RUNAWAY) && snapshot_finite(&snap_a),
+       "rigid preload 1000 N at 16000 rpm: %s, finite", acbb_status_name(rc));
+    ok(snap_a.reaction_x > 1000, "rigid preload: heat and speed raise the axial reaction (%.0f N)",
+       snap_a.reaction_x);
+    /* 7-node teaching network. */
+    s = base(8000, 300, 1);
+    s.network = ACBB_NET_7;
+    rc = run(&s, &snap_a, &err);
+    ok(rc == ACBB_OK && snap_a.n_nodes == 7, "7-node network converges (%s)", snap_a.message);
+    is_close(snap_a.heat_out, snap_a.heat_in, 1e-6, 0, "7-node: heat in = heat out");
+}
+
+static void test_bad_scene(void)
+{
+    acbb_scene s = base(15000, 1000, 1);
+    s.model = ACBB_MODEL_DYNAMIC;
+    acbb_sim *sim = NULL;
+    acbb_error err = { "" };
+    ok(acbb_sim_new(&s, &sim, &err) == ACBB_EINVAL, "unavailable model level is refused");
+    has_substr(err.msg, "fidelity.model = dynamic", "message names the key and value");
+    s = base(15000, 0, 1);
+    s.radial_load = 500;
+    ok(acbb_sim_new(&s, &sim, &err) == ACBB_ILL_POSED, "pure radial load is ill-posed");
+}
+
+static void test_disabled_effects(void)
+{
+    /* A scene without the drag effect computes no drag at all. */
+    acbb_scene s = base(15000, 1000, 0);
+    s.loss_drag = false;
+    s.loss_spin = false;
+    acbb_error err = { "" };
+    run(&s, &snap_a, &err);
+    ok(snap_a.losses.drag == 0 && snap_a.losses.spin == 0, "disabled losses are not computed");
+    ok(snap_a.losses.total > 0, "the enabled ones still are");
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    test_seed_conclusion_1();
+    test_zero_speed();
+    test_steady_mode_matches_transient();
+    test_hard_cases();
+    test_bad_scene();
+    test_disabled_effects();
+    return done_testing();
+}

@@ -27,6 +27,8 @@ int acbb_tnet_edge_count(const acbb_tnet *net);
 
 /* Capacity C >= 0 (J/K). */
 acbb_status acbb_tnet_set_capacity(acbb_tnet *net, int node, double C);
+/* Capacity of `node` (J/K); NAN for a bad index. */
+double acbb_tnet_capacity(const acbb_tnet *net, int node);
 /* Make `node` a fixed-temperature node at T (C). */
 acbb_status acbb_tnet_set_fixed(acbb_tnet *net, int node, double T);
 int acbb_tnet_is_fixed(const acbb_tnet *net, int node);
@@ -38,6 +40,8 @@ int acbb_tnet_add_edge(acbb_tnet *net, int a, int b, double R);
  * value actually changed. */
 acbb_status acbb_tnet_set_resistance(acbb_tnet *net, int edge, double R);
 double acbb_tnet_resistance(const acbb_tnet *net, int edge);
+/* End nodes of an edge (for display and tests). */
+acbb_status acbb_tnet_edge_nodes(const acbb_tnet *net, int edge, int *a, int *b);
 
 /* One backward-Euler step of length dt > 0 with node heat inputs q (W, length
  * n_nodes; entries at fixed nodes are ignored). T (length n_nodes) holds T^k
