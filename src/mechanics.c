@@ -33,6 +33,7 @@ struct acbb_mech {
     int dof_dz, dof_thy;        /* active ring DOFs besides dx */
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     gsl_root_fsolver *brent;
+    gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
     /* context of the solve in progress */
     double omega;
     const acbb_expansion *e;
@@ -201,6 +202,86 @@ static void ball_freeze(ball_ctx *c)
     c->b->loaded = 0;
 }
 
+/* ---- bracketed fallback (MODEL.md section 11: "fallback: 1-D bisection")
+ * When Newton fails (a ball that only the centrifugal force presses on
+ * the outer race has almost no angular stiffness), split the residual into
+ * its components along and across the outer contact normal: along it the
+ * residual falls monotonically with the outer deflection, so for each angle
+ * a bracketed Brent solve finds z; across it, Brent on the angle. */
+
+typedef struct {
+    const ball_ctx *c;
+    double a;
+    gsl_root_fsolver *sz;
+    int fail;
+} fb_ctx;
+
+static double fb_normal(double z, void *p)
+{
+    fb_ctx *f = p;
+    double r[2];
+    ball_polar(f->c, z, f->a, r);
+    return r[0] * sin(f->a) + r[1] * cos(f->a);
+}
+
+static int brent_solve(gsl_root_fsolver *s, gsl_function *F, double lo, double hi,
+                       double xtol, double *root)
+{
+    if (gsl_root_fsolver_set(s, F, lo, hi) != GSL_SUCCESS) return 0;
+    for (int it = 0; it < 200; it++) {
+        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) return 0;
+        *root = gsl_root_fsolver_root(s);
+        if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
+                                   xtol, 1e-14) == GSL_SUCCESS)
+            return 1;
+    }
+    return 1;
+}
+
+static double fb_tangential(double a, void *p)
+{
+    fb_ctx *f = p;
+    f->a = a;
+    gsl_function F = { fb_normal, f };
+    /* z = -5: the outer contact is open by 2.9 um; z = 1e3: 100 um in. */
+    double lo = -5.0, hi = 1e3, z = 0.0, r[2];
+    if (fb_normal(lo, f) <= 0.0) {
+        f->fail |= 1;
+        return NAN;
+    }
+    if (!brent_solve(f->sz, &F, lo, hi, 1e-13, &z)) {
+        f->fail |= 1;
+        return NAN;
+    }
+    ball_polar(f->c, z, a, r);
+    f->a = z; /* remember the deflection of the last angle tried */
+    return r[0] * cos(a) - r[1] * sin(a);
+}
+
+static acbb_status ball_fallback(acbb_mech *m, const ball_ctx *c, double *z, double *a)
+{
+    fb_ctx f = { c, *a, m->brent_z, 0 };
+    gsl_function F = { fb_tangential, &f };
+    double lo = *a, hi = *a, step = 0.02;
+    double flo = fb_tangential(lo, &f), fhi = flo;
+    if (!isfinite(flo)) return ACBB_DIVERGED;
+    for (int i = 0; i < 40 && flo * fhi > 0.0; i++) {
+        lo = fmax(lo - step, -1.2);
+        hi = fmin(hi + step, 1.5);
+        flo = fb_tangential(lo, &f);
+        fhi = fb_tangential(hi, &f);
+        if (!isfinite(flo) || !isfinite(fhi)) return ACBB_DIVERGED;
+        step *= 1.5;
+    }
+    if (flo * fhi > 0.0) return ACBB_DIVERGED;
+    double root;
+    if (!brent_solve(m->brent_a, &F, lo, hi, 1e-14, &root)) return ACBB_DIVERGED;
+    fb_tangential(root, &f);
+    *a = root;
+    *z = f.a;
+    return f.fail ? ACBB_DIVERGED : ACBB_OK;
+}
+
 static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, double A2)
 {
     ball_ctx c = { .m = m, .b = b, .A1 = A1, .A2 = A2 };
@@ -219,7 +300,15 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, doubl
     c.L0 = m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o;
     double z = delta_to_z(hypot(b->X1, b->X2) - c.L0), a = atan2(b->X1, b->X2);
     double tol = fmax(m->tol, 1e-14) * ball_force_scale(m);
+    double z0 = z, a0 = a;
     acbb_status rc = ball_newton(&c, &z, &a, tol);
+    if (rc != ACBB_OK) {
+        z = z0;
+        a = a0;
+        rc = ball_fallback(m, &c, &z, &a);
+        if (rc == ACBB_OK) /* polish with Newton from the bracketed root */
+            rc = ball_newton(&c, &z, &a, tol);
+    }
     if (rc != ACBB_OK)
         return rc;
     double r[2];
@@ -529,7 +618,9 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
     m->dof_dz = s->radial_load != 0.0 || s->moment_load != 0.0;
     m->dof_thy = s->moment_load != 0.0;
     m->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    int ok = m->brent != NULL;
+    m->brent_z = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    m->brent_a = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    int ok = m->brent && m->brent_z && m->brent_a;
     for (int n = 1; n <= MAX_RING_DOF; n++) {
         m->ring_solver[n] = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n);
         ok = ok && m->ring_solver[n];
@@ -546,6 +637,8 @@ void acbb_mech_free(acbb_mech *m)
 {
     if (!m) return;
     if (m->brent) gsl_root_fsolver_free(m->brent);
+    if (m->brent_z) gsl_root_fsolver_free(m->brent_z);
+    if (m->brent_a) gsl_root_fsolver_free(m->brent_a);
     for (int n = 1; n <= MAX_RING_DOF; n++)
         if (m->ring_solver[n]) gsl_multiroot_fsolver_free(m->ring_solver[n]);
     free(m);

@@ -101,11 +101,12 @@ static void test_slip_field(void)
     /* Pure rolling at the centre when the race speeds satisfy the rolling
      * condition; V grows away from the centre (Heathcote slip). */
     acbb_contact_in c = circle(100, 0.5e-3, 0);
-    c.a = 1e-3;
+    c.a = 1e-7; /* vanishing contact: the surface point at x = 0 is at D/2 */
     double h0 = 0.5 * c.D, rm = 0.5 * c.dm;
     c.race = -600;
     c.roll = -c.race * (rm + h0 * cos(c.alpha)) / h0;
-    is_close(acbb_slip_velocity(&c, 0.0), 0.0, 0, 1e-12, "outer contact rolls at x = 0");
+    is_close(acbb_slip_velocity(&c, 0.0), 0.0, 0, 1e-9, "outer contact rolls at x = 0");
+    c.a = 1e-3;
     ok(fabs(acbb_slip_velocity(&c, 0.9e-3)) > 1e-3, "Heathcote slip off the centre");
 }
 
