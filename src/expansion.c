@@ -53,7 +53,11 @@ void acbb_expansion_compute(const acbb_scene *s, const acbb_part_temps *t,
     double r_il = inner_raceway_radius(s);
 
     memset(out, 0, sizeof *out);
-    if (s->thermal_expansion) {
+    /* WTE forces every expansion to 0, the centrifugal one included: the
+     * seed's WTE model has none of eqs (1)-(11) (MODEL.md sections 9, 12). */
+    if (!s->thermal_expansion)
+        return;
+    {
         double dT_b = t->ball - s->ambient_C;
         double dT_i = t->inner_ring - s->ambient_C;
         double dT_s = t->shaft - s->ambient_C;

@@ -285,7 +285,9 @@ static acbb_status ball_fallback(acbb_mech *m, const ball_ctx *c, double *z, dou
 static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, double A2)
 {
     ball_ctx c = { .m = m, .b = b, .A1 = A1, .A2 = A2 };
-    acbb_geometry_offsets(&m->g, m->geom, m->e, b->alpha_i, b->alpha_o, &c.off);
+    /* SEED projections use the angles of the last accepted solve, so the
+     * residual stays a fixed function of the unknowns within one solve. */
+    acbb_geometry_offsets(&m->g, m->geom, m->e, b->alpha_i_lag, b->alpha_o_lag, &c.off);
     /* A1, A2 were built with the nominal A0; SEED mode swaps in its A0'. */
     c.A1 += (c.off.A0 - m->g.A0) * sin(m->g.alpha0) + c.off.dA1;
     c.A2 += (c.off.A0 - m->g.A0) * cos(m->g.alpha0) + c.off.dA2;
@@ -532,6 +534,10 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     m->omega = omega_i;
     m->e = e;
     if (m->fix_axial) w->dx = m->dx_fixed;
+    for (int j = 0; j < w->n; j++) {
+        w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
+        w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
+    }
     acbb_status rc = ACBB_OK;
     /* The Hertz constants depend on the operating angles: iterate the
      * solve with refreshed constants until the angles stop moving. */

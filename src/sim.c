@@ -178,7 +178,7 @@ static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
 /* Mechanics + losses + network resistances at T^k. */
 static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
 {
-    if (sim->s.thermal_expansion || sim->s.ring_centrifugal)
+    if (sim->s.thermal_expansion)
         expansions(sim);
     else
         sim->exp = (acbb_expansion){ 0 };

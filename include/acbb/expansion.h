@@ -20,8 +20,8 @@ typedef struct {
 /* Eq (1), (3), (4) with delta T relative to s->ambient_C, and eq (9) at
  * s->inner_speed when s->ring_centrifugal. SEED geometry uses the bore
  * radius in eq (3)'s first term as printed in the seed. When
- * !s->thermal_expansion the thermal terms are 0 (WTE); the centrifugal
- * term follows its own switch. */
+ * !s->thermal_expansion every term is 0, the centrifugal one too (WTE,
+ * MODEL.md section 9); with TE the centrifugal term follows its switch. */
 void acbb_expansion_compute(const acbb_scene *s, const acbb_part_temps *t,
                             acbb_expansion *out);
 

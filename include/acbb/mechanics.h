@@ -22,6 +22,7 @@ typedef struct {
     double X1, X2;               /* ball centre relative to the OR groove centre, m */
     double Qi, Qo;               /* N */
     double alpha_i, alpha_o;     /* rad */
+    double alpha_i_lag, alpha_o_lag; /* angles of the last accepted solve (SEED projections) */
     double delta_i, delta_o;     /* contact deflections (negative: gap), m */
     acbb_hertz_const hc_i, hc_o; /* constants at the operating angles */
     acbb_hertz_contact ct_i, ct_o;
