@@ -1,0 +1,57 @@
+/* acbb — plots through a gnuplot pipe (DESIGN.md "Practical notes").
+ *
+ * One short-lived gnuplot process per plot, started with posix_spawnp (no
+ * shell, so no user text ever reaches one): stdin from a CLOEXEC pipe,
+ * stdout to /dev/null (or captured for the dumb terminal), stderr captured
+ * for the first error line. Data travel as named datablocks written with
+ * %.17g; paths are single-quoted with ' doubled; `set termoption
+ * noenhanced`. SIGPIPE is ignored while writing. If gnuplot is missing or
+ * fails, the call returns ACBB_EIO with a clear message and nothing else
+ * happens (the caller keeps running). No printing.
+ *
+ * Ownership: all inputs are read only during the call. */
+#ifndef ACBB_PLOT_H
+#define ACBB_PLOT_H
+
+#include <stddef.h>
+#include "acbb/history.h"
+#include "acbb/sim.h"
+#include "acbb/status.h"
+
+typedef enum { ACBB_PLOT_PNG, ACBB_PLOT_SVG, ACBB_PLOT_DUMB } acbb_plot_format;
+
+typedef enum {
+    ACBB_PLOT_TEMPERATURE,   /* outer ring, inner ring, ball, housing vs time */
+    ACBB_PLOT_LOSSES,        /* the five losses and the total vs time */
+    ACBB_PLOT_LOADS,         /* Qi, Qo per ball vs azimuth (final state) */
+    ACBB_PLOT_ANGLES,        /* alpha_i, alpha_o per ball vs azimuth (final state) */
+    ACBB_PLOT_HISTORY_LOADS  /* Qi, Qo of ball 0 vs time */
+} acbb_plot_kind;
+
+typedef struct {
+    const acbb_history *history;     /* may be NULL for the per-ball kinds */
+    const acbb_snapshot *snapshot;   /* may be NULL for the history kinds */
+    const char *title;               /* plain text (noenhanced); may be NULL */
+} acbb_plot_data;
+
+/* Parse "png", "svg", "dumb" / a file name's extension; -1 if unknown. */
+int acbb_plot_format_from_name(const char *name);
+/* Parse "temperature", "losses", "loads", "angles", "history-loads"; -1 if unknown. */
+int acbb_plot_kind_from_name(const char *name);
+const char *acbb_plot_kind_name(acbb_plot_kind k);
+
+/* Write a PNG (pngcairo) or SVG plot to `path`, width x height pixels.
+ * The file is written by gnuplot to a temporary name and renamed into
+ * place only on success. */
+acbb_status acbb_plot_file(acbb_plot_kind kind, acbb_plot_format fmt, const char *path,
+                           int width, int height, const acbb_plot_data *d, acbb_error *err);
+
+/* Render with gnuplot's dumb terminal (cols x rows characters) into text
+ * (NUL-terminated, truncated to text_len). */
+acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_plot_data *d,
+                           char *text, size_t text_len, acbb_error *err);
+
+/* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
+const char *acbb_plot_program(void);
+
+#endif

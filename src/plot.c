@@ -1,0 +1,2 @@
+/* stub: to be written (plot helper) */
+typedef int acbb_stub_plot;

@@ -1,0 +1,2 @@
+/* stub */
+typedef int acbb_stub_worker;
