@@ -172,6 +172,10 @@ size_t acbb_scene_field_count(void);
 const acbb_field_info *acbb_scene_field(size_t i);
 /* Current value of field i, formatted in preset units (buf >= 64 bytes). */
 void acbb_scene_field_format(const acbb_scene *s, size_t i, char *buf, size_t n);
+/* Allowed values of field i as text (buf >= 160 bytes), e.g.
+ * "0 < x <= 100 mm", "on | off", "static | quasi-static | ...". Says which
+ * range ends are exclusive, which acbb_field_info cannot. */
+void acbb_scene_field_range(size_t i, char *buf, size_t n);
 
 const char *acbb_model_level_name(acbb_model_level m);
 
