@@ -1,2 +1,647 @@
-/* stub: to be written */
-typedef int acbb_stub_cli_output;
+/* acbb CLI — output writers (see cli_output.h).
+ *
+ * The JSON writer is a few lines by hand rather than a library: the output
+ * is write-only, flat and small, and a dependency (cJSON, jansson) would
+ * buy nothing but a build requirement. Numbers use %.10g in JSON and CSV so
+ * values round-trip to ~1e-10 relative; the summary table uses fixed widths
+ * that keep every line within 80 columns. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli_output.h"
+
+#define CLI_DEG (180.0 / 3.14159265358979323846)   /* rad -> deg */
+#define CLI_RPM (60.0 / (2.0 * 3.14159265358979323846)) /* rad/s -> rpm */
+#define CLI_UM 1e6                                   /* m -> um */
+
+void acbb_cli_out_init(acbb_cli_out *o, FILE *f)
+{
+    memset(o, 0, sizeof *o);
+    o->f = f;
+}
+
+bool acbb_cli_point_ok(const acbb_cli_point *p)
+{
+    return p->have_snap && !p->internal_error &&
+           p->snap.state == ACBB_RUN_CONVERGED;
+}
+
+const char *acbb_cli_point_status(const acbb_cli_point *p)
+{
+    if (!p->have_snap) return acbb_status_name(p->status);
+    return acbb_run_status_name(&p->snap);
+}
+
+/* ---- JSON primitives ---- */
+
+static void j_string(acbb_cli_out *o, const char *s)
+{
+    fputc('"', o->f);
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        if (*p == '"' || *p == '\\') fprintf(o->f, "\\%c", *p);
+        else if (*p == '\n') fputs("\\n", o->f);
+        else if (*p == '\t') fputs("\\t", o->f);
+        else if (*p < 0x20) fprintf(o->f, "\\u%04x", *p);
+        else fputc(*p, o->f);
+    }
+    fputc('"', o->f);
+}
+
+/* Separator, newline and indent before an element, then its key. */
+static void j_key(acbb_cli_out *o, const char *key)
+{
+    int d = o->depth;
+    if (d > 0) {
+        if (!o->first[d]) fputc(',', o->f);
+        if (o->inline_[d]) {
+            if (!o->first[d]) fputc(' ', o->f);
+        } else {
+            fprintf(o->f, "\n%*s", 2 * d, "");
+        }
+        o->first[d] = false;
+    }
+    if (key) {
+        j_string(o, key);
+        fputs(": ", o->f);
+    }
+}
+
+static void j_open(acbb_cli_out *o, const char *key, char c, bool one_line)
+{
+    j_key(o, key);
+    fputc(c, o->f);
+    if (o->depth + 1 >= ACBB_CLI_JSON_DEPTH) abort(); /* static nesting: a bug */
+    o->depth++;
+    o->first[o->depth] = true;
+    o->inline_[o->depth] = one_line || o->inline_[o->depth - 1];
+}
+
+static void j_close(acbb_cli_out *o, char c)
+{
+    int d = o->depth;
+    if (!o->inline_[d] && !o->first[d]) fprintf(o->f, "\n%*s", 2 * (d - 1), "");
+    fputc(c, o->f);
+    o->depth--;
+    if (o->depth == 0) fputc('\n', o->f);
+}
+
+static void j_num(acbb_cli_out *o, const char *key, double v)
+{
+    j_key(o, key);
+    if (isfinite(v)) {
+        fprintf(o->f, "%.10g", v);
+    } else {
+        o->nonfinite++;
+        fputs("null", o->f);
+    }
+}
+
+static void j_long(acbb_cli_out *o, const char *key, long v)
+{
+    j_key(o, key);
+    fprintf(o->f, "%ld", v);
+}
+
+static void j_str(acbb_cli_out *o, const char *key, const char *s)
+{
+    j_key(o, key);
+    j_string(o, s);
+}
+
+static void j_bool(acbb_cli_out *o, const char *key, bool b)
+{
+    j_key(o, key);
+    fputs(b ? "true" : "false", o->f);
+}
+
+static void j_null(acbb_cli_out *o, const char *key)
+{
+    j_key(o, key);
+    fputs("null", o->f);
+}
+
+/* A swept value is a JSON number when the whole text is one, else a string
+ * (enum and bool parameters). The parsed value is printed, not the text:
+ * strtod accepts forms JSON does not ("1.", ".5", "0x10"). */
+static void j_value_text(acbb_cli_out *o, const char *key, const char *text)
+{
+    char *end = NULL;
+    double v = strtod(text, &end);
+    if (end != text && *end == '\0' && isfinite(v)) j_num(o, key, v);
+    else j_str(o, key, text);
+}
+
+/* ---- plain-table cells: never print nan/inf, count them instead ---- */
+
+static void put_num(acbb_cli_out *o, int width, int prec, char conv, double v)
+{
+    if (!isfinite(v)) {
+        o->nonfinite++;
+        fprintf(o->f, "%*s", width, "-");
+    } else if (conv == 'g') {
+        fprintf(o->f, "%*.*g", width, prec, v);
+    } else {
+        fprintf(o->f, "%*.*f", width, prec, v);
+    }
+}
+
+/* A table cell `width` wide that always starts with a blank, so a value
+ * wider than planned (an exponent) shifts the row but never fuses with its
+ * neighbour. */
+static void cell(acbb_cli_out *o, int width, int prec, char conv, double v)
+{
+    fputc(' ', o->f);
+    put_num(o, width - 1, prec, conv, v);
+}
+
+/* ---- CSV ---- */
+
+static void c_num(acbb_cli_out *o, double v, bool last)
+{
+    if (isfinite(v)) fprintf(o->f, "%.10g", v);
+    else o->nonfinite++;
+    fputc(last ? '\n' : ',', o->f);
+}
+
+/* ---- acbb run ---- */
+
+static const char *onoff(bool b) { return b ? "on" : "off"; }
+
+static void summary_header(acbb_cli_out *o, const char *preset,
+                           const acbb_scene *sc, const acbb_snapshot *s)
+{
+    FILE *f = o->f;
+    fprintf(f, "acbb run %s\n", preset);
+    fprintf(f, "%-13s%.0f rpm, Fx %g N, Fr %g N, thermal expansion %s, %s\n",
+            "scene", sc->inner_speed * CLI_RPM, sc->axial_load, sc->radial_load,
+            onoff(sc->thermal_expansion), acbb_model_level_name(sc->model));
+    fprintf(f, "%-13s%s", "status", acbb_run_status_name(s));
+    if (s->message[0]) fprintf(f, ": %.60s", s->message);
+    fprintf(f, "\n%-13s%-10ld simulated time ", "iterations", s->iteration);
+    put_num(o, 1, 1, 'f', s->time);
+    fputs(" s   wall ", f);
+    put_num(o, 1, 1, 'f', s->wall_ms);
+    fprintf(f, " ms\n%-13s", "residual");
+    put_num(o, 1, 3, 'g', s->residual);
+    fputs(" K/s   energy in ", f);
+    put_num(o, 1, 6, 'g', s->heat_in);
+    fputs(" W, out ", f);
+    put_num(o, 1, 6, 'g', s->heat_out);
+    fputs(" W\n\n", f);
+}
+
+static void summary_thermal(acbb_cli_out *o, const acbb_snapshot *s)
+{
+    FILE *f = o->f;
+    const double T[6] = { s->T_outer_ring, s->T_inner_ring, s->T_ball,
+                          s->T_housing, s->T_shaft, s->T_cavity };
+    fprintf(f, "%-13s%11s%11s%11s%11s%11s%11s\n%13s", "temperature C",
+            "outer ring", "inner ring", "ball", "housing", "shaft", "cavity", "");
+    for (int i = 0; i < 6; i++) cell(o, 11, 2, 'f', T[i]);
+
+    const acbb_losses *L = &s->losses;
+    const double P[6] = { L->shear, L->slip, L->spin, L->rolling, L->drag, L->total };
+    fprintf(f, "\n\n%-13s%10s%10s%10s%10s%10s%10s\n%-13s", "losses", "shear",
+            "slip", "spin", "rolling", "drag", "total", "  W");
+    for (int i = 0; i < 6; i++) cell(o, 10, 4, 'g', P[i]);
+    fprintf(f, "\n%-13s", "  %");
+    for (int i = 0; i < 6; i++) {
+        if (L->total > 0.0) cell(o, 10, 1, 'f', 100.0 * P[i] / L->total);
+        else fprintf(f, "%10s", "-");
+    }
+
+    const double X[5] = { s->exp_ball, s->exp_inner + s->exp_inner_cen,
+                          s->exp_inner, s->exp_inner_cen, s->exp_outer };
+    fprintf(f, "\n\n%-13s%11s%11s%11s%11s%11s\n%13s", "expansion um", "ball",
+            "inner ring", "IR thermal", "IR centrif", "outer ring", "");
+    for (int i = 0; i < 5; i++) cell(o, 11, 4, 'f', X[i] * CLI_UM);
+    fputs("\n\n", f);
+}
+
+/* All balls carry the same state (pure axial load): one row says it all. */
+static bool balls_identical(const acbb_snapshot *s)
+{
+    const acbb_ball_view *b0 = &s->balls[0];
+    for (int k = 1; k < s->n_balls; k++) {
+        const acbb_ball_view *b = &s->balls[k];
+        const double a[10] = { b0->Qi, b0->Qo, b0->alpha_i, b0->alpha_o, b0->slide_i,
+                               b0->slide_o, b0->spin_i, b0->spin_o, b0->film_i, b0->film_o };
+        const double c[10] = { b->Qi, b->Qo, b->alpha_i, b->alpha_o, b->slide_i,
+                               b->slide_o, b->spin_i, b->spin_o, b->film_i, b->film_o };
+        for (int j = 0; j < 10; j++)
+            if (!(fabs(a[j] - c[j]) <= 1e-6 * fmax(fabs(a[j]), fabs(c[j])))) return false;
+    }
+    return true;
+}
+
+static void ball_rows(acbb_cli_out *o, const char *label, const acbb_ball_view *b,
+                      bool show_psi)
+{
+    fprintf(o->f, "%-13s", label);
+    if (show_psi) cell(o, 8, 2, 'f', b->psi * CLI_DEG);
+    else fprintf(o->f, "%8s", "-");
+    fprintf(o->f, "  %-5s", "inner");
+    cell(o, 9, 2, 'f', b->Qi);
+    cell(o, 11, 3, 'f', b->alpha_i * CLI_DEG);
+    cell(o, 11, 4, 'g', b->slide_i);
+    cell(o, 11, 4, 'g', b->spin_i);
+    cell(o, 9, 4, 'f', b->film_i * CLI_UM);
+    fprintf(o->f, "\n%13s%8s  %-5s", "", "", "outer");
+    cell(o, 9, 2, 'f', b->Qo);
+    cell(o, 11, 3, 'f', b->alpha_o * CLI_DEG);
+    cell(o, 11, 4, 'g', b->slide_o);
+    cell(o, 11, 4, 'g', b->spin_o);
+    cell(o, 9, 4, 'f', b->film_o * CLI_UM);
+    fputc('\n', o->f);
+}
+
+static void summary_balls(acbb_cli_out *o, const acbb_snapshot *s)
+{
+    fprintf(o->f, "%-13s%8s  %-5s%9s%11s%11s%11s%9s\n", "balls", "psi deg", "race",
+            "Q N", "alpha deg", "slide m/s", "spin rad/s", "film um");
+    if (s->n_balls <= 0) {
+        fputs("(no balls)\n", o->f);
+        return;
+    }
+    if (s->n_balls > 1 && balls_identical(s)) {
+        char label[32];
+        snprintf(label, sizeof label, "all %d balls", s->n_balls);
+        ball_rows(o, label, &s->balls[0], false);
+        return;
+    }
+    for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) {
+        char label[32];
+        snprintf(label, sizeof label, "ball %d", k);
+        ball_rows(o, label, &s->balls[k], true);
+    }
+}
+
+void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
+                            const acbb_scene *sc, const acbb_snapshot *snap)
+{
+    summary_header(o, preset, sc, snap);
+    summary_thermal(o, snap);
+    summary_balls(o, snap);
+}
+
+static void json_scene(acbb_cli_out *o, const acbb_scene *sc)
+{
+    j_open(o, "scene", '{', false);
+    j_num(o, "inner_speed_rpm", sc->inner_speed * CLI_RPM);
+    j_num(o, "axial_load_N", sc->axial_load);
+    j_num(o, "radial_load_N", sc->radial_load);
+    j_bool(o, "thermal_expansion", sc->thermal_expansion);
+    j_str(o, "model", acbb_model_level_name(sc->model));
+    j_close(o, '}');
+}
+
+static void json_ball(acbb_cli_out *o, const acbb_ball_view *b)
+{
+    j_open(o, NULL, '{', true);
+    j_num(o, "psi_deg", b->psi * CLI_DEG);
+    j_num(o, "Qi_N", b->Qi);
+    j_num(o, "Qo_N", b->Qo);
+    j_num(o, "alpha_i_deg", b->alpha_i * CLI_DEG);
+    j_num(o, "alpha_o_deg", b->alpha_o * CLI_DEG);
+    j_num(o, "slide_i_mps", b->slide_i);
+    j_num(o, "slide_o_mps", b->slide_o);
+    j_num(o, "spin_i_radps", b->spin_i);
+    j_num(o, "spin_o_radps", b->spin_o);
+    j_num(o, "film_i_um", b->film_i * CLI_UM);
+    j_num(o, "film_o_um", b->film_o * CLI_UM);
+    j_num(o, "omega_m_radps", b->omega_m);
+    j_close(o, '}');
+}
+
+void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
+{
+    j_open(o, NULL, '{', false);
+    j_str(o, "status", acbb_run_status_name(s));
+    j_str(o, "message", s->message);
+    j_long(o, "iterations", s->iteration);
+    j_num(o, "time_s", s->time);
+    j_num(o, "wall_ms", s->wall_ms);
+
+    j_open(o, "losses_W", '{', false);
+    j_num(o, "shear", s->losses.shear);
+    j_num(o, "slip", s->losses.slip);
+    j_num(o, "spin", s->losses.spin);
+    j_num(o, "rolling", s->losses.rolling);
+    j_num(o, "drag", s->losses.drag);
+    j_num(o, "total", s->losses.total);
+    j_close(o, '}');
+
+    j_open(o, "temperature_C", '{', false);
+    j_num(o, "outer_ring", s->T_outer_ring);
+    j_num(o, "inner_ring", s->T_inner_ring);
+    j_num(o, "ball", s->T_ball);
+    j_num(o, "housing", s->T_housing);
+    j_num(o, "shaft", s->T_shaft);
+    j_num(o, "cavity", s->T_cavity);
+    j_open(o, "nodes", '[', true);
+    for (int i = 0; i < s->n_nodes && i < ACBB_MAX_NODES; i++) j_num(o, NULL, s->T[i]);
+    j_close(o, ']');
+    j_close(o, '}');
+
+    j_open(o, "expansion_um", '{', false);
+    j_num(o, "ball", s->exp_ball * CLI_UM);
+    j_num(o, "inner_ring", (s->exp_inner + s->exp_inner_cen) * CLI_UM);
+    j_num(o, "outer_ring", s->exp_outer * CLI_UM);
+    j_num(o, "inner_thermal", s->exp_inner * CLI_UM);
+    j_num(o, "inner_centrifugal", s->exp_inner_cen * CLI_UM);
+    j_close(o, '}');
+
+    j_open(o, "balls", '[', false);
+    for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) json_ball(o, &s->balls[k]);
+    j_close(o, ']');
+
+    j_open(o, "energy_W", '{', false);
+    j_num(o, "in", s->heat_in);
+    j_num(o, "out", s->heat_out);
+    j_close(o, '}');
+
+    json_scene(o, sc);
+    j_close(o, '}');
+}
+
+void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
+                          const char *status, const char *message)
+{
+    j_open(o, NULL, '{', false);
+    j_str(o, "status", status);
+    j_str(o, "message", message);
+    j_long(o, "iterations", 0);
+    json_scene(o, sc);
+    j_close(o, '}');
+}
+
+void acbb_cli_csv_header(acbb_cli_out *o)
+{
+    fputs("iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,"
+          "P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_total_W,"
+          "Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,"
+          "exp_outer_um,residual_K_s\n", o->f);
+}
+
+/* exp_inner_um is thermal + centrifugal, as expansion_um.inner_ring in the
+ * JSON (the seed compares theta_i + theta_icen with theta_o, MODEL.md 12.4). */
+void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
+{
+    const acbb_ball_view *b = s->n_balls > 0 ? &s->balls[0] : NULL;
+    fprintf(o->f, "%ld,", s->iteration);
+    c_num(o, s->time, false);
+    c_num(o, s->dt, false);
+    c_num(o, s->T_outer_ring, false);
+    c_num(o, s->T_inner_ring, false);
+    c_num(o, s->T_ball, false);
+    c_num(o, s->losses.shear, false);
+    c_num(o, s->losses.slip, false);
+    c_num(o, s->losses.spin, false);
+    c_num(o, s->losses.rolling, false);
+    c_num(o, s->losses.drag, false);
+    c_num(o, s->losses.total, false);
+    c_num(o, b ? b->Qi : NAN, false);
+    c_num(o, b ? b->Qo : NAN, false);
+    c_num(o, b ? b->alpha_i * CLI_DEG : NAN, false);
+    c_num(o, b ? b->alpha_o * CLI_DEG : NAN, false);
+    c_num(o, s->exp_ball * CLI_UM, false);
+    c_num(o, (s->exp_inner + s->exp_inner_cen) * CLI_UM, false);
+    c_num(o, s->exp_outer * CLI_UM, false);
+    c_num(o, s->residual, true);
+}
+
+/* ---- acbb sweep ---- */
+
+/* The numbers a sweep reports for one point (ball 0 for the contacts). */
+enum { SW_T, SW_SHEAR, SW_SLIP, SW_SPIN, SW_ROLL, SW_DRAG, SW_TOTAL,
+       SW_QI, SW_QO, SW_AI, SW_AO, SW_N };
+static const char *const sweep_keys[SW_N] = {
+    "T_outer_ring_C", "P_shear_W", "P_slip_W", "P_spin_W", "P_rolling_W",
+    "P_drag_W", "P_total_W", "Qi_N", "Qo_N", "alpha_i_deg", "alpha_o_deg" };
+
+static void sweep_values(const acbb_cli_point *p, double v[SW_N])
+{
+    const acbb_snapshot *s = &p->snap;
+    const acbb_ball_view *b = &s->balls[0];
+    bool has_ball = s->n_balls > 0;
+    v[SW_T] = s->T_outer_ring;
+    v[SW_SHEAR] = s->losses.shear;
+    v[SW_SLIP] = s->losses.slip;
+    v[SW_SPIN] = s->losses.spin;
+    v[SW_ROLL] = s->losses.rolling;
+    v[SW_DRAG] = s->losses.drag;
+    v[SW_TOTAL] = s->losses.total;
+    v[SW_QI] = has_ball ? b->Qi : NAN;
+    v[SW_QO] = has_ball ? b->Qo : NAN;
+    v[SW_AI] = has_ball ? b->alpha_i * CLI_DEG : NAN;
+    v[SW_AO] = has_ball ? b->alpha_o * CLI_DEG : NAN;
+}
+
+static void sweep_failures(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        const acbb_cli_point *p = &pts[i];
+        if (acbb_cli_point_ok(p)) continue;
+        fprintf(o->f, "  %s: %s: %s\n", p->value, acbb_cli_point_status(p),
+                p->have_snap ? p->snap.message : p->message);
+    }
+}
+
+void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
+                          const acbb_cli_point *pts, size_t n)
+{
+    FILE *f = o->f;
+    fprintf(f, "sweep of %s (%zu points); contacts of ball 0\n", param, n);
+    fprintf(f, "%-10s %-13s %6s %8s %8s %8s %7s %7s\n", "value", "status", "iter",
+            "T_or C", "Qi N", "Qo N", "a_i deg", "a_o deg");
+    for (size_t i = 0; i < n; i++) {
+        const acbb_cli_point *p = &pts[i];
+        fprintf(f, "%-10s %-13s ", p->value, acbb_cli_point_status(p));
+        if (!p->have_snap) {
+            fputs("     -\n", f);
+            continue;
+        }
+        double v[SW_N];
+        sweep_values(p, v);
+        fprintf(f, "%6ld", p->snap.iteration);
+        cell(o, 9, 2, 'f', v[SW_T]);
+        cell(o, 9, 2, 'f', v[SW_QI]);
+        cell(o, 9, 2, 'f', v[SW_QO]);
+        cell(o, 8, 3, 'f', v[SW_AI]);
+        cell(o, 8, 3, 'f', v[SW_AO]);
+        fputc('\n', f);
+    }
+    fprintf(f, "\n%-10s %8s %8s %8s %8s %8s %8s %8s\n", "losses W", "shear", "slip",
+            "spin", "rolling", "drag", "total", "wall ms");
+    for (size_t i = 0; i < n; i++) {
+        const acbb_cli_point *p = &pts[i];
+        fprintf(f, "%-10s", p->value);
+        if (!p->have_snap) {
+            fputs("        -\n", f);
+            continue;
+        }
+        double v[SW_N];
+        sweep_values(p, v);
+        for (int k = SW_SHEAR; k <= SW_TOTAL; k++) cell(o, 9, 4, 'g', v[k]);
+        cell(o, 9, 1, 'f', p->wall_ms);
+        fputc('\n', f);
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (!acbb_cli_point_ok(&pts[i])) {
+            fputs("\nfailed points:\n", f);
+            sweep_failures(o, pts, n);
+            break;
+        }
+    }
+}
+
+void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
+                         const acbb_cli_point *pts, size_t n)
+{
+    j_open(o, NULL, '[', false);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_cli_point *p = &pts[i];
+        j_open(o, NULL, '{', true);
+        j_str(o, "param", param);
+        j_value_text(o, "value", p->value);
+        j_str(o, "status", acbb_cli_point_status(p));
+        j_str(o, "message", p->have_snap ? p->snap.message : p->message);
+        j_long(o, "iterations", p->have_snap ? p->snap.iteration : 0);
+        j_num(o, "wall_ms", p->wall_ms);
+        double v[SW_N];
+        if (p->have_snap) sweep_values(p, v);
+        for (int k = 0; k < SW_N; k++) {
+            if (p->have_snap) j_num(o, sweep_keys[k], v[k]);
+            else j_null(o, sweep_keys[k]);
+        }
+        j_close(o, '}');
+    }
+    j_close(o, ']');
+}
+
+void acbb_cli_sweep_csv(acbb_cli_out *o, const char *param,
+                        const acbb_cli_point *pts, size_t n)
+{
+    fprintf(o->f, "%s,status,iterations,wall_ms", param);
+    for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s", sweep_keys[k]);
+    fputc('\n', o->f);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_cli_point *p = &pts[i];
+        fprintf(o->f, "%s,%s,%ld,", p->value, acbb_cli_point_status(p),
+                p->have_snap ? p->snap.iteration : 0L);
+        c_num(o, p->wall_ms, false);
+        double v[SW_N];
+        if (p->have_snap) sweep_values(p, v);
+        for (int k = 0; k < SW_N; k++) {
+            if (p->have_snap) c_num(o, v[k], k == SW_N - 1);
+            else fputs(k == SW_N - 1 ? "\n" : ",", o->f);
+        }
+    }
+}
+
+/* ---- acbb study ---- */
+
+static void study_cells(acbb_cli_out *o, const acbb_cli_point *te,
+                        const acbb_cli_point *wte)
+{
+    const acbb_cli_point *pair[2] = { te, wte };
+    for (int m = 0; m < 2; m++) {
+        if (pair[m]->have_snap) cell(o, 8, 2, 'f', pair[m]->snap.T_outer_ring);
+        else fprintf(o->f, "%8s", "-");
+    }
+    for (int m = 0; m < 2; m++) {
+        if (pair[m]->have_snap) cell(o, 9, 3, 'f', pair[m]->snap.losses.total);
+        else fprintf(o->f, "%9s", "-");
+    }
+    if (te->have_snap && wte->have_snap) {
+        double d = te->snap.losses.total - wte->snap.losses.total;
+        double w = wte->snap.losses.total;
+        cell(o, 9, 3, 'f', d);
+        if (w > 0.0) cell(o, 7, 1, 'f', 100.0 * d / w);
+        else fprintf(o->f, "%7s", "-");
+    } else {
+        fprintf(o->f, "%9s%7s", "-", "-");
+    }
+    for (int m = 0; m < 2; m++) {
+        const acbb_snapshot *s = &pair[m]->snap;
+        if (pair[m]->have_snap && s->n_balls > 0) cell(o, 8, 1, 'f', s->balls[0].Qi);
+        else fprintf(o->f, "%8s", "-");
+    }
+    if (!acbb_cli_point_ok(te) || !acbb_cli_point_ok(wte)) fputs(" *", o->f);
+    fputc('\n', o->f);
+}
+
+static void study_block_failures(acbb_cli_out *o, const acbb_cli_point *pts,
+                                 const acbb_cli_study_block *b)
+{
+    for (size_t k = b->first; k < b->first + b->count; k++) {
+        for (int m = 0; m < 2; m++) {
+            const acbb_cli_point *p = &pts[2 * k + (size_t)m];
+            if (acbb_cli_point_ok(p)) continue;
+            fprintf(o->f, "  * %s at %s %s: %s: %.50s\n", m == 0 ? "TE" : "WTE",
+                    b->x_label, p->value, acbb_cli_point_status(p),
+                    p->have_snap ? p->snap.message : p->message);
+        }
+    }
+}
+
+void acbb_cli_study_table(acbb_cli_out *o, const acbb_cli_point *pts,
+                          const acbb_cli_study_block *blocks, size_t nb)
+{
+    FILE *f = o->f;
+    fputs("TE = with thermal expansion, WTE = without; dP = P_total(TE) - "
+          "P_total(WTE)\n", f);
+    for (size_t i = 0; i < nb; i++) {
+        const acbb_cli_study_block *b = &blocks[i];
+        fprintf(f, "\n%s\n", b->title);
+        fprintf(f, "%7s %16s %18s %16s %16s\n", "", "T outer ring C",
+                "total loss W", "dP", "Qi ball 0 N");
+        fprintf(f, "%7s%8s%8s%9s%9s%9s%7s%8s%8s\n", b->x_label, "TE", "WTE",
+                "TE", "WTE", "W", "%", "TE", "WTE");
+        for (size_t k = b->first; k < b->first + b->count; k++) {
+            fprintf(f, "%7s", pts[2 * k].value);
+            study_cells(o, &pts[2 * k], &pts[2 * k + 1]);
+        }
+        study_block_failures(o, pts, b);
+    }
+}
+
+static void study_csv_point(acbb_cli_out *o, const acbb_cli_point *p)
+{
+    fprintf(o->f, ",%s,%ld", acbb_cli_point_status(p),
+            p->have_snap ? p->snap.iteration : 0L);
+    double v[SW_N];
+    if (p->have_snap) sweep_values(p, v);
+    for (int k = 0; k < SW_N; k++) {
+        fputc(',', o->f);
+        if (p->have_snap && isfinite(v[k])) fprintf(o->f, "%.10g", v[k]);
+        else if (p->have_snap) o->nonfinite++;
+    }
+}
+
+void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
+                        const acbb_cli_study_block *blocks, size_t nb)
+{
+    fputs("sweep,inner_speed_rpm,axial_load_N", o->f);
+    const char *mode[2] = { "te", "wte" };
+    for (int m = 0; m < 2; m++) {
+        fprintf(o->f, ",%s_status,%s_iterations", mode[m], mode[m]);
+        for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s_%s", mode[m], sweep_keys[k]);
+    }
+    fputs(",dP_total_W\n", o->f);
+    for (size_t i = 0; i < nb; i++) {
+        const acbb_cli_study_block *b = &blocks[i];
+        for (size_t k = b->first; k < b->first + b->count; k++) {
+            const acbb_cli_point *te = &pts[2 * k], *wte = &pts[2 * k + 1];
+            fprintf(o->f, "%s,%.10g,%.10g", b->name, te->scene.inner_speed * CLI_RPM,
+                    te->scene.axial_load);
+            study_csv_point(o, te);
+            study_csv_point(o, wte);
+            fputc(',', o->f);
+            if (te->have_snap && wte->have_snap)
+                c_num(o, te->snap.losses.total - wte->snap.losses.total, true);
+            else
+                fputc('\n', o->f);
+        }
+    }
+}

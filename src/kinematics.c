@@ -13,18 +13,29 @@ void acbb_kinematics_race_control(double alpha_i, double alpha_o, double D, doub
                                     / ((1.0 - g * ci) * (co + tb * so)));
     double wm = ratio * omega_i;
     double wR = wm * (1.0 + g * co) / (g * cos(alpha_o - beta));
-    double rm = 0.5 * dm;
+    acbb_kinematics_from_omega(alpha_i, alpha_o, D, dm, omega_i, wm, -wR * cos(beta), 0.0,
+                               wR * sin(beta), k);
+}
 
-    k->beta = beta;
+void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double dm,
+                                double omega_i, double omega_m, double wx, double wy,
+                                double wz, acbb_kin *k)
+{
+    double si = sin(alpha_i), ci = cos(alpha_i), so = sin(alpha_o), co = cos(alpha_o);
+    double rm = 0.5 * dm, wm = omega_m;
     k->omega_m = wm;
-    k->omega_R = wR;
-    k->wx = -wR * cos(beta);
-    k->wy = 0.0;
-    k->wz = wR * sin(beta);
-    k->spin_o = wm * so - wR * sin(alpha_o - beta);
-    k->spin_i = (omega_i - wm) * si + wR * sin(alpha_i - beta);
-    k->roll_o = wR * cos(alpha_o - beta);
-    k->roll_i = wR * cos(alpha_i - beta);
+    k->wx = wx;
+    k->wy = wy;
+    k->wz = wz;
+    k->omega_R = hypot(wx, wz);
+    k->beta = atan2(wz, -wx);
+    /* Relative angular velocity ball - race along each contact normal. */
+    k->spin_o = (wx + wm) * so + wz * co;
+    k->spin_i = (omega_i - wm) * si - wx * si - wz * ci;
+    /* Rolling component: omega_b across the normal in the meridional plane,
+     * omega_R cos(alpha - beta) for omega_y' = 0. */
+    k->roll_o = -wx * co + wz * so;
+    k->roll_i = -wx * ci + wz * si;
     k->u_o = 0.5 * (0.5 * D * k->roll_o + wm * (rm + 0.5 * D * co));
     k->u_i = 0.5 * (0.5 * D * k->roll_i + (omega_i - wm) * (rm - 0.5 * D * ci));
 }

@@ -1,3 +1,251 @@
 #!/bin/sh
-echo "1..1"
-echo "ok 1 - stub"
+# End-to-end tests of the acbb CLI (TAP). $1 = path of the acbb binary;
+# cwd = repository root. Needs jq. Every assertion compares the CLI's output
+# with an independent expectation: conservation (loss sum, energy balance),
+# exact messages and exit codes, or the seed's qualitative results (MODEL.md 12).
+set -u
+
+ACBB=${1:?usage: test_cli.sh path/to/acbb}
+PRESET=presets/7008C.ini
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-cli.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+
+n=0
+failed=0
+# t COND_STATUS NAME: record one TAP result from the status of the last test.
+t() {
+    n=$((n + 1))
+    if [ "$1" -eq 0 ]; then
+        echo "ok $n - $2"
+    else
+        echo "not ok $n - $2"
+        failed=$((failed + 1))
+    fi
+}
+# jqt FILE FILTER NAME: the jq filter must evaluate to true on FILE.
+jqt() {
+    jq -e "def abs: if . < 0 then -. else . end; $2" "$1" >/dev/null 2>&1
+    t $? "$3"
+}
+# has FILE TEXT NAME: FILE contains TEXT literally.
+has() {
+    grep -F -q -- "$2" "$1"
+    t $? "$3"
+}
+# code GOT WANT NAME
+code() {
+    [ "$1" -eq "$2" ]
+    t $? "$3 (exit $1, want $2)"
+    [ "$1" -eq "$2" ] || sed 's/^/# /' "$TMP/err" 2>/dev/null | head -5
+}
+
+# ---- run --json at the seed's base point ----
+"$ACBB" run "$PRESET" --json >"$TMP/run.json" 2>"$TMP/err"
+code $? 0 "run $PRESET --json converges"
+jqt "$TMP/run.json" '.status == "converged"' "json status is converged"
+jqt "$TMP/run.json" '.losses_W | ((.shear + .slip + .spin + .rolling + .drag) - .total | abs) <= 1e-9 * .total' \
+    "losses: total equals the sum of the five (1e-9 rel)"
+jqt "$TMP/run.json" '.losses_W | [.shear, .slip, .spin, .rolling, .drag] | all(. >= 0)' \
+    "losses: all five are >= 0"
+jqt "$TMP/run.json" '.losses_W.total > 0' "losses: total > 0 at 15000 rpm"
+jqt "$TMP/run.json" '.temperature_C.outer_ring > 26' "outer ring warmer than the 26 C ambient"
+jqt "$TMP/run.json" '(.balls | length) == 21' "21 balls reported"
+jqt "$TMP/run.json" '.energy_W | ((.in - .out) | abs) <= 1e-3 * .in' \
+    "energy balance: heat in equals heat out within 0.1 %"
+jqt "$TMP/run.json" '(.temperature_C.nodes | length) > 0 and ([.temperature_C.nodes[] | . >= 26 - 1e-6] | all)' \
+    "every node temperature >= ambient"
+jqt "$TMP/run.json" '.expansion_um | ((.inner_ring - .inner_thermal - .inner_centrifugal) | abs) <= 1e-6 * (.inner_ring | abs) + 1e-9' \
+    "expansion: inner_ring = inner_thermal + inner_centrifugal"
+jqt "$TMP/run.json" '.scene.inner_speed_rpm == 15000 and .scene.axial_load_N == 1000 and .scene.thermal_expansion == true' \
+    "scene echoes the preset operating point (15000 rpm, 1000 N, TE)"
+jqt "$TMP/run.json" '[.balls[] | .Qo_N >= .Qi_N * 0.5 and .alpha_i_deg > 0 and .alpha_o_deg > 0] | all' \
+    "balls: positive contact angles, sane Qo"
+
+jqt "$TMP/run.json" '([.balls[] | .Qi_N * (.alpha_i_deg * 3.141592653589793 / 180 | sin)] | add) as $fx
+    | (($fx - .scene.axial_load_N) | abs) <= 1e-3 * .scene.axial_load_N' \
+    "inner-ring equilibrium: sum Qi sin(alpha_i) = axial load (1e-3 rel)"
+
+# ---- plain summary ----
+"$ACBB" run "$PRESET" >"$TMP/run.txt" 2>"$TMP/err"
+code $? 0 "plain run exits 0"
+grep -q "^status  *converged" "$TMP/run.txt"
+t $? "plain output names the status"
+has "$TMP/run.txt" "all 21 balls" "identical balls collapse to one row"
+awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/run.txt"
+t $? "plain output fits 80 columns"
+
+# combined load: balls differ, so one row pair per ball; radial equilibrium
+"$ACBB" run "$PRESET" --set operating.radial_load_N=300 >"$TMP/rad.txt" 2>"$TMP/err"
+code $? 0 "combined load (1000 N axial, 300 N radial) exits 0"
+[ "$(grep -c '^ball [0-9]' "$TMP/rad.txt")" -eq 21 ]
+t $? "combined load: 21 per-ball rows"
+awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/rad.txt"
+t $? "combined-load output fits 80 columns"
+"$ACBB" run "$PRESET" --json --set operating.radial_load_N=300 >"$TMP/rad.json" 2>"$TMP/err"
+jqt "$TMP/rad.json" '([.balls[] | .Qi_N * (.alpha_i_deg * 3.141592653589793 / 180 | cos)
+    * (.psi_deg * 3.141592653589793 / 180 | cos)] | add) as $fr
+    | (($fr - .scene.radial_load_N) | abs) <= 1e-3 * .scene.axial_load_N' \
+    "radial equilibrium: sum Qi cos(alpha_i) cos(psi) = radial load"
+jqt "$TMP/rad.json" '([.balls[].Qi_N] | max) > ([.balls[].Qi_N] | min) * 1.01' \
+    "radial load spreads the ball loads"
+
+# ---- CSV, in the same run as the JSON ----
+"$ACBB" run "$PRESET" --json --csv "$TMP/run.csv" >"$TMP/csv.json" 2>"$TMP/err"
+code $? 0 "run --json --csv exits 0"
+[ ! -e "$TMP/run.csv.tmp" ] && [ -s "$TMP/run.csv" ]
+t $? "csv written and the .tmp renamed away"
+head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s'
+t $? "csv header row"
+iters=$(jq '.iterations' "$TMP/csv.json")
+rows=$(($(wc -l <"$TMP/run.csv") - 1))
+[ "$rows" -eq "$iters" ] || [ "$rows" -eq $((iters + 1)) ]
+t $? "csv rows ($rows) == iterations ($iters) + 0 or 1"
+awk -F, 'NR > 2 && $1 <= prev { bad = 1 } NR > 1 { prev = $1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv iteration column strictly increasing"
+awk -F, 'NR > 1 && NF != 20 { bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv rows have 20 fields"
+last_T=$(tail -n 1 "$TMP/run.csv" | cut -d, -f4)
+jq -e --argjson T "$last_T" 'def abs: if . < 0 then -. else . end;
+    ((.temperature_C.outer_ring - $T) | abs) <= 1e-9 * ($T | abs)' "$TMP/csv.json" >/dev/null 2>&1
+t $? "csv last-row T_outer_ring ($last_T) equals the JSON outer_ring"
+last_P=$(tail -n 1 "$TMP/run.csv" | cut -d, -f12)
+jq -e --argjson P "$last_P" 'def abs: if . < 0 then -. else . end;
+    ((.losses_W.total - $P) | abs) <= 1e-9 * ($P | abs)' "$TMP/csv.json" >/dev/null 2>&1
+t $? "csv last-row P_total equals the JSON total"
+awk -F, 'NR > 1 { s = $7 + $8 + $9 + $10 + $11; d = s - $12; if (d < 0) d = -d;
+    if (d > 1e-8 * ($12 < 0 ? -$12 : $12) + 1e-12) bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv: every row's total equals the sum of its five losses"
+
+# ---- --set ----
+"$ACBB" run "$PRESET" --json --set operating.axial_load_N=200 >"$TMP/200.json" 2>"$TMP/err"
+code $? 0 "run --set operating.axial_load_N=200 exits 0"
+jq -e --slurpfile hi "$TMP/run.json" '.balls[0].Qi_N < $hi[0].balls[0].Qi_N and .scene.axial_load_N == 200' \
+    "$TMP/200.json" >/dev/null 2>&1
+t $? "--set axial 200 N gives a smaller Qi than 1000 N"
+
+"$ACBB" run "$PRESET" --set operating.axial_lod_N=200 >"$TMP/out" 2>"$TMP/err"
+code $? 2 "unknown --set key exits 2"
+has "$TMP/err" "acbb: --set operating.axial_lod_N=200: " "unknown key message names the edit"
+has "$TMP/err" "did you mean" "unknown key message suggests a key"
+has "$TMP/err" "axial_load_N" "suggestion is the nearest key"
+
+"$ACBB" run "$PRESET" --set operating.axial_load_N=-5 >"$TMP/out" 2>"$TMP/err"
+code $? 2 "out-of-range --set value exits 2"
+has "$TMP/err" "acbb: --set operating.axial_load_N=-5: " "range message names the edit"
+grep -q -i 'range\|must be\|>=' "$TMP/err"
+t $? "range message says what is allowed"
+[ ! -s "$TMP/out" ]
+t $? "nothing on stdout after a bad --set"
+
+"$ACBB" run "$PRESET" --set operating.axial_load_N >"$TMP/out" 2>"$TMP/err"
+code $? 2 "--set without '=' exits 2"
+
+# ---- bad presets ----
+"$ACBB" run "$TMP/no-such.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "missing preset exits 2"
+has "$TMP/err" "cannot open" "missing preset message says cannot open"
+
+bad="$TMP/bad.ini"
+if grep -q '^[[:space:]]*ball_diameter_mm[[:space:]]*=' "$PRESET"; then
+    sed 's/^[[:space:]]*ball_diameter_mm[[:space:]]*=.*/ball_diameter_mm = -3/' "$PRESET" >"$bad"
+else
+    sed 's/^\[bearing\].*/&\nball_diameter_mm = -3/' "$PRESET" >"$bad"
+fi
+line=$(grep -n '^ball_diameter_mm = -3$' "$bad" | cut -d: -f1)
+"$ACBB" run "$bad" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "preset with ball_diameter_mm = -3 exits 2"
+has "$TMP/err" "$bad:$line: bearing.ball_diameter_mm = -3" "message is file:line: bearing.ball_diameter_mm = -3"
+
+# ---- check ----
+"$ACBB" check "$PRESET" >"$TMP/out" 2>"$TMP/err"
+code $? 0 "check of the seed preset exits 0"
+grep -q -x "$PRESET: ok" "$TMP/out"
+t $? "check prints 'PRESET: ok'"
+"$ACBB" check "$bad" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check of the bad preset exits 2"
+has "$TMP/err" "bearing.ball_diameter_mm = -3" "check prints the bad-value message"
+"$ACBB" check "$PRESET" --set operating.axial_load_N=0 --set operating.radial_load_N=500 \
+    >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check of a pure radial scene (ill-posed) exits 2"
+grep -q 'axial_load_N' "$TMP/err"
+t $? "ill-posed message names the key to change (axial_load_N)"
+
+# ---- exit 3: step limit ----
+"$ACBB" run "$PRESET" --json --set thermal.max_steps=3 >"$TMP/ns.json" 2>"$TMP/err"
+code $? 3 "step limit reached exits 3"
+jqt "$TMP/ns.json" '.status == "not_converged" and .iterations <= 3' \
+    "--json still prints the object, status not_converged, <= 3 iterations"
+grep -q 'not_converged' "$TMP/err"
+t $? "stderr names the status"
+
+# ---- seed conclusion 1 through the CLI (TE vs WTE at 15000 rpm, 1000 N) ----
+# The seed says TE raises the contact loads. In this model the sign of the
+# change follows the net squeeze of the expansions (ring growths along the
+# contact line, ball growth on both contacts); the test checks that, and a
+# diagnostic line says whether the seed's claim holds (see the issue notes).
+"$ACBB" run "$PRESET" --json --set operating.inner_speed_rpm=15000 \
+    --set operating.axial_load_N=1000 --set effects.thermal_expansion=false \
+    >"$TMP/wte.json" 2>"$TMP/err"
+code $? 0 "WTE run at 15000 rpm, 1000 N exits 0"
+jq -e --slurpfile te "$TMP/run.json" '
+    ($te[0].expansion_um) as $e
+    | (($e.inner_ring - $e.outer_ring) * ($te[0].balls[0].alpha_i_deg * 3.141592653589793 / 180 | cos)
+       + 2 * $e.ball) as $squeeze
+    | .scene.thermal_expansion == false
+      and (($te[0].balls[0].Qi_N - .balls[0].Qi_N) * $squeeze > 0)' \
+    "$TMP/wte.json" >/dev/null 2>&1
+t $? "TE - WTE inner load has the sign of the net expansion squeeze (1000 N)"
+held=$(jq -r --slurpfile te "$TMP/run.json" \
+    'if $te[0].balls[0].Qi_N > .balls[0].Qi_N then "held" else "NOT held" end' "$TMP/wte.json")
+echo "# seed conclusion 1 (Qi TE > WTE at 1000 N): $held"
+
+# ---- sweep ----
+"$ACBB" sweep "$PRESET" --param operating.axial_load_N --values 200,500,1000 --json \
+    >"$TMP/sw.json" 2>"$TMP/err"
+code $? 0 "sweep of 3 loads exits 0"
+jqt "$TMP/sw.json" 'length == 3 and ([.[].value] == [200, 500, 1000])' "sweep JSON has the 3 points in order"
+jqt "$TMP/sw.json" '[.[].Qi_N] | [range(1; length) as $i | .[$i] > .[$i - 1]] | all' \
+    "sweep: Qi increases with the axial load"
+jq -e --slurpfile one "$TMP/run.json" 'def abs: if . < 0 then -. else . end;
+    ((.[2].P_total_W - $one[0].losses_W.total) | abs) <= 1e-9 * .[2].P_total_W' \
+    "$TMP/sw.json" >/dev/null 2>&1
+t $? "sweep point at 1000 N equals the single run"
+"$ACBB" sweep "$PRESET" --param operating.axial_load_N --values 200,500,1000 \
+    --csv "$TMP/sw.csv" >"$TMP/sw.txt" 2>"$TMP/err"
+code $? 0 "sweep --csv exits 0"
+[ "$(wc -l <"$TMP/sw.csv")" -eq 4 ]
+t $? "sweep CSV: header + 3 rows"
+awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/sw.txt"
+t $? "sweep table fits 80 columns"
+"$ACBB" sweep "$PRESET" --param operating.axial_load_N --values 200,-5 >"$TMP/out" 2>"$TMP/err"
+code $? 2 "sweep with a bad value exits 2"
+"$ACBB" sweep "$PRESET" --param thermal.max_steps --values 3,2000 --json >"$TMP/sw3.json" 2>"$TMP/err"
+code $? 3 "sweep with a failing point exits 3"
+jqt "$TMP/sw3.json" 'length == 2 and .[0].status == "not_converged" and .[1].status == "converged"' \
+    "failing sweep still prints every point"
+
+# ---- commands and usage ----
+"$ACBB" frobnicate >"$TMP/out" 2>"$TMP/err"
+code $? 2 "unknown command exits 2"
+has "$TMP/err" "usage:" "unknown command prints the usage on stderr"
+[ ! -s "$TMP/out" ]
+t $? "unknown command prints nothing on stdout"
+"$ACBB" --help >"$TMP/out" 2>"$TMP/err"
+code $? 0 "--help exits 0"
+missing=0
+for c in run check sweep study bench presets keys; do
+    grep -q "^  $c" "$TMP/out" || missing=1
+done
+t $missing "usage lists every command"
+"$ACBB" run "$PRESET" --bogus >"$TMP/out" 2>"$TMP/err"
+code $? 2 "unknown option exits 2"
+"$ACBB" keys >"$TMP/keys.txt" 2>"$TMP/err"
+code $? 0 "keys exits 0"
+has "$TMP/keys.txt" "operating.axial_load_N" "keys lists operating.axial_load_N"
+has "$TMP/keys.txt" "bearing.ball_diameter_mm" "keys lists bearing.ball_diameter_mm"
+"$ACBB" presets >"$TMP/presets.txt" 2>"$TMP/err"
+code $? 0 "presets exits 0"
+has "$TMP/presets.txt" "7008C.ini" "presets lists 7008C.ini"
+
+echo "1..$n"
+[ "$failed" -eq 0 ]

@@ -20,6 +20,14 @@ typedef struct {
 void acbb_kinematics_race_control(double alpha_i, double alpha_o, double D, double dm,
                                   double omega_i, acbb_control control, acbb_kin *k);
 
+/* Spins, rolling components and entrainment speeds from a given orbital
+ * speed and ball angular velocity (wx, wy, wz in the orbiting frame), as
+ * the quasi-dynamic model produces them (MODEL.md section 4). beta and
+ * omega_R are derived from (wx, wz). */
+void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double dm,
+                                double omega_i, double omega_m, double wx, double wy,
+                                double wz, acbb_kin *k);
+
 /* Jones' criterion with a +-5 % hysteresis band around the previous choice. */
 acbb_control acbb_race_control_choose(double Qi, double ai, double Ei, double Qo, double ao,
                                       double Eo, double alpha_i, double alpha_o,

@@ -1,0 +1,82 @@
+/* acbb CLI — output writers: the plain summary table, JSON and CSV.
+ *
+ * Private to the executable (src/cli.c); not part of the engine API.
+ * Every writer goes through an acbb_cli_out, which counts the non-finite
+ * numbers it was asked to print: the engine promises finite snapshots, so a
+ * non-zero count after writing is an internal error for the caller to
+ * report. JSON prints such a number as null, CSV as an empty field. */
+#ifndef ACBB_CLI_OUTPUT_H
+#define ACBB_CLI_OUTPUT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+#include "acbb/scene.h"
+#include "acbb/sim.h"
+
+#define ACBB_CLI_JSON_DEPTH 8
+
+typedef struct {
+    FILE *f;
+    long nonfinite;                      /* NaN/Inf values met so far */
+    int depth;                           /* JSON nesting depth */
+    bool first[ACBB_CLI_JSON_DEPTH];     /* no element written yet at depth */
+    bool inline_[ACBB_CLI_JSON_DEPTH];   /* container printed on one line */
+} acbb_cli_out;
+
+/* One run of a sweep or study: the scene it ran and what came out. */
+typedef struct {
+    char value[64];          /* the swept value as typed, or the study x */
+    acbb_scene scene;
+    acbb_status status;      /* acbb_sim_new's status, else the last step's */
+    bool have_snap;          /* false if acbb_sim_new failed */
+    bool internal_error;     /* the driver had to stop a runaway loop */
+    char message[512];       /* acbb_sim_new's message when !have_snap */
+    double wall_ms;          /* sim_new + stepping, CLOCK_MONOTONIC */
+    acbb_snapshot snap;
+} acbb_cli_point;
+
+/* A block of the TE/WTE study: pairs [first, first + count) of the point
+ * array, pair k being points 2k (TE) and 2k+1 (WTE). */
+typedef struct {
+    const char *name;        /* CSV `sweep` column, e.g. "load" */
+    const char *title;       /* table heading */
+    const char *x_label;     /* "Fx N" or "n rpm" */
+    size_t first, count;
+} acbb_cli_study_block;
+
+void acbb_cli_out_init(acbb_cli_out *o, FILE *f);
+
+/* True when the run reached steady state. */
+bool acbb_cli_point_ok(const acbb_cli_point *p);
+/* "converged", "not_converged", ..., or the sim_new failure name. */
+const char *acbb_cli_point_status(const acbb_cli_point *p);
+
+/* `acbb run`: summary table (fits 80 columns) and the JSON object. */
+void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
+                            const acbb_scene *sc, const acbb_snapshot *snap);
+void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
+                       const acbb_snapshot *snap);
+/* JSON for a run that never started (acbb_sim_new failed). */
+void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
+                          const char *status, const char *message);
+
+/* `acbb run --csv`: one row per coupled step. */
+void acbb_cli_csv_header(acbb_cli_out *o);
+void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *snap);
+
+/* `acbb sweep`: table, JSON array, CSV. */
+void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
+                          const acbb_cli_point *pts, size_t n);
+void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
+                         const acbb_cli_point *pts, size_t n);
+void acbb_cli_sweep_csv(acbb_cli_out *o, const char *param,
+                        const acbb_cli_point *pts, size_t n);
+
+/* `acbb study`: TE and WTE side by side. */
+void acbb_cli_study_table(acbb_cli_out *o, const acbb_cli_point *pts,
+                          const acbb_cli_study_block *blocks, size_t nb);
+void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
+                        const acbb_cli_study_block *blocks, size_t nb);
+
+#endif
