@@ -39,6 +39,13 @@ double acbb_slip_velocity(const acbb_contact_in *c, double x)
     return sg * h * c->roll + c->race * (0.5 * c->dm + sg * h * cos(c->alpha));
 }
 
+double acbb_slip_speed(const acbb_contact_in *c, double x)
+{
+    double V = acbb_slip_velocity(c, x);
+    if (c->pivot == 0.0) return fabs(V);
+    return hypot(V, c->pivot * surface_height(c, x));
+}
+
 acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
                                 const acbb_contact_in *c, const acbb_oil_state *oil,
                                 acbb_contact_loss *out)
@@ -50,7 +57,7 @@ acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
         return ACBB_OK;
     }
     double u = fabs(c->u);
-    double V0 = acbb_slip_velocity(c, 0.0);
+    double V0 = acbb_slip_speed(c, 0.0);
     double srr = u > 1e-6 ? fmin(fabs(V0) / u, 2.0) : 0.0;
     acbb_film_compute(s, oil, u, c->Q, c->Rx, c->kappa, c->E_eff, c->pmax, srr, &out->film);
     const acbb_film *fl = &out->film;
@@ -63,7 +70,7 @@ acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         double x = c->a * xi;
-        double V = fabs(acbb_slip_velocity(c, x));
+        double V = acbb_slip_speed(c, x);
         for (int k = 0; k < q->n; k++) {
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */

@@ -14,6 +14,7 @@
 #include <gsl/gsl_roots.h>
 #include <gsl/gsl_vector.h>
 #include "acbb/mechanics.h"
+#include "acbb/losses.h"
 
 #define UM 1e-6          /* ring unknowns are in um and mrad for GSL's scaling */
 #define MRAD 1e-3
@@ -79,6 +80,30 @@ static double gyro_friction(double F, double cap)
     return F / pow(1.0 + r4 * r4, 0.125);
 }
 
+/* Meridional friction forces on the ball (x', z'): f[0..1] at the inner
+ * contact, f[2..3] at the outer one. Race control: the gyroscopic moment
+ * split by zeta along the major-axis tangents t_i = (cos ai, -sin ai),
+ * outer opposite; quasi-dynamic: the traction resultants. */
+static void ball_friction(const acbb_mech *m, const acbb_ball_state *b, double f[4])
+{
+    if (b->traction_valid) {
+        /* Traction scales with the contact load while the equilibrium moves
+         * (exact for boundary friction); it vanishes if a contact opens. */
+        double ki = b->tr_Qi > 0.0 ? b->Qi / b->tr_Qi : 0.0;
+        double ko = b->tr_Qo > 0.0 ? b->Qo / b->tr_Qo : 0.0;
+        f[0] = ki * b->tr_i[0]; f[1] = ki * b->tr_i[2];
+        f[2] = ko * b->tr_o[0]; f[3] = ko * b->tr_o[2];
+        return;
+    }
+    double zi, zo, mg = b->Mg / m->g.D;
+    zeta_split(b->control, m->race, &zi, &zo);
+    double fi = gyro_friction(zi * mg, m->mu * b->Qi), fo = gyro_friction(zo * mg, m->mu * b->Qo);
+    f[0] = fi * cos(b->alpha_i);
+    f[1] = -fi * sin(b->alpha_i);
+    f[2] = -fo * cos(b->alpha_o);
+    f[3] = fo * sin(b->alpha_o);
+}
+
 /* Evaluate the ball at (X1, X2): loads, angles, kinematics, body forces.
  * Writes b and returns the two ball-equilibrium residuals (N). */
 static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, double *r2)
@@ -97,19 +122,22 @@ static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, doubl
     b->alpha_i = atan2(xi, zi);
     b->Qo = b->hc_o.Kc * pos15(b->delta_o);
     b->Qi = b->hc_i.Kc * pos15(b->delta_i);
-    acbb_kinematics_race_control(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega,
-                                 b->control, &b->kin);
+    int qd = b->traction_valid;
+    if (qd)
+        acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega, b->qd_w[0],
+                                   b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
+    else
+        acbb_kinematics_race_control(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega,
+                                     b->control, &b->kin);
     double wm = b->kin.omega_m;
     b->Fc = m->centrifugal ? g->mass * (g->Re_o + X2) * wm * wm : 0.0;
     b->Mg = m->gyroscopic ? g->J * wm * b->kin.wz : 0.0;
-    double zi_, zo_;
-    zeta_split(b->control, m->race, &zi_, &zo_);
+    double f[4];
+    ball_friction(m, b, f);
     double si = sin(b->alpha_i), ci = cos(b->alpha_i);
     double so = sin(b->alpha_o), co = cos(b->alpha_o);
-    double mg = b->Mg / g->D;
-    double fi = gyro_friction(zi_ * mg, m->mu * b->Qi), fo = gyro_friction(zo_ * mg, m->mu * b->Qo);
-    *r1 = b->Qi * si - b->Qo * so + fi * ci - fo * co;
-    *r2 = b->Qi * ci - b->Qo * co + b->Fc + fo * so - fi * si;
+    *r1 = b->Qi * si - b->Qo * so + f[0] + f[2];
+    *r2 = b->Qi * ci - b->Qo * co + b->Fc + f[1] + f[3];
 }
 
 /* The ball unknowns are polar about the OR groove centre: the angle a and
@@ -342,17 +370,17 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         acbb_status rc = ball_solve(m, b, A1, A2);
         if (rc != ACBB_OK)
             return rc;
-        double zi, zo;
-        zeta_split(b->control, m->race, &zi, &zo);
+        double f[4];
+        ball_friction(m, b, f);
         double si = sin(b->alpha_i), ci = cos(b->alpha_i);
-        double fi = gyro_friction(zi * b->Mg / g->D, m->mu * b->Qi);
-        double ax = b->Qi * si + fi * ci;
-        double rad = b->Qi * ci - fi * si;
+        double ax = b->Qi * si + f[0];
+        double rad = b->Qi * ci + f[1];
         double w = st->symmetric ? st->n : 1.0;
         st->Fx += w * ax;
         st->Fz += w * rad * cos(b->psi);
         st->Fy -= w * rad * sin(b->psi);
-        double mom = g->Re_i * ax - fi * g->f_i * g->D;
+        /* Friction along the major-axis tangent acts at the groove radius. */
+        double mom = g->Re_i * ax - (f[0] * ci - f[1] * si) * g->f_i * g->D;
         st->My += w * mom * cos(b->psi);
         st->Mz += w * mom * sin(b->psi);
     }
@@ -691,4 +719,30 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
         b->X2 = Lo * cos(a);
     }
     return acbb_mech_solve(m, 0.0, NULL, st, err);
+}
+
+void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, int inner,
+                             double omega_i, acbb_contact_in *c)
+{
+    const acbb_hertz_const *hc = inner ? &b->hc_i : &b->hc_o;
+    const acbb_hertz_contact *ct = inner ? &b->ct_i : &b->ct_o;
+    c->inner = inner;
+    c->Q = ct->Q;
+    c->a = ct->a;
+    c->b = ct->b;
+    c->pmax = ct->pmax;
+    c->delta = inner ? b->delta_i : b->delta_o;
+    c->alpha = inner ? b->alpha_i : b->alpha_o;
+    c->f = inner ? g->f_i : g->f_o;
+    c->D = g->D;
+    c->dm = g->dm;
+    c->Rx = hc->Rx;
+    c->kappa = hc->kappa;
+    c->E_eff = hc->E_eff;
+    c->roll = inner ? b->kin.roll_i : b->kin.roll_o;
+    c->race = inner ? omega_i - b->kin.omega_m : -b->kin.omega_m;
+    c->spin = inner ? b->kin.spin_i : b->kin.spin_o;
+    c->pivot = b->kin.wy;
+    c->u = inner ? b->kin.u_i : b->kin.u_o;
+    c->omega_m = b->kin.omega_m;
 }

@@ -15,6 +15,7 @@
 #include "acbb/losses.h"
 #include "acbb/lubrication.h"
 #include "acbb/expansion.h"
+#include "acbb/quasi_dynamic.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -22,6 +23,8 @@
 #define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
 #define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
 #define POLISH_ITERS 60        /* direct steady iterations after the transient */
+#define QD_PASSES 4            /* mechanics <-> Level-2 kinematics passes per step */
+#define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
 
 typedef struct {
     acbb_contact_loss in, out;
@@ -30,6 +33,7 @@ typedef struct {
 struct acbb_sim {
     acbb_scene s;
     acbb_mech *mech;
+    acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
     acbb_mech_state ms;        /* last accepted mechanics */
     acbb_network nw;
     acbb_quad quad;
@@ -76,38 +80,29 @@ static void expansions(acbb_sim *sim)
 static void contact_input(const acbb_sim *sim, const acbb_ball_state *b, int inner,
                           acbb_contact_in *c)
 {
-    const acbb_geometry *g = acbb_mech_geometry(sim->mech);
-    const acbb_hertz_const *hc = inner ? &b->hc_i : &b->hc_o;
-    const acbb_hertz_contact *ct = inner ? &b->ct_i : &b->ct_o;
-    c->inner = inner;
-    c->Q = ct->Q;
-    c->a = ct->a;
-    c->b = ct->b;
-    c->pmax = ct->pmax;
-    c->delta = inner ? b->delta_i : b->delta_o;
-    c->alpha = inner ? b->alpha_i : b->alpha_o;
-    c->f = inner ? g->f_i : g->f_o;
-    c->D = g->D;
-    c->dm = g->dm;
-    c->Rx = hc->Rx;
-    c->kappa = hc->kappa;
-    c->E_eff = hc->E_eff;
-    c->roll = inner ? b->kin.roll_i : b->kin.roll_o;
-    c->race = inner ? sim->s.inner_speed - b->kin.omega_m : -b->kin.omega_m;
-    c->spin = inner ? b->kin.spin_i : b->kin.spin_o;
-    c->u = inner ? b->kin.u_i : b->kin.u_o;
-    c->omega_m = b->kin.omega_m;
+    acbb_mech_contact_input(acbb_mech_geometry(sim->mech), b, inner, sim->s.inner_speed, c);
+}
+
+/* Oil at the two contact inlets and the oil-air mixture of the cavity. */
+static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *oo,
+                      acbb_mixture *mix)
+{
+    double Tin_i, Tin_o;
+    acbb_oil_state oc;
+    acbb_network_inlet_temps(&sim->nw, sim->T, &Tin_i, &Tin_o);
+    acbb_oil_at(&sim->s, Tin_i, oi);
+    acbb_oil_at(&sim->s, Tin_o, oo);
+    acbb_oil_at(&sim->s, sim->T[sim->nw.node_cavity], &oc);
+    acbb_mixture_at(&sim->s, &oc, mix);
 }
 
 /* The five losses at the current mechanics; fills sim->loss and heat. */
 static acbb_status losses(acbb_sim *sim)
 {
     const acbb_scene *s = &sim->s;
-    double Tin_i, Tin_o;
-    acbb_network_inlet_temps(&sim->nw, sim->T, &Tin_i, &Tin_o);
-    acbb_oil_state oil_i, oil_o, oil_c;
-    acbb_oil_at(s, Tin_i, &oil_i);
-    acbb_oil_at(s, Tin_o, &oil_o);
+    acbb_oil_state oil_i, oil_o;
+    acbb_mixture mix;
+    lubricant(sim, &oil_i, &oil_o, &mix);
     int nb = sim->ms.symmetric ? 1 : sim->ms.n;
     double w = sim->ms.symmetric ? sim->ms.n : 1.0;
     acbb_losses L = { 0 };
@@ -135,10 +130,7 @@ static acbb_status losses(acbb_sim *sim)
     if (sim->ms.symmetric)
         for (int j = 1; j < sim->ms.n; j++) sim->bl[j] = sim->bl[0];
     if (s->loss_drag) {
-        /* Each ball at its own orbital speed; drag heats the cavity air. */
-        acbb_mixture mix;
-        acbb_oil_at(s, sim->T[sim->nw.node_cavity], &oil_c);
-        acbb_mixture_at(s, &oil_c, &mix);
+        /* Drag at the mean orbital speed heats the cavity air. */
         double wm = wm_sum / sim->ms.n;
         L.drag = acbb_drag_loss(s, &mix, wm);
     }
@@ -175,6 +167,27 @@ static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
     in->T_cavity_C = sim->T[sim->nw.node_cavity];
 }
 
+/* Equilibrium, and at the quasi-dynamic level the ball speeds from
+ * traction equilibrium, iterated a few passes (the remaining mismatch
+ * shrinks over the thermal steps; the final polish converges it). */
+static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
+{
+    acbb_status rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+    if (rc != ACBB_OK || !sim->qd) return rc;
+    acbb_oil_state oi, oo;
+    acbb_mixture mix;
+    lubricant(sim, &oi, &oo, &mix);
+    for (int pass = 0; pass < QD_PASSES; pass++) {
+        double change;
+        rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
+                            sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
+        if (rc != ACBB_OK) return rc;
+        rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+        if (rc != ACBB_OK || change < QD_TOL) return rc;
+    }
+    return ACBB_OK;
+}
+
 /* Mechanics + losses + network resistances at T^k. */
 static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
 {
@@ -182,7 +195,7 @@ static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
         expansions(sim);
     else
         sim->exp = (acbb_expansion){ 0 };
-    acbb_status rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+    acbb_status rc = mechanics(sim, err);
     if (rc != ACBB_OK) return rc;
     rc = losses(sim);
     if (rc != ACBB_OK)
@@ -376,7 +389,7 @@ acbb_status acbb_sim_run(acbb_sim *sim)
 
 static acbb_status check_supported(const acbb_scene *s, acbb_error *err)
 {
-    if (s->model == ACBB_MODEL_QUASI_DYNAMIC || s->model == ACBB_MODEL_DYNAMIC)
+    if (s->model == ACBB_MODEL_DYNAMIC)
         return acbb_error_set(err, ACBB_EINVAL,
                               "fidelity.model = %s: not available yet; use quasi-static or static",
                               acbb_model_level_name(s->model));
@@ -428,6 +441,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
                               ACBB_QUAD_MAX);
     if ((rc = acbb_network_build(s, &sim->nw, err)) != ACBB_OK) return rc;
     if ((rc = acbb_mech_new(s, &sim->mech, err)) != ACBB_OK) return rc;
+    if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
+        return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
     for (int i = 0; i < sim->nw.n; i++)
@@ -448,6 +463,8 @@ static void sim_release(acbb_sim *sim)
 {
     acbb_mech_free(sim->mech);
     sim->mech = NULL;
+    acbb_qd_free(sim->qd);
+    sim->qd = NULL;
     if (sim->nw.net) acbb_network_free(&sim->nw);
     sim->nw.net = NULL;
 }

@@ -29,6 +29,7 @@ typedef struct {
     double roll;        /* omega_R cos(alpha - beta), rad/s */
     double race;        /* race speed relative to the orbiting frame, rad/s */
     double spin;        /* spin about the normal, rad/s */
+    double pivot;       /* ball angular velocity omega_y' (gyroscopic pivoting), rad/s */
     double u;           /* entrainment speed, m/s */
     double omega_m;     /* orbital speed (seed-form P_L, P_r), rad/s */
 } acbb_contact_in;
@@ -44,8 +45,11 @@ acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
                                 const acbb_contact_in *c, const acbb_oil_state *oil,
                                 acbb_contact_loss *out);
 
-/* Translational slip V_c(x'') on the major axis (MODEL.md section 4). */
+/* Translational slip V_c(x'') on the major axis (MODEL.md section 4), in
+ * the rolling direction; pivoting adds omega_y' h across it. */
 double acbb_slip_velocity(const acbb_contact_in *c, double x);
+/* Magnitude of the translational slip at x'': hypot(V_c, omega_y' h). */
+double acbb_slip_speed(const acbb_contact_in *c, double x);
 
 /* Oil-air drag force on one ball (N) and the drag loss of all balls (W),
  * F_v = pi/32 C_D rho_eff D^2 (dm omega_m)^2, P_v = Z omega_m F_v dm / 2. */

@@ -14,6 +14,7 @@
 #include "acbb/hertz.h"
 #include "acbb/geometry.h"
 #include "acbb/kinematics.h"
+#include "acbb/losses.h"
 
 #define ACBB_MECH_MAX_BALLS 64
 
@@ -29,6 +30,14 @@ typedef struct {
     double Fc, Mg;               /* centrifugal force (N), gyroscopic moment (N m) */
     acbb_kin kin;
     acbb_control control;
+    /* Quasi-dynamic (Level 2) coupling: when traction_valid, the ball speeds
+     * come from qd_w (omega_m, wx, wy, wz) and the meridional friction from
+     * the traction resultants tr_i, tr_o (forces on the ball, x' y' z', N)
+     * instead of race control and the zeta split. */
+    int traction_valid;
+    double qd_w[4];
+    double tr_i[3], tr_o[3];
+    double tr_Qi, tr_Qo;         /* loads the tractions were computed at */
     int loaded;                  /* 0: both contacts open, ball frozen */
 } acbb_ball_state;
 
@@ -54,6 +63,11 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
  * warm-started from and written to st. On failure st keeps its input. */
 acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
                             acbb_mech_state *st, acbb_error *err);
+
+/* The loss/traction view of one contact of ball b at inner-ring speed
+ * omega_i (inner != 0: inner race). */
+void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, int inner,
+                             double omega_i, acbb_contact_in *c);
 
 /* Fix the axial displacement (displacement-controlled preload) or free it. */
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);

@@ -1,0 +1,48 @@
+/* acbb — traction resultants of one contact for the quasi-dynamic model
+ * (MODEL.md section 4, Level 2): the local traction opposes the local slip
+ * of ball against race, tau = -tau_mag s_t / sqrt(|s_t|^2 + s_reg^2), with
+ * tau_mag = phi_a mu p + phi_f tau_lub (section 5). Resultant force and
+ * moment about the ball centre, in the orbiting ball frame (x', y', z').
+ *
+ * Ownership: acbb_traction_contact_init allocates the point tables that
+ * acbb_traction_contact_free releases; prepare fills them once per
+ * mechanical state, eval is called many times by the kinematics solve. */
+#ifndef ACBB_TRACTION_H
+#define ACBB_TRACTION_H
+
+#include "acbb/losses.h"
+#include "acbb/lubrication.h"
+#include "acbb/scene.h"
+
+typedef struct {
+    double F[3];    /* force on the ball, N */
+    double M[3];    /* moment on the ball about its centre, N m */
+} acbb_traction;
+
+typedef struct {
+    int cap;                /* points allocated */
+    int np;                 /* points in use (0: no contact) */
+    double n[3], t[3];      /* contact normal (ball centre -> contact), major-axis tangent */
+    double rm;              /* orbit radius, m */
+    double H;               /* film thickness, m */
+    double phi_a, phi_f;    /* load shares */
+    double *P;              /* 3 np: point positions from the ball centre */
+    double *w;              /* np: area weights dA */
+    double *p;              /* np: Hertz pressure */
+    double *eta;            /* np: viscosity at that pressure */
+} acbb_traction_contact;
+
+acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid);
+void acbb_traction_contact_free(acbb_traction_contact *tc);
+
+/* Point tables for contact c with film f and inlet oil o. */
+acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
+                                  const acbb_contact_in *c, const acbb_film *f,
+                                  const acbb_oil_state *o, acbb_traction_contact *tc);
+
+/* Resultants for ball angular velocity wb (orbiting frame, rad/s) and race
+ * angular speed relative to the orbiting frame `race` (rad/s). */
+void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
+                        const double wb[3], double race, acbb_traction *out);
+
+#endif

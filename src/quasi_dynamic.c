@@ -1,0 +1,179 @@
+/* acbb — Level-2 quasi-dynamic kinematics, MODEL.md section 4.
+ *
+ * Unknowns per ball, scaled by omega_i: x = (omega_m, wx, wy, wz) / omega_i.
+ * Equations (orbiting frame, free ball, no cage force):
+ *   y' force:  F_i,y + F_o,y + F_drag = 0        (drag along +y')
+ *   moments:   M_i + M_o = J omega_m (0, -wz, wy)
+ * solved by GSL's hybridsj with a finite-difference Jacobian of fixed
+ * absolute steps (GSL's own relative steps fail at wy ~ 0). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
+#include "acbb/quasi_dynamic.h"
+
+#define FD_STEP 1e-7
+#define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
+#define RES_TOL 1e-10
+
+struct acbb_qd {
+    acbb_traction_contact ci, co;
+    gsl_multiroot_fdfsolver *solver;
+};
+
+typedef struct {
+    const acbb_scene *s;
+    const acbb_traction_contact *ci, *co;
+    double omega_i, J, D, Fscale;
+    const acbb_mixture *mix;
+    acbb_traction tri, tro;
+} qd_ctx;
+
+static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
+{
+    qd_ctx *c = p;
+    double wi = c->omega_i;
+    double wm = wi * gsl_vector_get(x, 0);
+    double wb[3] = { wi * gsl_vector_get(x, 1), wi * gsl_vector_get(x, 2),
+                     wi * gsl_vector_get(x, 3) };
+    acbb_traction_eval(c->s, c->ci, wb, wi - wm, &c->tri);
+    acbb_traction_eval(c->s, c->co, wb, -wm, &c->tro);
+    double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
+    double Mreq[3] = { 0.0, -c->J * wm * wb[2], c->J * wm * wb[1] };
+    double Ms = c->Fscale * 0.5 * c->D;
+    gsl_vector_set(f, 0, (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale);
+    for (int d = 0; d < 3; d++)
+        gsl_vector_set(f, 1 + d, (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms);
+    for (int d = 0; d < 4; d++)
+        if (!isfinite(gsl_vector_get(f, d))) return GSL_EBADFUNC;
+    return GSL_SUCCESS;
+}
+
+static int qd_df(const gsl_vector *x, void *p, gsl_matrix *J)
+{
+    double f0[4], f1[4], xv[4];
+    gsl_vector_view F0 = gsl_vector_view_array(f0, 4), F1 = gsl_vector_view_array(f1, 4);
+    int rc = qd_f(x, p, &F0.vector);
+    if (rc != GSL_SUCCESS) return rc;
+    for (int j = 0; j < 4; j++) {
+        for (int k = 0; k < 4; k++) xv[k] = gsl_vector_get(x, k);
+        xv[j] += FD_STEP;
+        gsl_vector_view X = gsl_vector_view_array(xv, 4);
+        if ((rc = qd_f(&X.vector, p, &F1.vector)) != GSL_SUCCESS) return rc;
+        for (int i = 0; i < 4; i++) gsl_matrix_set(J, i, j, (f1[i] - f0[i]) / FD_STEP);
+    }
+    return GSL_SUCCESS;
+}
+
+static int qd_fdf(const gsl_vector *x, void *p, gsl_vector *f, gsl_matrix *J)
+{
+    int rc = qd_f(x, p, f);
+    return rc == GSL_SUCCESS ? qd_df(x, p, J) : rc;
+}
+
+acbb_status acbb_qd_new(int grid, acbb_qd **out)
+{
+    acbb_qd *q = calloc(1, sizeof *q);
+    if (!q) return ACBB_ENOMEM;
+    if (acbb_traction_contact_init(&q->ci, grid) != ACBB_OK
+        || acbb_traction_contact_init(&q->co, grid) != ACBB_OK
+        || !(q->solver = gsl_multiroot_fdfsolver_alloc(gsl_multiroot_fdfsolver_hybridsj, 4))) {
+        acbb_qd_free(q);
+        return ACBB_ENOMEM;
+    }
+    *out = q;
+    return ACBB_OK;
+}
+
+void acbb_qd_free(acbb_qd *q)
+{
+    if (!q) return;
+    acbb_traction_contact_free(&q->ci);
+    acbb_traction_contact_free(&q->co);
+    if (q->solver) gsl_multiroot_fdfsolver_free(q->solver);
+    free(q);
+}
+
+/* Film and traction tables of one contact at the ball's current speeds. */
+static acbb_status prepare(const acbb_scene *s, const acbb_quad *quad, const acbb_geometry *g,
+                           const acbb_ball_state *b, int inner, double omega_i,
+                           const acbb_oil_state *oil, acbb_traction_contact *tc)
+{
+    acbb_contact_in c;
+    acbb_film film;
+    acbb_mech_contact_input(g, b, inner, omega_i, &c);
+    double u = fabs(c.u);
+    double srr = u > 1e-6 ? fmin(acbb_slip_speed(&c, 0.0) / u, 2.0) : 0.0;
+    acbb_film_compute(s, oil, u, c.Q, c.Rx, c.kappa, c.E_eff, c.pmax, srr, &film);
+    return acbb_traction_prepare(s, quad, &c, &film, oil, tc);
+}
+
+static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
+                              const acbb_geometry *g, double omega_i,
+                              const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                              const acbb_mixture *mix, acbb_ball_state *b)
+{
+    acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
+    if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
+    if (rc != ACBB_OK) return rc;
+    qd_ctx c = { .s = s, .ci = &q->ci, .co = &q->co, .omega_i = omega_i, .J = g->J,
+                 .D = g->D, .mix = mix };
+    c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
+    double x0[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
+                     b->kin.wz / omega_i };
+    gsl_vector_view xv = gsl_vector_view_array(x0, 4);
+    gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, &c };
+    if (gsl_multiroot_fdfsolver_set(q->solver, &F, &xv.vector) != GSL_SUCCESS)
+        return ACBB_DIVERGED;
+    int status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    for (int it = 0; status == GSL_CONTINUE && it < 100; it++) {
+        if (gsl_multiroot_fdfsolver_iterate(q->solver) != GSL_SUCCESS) break;
+        status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    }
+    if (status != GSL_SUCCESS
+        && gsl_multiroot_test_residual(q->solver->f, 1e3 * RES_TOL) != GSL_SUCCESS)
+        return ACBB_DIVERGED;
+    const gsl_vector *x = q->solver->x;
+    for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * gsl_vector_get(x, d);
+    qd_f(x, &c, q->solver->f); /* tractions at the accepted root */
+    memcpy(b->tr_i, c.tri.F, sizeof b->tr_i);
+    memcpy(b->tr_o, c.tro.F, sizeof b->tr_o);
+    b->tr_Qi = b->Qi;
+    b->tr_Qo = b->Qo;
+    b->traction_valid = 1;
+    acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, omega_i, b->qd_w[0],
+                               b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
+    return ACBB_OK;
+}
+
+acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
+                           const acbb_geometry *g, double omega_i,
+                           const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                           const acbb_mixture *mix, acbb_mech_state *st, double *change,
+                           acbb_error *err)
+{
+    *change = 0.0;
+    if (omega_i <= 0.0) return ACBB_OK;
+    int nb = st->symmetric ? 1 : st->n;
+    for (int j = 0; j < nb; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
+            b->traction_valid = 0;
+            continue;
+        }
+        double wm0 = b->kin.omega_m;
+        acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b);
+        if (rc != ACBB_OK)
+            return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
+                                  "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);
+        *change = fmax(*change, fabs(b->kin.omega_m - wm0) / fmax(fabs(wm0), 1e-12));
+    }
+    if (st->symmetric)
+        for (int j = 1; j < st->n; j++) {
+            double psi = st->ball[j].psi;
+            st->ball[j] = st->ball[0];
+            st->ball[j].psi = psi;
+        }
+    return ACBB_OK;
+}

@@ -1,0 +1,100 @@
+/* acbb — contact traction resultants (MODEL.md sections 4-5, Level 2). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "acbb/traction.h"
+
+#define S_REG 1e-6 /* m/s, slip regularisation of MODEL.md section 4 */
+
+static void cross(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid)
+{
+    memset(tc, 0, sizeof *tc);
+    int cap = grid * grid;
+    tc->P = malloc(sizeof(double) * 6 * (size_t)cap);
+    if (!tc->P) return ACBB_ENOMEM;
+    tc->w = tc->P + 3 * cap;
+    tc->p = tc->w + cap;
+    tc->eta = tc->p + cap;
+    tc->cap = cap;
+    return ACBB_OK;
+}
+
+void acbb_traction_contact_free(acbb_traction_contact *tc)
+{
+    free(tc->P);
+    memset(tc, 0, sizeof *tc);
+}
+
+acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
+                                  const acbb_contact_in *c, const acbb_film *f,
+                                  const acbb_oil_state *o, acbb_traction_contact *tc)
+{
+    tc->np = 0;
+    if (c->Q <= 1e-6 || c->a <= 0.0 || c->b <= 0.0) return ACBB_OK;
+    if (q->n * q->n > tc->cap) return ACBB_EINVAL;
+    double sa = sin(c->alpha), ca = cos(c->alpha);
+    /* Normals from the ball centre: outer (sin a, 0, cos a), inner the
+     * opposite; the major axis lies in the meridional plane. */
+    double sg = c->inner ? -1.0 : 1.0;
+    tc->n[0] = sg * sa; tc->n[1] = 0.0; tc->n[2] = sg * ca;
+    tc->t[0] = ca; tc->t[1] = 0.0; tc->t[2] = -sa;
+    tc->rm = 0.5 * c->dm;
+    tc->H = fmax(f->hc, 1e-9);
+    tc->phi_a = f->phi_a;
+    tc->phi_f = f->phi_f;
+    double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
+    double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    int k = 0;
+    for (int i = 0; i < q->n; i++) {
+        double xi = q->x[i], sq = sqrt(1.0 - xi * xi), x = c->a * xi;
+        double h = sqrt(fmax(Rd * Rd - x * x, 0.0)) + h0; /* deformed surface, section 4 */
+        for (int j = 0; j < q->n; j++, k++) {
+            double t = q->x[j], y = c->b * sq * t;
+            double *P = tc->P + 3 * k;
+            for (int d = 0; d < 3; d++) P[d] = h * tc->n[d] + x * tc->t[d];
+            P[1] += y;
+            tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
+            tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
+            tc->eta[k] = f->phi_f > 0.0 ? acbb_viscosity_at_pressure(s, o, tc->p[k]) : 0.0;
+        }
+    }
+    tc->np = k;
+    return ACBB_OK;
+}
+
+void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
+                        const double wb[3], double race, acbb_traction *out)
+{
+    memset(out, 0, sizeof *out);
+    const double ex[3] = { 1.0, 0.0, 0.0 };
+    for (int k = 0; k < tc->np; k++) {
+        const double *P = tc->P + 3 * k;
+        double vb[3], pos[3] = { P[0], P[1], P[2] + tc->rm }, vr[3];
+        cross(wb, P, vb);
+        cross(ex, pos, vr);
+        double sl[3], sn = 0.0;
+        for (int d = 0; d < 3; d++) {
+            sl[d] = vb[d] - race * vr[d];
+            sn += sl[d] * tc->n[d];
+        }
+        for (int d = 0; d < 3; d++) sl[d] -= sn * tc->n[d];
+        double mag = sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
+        double tau = tc->phi_a * s->mu_bd * tc->p[k];
+        if (tc->phi_f > 0.0)
+            tau += tc->phi_f * acbb_tau_lubricant(s, tc->eta[k], mag, tc->H, tc->p[k]);
+        double g = -tau * tc->w[k] / sqrt(mag * mag + S_REG * S_REG);
+        double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
+        cross(P, f, m);
+        for (int d = 0; d < 3; d++) {
+            out->F[d] += f[d];
+            out->M[d] += m[d];
+        }
+    }
+}
