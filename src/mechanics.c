@@ -8,6 +8,7 @@
  * problem is a hand-written damped Newton (see ball_newton for why). */
 #include <math.h>
 #include <stdlib.h>
+#include <stddef.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
@@ -190,7 +191,7 @@ static acbb_status ball_newton(const ball_ctx *c, double *z, double *a, double t
         for (int pass = 0; pass < 2 && !found; pass++) {
             dz = pass ? d2z : d1z;
             da = pass ? d2a : d1a;
-            for (lam = 1.0; lam >= 1e-10; lam *= 0.5)
+            for (lam = 1.0; lam >= 1.0 / 1024; lam *= 0.5)
                 if (ball_polar(c, *z + lam * dz, *a + lam * da, rt)
                     && norm2(rt) < n0 * (1.0 - 1e-4 * lam)) {
                     found = 1;
@@ -446,6 +447,24 @@ static double thrust_residual(double dx_um, void *p)
 
 /* Pure thrust on identical balls: 1-D, monotone in dx, so a bracketed
  * Brent solve is both robust and cheap. */
+/* Secant steps from the warm start: after the first thermal step the root
+ * moves little, so this usually converges in 3-4 evaluations. Returns 1 on
+ * convergence; on any sign of trouble the caller brackets instead. */
+static int thrust_secant(acbb_mech *m, double *x, double *fx)
+{
+    double tol = m->tol * ring_force_scale(m);
+    double x0 = *x, f0 = *fx, x1 = x0 + 1e-3, f1 = thrust_residual(x1, m);
+    for (int it = 0; it < 8 && isfinite(f1); it++) {
+        if (fabs(f1) <= tol) { *x = x1; *fx = f1; return 1; }
+        if (f1 == f0 || fabs(f1) > fabs(f0)) break;
+        double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        x0 = x1; f0 = f1;
+        x1 = x2; f1 = thrust_residual(x1, m);
+    }
+    *fx = thrust_residual(*x, m); /* leave the trial state at the start */
+    return 0;
+}
+
 static acbb_status solve_thrust(acbb_mech *m, acbb_mech_state *st)
 {
     double x = st->dx / UM;
@@ -453,6 +472,9 @@ static acbb_status solve_thrust(acbb_mech *m, acbb_mech_state *st)
     if (!isfinite(fx)) return m->inner_status;
     if (fabs(fx) <= m->tol * ring_force_scale(m))
         return ACBB_OK;
+    if (thrust_secant(m, &x, &fx))
+        return ACBB_OK;
+    if (!isfinite(fx)) return m->inner_status;
     double step = 0.05 + 1e-3 * fabs(x), lo = x, hi = x, flo = fx, fhi = fx;
     for (int i = 0; i < 60 && flo * fhi > 0.0; i++) {
         if (fx > 0.0) { hi = lo; fhi = flo; lo -= step; flo = thrust_residual(lo, m); }
@@ -517,6 +539,13 @@ static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st)
     int nb = st->symmetric ? 1 : st->n;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
+        /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad
+         * leaves the constants unchanged to round-off. */
+        if (b->hc_i.Kc > 0.0 && fabs(b->alpha_i - b->hc_alpha_i) < 1e-11
+            && fabs(b->alpha_o - b->hc_alpha_o) < 1e-11)
+            continue;
+        b->hc_alpha_i = b->alpha_i;
+        b->hc_alpha_o = b->alpha_o;
         double Rx, Ry;
         acbb_contact_radii(g->D, g->dm, b->alpha_i, g->f_i, 1, &Rx, &Ry);
         acbb_status rc = acbb_hertz_const_compute(Rx, Ry, g->E_eff, m->hertz, &b->hc_i);
@@ -558,7 +587,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     static const char *what = "mechanics";
     acbb_mech_state *w = malloc(sizeof *w);
     if (!w) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
-    *w = *st;
+    acbb_mech_state_copy(w, st);
     m->omega = omega_i;
     m->e = e;
     if (m->fix_axial) w->dx = m->dx_fixed;
@@ -573,7 +602,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
         double ai = w->ball[0].alpha_i, ao = w->ball[0].alpha_o;
         if ((rc = refresh_hertz(m, w)) != ACBB_OK) break;
         if ((rc = solve_ring(m, w)) != ACBB_OK) break;
-        if (fabs(w->ball[0].alpha_i - ai) < 1e-13 && fabs(w->ball[0].alpha_o - ao) < 1e-13)
+        if (fabs(w->ball[0].alpha_i - ai) < 1e-11 && fabs(w->ball[0].alpha_o - ao) < 1e-11)
             break;
     }
     if (rc == ACBB_OK && !state_finite(w))
@@ -592,7 +621,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
                               omega_i * 30.0 / M_PI);
     }
     finish_contacts(m, w);
-    *st = *w;
+    acbb_mech_state_copy(st, w);
     free(w);
     return ACBB_OK;
 }
@@ -745,4 +774,11 @@ void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, i
     c->pivot = b->kin.wy;
     c->u = inner ? b->kin.u_i : b->kin.u_o;
     c->omega_m = b->kin.omega_m;
+}
+
+void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src)
+{
+    /* Only the balls in use: the array is sized for the largest bearing. */
+    memcpy(dst, src, offsetof(acbb_mech_state, ball));
+    memcpy(dst->ball, src->ball, sizeof src->ball[0] * (size_t)src->n);
 }

@@ -241,13 +241,13 @@ static const field k_fields[] = {
          "relative force residual of the mechanics solve"),
     REAL("fidelity", "steady_tol_K_s", "K/s", steady_tol, 1.0, 1e-4, OC, 0, 1,
          "steady state when every |dT/dt| is below this"),
-
-    ENUM("thermal", "network", network, k_network, ACBB_NET_46,
+    ENUM("fidelity", "network", network, k_network, ACBB_NET_46,
          "thermal network: 46 nodes or the 7-node teaching one"),
-    ENUM("thermal", "mode", thermal_mode, k_thermal_mode, ACBB_THERMAL_TRANSIENT,
+    ENUM("fidelity", "thermal_mode", thermal_mode, k_thermal_mode, ACBB_THERMAL_TRANSIENT,
          "transient (time steps) or steady (direct) thermal solve"),
-    REAL("thermal", "time_step_s", "s", time_step, 1.0, 5, OC, 0, 3600,
+    REAL("fidelity", "time_step_s", "s", time_step, 1.0, 5, OC, 0, 3600,
          "initial thermal time step (adaptive)"),
+
     REAL("thermal", "max_time_s", "s", max_time, 1.0, 36000, OC, 0, 1e8,
          "simulated time limit"),
     INT("thermal", "max_steps", max_steps, 20000, 1, 10000000, "coupled step limit"),
@@ -849,9 +849,9 @@ static acbb_status rule_time_step(const acbb_scene *s, acbb_error *err)
     if (s->time_step <= s->max_time) return ACBB_OK;
     char a[40], b[40];
     return acbb_error_set(err, ACBB_EINVAL,
-                          "thermal.time_step_s = %s with max_time_s = %s: the time step must not "
+                          "fidelity.time_step_s = %s with thermal.max_time_s = %s: the time step must not "
                           "exceed the time limit",
-                          show(s, "thermal", "time_step_s", a), show(s, "thermal", "max_time_s", b));
+                          show(s, "fidelity", "time_step_s", a), show(s, "thermal", "max_time_s", b));
 }
 
 static acbb_status rule_temp_limit(const acbb_scene *s, acbb_error *err)

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <assert.h>
 #include "acbb/sim.h"
 #include "acbb/mechanics.h"
 #include "acbb/network.h"
@@ -326,17 +327,24 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     if (!temps_finite(Tn, sim->nw.n))
         return fail(sim, ACBB_NONFINITE, "%s", "non-finite temperature caught; last good state kept");
     double step_dt = steady_mode ? 1.0 : sim->dt;
-    acbb_mech_state ms_keep = sim->ms;
+    static_assert(sizeof(acbb_mech_state) < 200000, "mechanics state on the heap");
+    acbb_mech_state *ms_keep = malloc(sizeof *ms_keep);
+    if (!ms_keep)
+        return fail(sim, ACBB_ENOMEM, "%s", "out of memory");
+    acbb_mech_state_copy(ms_keep, &sim->ms);
     double T_keep[ACBB_MAX_NODES];
     memcpy(T_keep, sim->T, sizeof T_keep);
     memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
     rc = evaluate(sim, &err);
     if (rc != ACBB_OK) {
-        sim->ms = ms_keep;
+        acbb_mech_state_copy(&sim->ms, ms_keep);
+        free(ms_keep);
         memcpy(sim->T, T_keep, sizeof T_keep);
-        evaluate(sim, &err); /* restore losses of the last good state */
+        acbb_error ignored;
+        evaluate(sim, &ignored); /* restore losses of the last good state */
         return fail(sim, rc, "%s", err.msg[0] ? err.msg : acbb_status_name(rc));
     }
+    free(ms_keep);
     sim->iter++;
     if (!steady_mode) sim->time += sim->dt;
     sim->residual = dT / step_dt;

@@ -2,23 +2,23 @@
  * (MODEL.md section 8.2).
  *
  * Unknowns are the free (non-Dirichlet) nodes only; fixed nodes enter the
- * right-hand side through G_D T_D. Two LU factorisations are cached: one of
+ * right-hand side through G_D T_D. Two Cholesky factorisations are cached: one of
  * (C/dt + G) for the transient step and one of G for the steady solve, each
  * with its own dirty flag, so alternating step/steady calls never force a
- * refactorisation. The matrices are dense (40-ish unknowns): a dense pivoted
- * LU from GSL is simpler and fast enough; no sparse solver is warranted. */
+ * refactorisation. The matrices are dense (40-ish unknowns) symmetric
+ * M-matrices, positive definite once every component touches a fixed node
+ * or carries capacity (checked on the graph first): GSL's dense Cholesky
+ * costs half a pivoted LU; no sparse solver is warranted. */
 #include <math.h>
 #include <stdlib.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_errno.h>
 #include "acbb/thermal_network.h"
 
-/* One cached factorisation (transient or steady). The n x n buffers are
- * allocated once in acbb_tnet_new and used through an nf x nf view; the
- * permutation is resized only when the number of free nodes changes. */
+/* One cached factorisation (transient or steady). The n x n buffer is
+ * allocated once in acbb_tnet_new and used through an nf x nf view. */
 typedef struct {
-    gsl_matrix *lu;          /* n x n storage, top-left nf x nf in use */
-    gsl_permutation *perm;   /* size nf (reallocated if nf changes) */
+    gsl_matrix *lu;          /* n x n storage, top-left nf x nf in use (Cholesky factor) */
     int dirty;               /* matrix inputs changed since factorisation */
     int valid;               /* a successful factorisation is stored */
     double dt;               /* transient only: dt of the stored factors */
@@ -95,8 +95,6 @@ void acbb_tnet_free(acbb_tnet *net)
     free(net->R);
     if (net->tr.lu) gsl_matrix_free(net->tr.lu);
     if (net->st.lu) gsl_matrix_free(net->st.lu);
-    if (net->tr.perm) gsl_permutation_free(net->tr.perm);
-    if (net->st.perm) gsl_permutation_free(net->st.perm);
     if (net->rhs) gsl_vector_free(net->rhs);
     if (net->x) gsl_vector_free(net->x);
     free(net);
@@ -248,11 +246,6 @@ static acbb_status factorise(acbb_tnet *net, tn_factor *f, double inv_dt)
         return ACBB_OK;
     }
     if (!components_ok(net, inv_dt == 0.0)) return ACBB_SINGULAR;
-    if (!f->perm || (int)f->perm->size != nf) {
-        if (f->perm) gsl_permutation_free(f->perm);
-        f->perm = gsl_permutation_alloc((size_t)nf);
-        if (!f->perm) return ACBB_ENOMEM;
-    }
     gsl_matrix_view A = gsl_matrix_submatrix(f->lu, 0, 0, (size_t)nf, (size_t)nf);
     gsl_matrix_set_zero(&A.matrix);
     for (int i = 0; i < net->n; i++)
@@ -269,9 +262,8 @@ static acbb_status factorise(acbb_tnet *net, tn_factor *f, double inv_dt)
             *gsl_matrix_ptr(&A.matrix, (size_t)ib, (size_t)ia) -= g;
         }
     }
-    int signum;
     net->n_fact++;
-    if (gsl_linalg_LU_decomp(&A.matrix, f->perm, &signum) != GSL_SUCCESS)
+    if (gsl_linalg_cholesky_decomp1(&A.matrix) != GSL_SUCCESS)
         return ACBB_SINGULAR;
     for (int i = 0; i < nf; i++) {
         double u = gsl_matrix_get(&A.matrix, (size_t)i, (size_t)i);
@@ -301,7 +293,7 @@ static acbb_status solve_scatter(acbb_tnet *net, tn_factor *f, double *T)
         gsl_matrix_view A = gsl_matrix_submatrix(f->lu, 0, 0, (size_t)nf, (size_t)nf);
         gsl_vector_view b = gsl_vector_subvector(net->rhs, 0, (size_t)nf);
         gsl_vector_view x = gsl_vector_subvector(net->x, 0, (size_t)nf);
-        if (gsl_linalg_LU_solve(&A.matrix, f->perm, &b.vector, &x.vector) != GSL_SUCCESS)
+        if (gsl_linalg_cholesky_solve(&A.matrix, &b.vector, &x.vector) != GSL_SUCCESS)
             return ACBB_SINGULAR;
         for (int i = 0; i < nf; i++)
             if (!isfinite(gsl_vector_get(&x.vector, (size_t)i))) return ACBB_NONFINITE;

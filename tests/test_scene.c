@@ -189,7 +189,7 @@ static const char *const k_expected[][2] = {
     {"fidelity.race_control", "outer"}, {"fidelity.loss_form", "clean"},
     {"fidelity.hysteresis_axis", "major"}, {"fidelity.mech_tol", "1e-10"},
     {"fidelity.steady_tol_K_s", "0.0001"},
-    {"thermal.network", "46"}, {"thermal.mode", "transient"}, {"thermal.time_step_s", "5"},
+    {"fidelity.network", "46"}, {"fidelity.thermal_mode", "transient"}, {"fidelity.time_step_s", "5"},
     {"thermal.max_time_s", "36000"}, {"thermal.max_steps", "20000"},
     {"thermal.temp_limit_C", "150"}, {"thermal.contact_multiplier", "1"},
     {"thermal.heat_partition", "0.5"},
@@ -331,7 +331,7 @@ static void test_round_trip(void)
     expect_set_ok(&s, "lubricant.oil_flow_ml_h", "0.77");
     expect_set_ok(&s, "lubricant.oil_alpha_pv_per_GPa", "19.1");
     expect_set_ok(&s, "fidelity.model", "static");
-    expect_set_ok(&s, "thermal.network", "7");
+    expect_set_ok(&s, "fidelity.network", "7");
     expect_set_ok(&s, "effects.gyroscopic", "no");
     expect_set_ok(&s, "operating.moment_load_Nm", "-2.5");
     /* SI values that no short preset number produces. */
@@ -429,8 +429,8 @@ static void test_range_rules(void)
     expect_set_fails("fidelity.model", "fast", ACBB_EINVAL,
                      "fidelity.model = fast: must be one of: static, quasi-static, "
                      "quasi-dynamic, dynamic");
-    expect_set_fails("thermal.network", "12", ACBB_EINVAL,
-                     "thermal.network = 12: must be one of: 46, 7");
+    expect_set_fails("fidelity.network", "12", ACBB_EINVAL,
+                     "fidelity.network = 12: must be one of: 46, 7");
     expect_set_fails("effects.centrifugal", "maybe", ACBB_EINVAL,
                      "effects.centrifugal = maybe: must be on or off (or true/false, yes/no, 1/0)");
 
@@ -534,7 +534,7 @@ static void test_cross_rules(void)
                      "lubricant.oil_nu100_mm2_s = 30 with oil_nu40_mm2_s = 30: the viscosity "
                      "at 100 C must be lower than at 40 C");
     expect_set_fails("thermal.max_time_s", "4", ACBB_EINVAL,
-                     "thermal.time_step_s = 5 with max_time_s = 4: the time step must not "
+                     "fidelity.time_step_s = 5 with thermal.max_time_s = 4: the time step must not "
                      "exceed the time limit");
     expect_set_fails("thermal.temp_limit_C", "26", ACBB_EINVAL,
                      "thermal.temp_limit_C = 26 with operating.ambient_C = 26: the runaway "

@@ -26,6 +26,7 @@ typedef struct {
     double alpha_i_lag, alpha_o_lag; /* angles of the last accepted solve (SEED projections) */
     double delta_i, delta_o;     /* contact deflections (negative: gap), m */
     acbb_hertz_const hc_i, hc_o; /* constants at the operating angles */
+    double hc_alpha_i, hc_alpha_o; /* angles the constants were computed at */
     acbb_hertz_contact ct_i, ct_o;
     double Fc, Mg;               /* centrifugal force (N), gyroscopic moment (N m) */
     acbb_kin kin;
@@ -68,6 +69,9 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
  * omega_i (inner != 0: inner race). */
 void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, int inner,
                              double omega_i, acbb_contact_in *c);
+
+/* Copy a state (header and the n balls in use). */
+void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
 
 /* Fix the axial displacement (displacement-controlled preload) or free it. */
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);
