@@ -26,7 +26,9 @@
 #include <gsl/gsl_errno.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
+#include "acbb/history.h"
 #include "cli_output.h"
+#include "cli_plot.h"
 
 enum { EXIT_CONVERGED = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4 };
 
@@ -64,6 +66,7 @@ static const char usage_text[] =
 enum {
     OPT_SET = 1 << 0, OPT_JSON = 1 << 1, OPT_CSV = 1 << 2, OPT_QUIET = 1 << 3,
     OPT_PARAM = 1 << 4, OPT_VALUES = 1 << 5, OPT_REPEAT = 1 << 6, OPT_JOBS = 1 << 7,
+    OPT_PLOT = 1 << 8,
 };
 
 typedef struct {
@@ -73,7 +76,7 @@ typedef struct {
     const char **sets;           /* --set texts, in order (point into argv) */
     size_t n_sets;
     bool json, quiet;
-    const char *csv, *param, *values;
+    const char *csv, *param, *values, *plot;
     long repeat, jobs;
 } cli_args;
 
@@ -86,6 +89,7 @@ static const struct {
     { "csv", OPT_CSV, true },       { "quiet", OPT_QUIET, false },
     { "param", OPT_PARAM, true },   { "values", OPT_VALUES, true },
     { "repeat", OPT_REPEAT, true }, { "jobs", OPT_JOBS, true },
+    { "plot", OPT_PLOT, true },
 };
 
 static int usage_error(const char *cmd, const char *fmt, const char *what)
@@ -119,6 +123,7 @@ static int apply_option(cli_args *a, int flag, const char *name, const char *val
     case OPT_CSV: a->csv = val; return 0;
     case OPT_PARAM: a->param = val; return 0;
     case OPT_VALUES: a->values = val; return 0;
+    case OPT_PLOT: a->plot = val; return 0;
     case OPT_REPEAT: return parse_count(a->cmd, name, val, &a->repeat);
     case OPT_JOBS: return parse_count(a->cmd, name, val, &a->jobs);
     }
@@ -395,6 +400,19 @@ static void csv_row_cb(void *ctx, const acbb_snapshot *snap)
     acbb_cli_csv_row(ctx, snap);
 }
 
+/* `run --csv` rows and the `--plot` history (cli_plot.h) from one callback. */
+typedef struct {
+    acbb_cli_out *csv;
+    acbb_history *hist;
+} run_rows;
+
+static void run_row_cb(void *ctx, const acbb_snapshot *snap)
+{
+    run_rows *r = ctx;
+    if (r->csv) csv_row_cb(r->csv, snap);
+    if (r->hist) acbb_history_push(r->hist, snap);
+}
+
 static int run_report(const cli_args *a, const char *preset, const acbb_scene *sc,
                       const acbb_snapshot *snap, bool runaway_loop)
 {
@@ -417,10 +435,11 @@ static int run_report(const cli_args *a, const char *preset, const acbb_scene *s
 
 static int cmd_run(cli_args *a, int argc, char **argv)
 {
-    int rc = parse_args(a, OPT_SET | OPT_JSON | OPT_CSV | OPT_QUIET, 1, argc, argv);
+    int rc = parse_args(a, OPT_SET | OPT_JSON | OPT_CSV | OPT_QUIET | OPT_PLOT, 1, argc, argv);
     if (rc) return rc;
     if (a->n_pos != 1) return usage_error("run", "%s", "missing PRESET");
     const char *preset = a->pos[0];
+    if (a->plot && (rc = acbb_cli_plot_check_path(a->plot))) return rc;
     acbb_scene sc;
     if ((rc = load_scene(preset, a, &sc))) return rc;
 
@@ -447,11 +466,16 @@ static int cmd_run(cli_args *a, int argc, char **argv)
         acbb_sim_free(sim);
         return EXIT_INTERNAL;
     }
+    run_rows rows = { a->csv ? &csv.out : NULL, a->plot ? malloc(sizeof *rows.hist) : NULL };
+    if (rows.hist) acbb_history_init(rows.hist);
     bool runaway_loop = false;
-    drive(sim, &sc, snap, a->csv ? csv_row_cb : NULL, &csv.out, &runaway_loop);
+    drive(sim, &sc, snap, (a->csv || rows.hist) ? run_row_cb : NULL, &rows, &runaway_loop);
     acbb_sim_free(sim);
     rc = a->csv ? csv_close(&csv) : 0;
     rc = worst(run_report(a, preset, &sc, snap, runaway_loop), rc);
+    if (a->plot && !rows.hist) rc = worst(rc, EXIT_INTERNAL);
+    if (rows.hist) rc = worst(rc, acbb_cli_write_plot(a->plot, rows.hist, snap, preset));
+    free(rows.hist);
     free(snap);
     return rc;
 }
@@ -854,6 +878,10 @@ int main(int argc, char **argv)
         { "study", cmd_study },     { "bench", cmd_bench }, { "presets", cmd_presets },
         { "keys", cmd_keys },
     };
+    if (strcmp(argv[1], "plot") == 0) {
+        free(sets);
+        return acbb_cli_plot(argc - 1, argv + 1);
+    }
     int rc = -1;
     for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++)
         if (strcmp(argv[1], cmds[i].name) == 0) rc = cmds[i].fn(&a, argc, argv);

@@ -38,7 +38,8 @@ struct acbb_mech {
     gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
     /* context of the solve in progress */
     double omega;
-    const acbb_expansion *e;
+    const acbb_expansion *e;    /* NULL or &e_copy */
+    acbb_expansion e_copy;
     acbb_mech_state *trial;
     acbb_status inner_status;
 };
@@ -311,15 +312,23 @@ static acbb_status ball_fallback(acbb_mech *m, const ball_ctx *c, double *z, dou
     return f.fail ? ACBB_DIVERGED : ACBB_OK;
 }
 
-static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, double A2)
+/* Inner groove centre and unloaded lengths of one ball, thermal terms
+ * included (MODEL.md section 3 table). */
+static void ball_frame(const acbb_mech *m, const acbb_ball_state *b, double A1, double A2,
+                       ball_ctx *c)
 {
-    ball_ctx c = { .m = m, .b = b, .A1 = A1, .A2 = A2 };
     /* SEED projections use the angles of the last accepted solve, so the
      * residual stays a fixed function of the unknowns within one solve. */
-    acbb_geometry_offsets(&m->g, m->geom, m->e, b->alpha_i_lag, b->alpha_o_lag, &c.off);
+    acbb_geometry_offsets(&m->g, m->geom, m->e, b->alpha_i_lag, b->alpha_o_lag, &c->off);
     /* A1, A2 were built with the nominal A0; SEED mode swaps in its A0'. */
-    c.A1 += (c.off.A0 - m->g.A0) * sin(m->g.alpha0) + c.off.dA1;
-    c.A2 += (c.off.A0 - m->g.A0) * cos(m->g.alpha0) + c.off.dA2;
+    c->A1 = A1 + (c->off.A0 - m->g.A0) * sin(m->g.alpha0) + c->off.dA1;
+    c->A2 = A2 + (c->off.A0 - m->g.A0) * cos(m->g.alpha0) + c->off.dA2;
+}
+
+static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, double A2)
+{
+    ball_ctx c = { .m = m, .b = b };
+    ball_frame(m, b, A1, A2, &c);
 
     /* Quick exit: no speed and no inner contact possible -> frozen ball. */
     double Lmax = (m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o)
@@ -589,7 +598,8 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (!w) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
     acbb_mech_state_copy(w, st);
     m->omega = omega_i;
-    m->e = e;
+    if (e) m->e_copy = *e;
+    m->e = e ? &m->e_copy : NULL;
     if (m->fix_axial) w->dx = m->dx_fixed;
     for (int j = 0; j < w->n; j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
@@ -781,4 +791,18 @@ void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src)
     /* Only the balls in use: the array is sized for the largest bearing. */
     memcpy(dst, src, offsetof(acbb_mech_state, ball));
     memcpy(dst->ball, src->ball, sizeof src->ball[0] * (size_t)src->n);
+}
+
+void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
+                          acbb_ball_frame *f)
+{
+    const acbb_ball_state *b = &st->ball[j];
+    ball_ctx c = { .m = m };
+    double A1, A2;
+    ring_offsets(m, st, b->psi, &A1, &A2);
+    ball_frame(m, b, A1, A2, &c);
+    f->A1 = c.A1;
+    f->A2 = c.A2;
+    f->L0_i = m->g.lambda_i - 0.5 * m->g.D - c.off.dL_i;
+    f->L0_o = m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o;
 }

@@ -17,6 +17,7 @@
 #include "acbb/lubrication.h"
 #include "acbb/expansion.h"
 #include "acbb/quasi_dynamic.h"
+#include "acbb/dynamic.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -26,6 +27,8 @@
 #define POLISH_ITERS 60        /* direct steady iterations after the transient */
 #define QD_PASSES 4            /* mechanics <-> Level-2 kinematics passes per step */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
+#define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
+#define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 
 typedef struct {
     acbb_contact_loss in, out;
@@ -35,6 +38,7 @@ struct acbb_sim {
     acbb_scene s;
     acbb_mech *mech;
     acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
+    acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
     acbb_mech_state ms;        /* last accepted mechanics */
     acbb_network nw;
     acbb_quad quad;
@@ -168,20 +172,47 @@ static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
     in->T_cavity_C = sim->T[sim->nw.node_cavity];
 }
 
+/* Dynamic level: integrate every distinct ball over a window (longer from
+ * the race-control start, short once warm) and keep its time average. */
+static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
+                                 const acbb_oil_state *oo, const acbb_mixture *mix,
+                                 double *change, acbb_error *err)
+{
+    int nb = sim->ms.symmetric ? 1 : sim->ms.n;
+    for (int j = 0; j < nb; j++) {
+        double window = sim->ms.ball[j].traction_valid ? DYN_WINDOW_WARM : DYN_WINDOW_COLD, c;
+        acbb_status rc = acbb_dyn_ball(sim->dyn, sim->mech, &sim->s, &sim->quad,
+                                       sim->s.inner_speed, oi, oo, mix, &sim->ms, j, window,
+                                       &c, err);
+        if (rc != ACBB_OK) return rc;
+        *change = fmax(*change, c);
+    }
+    if (sim->ms.symmetric)
+        for (int j = 1; j < sim->ms.n; j++) {
+            double psi = sim->ms.ball[j].psi;
+            sim->ms.ball[j] = sim->ms.ball[0];
+            sim->ms.ball[j].psi = psi;
+        }
+    return ACBB_OK;
+}
+
 /* Equilibrium, and at the quasi-dynamic level the ball speeds from
  * traction equilibrium, iterated a few passes (the remaining mismatch
  * shrinks over the thermal steps; the final polish converges it). */
 static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
 {
     acbb_status rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
-    if (rc != ACBB_OK || !sim->qd) return rc;
+    if (rc != ACBB_OK || (!sim->qd && !sim->dyn)) return rc;
     acbb_oil_state oi, oo;
     acbb_mixture mix;
     lubricant(sim, &oi, &oo, &mix);
     for (int pass = 0; pass < QD_PASSES; pass++) {
-        double change;
-        rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
-                            sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
+        double change = 0.0;
+        if (sim->dyn)
+            rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
+        else
+            rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
+                                sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
         if (rc != ACBB_OK) return rc;
         rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
         if (rc != ACBB_OK || change < QD_TOL) return rc;
@@ -397,10 +428,6 @@ acbb_status acbb_sim_run(acbb_sim *sim)
 
 static acbb_status check_supported(const acbb_scene *s, acbb_error *err)
 {
-    if (s->model == ACBB_MODEL_DYNAMIC)
-        return acbb_error_set(err, ACBB_EINVAL,
-                              "fidelity.model = %s: not available yet; use quasi-static or static",
-                              acbb_model_level_name(s->model));
     if (s->n_balls > ACBB_MAX_BALLS)
         return acbb_error_set(err, ACBB_EINVAL, "bearing.n_balls = %d: at most %d supported",
                               s->n_balls, ACBB_MAX_BALLS);
@@ -451,6 +478,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     if ((rc = acbb_mech_new(s, &sim->mech, err)) != ACBB_OK) return rc;
     if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    if (s->model == ACBB_MODEL_DYNAMIC && acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK)
+        return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
     for (int i = 0; i < sim->nw.n; i++)
@@ -473,6 +502,8 @@ static void sim_release(acbb_sim *sim)
     sim->mech = NULL;
     acbb_qd_free(sim->qd);
     sim->qd = NULL;
+    acbb_dyn_free(sim->dyn);
+    sim->dyn = NULL;
     if (sim->nw.net) acbb_network_free(&sim->nw);
     sim->nw.net = NULL;
 }

@@ -169,11 +169,11 @@ static void test_hard_cases(void)
 static void test_bad_scene(void)
 {
     acbb_scene s = base(15000, 1000, 1);
-    s.model = ACBB_MODEL_DYNAMIC;
+    s.contact_grid = 100;
     acbb_sim *sim = NULL;
     acbb_error err = { "" };
-    ok(acbb_sim_new(&s, &sim, &err) == ACBB_EINVAL, "unavailable model level is refused");
-    has_substr(err.msg, "fidelity.model = dynamic", "message names the key and value");
+    ok(acbb_sim_new(&s, &sim, &err) == ACBB_EINVAL, "a scene built in code is validated too");
+    has_substr(err.msg, "fidelity.contact_grid = 100", "message names the key and value");
     s = base(15000, 0, 1);
     s.radial_load = 500;
     ok(acbb_sim_new(&s, &sim, &err) == ACBB_ILL_POSED, "pure radial load is ill-posed");

@@ -70,6 +70,14 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
 void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, int inner,
                              double omega_i, acbb_contact_in *c);
 
+/* Where ball j's inner groove centre sits relative to its outer groove
+ * centre (A1 axial, A2 radial) and the unloaded groove-to-ball-centre
+ * lengths, thermal terms included, as in the last solve (for the dynamic
+ * model, which moves the ball itself). */
+typedef struct { double A1, A2, L0_i, L0_o; } acbb_ball_frame;
+void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
+                          acbb_ball_frame *f);
+
 /* Copy a state (header and the n balls in use). */
 void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
 

@@ -51,6 +51,10 @@ acbb_status acbb_plot_file(acbb_plot_kind kind, acbb_plot_format fmt, const char
 acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_plot_data *d,
                            char *text, size_t text_len, acbb_error *err);
 
+/* Check a plot size before doing the work that feeds the plot: pixels for
+ * PNG/SVG, characters for dumb. ACBB_OK or ACBB_EINVAL with the range. */
+acbb_status acbb_plot_check_size(acbb_plot_format fmt, int width, int height, acbb_error *err);
+
 /* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
 const char *acbb_plot_program(void);
 

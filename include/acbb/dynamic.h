@@ -1,0 +1,40 @@
+/* acbb — dynamic ball model (fidelity.model = dynamic): time integration
+ * of each ball's motion — translation in the meridional plane (X1, X2),
+ * orbital speed and the three components of its angular velocity — under
+ * Hertz contact forces with viscous contact damping, traction resultants
+ * (traction.h), centrifugal and Coriolis terms, gyroscopic coupling and
+ * oil-air drag. The inner ring is held at its quasi-static position; there
+ * is no cage contact (free balls; adequate for pure thrust, where every
+ * ball is alike). Integrated with GSL odeiv2's BDF stepper (msbdf), which
+ * suits the stiff contact (~3e5 rad/s) and traction (~1e9 1/s) modes.
+ *
+ * Its fixed point is the quasi-dynamic solution: at rest in the orbiting
+ * frame the equations reduce to the Level-2 balances. The time-averaged
+ * state over the second half of a window is what the coupled stepper uses.
+ *
+ * Ownership: acbb_dyn_new allocates a workspace that acbb_dyn_free frees. */
+#ifndef ACBB_DYNAMIC_H
+#define ACBB_DYNAMIC_H
+
+#include "acbb/mechanics.h"
+#include "acbb/traction.h"
+
+#define ACBB_DYN_DAMPING 0.1   /* contact damping, fraction of critical (ASSUMED) */
+
+typedef struct acbb_dyn acbb_dyn;
+
+acbb_status acbb_dyn_new(int grid, acbb_dyn **out);
+void acbb_dyn_free(acbb_dyn *d);
+
+/* Integrate ball j of st for `window` seconds from its current position
+ * (at rest) and speeds (qd_w if traction_valid, else the race-control
+ * kinematics), then write the time average over the second half into the
+ * ball: qd_w, tr_i, tr_o, tr_Qi, tr_Qo, traction_valid. *change returns
+ * the relative change of omega_m. Loads are re-solved by the caller. */
+acbb_status acbb_dyn_ball(acbb_dyn *d, acbb_mech *m, const acbb_scene *s,
+                          const acbb_quad *quad, double omega_i,
+                          const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                          const acbb_mixture *mix, acbb_mech_state *st, int j,
+                          double window, double *change, acbb_error *err);
+
+#endif

@@ -1,0 +1,352 @@
+/* acbb CLI — `acbb plot` and the `--plot FILE` writer (see cli_plot.h).
+ *
+ * A thin client of the engine API: load the preset, apply --set edits,
+ * step the Sim to the end of its run while every published snapshot goes
+ * into an acbb_history, then hand history and final snapshot to the plot
+ * module. Arguments are parsed by hand, like src/cli.c: four options do
+ * not need getopt_long, and no user text reaches a shell (plot.c spawns
+ * gnuplot directly). */
+#include <errno.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "acbb/history.h"
+#include "acbb/plot.h"
+#include "acbb/scene.h"
+#include "acbb/sim.h"
+#include "cli_plot.h"
+
+enum { PLOT_EXIT_OK = 0, PLOT_EXIT_INPUT = 2, PLOT_EXIT_SOLVER = 3, PLOT_EXIT_PLOT = 4 };
+
+#define PLOT_FILE_W 1000
+#define PLOT_FILE_H 600
+#define PLOT_DUMB_W 80
+#define PLOT_DUMB_H 25
+#define PLOT_N_KINDS 5
+
+static const char plot_usage[] =
+    "usage: acbb plot PRESET [--set section.key=value]...\n"
+    "         [--kind temperature|losses|loads|angles|history-loads|all]\n"
+    "         [--out FILE.png|FILE.svg | --dumb] [--size WxH]\n";
+
+typedef struct {
+    const char *preset;
+    const char **sets;
+    size_t n_sets;
+    const char *kind;   /* as typed; NULL = temperature */
+    const char *out;    /* NULL = dumb */
+    bool dumb;
+    const char *size;   /* "WxH" as typed, or NULL */
+} plot_args;
+
+static int bad_usage(const char *what, const char *arg)
+{
+    fprintf(stderr, "acbb: plot: %s%s\n%s", what, arg ? arg : "", plot_usage);
+    return PLOT_EXIT_INPUT;
+}
+
+/* `--name value` or `--name=value`; NULL if absent (message printed). */
+static const char *option_value(const char *arg, size_t name_len, int argc, char **argv, int *i)
+{
+    if (arg[name_len] == '=') return arg + name_len + 1;
+    if (*i + 1 < argc) return argv[++*i];
+    fprintf(stderr, "acbb: plot: option %.*s needs a value\n", (int)name_len, arg);
+    return NULL;
+}
+
+static int parse_plot_args(plot_args *a, int argc, char **argv)
+{
+    static const char *const with_value[] = { "--set", "--kind", "--out", "--size" };
+    bool options_done = false;
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i];
+        if (options_done || arg[0] != '-' || arg[1] == '\0') {
+            if (a->preset) return bad_usage("unexpected argument ", arg);
+            a->preset = arg;
+            continue;
+        }
+        if (strcmp(arg, "--") == 0) {
+            options_done = true;
+            continue;
+        }
+        if (strcmp(arg, "--dumb") == 0) {
+            a->dumb = true;
+            continue;
+        }
+        size_t k = 0, n = sizeof with_value / sizeof with_value[0];
+        for (; k < n; k++) {
+            size_t len = strlen(with_value[k]);
+            if (strncmp(arg, with_value[k], len) == 0 && (arg[len] == '\0' || arg[len] == '='))
+                break;
+        }
+        if (k == n) return bad_usage("unknown option ", arg);
+        const char *val = option_value(arg, strlen(with_value[k]), argc, argv, &i);
+        if (!val) return PLOT_EXIT_INPUT;
+        if (k == 0) a->sets[a->n_sets++] = val;
+        else if (k == 1) a->kind = val;
+        else if (k == 2) a->out = val;
+        else a->size = val;
+    }
+    if (!a->preset) return bad_usage("missing PRESET", NULL);
+    if (a->out && a->dumb) return bad_usage("--out and --dumb exclude each other", NULL);
+    return 0;
+}
+
+/* "WxH" with both sides whole numbers; the plot module checks the range. */
+static int parse_size(const char *text, int *w, int *h)
+{
+    char *end = NULL;
+    errno = 0;
+    long x = strtol(text, &end, 10);
+    if (errno || end == text || (*end != 'x' && *end != 'X')) goto bad;
+    const char *p = end + 1;
+    long y = strtol(p, &end, 10);
+    if (errno || end == p || *end || x < 1 || y < 1 || x > 100000 || y > 100000) goto bad;
+    *w = (int)x;
+    *h = (int)y;
+    return 0;
+bad:
+    fprintf(stderr, "acbb: plot: --size %s: expected WxH, e.g. 1000x600\n", text);
+    return PLOT_EXIT_INPUT;
+}
+
+/* ---- scene and run ---- */
+
+static int input_exit(acbb_status st)
+{
+    switch (st) {
+    case ACBB_EINVAL: case ACBB_EIO: case ACBB_ILL_POSED: return PLOT_EXIT_INPUT;
+    case ACBB_ENOMEM: return PLOT_EXIT_PLOT;
+    default: return PLOT_EXIT_SOLVER;
+    }
+}
+
+static int load_plot_scene(const plot_args *a, acbb_scene *sc)
+{
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_load(a->preset, sc, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return input_exit(st);
+    }
+    for (size_t i = 0; i < a->n_sets; i++) {
+        const char *text = a->sets[i], *eq = strchr(text, '=');
+        char key[160];
+        if (!eq || eq == text || (size_t)(eq - text) >= sizeof key) {
+            fprintf(stderr, "acbb: --set %s: expected section.key=value\n", text);
+            return PLOT_EXIT_INPUT;
+        }
+        memcpy(key, text, (size_t)(eq - text));
+        key[eq - text] = '\0';
+        st = acbb_scene_set(sc, key, eq + 1, &err);
+        if (st != ACBB_OK) {
+            fprintf(stderr, "acbb: --set %s: %s\n", text,
+                    err.msg[0] ? err.msg : acbb_status_name(st));
+            return PLOT_EXIT_INPUT;
+        }
+    }
+    return 0;
+}
+
+/* Step to the end of the run, recording every published step (DESIGN.md
+ * "Data flow"). The engine ends the run itself; the call budget only
+ * guards against one that never stops. Returns 0, 3 or 4. */
+static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *snap)
+{
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_sim_new(sc, &sim, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return input_exit(st);
+    }
+    long budget = 10L * (sc->max_steps > 0 ? sc->max_steps : 0) + 10000L;
+    acbb_history_init(h);
+    acbb_sim_snapshot(sim, snap);
+    acbb_history_push(h, snap);
+    long last = snap->iteration;
+    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING && budget-- > 0) {
+        st = acbb_sim_step(sim);
+        acbb_sim_snapshot(sim, snap);
+        if (snap->iteration != last) acbb_history_push(h, snap);
+        last = snap->iteration;
+        if (st != ACBB_OK) break;
+    }
+    bool stuck = acbb_sim_state(sim) == ACBB_RUN_RUNNING;
+    acbb_sim_free(sim);
+    if (stuck) {
+        fprintf(stderr, "acbb: internal error: the engine did not end the run after %ld "
+                "iterations\n", snap->iteration);
+        return PLOT_EXIT_PLOT;
+    }
+    if (snap->state != ACBB_RUN_CONVERGED) {
+        fprintf(stderr, "acbb: %s: %s (plotting the last good state)\n",
+                acbb_run_status_name(snap), snap->message);
+        return PLOT_EXIT_SOLVER;
+    }
+    return 0;
+}
+
+/* ---- writing ---- */
+
+static int plot_failed(const acbb_error *err, acbb_status st)
+{
+    fprintf(stderr, "acbb: %s — plot not written\n",
+            err->msg[0] ? err->msg : acbb_status_name(st));
+    return st == ACBB_EINVAL ? PLOT_EXIT_INPUT : PLOT_EXIT_PLOT;
+}
+
+/* `path` with "-<kind>" inserted before its extension (dir/x.png ->
+ * dir/x-losses.png). A malloc'd string, NULL when out of memory. */
+static char *sibling_path(const char *path, acbb_plot_kind kind)
+{
+    const char *base = strrchr(path, '/');
+    const char *dot = strrchr(base ? base + 1 : path, '.');
+    size_t stem = dot ? (size_t)(dot - path) : strlen(path);
+    const char *name = acbb_plot_kind_name(kind);
+    size_t n = strlen(path) + strlen(name) + 2;
+    char *out = malloc(n);
+    if (out) snprintf(out, n, "%.*s-%s%s", (int)stem, path, name, dot ? dot : "");
+    return out;
+}
+
+/* Write the kinds in [first, last] to files; `own` is the kind that goes to
+ * `path` itself (-1: every kind goes to a sibling). Returns 0, 2 or 4. */
+static int write_files(const char *path, int own, int first, int last, int w, int h,
+                       const acbb_plot_data *d)
+{
+    acbb_plot_format fmt = (acbb_plot_format)acbb_plot_format_from_name(path);
+    for (int k = first; k <= last; k++) {
+        char *target = k == own ? NULL : sibling_path(path, (acbb_plot_kind)k);
+        if (k != own && !target) {
+            fprintf(stderr, "acbb: out of memory — plot not written\n");
+            return PLOT_EXIT_PLOT;
+        }
+        acbb_error err = { { 0 } };
+        acbb_status st = acbb_plot_file((acbb_plot_kind)k, fmt, target ? target : path, w, h, d,
+                                        &err);
+        free(target);
+        if (st != ACBB_OK) return plot_failed(&err, st);
+    }
+    return 0;
+}
+
+static int write_dumb(int first, int last, int cols, int rows, const acbb_plot_data *d)
+{
+    /* Each cell is one byte in the dumb terminal's ASCII output; the slack
+     * covers newlines and trailing blanks. */
+    size_t cap = (size_t)(cols + 2) * (size_t)(rows + 2) + 1024;
+    char *text = malloc(cap);
+    if (!text) return PLOT_EXIT_PLOT;
+    int rc = 0;
+    for (int k = first; k <= last && !rc; k++) {
+        acbb_error err = { { 0 } };
+        acbb_status st = acbb_plot_dumb((acbb_plot_kind)k, cols, rows, d, text, cap, &err);
+        if (st != ACBB_OK) {
+            rc = plot_failed(&err, st);
+        } else {
+            /* gnuplot leaves the last row without a newline. */
+            size_t len = strlen(text);
+            fputs(text, stdout);
+            if (len == 0 || text[len - 1] != '\n') fputc('\n', stdout);
+        }
+    }
+    free(text);
+    if (!rc && (fflush(stdout) != 0 || ferror(stdout))) {
+        fprintf(stderr, "acbb: cannot write to stdout\n");
+        rc = PLOT_EXIT_PLOT;
+    }
+    return rc;
+}
+
+int acbb_cli_plot_check_path(const char *path)
+{
+    int fmt = acbb_plot_format_from_name(path);
+    if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG) {
+        fprintf(stderr, "acbb: --plot %s: expected a .png or .svg file name\n", path);
+        return PLOT_EXIT_INPUT;
+    }
+    return 0;
+}
+
+int acbb_cli_write_plot(const char *path, const acbb_history *h, const acbb_snapshot *final,
+                        const char *title)
+{
+    int rc = acbb_cli_plot_check_path(path);
+    if (rc) return rc;
+    acbb_plot_data d = { h, final, title };
+    return write_files(path, ACBB_PLOT_TEMPERATURE, 0, PLOT_N_KINDS - 1, PLOT_FILE_W,
+                       PLOT_FILE_H, &d);
+}
+
+/* The preset's file name without directory and ".ini": the plot title. */
+static void preset_title(const char *preset, char *buf, size_t n)
+{
+    const char *base = strrchr(preset, '/');
+    base = base ? base + 1 : preset;
+    size_t len = strlen(base);
+    if (len > 4 && strcmp(base + len - 4, ".ini") == 0) len -= 4;
+    snprintf(buf, n, "%.*s", (int)len, base);
+}
+
+/* Options checked before the (possibly long) run. */
+static int check_plot_args(const plot_args *a, int *first, int *last, int *w, int *h)
+{
+    if (!a->kind || strcmp(a->kind, "all") != 0) {
+        int k = a->kind ? acbb_plot_kind_from_name(a->kind) : ACBB_PLOT_TEMPERATURE;
+        if (k < 0) return bad_usage("unknown --kind ", a->kind);
+        *first = *last = k;
+    }
+    if (a->out) {
+        int fmt = acbb_plot_format_from_name(a->out);
+        if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)
+            return bad_usage("--out needs a .png or .svg file name: ", a->out);
+    }
+    *w = a->out ? PLOT_FILE_W : PLOT_DUMB_W;
+    *h = a->out ? PLOT_FILE_H : PLOT_DUMB_H;
+    if (!a->size) return 0;
+    if (parse_size(a->size, w, h)) return PLOT_EXIT_INPUT;
+    acbb_error err = { { 0 } };
+    int fmt = a->out ? acbb_plot_format_from_name(a->out) : ACBB_PLOT_DUMB;
+    if (acbb_plot_check_size((acbb_plot_format)fmt, *w, *h, &err) != ACBB_OK) {
+        fprintf(stderr, "acbb: plot: --size: %s\n", err.msg);
+        return PLOT_EXIT_INPUT;
+    }
+    return 0;
+}
+
+int acbb_cli_plot(int argc, char **argv)
+{
+    const char **sets = calloc((size_t)(argc > 0 ? argc : 1), sizeof *sets);
+    if (!sets) return PLOT_EXIT_PLOT;
+    plot_args a = { .sets = sets };
+    int first = 0, last = PLOT_N_KINDS - 1, w = 0, h = 0;
+    int rc = parse_plot_args(&a, argc, argv);
+    if (!rc) rc = check_plot_args(&a, &first, &last, &w, &h);
+    acbb_scene *sc = rc ? NULL : malloc(sizeof *sc);
+    acbb_history *hist = rc ? NULL : malloc(sizeof *hist);
+    acbb_snapshot *snap = rc ? NULL : malloc(sizeof *snap);
+    if (!rc && (!sc || !hist || !snap)) rc = PLOT_EXIT_PLOT;
+    if (!rc) rc = load_plot_scene(&a, sc);
+    if (!rc) {
+        int run_rc = run_recording(sc, hist, snap);
+        /* A run that stopped early still has a last good state to show. */
+        if (run_rc == 0 || run_rc == PLOT_EXIT_SOLVER) {
+            char title[128];
+            preset_title(a.preset, title, sizeof title);
+            acbb_plot_data d = { hist, snap, title };
+            int prc = a.out ? write_files(a.out, first == last ? first : -1, first, last, w, h,
+                                          &d)
+                            : write_dumb(first, last, w, h, &d);
+            rc = prc > run_rc ? prc : run_rc;
+        } else {
+            rc = run_rc;
+        }
+    }
+    free(sc);
+    free(hist);
+    free(snap);
+    free(sets);
+    return rc;
+}

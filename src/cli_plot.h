@@ -1,0 +1,46 @@
+/* acbb CLI — gnuplot export glue: the `acbb plot` subcommand and the
+ * `acbb run ... --plot FILE` writer, on top of the engine's plot module
+ * (include/acbb/plot.h). Private to the executable (src/cli.c calls it).
+ *
+ * Exit statuses follow src/cli.c: 0 ok, 2 bad input, 3 the solver did not
+ * reach steady state (the plot is still written, from the last good state),
+ * 4 gnuplot missing or failed; then stderr says, e.g.
+ *   acbb: gnuplot not found on PATH (install gnuplot-nox) — plot not written
+ *
+ * File naming. A kind-less request writes every kind, the siblings named
+ * by inserting "-<kind>" before the extension:
+ *   acbb plot P --kind all --out DIR/x.png
+ *       -> DIR/x-temperature.png, DIR/x-losses.png, DIR/x-loads.png,
+ *          DIR/x-angles.png, DIR/x-history-loads.png   (five files)
+ *   acbb run P --plot DIR/r.png            (acbb_cli_write_plot)
+ *       -> DIR/r.png is the temperature plot (the one a user asked a run
+ *          for), next to it DIR/r-losses.png, DIR/r-loads.png,
+ *          DIR/r-angles.png, DIR/r-history-loads.png
+ * The format comes from the extension (.png or .svg, any case). */
+#ifndef ACBB_CLI_PLOT_H
+#define ACBB_CLI_PLOT_H
+
+#include "acbb/history.h"
+#include "acbb/sim.h"
+
+/* `acbb plot PRESET [--set section.key=value]... [--kind K|all]
+ *  [--out FILE.png|FILE.svg | --dumb] [--size WxH]`; argv[0] is "plot"
+ * (call as acbb_cli_plot(argc - 1, argv + 1)). Without --out the chart is
+ * drawn with gnuplot's dumb terminal on stdout. --kind defaults to
+ * temperature; --size defaults to 1000x600 pixels, or 80x25 characters
+ * for --dumb. Returns the exit status. */
+int acbb_cli_plot(int argc, char **argv);
+
+/* Check a `--plot FILE` argument before a run starts: 0, or 2 with a
+ * message on stderr if the extension is neither .png nor .svg. */
+int acbb_cli_plot_check_path(const char *path);
+
+/* Write the plots of a finished run (naming above) at 1000x600 pixels.
+ * `title` (may be NULL) heads every plot, e.g. the preset name. Returns 0,
+ * 2 for a path without a .png/.svg extension, or 4 if gnuplot is missing
+ * or failed or a file could not be written; the message is on stderr.
+ * Stops at the first failure. */
+int acbb_cli_write_plot(const char *path, const acbb_history *h, const acbb_snapshot *final,
+                        const char *title);
+
+#endif

@@ -1,0 +1,193 @@
+/* acbb — dynamic ball model, see dynamic.h. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include "acbb/dynamic.h"
+
+#define NY 8          /* X1, X2 (um), V1, V2 (mm/s), wm, wx, wy, wz (/omega_i) */
+#define FD_STEP 1e-7
+
+struct acbb_dyn {
+    acbb_traction_contact ci, co;
+};
+
+typedef struct {
+    acbb_dyn *d;
+    acbb_mech *m;
+    const acbb_geometry *g;
+    const acbb_scene *s;
+    const acbb_quad *quad;
+    const acbb_oil_state *oil_i, *oil_o;
+    const acbb_mixture *mix;
+    acbb_ball_state b;        /* scratch: contact state at the current y */
+    acbb_ball_frame fr;
+    double omega_i;
+    acbb_traction tri, tro;   /* at the last evaluation */
+} dyn_ctx;
+
+/* Contact load and its damping along one normal; returns the normal force
+ * magnitude (>= 0) and fills the Hertz contact. */
+static double contact(const acbb_hertz_const *hc, double delta, double rate, double mass,
+                      acbb_hertz_contact *ct)
+{
+    acbb_hertz_from_deflection(hc, delta, ct);
+    if (delta <= 0.0) return 0.0;
+    double k = 1.5 * hc->Kc * sqrt(delta);
+    double c = 2.0 * ACBB_DYN_DAMPING * sqrt(k * mass);
+    return fmax(ct->Q + c * rate, 0.0);
+}
+
+static int rhs(double t, const double y[], double dydt[], void *p)
+{
+    (void)t;
+    dyn_ctx *c = p;
+    const acbb_geometry *g = c->g;
+    acbb_ball_state *b = &c->b;
+    double wi = c->omega_i, mass = g->mass;
+    double X1 = y[0] * 1e-6, X2 = y[1] * 1e-6, V1 = y[2] * 1e-3, V2 = y[3] * 1e-3;
+    double wm = y[4] * wi, wb[3] = { y[5] * wi, y[6] * wi, y[7] * wi };
+    double Lo = hypot(X1, X2), xi = c->fr.A1 - X1, zi = c->fr.A2 - X2, Li = hypot(xi, zi);
+    b->alpha_o = atan2(X1, X2);
+    b->alpha_i = atan2(xi, zi);
+    b->delta_o = Lo - c->fr.L0_o;
+    b->delta_i = Li - c->fr.L0_i;
+    double rate_o = (X1 * V1 + X2 * V2) / Lo, rate_i = -(xi * V1 + zi * V2) / Li;
+    double Fo = contact(&b->hc_o, b->delta_o, rate_o, mass, &b->ct_o);
+    double Fi = contact(&b->hc_i, b->delta_i, rate_i, mass, &b->ct_i);
+    b->Qi = b->ct_i.Q;
+    b->Qo = b->ct_o.Q;
+    acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, wi, wm, wb[0], wb[1], wb[2],
+                               &b->kin);
+    memset(&c->tri, 0, sizeof c->tri);
+    memset(&c->tro, 0, sizeof c->tro);
+    acbb_contact_in ci;
+    for (int inner = 0; inner < 2; inner++) {
+        acbb_mech_contact_input(g, b, inner, wi, &ci);
+        acbb_film film;
+        double u = fabs(ci.u), srr = u > 1e-6 ? fmin(acbb_slip_speed(&ci, 0.0) / u, 2.0) : 0.0;
+        acbb_traction_contact *tc = inner ? &c->d->ci : &c->d->co;
+        const acbb_oil_state *oil = inner ? c->oil_i : c->oil_o;
+        acbb_film_compute(c->s, oil, u, ci.Q, ci.Rx, ci.kappa, ci.E_eff, ci.pmax, srr, &film);
+        if (acbb_traction_prepare(c->s, c->quad, &ci, &film, oil, tc) != ACBB_OK)
+            return GSL_EBADFUNC;
+        acbb_traction_eval(c->s, tc, wb, inner ? wi - wm : -wm, inner ? &c->tri : &c->tro);
+    }
+    double r = g->Re_o + X2;
+    double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
+    /* Meridional forces: normals (inner pushes out along +n, outer in),
+     * tractions, centrifugal force of the orbiting frame. */
+    double Fx = Fi * sin(b->alpha_i) - Fo * sin(b->alpha_o) + c->tri.F[0] + c->tro.F[0];
+    double Fz = Fi * cos(b->alpha_i) - Fo * cos(b->alpha_o) + c->tri.F[2] + c->tro.F[2]
+              + (c->s->centrifugal ? mass * r * wm * wm : 0.0);
+    double Fy = c->tri.F[1] + c->tro.F[1] + Fv;
+    /* Orbit: d(m r^2 wm)/dt = -r Fy (motion is along -y'), Coriolis included. */
+    double dwm = (-Fy - 2.0 * mass * V2 * wm) / (mass * r);
+    /* Rotation in the orbiting frame: J dw/dt = M - J wm e_x x w - J dwm/dt e_x. */
+    double J = g->J, gy = c->s->gyroscopic ? 1.0 : 0.0;
+    double M[3] = { c->tri.M[0] + c->tro.M[0], c->tri.M[1] + c->tro.M[1],
+                    c->tri.M[2] + c->tro.M[2] };
+    double dw[3] = { (M[0] - J * dwm) / J, (M[1] + gy * J * wm * wb[2]) / J,
+                     (M[2] - gy * J * wm * wb[1]) / J };
+    dydt[0] = V1 * 1e6;
+    dydt[1] = V2 * 1e6;
+    dydt[2] = Fx / mass * 1e3;
+    dydt[3] = Fz / mass * 1e3;
+    dydt[4] = dwm / wi;
+    for (int k = 0; k < 3; k++) dydt[5 + k] = dw[k] / wi;
+    for (int k = 0; k < NY; k++)
+        if (!isfinite(dydt[k])) return GSL_EBADFUNC;
+    return GSL_SUCCESS;
+}
+
+/* Finite-difference Jacobian (the BDF stepper needs one; the traction
+ * field has no convenient closed-form derivative). */
+static int jac(double t, const double y[], double *dfdy, double dfdt[], void *p)
+{
+    double f0[NY], f1[NY], yy[NY];
+    int rc = rhs(t, y, f0, p);
+    if (rc != GSL_SUCCESS) return rc;
+    for (int j = 0; j < NY; j++) {
+        memcpy(yy, y, sizeof yy);
+        double h = FD_STEP * fmax(fabs(y[j]), 1.0);
+        yy[j] += h;
+        if ((rc = rhs(t, yy, f1, p)) != GSL_SUCCESS) return rc;
+        for (int i = 0; i < NY; i++) dfdy[i * NY + j] = (f1[i] - f0[i]) / h;
+    }
+    for (int i = 0; i < NY; i++) dfdt[i] = 0.0;
+    return GSL_SUCCESS;
+}
+
+acbb_status acbb_dyn_new(int grid, acbb_dyn **out)
+{
+    acbb_dyn *d = calloc(1, sizeof *d);
+    if (!d) return ACBB_ENOMEM;
+    if (acbb_traction_contact_init(&d->ci, grid) != ACBB_OK
+        || acbb_traction_contact_init(&d->co, grid) != ACBB_OK) {
+        acbb_dyn_free(d);
+        return ACBB_ENOMEM;
+    }
+    *out = d;
+    return ACBB_OK;
+}
+
+void acbb_dyn_free(acbb_dyn *d)
+{
+    if (!d) return;
+    acbb_traction_contact_free(&d->ci);
+    acbb_traction_contact_free(&d->co);
+    free(d);
+}
+
+acbb_status acbb_dyn_ball(acbb_dyn *d, acbb_mech *m, const acbb_scene *s,
+                          const acbb_quad *quad, double omega_i,
+                          const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                          const acbb_mixture *mix, acbb_mech_state *st, int j,
+                          double window, double *change, acbb_error *err)
+{
+    acbb_ball_state *b = &st->ball[j];
+    *change = 0.0;
+    if (omega_i <= 0.0 || b->Qi < 1e-3 || b->Qo < 1e-3) return ACBB_OK;
+    dyn_ctx c = { .d = d, .m = m, .g = acbb_mech_geometry(m), .s = s, .quad = quad,
+                  .oil_i = oil_i, .oil_o = oil_o, .mix = mix, .b = *b, .omega_i = omega_i };
+    acbb_mech_ball_frame(m, st, j, &c.fr);
+    const double *w0 = b->traction_valid ? b->qd_w : NULL;
+    double y[NY] = { b->X1 * 1e6, b->X2 * 1e6, 0.0, 0.0,
+                     (w0 ? w0[0] : b->kin.omega_m) / omega_i, (w0 ? w0[1] : b->kin.wx) / omega_i,
+                     (w0 ? w0[2] : b->kin.wy) / omega_i, (w0 ? w0[3] : b->kin.wz) / omega_i };
+    gsl_odeiv2_system sys = { rhs, jac, NY, &c };
+    gsl_odeiv2_driver *drv = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_msbdf,
+                                                           1e-9, 1e-9, 1e-9);
+    if (!drv) return acbb_error_set(err, ACBB_ENOMEM, "dynamic model: out of memory");
+    gsl_odeiv2_driver_set_hmax(drv, window / 20.0);
+    /* Average over the second half of the window on a fixed sample grid. */
+    const int NS = 40;
+    double t = 0.0, avg[NY] = { 0 }, tri[3] = { 0 }, tro[3] = { 0 }, Qi = 0, Qo = 0;
+    int rc = gsl_odeiv2_driver_apply(drv, &t, 0.5 * window, y);
+    for (int k = 1; k <= NS && rc == GSL_SUCCESS; k++) {
+        rc = gsl_odeiv2_driver_apply(drv, &t, 0.5 * window * (1.0 + (double)k / NS), y);
+        double f[NY];
+        if (rc == GSL_SUCCESS) rc = rhs(t, y, f, &c);
+        for (int i = 0; i < NY; i++) avg[i] += y[i] / NS;
+        for (int i = 0; i < 3; i++) {
+            tri[i] += c.tri.F[i] / NS;
+            tro[i] += c.tro.F[i] / NS;
+        }
+        Qi += c.b.Qi / NS;
+        Qo += c.b.Qo / NS;
+    }
+    gsl_odeiv2_driver_free(drv);
+    if (rc != GSL_SUCCESS)
+        return acbb_error_set(err, ACBB_DIVERGED, "dynamic model: integration of ball %d failed "
+                              "(GSL status %d)", j + 1, rc);
+    double wm0 = b->kin.omega_m;
+    for (int k = 0; k < 4; k++) b->qd_w[k] = avg[4 + k] * omega_i;
+    memcpy(b->tr_i, tri, sizeof tri);
+    memcpy(b->tr_o, tro, sizeof tro);
+    b->tr_Qi = Qi;
+    b->tr_Qo = Qo;
+    b->traction_valid = 1;
+    *change = fabs(b->qd_w[0] - wm0) / fmax(fabs(wm0), 1e-12);
+    return ACBB_OK;
+}
