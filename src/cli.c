@@ -29,6 +29,9 @@
 #include "acbb/history.h"
 #include "cli_output.h"
 #include "cli_plot.h"
+#include "cli_accuracy.h"
+#include "cli_report.h"
+#include "tui.h"
 
 enum { EXIT_CONVERGED = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4 };
 
@@ -36,10 +39,13 @@ enum { EXIT_CONVERGED = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4
 #define CLI_DEFAULT_PRESET "presets/7008C.ini"
 
 static const char usage_text[] =
-    "usage: acbb COMMAND [ARGS]\n"
+    "usage: acbb [COMMAND [ARGS]]\n"
     "\n"
     "commands:\n"
+    "  (none) | tui [PRESET]\n"
+    "        the terminal workbench, on presets/7008C.ini by default\n"
     "  run PRESET [--set section.key=value]... [--json] [--csv FILE] [--quiet]\n"
+    "        [--plot FILE.png|FILE.svg]\n"
     "        run the coupled thermo-mechanical model to thermal steady state\n"
     "  check PRESET [--set section.key=value]...\n"
     "        validate the preset and the edits without running\n"
@@ -49,8 +55,16 @@ static const char usage_text[] =
     "  study PRESET [--set ...] [--csv FILE] [--jobs N]\n"
     "        the seed's comparison with (TE) and without (WTE) thermal\n"
     "        expansion: loads 50..1000 N, speeds 2000..16000 rpm\n"
+    "  plot PRESET [--set ...] [--kind temperature|losses|loads|angles|\n"
+    "        history-loads|all] [--out FILE.png|FILE.svg | --dumb] [--size WxH]\n"
+    "        run the scene and plot it through gnuplot\n"
     "  bench speed [PRESET] [--repeat N]\n"
     "        wall time of one run and of the 8-load sweep (median of N)\n"
+    "  bench accuracy PRESET [--set ...] [--repeat N] [--knobs k1,..]\n"
+    "        [--models m1,..] [--csv FILE] [--plot FILE]\n"
+    "        error against the finest setting vs wall time, one knob at a time\n"
+    "  report PRESET [--set ...] [--json] [--md FILE]\n"
+    "        the seed's conclusions (MODEL.md section 12): held / not held\n"
     "  presets [DIR]   list presets/*.ini with their first comment line\n"
     "  keys            list every scene key with unit, range and help\n"
     "  help            this text (also --help, -h)\n"
@@ -59,7 +73,7 @@ static const char usage_text[] =
     "(see `acbb keys`). --jobs defaults to the number of CPUs.\n"
     "\n"
     "exit status: 0 converged, 2 bad input or ill-posed scene,\n"
-    "3 solver did not reach steady state, 4 internal error\n";
+    "3 solver did not reach steady state, 4 internal error or gnuplot failure\n";
 
 /* ---- arguments ---- */
 
@@ -860,7 +874,8 @@ int main(int argc, char **argv)
 {
     /* The default GSL handler aborts the process (common rules). */
     gsl_set_error_handler_off();
-    if (argc < 2) return usage(stderr, EXIT_BADINPUT);
+    if (argc < 2 || strcmp(argv[1], "tui") == 0)
+        return acbb_tui_main(argc < 2 ? argc : argc - 1, argc < 2 ? argv : argv + 1);
     if (is_help(argv[1])) return usage(stdout, EXIT_CONVERGED);
     for (int i = 2; i < argc; i++)
         if (strcmp(argv[i], "--") == 0) break;
@@ -881,6 +896,14 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "plot") == 0) {
         free(sets);
         return acbb_cli_plot(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "report") == 0) {
+        free(sets);
+        return acbb_cli_report(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "bench") == 0 && argc > 2 && strcmp(argv[2], "accuracy") == 0) {
+        free(sets);
+        return acbb_cli_bench_accuracy(argc - 2, argv + 2);
     }
     int rc = -1;
     for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++)

@@ -474,6 +474,22 @@ static int thrust_secant(acbb_mech *m, double *x, double *fx)
     return 0;
 }
 
+/* Fallback when GSL rejects the bracket: gsl_root_fsolver_set evaluates
+ * the ends again, and a residual within solver noise of zero may then show
+ * the same sign at both. Plain bisection on the signs already known. */
+static acbb_status thrust_bisect(acbb_mech *m, double lo, double flo, double hi, double fhi)
+{
+    double tol = m->tol * ring_force_scale(m);
+    for (int it = 0; it < 200; it++) {
+        double mid = 0.5 * (lo + hi), f = thrust_residual(mid, m);
+        if (!isfinite(f)) return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+        if (fabs(f) <= tol || hi - lo < 1e-12 * (1.0 + fabs(mid))) return ACBB_OK;
+        if ((f < 0.0) == (flo < 0.0)) { lo = mid; flo = f; } else { hi = mid; fhi = f; }
+    }
+    (void)fhi;
+    return ACBB_DIVERGED;
+}
+
 static acbb_status solve_thrust(acbb_mech *m, acbb_mech_state *st)
 {
     double x = st->dx / UM;
@@ -495,7 +511,7 @@ static acbb_status solve_thrust(acbb_mech *m, acbb_mech_state *st)
         return ACBB_DIVERGED;
     gsl_function F = { thrust_residual, m };
     if (gsl_root_fsolver_set(m->brent, &F, lo, hi) != GSL_SUCCESS)
-        return ACBB_DIVERGED;
+        return thrust_bisect(m, lo, flo, hi, fhi);
     for (int it = 0; it < 200; it++) {
         if (gsl_root_fsolver_iterate(m->brent) != GSL_SUCCESS)
             return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;

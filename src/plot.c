@@ -630,3 +630,123 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
     free(b.p);
     return st;
 }
+
+/* ---- accuracy versus time (include/acbb/accuracy.h) ---- */
+
+/* log axes cannot show the references' exact zero: they sit on this floor. */
+#define ACC_FLOOR_PCT 1e-10
+
+/* The frontier's criterion, max(e_loss, e_T), in %; NaN if undefined. */
+static double accuracy_error_pct(const acbb_accuracy_row *r)
+{
+    if (r->status != ACBB_OK || r->skipped || !isfinite(r->e_loss) || !isfinite(r->e_T))
+        return NAN;
+    double e = 100.0 * fmax(r->e_loss, r->e_T);
+    return e < ACC_FLOOR_PCT ? ACC_FLOOR_PCT : e;
+}
+
+/* Datablock $K<k>: wall ms, error %, "label" for each drawable row of
+ * knob k. Labels are fixed plan values; a double quote or control
+ * character (none expected) would break the datablock and becomes '_'. */
+static size_t accuracy_block(sbuf *b, const acbb_accuracy_row *rows, size_t n, int k)
+{
+    size_t count = 0;
+    sb_printf(b, "$K%d << EOD\n", k);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_accuracy_row *r = &rows[i];
+        double y = accuracy_error_pct(r);
+        if ((int)r->knob != k || !isfinite(y) || !(r->wall_ms > 0.0)) continue;
+        char label[40];
+        snprintf(label, sizeof label, "%s", r->value);
+        for (char *c = label; *c; c++)
+            if (*c == '"' || (unsigned char)*c < 0x20) *c = '_';
+        sb_printf(b, "%.17g %.17g \"%s\"\n", r->wall_ms, y, label);
+        count++;
+    }
+    sb_printf(b, "EOD\n");
+    return count;
+}
+
+static acbb_status accuracy_script(sbuf *b, const acbb_accuracy_row *rows, size_t n,
+                                   const char *title, acbb_error *err)
+{
+    bool used[ACBB_KNOB_COUNT];
+    size_t total = 0;
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
+        size_t c = accuracy_block(b, rows, n, k);
+        used[k] = c > 0;
+        total += c;
+    }
+    if (total == 0)
+        return acbb_error_set(err, ACBB_EINVAL, "accuracy plot: no converged setting to plot");
+    char t[640];
+    snprintf(t, sizeof t, "%s%serror vs wall time, one [fidelity] knob at a time",
+             title && title[0] ? title : "", title && title[0] ? ": " : "");
+    sb_printf(b, "set title ");
+    sb_quoted(b, t);
+    sb_printf(b, "\nset xlabel 'median wall time per run (ms)'\n");
+    sb_printf(b, "set ylabel 'max(loss error, T-rise error) vs the knob reference (%%), "
+                 "floor %g %%'\n", ACC_FLOOR_PCT);
+    sb_printf(b, "set logscale xy\nset grid\nset format y '%%g'\n");
+    sb_printf(b, "set arrow from graph 0, first %g to graph 1, first %g nohead dashtype 2\n",
+              100.0 * ACBB_ACCURACY_FRONTIER_TOL, 100.0 * ACBB_ACCURACY_FRONTIER_TOL);
+    sb_printf(b, "plot ");
+    bool first = true;
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
+        if (!used[k]) continue;
+        sb_printf(b, "%s$K%d using 1:2 with linespoints pointtype 7 linecolor %d title ",
+                  first ? "" : ", ", k, k + 1);
+        sb_quoted(b, acbb_accuracy_knob_name((acbb_accuracy_knob)k));
+        sb_printf(b, ", $K%d using 1:2:3 with labels offset char 0.6,0.6 left "
+                     "textcolor lt %d notitle", k, k + 1);
+        first = false;
+    }
+    sb_printf(b, "\nset output\nexit\n");
+    if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
+    return ACBB_OK;
+}
+
+acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
+                                    acbb_plot_format fmt, const char *path, int width,
+                                    int height, const char *title, acbb_error *err)
+{
+    if (!rows || n == 0)
+        return acbb_error_set(err, ACBB_EINVAL, "accuracy plot: no data");
+    if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)
+        return acbb_error_set(err, ACBB_EINVAL, "plot file format must be png or svg");
+    if (!path || !path[0] || has_control_char(path))
+        return acbb_error_set(err, ACBB_EINVAL, "plot path is empty or has a control character");
+    acbb_status st = acbb_plot_check_size(fmt, width, height, err);
+    if (st != ACBB_OK) return st;
+
+    sbuf b = { 0 };
+    char *tmp = NULL;
+    terminal_line(&b, fmt, width, height);
+    /* The data are checked before a temporary file is made. */
+    sbuf body = { 0 };
+    st = accuracy_script(&body, rows, n, title, err);
+    if (st == ACBB_OK) st = make_temp(path, &tmp, err);
+    if (st == ACBB_OK) {
+        sb_printf(&b, "set output ");
+        sb_quoted(&b, tmp);
+        sb_printf(&b, "\n");
+        if (sb_reserve(&b, body.n)) {
+            memcpy(b.p + b.n, body.p, body.n);
+            b.n += body.n;
+            b.p[b.n] = '\0';
+        }
+        if (b.oom) st = acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
+    }
+    gp_io io = { 0 };
+    if (st == ACBB_OK) st = run_gnuplot(&b, &io, err);
+    struct stat sb;
+    if (st == ACBB_OK && (stat(tmp, &sb) != 0 || sb.st_size == 0))
+        st = acbb_error_set(err, ACBB_EIO, "gnuplot failed: it wrote nothing to %s", path);
+    if (st == ACBB_OK && rename(tmp, path) != 0)
+        st = acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
+    if (st != ACBB_OK && tmp) unlink(tmp);
+    free(tmp);
+    free(b.p);
+    free(body.p);
+    return st;
+}

@@ -109,6 +109,25 @@ static acbb_status prepare(const acbb_scene *s, const acbb_quad *quad, const acb
     return acbb_traction_prepare(s, quad, &c, &film, oil, tc);
 }
 
+/* Hybrid Newton from x0 to RES_TOL (accepting 1e3 x that on a stall). */
+static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const double *x0)
+{
+    double xv[4];
+    memcpy(xv, x0, sizeof xv);
+    gsl_vector_view v = gsl_vector_view_array(xv, 4);
+    if (gsl_multiroot_fdfsolver_set(q->solver, F, &v.vector) != GSL_SUCCESS)
+        return ACBB_DIVERGED;
+    int status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    for (int it = 0; status == GSL_CONTINUE && it < 100; it++) {
+        if (gsl_multiroot_fdfsolver_iterate(q->solver) != GSL_SUCCESS) break;
+        status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    }
+    if (status == GSL_SUCCESS
+        || gsl_multiroot_test_residual(q->solver->f, 1e3 * RES_TOL) == GSL_SUCCESS)
+        return ACBB_OK;
+    return ACBB_DIVERGED;
+}
+
 static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
@@ -122,18 +141,19 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
     double x0[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
                      b->kin.wz / omega_i };
-    gsl_vector_view xv = gsl_vector_view_array(x0, 4);
     gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, &c };
-    if (gsl_multiroot_fdfsolver_set(q->solver, &F, &xv.vector) != GSL_SUCCESS)
-        return ACBB_DIVERGED;
-    int status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
-    for (int it = 0; status == GSL_CONTINUE && it < 100; it++) {
-        if (gsl_multiroot_fdfsolver_iterate(q->solver) != GSL_SUCCESS) break;
-        status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    if (newton(q, &F, x0) != ACBB_OK) {
+        /* Continuation in the slip regularisation: the traction field is
+         * nearly discontinuous at zero slip (s_reg = 1 um/s); start from a
+         * smooth 1 cm/s and tighten, warm-starting each solve. */
+        double x[4];
+        memcpy(x, x0, sizeof x);
+        for (double sr = 1e-2; sr >= 0.99e-6; sr *= 0.1) {
+            q->ci.s_reg = q->co.s_reg = sr;
+            if (newton(q, &F, x) != ACBB_OK) return ACBB_DIVERGED;
+            for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
+        }
     }
-    if (status != GSL_SUCCESS
-        && gsl_multiroot_test_residual(q->solver->f, 1e3 * RES_TOL) != GSL_SUCCESS)
-        return ACBB_DIVERGED;
     const gsl_vector *x = q->solver->x;
     for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * gsl_vector_get(x, d);
     qd_f(x, &c, q->solver->f); /* tractions at the accepted root */

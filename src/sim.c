@@ -25,7 +25,7 @@
 #define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
 #define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
 #define POLISH_ITERS 60        /* direct steady iterations after the transient */
-#define QD_PASSES 4            /* mechanics <-> Level-2 kinematics passes per step */
+#define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
@@ -51,6 +51,7 @@ struct acbb_sim {
     double heat_out;
     double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_dFx;
     int growth_count;
+    int transient_pass;        /* 1 while evaluating inside a transient step */
     long iter;
     int quiet;
     acbb_run_state state;
@@ -206,7 +207,10 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
     acbb_oil_state oi, oo;
     acbb_mixture mix;
     lubricant(sim, &oi, &oo, &mix);
-    for (int pass = 0; pass < QD_PASSES; pass++) {
+    /* One pass per transient step: the thermal steps iterate the coupling
+     * anyway; set-up and the final steady polish converge it fully. */
+    int passes = sim->transient_pass ? 1 : QD_PASSES;
+    for (int pass = 0; pass < passes; pass++) {
         double change = 0.0;
         if (sim->dyn)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
@@ -298,8 +302,19 @@ static double max_change(const double *a, const double *b, int n)
     return m;
 }
 
+/* Largest move of a node that stores heat: zero-capacity (algebraic) nodes
+ * such as the contact nodes jump to their new balance in any step, so they
+ * must not drive the step-size control. */
+static double max_change_stored(const acbb_tnet *net, const double *a, const double *b, int n)
+{
+    double m = 0.0;
+    for (int i = 0; i < n; i++)
+        if (acbb_tnet_capacity(net, i) > 0.0) m = fmax(m, fabs(a[i] - b[i]));
+    return m;
+}
+
 /* Backward-Euler step with step rejection on large temperature moves. */
-static acbb_status thermal_step(acbb_sim *sim, double *Tn, double *dT)
+static acbb_status thermal_step(acbb_sim *sim, double *Tn, double *dT, double *dTs)
 {
     int n = sim->nw.n;
     for (;;) {
@@ -307,7 +322,8 @@ static acbb_status thermal_step(acbb_sim *sim, double *Tn, double *dT)
         acbb_status rc = acbb_tnet_step(sim->nw.net, sim->q, sim->dt, Tn);
         if (rc != ACBB_OK) return rc;
         *dT = max_change(Tn, sim->T, n);
-        if (*dT <= DT_MAX_DT_K || sim->dt <= DT_MIN) return ACBB_OK;
+        *dTs = max_change_stored(sim->nw.net, Tn, sim->T, n);
+        if (*dTs <= DT_MAX_DT_K || sim->dt <= DT_MIN) return ACBB_OK;
         sim->dt = fmax(0.5 * sim->dt, DT_MIN);
     }
 }
@@ -350,9 +366,9 @@ acbb_status acbb_sim_step(acbb_sim *sim)
         return sim->status;
     double t0 = now_ms();
     acbb_error err = { "" };
-    double Tn[ACBB_MAX_NODES], dT = 0.0;
+    double Tn[ACBB_MAX_NODES], dT = 0.0, dTs = 0.0;
     int steady_mode = sim->s.thermal_mode == ACBB_THERMAL_STEADY;
-    acbb_status rc = steady_mode ? steady_step(sim, Tn, &dT) : thermal_step(sim, Tn, &dT);
+    acbb_status rc = steady_mode ? steady_step(sim, Tn, &dT) : thermal_step(sim, Tn, &dT, &dTs);
     if (rc != ACBB_OK)
         return fail(sim, rc, "thermal network: %s", acbb_status_name(rc));
     if (!temps_finite(Tn, sim->nw.n))
@@ -366,7 +382,9 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     double T_keep[ACBB_MAX_NODES];
     memcpy(T_keep, sim->T, sizeof T_keep);
     memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
+    sim->transient_pass = !steady_mode;
     rc = evaluate(sim, &err);
+    sim->transient_pass = 0;
     if (rc != ACBB_OK) {
         acbb_mech_state_copy(&sim->ms, ms_keep);
         free(ms_keep);
@@ -391,7 +409,7 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     if (!steady_mode) {
         /* Grow while the losses barely move and nodes move < 0.5 K. */
         if (dP > 0.05) sim->dt = fmax(0.5 * sim->dt, DT_MIN);
-        else if (dP < 0.005 && dT < 0.25 * DT_MAX_DT_K) sim->dt = fmin(1.5 * sim->dt, DT_MAX);
+        else if (dP < 0.005 && dTs < 0.25 * DT_MAX_DT_K) sim->dt = fmin(1.5 * sim->dt, DT_MAX);
     }
     if (sim->quiet >= (steady_mode ? 3 : STEADY_COUNT)) {
         rc = polish(sim, &err);

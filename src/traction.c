@@ -49,6 +49,7 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
     tc->H = fmax(f->hc, 1e-9);
     tc->phi_a = f->phi_a;
     tc->phi_f = f->phi_f;
+    tc->s_reg = S_REG;
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
     double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
     int k = 0;
@@ -89,7 +90,7 @@ void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
         double tau = tc->phi_a * s->mu_bd * tc->p[k];
         if (tc->phi_f > 0.0)
             tau += tc->phi_f * acbb_tau_lubricant(s, tc->eta[k], mag, tc->H, tc->p[k]);
-        double g = -tau * tc->w[k] / sqrt(mag * mag + S_REG * S_REG);
+        double g = -tau * tc->w[k] / sqrt(mag * mag + tc->s_reg * tc->s_reg);
         double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
         cross(P, f, m);
         for (int d = 0; d < 3; d++) {

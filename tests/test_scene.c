@@ -184,10 +184,10 @@ static const char *const k_expected[][2] = {
     {"effects.gyroscopic", "on"}, {"effects.ring_centrifugal", "on"},
     {"effects.ehl_film", "on"}, {"effects.loss_shear", "on"}, {"effects.loss_slip", "on"},
     {"effects.loss_spin", "on"}, {"effects.loss_rolling", "on"}, {"effects.loss_drag", "on"},
-    {"fidelity.model", "quasi-static"}, {"fidelity.contact_grid", "16"},
-    {"fidelity.hertz", "exact"}, {"fidelity.geometry", "clean"},
+    {"fidelity.model", "quasi-dynamic"}, {"fidelity.contact_grid", "6"},
+    {"fidelity.hertz", "bh77"}, {"fidelity.geometry", "clean"},
     {"fidelity.race_control", "outer"}, {"fidelity.loss_form", "clean"},
-    {"fidelity.hysteresis_axis", "major"}, {"fidelity.mech_tol", "1e-10"},
+    {"fidelity.hysteresis_axis", "major"}, {"fidelity.mech_tol", "1e-08"},
     {"fidelity.steady_tol_K_s", "0.0001"},
     {"fidelity.network", "46"}, {"fidelity.thermal_mode", "transient"}, {"fidelity.time_step_s", "5"},
     {"thermal.max_time_s", "36000"}, {"thermal.max_steps", "20000"},
@@ -241,11 +241,11 @@ static void test_defaults_in_si(void)
     is_close(s.ambient_C, 26.0, 0, 0, "ambient stays in C");
     is_close(s.h_fit_inner, 20000.0, 0, 0, "IR fit conductance");
     ok(s.thermal_expansion && s.loss_drag && s.gyroscopic, "effects on by default");
-    ok(s.model == ACBB_MODEL_QUASI_STATIC && s.network == ACBB_NET_46 &&
+    ok(s.model == ACBB_MODEL_QUASI_DYNAMIC && s.hertz == ACBB_HERTZ_BH77 && s.network == ACBB_NET_46 &&
        s.visc == ACBB_VISC_ROELANDS && s.preload == ACBB_PRELOAD_FORCE &&
        s.race_control == ACBB_RACE_OUTER && s.thermal_mode == ACBB_THERMAL_TRANSIENT,
        "enum defaults");
-    ok(s.contact_grid == 16 && s.max_steps == 20000, "int defaults");
+    ok(s.contact_grid == 6 && s.max_steps == 20000, "int defaults");
     acbb_error e = {{0}};
     ok(acbb_scene_validate(&s, &e) == ACBB_OK, "defaults validate%s", e.msg);
 }

@@ -1,3 +1,221 @@
 #!/bin/sh
-echo "1..1"
-echo "ok 1 - stub"
+# End-to-end test of the ncurses TUI (TAP), the tmux regress/*.sh way: the
+# TUI runs in a detached tmux session of fixed size on a private socket; we
+# type with send-keys, read with capture-pane -p, and poll for the expected
+# text instead of sleeping. The tmux server is killed in a trap.
+# Usage: test_tui.sh PATH/TO/acbb   (cwd = repo root)
+set -u
+
+ACBB=${1:?usage: test_tui.sh PATH/TO/acbb}
+case $ACBB in /*) ;; *) ACBB=$(pwd)/$ACBB ;; esac
+ROOT=$(pwd)
+
+if ! command -v tmux >/dev/null 2>&1; then
+    echo "1..0 # SKIP tmux is not installed"
+    exit 0
+fi
+
+TMP=$(mktemp -d)
+SOCK=acbbtest$$
+T="tmux -L $SOCK -f /dev/null"
+cleanup() {
+    $T kill-server >/dev/null 2>&1
+    rm -f "${TMUX_TMPDIR:-/tmp}/tmux-$(id -u)/$SOCK" # the server leaves its socket file
+    rm -rf "$TMP"
+}
+trap cleanup EXIT
+trap 'exit 1' INT TERM HUP
+
+n=0
+failed=0
+ok() { # status description
+    n=$((n + 1))
+    if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; failed=$((failed + 1)); fi
+}
+S=none # current session; each TUI run gets its own (killing the last
+        # session would stop the server while the next one starts)
+screen() { $T capture-pane -p -t "$S" 2>/dev/null; }
+show() { screen | sed 's/^/#   /'; }
+# Poll the pane for a fixed string, up to $2 seconds (default 10).
+wait_for() {
+    i=0
+    lim=$(( ${2:-10} * 20 ))
+    while [ $i -lt $lim ]; do
+        if screen | grep -qF -- "$1"; then return 0; fi
+        sleep 0.05
+        i=$((i + 1))
+    done
+    echo "# timed out waiting for: $1"
+    show
+    return 1
+}
+# Poll for a file to appear.
+wait_file() {
+    i=0
+    while [ $i -lt $(( ${2:-10} * 20 )) ]; do
+        [ -s "$1" ] && return 0
+        sleep 0.05
+        i=$((i + 1))
+    done
+    return 1
+}
+keys() { $T send-keys -t "$S" "$@"; }
+# The value after a label on the overview screen.
+t5() { screen | sed -n 's/^Outer ring (5) *\([-0-9.]*\).*/\1/p'; }
+ptot() { screen | sed -n 's/.*Total *\([-0-9.]*\) .*/\1/p'; }
+# Start the TUI in a fresh session: $1 = environment prefix, $2 = exit file.
+start() {
+    S=$2
+    $T new-session -d -s "$S" -x 80 -y 24 \
+        "cd '$TMP' && $1 '$ACBB' tui copy.ini; rc=\$?; stty -a > '$TMP/stty.$2'; echo EXIT=\$rc > '$TMP/$2'; echo EXIT=\$rc; sleep 60"
+}
+# The index of a preset key in the editor (schema order, as `acbb keys` lists it).
+field_index() {
+    "$ACBB" keys | grep '^[a-z_]*\.[A-Za-z0-9_]* =' | grep -n "^$1 =" | cut -d: -f1 | awk '{print $1 - 1}'
+}
+goto_field() {
+    keys Home
+    i=0
+    idx=$(field_index "$1")
+    while [ "$i" -lt "$idx" ]; do keys j; i=$((i + 1)); done
+}
+tty_restored() { grep -qw icanon "$1" && grep -qw echo "$1"; }
+
+cp "$ROOT/presets/7008C.ini" "$TMP/copy.ini"
+cp "$ROOT/presets/7008C.ini" "$TMP/orig.ini"
+JSON=$("$ACBB" run "$TMP/copy.ini" --json)
+WANT_T5=$(printf '%.2f' "$(printf '%s' "$JSON" | jq -r '.temperature_C.outer_ring')")
+WANT_P=$(printf '%.2f' "$(printf '%s' "$JSON" | jq -r '.losses_W.total')")
+
+# ---- session 1: run, watch, resize, edit, save, export, quit ----
+start "" exit1
+wait_for "copy.ini" && wait_for "ready"
+ok $? "TUI opens the preset (title shows copy.ini, solver ready)"
+
+for i in 1 2 3 4 5; do keys -; done # flat out -> 50 steps/s
+wait_for "pace 50/s"
+ok $? "pace control: five '-' give 50 steps/s"
+keys r
+wait_for "running" 5
+a_t=$(t5); a_p=$(ptot)
+i=0
+while [ $i -lt 100 ] && [ "$(t5)" = "$a_t" ]; do sleep 0.05; i=$((i + 1)); done
+b_t=$(t5); b_p=$(ptot)
+[ -n "$a_t" ] && [ -n "$b_t" ] && [ "$a_t" != "$b_t" ]
+ok $? "outer-ring temperature changes during the run ($a_t -> $b_t)"
+[ -n "$a_p" ] && [ -n "$b_p" ] && [ "$a_p" != "$b_p" ]
+ok $? "total loss changes during the run ($a_p -> $b_p)"
+
+$T resize-window -t "$S" -x 100 -y 30
+wait_for "running"
+w=$(screen | head -1 | awk '{print length($0)}')
+[ "${w:-0}" -ge 95 ] && [ "$(screen | wc -l)" -eq 30 ]
+ok $? "resize to 100x30 mid-run relayouts (title $w wide, 30 rows)"
+$T resize-window -t "$S" -x 40 -y 10
+wait_for "terminal too small"
+ok $? "40x10 shows 'terminal too small'"
+$T resize-window -t "$S" -x 80 -y 24
+wait_for "Outer ring (5)"
+[ ! -e "$TMP/exit1" ]
+ok $? "back to 80x24, still running (no crash)"
+
+keys + + + + +
+wait_for "converged" 60
+ok $? "run reaches steady state"
+[ "$(t5)" = "$WANT_T5" ]
+ok $? "steady outer-ring temperature $(t5) = CLI --json $WANT_T5"
+[ "$(ptot)" = "$WANT_P" ]
+ok $? "steady total loss $(ptot) = CLI --json $WANT_P"
+
+# Editor: a bad value is refused and never reaches the file.
+keys 5
+wait_for "ball_diameter_mm"
+goto_field bearing.ball_diameter_mm
+keys Enter C-u -3 Enter
+wait_for "must be > 0"
+ok $? "ball_diameter_mm = -3 refused with the engine's message"
+screen | grep -q "ball_diameter_mm *6.35"
+ok $? "refused value not applied (6.35 still shown)"
+! screen | head -1 | grep -qF "copy.ini*"
+ok $? "a refused value does not mark the scene modified"
+cmp -s "$TMP/copy.ini" "$TMP/orig.ini"
+ok $? "preset file unchanged after the refusal"
+
+# A valid edit, saved and reloadable.
+goto_field operating.axial_load_N
+keys Enter C-u 750 Enter
+wait_for "copy.ini*"
+ok $? "a valid edit marks the scene modified"
+keys w
+wait_for "saved"
+grep -q '^axial_load_N = 750$' "$TMP/copy.ini"
+ok $? "saved file has axial_load_N = 750"
+"$ACBB" check "$TMP/copy.ini" >/dev/null 2>&1
+ok $? "saved file passes acbb check"
+
+# Unsaved edits make q ask; undo back to the file clears the marker.
+keys Enter C-u 800 Enter
+wait_for "copy.ini*"
+keys q
+wait_for "Quit anyway?"
+ok $? "q with unsaved edits asks"
+keys n u
+wait_for "undone"
+! screen | head -1 | grep -qF "copy.ini*"
+ok $? "undo back to the saved file clears the marker"
+
+# Plot export with gnuplot.
+keys g
+wait_for "wrote 8 plots" 60
+ok $? "g exports 8 plots"
+[ "$(head -c 8 "$TMP/acbb-plots/temperature.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]
+ok $? "temperature.png is a PNG (magic bytes)"
+grep -q "<svg" "$TMP/acbb-plots/losses.svg"
+ok $? "losses.svg is an SVG"
+
+keys q
+wait_file "$TMP/exit1" 10
+[ "$(cat "$TMP/exit1" 2>/dev/null)" = "EXIT=0" ]
+ok $? "q quits with exit status 0"
+tty_restored "$TMP/stty.exit1"
+ok $? "terminal restored after q (icanon echo)"
+
+# ---- session 2: NO_COLOR, ASCII locale, gnuplot absent from PATH, Ctrl-C ----
+start "env -u ACBB_GNUPLOT NO_COLOR=1 LC_ALL=C PATH=/nonexistent" exit2
+wait_for "copy.ini" && wait_for "ready"
+ok $? "NO_COLOR, C locale: TUI starts"
+keys 4 r
+wait_for "converged" 60
+! screen | LC_ALL=C grep -q '[^ -~]'
+ok $? "C locale: the charts use the ASCII fallback only"
+keys g
+wait_for "plot export failed" 30
+ok $? "export without gnuplot shows an error on screen"
+screen | grep -qi "gnuplot"
+ok $? "the error names gnuplot"
+keys 2
+wait_for "46 nodes"
+ok $? "TUI keeps running after the failed export"
+keys C-c
+wait_file "$TMP/exit2" 10
+[ "$(cat "$TMP/exit2" 2>/dev/null)" = "EXIT=0" ]
+ok $? "Ctrl-C quits with exit status 0"
+tty_restored "$TMP/stty.exit2"
+ok $? "terminal restored after Ctrl-C"
+
+# ---- session 3: SIGTERM restores the terminal ----
+start "" exit3
+wait_for "ready"
+pane=$($T display -p -t "$S" '#{pane_pid}')
+pid=$(ps -o pid= --ppid "$pane" | head -1 | tr -d ' ')
+[ -n "$pid" ] && kill -TERM "$pid"
+wait_file "$TMP/exit3" 10
+[ "$(cat "$TMP/exit3" 2>/dev/null)" = "EXIT=143" ]
+ok $? "SIGTERM: exit status 143"
+tty_restored "$TMP/stty.exit3"
+ok $? "terminal restored after SIGTERM"
+wait_for "EXIT=143" && ! screen | grep -q "1 Run"
+ok $? "SIGTERM: the shell's screen is back (alternate screen left)"
+
+echo "1..$n"
+[ "$failed" -eq 0 ]

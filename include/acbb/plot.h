@@ -14,6 +14,7 @@
 #define ACBB_PLOT_H
 
 #include <stddef.h>
+#include "acbb/accuracy.h"
 #include "acbb/history.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
@@ -54,6 +55,17 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
 /* Check a plot size before doing the work that feeds the plot: pixels for
  * PNG/SVG, characters for dumb. ACBB_OK or ACBB_EINVAL with the range. */
 acbb_status acbb_plot_check_size(acbb_plot_format fmt, int width, int height, acbb_error *err);
+
+/* The accuracy-versus-time plot of `acbb bench accuracy`
+ * (include/acbb/accuracy.h): x = median wall time (ms), y = max(e_loss, e_T)
+ * in %, both log scale; one point set per knob, each point labelled with its
+ * value; a dashed line at ACBB_ACCURACY_FRONTIER_TOL. Errors below
+ * 1e-10 % (the references' exact 0 among them) are drawn at 1e-10 %, which
+ * the y label says. Rows that failed or were skipped are left out.
+ * PNG or SVG as acbb_plot_file; ACBB_EINVAL if no row can be drawn. */
+acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
+                                    acbb_plot_format fmt, const char *path, int width,
+                                    int height, const char *title, acbb_error *err);
 
 /* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
 const char *acbb_plot_program(void);

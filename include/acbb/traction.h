@@ -26,6 +26,7 @@ typedef struct {
     double rm;              /* orbit radius, m */
     double H;               /* film thickness, m */
     double phi_a, phi_f;    /* load shares */
+    double s_reg;           /* slip regularisation, m/s (1e-6 unless a solver continues in it) */
     double *P;              /* 3 np: point positions from the ball centre */
     double *w;              /* np: area weights dA */
     double *p;              /* np: Hertz pressure */

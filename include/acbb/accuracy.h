@@ -1,0 +1,130 @@
+/* acbb — what accuracy costs in time (DESIGN.md "Fidelity and effects").
+ *
+ * Every [fidelity] knob is varied one at a time around the base scene's
+ * values; each setting is run to thermal steady state (acbb_sim_new,
+ * acbb_sim_run, acbb_sim_snapshot) `repeats` times and the median wall time
+ * (CLOCK_MONOTONIC around new + run + free, snapshot copy excluded) is kept
+ * together with the results and their relative errors against the knob's
+ * reference setting:
+ *
+ *   knob            settings (preset units)             reference
+ *   model           static, quasi-static, quasi-dynamic  highest level
+ *                   (+ dynamic if acbb_sim_new takes it) acbb_sim_new accepts
+ *   contact_grid    4 6 8 12 16 24 32 48 64              64
+ *   hertz           hb83 bh77 exact                      exact
+ *   mech_tol        1e-4 1e-6 1e-8 1e-10 1e-12           1e-12
+ *   steady_tol      steady_tol_K_s 1e-2 1e-3 1e-4 1e-5  1e-5
+ *   thermal         time_step_s 1 5 30 (each with        transient, 1 s
+ *                   thermal_mode = transient), and
+ *                   thermal_mode = steady
+ *   network         7 46                                 46
+ *
+ * Relative error of a quantity x: |x - x_ref| / |x_ref|. The temperature
+ * error is that of the outer-ring temperature RISE above ambient
+ * (T_outer_ring - ambient_C), not of the Celsius value. The ball quantities
+ * are those of ball 0 at its inner contact. An error is NaN when it is not
+ * defined: the row or its reference did not converge, or x_ref == 0 while
+ * x != 0 (clients print NaN as "-").
+ *
+ * The engine never prints; acbb_accuracy_run reports progress through an
+ * optional callback (the TUI's progress bar, the CLI's stderr ticker).
+ *
+ * Ownership: the caller owns every buffer passed in (the base scene is read
+ * only, rows are written in place); nothing is allocated that outlives a
+ * call. Rows are plain values. Not thread-safe per call, but calls share no
+ * state, so several may run on different threads. */
+#ifndef ACBB_ACCURACY_H
+#define ACBB_ACCURACY_H
+
+#include <stddef.h>
+#include "acbb/scene.h"
+#include "acbb/status.h"
+
+typedef enum {
+    ACBB_KNOB_MODEL,
+    ACBB_KNOB_CONTACT_GRID,
+    ACBB_KNOB_HERTZ,
+    ACBB_KNOB_MECH_TOL,
+    ACBB_KNOB_STEADY_TOL,
+    ACBB_KNOB_THERMAL,       /* time_step_s and thermal_mode together */
+    ACBB_KNOB_NETWORK,
+    ACBB_KNOB_COUNT
+} acbb_accuracy_knob;
+
+/* Knob masks for acbb_accuracy_options.knobs: bit (1u << knob). */
+#define ACBB_ACCURACY_KNOB_BIT(k) (1u << (unsigned)(k))
+#define ACBB_ACCURACY_ALL_KNOBS ((1u << (unsigned)ACBB_KNOB_COUNT) - 1u)
+/* Model-level masks for acbb_accuracy_options.model_levels. */
+#define ACBB_ACCURACY_LEVEL_BIT(m) (1u << (unsigned)(m))
+#define ACBB_ACCURACY_ALL_LEVELS (ACBB_ACCURACY_LEVEL_BIT(ACBB_MODEL_DYNAMIC + 1) - 1u)
+
+#define ACBB_ACCURACY_DEFAULT_REPEATS 3
+#define ACBB_ACCURACY_MAX_REPEATS 1000
+
+/* What to run. A zero-initialised struct (or NULL) means: every knob, every
+ * model level, ACBB_ACCURACY_DEFAULT_REPEATS runs per setting. */
+typedef struct {
+    unsigned knobs;          /* ACBB_ACCURACY_KNOB_BIT mask; 0 = all */
+    unsigned model_levels;   /* levels the model knob tries (ACBB_ACCURACY_LEVEL_BIT
+                                mask); 0 = all. The reference is the highest one
+                                of them that acbb_sim_new accepts. */
+    int repeats;             /* runs per setting, 1..ACBB_ACCURACY_MAX_REPEATS; 0 = default */
+} acbb_accuracy_options;
+
+/* The frontier's tolerance on total loss and outer-ring temperature rise. */
+#define ACBB_ACCURACY_FRONTIER_TOL 0.01
+
+typedef struct {
+    acbb_accuracy_knob knob;
+    char key[48];            /* "fidelity.contact_grid" (the key shown) */
+    char value[32];          /* "16", preset units */
+    int is_reference;        /* 1: this knob's reference setting */
+    int is_default;          /* 1: every scene field equals the base scene's */
+    int skipped;             /* 1: level not available (model = dynamic); no run */
+    acbb_status status;      /* ACBB_OK = converged; else the failure */
+    char message[512];       /* why it failed or was skipped; "" if converged */
+    long iterations;         /* coupled steps of the (first) run */
+    double wall_ms;          /* median over the repeats (NaN if never run) */
+    /* Results of the first run; NaN when status != ACBB_OK. */
+    double loss;             /* total loss, W */
+    double dT_outer;         /* outer-ring temperature rise above ambient, K */
+    double Qi;               /* ball 0 inner contact load, N */
+    double alpha_i;          /* ball 0 inner contact angle, rad */
+    double slide_i;          /* ball 0 inner sliding speed, m/s */
+    double e_loss, e_T, e_Qi, e_alpha, e_slide; /* relative errors, NaN if undefined */
+} acbb_accuracy_row;
+
+typedef void (*acbb_accuracy_progress)(void *ctx, size_t done, size_t total);
+
+/* Name of a knob ("model", "contact_grid", ..., "thermal", "network") and
+ * its inverse (-1 if unknown). */
+const char *acbb_accuracy_knob_name(acbb_accuracy_knob k);
+int acbb_accuracy_knob_from_name(const char *name);
+
+/* Number of rows acbb_accuracy_run writes for `opt` (NULL = defaults;
+ * levels that turn out to be unavailable are included, as skipped rows). */
+size_t acbb_accuracy_plan_size(const acbb_accuracy_options *opt);
+
+/* Run the plan of `opt` (NULL = defaults) on `base`. Rows are grouped by
+ * knob in enum order, settings cheapest-first as in the table above.
+ * `progress(ctx, done, total)` is called after each row if non-NULL.
+ * Returns ACBB_OK when the plan ran (individual settings may have failed:
+ * see row.status); ACBB_EINVAL for a bad option, cap too small, or an
+ * invalid base scene (message in err); nothing is run then and *n = 0. */
+acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_options *opt,
+                              acbb_accuracy_row *rows, size_t cap, size_t *n,
+                              acbb_accuracy_progress progress, void *ctx,
+                              acbb_error *err);
+
+/* The frontier: for each knob present in rows, the converged setting with
+ * the smallest wall time whose e_loss and e_T are both <= tol (the
+ * reference itself qualifies with zero errors). picks[k] is the row index
+ * for knob k, or -1 when the knob is absent or its reference failed.
+ * `picks` must hold ACBB_KNOB_COUNT entries. */
+void acbb_accuracy_frontier(const acbb_accuracy_row *rows, size_t n, double tol,
+                            long picks[ACBB_KNOB_COUNT]);
+
+/* Index of knob k's reference row, or -1. */
+long acbb_accuracy_reference(const acbb_accuracy_row *rows, size_t n, acbb_accuracy_knob k);
+
+#endif

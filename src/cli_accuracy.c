@@ -1,0 +1,441 @@
+/* acbb CLI — `acbb bench accuracy` (see cli_accuracy.h).
+ *
+ * A thin client of include/acbb/accuracy.h: load the preset, apply --set
+ * edits, run the plan, print the table and the frontier, write CSV and the
+ * plot. Arguments are parsed by hand like src/cli.c (a handful of options;
+ * no user text reaches a shell: the plot module spawns gnuplot directly).
+ * The locale is never set, so numbers always use a decimal point. */
+#include <errno.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/accuracy.h"
+#include "acbb/plot.h"
+#include "acbb/scene.h"
+#include "cli_accuracy.h"
+
+enum { ACC_EXIT_OK = 0, ACC_EXIT_INPUT = 2, ACC_EXIT_SOLVER = 3, ACC_EXIT_INTERNAL = 4 };
+
+#define ACC_PLOT_W 1000
+#define ACC_PLOT_H 650
+
+static const char acc_usage[] =
+    "usage: acbb bench accuracy PRESET [--set section.key=value]... [--repeat N]\n"
+    "         [--knobs k1,k2,...] [--models m1,m2,...] [--csv FILE]\n"
+    "         [--plot FILE.png|FILE.svg]\n"
+    "knobs: model contact_grid hertz mech_tol steady_tol thermal network\n"
+    "models: static quasi-static quasi-dynamic dynamic\n";
+
+typedef struct {
+    const char *preset;
+    const char **sets;
+    size_t n_sets;
+    long repeat;
+    unsigned knobs;      /* 0 = all */
+    unsigned models;     /* 0 = all */
+    const char *csv;
+    const char *plot;
+} acc_args;
+
+static int bad_usage(const char *what, const char *arg)
+{
+    fprintf(stderr, "acbb: bench accuracy: %s%s\n%s", what, arg ? arg : "", acc_usage);
+    return ACC_EXIT_INPUT;
+}
+
+/* ---- arguments ---- */
+
+static int parse_repeat(const char *text, long *out)
+{
+    char *end = NULL;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (errno || end == text || *end || v < 1 || v > ACBB_ACCURACY_MAX_REPEATS)
+        return bad_usage("--repeat expects a whole number 1..1000, got ", text);
+    *out = v;
+    return 0;
+}
+
+/* acbb_model_level from its scene name ("quasi-static"), or -1. */
+static int model_from_name(const char *name)
+{
+    for (int m = ACBB_MODEL_STATIC; m <= ACBB_MODEL_DYNAMIC; m++)
+        if (strcmp(acbb_model_level_name((acbb_model_level)m), name) == 0) return m;
+    return -1;
+}
+
+/* "contact_grid,hertz" -> bit mask (1 << lookup(name)); every name must
+ * be known to `lookup`. */
+static int parse_list(const char *opt, const char *text, int (*lookup)(const char *),
+                      unsigned *mask)
+{
+    char buf[256];
+    if (strlen(text) >= sizeof buf) return bad_usage("list too long: ", text);
+    strcpy(buf, text);
+    *mask = 0;
+    for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok;
+         tok = strtok_r(NULL, ",", &save)) {
+        int k = lookup(tok);
+        if (k < 0) {
+            fprintf(stderr, "acbb: bench accuracy: %s: unknown name '%s'\n%s", opt, tok,
+                    acc_usage);
+            return ACC_EXIT_INPUT;
+        }
+        *mask |= 1u << (unsigned)k;
+    }
+    if (*mask == 0) return bad_usage("empty list: ", text);
+    return 0;
+}
+
+/* `--name value` or `--name=value` at argv[*i]; NULL (message printed) if
+ * the value is missing. */
+static const char *option_value(const char *arg, size_t len, int argc, char **argv, int *i)
+{
+    if (arg[len] == '=') return arg + len + 1;
+    if (*i + 1 < argc) return argv[++*i];
+    bad_usage("option needs a value: ", arg);
+    return NULL;
+}
+
+static int parse_option(acc_args *a, int argc, char **argv, int *i)
+{
+    static const char *const names[] = { "--set", "--repeat", "--knobs", "--models", "--csv",
+                                         "--plot" };
+    const char *arg = argv[*i];
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+        size_t len = strlen(names[k]);
+        if (strncmp(arg, names[k], len) != 0 || (arg[len] != '\0' && arg[len] != '='))
+            continue;
+        const char *v = option_value(arg, len, argc, argv, i);
+        if (!v) return ACC_EXIT_INPUT;
+        switch (k) {
+        case 0: a->sets[a->n_sets++] = v; return 0;
+        case 1: return parse_repeat(v, &a->repeat);
+        case 2: return parse_list("--knobs", v, acbb_accuracy_knob_from_name, &a->knobs);
+        case 3: return parse_list("--models", v, model_from_name, &a->models);
+        case 4: a->csv = v; return 0;
+        default: a->plot = v; return 0;
+        }
+    }
+    return bad_usage("unknown option ", arg);
+}
+
+/* Where the arguments proper start (see cli_accuracy.h). */
+static int first_arg(int argc, char **argv)
+{
+    if (argc >= 1 && strcmp(argv[0], "accuracy") == 0) return 1;
+    if (argc >= 3 && strcmp(argv[1], "bench") == 0 && strcmp(argv[2], "accuracy") == 0)
+        return 3;
+    return 1;
+}
+
+static int parse_args(acc_args *a, int argc, char **argv)
+{
+    bool options_done = false;
+    for (int i = first_arg(argc, argv); i < argc; i++) {
+        const char *arg = argv[i];
+        if (!options_done && strcmp(arg, "--") == 0) {
+            options_done = true;
+        } else if (!options_done && arg[0] == '-' && arg[1] != '\0') {
+            int rc = parse_option(a, argc, argv, &i);
+            if (rc) return rc;
+        } else if (!a->preset) {
+            a->preset = arg;
+        } else {
+            return bad_usage("unexpected argument ", arg);
+        }
+    }
+    if (!a->preset) return bad_usage("missing PRESET", NULL);
+    if (a->plot && acbb_plot_format_from_name(a->plot) != ACBB_PLOT_PNG &&
+        acbb_plot_format_from_name(a->plot) != ACBB_PLOT_SVG)
+        return bad_usage("--plot needs a .png or .svg file name, got ", a->plot);
+    return 0;
+}
+
+/* ---- scene ---- */
+
+static int status_exit(acbb_status st)
+{
+    if (st == ACBB_ENOMEM) return ACC_EXIT_INTERNAL;
+    return (st == ACBB_EINVAL || st == ACBB_EIO || st == ACBB_ILL_POSED) ? ACC_EXIT_INPUT
+                                                                         : ACC_EXIT_SOLVER;
+}
+
+static int apply_set(acbb_scene *sc, const char *text)
+{
+    const char *eq = strchr(text, '=');
+    char key[160];
+    if (!eq || eq == text || (size_t)(eq - text) >= sizeof key) {
+        fprintf(stderr, "acbb: --set %s: expected section.key=value\n", text);
+        return ACC_EXIT_INPUT;
+    }
+    memcpy(key, text, (size_t)(eq - text));
+    key[eq - text] = '\0';
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_set(sc, key, eq + 1, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: --set %s: %s\n", text, err.msg[0] ? err.msg : acbb_status_name(st));
+        return ACC_EXIT_INPUT;
+    }
+    return 0;
+}
+
+static int load_scene(const acc_args *a, acbb_scene *sc)
+{
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_load(a->preset, sc, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return status_exit(st);
+    }
+    for (size_t i = 0; i < a->n_sets; i++) {
+        int rc = apply_set(sc, a->sets[i]);
+        if (rc) return rc;
+    }
+    return 0;
+}
+
+/* ---- formatting ---- */
+
+/* "model=static": the key without its "fidelity." section (every knob is
+ * in [fidelity], the table header says so). */
+static void setting_label(const acbb_accuracy_row *r, char *buf, size_t n)
+{
+    const char *dot = strchr(r->key, '.');
+    snprintf(buf, n, "%s=%s", dot ? dot + 1 : r->key, r->value);
+}
+
+static const char *row_status(const acbb_accuracy_row *r)
+{
+    if (r->skipped) return "skipped";
+    return r->status == ACBB_OK ? "converged" : acbb_status_name(r->status);
+}
+
+/* A relative error as a percentage in at most 6 characters; "-" when
+ * undefined (NaN is never printed). */
+static void fmt_pct(double e, char *buf, size_t n)
+{
+    double p = 100.0 * e;
+    if (!isfinite(p)) snprintf(buf, n, "-");
+    else if (p == 0.0) snprintf(buf, n, "0");
+    else if (p < 0.01) snprintf(buf, n, "%.0e", p);
+    else if (p < 1000.0) snprintf(buf, n, "%.2f", p);
+    else snprintf(buf, n, "%.0e", p);
+}
+
+static const char *mark(const acbb_accuracy_row *r)
+{
+    if (r->is_reference && r->is_default) return "RD";
+    if (r->is_reference) return "R";
+    return r->is_default ? "D" : "";
+}
+
+static void print_row(const acbb_accuracy_row *r)
+{
+    char label[96], e[5][16];
+    setting_label(r, label, sizeof label);
+    const double errs[5] = { r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide };
+    for (int k = 0; k < 5; k++) fmt_pct(errs[k], e[k], sizeof e[k]);
+    char ms[16];
+    if (isfinite(r->wall_ms)) snprintf(ms, sizeof ms, "%7.1f", r->wall_ms);
+    else snprintf(ms, sizeof ms, "%7s", "-");
+    printf("%-19s %-2s %-13s %s %6s %6s %6s %6s %6s\n", label, mark(r), row_status(r), ms,
+           e[0], e[1], e[2], e[3], e[4]);
+}
+
+static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t n)
+{
+    printf("acbb bench accuracy %s (median wall time of %ld run%s per setting)\n",
+           a->preset, a->repeat, a->repeat == 1 ? "" : "s");
+    puts("One [fidelity] knob at a time around the preset. R: the knob's reference\n"
+         "(finest value; model: highest level available), D: the preset's value.\n"
+         "Errors in % are |x - x_ref| / |x_ref| against the knob's reference: total\n"
+         "loss, outer-ring temperature RISE above ambient (T), and for ball 0 at its\n"
+         "inner contact the load Qi, angle alpha and sliding speed slide.\n");
+    printf("%-19s %-2s %-13s %7s %6s %6s %6s %6s %6s\n", "setting", "", "status", "ms",
+           "loss%", "T%", "Qi%", "alpha%", "slide%");
+    acbb_accuracy_knob last = ACBB_KNOB_COUNT;
+    for (size_t i = 0; i < n; i++) {
+        if (rows[i].skipped) continue;
+        if (last != ACBB_KNOB_COUNT && rows[i].knob != last) putchar('\n');
+        last = rows[i].knob;
+        print_row(&rows[i]);
+    }
+}
+
+static void print_notes(const acbb_accuracy_row *rows, size_t n)
+{
+    bool any = false;
+    for (size_t i = 0; i < n; i++) {
+        if (rows[i].status == ACBB_OK) continue;
+        char label[96];
+        setting_label(&rows[i], label, sizeof label);
+        if (!any) putchar('\n');
+        any = true;
+        if (rows[i].skipped)
+            printf("note: %s skipped, not available: %s\n", label, rows[i].message);
+        else
+            printf("note: %s %s: %s\n", label, row_status(&rows[i]), rows[i].message);
+    }
+}
+
+static void print_frontier(const acbb_accuracy_row *rows, size_t n)
+{
+    long picks[ACBB_KNOB_COUNT];
+    acbb_accuracy_frontier(rows, n, ACBB_ACCURACY_FRONTIER_TOL, picks);
+    printf("\nfrontier: the cheapest setting within %g %% of its reference on loss and T\n",
+           100.0 * ACBB_ACCURACY_FRONTIER_TOL);
+    printf("%-12s %-19s %7s %6s %6s  %s\n", "knob", "choice", "ms", "loss%", "T%",
+           "vs reference");
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
+        long ref = acbb_accuracy_reference(rows, n, (acbb_accuracy_knob)k);
+        bool present = false;
+        for (size_t i = 0; i < n; i++) present = present || rows[i].knob == (acbb_accuracy_knob)k;
+        if (!present) continue;
+        const char *name = acbb_accuracy_knob_name((acbb_accuracy_knob)k);
+        if (picks[k] < 0) {
+            printf("%-12s %s\n", name, "- (the reference did not converge)");
+            continue;
+        }
+        const acbb_accuracy_row *r = &rows[picks[k]];
+        char label[96], el[16], eT[16], vs[64];
+        setting_label(r, label, sizeof label);
+        fmt_pct(r->e_loss, el, sizeof el);
+        fmt_pct(r->e_T, eT, sizeof eT);
+        if (picks[k] == ref)
+            snprintf(vs, sizeof vs, "the reference itself");
+        else
+            snprintf(vs, sizeof vs, "%.2fx faster", rows[ref].wall_ms / r->wall_ms);
+        printf("%-12s %-19s %7.1f %6s %6s  %s\n", name, label, r->wall_ms, el, eT, vs);
+    }
+}
+
+/* ---- CSV ---- */
+
+static void csv_num(FILE *f, double x)
+{
+    if (isfinite(x)) fprintf(f, ",%.10g", x);
+    else fputc(',', f);
+}
+
+static void csv_rows(FILE *f, const acbb_accuracy_row *rows, size_t n)
+{
+    fputs("knob,key,value,is_reference,is_default,status,iterations,wall_ms,loss_W,"
+          "dT_outer_K,Qi_N,alpha_i_rad,slide_i_m_s,e_loss,e_T,e_Qi,e_alpha,e_slide\n", f);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_accuracy_row *r = &rows[i];
+        fprintf(f, "%s,%s,%s,%d,%d,%s,%ld", acbb_accuracy_knob_name(r->knob), r->key, r->value,
+                r->is_reference, r->is_default, row_status(r), r->iterations);
+        const double v[] = { r->wall_ms, r->loss, r->dT_outer, r->Qi, r->alpha_i, r->slide_i,
+                             r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide };
+        for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) csv_num(f, v[k]);
+        fputc('\n', f);
+    }
+}
+
+/* FILE.tmp, fsync, rename: a reader never sees a half-written file. */
+static int write_csv(const char *path, const acbb_accuracy_row *rows, size_t n)
+{
+    size_t len = strlen(path) + 5;
+    char *tmp = malloc(len);
+    if (!tmp) return ACC_EXIT_INTERNAL;
+    snprintf(tmp, len, "%s.tmp", path);
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        fprintf(stderr, "acbb: cannot create %s: %s\n", tmp, strerror(errno));
+        free(tmp);
+        return ACC_EXIT_INPUT;
+    }
+    csv_rows(f, rows, n);
+    bool bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
+    bad = (fclose(f) != 0) || bad;
+    int rc = 0;
+    if (bad || rename(tmp, path) != 0) {
+        fprintf(stderr, "acbb: cannot write %s: %s\n", path, strerror(errno));
+        remove(tmp);
+        rc = ACC_EXIT_INPUT;
+    }
+    free(tmp);
+    return rc;
+}
+
+/* ---- plot ---- */
+
+/* gnuplot missing or failing costs only the picture: the table is already
+ * on stdout. */
+static int write_plot(const char *path, const char *preset, const acbb_accuracy_row *rows,
+                      size_t n)
+{
+    acbb_error err = { { 0 } };
+    acbb_plot_format fmt = (acbb_plot_format)acbb_plot_format_from_name(path);
+    acbb_status st = acbb_plot_accuracy_file(rows, n, fmt, path, ACC_PLOT_W, ACC_PLOT_H, preset,
+                                             &err);
+    if (st == ACBB_OK) return 0;
+    fprintf(stderr, "acbb: %s — plot not written\n", err.msg[0] ? err.msg : acbb_status_name(st));
+    return ACC_EXIT_INTERNAL;
+}
+
+/* ---- main ---- */
+
+static void progress_tick(void *ctx, size_t done, size_t total)
+{
+    (void)ctx;
+    fprintf(stderr, "\racbb: bench accuracy: %zu/%zu settings", done, total);
+    if (done == total) fputs("\r\033[K", stderr);
+    fflush(stderr);
+}
+
+static int any_failed(const acbb_accuracy_row *rows, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!rows[i].skipped && rows[i].status != ACBB_OK) return 1;
+    return 0;
+}
+
+static int worst(int a, int b) { return a > b ? a : b; }
+
+static int run_bench(const acc_args *a, const acbb_scene *base)
+{
+    acbb_accuracy_options opt = { .knobs = a->knobs, .model_levels = a->models,
+                                  .repeats = (int)a->repeat };
+    size_t cap = acbb_accuracy_plan_size(&opt), n = 0;
+    acbb_accuracy_row *rows = calloc(cap, sizeof *rows);
+    if (!rows) return ACC_EXIT_INTERNAL;
+    acbb_error err = { { 0 } };
+    acbb_accuracy_progress tick = isatty(STDERR_FILENO) ? progress_tick : NULL;
+    acbb_status st = acbb_accuracy_run(base, &opt, rows, cap, &n, tick, NULL, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        free(rows);
+        return status_exit(st);
+    }
+    print_table(a, rows, n);
+    print_notes(rows, n);
+    print_frontier(rows, n);
+    int rc = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "acbb: cannot write to stdout\n");
+        rc = ACC_EXIT_INTERNAL;
+    }
+    if (a->csv) rc = worst(rc, write_csv(a->csv, rows, n));
+    if (a->plot) rc = worst(rc, write_plot(a->plot, a->preset, rows, n));
+    if (any_failed(rows, n)) rc = worst(rc, ACC_EXIT_SOLVER);
+    free(rows);
+    return rc;
+}
+
+int acbb_cli_bench_accuracy(int argc, char **argv)
+{
+    const char **sets = calloc((size_t)(argc > 0 ? argc : 1), sizeof *sets);
+    if (!sets) return ACC_EXIT_INTERNAL;
+    acc_args a = { .sets = sets, .repeat = ACBB_ACCURACY_DEFAULT_REPEATS };
+    int rc = parse_args(&a, argc, argv);
+    acbb_scene base;
+    if (!rc) rc = load_scene(&a, &base);
+    if (!rc) rc = run_bench(&a, &base);
+    free(sets);
+    return rc;
+}

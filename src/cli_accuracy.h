@@ -1,0 +1,34 @@
+/* acbb CLI — `acbb bench accuracy`: what accuracy costs in time, on top of
+ * the engine's accuracy module (include/acbb/accuracy.h). Private to the
+ * executable (src/cli.c dispatches `bench accuracy` here).
+ *
+ *   acbb bench accuracy PRESET [--set section.key=value]... [--repeat N]
+ *        [--knobs k1,k2,...] [--models m1,m2,...] [--csv FILE]
+ *        [--plot FILE.png|FILE.svg]
+ *
+ * stdout: a table (80 columns) of every setting with its status, median wall
+ * time and relative errors in % against its knob's reference, notes for
+ * failed or skipped settings, then the frontier: per knob the cheapest
+ * setting within 1 % of the reference on total loss and outer-ring
+ * temperature rise. --repeat defaults to 3 (1..1000); --knobs picks a subset
+ * of model, contact_grid, hertz, mech_tol, steady_tol, thermal, network;
+ * --models the model levels tried (static, quasi-static, quasi-dynamic,
+ * dynamic; default all that acbb_sim_new accepts — dynamic can be slow).
+ * --csv writes one row per setting (errors as fractions, %.10g, empty field
+ * for an undefined number) to FILE.tmp and renames it over FILE. --plot
+ * draws error vs wall time (log-log, one point set per knob) with gnuplot.
+ *
+ * Exit status: 0 every setting converged; 2 bad input (preset, --set,
+ * options, CSV file); 3 some setting did not converge (the table shows it);
+ * 4 the plot could not be made (gnuplot missing or failed; the table is
+ * still printed) or stdout failed. The worst applicable one is returned. */
+#ifndef ACBB_CLI_ACCURACY_H
+#define ACBB_CLI_ACCURACY_H
+
+/* argv[0] is "accuracy": call as acbb_cli_bench_accuracy(argc - 2, argv + 2)
+ * from main's argv ("acbb", "bench", "accuracy", PRESET, ...). Passing
+ * main's argc/argv unchanged also works: a leading "bench" "accuracy" pair
+ * after the program name is recognised and skipped. Returns the exit status. */
+int acbb_cli_bench_accuracy(int argc, char **argv);
+
+#endif

@@ -1,0 +1,116 @@
+#!/bin/sh
+# End-to-end test of `acbb report` (TAP). $1 = path of the acbb binary;
+# cwd = repository root. Needs jq. Checks the report's bookkeeping (every
+# MODEL.md section 12 item exactly once, counts that add up, JSON that
+# agrees with the table), that the sanity item 18 holds, that item 1's
+# numbers are the ones `acbb run` gives for the same operating points, the
+# Markdown file, and the exit status of bad input.
+set -u
+
+ACBB=${1:?usage: test_report.sh path/to/acbb}
+PRESET=presets/7008C.ini
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-report.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+
+n=0
+failed=0
+t() {
+    n=$((n + 1))
+    if [ "$1" -eq 0 ]; then
+        echo "ok $n - $2"
+    else
+        echo "not ok $n - $2"
+        failed=$((failed + 1))
+    fi
+}
+code() {
+    [ "$1" -eq "$2" ]
+    t $? "$3 (exit $1, want $2)"
+    [ "$1" -eq "$2" ] || sed 's/^/# /' "$TMP/err" 2>/dev/null | head -5
+}
+
+# ---- the text report ----
+"$ACBB" report "$PRESET" --md "$TMP/SEED.md" >"$TMP/out.txt" 2>"$TMP/err"
+code $? 0 "report $PRESET runs"
+
+# Item lines: "%3d  VERDICT ..." (checks and conclusions are formatted otherwise).
+grep -E '^ {0,2}[0-9]{1,2}  (HELD|NOT HELD|NOT EVALUATED) ' "$TMP/out.txt" >"$TMP/items.txt"
+awk '{print $1}' "$TMP/items.txt" >"$TMP/nums.txt"
+seq 1 18 >"$TMP/want.txt"
+cmp -s "$TMP/nums.txt" "$TMP/want.txt"
+t $? "items 1..18 each appear exactly once, in order, with a verdict"
+[ "$(wc -l <"$TMP/items.txt")" -eq 18 ]
+t $? "exactly 18 item lines"
+
+held=$(grep -c -E '^ {0,2}[0-9]{1,2}  HELD ' "$TMP/items.txt")
+nheld=$(grep -c -E '^ {0,2}[0-9]{1,2}  NOT HELD ' "$TMP/items.txt")
+ne=$(grep -c -E '^ {0,2}[0-9]{1,2}  NOT EVALUATED ' "$TMP/items.txt")
+summary=$(grep -E '^[0-9]+ held, [0-9]+ not held, [0-9]+ not evaluated$' "$TMP/out.txt")
+[ -n "$summary" ]
+t $? "summary line present: $summary"
+set -- $(echo "$summary" | sed -E 's/^([0-9]+) held, ([0-9]+) not held, ([0-9]+) not evaluated$/\1 \2 \3/')
+[ "${1:-x}" = "$held" ] && [ "${2:-x}" = "$nheld" ] && [ "${3:-x}" = "$ne" ]
+t $? "summary counts match the item verdicts ($held/$nheld/$ne)"
+[ $((${1:-0} + ${2:-0} + ${3:-0})) -eq 18 ]
+t $? "summary counts add up to 18"
+
+grep -q -E '^ 18  HELD ' "$TMP/items.txt"
+t $? "item 18 (sanity: zero speed, energy balance, closed form, losses >= 0, BE) is HELD"
+
+awk 'length > 80 { bad = 1 } END { exit bad }' "$TMP/out.txt"
+t $? "the text report fits 80 columns"
+
+# ---- Markdown ----
+[ -s "$TMP/SEED.md" ] && grep -q '^# Seed report' "$TMP/SEED.md"
+t $? "--md writes the Markdown report"
+grep -q -F "**$held held, $nheld not held, $ne not evaluated** (of 18)." "$TMP/SEED.md"
+t $? "Markdown summary equals the text summary"
+[ "$(grep -c -E '^\| [0-9]+ \| (HELD|NOT HELD|NOT EVALUATED) \|' "$TMP/SEED.md")" -eq 18 ]
+t $? "Markdown table has 18 item rows"
+[ -z "$(find "$TMP" -name 'SEED.md.tmp*')" ]
+t $? "no temporary Markdown file left behind"
+
+# ---- JSON ----
+"$ACBB" report "$PRESET" --json >"$TMP/out.json" 2>"$TMP/err"
+code $? 0 "report --json runs"
+jq -e 'type == "array" and length == 18 and ([.[].item] == [range(1; 19)])' "$TMP/out.json" >/dev/null 2>&1
+t $? "JSON parses: an array of items 1..18"
+jq -e 'all(.[]; (.statement | length) > 0 and (.verdict == "HELD" or .verdict == "NOT HELD" or .verdict == "NOT EVALUATED") and (.evidence.checks | length) > 0)' \
+    "$TMP/out.json" >/dev/null 2>&1
+t $? "every JSON item has a statement, a verdict and checks"
+jq -r '.[] | "\(.item) \(.verdict)"' "$TMP/out.json" >"$TMP/jv.txt"
+sed -E 's/^ *([0-9]+)  (HELD|NOT HELD|NOT EVALUATED) .*/\1 \2/' "$TMP/items.txt" >"$TMP/tv.txt"
+cmp -s "$TMP/jv.txt" "$TMP/tv.txt"
+t $? "JSON verdicts agree with the text verdicts"
+
+# ---- item 1's numbers are `acbb run`'s ----
+for F in 200 1000; do
+    for M in on off; do
+        if [ "$M" = on ]; then tag=TE; else tag=WTE; fi
+        run=$("$ACBB" run "$PRESET" --set operating.inner_speed_rpm=15000 \
+              --set operating.axial_load_N=$F --set effects.thermal_expansion=$M --json |
+              jq -r '.losses_W.total')
+        rep=$(jq -r ".[0].evidence.values.P_T_${tag}_W_${F}N" "$TMP/out.json")
+        a=$(printf '%.4g' "$run" 2>/dev/null)
+        b=$(printf '%.4g' "$rep" 2>/dev/null)
+        [ -n "$a" ] && [ "$a" = "$b" ]
+        t $? "item 1 P_T at 15000 rpm, $F N, $tag: report $b W = acbb run $a W"
+    done
+done
+
+# ---- bad input ----
+"$ACBB" report "$PRESET" --set operating.axial_load_N=abc >/dev/null 2>"$TMP/err"
+code $? 2 "bad --set value exits 2"
+grep -q 'operating.axial_load_N' "$TMP/err"
+t $? "the message names the bad key"
+"$ACBB" report "$PRESET" --set nosuch.key=1 >/dev/null 2>"$TMP/err"
+code $? 2 "unknown --set key exits 2"
+"$ACBB" report >/dev/null 2>"$TMP/err"
+code $? 2 "missing preset exits 2"
+"$ACBB" report "$TMP/none.ini" >/dev/null 2>"$TMP/err"
+code $? 2 "missing preset file exits 2"
+"$ACBB" report "$PRESET" --md "$TMP/no/such/dir/x.md" >/dev/null 2>"$TMP/err"
+code $? 2 "unwritable --md path exits 2"
+
+echo "1..$n"
+[ "$failed" -eq 0 ]

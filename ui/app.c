@@ -1,0 +1,519 @@
+/* acbb TUI — the event loop (the cmus ui_curses.c idea).
+ *
+ * One select() waits on stdin, the worker's wake-up pipe and the signal
+ * self-pipe. Keys are handled at once and redrawn at once; snapshots only
+ * mark the screen stale, and a stale screen is redrawn at most every
+ * FRAME_S (about 10 Hz). Every frame copies the worker's state out once,
+ * erases stdscr, draws, and ends with one doupdate(): never clear(). */
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/select.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app.h"
+
+#define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
+#define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
+#define HANGUP_SPINS 1000    /* stdin readable but no key, this often: the tty is gone */
+
+static const int pace_ladder[] = { 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 0 };
+#define PACE_N (int)(sizeof pace_ladder / sizeof pace_ladder[0])
+
+int acbb_app_pace(int idx)
+{
+    if (idx < 0) idx = 0;
+    if (idx >= PACE_N) idx = PACE_N - 1;
+    return pace_ladder[idx];
+}
+
+static int pace_index(int steps_per_s)
+{
+    if (steps_per_s <= 0) return PACE_N - 1;
+    int best = 0;
+    for (int i = 0; i < PACE_N - 1; i++)
+        if (pace_ladder[i] <= steps_per_s) best = i;
+    return best;
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void acbb_app_msg(acbb_app *a, acbb_role role, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(a->msg, sizeof a->msg, fmt, ap);
+    va_end(ap);
+    a->msg_role = role;
+}
+
+void acbb_app_prompt(acbb_app *a, acbb_prompt_kind kind, const char *label, const char *init)
+{
+    a->mode = ACBB_MODE_PROMPT;
+    a->prompt.kind = kind;
+    snprintf(a->prompt.label, sizeof a->prompt.label, "%s", label);
+    snprintf(a->prompt.buf, sizeof a->prompt.buf, "%s", init);
+    a->prompt.len = strlen(a->prompt.buf);
+}
+
+static void open_now(acbb_app *a, const char *path)
+{
+    acbb_error err = { { 0 } };
+    if (acbb_editor_open(&a->ed, path, &err) != ACBB_OK) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
+        return;
+    }
+    a->edit_error[0] = '\0';
+    acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
+}
+
+void acbb_app_open(acbb_app *a, const char *path)
+{
+    if (a->ed.modified) {
+        a->mode = ACBB_MODE_CONFIRM;
+        a->confirm.kind = ACBB_CONFIRM_OPEN;
+        snprintf(a->confirm.path, sizeof a->confirm.path, "%s", path);
+        return;
+    }
+    open_now(a, path);
+}
+
+/* ---- commands to the worker ---- */
+
+static void post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int warm, const char *what)
+{
+    unsigned long seq = acbb_worker_post(a->worker, cmd, s, warm);
+    if (seq == 0) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "worker busy; %s not sent, try again", what);
+        return;
+    }
+    if (cmd == ACBB_CMD_START) a->start_cmd = seq;
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s", what);
+}
+
+static void pause_or_resume(acbb_app *a)
+{
+    if (a->st.phase == ACBB_WORKER_RUNNING) post(a, ACBB_CMD_PAUSE, NULL, 0, "paused");
+    else if (a->st.phase == ACBB_WORKER_PAUSED) post(a, ACBB_CMD_RESUME, NULL, 0, "resumed");
+    else acbb_app_msg(a, ACBB_ROLE_WARN, "no run in progress (r starts one)");
+}
+
+static void change_pace(acbb_app *a, int dir)
+{
+    a->pace_idx += dir;
+    if (a->pace_idx < 0) a->pace_idx = 0;
+    if (a->pace_idx >= PACE_N) a->pace_idx = PACE_N - 1;
+    int p = acbb_app_pace(a->pace_idx);
+    acbb_worker_set_pace(a->worker, p);
+    if (p > 0) acbb_app_msg(a, ACBB_ROLE_NORMAL, "pace %d steps/s", p);
+    else acbb_app_msg(a, ACBB_ROLE_NORMAL, "pace: flat out");
+}
+
+static void save(acbb_app *a, const char *path)
+{
+    acbb_error err = { { 0 } };
+    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK)
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "save failed: %s", err.msg);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "saved %s", a->ed.path);
+}
+
+static void request_quit(acbb_app *a)
+{
+    if (!a->ed.modified) {
+        a->quit = 1;
+        return;
+    }
+    a->mode = ACBB_MODE_CONFIRM;
+    a->confirm.kind = ACBB_CONFIRM_QUIT;
+}
+
+static void switch_screen(acbb_app *a, int s)
+{
+    a->screen = (acbb_screen_id)((s + ACBB_SCR_COUNT) % ACBB_SCR_COUNT);
+    if (a->screen == ACBB_SCR_PLOT) a->preview[0] = '\0'; /* fresh preview on entry */
+}
+
+/* ---- keys ---- */
+
+static void global_key(acbb_app *a, int ch)
+{
+    if (ch >= '1' && ch < '1' + ACBB_SCR_COUNT) {
+        switch_screen(a, ch - '1');
+        return;
+    }
+    switch (ch) {
+    case '\t': switch_screen(a, (int)a->screen + 1); break;
+    case KEY_BTAB: switch_screen(a, (int)a->screen - 1); break;
+    case '?': a->mode = ACBB_MODE_HELP; a->help_top = 0; break;
+    case 'q': request_quit(a); break;
+    case 'r': post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started (cold, edited scene)"); break;
+    case ' ': case 'p': pause_or_resume(a); break;
+    case 'x': post(a, ACBB_CMD_STOP, NULL, 0, "stopped"); break;
+    case 'R': post(a, ACBB_CMD_RESET, NULL, 0, "reset to ambient"); break;
+    case 'a': post(a, ACBB_CMD_APPLY, &a->ed.scene, 1, "applied edits, warm restart"); break;
+    case 'A': post(a, ACBB_CMD_APPLY, &a->ed.scene, 0, "applied edits, cold restart"); break;
+    case '+': case '=': change_pace(a, +1); break;
+    case '-': change_pace(a, -1); break;
+    case 't':
+        post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
+        switch_screen(a, ACBB_SCR_COMPARE);
+        break;
+    case 'u':
+        if (acbb_editor_undo(&a->ed)) acbb_app_msg(a, ACBB_ROLE_NORMAL, "undone");
+        else acbb_app_msg(a, ACBB_ROLE_WARN, "nothing to undo");
+        a->edit_error[0] = '\0';
+        break;
+    case 'w': save(a, NULL); break;
+    case 'W': acbb_app_prompt(a, ACBB_PROMPT_SAVE_AS, "save as: ", a->ed.path); break;
+    case 'o': acbb_screen_browse_begin(a); break;
+    case 'g': acbb_screen_plot_export(a); break;
+    case 27: a->msg[0] = '\0'; break;
+    case KEY_RESIZE: break;
+    default:
+        acbb_app_msg(a, ACBB_ROLE_WARN, "unknown key (? lists every key)");
+        break;
+    }
+}
+
+static int screen_key(acbb_app *a, int ch)
+{
+    switch (a->screen) {
+    case ACBB_SCR_NODES: return acbb_screen_nodes_key(a, ch);
+    case ACBB_SCR_BALLS: return acbb_screen_balls_key(a, ch);
+    case ACBB_SCR_CHARTS: return acbb_screen_charts_key(a, ch);
+    case ACBB_SCR_EDIT: return acbb_screen_edit_key(a, ch);
+    case ACBB_SCR_COMPARE: return acbb_screen_compare_key(a, ch);
+    case ACBB_SCR_PLOT: return acbb_screen_plot_key(a, ch);
+    default: return 0;
+    }
+}
+
+static void prompt_commit(acbb_app *a)
+{
+    acbb_error err = { { 0 } };
+    const char *text = a->prompt.buf;
+    a->mode = ACBB_MODE_NORMAL;
+    switch (a->prompt.kind) {
+    case ACBB_PROMPT_VALUE:
+        if (acbb_editor_set(&a->ed, a->ed.cursor, text, &err) != ACBB_OK) {
+            snprintf(a->edit_error, sizeof a->edit_error, "%s", err.msg);
+            acbb_app_msg(a, ACBB_ROLE_ERROR, "refused: %s", err.msg);
+        } else {
+            a->edit_error[0] = '\0';
+            acbb_app_msg(a, ACBB_ROLE_NORMAL, "edited (a: apply warm, A: apply cold, w: save)");
+        }
+        break;
+    case ACBB_PROMPT_SAVE_AS:
+        if (text[0]) save(a, text);
+        break;
+    case ACBB_PROMPT_OPEN:
+        if (text[0]) acbb_app_open(a, text);
+        break;
+    }
+}
+
+static void prompt_key(acbb_app *a, int ch)
+{
+    switch (ch) {
+    case 27: a->mode = ACBB_MODE_NORMAL; acbb_app_msg(a, ACBB_ROLE_NORMAL, "cancelled"); return;
+    case '\n': case '\r': case KEY_ENTER: prompt_commit(a); return;
+    case KEY_BACKSPACE: case 127: case 8:
+        if (a->prompt.len > 0) a->prompt.buf[--a->prompt.len] = '\0';
+        return;
+    case 21: /* Ctrl-U */
+        a->prompt.len = 0;
+        a->prompt.buf[0] = '\0';
+        return;
+    default:
+        if (ch >= 32 && ch < 127 && a->prompt.len + 1 < sizeof a->prompt.buf) {
+            a->prompt.buf[a->prompt.len++] = (char)ch;
+            a->prompt.buf[a->prompt.len] = '\0';
+        }
+    }
+}
+
+static void confirm_key(acbb_app *a, int ch)
+{
+    a->mode = ACBB_MODE_NORMAL;
+    if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
+        if (ch == 'y' || ch == 'Y') a->quit = 1;
+        else if (ch == 's' || ch == 'S') {
+            save(a, NULL);
+            if (!a->ed.modified) a->quit = 1;
+        } else acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting");
+    } else {
+        if (ch == 'y' || ch == 'Y') open_now(a, a->confirm.path);
+        else acbb_app_msg(a, ACBB_ROLE_NORMAL, "kept the current edits");
+    }
+}
+
+static void handle_key(acbb_app *a, int ch)
+{
+    switch (a->mode) {
+    case ACBB_MODE_PROMPT: prompt_key(a, ch); return;
+    case ACBB_MODE_CONFIRM: confirm_key(a, ch); return;
+    case ACBB_MODE_HELP: acbb_screen_help_key(a, ch); return;
+    case ACBB_MODE_BROWSE: acbb_screen_browse_key(a, ch); return;
+    case ACBB_MODE_NORMAL: break;
+    }
+    if (!screen_key(a, ch)) global_key(a, ch);
+}
+
+/* ---- frame ---- */
+
+static const char *hint(const acbb_app *a)
+{
+    switch (a->screen) {
+    case ACBB_SCR_EDIT: return "Enter edit  </> cycle  u undo  w save  W save as  o open  a apply  ? help";
+    case ACBB_SCR_PLOT: return "</> kind  Enter refresh  g export PNG+SVG  ? help  q quit";
+    case ACBB_SCR_COMPARE: return "t run TE vs WTE  r run  ? help  q quit";
+    default: return "r run  space pause  x stop  +/- pace  a apply  t TE/WTE  g plots  ? help  q quit";
+    }
+}
+
+static void draw_message(acbb_app *a)
+{
+    acbb_rect r = a->lay.message;
+    if (a->mode == ACBB_MODE_PROMPT) {
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%s", a->prompt.label);
+        int x = r.x + (int)strlen(a->prompt.label);
+        int room = r.x + r.w - x - 1;
+        size_t off = a->prompt.len > (size_t)room && room > 0 ? a->prompt.len - (size_t)room : 0;
+        acbb_put(a, r.y, x, room + 1, ACBB_ROLE_NORMAL, "%s_", a->prompt.buf + off);
+    } else if (a->mode == ACBB_MODE_CONFIRM) {
+        if (a->confirm.kind == ACBB_CONFIRM_QUIT)
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
+                     "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
+                     acbb_editor_name(&a->ed));
+        else
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "Unsaved edits. Discard them and open %s? y/n",
+                     a->confirm.path);
+    } else if (a->msg[0]) {
+        acbb_put(a, r.y, r.x, r.w, a->msg_role, "%s", a->msg);
+    } else {
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s", hint(a));
+    }
+}
+
+static void draw_body(acbb_app *a)
+{
+    if (a->mode == ACBB_MODE_HELP) {
+        acbb_screen_help_draw(a);
+        return;
+    }
+    switch (a->screen) {
+    case ACBB_SCR_RUN: acbb_screen_run_draw(a); break;
+    case ACBB_SCR_NODES: acbb_screen_nodes_draw(a); break;
+    case ACBB_SCR_BALLS: acbb_screen_balls_draw(a); break;
+    case ACBB_SCR_CHARTS: acbb_screen_charts_draw(a); break;
+    case ACBB_SCR_EDIT: acbb_screen_edit_draw(a); break;
+    case ACBB_SCR_COMPARE: acbb_screen_compare_draw(a); break;
+    case ACBB_SCR_PLOT: acbb_screen_plot_draw(a); break;
+    case ACBB_SCR_COUNT: break;
+    }
+    if (a->mode == ACBB_MODE_BROWSE) acbb_screen_browse_draw(a);
+}
+
+/* Take the worker's latest state and derive what the status line needs. */
+static void take_state(acbb_app *a)
+{
+    acbb_worker_read(a->worker, &a->st, &a->hist);
+    if (a->st.run_id != a->prog_run) {
+        acbb_progress_reset(&a->prog);
+        a->prog_run = a->st.run_id;
+    }
+    if (a->st.phase == ACBB_WORKER_RUNNING && a->st.snap.iteration > 0)
+        acbb_progress_update(&a->prog, a->st.snap.residual, a->st.run_wall_s,
+                             a->st.scene.steady_tol);
+    if (a->st.err_cmd > a->shown_err) {
+        a->shown_err = a->st.err_cmd;
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", a->st.message);
+    }
+    if (a->exit_after_steady && a->start_cmd && a->st.cmd_done >= a->start_cmd &&
+        a->st.phase == ACBB_WORKER_DONE) {
+        a->quit = 1;
+        a->exit_code = a->st.snap.state == ACBB_RUN_CONVERGED ? 0 : 3;
+    }
+}
+
+static void frame(acbb_app *a)
+{
+    int rows, cols;
+    take_state(a);
+    getmaxyx(stdscr, rows, cols);
+    acbb_layout_compute(rows, cols, &a->lay);
+    erase();
+    if (a->lay.too_small) {
+        acbb_put(a, 0, 0, cols, ACBB_ROLE_ERROR, "terminal too small: %dx%d, need %dx%d", cols, rows,
+                 ACBB_LAYOUT_MIN_COLS, ACBB_LAYOUT_MIN_ROWS);
+        if (rows > 1) acbb_put(a, 1, 0, cols, ACBB_ROLE_NORMAL, "q quits");
+    } else {
+        acbb_draw_title(a);
+        draw_body(a);
+        acbb_draw_status(a);
+        draw_message(a);
+    }
+    wnoutrefresh(stdscr);
+    doupdate();
+}
+
+/* ---- the loop ---- */
+
+typedef struct {
+    int input, wake, signal;
+} ready_fds;
+
+static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
+{
+    fd_set rf;
+    int wfd = acbb_worker_wake_fd(a->worker), sfd = a->term.sig_rd;
+    FD_ZERO(&rf);
+    FD_SET(STDIN_FILENO, &rf);
+    FD_SET(wfd, &rf);
+    FD_SET(sfd, &rf);
+    int maxfd = wfd > sfd ? wfd : sfd;
+    struct timeval tv = { (time_t)timeout_s, (suseconds_t)((timeout_s - (long)timeout_s) * 1e6) };
+    memset(r, 0, sizeof *r);
+    int n = select(maxfd + 1, &rf, NULL, NULL, &tv);
+    if (n < 0) {
+        r->signal = errno == EINTR; /* the handler's byte is waiting in the pipe */
+        return;
+    }
+    r->input = FD_ISSET(STDIN_FILENO, &rf);
+    r->wake = FD_ISSET(wfd, &rf);
+    r->signal = FD_ISSET(sfd, &rf);
+}
+
+static void handle_signals(acbb_app *a, int *redraw)
+{
+    acbb_term_events ev;
+    acbb_term_signals(&a->term, &ev);
+    if (ev.winch) {
+        acbb_term_resize(&a->term);
+        *redraw = 1;
+    }
+    if (ev.fatal) {
+        /* SIGTERM / SIGHUP: leave now; the caller restores the terminal. */
+        a->quit = 1;
+        a->exit_code = 128 + ev.fatal;
+    } else if (ev.interrupt) {
+        /* Ctrl-C is "quit"; a second one while asking means yes. */
+        if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) a->quit = 1;
+        else {
+            a->mode = ACBB_MODE_NORMAL;
+            request_quit(a);
+        }
+        *redraw = 1;
+    }
+}
+
+static void read_keys(acbb_app *a, int *redraw, int *spins)
+{
+    int ch, got = 0;
+    while ((ch = getch()) != ERR) {
+        got = 1;
+        handle_key(a, ch);
+        if (a->quit) break;
+    }
+    *spins = got ? 0 : *spins + 1;
+    if (*spins > HANGUP_SPINS) { /* the terminal went away without SIGHUP */
+        a->quit = 1;
+        a->exit_code = 1;
+    }
+    *redraw |= got;
+}
+
+static void loop(acbb_app *a)
+{
+    double last_frame = 0.0;
+    int stale = 1, redraw = 1, spins = 0;
+    while (!a->quit) {
+        double t = now_s();
+        if (redraw || (stale && t - last_frame >= FRAME_S)) {
+            frame(a);
+            last_frame = t;
+            redraw = stale = 0;
+            if (a->quit) break;
+        }
+        double timeout = stale ? FRAME_S - (t - last_frame) : IDLE_TIMEOUT_S;
+        if (timeout < 0) timeout = 0;
+        ready_fds r;
+        wait_events(a, timeout, &r);
+        if (r.signal) handle_signals(a, &redraw);
+        if (r.wake) {
+            acbb_worker_drain_wake(a->worker);
+            stale = 1;
+        }
+        if (r.input) read_keys(a, &redraw, &spins);
+        if (!r.input && !r.wake && !r.signal) stale = 1; /* timeout: refresh the clock */
+    }
+}
+
+/* ---- set-up and tear-down ---- */
+
+static void load_initial(acbb_app *a, const char *preset)
+{
+    acbb_error err = { { 0 } };
+    const char *path = preset ? preset : "presets/7008C.ini";
+    acbb_editor_init(&a->ed);
+    if (!preset && access(path, F_OK) != 0) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "%s not found: starting from the built-in default scene", path);
+        return;
+    }
+    if (acbb_editor_open(&a->ed, path, &err) != ACBB_OK) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s (using the built-in default scene)", err.msg);
+        return;
+    }
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, "opened %s: r runs it, ? lists every key", path);
+}
+
+int acbb_app_run(const acbb_app_options *opt)
+{
+    acbb_error err = { { 0 } };
+    acbb_app *a = calloc(1, sizeof *a);
+    char *preview = calloc(1, ACBB_PREVIEW_MAX);
+    if (!a || !preview) {
+        free(a);
+        free(preview);
+        fprintf(stderr, "acbb tui: out of memory\n");
+        return 1;
+    }
+    a->preview = preview;
+    a->chart_by_time = 1;
+    a->exit_after_steady = opt->exit_after_steady;
+    a->pace_idx = pace_index(opt->pace);
+    snprintf(a->plot_dir, sizeof a->plot_dir, "%s", opt->plot_dir ? opt->plot_dir : "./acbb-plots");
+    load_initial(a, opt->preset);
+
+    if (acbb_term_open(&a->term, &err) != ACBB_OK) {
+        fprintf(stderr, "acbb tui: %s\n", err.msg);
+        free(preview);
+        free(a);
+        return 2;
+    }
+    int rc = 0;
+    if (acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
+        acbb_term_close(&a->term);
+        fprintf(stderr, "acbb tui: %s\n", err.msg);
+        rc = 1;
+    } else {
+        if (a->exit_after_steady) post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started");
+        loop(a);
+        /* Restore the terminal first so a slow join never leaves it raw. */
+        acbb_term_close(&a->term);
+        acbb_worker_free(a->worker);
+        rc = a->exit_code;
+    }
+    free(preview);
+    free(a);
+    return rc;
+}

@@ -1,0 +1,107 @@
+/* acbb TUI — chart rasteriser (see chart.h). Hand-written because the
+ * curses libraries have no plotting; gnuplot's dumb terminal is used for
+ * the export preview, but spawning it ten times a second is too slow. */
+#include <math.h>
+#include <string.h>
+#include "chart.h"
+
+/* Braille dot bits by (dot row 0..3, dot column 0..1), Unicode's order. */
+static const unsigned char braille_bit[4][2] = {
+    { 0x01, 0x08 }, { 0x02, 0x10 }, { 0x04, 0x20 }, { 0x40, 0x80 } };
+
+void acbb_chart_init(acbb_chart *c, int w, int h, double xmin, double xmax, double ymin,
+                     double ymax)
+{
+    c->w = w < 1 ? 1 : w > ACBB_CHART_MAX_W ? ACBB_CHART_MAX_W : w;
+    c->h = h < 1 ? 1 : h > ACBB_CHART_MAX_H ? ACBB_CHART_MAX_H : h;
+    if (!(xmax > xmin)) xmax = xmin + 1.0;
+    if (!(ymax > ymin)) {
+        double mid = ymin, pad = fabs(mid) > 0 ? 0.05 * fabs(mid) : 1.0;
+        ymin = mid - pad;
+        ymax = mid + pad;
+    }
+    c->xmin = xmin;
+    c->xmax = xmax;
+    c->ymin = ymin;
+    c->ymax = ymax;
+    memset(c->dots, 0, sizeof c->dots);
+    memset(c->owner, -1, sizeof c->owner);
+}
+
+static void set_dot(acbb_chart *c, int dx, int dy, int series)
+{
+    /* dy counts from the top dot row. */
+    if (dx < 0 || dy < 0 || dx >= 2 * c->w || dy >= 4 * c->h) return;
+    int row = dy / 4, col = dx / 2;
+    c->dots[row][col] |= braille_bit[dy % 4][dx % 2];
+    c->owner[row][col] = (signed char)series;
+}
+
+static int to_dx(const acbb_chart *c, double x)
+{
+    double f = (x - c->xmin) / (c->xmax - c->xmin);
+    return (int)lround(f * (2 * c->w - 1));
+}
+
+static int to_dy(const acbb_chart *c, double y)
+{
+    double f = (y - c->ymin) / (c->ymax - c->ymin);
+    return (int)lround((1.0 - f) * (4 * c->h - 1));
+}
+
+/* Bresenham between two dots, so steep changes stay connected. */
+static void line(acbb_chart *c, int x0, int y0, int x1, int y1, int series)
+{
+    int dx = x1 > x0 ? x1 - x0 : x0 - x1, sx = x0 < x1 ? 1 : -1;
+    int dy = y1 > y0 ? y0 - y1 : y1 - y0, sy = y0 < y1 ? 1 : -1;
+    int e = dx + dy, steps = dx - dy + 1; /* dy <= 0 here */
+    for (int k = 0; k <= steps; k++) {
+        set_dot(c, x0, y0, series);
+        if (x0 == x1 && y0 == y1) break;
+        int e2 = 2 * e;
+        if (e2 >= dy) { e += dy; x0 += sx; }
+        if (e2 <= dx) { e += dx; y0 += sy; }
+    }
+}
+
+void acbb_chart_plot(acbb_chart *c, const double *x, const double *y, size_t n, int series)
+{
+    int have = 0, px = 0, py = 0;
+    for (size_t k = 0; k < n; k++) {
+        if (!isfinite(x[k]) || !isfinite(y[k])) { have = 0; continue; }
+        /* Clamp far-out values so lround cannot overflow. */
+        double yy = fmax(c->ymin - (c->ymax - c->ymin), fmin(y[k], c->ymax + (c->ymax - c->ymin)));
+        int qx = to_dx(c, x[k]), qy = to_dy(c, yy);
+        if (have) line(c, px, py, qx, qy, series);
+        else set_dot(c, qx, qy, series);
+        px = qx;
+        py = qy;
+        have = 1;
+    }
+}
+
+int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf)
+{
+    unsigned char d = c->dots[row][col];
+    if (utf8) {
+        /* U+2800 + d as UTF-8: E2, A0 + (d >> 6), 80 + (d & 0x3F). */
+        if (d == 0) { strcpy(buf, " "); return -1; }
+        buf[0] = (char)0xE2;
+        buf[1] = (char)(0xA0 | (d >> 6));
+        buf[2] = (char)(0x80 | (d & 0x3F));
+        buf[3] = '\0';
+    } else {
+        int top = d & (0x01 | 0x08 | 0x02 | 0x10), bottom = d & (0x04 | 0x20 | 0x40 | 0x80);
+        strcpy(buf, top && bottom ? ":" : top ? "'" : bottom ? "." : " ");
+    }
+    return c->owner[row][col];
+}
+
+void acbb_chart_extend(const double *v, size_t n, double *lo, double *hi)
+{
+    for (size_t k = 0; k < n; k++) {
+        if (!isfinite(v[k])) continue;
+        if (v[k] < *lo) *lo = v[k];
+        if (v[k] > *hi) *hi = v[k];
+    }
+}

@@ -1,0 +1,33 @@
+/* acbb TUI — line charts rasterised into terminal cells (no curses here).
+ *
+ * Each cell holds a 2x4 dot matrix: with UTF-8 a cell is drawn as the
+ * braille character with those dots (U+2800 + bits, as htop's graph
+ * meters do); without UTF-8 the dots collapse to ASCII ' . : shapes.
+ * Each cell also remembers which series drew in it last, for colour. */
+#ifndef ACBB_UI_CHART_H
+#define ACBB_UI_CHART_H
+
+#include <stddef.h>
+
+#define ACBB_CHART_MAX_W 320
+#define ACBB_CHART_MAX_H 64
+
+typedef struct {
+    int w, h;                           /* cells */
+    double xmin, xmax, ymin, ymax;
+    unsigned char dots[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W];
+    signed char owner[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W]; /* -1: empty */
+} acbb_chart;
+
+/* Clear a w x h (clamped to the maxima) chart with the given ranges; a
+ * degenerate range is widened so a flat line sits mid-height. */
+void acbb_chart_init(acbb_chart *c, int w, int h, double xmin, double xmax, double ymin,
+                     double ymax);
+/* Draw the polyline (x[k], y[k]) as series `series` (0..), joining points. */
+void acbb_chart_plot(acbb_chart *c, const double *x, const double *y, size_t n, int series);
+/* The glyph of cell (row, col) into buf (>= 8 bytes); returns the owner. */
+int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf);
+/* Smallest and largest finite value of v[0..n) into *lo, *hi (unchanged if none). */
+void acbb_chart_extend(const double *v, size_t n, double *lo, double *hi);
+
+#endif

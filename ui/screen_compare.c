@@ -1,0 +1,88 @@
+/* acbb TUI — TE vs WTE: the edited scene run to steady state with
+ * effects.thermal_expansion on and off (the seed's comparison), side by
+ * side with the difference. The worker runs both (ACBB_CMD_COMPARE). */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include "app.h"
+
+typedef struct {
+    const char *name;
+    size_t off;      /* offset of a double in acbb_snapshot */
+    double scale;
+} row_spec;
+
+static double field(const acbb_snapshot *s, size_t off)
+{
+    return *(const double *)((const char *)s + off);
+}
+
+static void ball_row(acbb_app *a, int y, const acbb_compare_result *c, const char *name,
+                     size_t off, double scale)
+{
+    double v[2];
+    for (int k = 0; k < 2; k++)
+        v[k] = c->snap[k].n_balls > 0 ? *(const double *)((const char *)&c->snap[k].balls[0] + off) * scale
+                                      : NAN;
+    acbb_put(a, y, a->lay.body.x, a->lay.body.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f",
+             name, v[0], v[1], v[0] - v[1]);
+}
+
+void acbb_screen_compare_draw(acbb_app *a)
+{
+    const acbb_compare_result *c = &a->st.compare;
+    acbb_rect b = a->lay.body;
+    int y = b.y;
+    acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER,
+             "TE vs WTE: the edited scene with thermal expansion on / off   t: run");
+    if (c->phase == ACBB_CMP_NONE) {
+        acbb_put(a, y + 1, b.x + 2, b.w - 2, ACBB_ROLE_NORMAL,
+                 "Press t to run both variants to steady state.");
+        return;
+    }
+    const char *st[2];
+    char it[2][32];
+    for (int k = 0; k < 2; k++) {
+        int running = c->phase == ACBB_CMP_RUNNING && c->variant == k;
+        st[k] = running ? "running" : c->ok[k] ? acbb_run_status_name(&c->snap[k])
+                : (c->phase == ACBB_CMP_DONE || k < c->variant) ? "failed" : "waiting";
+        snprintf(it[k], sizeof it[k], "%ld", c->snap[k].iteration);
+    }
+    acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER, "%-24s %12s %12s %12s", "", "TE", "WTE", "TE-WTE");
+    acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12s %12s", "status", st[0], st[1]);
+    acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12s %12s", "iterations", it[0], it[1]);
+    const row_spec rows[] = {
+        { "Outer ring T (5) C", offsetof(acbb_snapshot, T_outer_ring), 1 },
+        { "Inner ring T C", offsetof(acbb_snapshot, T_inner_ring), 1 },
+        { "Ball T C", offsetof(acbb_snapshot, T_ball), 1 },
+        { "Housing T C", offsetof(acbb_snapshot, T_housing), 1 },
+        { "Total loss W", offsetof(acbb_snapshot, losses.total), 1 },
+        { "  shear P_L W", offsetof(acbb_snapshot, losses.shear), 1 },
+        { "  slip P_t W", offsetof(acbb_snapshot, losses.slip), 1 },
+        { "  spin P_s W", offsetof(acbb_snapshot, losses.spin), 1 },
+        { "  rolling P_r W", offsetof(acbb_snapshot, losses.rolling), 1 },
+        { "  drag P_v W", offsetof(acbb_snapshot, losses.drag), 1 },
+        { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6 },
+        { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6 },
+    };
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0] && y < b.y + b.h; i++) {
+        double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
+        double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
+        acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
+                 v1, v0 - v1);
+    }
+    const double R2D = 180.0 / M_PI;
+    if (y < b.y + b.h) ball_row(a, y++, c, "Qi ball 0 N", offsetof(acbb_ball_view, Qi), 1);
+    if (y < b.y + b.h) ball_row(a, y++, c, "Qo ball 0 N", offsetof(acbb_ball_view, Qo), 1);
+    if (y < b.y + b.h) ball_row(a, y++, c, "alpha_i ball 0 deg", offsetof(acbb_ball_view, alpha_i), R2D);
+    if (y < b.y + b.h) ball_row(a, y++, c, "alpha_o ball 0 deg", offsetof(acbb_ball_view, alpha_o), R2D);
+    if (c->message[0] && y < b.y + b.h)
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_ERROR, "%s", c->message);
+}
+
+int acbb_screen_compare_key(acbb_app *a, int ch)
+{
+    (void)a;
+    (void)ch;
+    return 0; /* `t` is global */
+}

@@ -1,0 +1,150 @@
+/* acbb TUI — the preset editor screen and the preset browser.
+ * The model (validation, undo, save) is editor.c; this file draws it and
+ * maps keys onto it. */
+#include <curses.h>
+#include <glob.h>
+#include <stdio.h>
+#include <string.h>
+#include "app.h"
+
+#define INFO_ROWS 3 /* help of the selected field (2 rows) + refusal */
+
+static int list_rows(const acbb_app *a)
+{
+    int n = a->lay.body.h - 1 - INFO_ROWS;
+    return n < 1 ? 1 : n;
+}
+
+static void keep_visible(acbb_app *a)
+{
+    acbb_editor *e = &a->ed;
+    size_t rows = (size_t)list_rows(a);
+    if (e->cursor < e->top) e->top = e->cursor;
+    if (e->cursor >= e->top + rows) e->top = e->cursor - rows + 1;
+}
+
+void acbb_screen_edit_draw(acbb_app *a)
+{
+    acbb_editor *e = &a->ed;
+    acbb_rect b = a->lay.body;
+    keep_visible(a);
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%s%s  Enter edit  </> cycle  u undo  w save  W save as  o open",
+             e->path[0] ? e->path : "(built-in default)", e->modified ? " [modified]" : "");
+    size_t n = acbb_scene_field_count();
+    int rows = list_rows(a);
+    for (int r = 0; r < rows; r++) {
+        size_t i = e->top + (size_t)r;
+        if (i >= n) break;
+        const acbb_field_info *f = acbb_scene_field(i);
+        char val[128], was[128], range[192];
+        acbb_scene_field_format(&e->scene, i, val, sizeof val);
+        acbb_scene_field_format(&e->saved, i, was, sizeof was);
+        acbb_scene_field_range(i, range, sizeof range);
+        acbb_role role = i == e->cursor ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL;
+        if (i == e->cursor) {
+            acbb_role_on(a, role);
+            mvhline(b.y + 1 + r, b.x, ' ', b.w);
+        }
+        acbb_put(a, b.y + 1 + r, b.x, b.w, role, "%c%-10s %-27s %-14s %s",
+                 strcmp(val, was) != 0 ? '*' : ' ', f->section, f->key, val, range);
+    }
+    const acbb_field_info *f = acbb_scene_field(e->cursor);
+    int y = b.y + 1 + rows;
+    if (f) {
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_DIM, "%s.%s: %s", f->section, f->key, f->help);
+        const char *h = f->help;
+        int first = b.w - (int)(strlen(f->section) + strlen(f->key) + 3);
+        if (first > 0 && (int)strlen(h) > first)
+            acbb_put(a, y + 1, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "%s", h + first);
+    }
+    if (a->edit_error[0])
+        acbb_put(a, y + 2, b.x, b.w, ACBB_ROLE_ERROR, "refused: %s", a->edit_error);
+}
+
+int acbb_screen_edit_key(acbb_app *a, int ch)
+{
+    acbb_editor *e = &a->ed;
+    size_t n = acbb_scene_field_count(), page = (size_t)list_rows(a);
+    acbb_error err = { { 0 } };
+    switch (ch) {
+    case 'j': case KEY_DOWN: if (e->cursor + 1 < n) e->cursor++; return 1;
+    case 'k': case KEY_UP: if (e->cursor > 0) e->cursor--; return 1;
+    case KEY_NPAGE: e->cursor = e->cursor + page < n ? e->cursor + page : n - 1; return 1;
+    case KEY_PPAGE: e->cursor = e->cursor > page ? e->cursor - page : 0; return 1;
+    case KEY_HOME: e->cursor = 0; return 1;
+    case KEY_END: e->cursor = n - 1; return 1;
+    case '\n': case '\r': case KEY_ENTER: case 'e': {
+        const acbb_field_info *f = acbb_scene_field(e->cursor);
+        char val[128], label[160];
+        acbb_scene_field_format(&e->scene, e->cursor, val, sizeof val);
+        snprintf(label, sizeof label, "%s.%s%s%s%s = ", f->section, f->key, f->unit[0] ? " [" : "",
+                 f->unit, f->unit[0] ? "]" : "");
+        acbb_app_prompt(a, ACBB_PROMPT_VALUE, label, val);
+        return 1;
+    }
+    case KEY_LEFT: case KEY_RIGHT: case 'h': case 'l':
+        if (acbb_editor_cycle(e, e->cursor, ch == KEY_RIGHT || ch == 'l' ? 1 : -1, &err) != ACBB_OK) {
+            acbb_app_msg(a, ACBB_ROLE_WARN, "%s", err.msg);
+        } else {
+            a->edit_error[0] = '\0';
+            acbb_app_msg(a, ACBB_ROLE_NORMAL, "edited (a: apply warm, A: apply cold)");
+        }
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* ---- preset browser ---- */
+
+void acbb_screen_browse_begin(acbb_app *a)
+{
+    glob_t g;
+    a->browse.n = 0;
+    a->browse.sel = 0;
+    if (glob("presets/*.ini", 0, NULL, &g) == 0) {
+        for (size_t i = 0; i < g.gl_pathc && a->browse.n < ACBB_BROWSE_MAX - 1; i++)
+            snprintf(a->browse.names[a->browse.n++], sizeof a->browse.names[0], "%s", g.gl_pathv[i]);
+        globfree(&g);
+    }
+    snprintf(a->browse.names[a->browse.n++], sizeof a->browse.names[0], "(type a path...)");
+    a->mode = ACBB_MODE_BROWSE;
+}
+
+void acbb_screen_browse_draw(acbb_app *a)
+{
+    acbb_rect b = a->lay.body;
+    int w = b.w > 60 ? 60 : b.w, x = b.x + (b.w - w) / 2;
+    int h = a->browse.n + 3 < b.h ? a->browse.n + 3 : b.h;
+    for (int r = 0; r < h; r++) {
+        acbb_role_on(a, ACBB_ROLE_NORMAL);
+        mvhline(b.y + r, x, ' ', w);
+    }
+    acbb_put(a, b.y, x, w, ACBB_ROLE_TITLE, " Open a preset: Enter open, p type a path, Esc cancel ");
+    for (int i = 0; i < a->browse.n && i + 2 < h; i++)
+        acbb_put(a, b.y + 1 + i, x + 2, w - 2, i == a->browse.sel ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL,
+                 "%s", a->browse.names[i]);
+    acbb_hrule(a, b.y + h - 1, x, w);
+}
+
+int acbb_screen_browse_key(acbb_app *a, int ch)
+{
+    switch (ch) {
+    case 'j': case KEY_DOWN: if (a->browse.sel + 1 < a->browse.n) a->browse.sel++; return 1;
+    case 'k': case KEY_UP: if (a->browse.sel > 0) a->browse.sel--; return 1;
+    case 27: a->mode = ACBB_MODE_NORMAL; return 1;
+    case 'p': case '/':
+        a->mode = ACBB_MODE_NORMAL;
+        acbb_app_prompt(a, ACBB_PROMPT_OPEN, "open preset: ", "");
+        return 1;
+    case '\n': case '\r': case KEY_ENTER:
+        a->mode = ACBB_MODE_NORMAL;
+        if (a->browse.sel == a->browse.n - 1)
+            acbb_app_prompt(a, ACBB_PROMPT_OPEN, "open preset: ", "");
+        else
+            acbb_app_open(a, a->browse.names[a->browse.sel]);
+        return 1;
+    default:
+        return 1; /* the browser is modal */
+    }
+}

@@ -1,0 +1,48 @@
+/* acbb TUI — every node temperature of the thermal network, in columns. */
+#include <curses.h>
+#include "app.h"
+
+static int rows_per_col(const acbb_app *a)
+{
+    int r = a->lay.table_rows;
+    return r < 1 ? 1 : r;
+}
+
+void acbb_screen_nodes_draw(acbb_app *a)
+{
+    const acbb_snapshot *s = &a->st.snap;
+    acbb_rect b = a->lay.body;
+    int ncol = a->lay.node_columns, per = rows_per_col(a);
+    int cw = b.w / ncol;
+    double amb = a->st.scene.ambient_C;
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER,
+             "%d nodes (C, rise above ambient %.1f)   j/k PgUp/PgDn scroll", s->n_nodes, amb);
+    for (int c = 0; c < ncol; c++) {
+        for (int r = 0; r < per - 1; r++) {
+            int i = a->node_top + c * (per - 1) + r;
+            if (i >= s->n_nodes) return;
+            const char *name = s->node_names ? s->node_names[i] : "?";
+            acbb_put(a, b.y + 1 + r, b.x + c * cw, cw - 1, ACBB_ROLE_NORMAL, "%-25.25s%7.2f%+7.2f",
+                     name, s->T[i], s->T[i] - amb);
+        }
+    }
+}
+
+int acbb_screen_nodes_key(acbb_app *a, int ch)
+{
+    int page = (rows_per_col(a) - 1) * a->lay.node_columns;
+    int n = a->st.snap.n_nodes;
+    int top = a->node_top;
+    switch (ch) {
+    case 'j': case KEY_DOWN: top++; break;
+    case 'k': case KEY_UP: top--; break;
+    case KEY_NPAGE: top += page; break;
+    case KEY_PPAGE: top -= page; break;
+    case KEY_HOME: top = 0; break;
+    default: return 0;
+    }
+    if (top > n - page) top = n - page;
+    if (top < 0) top = 0;
+    a->node_top = top;
+    return 1;
+}

@@ -1,0 +1,86 @@
+/* acbb TUI — the plot screen: a gnuplot `dumb` preview of one plot kind,
+ * and the one-key export of PNG+SVG files. gnuplot runs only on request
+ * (entering the screen, Enter, a kind change, g), never per frame. */
+#include <curses.h>
+#include <stdio.h>
+#include <string.h>
+#include "app.h"
+#include "export.h"
+
+#define N_KINDS 5
+
+static void title_of(const acbb_app *a, char *buf, size_t n)
+{
+    snprintf(buf, n, "acbb %s, iteration %ld", acbb_editor_name(&a->ed), a->st.snap.iteration);
+}
+
+static void refresh_preview(acbb_app *a)
+{
+    acbb_error err = { { 0 } };
+    char title[PATH_MAX + 64];
+    title_of(a, title, sizeof title);
+    acbb_plot_data d = { .history = &a->hist, .snapshot = &a->st.snap, .title = title };
+    int cols = a->lay.body.w, rows = a->lay.body.h - 1;
+    acbb_status rc = acbb_plot_dumb((acbb_plot_kind)a->plot_kind, cols, rows, &d, a->preview,
+                                    ACBB_PREVIEW_MAX, &err);
+    a->preview_ok = rc == ACBB_OK;
+    if (!a->preview_ok) {
+        snprintf(a->preview, ACBB_PREVIEW_MAX, "%s", err.msg);
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "preview failed: %s", err.msg);
+    }
+}
+
+void acbb_screen_plot_draw(acbb_app *a)
+{
+    acbb_rect b = a->lay.body;
+    if (!a->preview[0]) refresh_preview(a);
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "gnuplot preview: %s   < > kind  Enter refresh  g export to %s",
+             acbb_plot_kind_name((acbb_plot_kind)a->plot_kind), a->plot_dir);
+    const char *p = a->preview;
+    for (int r = 0; r < b.h - 1 && *p; r++) {
+        const char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        char line[1024];
+        if (len >= sizeof line) len = sizeof line - 1;
+        memcpy(line, p, len);
+        line[len] = '\0';
+        /* gnuplot's dumb terminal may emit a form feed first. */
+        for (char *c = line; *c; c++)
+            if (*c == '\f' || *c == '\r') *c = ' ';
+        acbb_put(a, b.y + 1 + r, b.x, b.w, a->preview_ok ? ACBB_ROLE_NORMAL : ACBB_ROLE_ERROR,
+                 "%s", line);
+        p = nl ? nl + 1 : p + len;
+    }
+}
+
+int acbb_screen_plot_key(acbb_app *a, int ch)
+{
+    switch (ch) {
+    case KEY_LEFT: case 'h': a->plot_kind = (a->plot_kind + N_KINDS - 1) % N_KINDS; break;
+    case KEY_RIGHT: case 'l': a->plot_kind = (a->plot_kind + 1) % N_KINDS; break;
+    case '\n': case '\r': case KEY_ENTER: break;
+    default: return 0;
+    }
+    refresh_preview(a);
+    return 1;
+}
+
+void acbb_screen_plot_export(acbb_app *a)
+{
+    acbb_error err = { { 0 } };
+    char title[PATH_MAX + 64];
+    int written = 0;
+    title_of(a, title, sizeof title);
+    /* Say so before gnuplot runs: the export takes a moment. */
+    acbb_app_msg(a, ACBB_ROLE_WARN, "exporting plots to %s ...", a->plot_dir);
+    acbb_draw_title(a);
+    move(a->lay.message.y, 0);
+    clrtoeol();
+    acbb_put(a, a->lay.message.y, 0, a->lay.message.w, ACBB_ROLE_WARN, "%s", a->msg);
+    wnoutrefresh(stdscr);
+    doupdate();
+    if (acbb_export_plots(a->plot_dir, &a->hist, &a->st.snap, title, &written, &err) != ACBB_OK)
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d plots (PNG+SVG) to %s/", written, a->plot_dir);
+}

@@ -1,0 +1,207 @@
+/* acbb TUI — the title bar, the status line and the overview screen
+ * (key temperatures, the five losses, mechanics, outer-ring chart). */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include "app.h"
+
+static const char *const tab_names[ACBB_SCR_COUNT] = {
+    "Run", "Nodes", "Balls", "Charts", "Edit", "TE/WTE", "Plot" };
+
+void acbb_draw_title(acbb_app *a)
+{
+    acbb_rect r = a->lay.title;
+    acbb_role_on(a, ACBB_ROLE_TITLE);
+    mvhline(r.y, r.x, ' ', r.w);
+    int x = r.x;
+    acbb_put(a, r.y, x, r.w, ACBB_ROLE_TITLE, " acbb ");
+    x += 6;
+    for (int i = 0; i < ACBB_SCR_COUNT; i++) {
+        char tab[24];
+        snprintf(tab, sizeof tab, "%d %s", i + 1, tab_names[i]);
+        acbb_role rr = (int)a->screen == i ? ACBB_ROLE_TAB : ACBB_ROLE_TITLE;
+        /* Monochrome: brackets mark the current tab as well as bold. */
+        acbb_put(a, r.y, x, r.x + r.w - x, rr, (int)a->screen == i ? "[%s]" : " %s ", tab);
+        x += (int)strlen(tab) + 2;
+    }
+    char name[PATH_MAX + 8];
+    snprintf(name, sizeof name, "%s%s ", acbb_editor_name(&a->ed), a->ed.modified ? "*" : "");
+    int room = r.x + r.w - x - 1;
+    int len = (int)strlen(name);
+    if (room > 4) {
+        if (len > room) { /* keep the end of a long name, marked as cut */
+            acbb_put(a, r.y, r.x + r.w - room, room, ACBB_ROLE_TITLE, "%s%s", a->term.g.ellipsis,
+                     name + (len - room + 1));
+        } else {
+            acbb_put(a, r.y, r.x + r.w - len, len, ACBB_ROLE_TITLE, "%s", name);
+        }
+    }
+    acbb_role_on(a, ACBB_ROLE_NORMAL);
+}
+
+static acbb_role phase_role(const acbb_app *a)
+{
+    switch (a->st.phase) {
+    case ACBB_WORKER_RUNNING: return ACBB_ROLE_OK;
+    case ACBB_WORKER_DONE:
+        return a->st.snap.state == ACBB_RUN_CONVERGED ? ACBB_ROLE_OK : ACBB_ROLE_ERROR;
+    case ACBB_WORKER_NO_SIM: return ACBB_ROLE_ERROR;
+    default: return ACBB_ROLE_WARN;
+    }
+}
+
+static void phase_text(const acbb_app *a, char *buf, size_t n)
+{
+    if (a->st.phase == ACBB_WORKER_DONE)
+        snprintf(buf, n, "%s", acbb_run_status_name(&a->st.snap));
+    else
+        snprintf(buf, n, "%s", acbb_worker_phase_name(a->st.phase));
+}
+
+void acbb_draw_status(acbb_app *a)
+{
+    acbb_rect r = a->lay.status;
+    const acbb_snapshot *s = &a->st.snap;
+    char ph[32], wall[16], eta[16], pace[16], line[256];
+    phase_text(a, ph, sizeof ph);
+    acbb_fmt_duration(a->st.run_wall_s, wall, sizeof wall);
+    acbb_fmt_duration(a->prog.eta_s, eta, sizeof eta);
+    int p = acbb_worker_pace(a->worker); /* the atomic: current even while idle */
+    if (p > 0) snprintf(pace, sizeof pace, "%d/s", p);
+    else snprintf(pace, sizeof pace, "max");
+    int x = r.x;
+    acbb_put(a, r.y, x, r.w, phase_role(a), "%-9s", ph);
+    x += 10;
+    snprintf(line, sizeof line, "it %ld t %.0fs wall %s %.0f st/s pace %s res %.1e",
+             s->iteration, s->time, wall, a->st.steps_per_s, pace, s->residual);
+    acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", line);
+    x += (int)strlen(line) + 1;
+    /* Progress to steady state on the log scale of the residual. */
+    int room = r.x + r.w - x;
+    if (room >= 14) {
+        double f = a->st.phase == ACBB_WORKER_DONE && s->state == ACBB_RUN_CONVERGED ? 1.0
+                                                                                      : a->prog.fraction;
+        char tail[32];
+        if (f >= 1.0) snprintf(tail, sizeof tail, "100%% done");
+        else snprintf(tail, sizeof tail, "%3.0f%% eta %s", 100 * f, eta);
+        int bw = room - (int)strlen(tail) - 1;
+        if (bw > 10) bw = 10;
+        if (bw >= 3) {
+            acbb_bar(a, r.y, x, bw, f, ACBB_ROLE_BAR);
+            x += bw + 1;
+        }
+        acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", tail);
+    }
+}
+
+static void temps_panel(acbb_app *a, acbb_rect r)
+{
+    const acbb_snapshot *s = &a->st.snap;
+    double amb = a->st.scene.ambient_C;
+    const struct { const char *name; double T; } rows[] = {
+        { "Outer ring (5)", s->T_outer_ring }, { "Inner ring", s->T_inner_ring },
+        { "Ball", s->T_ball }, { "Housing", s->T_housing }, { "Shaft", s->T_shaft },
+        { "Oil-air", s->T_cavity },
+    };
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Temperature        C   rise(%.0f)", amb);
+    double hi = 1.0;
+    for (size_t i = 0; i < 6; i++) hi = fmax(hi, rows[i].T - amb);
+    for (size_t i = 0; i < 6 && (int)i + 1 < r.h; i++) {
+        acbb_put(a, r.y + 1 + (int)i, r.x, r.w, ACBB_ROLE_NORMAL, "%-15s %7.2f %+7.2f",
+                 rows[i].name, rows[i].T, rows[i].T - amb);
+        acbb_bar(a, r.y + 1 + (int)i, r.x + 32, r.w - 33, (rows[i].T - amb) / hi, ACBB_ROLE_BAR2);
+    }
+}
+
+static void losses_panel(acbb_app *a, acbb_rect r)
+{
+    const acbb_losses *l = &a->st.snap.losses;
+    const struct { const char *name; double W; } rows[] = {
+        { "Shear   P_L", l->shear }, { "Slip    P_t", l->slip }, { "Spin    P_s", l->spin },
+        { "Rolling P_r", l->rolling }, { "Drag    P_v", l->drag },
+    };
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Power loss        W      %%");
+    double tot = l->total > 0 ? l->total : 1.0;
+    for (int i = 0; i < 5 && i + 1 < r.h; i++) {
+        acbb_put(a, r.y + 1 + i, r.x, r.w, ACBB_ROLE_NORMAL, "%-12s %7.2f %6.1f", rows[i].name,
+                 rows[i].W, 100 * rows[i].W / tot);
+        acbb_bar(a, r.y + 1 + i, r.x + 28, r.w - 29, rows[i].W / tot, ACBB_ROLE_BAR);
+    }
+    if (r.h > 6)
+        acbb_put(a, r.y + 6, r.x, r.w, ACBB_ROLE_HEADER, "%-12s %7.2f %6.1f", "Total",
+                 l->total, 100.0);
+}
+
+/* Min and max of a ball quantity over the balls (one ball under pure axial load). */
+static void span(const acbb_snapshot *s, size_t off, double *lo, double *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (int i = 0; i < s->n_balls; i++) {
+        double v;
+        memcpy(&v, (const char *)&s->balls[i] + off, sizeof v);
+        *lo = fmin(*lo, v);
+        *hi = fmax(*hi, v);
+    }
+    if (s->n_balls == 0) *lo = *hi = 0.0;
+}
+
+static void mech_panel(acbb_app *a, acbb_rect r)
+{
+    const acbb_snapshot *s = &a->st.snap;
+    const char *deg = a->term.g.deg;
+    double qi0, qi1, qo0, qo1, ai0, ai1, ao0, ao1;
+    span(s, offsetof(acbb_ball_view, Qi), &qi0, &qi1);
+    span(s, offsetof(acbb_ball_view, Qo), &qo0, &qo1);
+    span(s, offsetof(acbb_ball_view, alpha_i), &ai0, &ai1);
+    span(s, offsetof(acbb_ball_view, alpha_o), &ao0, &ao1);
+    const double R2D = 180.0 / M_PI, UM = 1e6;
+    char item[6][288];
+    snprintf(item[0], sizeof item[0], "Qi %.1f..%.1f N  Qo %.1f..%.1f N", qi0, qi1, qo0, qo1);
+    snprintf(item[1], sizeof item[1], "a_i %.2f..%.2f%s  a_o %.2f..%.2f%s", ai0 * R2D, ai1 * R2D, deg,
+             ao0 * R2D, ao1 * R2D, deg);
+    snprintf(item[2], sizeof item[2], "growth um: ball %.2f IR %.2f OR %.2f", s->exp_ball * UM,
+             (s->exp_inner + s->exp_inner_cen) * UM, s->exp_outer * UM);
+    snprintf(item[3], sizeof item[3], "Fx %.0f N  dx %.2f um  dt %.3g s", s->reaction_x,
+             s->delta_x * UM, s->dt);
+    snprintf(item[4], sizeof item[4], "heat in %.2f W  out %.2f W", s->heat_in, s->heat_out);
+    snprintf(item[5], sizeof item[5], "%s", s->message);
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Mechanics (min..max, %d balls)", s->n_balls);
+    /* A tall panel (wide layout) gets one item per row, a short one pairs. */
+    int per_row = r.h - 1 >= 6 ? 1 : 2;
+    for (int k = 0, row = 1; k < 6 && row < r.h; k += per_row, row++) {
+        if (per_row == 1)
+            acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_NORMAL, "%s", item[k]);
+        else
+            acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_NORMAL, "%-38s  %s", item[k], item[k + 1]);
+    }
+}
+
+static void chart_panel(acbb_app *a, acbb_rect r)
+{
+    double x[ACBB_HISTORY_CAP], y[ACBB_HISTORY_CAP];
+    size_t n = a->hist.n;
+    for (size_t k = 0; k < n; k++) {
+        x[k] = a->hist.p[k].time;
+        y[k] = a->hist.p[k].T_outer_ring;
+    }
+    const double *ys[1] = { y };
+    const char *names[1] = { "T5" };
+    char title[96];
+    snprintf(title, sizeof title, "Outer ring C vs time 0..%.0f s", n ? x[n - 1] : 0.0);
+    acbb_draw_chart(a, r, title, x, ys, names, 1, n);
+}
+
+void acbb_screen_run_draw(acbb_app *a)
+{
+    if (!a->st.has_snapshot) {
+        acbb_put(a, a->lay.body.y + 1, 2, a->lay.body.w - 4, ACBB_ROLE_ERROR, "%s",
+                 a->st.message[0] ? a->st.message : "no simulation yet");
+        return;
+    }
+    temps_panel(a, a->lay.temps);
+    losses_panel(a, a->lay.losses);
+    mech_panel(a, a->lay.mech);
+    chart_panel(a, a->lay.chart);
+}

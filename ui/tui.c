@@ -1,0 +1,57 @@
+/* acbb TUI — entry point: `acbb`, `acbb tui [options] [PRESET]`. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "app.h"
+#include "tui.h"
+
+static const char usage_text[] =
+    "usage: acbb tui [--pace N] [--plot-dir DIR] [--exit-after-steady] [PRESET]\n"
+    "  PRESET               scene to open (default presets/7008C.ini)\n"
+    "  --pace N             steps per second (0 = flat out, the default)\n"
+    "  --plot-dir DIR       where g writes PNG+SVG plots (default ./acbb-plots)\n"
+    "  --exit-after-steady  start the run at once and exit when it ends\n"
+    "                       (also ACBB_TUI_EXIT_AFTER_STEADY=1; exit 0 converged, 3 not)\n"
+    "Inside, press ? for every key.\n";
+
+static int parse_int(const char *s, int *out)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end || v < 0 || v > 1000000) return -1;
+    *out = (int)v;
+    return 0;
+}
+
+int acbb_tui_main(int argc, char **argv)
+{
+    acbb_app_options o = { 0 };
+    const char *env = getenv("ACBB_TUI_EXIT_AFTER_STEADY");
+    o.exit_after_steady = env && env[0] && strcmp(env, "0") != 0;
+    /* argv[0] is "tui" or the program name; options follow. */
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+            fputs(usage_text, stdout);
+            return 0;
+        } else if (strcmp(s, "--pace") == 0 && i + 1 < argc) {
+            if (parse_int(argv[++i], &o.pace) != 0) {
+                fprintf(stderr, "acbb tui: --pace wants steps per second (0 .. 1000000), got '%s'\n", argv[i]);
+                return 2;
+            }
+        } else if (strcmp(s, "--plot-dir") == 0 && i + 1 < argc) {
+            o.plot_dir = argv[++i];
+        } else if (strcmp(s, "--exit-after-steady") == 0) {
+            o.exit_after_steady = 1;
+        } else if (s[0] == '-' && s[1]) {
+            fprintf(stderr, "acbb tui: unknown option '%s'\n%s", s, usage_text);
+            return 2;
+        } else if (!o.preset) {
+            o.preset = s;
+        } else {
+            fprintf(stderr, "acbb tui: one preset only ('%s' and '%s')\n%s", o.preset, s, usage_text);
+            return 2;
+        }
+    }
+    return acbb_app_run(&o);
+}

@@ -1,2 +1,0 @@
-/* stub */
-typedef int acbb_stub_worker;
