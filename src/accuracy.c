@@ -6,6 +6,7 @@
  * acbb_scene_set, so values are given and validated in preset units exactly
  * as a user's `--set` would be. */
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -85,7 +86,7 @@ int acbb_accuracy_knob_from_name(const char *name)
 static acbb_status resolve_options(const acbb_accuracy_options *opt, acbb_accuracy_options *o,
                                    acbb_error *err)
 {
-    acbb_accuracy_options zero = { 0, 0, 0 };
+    acbb_accuracy_options zero = { 0 };
     *o = opt ? *opt : zero;
     if (o->knobs == 0) o->knobs = ACBB_ACCURACY_ALL_KNOBS;
     if (o->model_levels == 0) o->model_levels = ACBB_ACCURACY_ALL_LEVELS;
@@ -167,11 +168,29 @@ static void row_init(acbb_accuracy_row *r, const plan_entry *p)
     r->e_loss = r->e_T = r->e_Qi = r->e_alpha = r->e_slide = NAN;
 }
 
+static int cancelled(const _Atomic int *cancel)
+{
+    return cancel && atomic_load(cancel) != 0;
+}
+
+/* acbb_sim_run, or its step loop when a cancel hook is given so a cancel
+ * lands between two steps (acbb_sim_run has no hook). Without a hook the
+ * engine's own loop runs, so the timings are exactly the CLI's. */
+static acbb_status run_sim(acbb_sim *sim, const _Atomic int *cancel)
+{
+    if (!cancel) return acbb_sim_run(sim);
+    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING) {
+        if (cancelled(cancel)) return ACBB_OK; /* the caller sees the flag */
+        acbb_sim_step(sim);
+    }
+    return acbb_sim_step(sim); /* a no-op after the end: the run's final status */
+}
+
 /* One timed run: acbb_sim_new + acbb_sim_run + acbb_sim_free on the clock,
  * the snapshot copy off it. Returns the run's status; a run that ended
  * without converging is reported as such even if the last step said OK. */
-static acbb_status timed_run(const acbb_scene *sc, acbb_snapshot *snap, int *have_snap,
-                             double *ms, acbb_error *err)
+static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel,
+                             acbb_snapshot *snap, int *have_snap, double *ms, acbb_error *err)
 {
     acbb_sim *sim = NULL;
     double t0 = now_ms();
@@ -181,7 +200,7 @@ static acbb_status timed_run(const acbb_scene *sc, acbb_snapshot *snap, int *hav
         *have_snap = 0;
         return st;
     }
-    st = acbb_sim_run(sim);
+    st = run_sim(sim, cancel);
     double t1 = now_ms();
     acbb_sim_snapshot(sim, snap);
     double t2 = now_ms();
@@ -219,7 +238,7 @@ static acbb_status make_scene(const acbb_scene *base, const plan_entry *p, acbb_
  * results are those of the first run; later runs only add timing samples.
  * A failure ends the repeats (the same failure would recur). */
 static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
-                      acbb_accuracy_row *r)
+                      const _Atomic int *cancel, acbb_accuracy_row *r)
 {
     row_init(r, p);
     acbb_error e = { { 0 } };
@@ -236,9 +255,9 @@ static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
     memset(&snap, 0, sizeof snap);
     double times[ACBB_ACCURACY_MAX_REPEATS];
     int done = 0;
-    for (; done < repeats; done++) {
+    for (; done < repeats && !cancelled(cancel); done++) {
         int have_snap = 0;
-        st = timed_run(&sc, &snap, &have_snap, &times[done], &e);
+        st = timed_run(&sc, cancel, &snap, &have_snap, &times[done], &e);
         if (done == 0 && have_snap) r->iterations = snap.iteration;
         if (st != ACBB_OK) {
             done++;
@@ -246,6 +265,7 @@ static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
         }
         if (done == 0) record_results(r, &sc, &snap);
     }
+    if (done == 0) return; /* cancelled before the first run: the caller drops the row */
     r->wall_ms = median(times, (size_t)done);
     if (st == ACBB_OK) return;
     r->status = st;
@@ -319,9 +339,17 @@ acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_option
     size_t done = 0;
     for (size_t i = 0; i < PLAN_N; i++) {
         if (!planned(&o, &k_plan[i])) continue;
-        run_entry(base, &k_plan[i], o.repeats, &rows[done]);
+        if (cancelled(o.cancel)) break;
+        run_entry(base, &k_plan[i], o.repeats, o.cancel, &rows[done]);
+        /* A cancel during the row may have cut its run short: drop it. */
+        if (cancelled(o.cancel)) break;
         done++;
         if (progress) progress(ctx, done, total);
+    }
+    if (done < total) { /* only a cancel stops the loop early */
+        *n = done;
+        return acbb_error_set(err, ACBB_NOT_CONVERGED, "accuracy: cancelled after %zu of %zu settings",
+                              done, total);
     }
     mark_model_reference(rows, done);
     fill_errors(rows, done);

@@ -69,6 +69,11 @@ typedef struct {
                                 mask); 0 = all. The reference is the highest one
                                 of them that acbb_sim_new accepts. */
     int repeats;             /* runs per setting, 1..ACBB_ACCURACY_MAX_REPEATS; 0 = default */
+    /* Optional cancel hook (NULL = none): another thread stores non-zero to
+     * stop the plan. It is read before every setting and between the coupled
+     * steps of a run, so a cancel takes effect within one step (plus an
+     * acbb_sim_new already under way) even in a long dynamic run. */
+    const _Atomic int *cancel;
 } acbb_accuracy_options;
 
 /* The frontier's tolerance on total loss and outer-ring temperature rise. */
@@ -110,7 +115,11 @@ size_t acbb_accuracy_plan_size(const acbb_accuracy_options *opt);
  * `progress(ctx, done, total)` is called after each row if non-NULL.
  * Returns ACBB_OK when the plan ran (individual settings may have failed:
  * see row.status); ACBB_EINVAL for a bad option, cap too small, or an
- * invalid base scene (message in err); nothing is run then and *n = 0. */
+ * invalid base scene (message in err); nothing is run then and *n = 0.
+ * When opt->cancel is set: ACBB_NOT_CONVERGED ("accuracy: cancelled after
+ * k of n settings" in err); rows[0..*n) are the settings that finished, the
+ * interrupted one is dropped, and every error is left NaN (an incomplete
+ * knob has no trustworthy reference). */
 acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_options *opt,
                               acbb_accuracy_row *rows, size_t cap, size_t *n,
                               acbb_accuracy_progress progress, void *ctx,

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian machine:
+#   ./dev.sh            install the Debian packages, build, open the TUI on presets/7008C.ini
+#   ./dev.sh test       install, build, run every test (meson test)
+#   ./dev.sh run ARGS   install, build, run `acbb ARGS` (e.g. run presets/7008C.ini --json)
+set -eu
+cd "$(dirname "$0")"
+
+PACKAGES="build-essential meson ninja-build pkg-config libgsl-dev libinih-dev libncurses-dev
+          gnuplot-nox jq tmux python3 libxml2-utils"
+
+install_deps() {
+    missing=""
+    for p in $PACKAGES; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+            || missing="$missing $p"
+    done
+    [ -z "$missing" ] && return 0
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -qq
+    # shellcheck disable=SC2086
+    $sudo apt-get install -y -qq $missing >/dev/null
+}
+
+build() {
+    [ -f build/build.ninja ] || meson setup build >/dev/null
+    meson compile -C build >/dev/null
+}
+
+install_deps
+build
+case "${1:-tui}" in
+    tui) shift 2>/dev/null || true; exec ./build/acbb tui "$@" ;;
+    test) exec meson test -C build --print-errorlogs ;;
+    run) shift; exec ./build/acbb "$@" ;;
+    *) echo "usage: ./dev.sh [tui [PRESET] | test | run ARGS...]" >&2; exit 2 ;;
+esac
