@@ -10,34 +10,7 @@ PRESET=presets/7008C.ini
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-cli.XXXXXX") || exit 1
 trap 'rm -rf "$TMP"' EXIT INT TERM
 
-n=0
-failed=0
-# t COND_STATUS NAME: record one TAP result from the status of the last test.
-t() {
-    n=$((n + 1))
-    if [ "$1" -eq 0 ]; then
-        echo "ok $n - $2"
-    else
-        echo "not ok $n - $2"
-        failed=$((failed + 1))
-    fi
-}
-# jqt FILE FILTER NAME: the jq filter must evaluate to true on FILE.
-jqt() {
-    jq -e "def abs: if . < 0 then -. else . end; $2" "$1" >/dev/null 2>&1
-    t $? "$3"
-}
-# has FILE TEXT NAME: FILE contains TEXT literally.
-has() {
-    grep -F -q -- "$2" "$1"
-    t $? "$3"
-}
-# code GOT WANT NAME
-code() {
-    [ "$1" -eq "$2" ]
-    t $? "$3 (exit $1, want $2)"
-    [ "$1" -eq "$2" ] || sed 's/^/# /' "$TMP/err" 2>/dev/null | head -5
-}
+. "$(dirname "$0")/tap.sh"
 
 # ---- run --json at the seed's base point ----
 "$ACBB" run "$PRESET" --json >"$TMP/run.json" 2>"$TMP/err"
@@ -251,5 +224,4 @@ has "$TMP/keys.txt" "bearing.ball_diameter_mm" "keys lists bearing.ball_diameter
 code $? 0 "presets exits 0"
 has "$TMP/presets.txt" "7008C.ini" "presets lists 7008C.ini"
 
-echo "1..$n"
-[ "$failed" -eq 0 ]
+tap_done

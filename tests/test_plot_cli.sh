@@ -13,27 +13,7 @@ PRESET=presets/7008C.ini
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-plot-cli.XXXXXX") || exit 1
 trap 'rm -rf "$TMP"' EXIT INT TERM
 
-n=0
-failed=0
-t() {
-    n=$((n + 1))
-    if [ "$1" -eq 0 ]; then
-        echo "ok $n - $2"
-    else
-        echo "not ok $n - $2"
-        failed=$((failed + 1))
-    fi
-}
-# code GOT WANT NAME
-code() {
-    [ "$1" -eq "$2" ]
-    t $? "$3 (exit $1, want $2)"
-    [ "$1" -eq "$2" ] || sed 's/^/# /' "$TMP/err" 2>/dev/null | head -5
-}
-has() {
-    grep -F -q -- "$2" "$1"
-    t $? "$3"
-}
+. "$(dirname "$0")/tap.sh"
 # is_png FILE: the 8-byte PNG signature and more than 1 kB.
 is_png() {
     [ -f "$1" ] && [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] &&
@@ -183,5 +163,4 @@ else
     t $? "siblings r-<kind>.png written ($good/4)"
 fi
 
-echo "1..$n"
-[ "$failed" -eq 0 ]
+tap_done

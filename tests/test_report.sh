@@ -12,22 +12,7 @@ PRESET=presets/7008C.ini
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-report.XXXXXX") || exit 1
 trap 'rm -rf "$TMP"' EXIT INT TERM
 
-n=0
-failed=0
-t() {
-    n=$((n + 1))
-    if [ "$1" -eq 0 ]; then
-        echo "ok $n - $2"
-    else
-        echo "not ok $n - $2"
-        failed=$((failed + 1))
-    fi
-}
-code() {
-    [ "$1" -eq "$2" ]
-    t $? "$3 (exit $1, want $2)"
-    [ "$1" -eq "$2" ] || sed 's/^/# /' "$TMP/err" 2>/dev/null | head -5
-}
+. "$(dirname "$0")/tap.sh"
 
 # ---- the text report ----
 "$ACBB" report "$PRESET" --md "$TMP/SEED.md" >"$TMP/out.txt" 2>"$TMP/err"
@@ -112,5 +97,4 @@ code $? 2 "missing preset file exits 2"
 "$ACBB" report "$PRESET" --md "$TMP/no/such/dir/x.md" >/dev/null 2>"$TMP/err"
 code $? 2 "unwritable --md path exits 2"
 
-echo "1..$n"
-[ "$failed" -eq 0 ]
+tap_done
