@@ -217,5 +217,92 @@ ok $? "terminal restored after SIGTERM"
 wait_for "EXIT=143" && ! screen | grep -q "1 Run"
 ok $? "SIGTERM: the shell's screen is back (alternate screen left)"
 
+# ---- session 4: the accuracy screen (8), plan cut to one knob ----
+# ACBB_TUI_ACCURACY_KNOBS=contact_grid keeps the benchmark to 9 settings
+# (a few seconds); C locale and NO_COLOR: the chart must stay ASCII. The
+# errors are deterministic, so the screen must match the CLI's CSV.
+"$ACBB" bench accuracy "$TMP/copy.ini" --knobs contact_grid --repeat 1 --csv "$TMP/acc.csv" >/dev/null 2>&1
+# CSV: knob,key,value,...,e_loss (14),e_T (15); shown as the CLI's %.2f.
+WANT_E4=$(awk -F, '$1 == "contact_grid" && $3 == "4" { printf "%.2f", 100 * $14 }' "$TMP/acc.csv")
+# within_tol VALUE: the CSV says contact_grid=VALUE is within 1 % on loss and T.
+within_tol() {
+    awk -F, -v v="$1" '$1 == "contact_grid" && $3 == v && $14 <= 0.01 && $15 <= 0.01 { f = 1 } END { exit !f }' "$TMP/acc.csv"
+}
+start "env NO_COLOR=1 LC_ALL=C ACBB_TUI_ACCURACY_KNOBS=contact_grid" exit4
+wait_for "ready"
+keys 1 BTab
+wait_for "[8 Accuracy]"
+ok $? "Shift-Tab from screen 1 wraps to tab 8 Accuracy"
+keys 6 Tab Tab
+wait_for "[8 Accuracy]"
+ok $? "Tab reaches screen 8"
+keys 1 8
+wait_for "b runs it on the edited scene"
+ok $? "key 8 opens the Accuracy screen"
+keys b
+wait_for "/9 settings" 10
+ok $? "b starts the benchmark in the background: progress k/9 settings"
+wait_for "done: 9 settings" 120
+ok $? "the benchmark finishes: done: 9 settings"
+loss4=$(screen | grep '^contact_grid=4 ' | awk '{ print $(NF - 3) }')
+[ -n "$WANT_E4" ] && [ "$loss4" = "$WANT_E4" ]
+ok $? "contact_grid=4 loss error $loss4 % = CLI CSV $WANT_E4 %"
+fr=$(screen | sed -n 's/.*frontier (cheapest within 1% on loss, T): contact_grid=\([0-9]*\) .*/\1/p')
+[ -n "$fr" ] && [ "$fr" != 4 ] && within_tol "$fr"
+ok $? "frontier line picks contact_grid=$fr, within 1 % by the CLI's numbers"
+marks=$(screen | sed -n '/G contact_grid/,$p' | tr -cd G | wc -c)
+[ "$marks" -ge 4 ] && screen | grep -q '^ *1% [ -]' && screen | grep -q '^ *0 .*G'
+ok $? "chart: legend + $((marks - 1)) G markers, the 1 % line, the reference on the zero floor"
+! screen | LC_ALL=C grep -q '[^ -~]'
+ok $? "C locale: the accuracy screen is ASCII only"
+keys End
+wait_for "contact_grid=64"
+screen | grep '^contact_grid=64 ' | awk '$2 == "R" && $(NF - 3) == "0" && $(NF - 2) == "0" { f = 1 } END { exit !f }'
+ok $? "End scrolls to the reference row contact_grid=64: R, errors 0"
+keys g
+wait_for "wrote 2 accuracy plots" 60
+ok $? "g on screen 8 exports the accuracy plot"
+[ "$(head -c 8 "$TMP/acbb-plots/accuracy.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] &&
+    grep -q "<svg" "$TMP/acbb-plots/accuracy.svg"
+ok $? "accuracy.png is a PNG, accuracy.svg an SVG"
+
+keys b
+wait_for "running" 10
+keys x
+wait_for "cancelled after" 10
+ok $? "x cancels a running benchmark: the screen says cancelled"
+keys b
+wait_for "running" 10
+keys Escape
+wait_for "cancelled after" 10
+ok $? "Esc cancels too"
+keys 2
+wait_for "46 nodes"
+ok $? "after the cancel the TUI stays responsive (screen 2)"
+keys 8
+wait_for "cancelled after"
+ok $? "back on screen 8 the cancelled state is kept"
+keys q
+wait_file "$TMP/exit4" 10
+[ "$(cat "$TMP/exit4" 2>/dev/null)" = "EXIT=0" ]
+ok $? "q quits with exit status 0 after the benchmark"
+
+# Quit while a benchmark runs: the thread is cancelled and joined at once.
+start "ACBB_TUI_ACCURACY_KNOBS=contact_grid" exit5
+wait_for "ready"
+keys b
+wait_for "running" 10
+keys q
+wait_file "$TMP/exit5" 3
+[ "$(cat "$TMP/exit5" 2>/dev/null)" = "EXIT=0" ]
+ok $? "q during a benchmark exits 0 at once"
+tty_restored "$TMP/stty.exit5"
+ok $? "terminal restored after quitting mid-benchmark"
+
+start "ACBB_TUI_ACCURACY_KNOBS=contact_grid,nosuch" exit6
+wait_file "$TMP/exit6" 10
+[ "$(cat "$TMP/exit6" 2>/dev/null)" = "EXIT=2" ] && screen | grep -q "unknown knob 'nosuch'"
+ok $? "a bad ACBB_TUI_ACCURACY_KNOBS is refused with exit 2"
+
 echo "1..$n"
 [ "$failed" -eq 0 ]

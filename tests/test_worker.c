@@ -1,6 +1,8 @@
 /* Tests of the TUI's curses-free parts: the worker thread hand-off (also
  * run under ThreadSanitizer), the layout function for several terminal
- * sizes, the progress estimate, the chart raster and the editor model. */
+ * sizes, the progress estimate, the chart raster and the editor model;
+ * the accuracy screen's pieces: the engine's cancel hook, the benchmark
+ * thread (bench.c) and the log-log chart model (acc_chart.c). */
 #include <dirent.h>
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -14,6 +16,8 @@
 #include <unistd.h>
 
 #include "tap.h"
+#include "acc_chart.h"
+#include "bench.h"
 #include "chart.h"
 #include "editor.h"
 #include "layout.h"
@@ -480,6 +484,322 @@ static void test_worker_cycles(const acbb_scene *s0, int cycles)
     ok(now_s() - t0 < 2.0, "cycles: free joins (%.3f s)", now_s() - t0);
 }
 
+/* ---- accuracy screen: layout, chart model, formats ---- */
+
+static void check_acc_layout(int rows, int cols)
+{
+    acbb_layout l;
+    acbb_layout_compute(rows, cols, &l);
+    const acbb_rect p[3] = { l.acc_table, l.acc_frontier, l.acc_chart };
+    int inside = 1, apart = 1, area = 0;
+    for (int i = 0; i < 3; i++) {
+        /* Below the screen's title and progress rows, inside the body. */
+        inside &= acbb_rect_inside(p[i], rows, cols) && p[i].y >= l.body.y + 2 &&
+                  p[i].y + p[i].h <= l.body.y + l.body.h;
+        area += p[i].h * p[i].w;
+        for (int j = i + 1; j < 3; j++) apart &= !acbb_rect_overlap(p[i], p[j]);
+    }
+    ok(inside && apart, "%dx%d: accuracy table, frontier, chart inside the body, apart", cols, rows);
+    /* Wide: a one-column gap between table and chart; else they tile. */
+    int gap = cols >= ACBB_LAYOUT_ACC_WIDE_COLS ? l.body.h - 2 : 0;
+    ok(area + gap == (l.body.h - 2) * l.body.w, "%dx%d: accuracy panels fill the body below its 2 rows",
+       cols, rows);
+    ok(l.acc_table.w >= ACBB_LAYOUT_ACC_TABLE_W && l.acc_chart.h >= 7 && l.acc_table.h >= 6,
+       "%dx%d: table %d wide x %d rows, chart %d rows", cols, rows, l.acc_table.w, l.acc_table.h,
+       l.acc_chart.h);
+}
+
+static void test_acc_layout(void)
+{
+    check_acc_layout(24, 80);
+    check_acc_layout(30, 100);
+    check_acc_layout(60, 200);
+    acbb_layout l;
+    /* 80x24: body rows 1..21; rows 3..21 split: table (19 - 2) / 2 = 8,
+     * frontier 2, chart 9 (title, 7 plot rows, x labels). */
+    acbb_layout_compute(24, 80, &l);
+    ok(l.acc_table.y == 3 && l.acc_table.h == 8 && l.acc_frontier.y == 11 && l.acc_frontier.h == 2 &&
+           l.acc_chart.y == 13 && l.acc_chart.h == 9 && l.acc_chart.w == 80,
+       "80x24: accuracy table 8 rows at 3, frontier at 11, chart 9 rows at 13");
+    /* 200x60 (wide): table 74 wide on the left, chart from column 75. */
+    acbb_layout_compute(60, 200, &l);
+    ok(l.acc_table.x == 0 && l.acc_table.w == 74 && l.acc_chart.x == 75 && l.acc_chart.w == 125 &&
+           l.acc_chart.h == 55 && l.acc_frontier.h == 8 && l.acc_table.h == 47,
+       "200x60: table 74 x 47 + frontier 8 on the left, chart 125 x 55 on the right");
+}
+
+static acbb_accuracy_row acc_row(acbb_accuracy_knob k, double ms, double e_loss, double e_T)
+{
+    acbb_accuracy_row r;
+    memset(&r, 0, sizeof r);
+    r.knob = k;
+    r.status = ACBB_OK;
+    r.wall_ms = ms;
+    r.e_loss = e_loss;
+    r.e_T = e_T;
+    return r;
+}
+
+static void test_acc_chart(void)
+{
+    acbb_accuracy_row rows[7];
+    rows[0] = acc_row(ACBB_KNOB_CONTACT_GRID, 10, 0.02, 0.01);    /* 2 %: x 1, y log10 2 */
+    rows[1] = acc_row(ACBB_KNOB_CONTACT_GRID, 100, 5e-4, 1e-3);   /* 0.1 %: x 2, y -1 */
+    rows[2] = acc_row(ACBB_KNOB_CONTACT_GRID, 1000, 0, 0);        /* reference: x 3, y = floor */
+    rows[3] = acc_row(ACBB_KNOB_HERTZ, 20, 0.1, 0.1);
+    rows[3].status = ACBB_DIVERGED;                                /* failed: left out */
+    rows[4] = acc_row(ACBB_KNOB_MODEL, 30, 0.1, 0.1);
+    rows[4].skipped = 1;                                           /* skipped: left out */
+    rows[5] = acc_row(ACBB_KNOB_HERTZ, 40, NAN, 0.1);              /* undefined: left out */
+    rows[6] = acc_row(ACBB_KNOB_NETWORK, 50, 16.5, 0.07);          /* 1650 %: y 3.217 */
+    is_close(acbb_acc_error_pct(&rows[1]), 0.1, 1e-12, 0, "acc chart: error = max(e_loss, e_T) in %%");
+    ok(isnan(acbb_acc_error_pct(&rows[3])) && isnan(acbb_acc_error_pct(&rows[5])),
+       "acc chart: no error for a failed row or an undefined one");
+    static acbb_acc_chart m;
+    size_t n = acbb_acc_chart_build(rows, 7, &m);
+    ok(n == 4 && m.p[0].row == 0 && m.p[1].row == 1 && m.p[2].row == 2 && m.p[3].row == 6,
+       "acc chart: 4 points (rows 0 1 2 6), failed/skipped/undefined left out (n = %zu)", n);
+    /* Decades: 10 .. 1000 ms -> 1 .. 3; errors 0.1 .. 1650 % -> ceil(3.217) = 4
+     * at the top, floor(-1) - 1 = -2 at the bottom (the zeros' decade). */
+    ok(m.xmin == 1 && m.xmax == 3 && m.ymin == -2 && m.ymax == 4,
+       "acc chart: x 1..3, y -2..4 decades (got %g..%g, %g..%g)", m.xmin, m.xmax, m.ymin, m.ymax);
+    is_close(m.p[0].y, 0.30102999566398120, 1e-14, 0, "acc chart: 2 %% at log10 2");
+    ok(m.p[2].zero && m.p[2].y == -2 && !m.p[0].zero, "acc chart: the reference's 0 sits on the floor");
+    is_close(m.p[3].y, log10(1650.0), 1e-14, 0, "acc chart: 1650 %% at log10 1650");
+
+    /* Cells on an 11 x 4 raster (22 x 16 dots): x 1 -> dot 0, cell 0;
+     * x 3 -> dot 21, cell 10; x 2 -> dot 10.5 -> cell 5 either way.
+     * y log10 2: (1 - 2.30103 / 6) * 15 = 9.247 -> dot 9, row 2;
+     * y -2 -> dot 15, row 3; y 4 -> dot 0, row 0. */
+    static acbb_chart c;
+    int row = -1, col = -1;
+    acbb_chart_init(&c, 11, 4, m.xmin, m.xmax, m.ymin, m.ymax);
+    ok(acbb_chart_locate(&c, 1, log10(2.0), &row, &col) && row == 2 && col == 0,
+       "acc chart: (10 ms, 2 %%) in cell row 2 col 0 (got %d %d)", row, col);
+    ok(acbb_chart_locate(&c, 3, -2, &row, &col) && row == 3 && col == 10,
+       "acc chart: (1 s, 0) in the bottom-right cell (got %d %d)", row, col);
+    ok(acbb_chart_locate(&c, 2, 4, &row, &col) && row == 0 && col == 5,
+       "acc chart: (100 ms, 10^4 %%) in row 0 col 5 (got %d %d)", row, col);
+    ok(!acbb_chart_locate(&c, 0.5, 0, &row, &col) && !acbb_chart_locate(&c, 2, NAN, &row, &col),
+       "acc chart: points outside the ranges or NaN have no cell");
+    /* The marker cell is where acbb_chart_plot put the point's dot. */
+    const double px[1] = { 1 }, py[1] = { 0.30102999566398120 };
+    acbb_chart_plot(&c, px, py, 1, 0);
+    ok(c.dots[2][0] != 0 && c.owner[2][0] == 0, "acc chart: the plotted dot is in the located cell");
+
+    n = acbb_acc_chart_build(rows, 0, &m);
+    ok(n == 0 && m.xmax > m.xmin && m.ymin == -1 && m.ymax == 1,
+       "acc chart: no points -> 1 ms..10 ms, 0.1 %%..10 %% (tolerance 1 %% inside)");
+
+    int distinct = 1;
+    for (int i = 0; i < ACBB_KNOB_COUNT; i++)
+        for (int j = i + 1; j < ACBB_KNOB_COUNT; j++)
+            distinct &= acbb_acc_knob_letter((acbb_accuracy_knob)i) != acbb_acc_knob_letter((acbb_accuracy_knob)j);
+    ok(distinct && acbb_acc_knob_letter(ACBB_KNOB_CONTACT_GRID) == 'G', "acc chart: 7 distinct knob letters");
+
+    char b[16];
+    acbb_acc_fmt_pct(0.02205804262, b, sizeof b);
+    ok(strcmp(b, "2.21") == 0, "fmt pct: 0.0220580 -> 2.21 (got %s)", b);
+    acbb_acc_fmt_pct(1.724105806e-05, b, sizeof b);
+    ok(strcmp(b, "2e-03") == 0, "fmt pct: 1.72e-5 -> 2e-03 (got %s)", b);
+    acbb_acc_fmt_pct(0, b, sizeof b);
+    ok(strcmp(b, "0") == 0, "fmt pct: exact 0 -> 0");
+    acbb_acc_fmt_pct(NAN, b, sizeof b);
+    ok(strcmp(b, "-") == 0, "fmt pct: NaN -> -");
+    acbb_acc_fmt_pct(16.4865, b, sizeof b);
+    ok(strcmp(b, "2e+03") == 0, "fmt pct: 1648.65 %% -> 2e+03 (got %s)", b);
+    acbb_acc_fmt_pct_decade(0, b, sizeof b);
+    int dec_ok = strcmp(b, "1%") == 0;
+    acbb_acc_fmt_pct_decade(-5, b, sizeof b);
+    dec_ok &= strcmp(b, "1e-05%") == 0;
+    acbb_acc_fmt_ms_decade(3, b, sizeof b);
+    dec_ok &= strcmp(b, "1s") == 0;
+    acbb_acc_fmt_ms_decade(7, b, sizeof b);
+    ok(dec_ok && strcmp(b, "1e+07ms") == 0, "decade labels: 1%%, 1e-05%%, 1s, 1e+07ms");
+    acbb_accuracy_row r = acc_row(ACBB_KNOB_CONTACT_GRID, 1, 0, 0);
+    snprintf(r.key, sizeof r.key, "fidelity.contact_grid");
+    snprintf(r.value, sizeof r.value, "4");
+    acbb_acc_setting_label(&r, b, sizeof b);
+    ok(strcmp(b, "contact_grid=4") == 0, "setting label: contact_grid=4");
+}
+
+/* ---- the engine's cancel hook (include/acbb/accuracy.h) ---- */
+
+typedef struct {
+    _Atomic int *cancel;
+    size_t at;         /* set the flag when this many settings are done */
+    size_t calls;
+} cancel_at;
+
+static void cancel_on_progress(void *ctx, size_t done, size_t total)
+{
+    cancel_at *c = ctx;
+    (void)total;
+    c->calls++;
+    if (done == c->at) atomic_store(c->cancel, 1);
+}
+
+typedef struct {
+    _Atomic int *cancel;
+    int after_ms;
+    double t_set;
+} cancel_later;
+
+static void *cancel_thread(void *p)
+{
+    cancel_later *c = p;
+    sleep_ms(c->after_ms);
+    c->t_set = now_s();
+    atomic_store(c->cancel, 1);
+    return NULL;
+}
+
+static void test_accuracy_cancel(const acbb_scene *s0)
+{
+    static acbb_accuracy_row rows[ACBB_BENCH_MAX_ROWS], full[ACBB_BENCH_MAX_ROWS];
+    acbb_error err = { { 0 } };
+    _Atomic int flag = 1;
+    size_t n = 99;
+    acbb_accuracy_options o = { .knobs = ACBB_ACCURACY_KNOB_BIT(ACBB_KNOB_CONTACT_GRID), .repeats = 1,
+                                .cancel = &flag };
+    acbb_status st = acbb_accuracy_run(s0, &o, rows, ACBB_BENCH_MAX_ROWS, &n, NULL, NULL, &err);
+    ok(st == ACBB_NOT_CONVERGED && n == 0, "cancel: a set flag runs nothing (st %d, n %zu)", st, n);
+    has_substr(err.msg, "accuracy: cancelled after 0 of 9 settings", "cancel: the message counts");
+
+    /* Cancelled from the progress callback after 2 settings: exactly 2 rows,
+     * their results as in a full run (deterministic), errors NaN. */
+    atomic_store(&flag, 0);
+    cancel_at at = { &flag, 2, 0 };
+    st = acbb_accuracy_run(s0, &o, rows, ACBB_BENCH_MAX_ROWS, &n, cancel_on_progress, &at, &err);
+    ok(st == ACBB_NOT_CONVERGED && n == 2 && at.calls == 2, "cancel after 2 of 9: 2 rows (n %zu)", n);
+    has_substr(err.msg, "cancelled after 2 of 9 settings", "cancel after 2: message");
+    acbb_accuracy_options plain = { .knobs = o.knobs, .repeats = 1 };
+    size_t nf = 0;
+    st = acbb_accuracy_run(s0, &plain, full, ACBB_BENCH_MAX_ROWS, &nf, NULL, NULL, &err);
+    ok(st == ACBB_OK && nf == 9, "no hook: the whole plan runs (9 rows)");
+    ok(rows[0].loss == full[0].loss && rows[1].dT_outer == full[1].dT_outer &&
+           strcmp(rows[1].value, "6") == 0,
+       "cancel: the finished rows hold the full run's results (grid 4 and 6)");
+    ok(isnan(rows[0].e_loss) && isnan(rows[1].e_T) && full[0].e_loss > 0,
+       "cancel: errors left NaN (no reference ran)");
+
+    /* Mid-run: the network knob on a 24-point grid takes a few hundred ms
+     * per setting; a cancel 30 ms in must end the call within a small part
+     * of that (one coupled step), not after the setting. */
+    acbb_scene s = *s0;
+    ok(acbb_scene_set(&s, "fidelity.contact_grid", "24", &err) == ACBB_OK, "scene: contact_grid 24");
+    acbb_accuracy_options on = { .knobs = ACBB_ACCURACY_KNOB_BIT(ACBB_KNOB_NETWORK), .repeats = 1 };
+    st = acbb_accuracy_run(&s, &on, full, ACBB_BENCH_MAX_ROWS, &nf, NULL, NULL, &err);
+    double row_ms = full[0].wall_ms;
+    ok(st == ACBB_OK && nf == 2 && row_ms > 100, "network=7 at grid 24 takes %.0f ms (> 100)", row_ms);
+    atomic_store(&flag, 0);
+    on.cancel = &flag;
+    cancel_later cl = { &flag, 30, 0 };
+    pthread_t th;
+    pthread_create(&th, NULL, cancel_thread, &cl);
+    st = acbb_accuracy_run(&s, &on, rows, ACBB_BENCH_MAX_ROWS, &n, NULL, NULL, &err);
+    double late_ms = 1e3 * (now_s() - cl.t_set);
+    pthread_join(th, NULL);
+    ok(st == ACBB_NOT_CONVERGED && n == 0, "mid-run cancel: the interrupted setting is dropped (n %zu)", n);
+    ok(late_ms < 0.25 * row_ms, "mid-run cancel: returned %.1f ms after the flag (setting: %.0f ms)",
+       late_ms, row_ms);
+}
+
+/* ---- the benchmark thread (bench.c) ---- */
+
+static acbb_bench_state bst; /* test scratch, main thread only */
+
+static void test_bench(const acbb_scene *s0)
+{
+    acbb_bench *b = NULL;
+    acbb_error err = { { 0 } };
+    ok(acbb_bench_new(&b, &err) == ACBB_OK, "bench: created");
+    acbb_bench_read(b, &bst);
+    ok(bst.phase == ACBB_BENCH_IDLE && bst.n == 0 && bst.picks[0] == -1, "bench: idle at first");
+    ok(!acbb_bench_cancel(b), "bench: nothing to cancel when idle");
+
+    /* A short plan: the hertz knob (3 settings). The thread's rows must be
+     * the engine's own (errors are deterministic). */
+    static acbb_accuracy_row direct[ACBB_BENCH_MAX_ROWS];
+    acbb_accuracy_options o = { .knobs = ACBB_ACCURACY_KNOB_BIT(ACBB_KNOB_HERTZ), .repeats = 1 };
+    size_t nd = 0;
+    acbb_accuracy_run(s0, &o, direct, ACBB_BENCH_MAX_ROWS, &nd, NULL, NULL, &err);
+    ok(acbb_bench_start(b, s0, &o, &err) == ACBB_OK, "bench: hertz plan started (%s)", err.msg);
+    ok(acbb_bench_wait(b, 60000), "bench: the plan ends");
+    acbb_bench_read(b, &bst);
+    int same = bst.n == nd && nd == 3;
+    for (size_t i = 0; same && i < nd; i++)
+        same = bst.rows[i].e_loss == direct[i].e_loss && bst.rows[i].e_T == direct[i].e_T &&
+               strcmp(bst.rows[i].value, direct[i].value) == 0;
+    ok(bst.phase == ACBB_BENCH_DONE && bst.done == 3 && bst.total == 3 && same,
+       "bench: done, 3/3 settings, rows equal a direct acbb_accuracy_run");
+    long p = bst.picks[ACBB_KNOB_HERTZ];
+    ok(p >= 0 && p < 3 && bst.rows[p].e_loss <= ACBB_ACCURACY_FRONTIER_TOL && bst.picks[ACBB_KNOB_MODEL] == -1,
+       "bench: frontier pick for hertz within 1 %%, none for absent knobs");
+    ok(bst.ended_s >= bst.started_s && bst.run_id == 1 && bst.opt.cancel == NULL &&
+           bst.opt.knobs == o.knobs,
+       "bench: run 1, timed, options kept without the hook");
+    fd_set rf;
+    struct timeval tv = { 0, 0 };
+    FD_ZERO(&rf);
+    FD_SET(acbb_bench_wake_fd(b), &rf);
+    ok(select(acbb_bench_wake_fd(b) + 1, &rf, NULL, NULL, &tv) == 1, "bench: wake-up pipe readable");
+    acbb_bench_drain_wake(b);
+    FD_ZERO(&rf);
+    FD_SET(acbb_bench_wake_fd(b), &rf);
+    tv.tv_sec = 0;
+    ok(select(acbb_bench_wake_fd(b) + 1, &rf, NULL, NULL, &tv) == 0, "bench: drained");
+
+    /* Cancel: contact_grid (9 settings, ~2 s); read concurrently while it
+     * runs (TSan watches), cancel after the first rows arrive. */
+    o.knobs = ACBB_ACCURACY_KNOB_BIT(ACBB_KNOB_CONTACT_GRID);
+    ok(acbb_bench_start(b, s0, &o, &err) == ACBB_OK, "bench: contact_grid plan started");
+    double t0 = now_s();
+    size_t seen = 0, reads = 0;
+    do {
+        acbb_bench_read(b, &bst);
+        reads++;
+        if (bst.done < seen || bst.n != bst.done) break; /* must never go back */
+        seen = bst.done;
+        sleep_ms(1);
+    } while (bst.done < 2 && bst.phase == ACBB_BENCH_RUNNING && now_s() - t0 < 120);
+    ok(bst.phase == ACBB_BENCH_RUNNING && bst.done >= 2 && bst.n == bst.done && bst.total == 9,
+       "bench: progress published row by row (%zu/%zu after %zu reads)", bst.done, bst.total, reads);
+    ok(bst.run_id == 2 && isnan(bst.rows[0].e_loss) && bst.rows[0].loss > 0,
+       "bench: live rows have results, errors still unknown");
+    /* The plan has ~2 s to go: its thread is alive for these two checks. */
+    int sb = worker_threads_block_signals();
+    ok(sb == 1, "bench: its thread blocks SIGINT/SIGTERM/SIGHUP/SIGWINCH (%d)", sb);
+    ok(acbb_bench_start(b, s0, &o, &err) == ACBB_EINVAL, "bench: a second start while running is refused");
+    has_substr(err.msg, "already running", "bench: ... saying so");
+    ok(acbb_bench_cancel(b), "bench: cancel accepted while running");
+    acbb_bench_read(b, &bst);
+    ok(bst.cancel_requested, "bench: the cancel request is published");
+    ok(acbb_bench_wait(b, 60000), "bench: cancelled plan ends");
+    acbb_bench_read(b, &bst);
+    ok(bst.phase == ACBB_BENCH_CANCELLED && bst.n < 9 && bst.n >= 2, "bench: cancelled with %zu rows", bst.n);
+    has_substr(bst.message, "cancelled after", "bench: cancel message");
+    ok(!acbb_bench_cancel(b), "bench: nothing to cancel after the end");
+
+    /* A scene the engine refuses: FAILED with its message. */
+    acbb_scene bad = *s0;
+    bad.ball_diameter = -1.0;
+    ok(acbb_bench_start(b, &bad, &o, &err) == ACBB_OK && acbb_bench_wait(b, 60000),
+       "bench: bad scene: the thread starts and ends");
+    acbb_bench_read(b, &bst);
+    ok(bst.phase == ACBB_BENCH_FAILED && bst.n == 0 && bst.message[0], "bench: failed: %s", bst.message);
+    o.repeats = ACBB_ACCURACY_MAX_REPEATS + 1;
+    ok(acbb_bench_start(b, s0, &o, &err) == ACBB_EINVAL, "bench: bad options refused at start");
+    o.repeats = 1;
+
+    /* Freeing while running cancels and joins within a step or so. */
+    ok(acbb_bench_start(b, s0, &o, &err) == ACBB_OK, "bench: started again");
+    sleep_ms(20);
+    t0 = now_s();
+    acbb_bench_free(b);
+    ok(now_s() - t0 < 1.0, "bench: free while running joins quickly (%.3f s)", now_s() - t0);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -487,12 +807,16 @@ int main(void)
     test_progress();
     test_chart();
     test_editor();
+    test_acc_layout();
+    test_acc_chart();
     acbb_scene s0;
     acbb_error err = { { 0 } };
     if (acbb_scene_load("presets/7008C.ini", &s0, &err) != ACBB_OK) {
         ok(0, "load presets/7008C.ini: %s", err.msg);
         return done_testing();
     }
+    test_accuracy_cancel(&s0);
+    test_bench(&s0);
     test_worker_basics(&s0);
     const char *env = getenv("ACBB_WORKER_CYCLES");
     test_worker_cycles(&s0, env ? atoi(env) : 200);

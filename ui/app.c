@@ -176,6 +176,8 @@ static void global_key(acbb_app *a, int ch)
     case 'W': acbb_app_prompt(a, ACBB_PROMPT_SAVE_AS, "save as: ", a->ed.path); break;
     case 'o': acbb_screen_browse_begin(a); break;
     case 'g': acbb_screen_plot_export(a); break;
+    case 'b': acbb_screen_accuracy_start(a, 0); break;
+    case 'B': acbb_screen_accuracy_start(a, 1); break;
     case 27: a->msg[0] = '\0'; break;
     case KEY_RESIZE: break;
     default:
@@ -193,6 +195,7 @@ static int screen_key(acbb_app *a, int ch)
     case ACBB_SCR_EDIT: return acbb_screen_edit_key(a, ch);
     case ACBB_SCR_COMPARE: return acbb_screen_compare_key(a, ch);
     case ACBB_SCR_PLOT: return acbb_screen_plot_key(a, ch);
+    case ACBB_SCR_ACCURACY: return acbb_screen_accuracy_key(a, ch);
     default: return 0;
     }
 }
@@ -276,6 +279,7 @@ static const char *hint(const acbb_app *a)
     case ACBB_SCR_EDIT: return "Enter edit  </> cycle  u undo  w save  W save as  o open  a apply  ? help";
     case ACBB_SCR_PLOT: return "</> kind  Enter refresh  g export PNG+SVG  ? help  q quit";
     case ACBB_SCR_COMPARE: return "t run TE vs WTE  r run  ? help  q quit";
+    case ACBB_SCR_ACCURACY: return "b benchmark  B +dynamic  x/Esc cancel  j/k scroll  g export plot  ? help";
     default: return "r run  space pause  x stop  +/- pace  a apply  t TE/WTE  g plots  ? help  q quit";
     }
 }
@@ -318,6 +322,7 @@ static void draw_body(acbb_app *a)
     case ACBB_SCR_EDIT: acbb_screen_edit_draw(a); break;
     case ACBB_SCR_COMPARE: acbb_screen_compare_draw(a); break;
     case ACBB_SCR_PLOT: acbb_screen_plot_draw(a); break;
+    case ACBB_SCR_ACCURACY: acbb_screen_accuracy_draw(a); break;
     case ACBB_SCR_COUNT: break;
     }
     if (a->mode == ACBB_MODE_BROWSE) acbb_screen_browse_draw(a);
@@ -327,6 +332,8 @@ static void draw_body(acbb_app *a)
 static void take_state(acbb_app *a)
 {
     acbb_worker_read(a->worker, &a->st, &a->hist);
+    acbb_bench_read(a->bench, &a->bst);
+    acbb_screen_accuracy_follow(a);
     if (a->st.run_id != a->prog_run) {
         acbb_progress_reset(&a->prog);
         a->prog_run = a->st.run_id;
@@ -369,18 +376,21 @@ static void frame(acbb_app *a)
 /* ---- the loop ---- */
 
 typedef struct {
-    int input, wake, signal;
+    int input, wake, bench, signal;
 } ready_fds;
 
 static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
 {
     fd_set rf;
     int wfd = acbb_worker_wake_fd(a->worker), sfd = a->term.sig_rd;
+    int bfd = acbb_bench_wake_fd(a->bench);
     FD_ZERO(&rf);
     FD_SET(STDIN_FILENO, &rf);
     FD_SET(wfd, &rf);
+    FD_SET(bfd, &rf);
     FD_SET(sfd, &rf);
     int maxfd = wfd > sfd ? wfd : sfd;
+    if (bfd > maxfd) maxfd = bfd;
     struct timeval tv = { (time_t)timeout_s, (suseconds_t)((timeout_s - (long)timeout_s) * 1e6) };
     memset(r, 0, sizeof *r);
     int n = select(maxfd + 1, &rf, NULL, NULL, &tv);
@@ -390,6 +400,7 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     }
     r->input = FD_ISSET(STDIN_FILENO, &rf);
     r->wake = FD_ISSET(wfd, &rf);
+    r->bench = FD_ISSET(bfd, &rf);
     r->signal = FD_ISSET(sfd, &rf);
 }
 
@@ -453,8 +464,12 @@ static void loop(acbb_app *a)
             acbb_worker_drain_wake(a->worker);
             stale = 1;
         }
+        if (r.bench) {
+            acbb_bench_drain_wake(a->bench);
+            stale = 1;
+        }
         if (r.input) read_keys(a, &redraw, &spins);
-        if (!r.input && !r.wake && !r.signal) stale = 1; /* timeout: refresh the clock */
+        if (!r.input && !r.wake && !r.bench && !r.signal) stale = 1; /* timeout: refresh the clock */
     }
 }
 
@@ -491,6 +506,7 @@ int acbb_app_run(const acbb_app_options *opt)
     a->chart_by_time = 1;
     a->exit_after_steady = opt->exit_after_steady;
     a->pace_idx = pace_index(opt->pace);
+    a->acc_knobs = opt->acc_knobs;
     snprintf(a->plot_dir, sizeof a->plot_dir, "%s", opt->plot_dir ? opt->plot_dir : "./acbb-plots");
     load_initial(a, opt->preset);
 
@@ -501,15 +517,19 @@ int acbb_app_run(const acbb_app_options *opt)
         return 2;
     }
     int rc = 0;
-    if (acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
+    if (acbb_bench_new(&a->bench, &err) != ACBB_OK ||
+        acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
         acbb_term_close(&a->term);
+        acbb_bench_free(a->bench);
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         rc = 1;
     } else {
         if (a->exit_after_steady) post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started");
         loop(a);
-        /* Restore the terminal first so a slow join never leaves it raw. */
+        /* Restore the terminal first so a slow join never leaves it raw.
+         * A running benchmark is cancelled: it stops within one step. */
         acbb_term_close(&a->term);
+        acbb_bench_free(a->bench);
         acbb_worker_free(a->worker);
         rc = a->exit_code;
     }

@@ -7,6 +7,7 @@
 
 #include <limits.h>
 #include "acbb/history.h"
+#include "bench.h"
 #include "chart.h"
 #include "editor.h"
 #include "layout.h"
@@ -16,7 +17,7 @@
 
 typedef enum {
     ACBB_SCR_RUN, ACBB_SCR_NODES, ACBB_SCR_BALLS, ACBB_SCR_CHARTS, ACBB_SCR_EDIT,
-    ACBB_SCR_COMPARE, ACBB_SCR_PLOT, ACBB_SCR_COUNT
+    ACBB_SCR_COMPARE, ACBB_SCR_PLOT, ACBB_SCR_ACCURACY, ACBB_SCR_COUNT
 } acbb_screen_id;
 
 typedef enum {
@@ -67,6 +68,13 @@ typedef struct {
     unsigned long shown_err;       /* worker error already shown */
     int exit_after_steady;
     unsigned long start_cmd;       /* command that started the watched run */
+    /* accuracy screen */
+    acbb_bench *bench;             /* the benchmark thread's hand-off */
+    acbb_bench_state bst;          /* copy of its published state, once per frame */
+    unsigned acc_knobs;            /* knob mask for b/B (0 = all) */
+    char acc_scene[256];           /* name of the scene the benchmark ran on */
+    unsigned long acc_seen_run;    /* run whose end was already announced */
+    int acc_top;                   /* first table row shown */
     int quit, exit_code;
     acbb_chart chart;              /* scratch raster */
 } acbb_app;
@@ -77,6 +85,7 @@ typedef struct {
     const char *plot_dir;          /* NULL: ./acbb-plots */
     int pace;                      /* steps per second, 0 = flat out */
     int exit_after_steady;
+    unsigned acc_knobs;            /* accuracy plan knob mask (0 = all) */
 } acbb_app_options;
 
 /* Run the TUI until the user quits; returns the exit code. */
@@ -103,6 +112,8 @@ void acbb_hrule(acbb_app *a, int y, int x, int w);
 /* A chart in rect: title row, y labels on the left; up to 3 series. */
 void acbb_draw_chart(acbb_app *a, acbb_rect r, const char *title, const double *x,
                      const double *const *ys, const char *const *names, int nser, size_t n);
+/* The accuracy screen's error-vs-time chart of a->bst in rect (draw_acc_chart.c). */
+void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r);
 /* "1h02m", "12.3s", "--" for unknown. */
 void acbb_fmt_duration(double s, char *buf, size_t n);
 
@@ -126,6 +137,12 @@ int acbb_screen_compare_key(acbb_app *a, int ch);
 void acbb_screen_plot_draw(acbb_app *a);
 int acbb_screen_plot_key(acbb_app *a, int ch);
 void acbb_screen_plot_export(acbb_app *a);
+void acbb_screen_accuracy_draw(acbb_app *a);
+int acbb_screen_accuracy_key(acbb_app *a, int ch);
+/* Start the benchmark on the edited scene (with the dynamic level or not). */
+void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic);
+/* Announce the end of a benchmark on the message line (once per run). */
+void acbb_screen_accuracy_follow(acbb_app *a);
 void acbb_screen_help_draw(acbb_app *a);
 int acbb_screen_help_key(acbb_app *a, int ch);
 

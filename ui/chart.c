@@ -80,6 +80,15 @@ void acbb_chart_plot(acbb_chart *c, const double *x, const double *y, size_t n, 
     }
 }
 
+int acbb_chart_locate(const acbb_chart *c, double x, double y, int *row, int *col)
+{
+    if (!isfinite(x) || !isfinite(y) || x < c->xmin || x > c->xmax || y < c->ymin || y > c->ymax)
+        return 0;
+    *row = to_dy(c, y) / 4;
+    *col = to_dx(c, x) / 2;
+    return 1;
+}
+
 int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf)
 {
     unsigned char d = c->dots[row][col];

@@ -27,6 +27,10 @@ void acbb_chart_init(acbb_chart *c, int w, int h, double xmin, double xmax, doub
 void acbb_chart_plot(acbb_chart *c, const double *x, const double *y, size_t n, int series);
 /* The glyph of cell (row, col) into buf (>= 8 bytes); returns the owner. */
 int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf);
+/* The cell (row, col) holding the dot that acbb_chart_plot draws for the
+ * point (x, y); 0 (row/col unchanged) if the point is non-finite or outside
+ * the ranges. Lets a caller write a marker where a point was plotted. */
+int acbb_chart_locate(const acbb_chart *c, double x, double y, int *row, int *col);
 /* Smallest and largest finite value of v[0..n) into *lo, *hi (unchanged if none). */
 void acbb_chart_extend(const double *v, size_t n, double *lo, double *hi);
 

@@ -53,6 +53,28 @@ static void charts(acbb_layout *l)
     }
 }
 
+#define ACC_HEAD_H 2        /* accuracy screen: title and progress rows */
+#define ACC_FRONTIER_NARROW 2 /* the frontier as wrapped text */
+#define ACC_FRONTIER_WIDE 8 /* header + one line per knob */
+
+static void accuracy(acbb_layout *l)
+{
+    acbb_rect b = l->body;
+    int y = b.y + ACC_HEAD_H, h = b.h - ACC_HEAD_H;
+    if (l->cols >= ACBB_LAYOUT_ACC_WIDE_COLS) {
+        int tw = ACBB_LAYOUT_ACC_TABLE_W, fh = ACC_FRONTIER_WIDE < h / 2 ? ACC_FRONTIER_WIDE : h / 2;
+        l->acc_table = rect(y, b.x, h - fh, tw);
+        l->acc_frontier = rect(y + h - fh, b.x, fh, tw);
+        l->acc_chart = rect(y, b.x + tw + 1, h, b.w - tw - 1);
+    } else {
+        /* Half of what is left for the table, the rest for the chart. */
+        int th = (h - ACC_FRONTIER_NARROW) / 2;
+        l->acc_table = rect(y, b.x, th, b.w);
+        l->acc_frontier = rect(y + th, b.x, ACC_FRONTIER_NARROW, b.w);
+        l->acc_chart = rect(y + th + ACC_FRONTIER_NARROW, b.x, h - th - ACC_FRONTIER_NARROW, b.w);
+    }
+}
+
 int acbb_layout_compute(int rows, int cols, acbb_layout *l)
 {
     memset(l, 0, sizeof *l);
@@ -69,6 +91,7 @@ int acbb_layout_compute(int rows, int cols, acbb_layout *l)
     l->message = rect(rows - 1, 0, 1, cols);
     overview(l);
     charts(l);
+    accuracy(l);
     l->table_rows = l->body.h - 1;
     l->node_columns = cols / ACBB_LAYOUT_NODE_COL_W;
     if (l->node_columns > 4) l->node_columns = 4;

@@ -7,6 +7,8 @@
 #define ACBB_LAYOUT_MIN_COLS 80
 #define ACBB_LAYOUT_CHARTS 3
 #define ACBB_LAYOUT_NODE_COL_W 40  /* width of one column of the node table */
+#define ACBB_LAYOUT_ACC_TABLE_W 74 /* the accuracy table's line (screen_accuracy.c) */
+#define ACBB_LAYOUT_ACC_WIDE_COLS (ACBB_LAYOUT_ACC_TABLE_W + 1 + 60) /* chart >= 60 wide beside it */
 
 typedef struct { int y, x, h, w; } acbb_rect;
 
@@ -21,6 +23,10 @@ typedef struct {
     acbb_rect temps, losses, mech, chart;
     /* charts screen: stacked charts, inside body */
     acbb_rect charts[ACBB_LAYOUT_CHARTS];
+    /* accuracy screen, inside body below its two heading rows: the table
+     * (header + scrolled rows), the frontier, the error-vs-time chart;
+     * side by side from ACBB_LAYOUT_ACC_WIDE_COLS, stacked below it */
+    acbb_rect acc_table, acc_frontier, acc_chart;
     int table_rows;             /* data rows of the table screens (header excluded) */
     int node_columns;           /* columns of the node-temperature table */
 } acbb_layout;

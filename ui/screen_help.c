@@ -4,8 +4,8 @@
 
 static const char *const help[][2] = {
     { "Screens", NULL },
-    { "1 .. 7", "run nodes balls charts" },
-    { "", "edit TE/WTE plot" },
+    { "1 .. 8", "run nodes balls charts" },
+    { "", "edit TE/WTE plot accuracy" },
     { "Tab", "next screen" },
     { "?", "this help" },
     { "q  Ctrl-C", "quit (asks if unsaved)" },
@@ -30,6 +30,12 @@ static const char *const help[][2] = {
     { "i", "charts: x = time / iter" },
     { "g", "export PNG+SVG (gnuplot)" },
     { "< >  Enter", "plot kind / refresh plot" },
+    { "Accuracy (screen 8)", NULL },
+    { "b", "benchmark the edited scene" },
+    { "B", "same, with the dynamic level" },
+    { "x  Esc", "cancel the benchmark" },
+    { "j k PgUp/Dn", "scroll the table" },
+    { "g", "export its plot (gnuplot)" },
 };
 
 #define HELP_N (int)(sizeof help / sizeof help[0])

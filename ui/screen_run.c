@@ -7,7 +7,15 @@
 #include "app.h"
 
 static const char *const tab_names[ACBB_SCR_COUNT] = {
-    "Run", "Nodes", "Balls", "Charts", "Edit", "TE/WTE", "Plot" };
+    "Run", "Nodes", "Balls", "Charts", "Edit", "TE/WTE", "Plot", "Accuracy" };
+
+/* Columns the tab row takes with every name spelled out. */
+static int full_tabs_width(void)
+{
+    int w = 0;
+    for (int i = 0; i < ACBB_SCR_COUNT; i++) w += (int)strlen(tab_names[i]) + 4; /* "[n name]" */
+    return w;
+}
 
 void acbb_draw_title(acbb_app *a)
 {
@@ -17,16 +25,20 @@ void acbb_draw_title(acbb_app *a)
     int x = r.x;
     acbb_put(a, r.y, x, r.w, ACBB_ROLE_TITLE, " acbb ");
     x += 6;
+    /* At 80 columns eight names leave no room for the scene's name (and its
+     * unsaved-edit star), so then only the current tab keeps its name. */
+    char name[PATH_MAX + 8];
+    snprintf(name, sizeof name, "%s%s ", acbb_editor_name(&a->ed), a->ed.modified ? "*" : "");
+    int compact = x + full_tabs_width() + (int)strlen(name) + 1 > r.x + r.w;
     for (int i = 0; i < ACBB_SCR_COUNT; i++) {
         char tab[24];
-        snprintf(tab, sizeof tab, "%d %s", i + 1, tab_names[i]);
+        if (compact && (int)a->screen != i) snprintf(tab, sizeof tab, "%d", i + 1);
+        else snprintf(tab, sizeof tab, "%d %s", i + 1, tab_names[i]);
         acbb_role rr = (int)a->screen == i ? ACBB_ROLE_TAB : ACBB_ROLE_TITLE;
         /* Monochrome: brackets mark the current tab as well as bold. */
         acbb_put(a, r.y, x, r.x + r.w - x, rr, (int)a->screen == i ? "[%s]" : " %s ", tab);
         x += (int)strlen(tab) + 2;
     }
-    char name[PATH_MAX + 8];
-    snprintf(name, sizeof name, "%s%s ", acbb_editor_name(&a->ed), a->ed.modified ? "*" : "");
     int room = r.x + r.w - x - 1;
     int len = (int)strlen(name);
     if (room > 4) {

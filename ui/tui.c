@@ -12,6 +12,10 @@ static const char usage_text[] =
     "  --plot-dir DIR       where g writes PNG+SVG plots (default ./acbb-plots)\n"
     "  --exit-after-steady  start the run at once and exit when it ends\n"
     "                       (also ACBB_TUI_EXIT_AFTER_STEADY=1; exit 0 converged, 3 not)\n"
+    "Environment:\n"
+    "  ACBB_TUI_ACCURACY_KNOBS=k1,k2  knobs the accuracy screen's benchmark (b) varies\n"
+    "                       (model contact_grid hertz mech_tol steady_tol thermal network;\n"
+    "                       default all), e.g. contact_grid for a run of a few seconds\n"
     "Inside, press ? for every key.\n";
 
 static int parse_int(const char *s, int *out)
@@ -23,9 +27,28 @@ static int parse_int(const char *s, int *out)
     return 0;
 }
 
+/* "contact_grid,hertz" -> knob mask; -1 (message printed) on an unknown name. */
+static int parse_knobs(const char *text, unsigned *mask)
+{
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", text);
+    *mask = 0;
+    for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        int k = acbb_accuracy_knob_from_name(tok);
+        if (k < 0) {
+            fprintf(stderr, "acbb tui: ACBB_TUI_ACCURACY_KNOBS: unknown knob '%s'\n%s", tok, usage_text);
+            return -1;
+        }
+        *mask |= ACBB_ACCURACY_KNOB_BIT(k);
+    }
+    return 0;
+}
+
 int acbb_tui_main(int argc, char **argv)
 {
     acbb_app_options o = { 0 };
+    const char *knobs = getenv("ACBB_TUI_ACCURACY_KNOBS");
+    if (knobs && knobs[0] && parse_knobs(knobs, &o.acc_knobs) != 0) return 2;
     const char *env = getenv("ACBB_TUI_EXIT_AFTER_STEADY");
     o.exit_after_steady = env && env[0] && strcmp(env, "0") != 0;
     /* argv[0] is "tui" or the program name; options follow. */

@@ -1,0 +1,285 @@
+/* acbb TUI — the accuracy benchmark thread and its hand-off (see bench.h).
+ *
+ * The same shape as worker.c (one mutex, a wake-up pipe), but simpler: the
+ * thread lives for one plan only, so there is no command queue. The client
+ * (the UI thread) owns `thread`/`has_thread`; the bench thread owns `scene`,
+ * `opt` and `work` while it runs (written before pthread_create, read after
+ * pthread_join); everything in `st` is behind `mu`. */
+#include <errno.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bench.h"
+
+struct acbb_bench {
+    pthread_mutex_t mu;        /* guards st */
+    pthread_cond_t cv_end;     /* a plan ended (acbb_bench_wait) */
+    acbb_bench_state st;
+    _Atomic int cancel;        /* the engine's cancel hook */
+    _Atomic int wake_pending;  /* a byte sits in the pipe, not yet drained */
+    int wake_rd, wake_wr;
+    /* client thread only */
+    pthread_t thread;
+    int has_thread;            /* created and not yet joined */
+    /* bench thread only, while it runs */
+    acbb_scene scene;
+    acbb_accuracy_options opt;
+    acbb_accuracy_row work[ACBB_BENCH_MAX_ROWS];
+};
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+const char *acbb_bench_phase_name(acbb_bench_phase p)
+{
+    switch (p) {
+    case ACBB_BENCH_IDLE: return "idle";
+    case ACBB_BENCH_RUNNING: return "running";
+    case ACBB_BENCH_DONE: return "done";
+    case ACBB_BENCH_CANCELLED: return "cancelled";
+    case ACBB_BENCH_FAILED: return "failed";
+    }
+    return "?";
+}
+
+/* ---- bench thread ---- */
+
+static void wake_ui(acbb_bench *b)
+{
+    /* One byte is enough to wake select(); skip the write while one waits. */
+    if (atomic_exchange(&b->wake_pending, 1) == 0) {
+        char c = 1;
+        ssize_t r = write(b->wake_wr, &c, 1);
+        (void)r; /* EAGAIN means a byte is already there: also fine */
+    }
+}
+
+/* The engine's progress callback, on the bench thread after each setting:
+ * publish the rows finished since the last call (`work` is ours). */
+static void on_progress(void *ctx, size_t done, size_t total)
+{
+    acbb_bench *b = ctx;
+    pthread_mutex_lock(&b->mu);
+    for (size_t i = b->st.n; i < done && i < ACBB_BENCH_MAX_ROWS; i++) b->st.rows[i] = b->work[i];
+    b->st.n = done;
+    b->st.done = done;
+    b->st.total = total;
+    b->st.publications++;
+    pthread_mutex_unlock(&b->mu);
+    wake_ui(b);
+}
+
+static void *bench_main(void *p)
+{
+    acbb_bench *b = p;
+    acbb_error err = { { 0 } };
+    size_t n = 0;
+    long picks[ACBB_KNOB_COUNT];
+    acbb_status rc = acbb_accuracy_run(&b->scene, &b->opt, b->work, ACBB_BENCH_MAX_ROWS, &n,
+                                       on_progress, b, &err);
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) picks[k] = -1;
+    if (rc == ACBB_OK) acbb_accuracy_frontier(b->work, n, ACBB_ACCURACY_FRONTIER_TOL, picks);
+
+    pthread_mutex_lock(&b->mu);
+    /* The final rows replace the published ones: only now are the errors known. */
+    memcpy(b->st.rows, b->work, n * sizeof b->work[0]);
+    b->st.n = n;
+    memcpy(b->st.picks, picks, sizeof picks);
+    if (rc == ACBB_OK) b->st.phase = ACBB_BENCH_DONE;
+    else b->st.phase = atomic_load(&b->cancel) ? ACBB_BENCH_CANCELLED : ACBB_BENCH_FAILED;
+    memcpy(b->st.message, err.msg, sizeof b->st.message);
+    b->st.ended_s = now_s();
+    b->st.publications++;
+    pthread_cond_broadcast(&b->cv_end);
+    pthread_mutex_unlock(&b->mu);
+    wake_ui(b);
+    return NULL;
+}
+
+/* ---- client side ---- */
+
+/* Non-blocking, close-on-exec pipe (as worker.c's: a full pipe must never
+ * block the bench thread, and gnuplot children must not inherit it). */
+static int make_wake_pipe(int fd[2])
+{
+    if (pipe(fd) != 0) return -1;
+    for (int i = 0; i < 2; i++) {
+        int fl = fcntl(fd[i], F_GETFL);
+        if (fl < 0 || fcntl(fd[i], F_SETFL, fl | O_NONBLOCK) < 0 ||
+            fcntl(fd[i], F_SETFD, FD_CLOEXEC) < 0) {
+            close(fd[0]);
+            close(fd[1]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+acbb_status acbb_bench_new(acbb_bench **out, acbb_error *err)
+{
+    *out = NULL;
+    acbb_bench *b = calloc(1, sizeof *b);
+    if (!b) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    int fd[2];
+    if (make_wake_pipe(fd) != 0) {
+        free(b);
+        return acbb_error_set(err, ACBB_EIO, "cannot create the wake-up pipe: %s", strerror(errno));
+    }
+    b->wake_rd = fd[0];
+    b->wake_wr = fd[1];
+    pthread_condattr_t ca;
+    pthread_condattr_init(&ca);
+    pthread_condattr_setclock(&ca, CLOCK_MONOTONIC);
+    int rc = pthread_mutex_init(&b->mu, NULL) | pthread_cond_init(&b->cv_end, &ca);
+    pthread_condattr_destroy(&ca);
+    if (rc != 0) {
+        close(fd[0]);
+        close(fd[1]);
+        free(b);
+        return acbb_error_set(err, ACBB_ENOMEM, "cannot initialise the benchmark's lock");
+    }
+    atomic_init(&b->cancel, 0);
+    atomic_init(&b->wake_pending, 0);
+    b->st.phase = ACBB_BENCH_IDLE;
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) b->st.picks[k] = -1;
+    *out = b;
+    return ACBB_OK;
+}
+
+static int running(acbb_bench *b)
+{
+    pthread_mutex_lock(&b->mu);
+    int r = b->st.phase == ACBB_BENCH_RUNNING;
+    pthread_mutex_unlock(&b->mu);
+    return r;
+}
+
+/* Reset the published state for a new plan of `total` settings. */
+static void begin(acbb_bench *b, const acbb_accuracy_options *opt, size_t total)
+{
+    pthread_mutex_lock(&b->mu);
+    b->st.phase = ACBB_BENCH_RUNNING;
+    b->st.cancel_requested = 0;
+    b->st.run_id++;
+    b->st.publications++;
+    b->st.done = 0;
+    b->st.total = total;
+    b->st.n = 0;
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) b->st.picks[k] = -1;
+    b->st.opt = *opt;
+    b->st.opt.cancel = NULL;
+    b->st.started_s = now_s();
+    b->st.ended_s = 0.0;
+    b->st.message[0] = '\0';
+    pthread_mutex_unlock(&b->mu);
+}
+
+acbb_status acbb_bench_start(acbb_bench *b, const acbb_scene *scene,
+                             const acbb_accuracy_options *opt, acbb_error *err)
+{
+    if (running(b))
+        return acbb_error_set(err, ACBB_EINVAL, "a benchmark is already running (x cancels it)");
+    if (b->has_thread) { /* the last plan's thread has published its end: reap it */
+        pthread_join(b->thread, NULL);
+        b->has_thread = 0;
+    }
+    size_t total = acbb_accuracy_plan_size(opt);
+    if (total == 0 || total > ACBB_BENCH_MAX_ROWS)
+        return acbb_error_set(err, ACBB_EINVAL, "accuracy plan of %zu settings: 1..%d supported",
+                              total, ACBB_BENCH_MAX_ROWS);
+    b->scene = *scene;
+    b->opt = *opt;
+    b->opt.cancel = &b->cancel;
+    atomic_store(&b->cancel, 0);
+    begin(b, opt, total);
+
+    /* The thread inherits this mask: terminal signals go to the UI thread. */
+    sigset_t block, old;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigaddset(&block, SIGWINCH);
+    pthread_sigmask(SIG_BLOCK, &block, &old);
+    int rc = pthread_create(&b->thread, NULL, bench_main, b);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    if (rc != 0) {
+        pthread_mutex_lock(&b->mu);
+        b->st.phase = ACBB_BENCH_FAILED;
+        b->st.ended_s = now_s();
+        pthread_mutex_unlock(&b->mu);
+        return acbb_error_set(err, ACBB_ENOMEM, "cannot start the benchmark thread: %s",
+                              strerror(rc));
+    }
+    b->has_thread = 1;
+    return ACBB_OK;
+}
+
+int acbb_bench_cancel(acbb_bench *b)
+{
+    pthread_mutex_lock(&b->mu);
+    int r = b->st.phase == ACBB_BENCH_RUNNING;
+    if (r) {
+        atomic_store(&b->cancel, 1);
+        b->st.cancel_requested = 1;
+        b->st.publications++;
+    }
+    pthread_mutex_unlock(&b->mu);
+    if (r) wake_ui(b);
+    return r;
+}
+
+void acbb_bench_read(acbb_bench *b, acbb_bench_state *st)
+{
+    pthread_mutex_lock(&b->mu);
+    *st = b->st;
+    pthread_mutex_unlock(&b->mu);
+}
+
+int acbb_bench_wait(acbb_bench *b, int timeout_ms)
+{
+    double t = now_s() + timeout_ms / 1000.0;
+    struct timespec ts = { (time_t)t, (long)((t - (double)(time_t)t) * 1e9) };
+    if (ts.tv_nsec >= 1000000000L) ts.tv_nsec = 999999999L;
+    pthread_mutex_lock(&b->mu);
+    while (b->st.phase == ACBB_BENCH_RUNNING)
+        if (pthread_cond_timedwait(&b->cv_end, &b->mu, &ts) == ETIMEDOUT) break;
+    int idle = b->st.phase != ACBB_BENCH_RUNNING;
+    pthread_mutex_unlock(&b->mu);
+    return idle;
+}
+
+int acbb_bench_wake_fd(const acbb_bench *b)
+{
+    return b->wake_rd;
+}
+
+void acbb_bench_drain_wake(acbb_bench *b)
+{
+    char buf[64];
+    /* Drain first, then clear the flag (worker.c explains why not the reverse). */
+    while (read(b->wake_rd, buf, sizeof buf) > 0) {}
+    atomic_store(&b->wake_pending, 0);
+}
+
+void acbb_bench_free(acbb_bench *b)
+{
+    if (!b) return;
+    acbb_bench_cancel(b);
+    if (b->has_thread) pthread_join(b->thread, NULL);
+    close(b->wake_rd);
+    close(b->wake_wr);
+    pthread_mutex_destroy(&b->mu);
+    pthread_cond_destroy(&b->cv_end);
+    free(b);
+}

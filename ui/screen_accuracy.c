@@ -1,0 +1,299 @@
+/* acbb TUI — the accuracy screen: `acbb bench accuracy` for the edited
+ * scene, run by the bench thread (bench.h), shown as the CLI's table, the
+ * frontier, and an error-vs-time chart (log-log, draw_acc_chart.c). */
+#include <curses.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include "acc_chart.h"
+#include "app.h"
+#include "export.h"
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- starting, following, cancelling ---- */
+
+void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic)
+{
+    /* One run per setting: repeats only steady the timings, and the
+     * dynamic level alone takes about a minute per run. */
+    acbb_accuracy_options o = {
+        .knobs = a->acc_knobs,
+        .model_levels = with_dynamic ? ACBB_ACCURACY_ALL_LEVELS
+                                     : ACBB_ACCURACY_ALL_LEVELS &
+                                           ~ACBB_ACCURACY_LEVEL_BIT(ACBB_MODEL_DYNAMIC),
+        .repeats = 1,
+    };
+    acbb_error err = { { 0 } };
+    a->screen = ACBB_SCR_ACCURACY;
+    if (acbb_bench_start(a->bench, &a->ed.scene, &o, &err) != ACBB_OK) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
+        return;
+    }
+    snprintf(a->acc_scene, sizeof a->acc_scene, "%s%s", acbb_editor_name(&a->ed),
+             a->ed.modified ? "*" : "");
+    a->acc_top = 0;
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, "accuracy benchmark started: %zu settings%s (x cancels)",
+                 acbb_accuracy_plan_size(&o), with_dynamic ? " with the dynamic level" : "");
+}
+
+void acbb_screen_accuracy_follow(acbb_app *a)
+{
+    const acbb_bench_state *s = &a->bst;
+    if (s->phase == ACBB_BENCH_IDLE || s->phase == ACBB_BENCH_RUNNING ||
+        s->run_id == a->acc_seen_run)
+        return;
+    a->acc_seen_run = s->run_id;
+    char took[16];
+    acbb_fmt_duration(s->ended_s - s->started_s, took, sizeof took);
+    if (s->phase == ACBB_BENCH_DONE)
+        acbb_app_msg(a, ACBB_ROLE_OK, "accuracy benchmark done: %zu settings in %s (g exports the plot)",
+                     s->n, took);
+    else if (s->phase == ACBB_BENCH_CANCELLED)
+        acbb_app_msg(a, ACBB_ROLE_WARN, "accuracy benchmark cancelled after %zu of %zu settings",
+                     s->n, s->total);
+    else
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "accuracy benchmark failed: %s", s->message);
+}
+
+static int cancel(acbb_app *a)
+{
+    if (!acbb_bench_cancel(a->bench)) return 0;
+    acbb_app_msg(a, ACBB_ROLE_WARN, "cancelling the accuracy benchmark ...");
+    return 1;
+}
+
+/* ---- export ---- */
+
+static void export_plot(acbb_app *a)
+{
+    if (a->bst.phase != ACBB_BENCH_DONE) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "%s",
+                     a->bst.phase == ACBB_BENCH_RUNNING ? "the benchmark is still running"
+                                                        : "no finished benchmark to plot (b runs one)");
+        return;
+    }
+    /* Say so before gnuplot runs: the export takes a moment. */
+    acbb_app_msg(a, ACBB_ROLE_WARN, "exporting the accuracy plot to %s ...", a->plot_dir);
+    move(a->lay.message.y, 0);
+    clrtoeol();
+    acbb_put(a, a->lay.message.y, 0, a->lay.message.w, ACBB_ROLE_WARN, "%s", a->msg);
+    wnoutrefresh(stdscr);
+    doupdate();
+    char title[320];
+    snprintf(title, sizeof title, "acbb bench accuracy %s (1 run per setting)", a->acc_scene);
+    acbb_error err = { { 0 } };
+    int written = 0;
+    if (acbb_export_accuracy(a->plot_dir, a->bst.rows, a->bst.n, title, &written, &err) != ACBB_OK)
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d accuracy plots (PNG+SVG) to %s/", written, a->plot_dir);
+}
+
+/* ---- heading ---- */
+
+static void draw_heading(acbb_app *a)
+{
+    const acbb_bench_state *s = &a->bst;
+    acbb_rect b = a->lay.body;
+    char el[16];
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER,
+             "Accuracy vs time: each [fidelity] knob against its finest setting%s%s",
+             s->phase == ACBB_BENCH_IDLE ? "" : ", ", s->phase == ACBB_BENCH_IDLE ? "" : a->acc_scene);
+    int y = b.y + 1;
+    switch (s->phase) {
+    case ACBB_BENCH_IDLE:
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
+                 "b runs it on the edited scene, 1 run per setting; B adds dynamic (~1 min/run)");
+        break;
+    case ACBB_BENCH_RUNNING: {
+        acbb_fmt_duration(now_s() - s->started_s, el, sizeof el);
+        char left[96];
+        snprintf(left, sizeof left, "%s %zu/%zu settings ", s->cancel_requested ? "cancelling" : "running",
+                 s->done, s->total);
+        acbb_put(a, y, b.x, b.w, s->cancel_requested ? ACBB_ROLE_WARN : ACBB_ROLE_OK, "%s", left);
+        int x = b.x + (int)strlen(left);
+        acbb_bar(a, y, x, 20, s->total ? (double)s->done / (double)s->total : 0.0, ACBB_ROLE_BAR);
+        acbb_put(a, y, x + 21, b.x + b.w - x - 21, ACBB_ROLE_NORMAL, "%s  x/Esc cancels", el);
+        break;
+    }
+    case ACBB_BENCH_DONE:
+        acbb_fmt_duration(s->ended_s - s->started_s, el, sizeof el);
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_OK,
+                 "done: %zu settings in %s. R reference, D the scene's value, * frontier", s->n, el);
+        break;
+    case ACBB_BENCH_CANCELLED:
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_WARN,
+                 "cancelled after %zu of %zu settings: no errors without the references; b reruns",
+                 s->n, s->total);
+        break;
+    case ACBB_BENCH_FAILED:
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_ERROR, "failed: %s", s->message);
+        break;
+    }
+}
+
+/* ---- table ---- */
+
+static int is_pick(const acbb_bench_state *s, size_t i)
+{
+    return s->phase == ACBB_BENCH_DONE && s->picks[s->rows[i].knob] == (long)i;
+}
+
+static void draw_row(acbb_app *a, int y, acbb_rect r, size_t i)
+{
+    const acbb_accuracy_row *row = &a->bst.rows[i];
+    char label[96], mark[4], ms[16], e[4][16];
+    acbb_acc_setting_label(row, label, sizeof label);
+    snprintf(mark, sizeof mark, "%s%s%s", row->is_reference ? "R" : "", row->is_default ? "D" : "",
+             is_pick(&a->bst, i) ? "*" : "");
+    if (isfinite(row->wall_ms)) snprintf(ms, sizeof ms, "%8.1f", row->wall_ms);
+    else snprintf(ms, sizeof ms, "%8s", "-");
+    const double errs[4] = { row->e_loss, row->e_T, row->e_Qi, row->e_alpha };
+    for (int k = 0; k < 4; k++) acbb_acc_fmt_pct(errs[k], e[k], sizeof e[k]);
+    const char *status = row->skipped ? "skipped"
+                         : row->status == ACBB_OK ? "converged" : acbb_status_name(row->status);
+    acbb_role role = row->skipped ? ACBB_ROLE_DIM
+                     : row->status != ACBB_OK ? ACBB_ROLE_ERROR
+                     : is_pick(&a->bst, i) ? ACBB_ROLE_OK : ACBB_ROLE_NORMAL;
+    acbb_put(a, y, r.x, r.w, role, "%-19s %-3s %-13s %s %6s %6s %6s %6s", label, mark, status, ms,
+             e[0], e[1], e[2], e[3]);
+}
+
+static void draw_table(acbb_app *a, acbb_rect r)
+{
+    const acbb_bench_state *s = &a->bst;
+    if (r.h < 2) return;
+    int visible = r.h - 1;
+    int lines = (int)s->n + (s->phase == ACBB_BENCH_RUNNING && s->done < s->total);
+    int max_top = lines > visible ? lines - visible : 0;
+    if (a->acc_top > max_top) a->acc_top = max_top;
+    if (a->acc_top < 0) a->acc_top = 0;
+    /* Which rows are shown, in the first column: the line is full at 80. */
+    char first[48] = "setting";
+    if (max_top > 0)
+        snprintf(first, sizeof first, "setting %d-%d/%d", a->acc_top + 1,
+                 a->acc_top + (visible < lines ? visible : lines), lines);
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%-19s %-3s %-13s %8s %6s %6s %6s %6s", first, "",
+             "status", "ms", "loss%", "T%", "Qi%", "alpha%");
+    for (int k = 0; k < visible; k++) {
+        int i = a->acc_top + k, y = r.y + 1 + k;
+        if (i < (int)s->n) draw_row(a, y, r, (size_t)i);
+        else if (i < lines)
+            acbb_put(a, y, r.x, r.w, ACBB_ROLE_DIM, "... setting %zu of %zu running", s->done + 1,
+                     s->total);
+    }
+    if (s->phase == ACBB_BENCH_IDLE)
+        acbb_put(a, r.y + 1, r.x, r.w, ACBB_ROLE_DIM, "(no results yet)");
+}
+
+/* ---- frontier ---- */
+
+/* Knob k's pick: "contact_grid=6 (70.95x faster)", or just the setting
+ * when `brief`; "" if the knob is not in the rows. */
+static void pick_text(const acbb_bench_state *s, int k, int brief, char *buf, size_t n)
+{
+    int present = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < s->n; i++) present |= s->rows[i].knob == (acbb_accuracy_knob)k;
+    if (!present) return;
+    long p = s->picks[k], ref = acbb_accuracy_reference(s->rows, s->n, (acbb_accuracy_knob)k);
+    if (p < 0) {
+        snprintf(buf, n, "%s: -%s", acbb_accuracy_knob_name((acbb_accuracy_knob)k),
+                 brief ? "" : " (reference failed)");
+        return;
+    }
+    char label[96];
+    acbb_acc_setting_label(&s->rows[p], label, sizeof label);
+    if (brief) snprintf(buf, n, "%s", label);
+    else if (p == ref) snprintf(buf, n, "%s (the reference)", label);
+    else snprintf(buf, n, "%s (%.2fx faster)", label, s->rows[ref].wall_ms / s->rows[p].wall_ms);
+}
+
+/* The picks wrapped after `x0` on the rows of r, breaking only between
+ * picks (two spaces apart, one when `brief`: all seven settings must fit
+ * two rows of 80); draws only if `draw`. Returns 1 if every pick fitted. */
+static int wrap_picks(acbb_app *a, acbb_rect r, int x0, int brief, int draw)
+{
+    int y = r.y, x = x0, gap = brief ? 1 : 2;
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
+        char t[160];
+        pick_text(&a->bst, k, brief, t, sizeof t);
+        if (!t[0]) continue;
+        int len = (int)strlen(t);
+        if (x + len > r.x + r.w && x > r.x) {
+            if (y + 1 >= r.y + r.h) return 0;
+            y++;
+            x = r.x;
+        }
+        if (x + len > r.x + r.w) return 0;
+        if (draw) acbb_put(a, y, x, len, ACBB_ROLE_OK, "%s", t);
+        x += len + gap;
+    }
+    return 1;
+}
+
+static void draw_frontier(acbb_app *a, acbb_rect r)
+{
+    const acbb_bench_state *s = &a->bst;
+    if (r.h < 1) return;
+    if (s->phase != ACBB_BENCH_DONE) {
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s",
+                 s->phase == ACBB_BENCH_RUNNING ? "frontier: when the plan has run"
+                                                : "frontier: needs the whole plan (b runs it)");
+        return;
+    }
+    char head[96];
+    snprintf(head, sizeof head, "frontier (cheapest within %g%% on loss, T):",
+             100.0 * ACBB_ACCURACY_FRONTIER_TOL);
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%s", head);
+    if (r.h >= 1 + ACBB_KNOB_COUNT) { /* one line per knob */
+        int y = r.y + 1;
+        for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
+            char t[160];
+            pick_text(s, k, 0, t, sizeof t);
+            if (t[0]) acbb_put(a, y++, r.x, r.w, ACBB_ROLE_OK, "  %s", t);
+        }
+        return;
+    }
+    /* Wrapped after the heading; with many knobs only the settings fit
+     * (the table's ms column and * mark tell the rest). */
+    int x0 = r.x + (int)strlen(head) + 1;
+    int brief = !wrap_picks(a, r, x0, 0, 0);
+    wrap_picks(a, r, x0, brief, 1);
+}
+
+/* ---- screen ---- */
+
+void acbb_screen_accuracy_draw(acbb_app *a)
+{
+    draw_heading(a);
+    draw_table(a, a->lay.acc_table);
+    draw_frontier(a, a->lay.acc_frontier);
+    acbb_draw_accuracy_chart(a, a->lay.acc_chart);
+}
+
+int acbb_screen_accuracy_key(acbb_app *a, int ch)
+{
+    int page = a->lay.acc_table.h - 1 > 1 ? a->lay.acc_table.h - 1 : 1;
+    switch (ch) {
+    case 'x':
+        if (!cancel(a)) acbb_app_msg(a, ACBB_ROLE_WARN, "no benchmark running (b starts one)");
+        return 1;
+    case 27: return cancel(a); /* otherwise Esc clears the message as everywhere */
+    case 'j': case KEY_DOWN: a->acc_top++; return 1;
+    case 'k': case KEY_UP: a->acc_top--; return 1;
+    case KEY_NPAGE: a->acc_top += page; return 1;
+    case KEY_PPAGE: a->acc_top -= page; return 1;
+    case KEY_HOME: a->acc_top = 0; return 1;
+    case KEY_END: a->acc_top = ACBB_BENCH_MAX_ROWS; return 1; /* clamped when drawn */
+    case 'g': export_plot(a); return 1;
+    default: return 0;
+    }
+}
