@@ -205,26 +205,6 @@ static const char *err_text(const acbb_error *err, acbb_status st)
     return err->msg[0] ? err->msg : acbb_status_name(st);
 }
 
-/* Apply one "section.key=value" edit; the message names the edit as typed. */
-static int apply_set(acbb_scene *sc, const char *text)
-{
-    const char *eq = strchr(text, '=');
-    char key[160];
-    if (!eq || eq == text || (size_t)(eq - text) >= sizeof key) {
-        fprintf(stderr, "acbb: --set %s: expected section.key=value\n", text);
-        return EXIT_BADINPUT;
-    }
-    memcpy(key, text, (size_t)(eq - text));
-    key[eq - text] = '\0';
-    acbb_error err = { { 0 } };
-    acbb_status st = acbb_scene_set(sc, key, eq + 1, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: --set %s: %s\n", text, err_text(&err, st));
-        return EXIT_BADINPUT;
-    }
-    return 0;
-}
-
 static int load_scene(const char *preset, const cli_args *a, acbb_scene *sc)
 {
     acbb_error err = { { 0 } };
@@ -233,9 +213,10 @@ static int load_scene(const char *preset, const cli_args *a, acbb_scene *sc)
         fprintf(stderr, "acbb: %s\n", err_text(&err, st));
         return exit_for_status(st);
     }
-    for (size_t i = 0; i < a->n_sets; i++) {
-        int rc = apply_set(sc, a->sets[i]);
-        if (rc) return rc;
+    st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", err_text(&err, st));
+        return exit_for_status(st);
     }
     return 0;
 }

@@ -164,25 +164,6 @@ static int status_exit(acbb_status st)
                                                                          : ACC_EXIT_SOLVER;
 }
 
-static int apply_set(acbb_scene *sc, const char *text)
-{
-    const char *eq = strchr(text, '=');
-    char key[160];
-    if (!eq || eq == text || (size_t)(eq - text) >= sizeof key) {
-        fprintf(stderr, "acbb: --set %s: expected section.key=value\n", text);
-        return ACC_EXIT_INPUT;
-    }
-    memcpy(key, text, (size_t)(eq - text));
-    key[eq - text] = '\0';
-    acbb_error err = { { 0 } };
-    acbb_status st = acbb_scene_set(sc, key, eq + 1, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: --set %s: %s\n", text, err.msg[0] ? err.msg : acbb_status_name(st));
-        return ACC_EXIT_INPUT;
-    }
-    return 0;
-}
-
 static int load_scene(const acc_args *a, acbb_scene *sc)
 {
     acbb_error err = { { 0 } };
@@ -191,9 +172,10 @@ static int load_scene(const acc_args *a, acbb_scene *sc)
         fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         return status_exit(st);
     }
-    for (size_t i = 0; i < a->n_sets; i++) {
-        int rc = apply_set(sc, a->sets[i]);
-        if (rc) return rc;
+    st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return ACC_EXIT_INPUT;
     }
     return 0;
 }

@@ -130,21 +130,10 @@ static int load_plot_scene(const plot_args *a, acbb_scene *sc)
         fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         return input_exit(st);
     }
-    for (size_t i = 0; i < a->n_sets; i++) {
-        const char *text = a->sets[i], *eq = strchr(text, '=');
-        char key[160];
-        if (!eq || eq == text || (size_t)(eq - text) >= sizeof key) {
-            fprintf(stderr, "acbb: --set %s: expected section.key=value\n", text);
-            return PLOT_EXIT_INPUT;
-        }
-        memcpy(key, text, (size_t)(eq - text));
-        key[eq - text] = '\0';
-        st = acbb_scene_set(sc, key, eq + 1, &err);
-        if (st != ACBB_OK) {
-            fprintf(stderr, "acbb: --set %s: %s\n", text,
-                    err.msg[0] ? err.msg : acbb_status_name(st));
-            return PLOT_EXIT_INPUT;
-        }
+    st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return PLOT_EXIT_INPUT;
     }
     return 0;
 }

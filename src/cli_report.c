@@ -1760,23 +1760,7 @@ static int load_base(const rargs *a, acbb_scene *s)
         fprintf(stderr, "acbb: report: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         return EXIT_BADINPUT;
     }
-    for (int i = 0; i < a->n_sets; i++) {
-        const char *eq = strchr(a->sets[i], '=');
-        char key[160];
-        if (!eq || eq == a->sets[i] || (size_t)(eq - a->sets[i]) >= sizeof key) {
-            fprintf(stderr, "acbb: report: --set %s: expected section.key=value\n", a->sets[i]);
-            return EXIT_BADINPUT;
-        }
-        memcpy(key, a->sets[i], (size_t)(eq - a->sets[i]));
-        key[eq - a->sets[i]] = '\0';
-        st = acbb_scene_set(s, key, eq + 1, &err);
-        if (st != ACBB_OK) {
-            fprintf(stderr, "acbb: report: --set %s: %s\n", a->sets[i],
-                    err.msg[0] ? err.msg : acbb_status_name(st));
-            return EXIT_BADINPUT;
-        }
-    }
-    st = acbb_scene_validate(s, &err);
+    st = acbb_scene_apply_edits(s, a->sets, (size_t)a->n_sets, &err);
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: report: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         return EXIT_BADINPUT;

@@ -56,6 +56,9 @@ typedef struct {
  * eps = 1 nm (MODEL.md section 3 "Unloaded contacts"): keeps the Jacobian
  * regular when a contact opens; changes a loaded contact by < 1e-8. */
 #define SMOOTH_EPS 1e-9
+/* A contact carrying less than this is open (MODEL.md section 11): the
+ * smoothed law leaves ~1e-9 N on an open contact. */
+#define LOADED_N 1e-6
 static double pos15(double d)
 {
     double s = 0.5 * (d + sqrt(d * d + SMOOTH_EPS * SMOOTH_EPS));
@@ -353,7 +356,7 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, doubl
         return rc;
     double r[2];
     ball_polar(&c, z, a, r);
-    b->loaded = b->Qi > 0.0 || b->Qo > 0.0;
+    b->loaded = b->Qi > LOADED_N || b->Qo > LOADED_N;
     return ACBB_OK;
 }
 
@@ -635,7 +638,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
         rc = ACBB_NONFINITE;
     if (rc == ACBB_OK) {
         int any = 0;
-        for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > 0.0;
+        for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > LOADED_N;
         if (!any && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || m->fix_axial))
             rc = ACBB_CONTACT_LOST;
     }

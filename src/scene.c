@@ -901,8 +901,8 @@ acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)
 
 /* ---- acbb_scene_set ---- */
 
-acbb_status acbb_scene_set(acbb_scene *s, const char *dotted_key, const char *value,
-                           acbb_error *err)
+static acbb_status set_one(acbb_scene *s, const char *dotted_key, const char *value,
+                           int cross_check, acbb_error *err)
 {
     char section[EDIT_MAX], hint[160];
     const char *dot = strchr(dotted_key, '.');
@@ -919,9 +919,21 @@ acbb_status acbb_scene_set(acbb_scene *s, const char *dotted_key, const char *va
 
     acbb_scene trial = *s;
     acbb_status rc = apply_value(&trial, f, value, err);
-    if (rc == ACBB_OK) rc = acbb_scene_validate(&trial, err);
+    if (rc == ACBB_OK && cross_check) rc = acbb_scene_validate(&trial, err);
     if (rc == ACBB_OK) *s = trial;
     return rc;
+}
+
+acbb_status acbb_scene_set(acbb_scene *s, const char *dotted_key, const char *value,
+                           acbb_error *err)
+{
+    return set_one(s, dotted_key, value, 1, err);
+}
+
+acbb_status acbb_scene_set_value(acbb_scene *s, const char *dotted_key, const char *value,
+                                 acbb_error *err)
+{
+    return set_one(s, dotted_key, value, 0, err);
 }
 
 /* ---- loading ---- */
@@ -1118,4 +1130,26 @@ acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *e
     free(tmp);
     sync_parent_dir(path);
     return ACBB_OK;
+}
+
+acbb_status acbb_scene_apply_edits(acbb_scene *s, const char *const *edits, size_t n,
+                                   acbb_error *err)
+{
+    acbb_scene trial = *s;
+    for (size_t i = 0; i < n; i++) {
+        const char *text = edits[i], *eq = strchr(text, '=');
+        char key[EDIT_MAX];
+        if (!eq || eq == text || (size_t)(eq - text) >= sizeof key)
+            return acbb_error_set(err, ACBB_EINVAL, "--set %s: expected section.key=value", text);
+        memcpy(key, text, (size_t)(eq - text));
+        key[eq - text] = '\0';
+        acbb_error e = { "" };
+        acbb_status rc = set_one(&trial, key, eq + 1, 0, &e);
+        if (rc != ACBB_OK)
+            return acbb_error_set(err, rc, "--set %s: %s", text, e.msg);
+    }
+    /* Cross-field rules once, on the scene as a whole. */
+    acbb_status rc = acbb_scene_validate(&trial, err);
+    if (rc == ACBB_OK) *s = trial;
+    return rc;
 }

@@ -34,12 +34,25 @@ typedef struct {
     acbb_contact_loss in, out;
 } ball_loss;
 
+/* Everything a step changes, kept so a failed or rejected step can put the
+ * last good state back exactly (not re-derived). */
+typedef struct {
+    acbb_mech_state ms;
+    double T[ACBB_MAX_NODES];
+    acbb_expansion exp;
+    ball_loss bl[ACBB_MAX_BALLS];
+    acbb_losses loss;
+    acbb_heat_sources heat;
+    double q[ACBB_MAX_NODES];
+} checkpoint;
+
 struct acbb_sim {
     acbb_scene s;
     acbb_mech *mech;
     acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
     acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
     acbb_mech_state ms;        /* last accepted mechanics */
+    checkpoint *keep;          /* scratch for step rollback (owned) */
     acbb_network nw;
     acbb_quad quad;
     double T[ACBB_MAX_NODES];  /* T^k */
@@ -49,7 +62,7 @@ struct acbb_sim {
     acbb_heat_sources heat;
     double q[ACBB_MAX_NODES];
     double heat_out;
-    double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_dFx;
+    double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_rate;
     int growth_count;
     int transient_pass;        /* 1 while evaluating inside a transient step */
     long iter;
@@ -58,6 +71,8 @@ struct acbb_sim {
     acbb_status status;
     char msg[256];
 };
+
+static int outputs_finite(const acbb_sim *sim);
 
 static double now_ms(void)
 {
@@ -239,8 +254,10 @@ static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
     acbb_status rc = mechanics(sim, err);
     if (rc != ACBB_OK) return rc;
     rc = losses(sim);
+    if (rc == ACBB_OK && !outputs_finite(sim)) rc = ACBB_NONFINITE;
     if (rc != ACBB_OK)
-        return acbb_error_set(err, rc, "losses: non-finite value");
+        return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "
+                              "last good state kept");
     acbb_net_inputs in;
     network_inputs(sim, &in);
     rc = acbb_network_update(&sim->nw, &sim->s, &in);
@@ -251,6 +268,31 @@ static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
 }
 
 /* ---- checks ---- */
+
+static int contact_finite(const acbb_contact_loss *c)
+{
+    return isfinite(c->P_L) && isfinite(c->P_t) && isfinite(c->P_s) && isfinite(c->P_r)
+        && isfinite(c->slide) && isfinite(c->film.hc);
+}
+
+/* Every value a snapshot publishes, checked where it is made, so that a
+ * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. */
+static int outputs_finite(const acbb_sim *sim)
+{
+    const acbb_expansion *e = &sim->exp;
+    if (!isfinite(e->ball) || !isfinite(e->inner) || !isfinite(e->inner_cen)
+        || !isfinite(e->outer) || !isfinite(sim->loss.total) || !isfinite(sim->heat.inner_contact)
+        || !isfinite(sim->heat.outer_contact) || !isfinite(sim->ms.Fx))
+        return 0;
+    for (int j = 0; j < sim->ms.n; j++) {
+        const acbb_ball_state *b = &sim->ms.ball[j];
+        if (!contact_finite(&sim->bl[j].in) || !contact_finite(&sim->bl[j].out)
+            || !isfinite(b->ct_i.pmax) || !isfinite(b->ct_o.pmax) || !isfinite(b->kin.spin_i)
+            || !isfinite(b->kin.spin_o) || !isfinite(b->kin.wx) || !isfinite(b->kin.wz))
+            return 0;
+    }
+    return 1;
+}
 
 static double max_pmax(const acbb_mech_state *ms)
 {
@@ -267,7 +309,7 @@ static int temps_finite(const double *T, int n)
     return 1;
 }
 
-static acbb_status check_runaway(acbb_sim *sim, const double *T)
+static acbb_status check_runaway(acbb_sim *sim, const double *T, double step_dt)
 {
     char d[160];
     for (int i = 0; i < sim->nw.n; i++)
@@ -282,12 +324,12 @@ static acbb_status check_runaway(acbb_sim *sim, const double *T)
                  p * 1e-9, sim->time);
         return fail(sim, ACBB_RUNAWAY, "thermal runaway: %s", d);
     }
-    if (sim->s.preload == ACBB_PRELOAD_DISPLACEMENT && sim->iter > 0) {
-        /* Rigid preload: a reaction that keeps growing faster and faster
-         * over 50 accepted steps is the runaway of MODEL.md section 9. */
-        double dF = sim->ms.Fx - sim->prev_Fx;
-        sim->growth_count = (dF > 0.0 && dF > sim->prev_dFx) ? sim->growth_count + 1 : 0;
-        sim->prev_dFx = dF;
+    if (sim->s.preload == ACBB_PRELOAD_DISPLACEMENT && sim->iter > 0 && step_dt > 0.0) {
+        /* Rigid preload: dF/dt > 0 and d2F/dt2 > 0 over 50 accepted steps is
+         * the runaway of MODEL.md section 9 (rates, since dt varies). */
+        double rate = (sim->ms.Fx - sim->prev_Fx) / step_dt;
+        sim->growth_count = (rate > 0.0 && rate > sim->prev_rate) ? sim->growth_count + 1 : 0;
+        sim->prev_rate = rate;
         if (sim->growth_count >= 50) {
             snprintf(d, sizeof d, "axial reaction grows ever faster (%.0f N at t = %.0f s)",
                      sim->ms.Fx, sim->time);
@@ -367,44 +409,81 @@ static void finish_energy(acbb_sim *sim)
     sim->heat_out = acbb_tnet_heat_to_fixed(sim->nw.net, sim->T);
 }
 
+static void save(acbb_sim *sim, checkpoint *k)
+{
+    acbb_mech_state_copy(&k->ms, &sim->ms);
+    memcpy(k->T, sim->T, sizeof k->T);
+    k->exp = sim->exp;
+    memcpy(k->bl, sim->bl, sizeof sim->bl[0] * (size_t)sim->ms.n);
+    k->loss = sim->loss;
+    k->heat = sim->heat;
+    memcpy(k->q, sim->q, sizeof k->q);
+}
+
+static void restore(acbb_sim *sim, const checkpoint *k)
+{
+    acbb_mech_state_copy(&sim->ms, &k->ms);
+    memcpy(sim->T, k->T, sizeof k->T);
+    sim->exp = k->exp;
+    memcpy(sim->bl, k->bl, sizeof sim->bl[0] * (size_t)sim->ms.n);
+    sim->loss = k->loss;
+    sim->heat = k->heat;
+    memcpy(sim->q, k->q, sizeof k->q);
+    acbb_net_inputs in;
+    network_inputs(sim, &in);
+    acbb_network_update(&sim->nw, &sim->s, &in); /* resistances of the kept state */
+}
+
+/* Thermal update to T^{k+1} and the evaluation there. A transient step whose
+ * total loss moves more than 5 % is rejected and retried with half the step
+ * (MODEL.md section 9); *dT, *dTs report the accepted move. */
+static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *dTs,
+                           acbb_error *err)
+{
+    double Tn[ACBB_MAX_NODES];
+    save(sim, sim->keep);
+    for (;;) {
+        acbb_status rc = steady_mode ? steady_step(sim, 0.5, Tn, dT)
+                                     : thermal_step(sim, Tn, dT, dTs);
+        if (rc != ACBB_OK)
+            return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
+        if (!temps_finite(Tn, sim->nw.n))
+            return acbb_error_set(err, ACBB_NONFINITE,
+                                  "non-finite temperature caught; last good state kept");
+        memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
+        sim->transient_pass = !steady_mode;
+        rc = evaluate(sim, err);
+        sim->transient_pass = 0;
+        if (rc != ACBB_OK) {
+            restore(sim, sim->keep);
+            return rc;
+        }
+        double dP = fabs(sim->loss.total - sim->keep->loss.total) / fmax(sim->loss.total, 1e-12);
+        if (steady_mode || dP <= 0.05 || sim->dt <= DT_MIN)
+            return ACBB_OK;
+        restore(sim, sim->keep);
+        sim->dt = fmax(0.5 * sim->dt, DT_MIN);
+    }
+}
+
 acbb_status acbb_sim_step(acbb_sim *sim)
 {
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
     double t0 = now_ms();
     acbb_error err = { "" };
-    double Tn[ACBB_MAX_NODES], dT = 0.0, dTs = 0.0;
+    double dT = 0.0, dTs = 0.0;
     int steady_mode = sim->s.thermal_mode == ACBB_THERMAL_STEADY;
-    acbb_status rc = steady_mode ? steady_step(sim, 0.5, Tn, &dT) : thermal_step(sim, Tn, &dT, &dTs);
-    if (rc != ACBB_OK)
-        return fail(sim, rc, "thermal network: %s", acbb_status_name(rc));
-    if (!temps_finite(Tn, sim->nw.n))
-        return fail(sim, ACBB_NONFINITE, "%s", "non-finite temperature caught; last good state kept");
-    double step_dt = steady_mode ? 1.0 : sim->dt;
-    static_assert(sizeof(acbb_mech_state) < 200000, "mechanics state on the heap");
-    acbb_mech_state *ms_keep = malloc(sizeof *ms_keep);
-    if (!ms_keep)
-        return fail(sim, ACBB_ENOMEM, "%s", "out of memory");
-    acbb_mech_state_copy(ms_keep, &sim->ms);
-    double T_keep[ACBB_MAX_NODES];
-    memcpy(T_keep, sim->T, sizeof T_keep);
-    memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
-    sim->transient_pass = !steady_mode;
-    rc = evaluate(sim, &err);
-    sim->transient_pass = 0;
+    acbb_status rc = advance(sim, steady_mode, &dT, &dTs, &err);
     if (rc != ACBB_OK) {
-        acbb_mech_state_copy(&sim->ms, ms_keep);
-        free(ms_keep);
-        memcpy(sim->T, T_keep, sizeof T_keep);
-        acbb_error ignored;
-        evaluate(sim, &ignored); /* restore losses of the last good state */
+        sim->wall_ms += now_ms() - t0;
         return fail(sim, rc, "%s", err.msg[0] ? err.msg : acbb_status_name(rc));
     }
-    free(ms_keep);
+    double step_dt = steady_mode ? 1.0 : sim->dt;
     sim->iter++;
     if (!steady_mode) sim->time += sim->dt;
     sim->residual = dT / step_dt;
-    if ((rc = check_runaway(sim, sim->T)) != ACBB_OK) {
+    if ((rc = check_runaway(sim, sim->T, steady_mode ? 0.0 : step_dt)) != ACBB_OK) {
         sim->wall_ms += now_ms() - t0;
         return rc;
     }
@@ -413,11 +492,9 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     int quiet = steady_mode ? dT < 1e-7 && dP < 1e-9
                             : sim->residual < sim->s.steady_tol && dP < 1e-4;
     sim->quiet = quiet ? sim->quiet + 1 : 0;
-    if (!steady_mode) {
-        /* Grow while the losses barely move and nodes move < 0.5 K. */
-        if (dP > 0.05) sim->dt = fmax(0.5 * sim->dt, DT_MIN);
-        else if (dP < 0.005 && dTs < 0.25 * DT_MAX_DT_K) sim->dt = fmin(1.5 * sim->dt, DT_MAX);
-    }
+    /* Grow while the losses barely move and nodes move < 0.5 K. */
+    if (!steady_mode && dP < 0.005 && dTs < 0.25 * DT_MAX_DT_K)
+        sim->dt = fmin(1.5 * sim->dt, DT_MAX);
     if (sim->quiet >= (steady_mode ? 3 : STEADY_COUNT)) {
         rc = polish(sim, &err);
         if (rc != ACBB_OK) {
@@ -536,11 +613,13 @@ static void sim_release(acbb_sim *sim)
 acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err)
 {
     acbb_sim *sim = calloc(1, sizeof *sim);
-    if (!sim) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    if (!sim || !(sim->keep = malloc(sizeof *sim->keep))) {
+        free(sim);
+        return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    }
     acbb_status rc = sim_init(sim, s, NULL, err);
     if (rc != ACBB_OK) {
-        sim_release(sim);
-        free(sim);
+        acbb_sim_free(sim);
         return rc;
     }
     *out = sim;
@@ -551,6 +630,7 @@ void acbb_sim_free(acbb_sim *sim)
 {
     if (!sim) return;
     sim_release(sim);
+    free(sim->keep);
     free(sim);
 }
 
@@ -568,6 +648,7 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
         return rc; /* the running sim is untouched */
     }
     sim_release(sim);
+    fresh->keep = sim->keep; /* the rollback scratch stays with the Sim */
     *sim = *fresh;
     free(fresh);
     return ACBB_OK;

@@ -205,6 +205,29 @@ static void test_radial(void)
     }
 }
 
+/* A rigid ring pulled back into the clearance at speed: every inner contact
+ * opens, which must end as ACBB_CONTACT_LOST with the input state kept. */
+static void test_contact_lost(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    s.inner_speed = 3000 * RPM;
+    acbb_mech *m;
+    acbb_mech_state st;
+    acbb_error err = { "" };
+    acbb_mech_new(&s, &m, &err);
+    acbb_mech_init_state(m, &st, &err);
+    double dx0 = st.dx;
+    /* Ring pulled 50 um back: a ball pressed to the groove bottom by its
+     * centrifugal force no longer reaches the inner race. */
+    acbb_mech_fix_axial(m, 1, -50e-6);
+    acbb_status rc = acbb_mech_solve(m, s.inner_speed, NULL, &st, &err);
+    ok(rc == ACBB_CONTACT_LOST, "clearance at speed: ACBB_CONTACT_LOST (%s)", acbb_status_name(rc));
+    has_substr(err.msg, "lost every inner contact", "the message says why");
+    ok(st.dx == dx0, "the state passed in is kept on failure");
+    acbb_mech_free(m);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -213,5 +236,6 @@ int main(void)
     test_static_thrust();
     test_speed();
     test_radial();
+    test_contact_lost();
     return done_testing();
 }

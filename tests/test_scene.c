@@ -700,7 +700,7 @@ static void test_save_failures(void)
     snprintf(want, sizeof want, "%s: cannot save (rename): Is a directory", path);
     ok(strcmp(e.msg, want) == 0, "rename failure message: %s", e.msg);
     ok(count_temp_files(sub) == 0, "no temp file left after a failed save");
-    struct stat st;
+    struct stat st = { 0 };
     ok(stat(path, &st) == 0 && S_ISDIR(st.st_mode), "the target is left as it was");
     rmdir(path);
 
@@ -742,7 +742,7 @@ static void test_save_replaces(void)
     ok(acbb_scene_save(path, &s, &e) == ACBB_OK, "save over an existing file");
     ok(acbb_scene_load(path, &back, &e) == ACBB_OK && back.axial_load == 432.1,
        "the file now holds the new scene");
-    struct stat st;
+    struct stat st = { 0 };
     ok(stat(path, &st) == 0 && (st.st_mode & 07777) == 0640, "file mode kept (0%o)",
        (unsigned)(st.st_mode & 07777));
     ok(count_temp_files(g_dir) == 0, "no temp file left after a good save");
@@ -762,6 +762,37 @@ static void cleanup(void)
     }
     closedir(d);
     rmdir(g_dir);
+}
+
+/* A batch of edits is judged as a whole: the order does not matter, an
+ * edit's own error names it, and a failed batch leaves the scene alone. */
+static void test_apply_edits(void)
+{
+    acbb_scene s, before;
+    acbb_scene_default(&s);
+    s.radial_load = 600;
+    s.axial_load = 1000;
+    before = s;
+    acbb_error err = { "" };
+    const char *batch[] = { "operating.axial_load_N=150", "operating.radial_load_N=0" };
+    ok(acbb_scene_set(&s, "operating.axial_load_N", "150", &err) == ACBB_ILL_POSED,
+       "one edit at a time: axial 150 N with 600 N radial is refused");
+    ok(acbb_scene_apply_edits(&s, batch, 2, &err) == ACBB_OK && s.axial_load == 150
+           && s.radial_load == 0,
+       "the same edits as a batch pass, in either order (%s)", err.msg);
+    s = before;
+    const char *bad[] = { "operating.radial_load_N=0", "bearing.ball_diameter_mm=-3" };
+    ok(acbb_scene_apply_edits(&s, bad, 2, &err) == ACBB_EINVAL, "a bad edit fails the batch");
+    ok(strcmp(err.msg, "--set bearing.ball_diameter_mm=-3: bearing.ball_diameter_mm = -3: "
+                       "must be > 0 mm") == 0, "message names the edit: %s", err.msg);
+    ok(s.radial_load == 600, "scene unchanged after a failed batch");
+    const char *cross[] = { "operating.axial_load_N=50" };
+    ok(acbb_scene_apply_edits(&s, cross, 1, &err) == ACBB_ILL_POSED,
+       "cross-field rules still run on the result");
+    const char *noeq[] = { "operating.axial_load_N" };
+    ok(acbb_scene_apply_edits(&s, noeq, 1, &err) == ACBB_EINVAL
+           && strcmp(err.msg, "--set operating.axial_load_N: expected section.key=value") == 0,
+       "an edit without '=' is refused: %s", err.msg);
 }
 
 int main(void)
@@ -786,6 +817,7 @@ int main(void)
     test_load_syntax();
     test_save_failures();
     test_save_replaces();
+    test_apply_edits();
     cleanup();
     return done_testing();
 }

@@ -150,6 +150,19 @@ acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *e
 acbb_status acbb_scene_set(acbb_scene *s, const char *dotted_key,
                            const char *value, acbb_error *err);
 
+/* As acbb_scene_set, but only the key's own range is checked: for a batch of
+ * edits (several --set on the CLI) that is consistent only as a whole; call
+ * acbb_scene_validate once after the last one. */
+acbb_status acbb_scene_set_value(acbb_scene *s, const char *dotted_key, const char *value,
+                                 acbb_error *err);
+
+/* A batch of "section.key=value" edits (the CLI's --set list): each is
+ * range-checked as it is applied, the cross-field rules run once at the end,
+ * so the order of the edits does not matter. `s` is unchanged on failure;
+ * the message starts with "--set EDIT:" for an edit's own error. */
+acbb_status acbb_scene_apply_edits(acbb_scene *s, const char *const *edits, size_t n,
+                                   acbb_error *err);
+
 /* Cross-field consistency (balls fit on the pitch circle, groove radius >
  * ball radius, ...). Returns ACBB_EINVAL with the reason in err. */
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err);
