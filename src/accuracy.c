@@ -348,7 +348,7 @@ acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_option
     }
     if (done < total) { /* only a cancel stops the loop early */
         *n = done;
-        return acbb_error_set(err, ACBB_NOT_CONVERGED, "accuracy: cancelled after %zu of %zu settings",
+        return acbb_error_set(err, ACBB_CANCELLED, "accuracy: cancelled after %zu of %zu settings",
                               done, total);
     }
     mark_model_reference(rows, done);

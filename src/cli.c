@@ -338,36 +338,22 @@ typedef struct {
 static int csv_open(csv_file *c, const char *path)
 {
     c->path = path;
-    c->tmp = malloc(strlen(path) + 5);
-    if (!c->tmp) return EXIT_INTERNAL;
-    sprintf(c->tmp, "%s.tmp", path);
-    FILE *f = fopen(c->tmp, "w");
-    if (!f) {
-        fprintf(stderr, "acbb: cannot create %s: %s\n", c->tmp, strerror(errno));
-        free(c->tmp);
-        c->tmp = NULL;
-        return EXIT_BADINPUT;
-    }
+    FILE *f = acbb_cli_tmp_open(path, &c->tmp);
+    if (!f) return EXIT_BADINPUT;
     acbb_cli_out_init(&c->out, f);
     return 0;
 }
 
 static int csv_close(csv_file *c)
 {
-    FILE *f = c->out.f;
-    bool bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
-    bad = (fclose(f) != 0) || bad;
     int rc = 0;
-    if (bad || rename(c->tmp, c->path) != 0) {
-        fprintf(stderr, "acbb: cannot write %s: %s\n", c->path, strerror(errno));
-        remove(c->tmp);
+    if (acbb_cli_tmp_commit(c->out.f, c->tmp, c->path) != 0) {
         rc = EXIT_BADINPUT;
     } else if (c->out.nonfinite) {
         fprintf(stderr, "acbb: internal error: %ld non-finite values in %s\n",
                 c->out.nonfinite, c->path);
         rc = EXIT_INTERNAL;
     }
-    free(c->tmp);
     c->tmp = NULL;
     return rc;
 }
@@ -459,6 +445,7 @@ static int cmd_run(cli_args *a, int argc, char **argv)
     acbb_snapshot *snap = malloc(sizeof *snap);
     if (!snap) {
         acbb_sim_free(sim);
+        if (a->csv) csv_close(&csv);
         return EXIT_INTERNAL;
     }
     run_rows rows = { a->csv ? &csv.out : NULL, a->plot ? malloc(sizeof *rows.hist) : NULL };

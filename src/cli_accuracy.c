@@ -16,6 +16,7 @@
 #include "acbb/plot.h"
 #include "acbb/scene.h"
 #include "cli_accuracy.h"
+#include "cli_output.h"
 
 enum { ACC_EXIT_OK = 0, ACC_EXIT_INPUT = 2, ACC_EXIT_SOLVER = 3, ACC_EXIT_INTERNAL = 4 };
 
@@ -318,30 +319,14 @@ static void csv_rows(FILE *f, const acbb_accuracy_row *rows, size_t n)
     }
 }
 
-/* FILE.tmp, fsync, rename: a reader never sees a half-written file. */
+/* A temp file renamed into place: a reader never sees a half-written file. */
 static int write_csv(const char *path, const acbb_accuracy_row *rows, size_t n)
 {
-    size_t len = strlen(path) + 5;
-    char *tmp = malloc(len);
-    if (!tmp) return ACC_EXIT_INTERNAL;
-    snprintf(tmp, len, "%s.tmp", path);
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        fprintf(stderr, "acbb: cannot create %s: %s\n", tmp, strerror(errno));
-        free(tmp);
-        return ACC_EXIT_INPUT;
-    }
+    char *tmp;
+    FILE *f = acbb_cli_tmp_open(path, &tmp);
+    if (!f) return ACC_EXIT_INPUT;
     csv_rows(f, rows, n);
-    bool bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
-    bad = (fclose(f) != 0) || bad;
-    int rc = 0;
-    if (bad || rename(tmp, path) != 0) {
-        fprintf(stderr, "acbb: cannot write %s: %s\n", path, strerror(errno));
-        remove(tmp);
-        rc = ACC_EXIT_INPUT;
-    }
-    free(tmp);
-    return rc;
+    return acbb_cli_tmp_commit(f, tmp, path) == 0 ? 0 : ACC_EXIT_INPUT;
 }
 
 /* ---- plot ---- */

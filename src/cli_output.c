@@ -5,9 +5,12 @@
  * buy nothing but a build requirement. Numbers use %.10g in JSON and CSV so
  * values round-trip to ~1e-10 relative; the summary table uses fixed widths
  * that keep every line within 80 columns. */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "cli_output.h"
 
 #define CLI_DEG (180.0 / 3.14159265358979323846)   /* rad -> deg */
@@ -644,4 +647,45 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
                 fputc('\n', o->f);
         }
     }
+}
+
+FILE *acbb_cli_tmp_open(const char *path, char **tmp)
+{
+    size_t len = strlen(path) + sizeof ".tmp.XXXXXX";
+    *tmp = malloc(len);
+    if (!*tmp) return NULL;
+    snprintf(*tmp, len, "%s.tmp.XXXXXX", path);
+    int fd = mkstemp(*tmp);
+    FILE *f = fd >= 0 && fchmod(fd, 0644) == 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        fprintf(stderr, "acbb: cannot create a temporary file next to %s: %s\n", path,
+                strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            unlink(*tmp);
+        }
+        free(*tmp);
+        *tmp = NULL;
+    }
+    return f;
+}
+
+int acbb_cli_tmp_commit(FILE *f, char *tmp, const char *path)
+{
+    int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
+    int err = bad ? (errno ? errno : EIO) : 0;
+    if (fclose(f) != 0 && !bad) {
+        bad = 1;
+        err = errno;
+    }
+    if (!bad && rename(tmp, path) != 0) {
+        bad = 1;
+        err = errno;
+    }
+    if (bad) {
+        fprintf(stderr, "acbb: cannot write %s: %s\n", path, strerror(err));
+        unlink(tmp);
+    }
+    free(tmp);
+    return bad ? -1 : 0;
 }

@@ -47,6 +47,13 @@ typedef struct {
 
 void acbb_cli_out_init(acbb_cli_out *o, FILE *f);
 
+/* Atomic output files: open a unique PATH.tmp.XXXXXX (mkstemp, mode 0644)
+ * next to PATH; commit flushes, fsyncs, closes and renames it over PATH, or
+ * removes it on any failure. Both print the reason to stderr and return 0 /
+ * -1. *tmp is allocated by open and freed by commit. */
+FILE *acbb_cli_tmp_open(const char *path, char **tmp);
+int acbb_cli_tmp_commit(FILE *f, char *tmp, const char *path);
+
 /* True when the run reached steady state. */
 bool acbb_cli_point_ok(const acbb_cli_point *p);
 /* "converged", "not_converged", ..., or the sim_new failure name. */

@@ -1223,8 +1223,10 @@ static acbb_status be_vs_steady(const rpoint *p, double *diff, double *rise, dou
     acbb_error err;
     acbb_status st = acbb_network_build(s, &nw, &err);
     if (st != ACBB_OK) return st;
-    acbb_net_inputs in = { f->balls[0].a_i, f->balls[0].b_i, f->balls[0].a_o, f->balls[0].b_o,
-                           s->inner_speed, f->balls[0].omega_m, f->T_cavity };
+    acbb_net_inputs in = { .a_i = f->balls[0].a_i, .b_i = f->balls[0].b_i,
+                           .a_o = f->balls[0].a_o, .b_o = f->balls[0].b_o,
+                           .omega_i = s->inner_speed, .omega_m = f->balls[0].omega_m,
+                           .T_cavity_C = f->T_cavity };
     acbb_heat_sources h = { f->losses.inner, f->losses.outer, f->losses.spin, f->losses.drag };
     double q[ACBB_NET_MAX_NODES], Tbe[ACBB_NET_MAX_NODES], Tss[ACBB_NET_MAX_NODES];
     st = acbb_network_update(&nw, s, &in);

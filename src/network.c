@@ -641,10 +641,13 @@ acbb_status acbb_network_update(acbb_network *nw, const acbb_scene *s,
     acbb_status st = geom_from_scene(s, &g, NULL);
     if (st != ACBB_OK) return st;
     const double cmv = s->contact_multiplier;
-    double race_i = cmv * r_spot(in->a_i, in->b_i, s->ring.k, g.Z);
-    double ball_i = r_spot(in->a_i, in->b_i, s->ball.k, g.Z);
-    double race_o = cmv * r_spot(in->a_o, in->b_o, s->ring.k, g.Z);
-    double ball_o = r_spot(in->a_o, in->b_o, s->ball.k, g.Z);
+    /* Only the balls in contact conduct through a spot (load zone). */
+    int Zi = in->n_loaded_i > 0 ? in->n_loaded_i : g.Z;
+    int Zo = in->n_loaded_o > 0 ? in->n_loaded_o : g.Z;
+    double race_i = cmv * r_spot(in->a_i, in->b_i, s->ring.k, Zi);
+    double ball_i = r_spot(in->a_i, in->b_i, s->ball.k, Zi);
+    double race_o = cmv * r_spot(in->a_o, in->b_o, s->ring.k, Zo);
+    double ball_o = r_spot(in->a_o, in->b_o, s->ball.k, Zo);
 
     net_fluid f;
     net_edge cv[16];

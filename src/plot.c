@@ -421,6 +421,10 @@ static acbb_status exit_error(int wstatus, bool timed_out, const gp_io *io, acbb
         return acbb_error_set(err, ACBB_EIO, "gnuplot failed: no answer after %d s",
                               PLOT_TIMEOUT_MS / 1000);
     if (line[0]) return acbb_error_set(err, ACBB_EIO, "gnuplot failed: %s", line);
+    /* Where posix_spawnp is fork + exec (some libcs, valgrind), a missing
+     * program shows up as the child's exit 127 rather than ENOENT. */
+    if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 127 && !io->err[0])
+        return acbb_error_set(err, ACBB_EIO, "gnuplot not found on PATH (install gnuplot-nox)");
     if (WIFSIGNALED(wstatus))
         return acbb_error_set(err, ACBB_EIO, "gnuplot failed: killed by signal %d",
                               WTERMSIG(wstatus));

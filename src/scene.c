@@ -35,6 +35,7 @@
 #include <ini.h>
 
 #include "acbb/scene.h"
+#include "acbb/sim.h"
 
 #define PI 3.14159265358979323846
 #define RPM_TO_RAD_S (2.0 * PI / 60.0)
@@ -111,7 +112,7 @@ static const field k_fields[] = {
          "pitch diameter d_m (MODEL.md section 1)"),
     REAL("bearing", "ball_diameter_mm", "mm", ball_diameter, 1e-3, 6.35, OC, 0, 100,
          "ball diameter D"),
-    INT("bearing", "n_balls", n_balls, 21, 3, 100, "number of balls Z"),
+    INT("bearing", "n_balls", n_balls, 21, 3, 64, "number of balls Z (the engine holds up to 64)"),
     REAL("bearing", "inner_groove_radius_mm", "mm", inner_groove_radius, 1e-3, 3.43, OC, 0, 100,
          "inner groove radius lambda_i (needs lambda_i / D >= 0.505)"),
     REAL("bearing", "outer_groove_radius_mm", "mm", outer_groove_radius, 1e-3, 3.43, OC, 0, 100,
@@ -1153,3 +1154,6 @@ acbb_status acbb_scene_apply_edits(acbb_scene *s, const char *const *edits, size
     if (rc == ACBB_OK) *s = trial;
     return rc;
 }
+
+/* The schema's ball-count range must match what the engine holds. */
+_Static_assert(ACBB_MAX_BALLS == 64, "bearing.n_balls range in the schema is 3..64");

@@ -169,20 +169,24 @@ static acbb_status losses(acbb_sim *sim)
 
 static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
 {
+    /* Mean spot size over the balls in contact at each race, and how many
+     * there are (the rest carry no heat across a contact spot). */
     *in = (acbb_net_inputs){ 0 };
-    int n = 0;
     double wm = 0.0;
     for (int j = 0; j < sim->ms.n; j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
         wm += b->kin.omega_m;
-        if (b->Qi <= 0.0 && b->Qo <= 0.0) continue;
-        in->a_i += b->ct_i.a; in->b_i += b->ct_i.b;
-        in->a_o += b->ct_o.a; in->b_o += b->ct_o.b;
-        n++;
+        if (b->ct_i.a > 0.0 && b->Qi > 1e-6) {
+            in->a_i += b->ct_i.a; in->b_i += b->ct_i.b;
+            in->n_loaded_i++;
+        }
+        if (b->ct_o.a > 0.0 && b->Qo > 1e-6) {
+            in->a_o += b->ct_o.a; in->b_o += b->ct_o.b;
+            in->n_loaded_o++;
+        }
     }
-    if (n > 0) {
-        in->a_i /= n; in->b_i /= n; in->a_o /= n; in->b_o /= n;
-    }
+    if (in->n_loaded_i > 0) { in->a_i /= in->n_loaded_i; in->b_i /= in->n_loaded_i; }
+    if (in->n_loaded_o > 0) { in->a_o /= in->n_loaded_o; in->b_o /= in->n_loaded_o; }
     in->omega_i = sim->s.inner_speed;
     in->omega_m = wm / sim->ms.n;
     in->T_cavity_C = sim->T[sim->nw.node_cavity];
@@ -674,8 +678,12 @@ static void ball_view(const acbb_sim *sim, int j, acbb_ball_view *v)
     v->omega_x = b->kin.wx; v->omega_y = b->kin.wy; v->omega_z = b->kin.wz;
     v->loss = bl->in.P_L + bl->in.P_t + bl->in.P_s + bl->in.P_r
             + bl->out.P_L + bl->out.P_t + bl->out.P_s + bl->out.P_r;
-    double *f = &v->psi;
-    for (size_t k = 0; k < sizeof *v / sizeof(double); k++) f[k] = fin(f[k]);
+    /* Last guard only: evaluate() already ended the run on a non-finite value. */
+    double *f[] = { &v->psi, &v->Qi, &v->Qo, &v->alpha_i, &v->alpha_o, &v->slide_i,
+                    &v->slide_o, &v->spin_i, &v->spin_o, &v->film_i, &v->film_o, &v->pmax_i,
+                    &v->pmax_o, &v->a_i, &v->b_i, &v->a_o, &v->b_o, &v->omega_m, &v->omega_x,
+                    &v->omega_y, &v->omega_z, &v->loss };
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) *f[k] = fin(*f[k]);
 }
 
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
@@ -701,9 +709,9 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->T_housing = fin(pt.housing);
     o->T_shaft = fin(pt.shaft);
     o->T_cavity = fin(sim->T[nw->node_cavity]);
-    o->losses = sim->loss;
-    double *l = &o->losses.shear;
-    for (size_t k = 0; k < sizeof o->losses / sizeof(double); k++) l[k] = fin(l[k]);
+    const acbb_losses *L = &sim->loss;
+    o->losses = (acbb_losses){ fin(L->shear), fin(L->slip), fin(L->spin), fin(L->rolling),
+                               fin(L->drag), fin(L->total), fin(L->inner), fin(L->outer) };
     o->exp_ball = fin(sim->exp.ball);
     o->exp_inner = fin(sim->exp.inner);
     o->exp_inner_cen = fin(sim->exp.inner_cen);

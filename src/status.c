@@ -17,6 +17,7 @@ const char *acbb_status_name(acbb_status s)
     case ACBB_NOT_CONVERGED: return "not_converged";
     case ACBB_NONFINITE: return "nonfinite";
     case ACBB_SINGULAR: return "singular";
+    case ACBB_CANCELLED: return "cancelled";
     }
     return "unknown";
 }

@@ -292,7 +292,7 @@ static void check_transient(const acbb_scene *s, acbb_network *nw, const char *t
 
 static void test_open_and_still(const acbb_scene *s, acbb_network *nw)
 {
-    acbb_net_inputs in = {0, 0, 0, 0, 0.0, 0.0, 26.0};
+    acbb_net_inputs in = { .T_cavity_C = 26.0 };
     ok(acbb_network_update(nw, s, &in) == ACBB_OK, "update with a = 0, omega = 0 OK");
     int finite = 1;
     for (int e = 0; e < acbb_tnet_edge_count(nw->net); e++) {

@@ -663,7 +663,7 @@ static void test_accuracy_cancel(const acbb_scene *s0)
     acbb_accuracy_options o = { .knobs = ACBB_ACCURACY_KNOB_BIT(ACBB_KNOB_CONTACT_GRID), .repeats = 1,
                                 .cancel = &flag };
     acbb_status st = acbb_accuracy_run(s0, &o, rows, ACBB_BENCH_MAX_ROWS, &n, NULL, NULL, &err);
-    ok(st == ACBB_NOT_CONVERGED && n == 0, "cancel: a set flag runs nothing (st %d, n %zu)", st, n);
+    ok(st == ACBB_CANCELLED && n == 0, "cancel: a set flag runs nothing (st %d, n %zu)", st, n);
     has_substr(err.msg, "accuracy: cancelled after 0 of 9 settings", "cancel: the message counts");
 
     /* Cancelled from the progress callback after 2 settings: exactly 2 rows,
@@ -671,7 +671,7 @@ static void test_accuracy_cancel(const acbb_scene *s0)
     atomic_store(&flag, 0);
     cancel_at at = { &flag, 2, 0 };
     st = acbb_accuracy_run(s0, &o, rows, ACBB_BENCH_MAX_ROWS, &n, cancel_on_progress, &at, &err);
-    ok(st == ACBB_NOT_CONVERGED && n == 2 && at.calls == 2, "cancel after 2 of 9: 2 rows (n %zu)", n);
+    ok(st == ACBB_CANCELLED && n == 2 && at.calls == 2, "cancel after 2 of 9: 2 rows (n %zu)", n);
     has_substr(err.msg, "cancelled after 2 of 9 settings", "cancel after 2: message");
     acbb_accuracy_options plain = { .knobs = o.knobs, .repeats = 1 };
     size_t nf = 0;
@@ -700,7 +700,7 @@ static void test_accuracy_cancel(const acbb_scene *s0)
     st = acbb_accuracy_run(&s, &on, rows, ACBB_BENCH_MAX_ROWS, &n, NULL, NULL, &err);
     double late_ms = 1e3 * (now_s() - cl.t_set);
     pthread_join(th, NULL);
-    ok(st == ACBB_NOT_CONVERGED && n == 0, "mid-run cancel: the interrupted setting is dropped (n %zu)", n);
+    ok(st == ACBB_CANCELLED && n == 0, "mid-run cancel: the interrupted setting is dropped (n %zu)", n);
     ok(late_ms < 0.25 * row_ms, "mid-run cancel: returned %.1f ms after the flag (setting: %.0f ms)",
        late_ms, row_ms);
 }

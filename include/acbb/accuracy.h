@@ -116,7 +116,7 @@ size_t acbb_accuracy_plan_size(const acbb_accuracy_options *opt);
  * Returns ACBB_OK when the plan ran (individual settings may have failed:
  * see row.status); ACBB_EINVAL for a bad option, cap too small, or an
  * invalid base scene (message in err); nothing is run then and *n = 0.
- * When opt->cancel is set: ACBB_NOT_CONVERGED ("accuracy: cancelled after
+ * When opt->cancel is set: ACBB_CANCELLED ("accuracy: cancelled after
  * k of n settings" in err); rows[0..*n) are the settings that finished, the
  * interrupted one is dropped, and every error is left NaN (an incomplete
  * knob has no trustworthy reference). */

@@ -34,6 +34,7 @@ typedef struct {
     double omega_i;         /* inner ring speed, rad/s */
     double omega_m;         /* ball orbital (cage) speed, rad/s */
     double T_cavity_C;      /* current oil-air temperature (for properties), C */
+    int n_loaded_i, n_loaded_o; /* balls in contact at each race; 0 = all Z */
 } acbb_net_inputs;
 
 typedef struct {

@@ -15,7 +15,8 @@ typedef enum {
     ACBB_CONTACT_LOST = -7,  /* every ball unloaded: no equilibrium */
     ACBB_NOT_CONVERGED = -8, /* step or time limit reached before steady state */
     ACBB_NONFINITE = -9,     /* a NaN/Inf was caught before publication */
-    ACBB_SINGULAR = -10      /* a linear system could not be factorised */
+    ACBB_SINGULAR = -10,     /* a linear system could not be factorised */
+    ACBB_CANCELLED = -11     /* the caller asked a long computation to stop */
 } acbb_status;
 
 /* Human-readable message buffer; the caller owns it (usually on the stack). */
