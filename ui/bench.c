@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "worker.h"
 
 struct acbb_bench {
     pthread_mutex_t mu;        /* guards st */
@@ -110,28 +111,13 @@ static void *bench_main(void *p)
 
 /* Non-blocking, close-on-exec pipe (as worker.c's: a full pipe must never
  * block the bench thread, and gnuplot children must not inherit it). */
-static int make_wake_pipe(int fd[2])
-{
-    if (pipe(fd) != 0) return -1;
-    for (int i = 0; i < 2; i++) {
-        int fl = fcntl(fd[i], F_GETFL);
-        if (fl < 0 || fcntl(fd[i], F_SETFL, fl | O_NONBLOCK) < 0 ||
-            fcntl(fd[i], F_SETFD, FD_CLOEXEC) < 0) {
-            close(fd[0]);
-            close(fd[1]);
-            return -1;
-        }
-    }
-    return 0;
-}
-
 acbb_status acbb_bench_new(acbb_bench **out, acbb_error *err)
 {
     *out = NULL;
     acbb_bench *b = calloc(1, sizeof *b);
     if (!b) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     int fd[2];
-    if (make_wake_pipe(fd) != 0) {
+    if (acbb_wake_pipe(fd) != 0) {
         free(b);
         return acbb_error_set(err, ACBB_EIO, "cannot create the wake-up pipe: %s", strerror(errno));
     }

@@ -392,7 +392,8 @@ static void *worker_main(void *arg)
 
 /* ---- client side ---- */
 
-static int make_wake_pipe(int fd[2])
+/* A non-blocking, close-on-exec pipe for waking a select() loop. */
+int acbb_wake_pipe(int fd[2])
 {
     if (pipe(fd) != 0) return -1;
     for (int i = 0; i < 2; i++) {
@@ -430,7 +431,7 @@ acbb_status acbb_worker_new(const acbb_scene *scene, int pace, acbb_worker **out
     atomic_init(&w->wake_pending, 0);
     acbb_history_init(&w->hist);
     int fd[2];
-    if (make_wake_pipe(fd) != 0) {
+    if (acbb_wake_pipe(fd) != 0) {
         free(w);
         return acbb_error_set(err, ACBB_EIO, "cannot create the wake-up pipe: %s", strerror(errno));
     }
