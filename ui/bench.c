@@ -6,7 +6,6 @@
  * `opt` and `work` while it runs (written before pthread_create, read after
  * pthread_join); everything in `st` is behind `mu`. */
 #include <errno.h>
-#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
@@ -16,15 +15,14 @@
 #include <unistd.h>
 
 #include "bench.h"
-#include "worker.h"
+#include "wake.h"
 
 struct acbb_bench {
     pthread_mutex_t mu;        /* guards st */
     pthread_cond_t cv_end;     /* a plan ended (acbb_bench_wait) */
     acbb_bench_state st;
     _Atomic int cancel;        /* the engine's cancel hook */
-    _Atomic int wake_pending;  /* a byte sits in the pipe, not yet drained */
-    int wake_rd, wake_wr;
+    acbb_wake wake;            /* the UI's select() wakes on it */
     /* client thread only */
     pthread_t thread;
     int has_thread;            /* created and not yet joined */
@@ -55,15 +53,7 @@ const char *acbb_bench_phase_name(acbb_bench_phase p)
 
 /* ---- bench thread ---- */
 
-static void wake_ui(acbb_bench *b)
-{
-    /* One byte is enough to wake select(); skip the write while one waits. */
-    if (atomic_exchange(&b->wake_pending, 1) == 0) {
-        char c = 1;
-        ssize_t r = write(b->wake_wr, &c, 1);
-        (void)r; /* EAGAIN means a byte is already there: also fine */
-    }
-}
+static void wake_ui(acbb_bench *b) { acbb_wake_signal(&b->wake); }
 
 /* The engine's progress callback, on the bench thread after each setting:
  * publish the rows finished since the last call (`work` is ours). */
@@ -116,26 +106,21 @@ acbb_status acbb_bench_new(acbb_bench **out, acbb_error *err)
     *out = NULL;
     acbb_bench *b = calloc(1, sizeof *b);
     if (!b) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    int fd[2];
-    if (acbb_wake_pipe(fd) != 0) {
+    if (acbb_wake_init(&b->wake) != 0) {
         free(b);
         return acbb_error_set(err, ACBB_EIO, "cannot create the wake-up pipe: %s", strerror(errno));
     }
-    b->wake_rd = fd[0];
-    b->wake_wr = fd[1];
     pthread_condattr_t ca;
     pthread_condattr_init(&ca);
     pthread_condattr_setclock(&ca, CLOCK_MONOTONIC);
     int rc = pthread_mutex_init(&b->mu, NULL) | pthread_cond_init(&b->cv_end, &ca);
     pthread_condattr_destroy(&ca);
     if (rc != 0) {
-        close(fd[0]);
-        close(fd[1]);
+        acbb_wake_close(&b->wake);
         free(b);
         return acbb_error_set(err, ACBB_ENOMEM, "cannot initialise the benchmark's lock");
     }
     atomic_init(&b->cancel, 0);
-    atomic_init(&b->wake_pending, 0);
     b->st.phase = ACBB_BENCH_IDLE;
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) b->st.picks[k] = -1;
     *out = b;
@@ -247,15 +232,12 @@ int acbb_bench_wait(acbb_bench *b, int timeout_ms)
 
 int acbb_bench_wake_fd(const acbb_bench *b)
 {
-    return b->wake_rd;
+    return b->wake.rd;
 }
 
 void acbb_bench_drain_wake(acbb_bench *b)
 {
-    char buf[64];
-    /* Drain first, then clear the flag (worker.c explains why not the reverse). */
-    while (read(b->wake_rd, buf, sizeof buf) > 0) {}
-    atomic_store(&b->wake_pending, 0);
+    acbb_wake_drain(&b->wake);
 }
 
 void acbb_bench_free(acbb_bench *b)
@@ -263,8 +245,7 @@ void acbb_bench_free(acbb_bench *b)
     if (!b) return;
     acbb_bench_cancel(b);
     if (b->has_thread) pthread_join(b->thread, NULL);
-    close(b->wake_rd);
-    close(b->wake_wr);
+    acbb_wake_close(&b->wake);
     pthread_mutex_destroy(&b->mu);
     pthread_cond_destroy(&b->cv_end);
     free(b);

@@ -6,7 +6,6 @@
  * a worker_ctx on the worker's own stack, so the shared part is exactly
  * what is behind the mutex. */
 #include <errno.h>
-#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
@@ -16,6 +15,7 @@
 #include <unistd.h>
 
 #include "worker.h"
+#include "wake.h"
 
 #define QUEUE_CAP 16
 #define RATE_WINDOW_S 0.25  /* steps/s is measured over windows this long */
@@ -40,8 +40,7 @@ struct acbb_worker {
     acbb_history hist;
     acbb_scene initial;        /* read by the worker once at start-up */
     _Atomic int pace;          /* steps per second, 0 = flat out */
-    _Atomic int wake_pending;  /* a byte sits in the pipe, not yet drained */
-    int wake_rd, wake_wr;
+    acbb_wake wake;            /* the UI's select() wakes on it */
 };
 
 /* Worker-private: only the worker thread touches these. */
@@ -100,15 +99,7 @@ const char *acbb_worker_phase_name(acbb_worker_phase p)
 
 /* ---- publication (worker side) ---- */
 
-static void wake_ui(acbb_worker *w)
-{
-    /* One byte is enough to wake select(); skip the write while one waits. */
-    if (atomic_exchange(&w->wake_pending, 1) == 0) {
-        char b = 1;
-        ssize_t r = write(w->wake_wr, &b, 1);
-        (void)r; /* EAGAIN means a byte is already there: also fine */
-    }
-}
+static void wake_ui(acbb_worker *w) { acbb_wake_signal(&w->wake); }
 
 static double run_wall(const worker_ctx *c, double now)
 {
@@ -392,21 +383,6 @@ static void *worker_main(void *arg)
 
 /* ---- client side ---- */
 
-/* A non-blocking, close-on-exec pipe for waking a select() loop. */
-int acbb_wake_pipe(int fd[2])
-{
-    if (pipe(fd) != 0) return -1;
-    for (int i = 0; i < 2; i++) {
-        int fl = fcntl(fd[i], F_GETFL);
-        if (fl < 0 || fcntl(fd[i], F_SETFL, fl | O_NONBLOCK) < 0 ||
-            fcntl(fd[i], F_SETFD, FD_CLOEXEC) < 0) {
-            close(fd[0]);
-            close(fd[1]);
-            return -1;
-        }
-    }
-    return 0;
-}
 
 static int init_sync(acbb_worker *w)
 {
@@ -428,18 +404,13 @@ acbb_status acbb_worker_new(const acbb_scene *scene, int pace, acbb_worker **out
     w->initial = *scene;
     w->st.phase = ACBB_WORKER_NO_SIM; /* until the thread has built the Sim */
     atomic_init(&w->pace, pace < 0 ? 0 : pace);
-    atomic_init(&w->wake_pending, 0);
     acbb_history_init(&w->hist);
-    int fd[2];
-    if (acbb_wake_pipe(fd) != 0) {
+    if (acbb_wake_init(&w->wake) != 0) {
         free(w);
         return acbb_error_set(err, ACBB_EIO, "cannot create the wake-up pipe: %s", strerror(errno));
     }
-    w->wake_rd = fd[0];
-    w->wake_wr = fd[1];
     if (init_sync(w) != 0) {
-        close(fd[0]);
-        close(fd[1]);
+        acbb_wake_close(&w->wake);
         free(w);
         return acbb_error_set(err, ACBB_ENOMEM, "cannot initialise the worker's lock");
     }
@@ -455,8 +426,7 @@ acbb_status acbb_worker_new(const acbb_scene *scene, int pace, acbb_worker **out
     int rc = pthread_create(&w->thread, NULL, worker_main, w);
     pthread_sigmask(SIG_SETMASK, &old, NULL);
     if (rc != 0) {
-        close(fd[0]);
-        close(fd[1]);
+        acbb_wake_close(&w->wake);
         pthread_mutex_destroy(&w->mu);
         pthread_cond_destroy(&w->cv_cmd);
         pthread_cond_destroy(&w->cv_done);
@@ -501,8 +471,7 @@ void acbb_worker_free(acbb_worker *w)
         nanosleep(&ts, NULL);
     }
     pthread_join(w->thread, NULL);
-    close(w->wake_rd);
-    close(w->wake_wr);
+    acbb_wake_close(&w->wake);
     pthread_mutex_destroy(&w->mu);
     pthread_cond_destroy(&w->cv_cmd);
     pthread_cond_destroy(&w->cv_done);
@@ -541,18 +510,12 @@ void acbb_worker_read(acbb_worker *w, acbb_worker_state *st, acbb_history *hist)
 
 int acbb_worker_wake_fd(const acbb_worker *w)
 {
-    return w->wake_rd;
+    return w->wake.rd;
 }
 
 void acbb_worker_drain_wake(acbb_worker *w)
 {
-    char buf[64];
-    /* Empty the pipe, then clear the flag. A publication between the two
-     * skips its write but is seen by the read that follows the drain; any
-     * later one writes a fresh byte. (Clearing first could lose a wake-up:
-     * its byte would be drained while the flag stays set.) */
-    while (read(w->wake_rd, buf, sizeof buf) > 0) {}
-    atomic_store(&w->wake_pending, 0);
+    acbb_wake_drain(&w->wake);
 }
 
 int acbb_worker_wait_done(acbb_worker *w, unsigned long seq, int timeout_ms)

@@ -108,8 +108,4 @@ int acbb_worker_wait_done(acbb_worker *w, unsigned long seq, int timeout_ms);
 
 const char *acbb_worker_phase_name(acbb_worker_phase p);
 
-/* A non-blocking, close-on-exec pipe pair for waking the UI's select()
- * (also used by the accuracy benchmark thread). 0 or -1 with errno. */
-int acbb_wake_pipe(int fd[2]);
-
 #endif
