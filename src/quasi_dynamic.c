@@ -128,6 +128,29 @@ static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const doubl
     return ACBB_DIVERGED;
 }
 
+/* Continuation in the slip regularisation: the traction field is nearly
+ * discontinuous at zero slip (s_reg = 1 um/s, MODEL.md section 4); start from
+ * a smooth 1 cm/s and tighten by sqrt(10), warm-starting each solve. With
+ * boundary friction alone (no film) the stick/slip field can leave no root
+ * a Newton method resolves at 1 um/s; the solution at the tightest
+ * regularisation that converged is then kept if it is at most 0.1 mm/s
+ * (the traction saturates within 0.1 mm/s of slip instead of 1 um/s). On
+ * return the solver holds the accepted root and the tables its s_reg. */
+static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const double *x0)
+{
+    double x[4], good = 0.0;
+    memcpy(x, x0, sizeof x);
+    for (double sr = 1e-2; sr >= 0.99e-6; sr *= 0.316227766) {
+        q->ci.s_reg = q->co.s_reg = sr;
+        if (newton(q, F, x) != ACBB_OK) break;
+        for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
+        good = sr;
+    }
+    if (good <= 0.0 || good > 1.01e-4) return ACBB_DIVERGED;
+    q->ci.s_reg = q->co.s_reg = good;
+    return newton(q, F, x); /* leave the solver at the accepted root */
+}
+
 static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
@@ -142,18 +165,8 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     double x0[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
                      b->kin.wz / omega_i };
     gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, &c };
-    if (newton(q, &F, x0) != ACBB_OK) {
-        /* Continuation in the slip regularisation: the traction field is
-         * nearly discontinuous at zero slip (s_reg = 1 um/s); start from a
-         * smooth 1 cm/s and tighten, warm-starting each solve. */
-        double x[4];
-        memcpy(x, x0, sizeof x);
-        for (double sr = 1e-2; sr >= 0.99e-6; sr *= 0.1) {
-            q->ci.s_reg = q->co.s_reg = sr;
-            if (newton(q, &F, x) != ACBB_OK) return ACBB_DIVERGED;
-            for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
-        }
-    }
+    if (newton(q, &F, x0) != ACBB_OK && continuation(q, &F, x0) != ACBB_OK)
+        return ACBB_DIVERGED;
     const gsl_vector *x = q->solver->x;
     for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * gsl_vector_get(x, d);
     qd_f(x, &c, q->solver->f); /* tractions at the accepted root */
