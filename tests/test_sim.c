@@ -186,6 +186,40 @@ static void test_hard_cases(void)
     is_close(snap_a.heat_out, snap_a.heat_in, 1e-6, 0, "7-node: heat in = heat out");
 }
 
+/* MODEL.md section 9: a transient step that moves the total loss by more
+ * than 5 % is rejected and retried with half the step; no accepted step
+ * may do so unless the step is already at its 0.05 s minimum. A 600 s
+ * initial step provokes the rule from the start. */
+static void test_step_rejection(void)
+{
+    acbb_scene s = base(15000, 1000, 1);
+    s.time_step = 600;
+    acbb_sim *sim;
+    acbb_error err = { "" };
+    if (acbb_sim_new(&s, &sim, &err) != ACBB_OK) {
+        ok(0, "sim_new: %s", err.msg);
+        return;
+    }
+    acbb_sim_snapshot(sim, &snap_a);
+    double prev = snap_a.losses.total, worst = 0.0, first_dt = 0.0;
+    int steps = 0;
+    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING && steps < 2000) {
+        double t0 = snap_a.time;
+        acbb_sim_step(sim);
+        acbb_sim_snapshot(sim, &snap_a);
+        double dt = snap_a.time - t0, change = fabs(snap_a.losses.total - prev) / snap_a.losses.total;
+        if (steps == 0) first_dt = dt;
+        if (dt > 0.05 + 1e-12 && snap_a.state == ACBB_RUN_RUNNING) worst = fmax(worst, change);
+        prev = snap_a.losses.total;
+        steps++;
+    }
+    acbb_sim_free(sim);
+    ok(snap_a.state == ACBB_RUN_CONVERGED, "600 s initial step still converges");
+    ok(first_dt < 600, "the 600 s first step was cut (accepted %.3g s)", first_dt);
+    ok(worst <= 0.05 + 1e-12, "no accepted step above the minimum moved the loss > 5 %% (%.2f %%)",
+       100 * worst);
+}
+
 static void test_bad_scene(void)
 {
     acbb_scene s = base(15000, 1000, 1);
@@ -218,6 +252,7 @@ int main(void)
     test_zero_speed();
     test_steady_mode_matches_transient();
     test_hard_cases();
+    test_step_rejection();
     test_bad_scene();
     test_disabled_effects();
     return done_testing();
