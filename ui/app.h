@@ -109,6 +109,9 @@ void acbb_put(acbb_app *a, int y, int x, int w, acbb_role r, const char *fmt, ..
 /* Horizontal bar of w cells filled to fraction f (eighths with UTF-8). */
 void acbb_bar(acbb_app *a, int y, int x, int w, double f, acbb_role r);
 void acbb_hrule(acbb_app *a, int y, int x, int w);
+/* Scroll keys (j k arrows PgUp PgDn Home) over n rows shown `page` at a
+ * time: updates *top within [0, n - page]; returns 1 if ch was one of them. */
+int acbb_scroll_key(int ch, int page, int n, int *top);
 /* A chart in rect: title row, y labels on the left; up to 3 series. */
 void acbb_draw_chart(acbb_app *a, acbb_rect r, const char *title, const double *x,
                      const double *const *ys, const char *const *names, int nser, size_t n);

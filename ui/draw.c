@@ -118,3 +118,20 @@ void acbb_draw_chart(acbb_app *a, acbb_rect r, const char *title, const double *
     }
     acbb_role_on(a, ACBB_ROLE_NORMAL);
 }
+
+int acbb_scroll_key(int ch, int page, int n, int *top)
+{
+    int t = *top;
+    switch (ch) {
+    case 'j': case KEY_DOWN: t++; break;
+    case 'k': case KEY_UP: t--; break;
+    case KEY_NPAGE: t += page; break;
+    case KEY_PPAGE: t -= page; break;
+    case KEY_HOME: t = 0; break;
+    default: return 0;
+    }
+    if (t > n - page) t = n - page;
+    if (t < 0) t = 0;
+    *top = t;
+    return 1;
+}

@@ -51,17 +51,5 @@ void acbb_screen_balls_draw(acbb_app *a)
 
 int acbb_screen_balls_key(acbb_app *a, int ch)
 {
-    int page = a->lay.table_rows, n = a->st.snap.n_balls, top = a->ball_top;
-    switch (ch) {
-    case 'j': case KEY_DOWN: top++; break;
-    case 'k': case KEY_UP: top--; break;
-    case KEY_NPAGE: top += page; break;
-    case KEY_PPAGE: top -= page; break;
-    case KEY_HOME: top = 0; break;
-    default: return 0;
-    }
-    if (top > n - page) top = n - page;
-    if (top < 0) top = 0;
-    a->ball_top = top;
-    return 1;
+    return acbb_scroll_key(ch, a->lay.table_rows, a->st.snap.n_balls, &a->ball_top);
 }

@@ -31,18 +31,5 @@ void acbb_screen_nodes_draw(acbb_app *a)
 int acbb_screen_nodes_key(acbb_app *a, int ch)
 {
     int page = (rows_per_col(a) - 1) * a->lay.node_columns;
-    int n = a->st.snap.n_nodes;
-    int top = a->node_top;
-    switch (ch) {
-    case 'j': case KEY_DOWN: top++; break;
-    case 'k': case KEY_UP: top--; break;
-    case KEY_NPAGE: top += page; break;
-    case KEY_PPAGE: top -= page; break;
-    case KEY_HOME: top = 0; break;
-    default: return 0;
-    }
-    if (top > n - page) top = n - page;
-    if (top < 0) top = 0;
-    a->node_top = top;
-    return 1;
+    return acbb_scroll_key(ch, page, a->st.snap.n_nodes, &a->node_top);
 }
