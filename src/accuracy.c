@@ -173,17 +173,11 @@ static int cancelled(const _Atomic int *cancel)
     return cancel && atomic_load(cancel) != 0;
 }
 
-/* acbb_sim_run, or its step loop when a cancel hook is given so a cancel
- * lands between two steps (acbb_sim_run has no hook). Without a hook the
- * engine's own loop runs, so the timings are exactly the CLI's. */
+/* The engine's run loop; a cancel ends it inside a step too. */
 static acbb_status run_sim(acbb_sim *sim, const _Atomic int *cancel)
 {
-    if (!cancel) return acbb_sim_run(sim);
-    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING) {
-        if (cancelled(cancel)) return ACBB_OK; /* the caller sees the flag */
-        acbb_sim_step(sim);
-    }
-    return acbb_sim_step(sim); /* a no-op after the end: the run's final status */
+    acbb_run_ctl ctl = { .cancel = cancel };
+    return acbb_sim_drive(sim, &ctl);
 }
 
 /* One timed run: acbb_sim_new + acbb_sim_run + acbb_sim_free on the clock,
@@ -194,7 +188,7 @@ static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel,
 {
     acbb_sim *sim = NULL;
     double t0 = now_ms();
-    acbb_status st = acbb_sim_new(sc, &sim, err);
+    acbb_status st = acbb_sim_new_ctl(sc, cancel, &sim, err);
     if (st != ACBB_OK) {
         *ms = now_ms() - t0;
         *have_snap = 0;

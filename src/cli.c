@@ -232,31 +232,28 @@ static double now_ms(void)
 
 typedef void (*row_fn)(void *ctx, const acbb_snapshot *snap);
 
-/* Step to the end of the run, calling `row` for the initial state and after
- * every step that advanced the iteration count. The engine ends the run
- * itself (steady state, failure, max_steps / max_time); the call budget is
- * only a guard against an engine that never stops, reported as an internal
- * error. Returns the last step's status; `snap` holds the final state. */
-static acbb_status drive(acbb_sim *sim, const acbb_scene *sc, acbb_snapshot *snap,
-                         row_fn row, void *ctx, bool *runaway_loop)
+typedef struct {
+    acbb_snapshot *snap;
+    row_fn row;
+    void *ctx;
+} drive_ctx;
+
+static int drive_hook(void *ctx, const acbb_sim *sim)
 {
-    long budget = 10L * (sc->max_steps > 0 ? sc->max_steps : 0) + 10000L;
-    acbb_status st = ACBB_OK;
+    drive_ctx *d = ctx;
+    acbb_sim_snapshot(sim, d->snap);
+    d->row(d->ctx, d->snap);
+    return 0;
+}
+
+/* The engine's run loop to the end of the run, calling `row` for the
+ * initial state and after every step. `snap` holds the final state. */
+static acbb_status drive(acbb_sim *sim, acbb_snapshot *snap, row_fn row, void *ctx)
+{
+    drive_ctx d = { snap, row, ctx };
+    acbb_run_ctl ctl = { .hook = row ? drive_hook : NULL, .ctx = &d };
+    acbb_status st = acbb_sim_drive(sim, &ctl);
     acbb_sim_snapshot(sim, snap);
-    if (row) row(ctx, snap);
-    long last = snap->iteration;
-    *runaway_loop = false;
-    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING) {
-        if (budget-- <= 0) {
-            *runaway_loop = true;
-            break;
-        }
-        st = acbb_sim_step(sim);
-        acbb_sim_snapshot(sim, snap);
-        if (row && snap->iteration != last) row(ctx, snap);
-        last = snap->iteration;
-        if (st != ACBB_OK) break;
-    }
     return st;
 }
 
@@ -272,7 +269,7 @@ static void run_point(acbb_cli_point *p)
         p->wall_ms = now_ms() - t0;
         return;
     }
-    p->status = drive(sim, &p->scene, &p->snap, NULL, NULL, &p->internal_error);
+    p->status = drive(sim, &p->snap, NULL, NULL);
     p->have_snap = true;
     acbb_sim_free(sim);
     p->wall_ms = now_ms() - t0;
@@ -395,18 +392,13 @@ static void run_row_cb(void *ctx, const acbb_snapshot *snap)
 }
 
 static int run_report(const cli_args *a, const char *preset, const acbb_scene *sc,
-                      const acbb_snapshot *snap, bool runaway_loop)
+                      const acbb_snapshot *snap)
 {
     acbb_cli_out o;
     acbb_cli_out_init(&o, stdout);
     if (a->json) acbb_cli_json_run(&o, sc, snap);
     else if (!a->quiet) acbb_cli_print_summary(&o, preset, sc, snap);
     int rc = stdout_check(&o);
-    if (runaway_loop) {
-        fprintf(stderr, "acbb: internal error: the engine did not end the run "
-                "after %ld iterations\n", snap->iteration);
-        return EXIT_INTERNAL;
-    }
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);
         rc = worst(rc, EXIT_SOLVER);
@@ -450,11 +442,10 @@ static int cmd_run(cli_args *a, int argc, char **argv)
     }
     run_rows rows = { a->csv ? &csv.out : NULL, a->plot ? malloc(sizeof *rows.hist) : NULL };
     if (rows.hist) acbb_history_init(rows.hist);
-    bool runaway_loop = false;
-    drive(sim, &sc, snap, (a->csv || rows.hist) ? run_row_cb : NULL, &rows, &runaway_loop);
+    drive(sim, snap, (a->csv || rows.hist) ? run_row_cb : NULL, &rows);
     acbb_sim_free(sim);
     rc = a->csv ? csv_close(&csv) : 0;
-    rc = worst(run_report(a, preset, &sc, snap, runaway_loop), rc);
+    rc = worst(run_report(a, preset, &sc, snap), rc);
     if (a->plot && !rows.hist) rc = worst(rc, EXIT_INTERNAL);
     if (rows.hist) rc = worst(rc, acbb_cli_write_plot(a->plot, rows.hist, snap, preset));
     free(rows.hist);

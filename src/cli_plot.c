@@ -138,6 +138,14 @@ static int load_plot_scene(const plot_args *a, acbb_scene *sc)
     return 0;
 }
 
+static int record_hook(void *ctx, const acbb_sim *sim)
+{
+    acbb_snapshot snap;
+    acbb_sim_snapshot(sim, &snap);
+    acbb_history_push(ctx, &snap);
+    return 0;
+}
+
 /* Step to the end of the run, recording every published step (DESIGN.md
  * "Data flow"). The engine ends the run itself; the call budget only
  * guards against one that never stops. Returns 0, 3 or 4. */
@@ -150,25 +158,11 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
         fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         return input_exit(st);
     }
-    long budget = 10L * (sc->max_steps > 0 ? sc->max_steps : 0) + 10000L;
     acbb_history_init(h);
+    acbb_run_ctl ctl = { .hook = record_hook, .ctx = h };
+    acbb_sim_drive(sim, &ctl);
     acbb_sim_snapshot(sim, snap);
-    acbb_history_push(h, snap);
-    long last = snap->iteration;
-    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING && budget-- > 0) {
-        st = acbb_sim_step(sim);
-        acbb_sim_snapshot(sim, snap);
-        if (snap->iteration != last) acbb_history_push(h, snap);
-        last = snap->iteration;
-        if (st != ACBB_OK) break;
-    }
-    bool stuck = acbb_sim_state(sim) == ACBB_RUN_RUNNING;
     acbb_sim_free(sim);
-    if (stuck) {
-        fprintf(stderr, "acbb: internal error: the engine did not end the run after %ld "
-                "iterations\n", snap->iteration);
-        return PLOT_EXIT_PLOT;
-    }
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s (plotting the last good state)\n",
                 acbb_run_status_name(snap), snap->message);

@@ -124,8 +124,16 @@ static void observe(rpoint *p, const acbb_snapshot *s)
                                       s->exp_ball, s->balls[0].Qi, s->balls[0].Qo, s->delta_x };
 }
 
-/* Drive one Sim to the end of its run, as `acbb run` does. The call budget
- * only guards against an engine that never ends its run. */
+static int observe_hook(void *ctx, const acbb_sim *sim)
+{
+    rpoint *p = ctx;
+    acbb_sim_snapshot(sim, &p->last);
+    if (p->last.iteration == 0) p->first = p->last;
+    observe(p, &p->last);
+    return 0;
+}
+
+/* Drive one Sim to the end of its run, as `acbb run` does. */
 static void run_one(rpoint *p)
 {
     double t0 = now_ms();
@@ -139,19 +147,9 @@ static void run_one(rpoint *p)
         p->wall_ms = now_ms() - t0;
         return;
     }
-    acbb_sim_snapshot(sim, &p->first);
-    observe(p, &p->first);
-    p->last = p->first;
-    long budget = 10L * (p->scene.max_steps > 0 ? p->scene.max_steps : 0) + 10000L;
-    long last_it = p->first.iteration;
-    acbb_status st = ACBB_OK;
-    while (acbb_sim_state(sim) == ACBB_RUN_RUNNING && budget-- > 0) {
-        st = acbb_sim_step(sim);
-        acbb_sim_snapshot(sim, &p->last);
-        if (p->last.iteration != last_it) observe(p, &p->last);
-        last_it = p->last.iteration;
-        if (st != ACBB_OK) break;
-    }
+    acbb_run_ctl ctl = { .hook = observe_hook, .ctx = p };
+    acbb_status st = acbb_sim_drive(sim, &ctl);
+    acbb_sim_snapshot(sim, &p->last);
     p->ok = p->last.state == ACBB_RUN_CONVERGED && !p->oom;
     if (p->oom) {
         p->status = ACBB_ENOMEM;
@@ -1228,7 +1226,7 @@ static acbb_status be_vs_steady(const rpoint *p, double *diff, double *rise, dou
                            .omega_i = s->inner_speed, .omega_m = f->balls[0].omega_m,
                            .T_cavity_C = f->T_cavity };
     acbb_heat_sources h = { f->losses.inner, f->losses.outer, f->losses.spin, f->losses.drag };
-    double q[ACBB_NET_MAX_NODES], Tbe[ACBB_NET_MAX_NODES], Tss[ACBB_NET_MAX_NODES];
+    double q[ACBB_MAX_NODES], Tbe[ACBB_MAX_NODES], Tss[ACBB_MAX_NODES];
     st = acbb_network_update(&nw, s, &in);
     if (st == ACBB_OK) {
         acbb_network_heat(&nw, s, &h, q);

@@ -11,6 +11,7 @@
 
 struct acbb_dyn {
     acbb_traction_contact ci, co;
+    const atomic_int *cancel;   /* caller's flag, checked in every rhs call */
 };
 
 typedef struct {
@@ -43,6 +44,9 @@ static int rhs(double t, const double y[], double dydt[], void *p)
 {
     (void)t;
     dyn_ctx *c = p;
+    /* A window can take seconds: GSL's driver stops at once on a failed rhs. */
+    if (c->d->cancel && atomic_load_explicit(c->d->cancel, memory_order_relaxed))
+        return GSL_EBADFUNC;
     const acbb_geometry *g = c->g;
     acbb_ball_state *b = &c->b;
     double wi = c->omega_i, mass = g->mass;
@@ -132,6 +136,11 @@ acbb_status acbb_dyn_new(int grid, acbb_dyn **out)
     return ACBB_OK;
 }
 
+void acbb_dyn_set_cancel(acbb_dyn *d, const atomic_int *cancel)
+{
+    d->cancel = cancel;
+}
+
 void acbb_dyn_free(acbb_dyn *d)
 {
     if (!d) return;
@@ -178,6 +187,8 @@ acbb_status acbb_dyn_ball(acbb_dyn *d, acbb_mech *m, const acbb_scene *s,
         Qo += c.b.Qo / NS;
     }
     gsl_odeiv2_driver_free(drv);
+    if (rc == GSL_EBADFUNC && d->cancel && atomic_load(d->cancel))
+        return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
     if (rc != GSL_SUCCESS)
         return acbb_error_set(err, ACBB_DIVERGED, "dynamic model: integration of ball %d failed "
                               "(GSL status %d)", j + 1, rc);

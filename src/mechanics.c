@@ -690,11 +690,11 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
     acbb_mech *m = calloc(1, sizeof *m);
     if (!m) return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
     acbb_geometry_init(s, &m->g);
-    if (m->g.Z > ACBB_MECH_MAX_BALLS) {
+    if (m->g.Z > ACBB_MAX_BALLS) {
         int Z = m->g.Z;
         free(m);
         return acbb_error_set(err, ACBB_EINVAL, "bearing.n_balls = %d: at most %d supported",
-                              Z, ACBB_MECH_MAX_BALLS);
+                              Z, ACBB_MAX_BALLS);
     }
     int dyn = s->model != ACBB_MODEL_STATIC;
     m->centrifugal = dyn && s->centrifugal;

@@ -8,9 +8,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <assert.h>
 #include "acbb/sim.h"
+#include "acbb/measure.h"
 #include "acbb/mechanics.h"
 #include "acbb/network.h"
 #include "acbb/losses.h"
@@ -70,16 +70,17 @@ struct acbb_sim {
     acbb_run_state state;
     acbb_status status;
     char msg[256];
+    const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
+    long reported;             /* last iteration handed to a drive hook; -1 none */
 };
+
+static int cancelled(const acbb_sim *sim)
+{
+    return sim->cancel && atomic_load_explicit(sim->cancel, memory_order_relaxed);
+}
 
 static int outputs_finite(const acbb_sim *sim);
 
-static double now_ms(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
 
 static acbb_status fail(acbb_sim *sim, acbb_status st, const char *fmt, const char *detail)
 {
@@ -236,6 +237,8 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
     int passes = sim->transient_pass ? 1 : QD_PASSES;
     for (int pass = 0; pass < passes; pass++) {
         double change = 0.0;
+        if (cancelled(sim))
+            return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
         if (sim->dyn)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
         else
@@ -392,17 +395,26 @@ static acbb_status steady_step(acbb_sim *sim, double relax, double *Tn, double *
 
 /* After the transient has settled, iterate the direct steady solve so the
  * reported state balances energy to round-off (MODEL.md section 8.2). */
+static void save(acbb_sim *sim, checkpoint *k);
+static void restore(acbb_sim *sim, const checkpoint *k);
+
 static acbb_status polish(acbb_sim *sim, acbb_error *err)
 {
     double Tn[ACBB_MAX_NODES], dT = 0.0;
     for (int it = 0; it < POLISH_ITERS; it++) {
         /* Plain Picard here: the transient has brought the state close to
          * the fixed point, where the lagged coupling contracts strongly. */
+        if (cancelled(sim))
+            return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
         acbb_status rc = steady_step(sim, 1.0, Tn, &dT);
         if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
+        save(sim, sim->keep);
         memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
         rc = evaluate(sim, err);
-        if (rc != ACBB_OK) return rc;
+        if (rc != ACBB_OK) {
+            restore(sim, sim->keep); /* the last evaluated iterate stays */
+            return rc;
+        }
         if (dT < 1e-9) break;
     }
     return ACBB_OK;
@@ -474,13 +486,13 @@ acbb_status acbb_sim_step(acbb_sim *sim)
 {
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
-    double t0 = now_ms();
+    double t0 = acbb_now_ms();
     acbb_error err = { "" };
     double dT = 0.0, dTs = 0.0;
     int steady_mode = sim->s.thermal_mode == ACBB_THERMAL_STEADY;
     acbb_status rc = advance(sim, steady_mode, &dT, &dTs, &err);
     if (rc != ACBB_OK) {
-        sim->wall_ms += now_ms() - t0;
+        sim->wall_ms += acbb_now_ms() - t0;
         return fail(sim, rc, "%s", err.msg[0] ? err.msg : acbb_status_name(rc));
     }
     double step_dt = steady_mode ? 1.0 : sim->dt;
@@ -488,7 +500,7 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     if (!steady_mode) sim->time += sim->dt;
     sim->residual = dT / step_dt;
     if ((rc = check_runaway(sim, sim->T, steady_mode ? 0.0 : step_dt)) != ACBB_OK) {
-        sim->wall_ms += now_ms() - t0;
+        sim->wall_ms += acbb_now_ms() - t0;
         return rc;
     }
     double dP = fabs(sim->loss.total - sim->prev_total) / fmax(sim->loss.total, 1e-12);
@@ -502,7 +514,7 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     if (sim->quiet >= (steady_mode ? 3 : STEADY_COUNT)) {
         rc = polish(sim, &err);
         if (rc != ACBB_OK) {
-            sim->wall_ms += now_ms() - t0;
+            sim->wall_ms += acbb_now_ms() - t0;
             return fail(sim, rc, "%s", err.msg);
         }
         finish_energy(sim);
@@ -510,14 +522,14 @@ acbb_status acbb_sim_step(acbb_sim *sim)
         snprintf(sim->msg, sizeof sim->msg, "thermal steady state after %ld steps", sim->iter);
     } else if (sim->iter >= sim->s.max_steps || sim->time >= sim->s.max_time) {
         finish_energy(sim);
-        sim->wall_ms += now_ms() - t0;
+        sim->wall_ms += acbb_now_ms() - t0;
         char d[96];
         snprintf(d, sizeof d, "%ld steps, %.0f s simulated", sim->iter, sim->time);
         return fail(sim, ACBB_NOT_CONVERGED,
                     "no steady state within the limits (%s); raise thermal.max_steps or thermal.max_time_s", d);
     }
     finish_energy(sim);
-    sim->wall_ms += now_ms() - t0;
+    sim->wall_ms += acbb_now_ms() - t0;
     return ACBB_OK;
 }
 
@@ -525,8 +537,29 @@ acbb_run_state acbb_sim_state(const acbb_sim *sim) { return sim->state; }
 
 acbb_status acbb_sim_run(acbb_sim *sim)
 {
-    while (sim->state == ACBB_RUN_RUNNING)
+    return acbb_sim_drive(sim, NULL);
+}
+
+static int call_hook(acbb_sim *sim, const acbb_run_ctl *ctl)
+{
+    if (!ctl || !ctl->hook || sim->iter == sim->reported) return 0;
+    sim->reported = sim->iter;
+    return ctl->hook(ctl->ctx, sim);
+}
+
+acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
+{
+    if (ctl && ctl->cancel) {
+        sim->cancel = ctl->cancel;
+        if (sim->dyn) acbb_dyn_set_cancel(sim->dyn, sim->cancel);
+    }
+    if (call_hook(sim, ctl)) return sim->status;
+    while (sim->state == ACBB_RUN_RUNNING) {
+        if (cancelled(sim))
+            return fail(sim, ACBB_CANCELLED, "%s", "cancelled; last good state kept");
         acbb_sim_step(sim);
+        if (call_hook(sim, ctl)) break;
+    }
     return sim->status;
 }
 
@@ -586,6 +619,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->model == ACBB_MODEL_DYNAMIC && acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    if (sim->dyn) acbb_dyn_set_cancel(sim->dyn, sim->cancel);
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
     for (int i = 0; i < sim->nw.n; i++)
@@ -593,6 +627,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     if ((rc = initial_mechanics(sim, err)) != ACBB_OK) return rc;
     if ((rc = evaluate(sim, err)) != ACBB_OK) return rc;
     sim->dt = s->time_step;
+    sim->reported = -1;
     sim->state = ACBB_RUN_RUNNING;
     sim->status = ACBB_OK;
     sim->prev_total = sim->loss.total;
@@ -616,11 +651,18 @@ static void sim_release(acbb_sim *sim)
 
 acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err)
 {
+    return acbb_sim_new_ctl(s, NULL, out, err);
+}
+
+acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb_sim **out,
+                             acbb_error *err)
+{
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))) {
         free(sim);
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
+    sim->cancel = cancel;
     acbb_status rc = sim_init(sim, s, NULL, err);
     if (rc != ACBB_OK) {
         acbb_sim_free(sim);
@@ -645,6 +687,7 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
     memcpy(T, sim->T, sizeof T);
     acbb_sim *fresh = calloc(1, sizeof *fresh);
     if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    fresh->cancel = sim->cancel;
     acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);

@@ -235,7 +235,7 @@ static void test_update46(const acbb_scene *s, acbb_network *nw)
 static void check_steady(const acbb_scene *s, acbb_network *nw, const char *tag,
                          const int *hot, int n_hot, double *Tss)
 {
-    double q[ACBB_NET_MAX_NODES];
+    double q[ACBB_MAX_NODES];
     acbb_network_heat(nw, s, &SRC, q);
     double qsum = 0.0;
     for (int i = 0; i < nw->n; i++) qsum += q[i];
@@ -262,7 +262,7 @@ static void check_steady(const acbb_scene *s, acbb_network *nw, const char *tag,
 static void check_transient(const acbb_scene *s, acbb_network *nw, const char *tag,
                             const double *Tss)
 {
-    double q[ACBB_NET_MAX_NODES], T[ACBB_NET_MAX_NODES], Told[ACBB_NET_MAX_NODES];
+    double q[ACBB_MAX_NODES], T[ACBB_MAX_NODES], Told[ACBB_MAX_NODES];
     acbb_network_heat(nw, s, &SRC, q);
     for (int i = 0; i < nw->n; i++) T[i] = s->ambient_C;
     double worst_balance = 0.0, dt = 5.0;
@@ -305,7 +305,7 @@ static void test_open_and_still(const acbb_scene *s, acbb_network *nw)
     is_close(acbb_tnet_resistance(nw->net, find_edge(nw, 22, 43)),
              1.0 / (10.0 * M_PI * 49.9e-3 * 15e-3), 1e-12, 0,
              "omega = 0: IR land film uses h_natural");
-    double q[ACBB_NET_MAX_NODES], T[ACBB_NET_MAX_NODES];
+    double q[ACBB_MAX_NODES], T[ACBB_MAX_NODES];
     acbb_network_heat(nw, s, &SRC, q);
     ok(acbb_tnet_steady(nw->net, q, T) == ACBB_OK, "open contacts: steady still solvable");
     acbb_net_inputs bad = inputs_15k(s);
@@ -319,7 +319,7 @@ static void test_open_and_still(const acbb_scene *s, acbb_network *nw)
 static void test_no_refactor_on_same_update(const acbb_scene *s, acbb_network *nw)
 {
     acbb_net_inputs in = inputs_15k(s);
-    double q[ACBB_NET_MAX_NODES], T[ACBB_NET_MAX_NODES];
+    double q[ACBB_MAX_NODES], T[ACBB_MAX_NODES];
     acbb_network_heat(nw, s, &SRC, q);
     for (int i = 0; i < nw->n; i++) T[i] = 26.0;
     acbb_network_update(nw, s, &in);

@@ -16,6 +16,7 @@
 #ifndef ACBB_DYNAMIC_H
 #define ACBB_DYNAMIC_H
 
+#include <stdatomic.h>
 #include "acbb/mechanics.h"
 #include "acbb/traction.h"
 
@@ -25,6 +26,10 @@ typedef struct acbb_dyn acbb_dyn;
 
 acbb_status acbb_dyn_new(int grid, acbb_dyn **out);
 void acbb_dyn_free(acbb_dyn *d);
+
+/* Attach the caller's cancel flag (may be NULL): a window in progress ends
+ * with ACBB_CANCELLED within one right-hand-side evaluation. */
+void acbb_dyn_set_cancel(acbb_dyn *d, const atomic_int *cancel);
 
 /* Integrate ball j of st for `window` seconds from its current position
  * (at rest) and speeds (qd_w if traction_valid, else the race-control

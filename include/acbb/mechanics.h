@@ -10,13 +10,13 @@
 #define ACBB_MECHANICS_H
 
 #include "acbb/scene.h"
+#include "acbb/limits.h"
 #include "acbb/status.h"
 #include "acbb/hertz.h"
 #include "acbb/geometry.h"
 #include "acbb/kinematics.h"
 #include "acbb/losses.h"
 
-#define ACBB_MECH_MAX_BALLS 64
 
 typedef struct {
     double psi;                  /* azimuth, rad */
@@ -47,7 +47,7 @@ typedef struct {
     double Fx, Fy, Fz, My, Mz;   /* ring reactions (N, N m) */
     int n;                       /* balls */
     int symmetric;               /* 1: every ball identical, ball 0 solved */
-    acbb_ball_state ball[ACBB_MECH_MAX_BALLS];
+    acbb_ball_state ball[ACBB_MAX_BALLS];
 } acbb_mech_state;
 
 typedef struct acbb_mech acbb_mech;

@@ -11,10 +11,10 @@
 #define ACBB_NETWORK_H
 
 #include "acbb/scene.h"
+#include "acbb/limits.h"
 #include "acbb/thermal_network.h"
 #include "acbb/expansion.h"
 
-#define ACBB_NET_MAX_NODES 48
 #define ACBB_NET_MAX_AVG 4
 
 /* Heat (W) from the loss model, grouped by destination. */

@@ -11,11 +11,10 @@
 #ifndef ACBB_SIM_H
 #define ACBB_SIM_H
 
+#include <stdatomic.h>
 #include "acbb/scene.h"
 #include "acbb/status.h"
-
-#define ACBB_MAX_BALLS 64
-#define ACBB_MAX_NODES 48
+#include "acbb/limits.h"
 
 /* What a user sees of one ball. Sliding speeds are the pressure-weighted
  * mean magnitude of the translational (Heathcote + gross) slip over the
@@ -89,6 +88,31 @@ acbb_run_state acbb_sim_state(const acbb_sim *sim);
 
 /* Step until converged, failed, or the scene's max_steps / max_time. */
 acbb_status acbb_sim_run(acbb_sim *sim);
+
+/* The one run loop every client uses (REBOUND's heartbeat idea).
+ * `hook` is called with the sim once for the initial state (iteration 0, on
+ * the first drive of a sim) and after every step that advanced; it may read
+ * the sim (acbb_sim_snapshot) and may sleep to pace the run. A nonzero
+ * return pauses: acbb_sim_drive returns ACBB_OK with the run still going,
+ * and another call resumes it. `cancel`, when set (nonzero), is honoured
+ * between steps and inside long steps (dynamic ODE windows, Level-2 passes,
+ * the steady polish): the run ends with ACBB_CANCELLED and the last good
+ * state. Every field may be NULL. */
+typedef int (*acbb_step_hook)(void *ctx, const acbb_sim *sim);
+typedef struct {
+    acbb_step_hook hook;
+    void *ctx;
+    const atomic_int *cancel;
+} acbb_run_ctl;
+
+/* Returns ACBB_OK while running (paused by the hook) or at convergence, a
+ * named failure otherwise (the run's final status). */
+acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl);
+
+/* acbb_sim_new whose set-up (initial mechanics: a dynamic-level window) can
+ * be cancelled; the flag stays attached to the sim for its later steps. */
+acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb_sim **out,
+                             acbb_error *err);
 
 /* Copy out what a user sees (never NaN/Inf: checked before publication). */
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *out);

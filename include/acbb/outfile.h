@@ -1,0 +1,40 @@
+/* acbb — the one way acbb writes a file (presets, CSV, JSON, Markdown,
+ * plots): nothing the user had is destroyed.
+ *
+ * - A regular file (or a new one) is written to a temporary file in the
+ *   same directory, flushed with fsync and renamed over the target; the
+ *   target's mode and owner are kept (a new file gets 0666 & ~umask).
+ * - A symbolic link is followed: its final target is replaced, the link
+ *   itself stays.
+ * - A non-regular target (a FIFO, a device, /dev/stdout) is written
+ *   directly, never replaced; "-" means standard output.
+ * - An external writer (gnuplot) writes to acbb_out_temp_path(); commit
+ *   checks it is complete before it takes the target's place.
+ *
+ * Ownership: acbb_out_open returns an acbb_out that exactly one of
+ * acbb_out_commit / acbb_out_abort releases, and a FILE* owned by it. */
+#ifndef ACBB_OUTFILE_H
+#define ACBB_OUTFILE_H
+
+#include <stdio.h>
+#include "acbb/status.h"
+
+typedef struct acbb_out acbb_out;
+
+/* Open `path` for writing. *f (may be NULL when the caller only wants the
+ * temp path for an external writer) receives the stream. Errors name the
+ * path and the reason (ACBB_EIO, ACBB_EINVAL). */
+acbb_status acbb_out_open(const char *path, acbb_out **out, FILE **f, acbb_error *err);
+
+/* The temporary file an external program should write (for a non-regular
+ * target too: its bytes are copied into the target at commit). */
+const char *acbb_out_temp_path(const acbb_out *o);
+
+/* Flush, fsync and move the result into place; on failure the target is
+ * untouched and the temporary file removed. Releases o. */
+acbb_status acbb_out_commit(acbb_out *o, acbb_error *err);
+
+/* Drop everything written; the target is untouched. Releases o. */
+void acbb_out_abort(acbb_out *o);
+
+#endif
