@@ -193,7 +193,32 @@ static void summary_header(acbb_cli_out *o, const char *preset,
     fputs(" W\n\n", f);
 }
 
-static void summary_thermal(acbb_cli_out *o, const acbb_snapshot *s)
+static void summary_losses(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s);
+
+/* The losses switched on in the scene (the loss table's order) and the total. */
+static void summary_losses(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
+{
+    FILE *f = o->f;
+    const acbb_losses *L = &s->losses;
+    double P[ACBB_LOSS_KINDS + 1];
+    int n = 0;
+    fprintf(f, "\n\n%-13s", "losses");
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        if (!acbb_loss_enabled(sc, (acbb_loss_kind)l)) continue;
+        fprintf(f, "%9s", acbb_loss_table[l].name);
+        P[n++] = L->P[l];
+    }
+    fprintf(f, "%9s\n%-13s", "total", "  W");
+    P[n++] = L->total;
+    for (int i = 0; i < n; i++) cell(o, 9, 4, 'g', P[i]);
+    fprintf(f, "\n%-13s", "  %");
+    for (int i = 0; i < n; i++) {
+        if (L->total > 0.0) cell(o, 9, 1, 'f', 100.0 * P[i] / L->total);
+        else fprintf(f, "%9s", "-");
+    }
+}
+
+static void summary_thermal(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
 {
     FILE *f = o->f;
     const double T[6] = { s->T_outer_ring, s->T_inner_ring, s->T_ball,
@@ -202,16 +227,7 @@ static void summary_thermal(acbb_cli_out *o, const acbb_snapshot *s)
             "outer ring", "inner ring", "ball", "housing", "shaft", "cavity", "");
     for (int i = 0; i < 6; i++) cell(o, 11, 2, 'f', T[i]);
 
-    const acbb_losses *L = &s->losses;
-    const double P[6] = { L->shear, L->slip, L->spin, L->rolling, L->drag, L->total };
-    fprintf(f, "\n\n%-13s%10s%10s%10s%10s%10s%10s\n%-13s", "losses", "shear",
-            "slip", "spin", "rolling", "drag", "total", "  W");
-    for (int i = 0; i < 6; i++) cell(o, 10, 4, 'g', P[i]);
-    fprintf(f, "\n%-13s", "  %");
-    for (int i = 0; i < 6; i++) {
-        if (L->total > 0.0) cell(o, 10, 1, 'f', 100.0 * P[i] / L->total);
-        else fprintf(f, "%10s", "-");
-    }
+    summary_losses(o, sc, s);
 
     const double X[5] = { s->exp_ball, s->exp_inner + s->exp_inner_cen,
                           s->exp_inner, s->exp_inner_cen, s->exp_outer };
@@ -283,7 +299,7 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap)
 {
     summary_header(o, preset, sc, snap);
-    summary_thermal(o, snap);
+    summary_thermal(o, sc, snap);
     summary_balls(o, snap);
 }
 
@@ -326,11 +342,8 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapsho
     j_num(o, "wall_ms", s->wall_ms);
 
     j_open(o, "losses_W", '{', false);
-    j_num(o, "shear", s->losses.shear);
-    j_num(o, "slip", s->losses.slip);
-    j_num(o, "spin", s->losses.spin);
-    j_num(o, "rolling", s->losses.rolling);
-    j_num(o, "drag", s->losses.drag);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        j_num(o, acbb_loss_table[l].name, s->losses.P[l]);
     j_num(o, "total", s->losses.total);
     j_close(o, '}');
 
@@ -380,9 +393,9 @@ void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
 
 void acbb_cli_csv_header(acbb_cli_out *o)
 {
-    fputs("iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,"
-          "P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_total_W,"
-          "Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,"
+    fputs("iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,", o->f);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) fprintf(o->f, "P_%s_W,", acbb_loss_table[l].name);
+    fputs("P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,"
           "exp_outer_um,residual_K_s\n", o->f);
 }
 
@@ -397,11 +410,7 @@ void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
     c_num(o, s->T_outer_ring, false);
     c_num(o, s->T_inner_ring, false);
     c_num(o, s->T_ball, false);
-    c_num(o, s->losses.shear, false);
-    c_num(o, s->losses.slip, false);
-    c_num(o, s->losses.spin, false);
-    c_num(o, s->losses.rolling, false);
-    c_num(o, s->losses.drag, false);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) c_num(o, s->losses.P[l], false);
     c_num(o, s->losses.total, false);
     c_num(o, b ? b->Qi : NAN, false);
     c_num(o, b ? b->Qo : NAN, false);
@@ -416,11 +425,21 @@ void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
 /* ---- acbb sweep ---- */
 
 /* The numbers a sweep reports for one point (ball 0 for the contacts). */
-enum { SW_T, SW_SHEAR, SW_SLIP, SW_SPIN, SW_ROLL, SW_DRAG, SW_TOTAL,
+enum { SW_T, SW_LOSS0, SW_TOTAL = SW_LOSS0 + ACBB_LOSS_KINDS,
        SW_QI, SW_QO, SW_AI, SW_AO, SW_N };
-static const char *const sweep_keys[SW_N] = {
-    "T_outer_ring_C", "P_shear_W", "P_slip_W", "P_spin_W", "P_rolling_W",
-    "P_drag_W", "P_total_W", "Qi_N", "Qo_N", "alpha_i_deg", "alpha_o_deg" };
+static const char *const sweep_fixed[] = { "P_total_W", "Qi_N", "Qo_N", "alpha_i_deg",
+                                           "alpha_o_deg" };
+
+/* Column k's key: T, one per loss of the table, then the fixed ones. */
+static const char *sweep_key(int k, char *buf, size_t cap)
+{
+    if (k == SW_T) return "T_outer_ring_C";
+    if (k < SW_TOTAL) {
+        snprintf(buf, cap, "P_%s_W", acbb_loss_table[k - SW_LOSS0].name);
+        return buf;
+    }
+    return sweep_fixed[k - SW_TOTAL];
+}
 
 static void sweep_values(const acbb_cli_point *p, double v[SW_N])
 {
@@ -428,11 +447,7 @@ static void sweep_values(const acbb_cli_point *p, double v[SW_N])
     const acbb_ball_view *b = &s->balls[0];
     bool has_ball = s->n_balls > 0;
     v[SW_T] = s->T_outer_ring;
-    v[SW_SHEAR] = s->losses.shear;
-    v[SW_SLIP] = s->losses.slip;
-    v[SW_SPIN] = s->losses.spin;
-    v[SW_ROLL] = s->losses.rolling;
-    v[SW_DRAG] = s->losses.drag;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) v[SW_LOSS0 + l] = s->losses.P[l];
     v[SW_TOTAL] = s->losses.total;
     v[SW_QI] = has_ball ? b->Qi : NAN;
     v[SW_QO] = has_ball ? b->Qo : NAN;
@@ -474,8 +489,13 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
         cell(o, 8, 3, 'f', v[SW_AO]);
         fputc('\n', f);
     }
-    fprintf(f, "\n%-10s %8s %8s %8s %8s %8s %8s %8s\n", "losses W", "shear", "slip",
-            "spin", "rolling", "drag", "total", "wall ms");
+    bool on[ACBB_LOSS_KINDS];
+    fprintf(f, "\n%-10s", "losses W");
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        on[l] = n > 0 && acbb_loss_enabled(&pts[0].scene, (acbb_loss_kind)l);
+        if (on[l]) fprintf(f, " %8s", acbb_loss_table[l].name);
+    }
+    fprintf(f, " %8s %8s\n", "total", "wall ms");
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
         fprintf(f, "%-10s", p->value);
@@ -485,7 +505,9 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
         }
         double v[SW_N];
         sweep_values(p, v);
-        for (int k = SW_SHEAR; k <= SW_TOTAL; k++) cell(o, 9, 4, 'g', v[k]);
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+            if (on[l]) cell(o, 9, 4, 'g', v[SW_LOSS0 + l]);
+        cell(o, 9, 4, 'g', v[SW_TOTAL]);
         cell(o, 9, 1, 'f', p->wall_ms);
         fputc('\n', f);
     }
@@ -514,8 +536,10 @@ void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
         double v[SW_N];
         if (p->have_snap) sweep_values(p, v);
         for (int k = 0; k < SW_N; k++) {
-            if (p->have_snap) j_num(o, sweep_keys[k], v[k]);
-            else j_null(o, sweep_keys[k]);
+            char buf[48];
+            const char *key = sweep_key(k, buf, sizeof buf);
+            if (p->have_snap) j_num(o, key, v[k]);
+            else j_null(o, key);
         }
         j_close(o, '}');
     }
@@ -526,7 +550,8 @@ void acbb_cli_sweep_csv(acbb_cli_out *o, const char *param,
                         const acbb_cli_point *pts, size_t n)
 {
     fprintf(o->f, "%s,status,iterations,wall_ms", param);
-    for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s", sweep_keys[k]);
+    char buf[48];
+    for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s", sweep_key(k, buf, sizeof buf));
     fputc('\n', o->f);
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
@@ -629,7 +654,10 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
     const char *mode[2] = { "te", "wte" };
     for (int m = 0; m < 2; m++) {
         fprintf(o->f, ",%s_status,%s_iterations", mode[m], mode[m]);
-        for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s_%s", mode[m], sweep_keys[k]);
+        for (int k = 0; k < SW_N; k++) {
+            char buf[48];
+            fprintf(o->f, ",%s_%s", mode[m], sweep_key(k, buf, sizeof buf));
+        }
     }
     fputs(",dP_total_W\n", o->f);
     for (size_t i = 0; i < nb; i++) {

@@ -106,7 +106,7 @@ static double now_ms(void)
 static void observe(rpoint *p, const acbb_snapshot *s)
 {
     const acbb_losses *L = &s->losses;
-    double m = fmin(fmin(fmin(L->shear, L->slip), fmin(L->spin, L->rolling)), L->drag);
+    double m = fmin(fmin(fmin(L->P[ACBB_LOSS_SHEAR], L->P[ACBB_LOSS_SLIP]), fmin(L->P[ACBB_LOSS_SPIN], L->P[ACBB_LOSS_ROLLING])), L->P[ACBB_LOSS_DRAG]);
     for (int j = 0; j < s->n_balls; j++) m = fmin(m, s->balls[j].loss);
     p->min_loss = fmin(p->min_loss, m);
     if (!p->record) return;
@@ -369,11 +369,11 @@ static bool need(item_res *it, const char *id, const report_ctx *c, int lv, int 
 typedef double (*getter)(const acbb_snapshot *);
 
 static double g_total(const acbb_snapshot *s) { return s->losses.total; }
-static double g_shear(const acbb_snapshot *s) { return s->losses.shear; }
-static double g_slip(const acbb_snapshot *s) { return s->losses.slip; }
-static double g_spin(const acbb_snapshot *s) { return s->losses.spin; }
-static double g_rolling(const acbb_snapshot *s) { return s->losses.rolling; }
-static double g_drag(const acbb_snapshot *s) { return s->losses.drag; }
+static double g_shear(const acbb_snapshot *s) { return s->losses.P[ACBB_LOSS_SHEAR]; }
+static double g_slip(const acbb_snapshot *s) { return s->losses.P[ACBB_LOSS_SLIP]; }
+static double g_spin(const acbb_snapshot *s) { return s->losses.P[ACBB_LOSS_SPIN]; }
+static double g_rolling(const acbb_snapshot *s) { return s->losses.P[ACBB_LOSS_ROLLING]; }
+static double g_drag(const acbb_snapshot *s) { return s->losses.P[ACBB_LOSS_DRAG]; }
 static double g_T5(const acbb_snapshot *s) { return s->T_outer_ring; }
 static double g_ai(const acbb_snapshot *s) { return s->balls[0].alpha_i * DEG; }
 static double g_ao(const acbb_snapshot *s) { return s->balls[0].alpha_o * DEG; }
@@ -584,8 +584,8 @@ static void item3(const report_ctx *c, item_res *it)
     int wb = 0, wk = 0;
     for (int b = 0; b < NBLK; b++)
         for (int k = 0; k < NL; k++) {
-            double te = P(c, LV_BASE, b, k, TE)->last.losses.drag;
-            double w = P(c, LV_BASE, b, k, WTE)->last.losses.drag;
+            double te = P(c, LV_BASE, b, k, TE)->last.losses.P[ACBB_LOSS_DRAG];
+            double w = P(c, LV_BASE, b, k, WTE)->last.losses.P[ACBB_LOSS_DRAG];
             double r = w > 0.0 ? fabs(te - w) / w : 0.0;
             if (r >= worst) {
                 worst = r;
@@ -1225,7 +1225,7 @@ static acbb_status be_vs_steady(const rpoint *p, double *diff, double *rise, dou
                            .a_o = f->balls[0].a_o, .b_o = f->balls[0].b_o,
                            .omega_i = s->inner_speed, .omega_m = f->balls[0].omega_m,
                            .T_cavity_C = f->T_cavity };
-    acbb_heat_sources h = { f->losses.inner, f->losses.outer, f->losses.spin, f->losses.drag };
+    acbb_heat_sources h = { f->losses.inner, f->losses.outer, f->losses.P[ACBB_LOSS_SPIN], f->losses.P[ACBB_LOSS_DRAG], f->losses.P[ACBB_LOSS_CAGE] };
     double q[ACBB_MAX_NODES], Tbe[ACBB_MAX_NODES], Tss[ACBB_MAX_NODES];
     st = acbb_network_update(&nw, s, &in);
     if (st == ACBB_OK) {

@@ -18,11 +18,7 @@ void acbb_history_point_from(const acbb_snapshot *s, acbb_history_point *p)
     p->T_inner_ring = s->T_inner_ring;
     p->T_ball = s->T_ball;
     p->T_housing = s->T_housing;
-    p->shear = s->losses.shear;
-    p->slip = s->losses.slip;
-    p->spin = s->losses.spin;
-    p->rolling = s->losses.rolling;
-    p->drag = s->losses.drag;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) p->loss[l] = s->losses.P[l];
     p->total = s->losses.total;
     p->Qi = b ? b->Qi : 0.0;
     p->Qo = b ? b->Qo : 0.0;

@@ -46,6 +46,119 @@ double acbb_slip_speed(const acbb_contact_in *c, double x)
     return hypot(V, c->pivot * surface_height(c, x));
 }
 
+/* ---- the formulas (MODEL.md section 6, clean form unless seed) ---- */
+
+static double shear_point(const acbb_loss_point *q)
+{
+    return q->seed ? q->tauV : q->film->phi_f * q->tauV * q->V;
+}
+
+/* Seed eq (14) multiplies a force by omega_m D; kept only as an option. */
+static double shear_finish(const acbb_contact_in *c, int seed, double sum)
+{
+    return seed ? sum * fabs(c->omega_m) * c->D : sum;
+}
+
+static double slip_point(const acbb_loss_point *q)
+{
+    const acbb_film *fl = q->film;
+    double mu = q->s->mu_bd;
+    return q->seed ? (fl->phi_a * mu * q->p + fl->phi_f * q->tauV) * q->V
+                   : fl->phi_a * mu * q->p * q->V;
+}
+
+static double spin_point(const acbb_loss_point *q)
+{
+    const acbb_film *fl = q->film;
+    double r = hypot(q->x, q->y);
+    double us = fabs(q->c->spin) * r;
+    double tauS = fl->phi_f > 0.0 ? acbb_tau_lubricant(q->s, q->eta, us, fl->hc, q->p) : 0.0;
+    return (fl->phi_a * q->s->mu_bd * q->p + fl->phi_f * tauS) * r;
+}
+
+static double spin_finish(const acbb_contact_in *c, int seed, double sum)
+{
+    (void)seed;
+    return fabs(c->spin) * sum;
+}
+
+/* Johnson's hysteresis force 4 eps Q a_c / (3 pi D) [J section 9] times u. */
+static double rolling_contact(const acbb_scene *s, const acbb_contact_in *c, double u)
+{
+    double ac = s->hyst_axis == ACBB_HYST_MINOR ? c->b : c->a;
+    if (s->loss_form == ACBB_LOSS_SEED) {
+        double arm = c->dm + (c->inner ? -2.0 : 2.0) * c->delta;
+        return 2.0 * s->hysteresis * c->Q * ac * arm / (3.0 * M_PI * c->D) * fabs(c->omega_m);
+    }
+    return 4.0 * s->hysteresis * c->Q * ac / (3.0 * M_PI * c->D) * u;
+}
+
+static double drag_bearing(const acbb_bearing_in *in)
+{
+    return acbb_drag_loss(in->s, in->mix, in->omega_m);
+}
+
+static double cage_bearing(const acbb_bearing_in *in)
+{
+    return acbb_cage_loss(in->s, in->mix, in->omega_m);
+}
+
+#define FLAG(f) offsetof(acbb_scene, f)
+const acbb_loss_desc acbb_loss_table[ACBB_LOSS_KINDS] = {
+    [ACBB_LOSS_SHEAR] = { "shear", "P_L", "lubricant shear", "loss_shear", FLAG(loss_shear),
+                          ACBB_HEAT_CONTACT, .point = shear_point, .finish = shear_finish },
+    [ACBB_LOSS_SLIP] = { "slip", "P_t", "differential slip", "loss_slip", FLAG(loss_slip),
+                         ACBB_HEAT_CONTACT, .point = slip_point },
+    [ACBB_LOSS_SPIN] = { "spin", "P_s", "spinning", "loss_spin", FLAG(loss_spin),
+                         ACBB_HEAT_BALL, .point = spin_point, .finish = spin_finish },
+    [ACBB_LOSS_ROLLING] = { "rolling", "P_r", "rolling hysteresis", "loss_rolling",
+                            FLAG(loss_rolling), ACBB_HEAT_CONTACT, .contact = rolling_contact },
+    [ACBB_LOSS_DRAG] = { "drag", "P_v", "oil-air drag", "loss_drag", FLAG(loss_drag),
+                         ACBB_HEAT_CAVITY, .bearing = drag_bearing },
+    [ACBB_LOSS_CAGE] = { "cage", "P_c", "cage-land shear", "loss_cage", FLAG(loss_cage),
+                         ACBB_HEAT_CAGE, .bearing = cage_bearing },
+};
+#undef FLAG
+
+int acbb_loss_enabled(const acbb_scene *s, acbb_loss_kind k)
+{
+    return *(const bool *)((const char *)s + acbb_loss_table[k].flag);
+}
+
+/* The integrand losses share one pass over the ellipse (pressure, slip and
+ * viscosity are computed once per point). */
+static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contact_in *c,
+                      const acbb_oil_state *oil, acbb_contact_loss *out, const int *on)
+{
+    const acbb_film *fl = &out->film;
+    int fluid = fl->phi_f > 0.0;
+    double ab = c->a * c->b, sum[ACBB_LOSS_KINDS] = { 0 }, sumPV = 0, sumP = 0;
+    acbb_loss_point pt = { .s = s, .c = c, .film = fl, .oil = oil,
+                           .seed = s->loss_form == ACBB_LOSS_SEED };
+    for (int i = 0; i < q->n; i++) {
+        double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
+        pt.x = c->a * xi;
+        pt.V = acbb_slip_speed(c, pt.x);
+        for (int k = 0; k < q->n; k++) {
+            double t = q->x[k];
+            double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
+            pt.p = c->pmax * sq * sqrt(1.0 - t * t);
+            pt.y = c->b * sq * t;
+            pt.eta = fluid ? acbb_viscosity_at_pressure(s, oil, pt.p) : 0.0;
+            pt.tauV = fluid ? acbb_tau_lubricant(s, pt.eta, pt.V, fl->hc, pt.p) : 0.0;
+            sumP += pt.p * w;
+            sumPV += pt.p * pt.V * w;
+            for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+                if (on[l]) sum[l] += acbb_loss_table[l].point(&pt) * w;
+        }
+    }
+    out->slide = sumP > 0.0 ? sumPV / sumP : 0.0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        if (on[l]) out->P[l] = d->finish ? d->finish(c, pt.seed, sum[l]) : sum[l];
+    }
+}
+
 acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
                                 const acbb_contact_in *c, const acbb_oil_state *oil,
                                 acbb_contact_loss *out)
@@ -60,57 +173,18 @@ acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
     double V0 = acbb_slip_speed(c, 0.0);
     double srr = u > 1e-6 ? fmin(fabs(V0) / u, 2.0) : 0.0;
     acbb_film_compute(s, oil, u, c->Q, c->Rx, c->kappa, c->E_eff, c->pmax, srr, &out->film);
-    const acbb_film *fl = &out->film;
-    int seed = s->loss_form == ACBB_LOSS_SEED;
-    int fluid = fl->phi_f > 0.0;
-    int do_L = s->loss_shear && fluid, do_t = s->loss_slip, do_s = s->loss_spin;
-    double H = fl->hc, mu = s->mu_bd, ab = c->a * c->b;
-    double sumL = 0, sumT = 0, sumS = 0, sumPV = 0, sumP = 0;
-
-    for (int i = 0; i < q->n; i++) {
-        double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
-        double x = c->a * xi;
-        double V = acbb_slip_speed(c, x);
-        for (int k = 0; k < q->n; k++) {
-            double t = q->x[k];
-            double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
-            double p = c->pmax * sq * sqrt(1.0 - t * t);
-            double eta = fluid ? acbb_viscosity_at_pressure(s, oil, p) : 0.0;
-            double tauV = fluid ? acbb_tau_lubricant(s, eta, V, H, p) : 0.0;
-            sumP += p * w;
-            sumPV += p * V * w;
-            if (do_L)
-                sumL += (seed ? tauV : fl->phi_f * tauV * V) * w;
-            if (do_t)
-                sumT += (seed ? (fl->phi_a * mu * p + fl->phi_f * tauV) * V
-                              : fl->phi_a * mu * p * V) * w;
-            if (do_s) {
-                double y = c->b * sq * t, r = hypot(x, y);
-                double us = fabs(c->spin) * r;
-                double tauS = fluid ? acbb_tau_lubricant(s, eta, us, H, p) : 0.0;
-                sumS += (fl->phi_a * mu * p + fl->phi_f * tauS) * r * w;
-            }
-        }
+    int on[ACBB_LOSS_KINDS] = { 0 };
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        on[l] = d->point && acbb_loss_enabled(s, (acbb_loss_kind)l);
     }
-    out->slide = sumP > 0.0 ? sumPV / sumP : 0.0;
-    /* Seed eq (14) multiplies a force by omega_m D; kept only as an option. */
-    out->P_L = do_L ? (seed ? sumL * fabs(c->omega_m) * c->D : sumL) : 0.0;
-    out->P_t = do_t ? sumT : 0.0;
-    out->P_s = do_s ? fabs(c->spin) * sumS : 0.0;
-    if (s->loss_rolling) {
-        /* Johnson's hysteresis force 4 eps Q a_c / (3 pi D) [J section 9]. */
-        double ac = s->hyst_axis == ACBB_HYST_MINOR ? c->b : c->a;
-        if (seed) {
-            double arm = c->dm + (c->inner ? -2.0 : 2.0) * c->delta;
-            out->P_r = 2.0 * s->hysteresis * c->Q * ac * arm / (3.0 * M_PI * c->D)
-                     * fabs(c->omega_m);
-        } else {
-            out->P_r = 4.0 * s->hysteresis * c->Q * ac / (3.0 * M_PI * c->D) * u;
-        }
+    integrate(s, q, c, oil, out, on);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        if (d->contact && acbb_loss_enabled(s, (acbb_loss_kind)l))
+            out->P[l] = d->contact(s, c, u);
+        if (!isfinite(out->P[l])) return ACBB_NONFINITE;
     }
-    if (!isfinite(out->P_L) || !isfinite(out->P_t) || !isfinite(out->P_s)
-        || !isfinite(out->P_r))
-        return ACBB_NONFINITE;
     return ACBB_OK;
 }
 
@@ -124,4 +198,11 @@ double acbb_drag_loss(const acbb_scene *s, const acbb_mixture *mix, double omega
 {
     return s->n_balls * fabs(omega_m) * acbb_drag_force(s, mix, omega_m)
          * 0.5 * s->pitch_diameter;
+}
+
+double acbb_cage_loss(const acbb_scene *s, const acbb_mixture *mix, double omega_m)
+{
+    double rc = 0.5 * s->cage_diameter;
+    double gap = 0.5 * (s->outer_land_diameter - s->cage_diameter);
+    return 2.0 * M_PI * mix->eta * rc * rc * rc * s->cage_width * omega_m * omega_m / gap;
 }

@@ -678,8 +678,9 @@ void acbb_network_heat(const acbb_network *nw, const acbb_scene *s,
     if (nw->kind == ACBB_NET_46) {
         q[nw->heat_inner] += h->inner_contact;
         q[nw->heat_outer] += h->outer_contact;
-        q[nw->heat_spin] += h->spin;
-        q[nw->heat_drag] += h->drag;
+        q[nw->heat_spin] += h->ball;
+        q[nw->heat_drag] += h->cavity;
+        q[nw->node_cage] += h->cage;
         return;
     }
     /* MODEL.md 8.3: race share phi_p of each contact to its ring, the rest
@@ -687,8 +688,9 @@ void acbb_network_heat(const acbb_network *nw, const acbb_scene *s,
     double phi = s->heat_partition;
     q[nw->heat_outer] += phi * h->outer_contact;
     q[nw->heat_inner] += phi * h->inner_contact;
-    q[nw->heat_spin] += (1.0 - phi) * (h->inner_contact + h->outer_contact) + h->spin;
-    q[nw->heat_drag] += h->drag;
+    q[nw->heat_spin] += (1.0 - phi) * (h->inner_contact + h->outer_contact) + h->ball;
+    q[nw->heat_drag] += h->cavity;
+    q[nw->node_cage] += h->cage;
 }
 
 static double mean_of(const double *T, const int *idx, int n)

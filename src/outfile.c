@@ -68,7 +68,7 @@ static acbb_status open_temp(acbb_out *o, acbb_error *err)
         int en = errno;
         free(o->tmp);
         o->tmp = NULL;
-        return acbb_error_set(err, ACBB_EIO, "%s: cannot create a temporary file beside it: %s",
+        return acbb_error_set(err, ACBB_EIO, "cannot write %s: cannot create a temporary file beside it: %s",
                               o->target, strerror(en));
     }
     mode_t mode;

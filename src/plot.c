@@ -29,10 +29,12 @@
 #include <time.h>
 #include <unistd.h>
 #include "acbb/plot.h"
+#include "acbb/outfile.h"
+#include "acbb/units.h"
 
 extern char **environ;
 
-#define PLOT_PI 3.14159265358979323846
+#define ACBB_PI 3.14159265358979323846
 /* gnuplot renders a few thousand points in well under a second; a process
  * still alive after this long is hung (e.g. a wrong ACBB_GNUPLOT that waits
  * on a terminal) and is killed rather than blocking the caller forever. */
@@ -43,7 +45,7 @@ extern char **environ;
 #define PLOT_MIN_COLS 20
 #define PLOT_MIN_ROWS 8
 #define PLOT_MAX_CHARS 2000
-#define PLOT_MAX_SERIES 6
+#define PLOT_MAX_SERIES (ACBB_LOSS_KINDS + 1)
 
 /* ---- names ---- */
 
@@ -51,7 +53,7 @@ static const char *const format_names[] = { "png", "svg", "dumb" };
 
 /* One plot kind: where x and the y series come from, and the labels. */
 typedef struct {
-    const char *label;  /* curve title */
+    char label[48];     /* curve title */
     size_t off;         /* offset of a double in acbb_history_point or acbb_ball_view */
 } plot_series;
 
@@ -61,6 +63,7 @@ typedef struct {
     const char *xlabel, *ylabel;
     bool per_ball;       /* x = ball azimuth from the snapshot, else x = history time */
     double y_scale;      /* rad -> deg for the angles, else 1 */
+    bool losses;         /* series = the loss table (those not zero throughout) + total */
     int n;
     plot_series s[PLOT_MAX_SERIES];
 } plot_kind_spec;
@@ -70,19 +73,16 @@ typedef struct {
 
 /* Indexed by acbb_plot_kind. */
 static const plot_kind_spec kind_specs[] = {
-    { "temperature", "bearing temperatures", "time (s)", "temperature (C)", false, 1.0, 4,
+    { "temperature", "bearing temperatures", "time (s)", "temperature (C)", false, 1.0, false, 4,
       { { "outer ring", HP(T_outer_ring) }, { "inner ring", HP(T_inner_ring) },
         { "ball", HP(T_ball) }, { "housing", HP(T_housing) } } },
-    { "losses", "power losses", "time (s)", "power loss (W)", false, 1.0, 6,
-      { { "lubricant shear P_L", HP(shear) }, { "differential slip P_t", HP(slip) },
-        { "spinning P_s", HP(spin) }, { "rolling P_r", HP(rolling) },
-        { "oil-air drag P_v", HP(drag) }, { "total", HP(total) } } },
-    { "loads", "contact loads per ball", "ball azimuth (deg)", "load (N)", true, 1.0, 2,
+    { "losses", "power losses", "time (s)", "power loss (W)", false, 1.0, true, 0, { { "", 0 } } },
+    { "loads", "contact loads per ball", "ball azimuth (deg)", "load (N)", true, 1.0, false, 2,
       { { "inner contact Qi", BV(Qi) }, { "outer contact Qo", BV(Qo) } } },
     { "angles", "contact angles per ball", "ball azimuth (deg)", "angle (deg)", true,
-      180.0 / PLOT_PI, 2,
+      180.0 / ACBB_PI, false, 2,
       { { "inner contact alpha_i", BV(alpha_i) }, { "outer contact alpha_o", BV(alpha_o) } } },
-    { "history-loads", "contact loads of ball 0", "time (s)", "load (N)", false, 1.0, 2,
+    { "history-loads", "contact loads of ball 0", "time (s)", "load (N)", false, 1.0, false, 2,
       { { "inner contact Qi", HP(Qi) }, { "outer contact Qo", HP(Qo) } } },
 };
 #define N_KINDS (sizeof kind_specs / sizeof kind_specs[0])
@@ -218,7 +218,7 @@ static size_t datablock(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *
         const acbb_snapshot *s = d->snapshot;
         int nb = s->n_balls < ACBB_MAX_BALLS ? s->n_balls : ACBB_MAX_BALLS;
         for (int i = 0; i < nb; i++)
-            rows += data_row(b, k, s->balls[i].psi * 180.0 / PLOT_PI, &s->balls[i]);
+            rows += data_row(b, k, s->balls[i].psi * 180.0 / ACBB_PI, &s->balls[i]);
     } else {
         const acbb_history *h = d->history;
         size_t n = h->n < ACBB_HISTORY_CAP ? h->n : ACBB_HISTORY_CAP;
@@ -255,9 +255,26 @@ static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_da
     sb_printf(b, "\n");
 }
 
+/* The losses plot lists the loss table: every loss that is not zero over
+ * the whole run (a switched-off effect draws no flat line), then the total. */
+static void loss_series(plot_kind_spec *k, const acbb_history *h)
+{
+    k->n = 0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        bool any = false;
+        for (size_t i = 0; i < h->n && !any; i++) any = h->p[i].loss[l] != 0.0;
+        if (!any) continue;
+        plot_series *s = &k->s[k->n++];
+        snprintf(s->label, sizeof s->label, "%s %s", acbb_loss_table[l].label,
+                 acbb_loss_table[l].symbol);
+        s->off = HP(loss) + (size_t)l * sizeof(double);
+    }
+    k->s[k->n++] = (plot_series){ "total", HP(total) };
+}
+
 /* Checks shared by the file and dumb paths; fills *spec. */
 static acbb_status check_data(acbb_plot_kind kind, const acbb_plot_data *d,
-                              const plot_kind_spec **spec, acbb_error *err)
+                              plot_kind_spec *spec, acbb_error *err)
 {
     if ((size_t)kind >= N_KINDS)
         return acbb_error_set(err, ACBB_EINVAL, "unknown plot kind %d", (int)kind);
@@ -270,7 +287,8 @@ static acbb_status check_data(acbb_plot_kind kind, const acbb_plot_data *d,
     if (!k->per_ball && (!d->history || d->history->n < 1))
         return acbb_error_set(err, ACBB_EINVAL, "%s plot: needs a non-empty run history",
                               k->name);
-    *spec = k;
+    *spec = *k;
+    if (k->losses) loss_series(spec, d->history);
     return ACBB_OK;
 }
 
@@ -290,6 +308,7 @@ static acbb_status script_body(sbuf *b, const plot_kind_spec *k, const acbb_plot
 /* ---- running gnuplot ---- */
 
 typedef struct {
+    const char *file;     /* stdout goes to this file (opened by us, not gnuplot) */
     char *out;            /* captured stdout, NULL to discard */
     size_t out_cap, out_len;
     char err[2048];       /* the start of stderr, NUL-terminated */
@@ -434,7 +453,7 @@ static acbb_status exit_error(int wstatus, bool timed_out, const gp_io *io, acbb
 
 /* Start gnuplot with the three pipes (stdout to /dev/null unless captured). */
 static acbb_status spawn(const char *prog, int in[2], int out[2], int errp[2], pid_t *pid,
-                         acbb_error *err)
+                         const char *file, acbb_error *err)
 {
     posix_spawn_file_actions_t fa;
     int rc = posix_spawn_file_actions_init(&fa);
@@ -443,7 +462,8 @@ static acbb_status spawn(const char *prog, int in[2], int out[2], int errp[2], p
     rc = posix_spawn_file_actions_adddup2(&fa, in[0], STDIN_FILENO);
     if (!rc && out[1] >= 0) rc = posix_spawn_file_actions_adddup2(&fa, out[1], STDOUT_FILENO);
     else if (!rc)
-        rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+        rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, file ? file : "/dev/null",
+                                              O_WRONLY | O_TRUNC, 0);
     if (!rc) rc = posix_spawn_file_actions_adddup2(&fa, errp[1], STDERR_FILENO);
     char *argv[] = { (char *)prog, NULL };
     if (!rc) rc = posix_spawnp(pid, prog, &fa, NULL, argv, environ);
@@ -495,7 +515,7 @@ static acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err)
     }
     const char *prog = acbb_plot_program();
     pid_t pid = -1;
-    acbb_status st = spawn(prog, in, out, errp, &pid, err);
+    acbb_status st = spawn(prog, in, out, errp, &pid, io->file, err);
     close_fd(&in[0]);
     close_fd(&out[1]);
     close_fd(&errp[1]);
@@ -534,27 +554,40 @@ static void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
     if (fmt != ACBB_PLOT_DUMB) sb_printf(b, "set key outside right top\n");
 }
 
-/* Create `path`.tmp.XXXXXX next to the target (same file system, so the
- * final rename is atomic). */
-static acbb_status make_temp(const char *path, char **tmp_out, acbb_error *err)
+/* An image is complete when it ends as its format ends: PNG with the IEND
+ * chunk, SVG with </svg> (a full disk leaves neither). */
+static bool image_complete(const char *path, acbb_plot_format fmt)
 {
-    size_t n = strlen(path) + sizeof ".tmp.XXXXXX";
-    char *tmp = malloc(n);
-    if (!tmp) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    snprintf(tmp, n, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        int e = errno;
-        free(tmp);
-        return acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(e));
+    static const unsigned char iend[8] = { 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
+    unsigned char tail[64] = { 0 };
+    FILE *f = fopen(path, "rb");
+    if (!f) return false;
+    long n = 0;
+    if (fseek(f, -(long)sizeof tail, SEEK_END) != 0) rewind(f);
+    n = (long)fread(tail, 1, sizeof tail, f);
+    fclose(f);
+    if (fmt == ACBB_PLOT_PNG) return n >= 8 && memcmp(tail + n - 8, iend, 8) == 0;
+    return n > 0 && memmem(tail, (size_t)n, "</svg>", 6) != NULL;
+}
+
+/* gnuplot writes the image to its stdout, which we open on the temporary
+ * file: no file name ever reaches gnuplot's string scanner. */
+static acbb_status render_file(const sbuf *b, acbb_plot_format fmt, const char *path,
+                               acbb_error *err)
+{
+    acbb_out *o = NULL;
+    acbb_status st = acbb_out_open(path, &o, NULL, err);
+    if (st != ACBB_OK) return st;
+    gp_io io = { .file = acbb_out_temp_path(o) };
+    st = run_gnuplot(b, &io, err);
+    if (st == ACBB_OK && !image_complete(io.file, fmt))
+        st = acbb_error_set(err, ACBB_EIO, "gnuplot did not finish %s (disk full?); "
+                            "the old file is kept", path);
+    if (st != ACBB_OK) {
+        acbb_out_abort(o);
+        return st;
     }
-    /* mkstemp makes the file 0600; a picture is for sharing. The umask cannot
-     * be read without setting it (umask(2) is not thread-safe), so the
-     * usual 0644 is used. */
-    fchmod(fd, 0644);
-    close(fd);
-    *tmp_out = tmp;
-    return ACBB_OK;
+    return acbb_out_commit(o, err);
 }
 
 acbb_status acbb_plot_check_size(acbb_plot_format fmt, int w, int h, acbb_error *err)
@@ -574,8 +607,8 @@ acbb_status acbb_plot_check_size(acbb_plot_format fmt, int w, int h, acbb_error 
 acbb_status acbb_plot_file(acbb_plot_kind kind, acbb_plot_format fmt, const char *path,
                            int width, int height, const acbb_plot_data *d, acbb_error *err)
 {
-    const plot_kind_spec *k = NULL;
-    acbb_status st = check_data(kind, d, &k, err);
+    plot_kind_spec spec, *k = &spec;
+    acbb_status st = check_data(kind, d, k, err);
     if (st != ACBB_OK) return st;
     if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)
         return acbb_error_set(err, ACBB_EINVAL, "plot file format must be png or svg");
@@ -583,23 +616,10 @@ acbb_status acbb_plot_file(acbb_plot_kind kind, acbb_plot_format fmt, const char
         return acbb_error_set(err, ACBB_EINVAL, "plot path is empty or has a control character");
     if ((st = acbb_plot_check_size(fmt, width, height, err))) return st;
 
-    char *tmp = NULL;
-    if ((st = make_temp(path, &tmp, err))) return st;
     sbuf b = { 0 };
     terminal_line(&b, fmt, width, height);
-    sb_printf(&b, "set output ");
-    sb_quoted(&b, tmp);
-    sb_printf(&b, "\n");
     st = script_body(&b, k, d, false, err);
-    gp_io io = { 0 };
-    if (st == ACBB_OK) st = run_gnuplot(&b, &io, err);
-    struct stat sb;
-    if (st == ACBB_OK && (stat(tmp, &sb) != 0 || sb.st_size == 0))
-        st = acbb_error_set(err, ACBB_EIO, "gnuplot failed: it wrote nothing to %s", path);
-    if (st == ACBB_OK && rename(tmp, path) != 0)
-        st = acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
-    if (st != ACBB_OK) unlink(tmp);
-    free(tmp);
+    if (st == ACBB_OK) st = render_file(&b, fmt, path, err);
     free(b.p);
     return st;
 }
@@ -620,8 +640,8 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
     if (!text || text_len == 0)
         return acbb_error_set(err, ACBB_EINVAL, "dumb plot: no text buffer");
     text[0] = '\0';
-    const plot_kind_spec *k = NULL;
-    acbb_status st = check_data(kind, d, &k, err);
+    plot_kind_spec spec, *k = &spec;
+    acbb_status st = check_data(kind, d, k, err);
     if (st != ACBB_OK) return st;
     if ((st = acbb_plot_check_size(ACBB_PLOT_DUMB, cols, rows, err))) return st;
     sbuf b = { 0 };
@@ -724,16 +744,11 @@ acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
     if (st != ACBB_OK) return st;
 
     sbuf b = { 0 };
-    char *tmp = NULL;
     terminal_line(&b, fmt, width, height);
     /* The data are checked before a temporary file is made. */
     sbuf body = { 0 };
     st = accuracy_script(&body, rows, n, title, err);
-    if (st == ACBB_OK) st = make_temp(path, &tmp, err);
     if (st == ACBB_OK) {
-        sb_printf(&b, "set output ");
-        sb_quoted(&b, tmp);
-        sb_printf(&b, "\n");
         if (sb_reserve(&b, body.n)) {
             memcpy(b.p + b.n, body.p, body.n);
             b.n += body.n;
@@ -741,15 +756,7 @@ acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
         }
         if (b.oom) st = acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
     }
-    gp_io io = { 0 };
-    if (st == ACBB_OK) st = run_gnuplot(&b, &io, err);
-    struct stat sb;
-    if (st == ACBB_OK && (stat(tmp, &sb) != 0 || sb.st_size == 0))
-        st = acbb_error_set(err, ACBB_EIO, "gnuplot failed: it wrote nothing to %s", path);
-    if (st == ACBB_OK && rename(tmp, path) != 0)
-        st = acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
-    if (st != ACBB_OK && tmp) unlink(tmp);
-    free(tmp);
+    if (st == ACBB_OK) st = render_file(&b, fmt, path, err);
     free(b.p);
     free(body.p);
     return st;

@@ -223,6 +223,8 @@ static const field k_fields[] = {
     BOOL("effects", "loss_spin", loss_spin, 1, "spin loss P_s"),
     BOOL("effects", "loss_rolling", loss_rolling, 1, "rolling (hysteresis) loss P_r"),
     BOOL("effects", "loss_drag", loss_drag, 1, "drag loss P_v"),
+    BOOL("effects", "loss_cage", loss_cage, 0,
+         "cage-land shear loss P_c (Petroff, outer-land guided cage)"),
 
     ENUM("fidelity", "model", model, k_model, ACBB_MODEL_QUASI_DYNAMIC,
          "ball mechanics: static Hertz ... dynamic"),

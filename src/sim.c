@@ -118,7 +118,30 @@ static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *o
     acbb_mixture_at(&sim->s, &oc, mix);
 }
 
-/* The five losses at the current mechanics; fills sim->loss and heat. */
+/* Contact heat of one contact, by where the table sends it. */
+static void route_contact(const acbb_contact_loss *cl, double w, double *race, double *ball)
+{
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        if (acbb_loss_table[l].sink == ACBB_HEAT_CONTACT) *race += w * cl->P[l];
+        else if (acbb_loss_table[l].sink == ACBB_HEAT_BALL) *ball += w * cl->P[l];
+    }
+}
+
+/* Whole-bearing losses (drag, cage) at the mean orbital speed. */
+static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix, double wm,
+                           acbb_losses *L, acbb_heat_sources *H)
+{
+    acbb_bearing_in in = { &sim->s, mix, wm };
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        if (!d->bearing || !acbb_loss_enabled(&sim->s, (acbb_loss_kind)l)) continue;
+        L->P[l] = d->bearing(&in);
+        if (d->sink == ACBB_HEAT_CAGE) H->cage += L->P[l];
+        else H->cavity += L->P[l];
+    }
+}
+
+/* Every loss of the table at the current mechanics; fills sim->loss and heat. */
 static acbb_status losses(acbb_sim *sim)
 {
     const acbb_scene *s = &sim->s;
@@ -141,24 +164,16 @@ static acbb_status losses(acbb_sim *sim)
             rc = acbb_contact_losses(s, &sim->quad, &co, &oil_o, &bl->out);
         if (rc != ACBB_OK)
             return rc;
-        L.shear += w * (bl->in.P_L + bl->out.P_L);
-        L.slip += w * (bl->in.P_t + bl->out.P_t);
-        L.spin += w * (bl->in.P_s + bl->out.P_s);
-        L.rolling += w * (bl->in.P_r + bl->out.P_r);
-        H.inner_contact += w * (bl->in.P_L + bl->in.P_t + bl->in.P_r);
-        H.outer_contact += w * (bl->out.P_L + bl->out.P_t + bl->out.P_r);
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+            L.P[l] += w * (bl->in.P[l] + bl->out.P[l]);
+        route_contact(&bl->in, w, &H.inner_contact, &H.ball);
+        route_contact(&bl->out, w, &H.outer_contact, &H.ball);
         wm_sum += w * b->kin.omega_m;
     }
     if (sim->ms.symmetric)
         for (int j = 1; j < sim->ms.n; j++) sim->bl[j] = sim->bl[0];
-    if (s->loss_drag) {
-        /* Drag at the mean orbital speed heats the cavity air. */
-        double wm = wm_sum / sim->ms.n;
-        L.drag = acbb_drag_loss(s, &mix, wm);
-    }
-    H.spin = L.spin;
-    H.drag = L.drag;
-    L.total = L.shear + L.slip + L.spin + L.rolling + L.drag;
+    bearing_losses(sim, &mix, wm_sum / sim->ms.n, &L, &H);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) L.total += L.P[l];
     L.inner = H.inner_contact;
     L.outer = H.outer_contact;
     if (!isfinite(L.total))
@@ -278,8 +293,9 @@ static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
 
 static int contact_finite(const acbb_contact_loss *c)
 {
-    return isfinite(c->P_L) && isfinite(c->P_t) && isfinite(c->P_s) && isfinite(c->P_r)
-        && isfinite(c->slide) && isfinite(c->film.hc);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        if (!isfinite(c->P[l])) return 0;
+    return isfinite(c->slide) && isfinite(c->film.hc);
 }
 
 /* Every value a snapshot publishes, checked where it is made, so that a
@@ -719,8 +735,8 @@ static void ball_view(const acbb_sim *sim, int j, acbb_ball_view *v)
     v->a_i = b->ct_i.a; v->b_i = b->ct_i.b; v->a_o = b->ct_o.a; v->b_o = b->ct_o.b;
     v->omega_m = b->kin.omega_m;
     v->omega_x = b->kin.wx; v->omega_y = b->kin.wy; v->omega_z = b->kin.wz;
-    v->loss = bl->in.P_L + bl->in.P_t + bl->in.P_s + bl->in.P_r
-            + bl->out.P_L + bl->out.P_t + bl->out.P_s + bl->out.P_r;
+    v->loss = 0.0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) v->loss += bl->in.P[l] + bl->out.P[l];
     /* Last guard only: evaluate() already ended the run on a non-finite value. */
     double *f[] = { &v->psi, &v->Qi, &v->Qo, &v->alpha_i, &v->alpha_o, &v->slide_i,
                     &v->slide_o, &v->spin_i, &v->spin_o, &v->film_i, &v->film_o, &v->pmax_i,
@@ -753,8 +769,10 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->T_shaft = fin(pt.shaft);
     o->T_cavity = fin(sim->T[nw->node_cavity]);
     const acbb_losses *L = &sim->loss;
-    o->losses = (acbb_losses){ fin(L->shear), fin(L->slip), fin(L->spin), fin(L->rolling),
-                               fin(L->drag), fin(L->total), fin(L->inner), fin(L->outer) };
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) o->losses.P[l] = fin(L->P[l]);
+    o->losses.total = fin(L->total);
+    o->losses.inner = fin(L->inner);
+    o->losses.outer = fin(L->outer);
     o->exp_ball = fin(sim->exp.ball);
     o->exp_inner = fin(sim->exp.inner);
     o->exp_inner_cen = fin(sim->exp.inner_cen);
@@ -762,8 +780,8 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->delta_x = fin(sim->ms.dx);
     o->delta_z = fin(sim->ms.dz);
     o->reaction_x = fin(sim->ms.Fx);
-    o->heat_in = fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.spin
-                     + sim->heat.drag);
+    o->heat_in = fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
+                     + sim->heat.cavity + sim->heat.cage);
     o->heat_out = fin(sim->heat_out);
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++) ball_view(sim, j, &o->balls[j]);

@@ -71,7 +71,7 @@ jqt "$TMP/rad.json" '([.balls[].Qi_N] | max) > ([.balls[].Qi_N] | min) * 1.01' \
 code $? 0 "run --json --csv exits 0"
 [ ! -e "$TMP/run.csv.tmp" ] && [ -s "$TMP/run.csv" ]
 t $? "csv written and the .tmp renamed away"
-head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s'
+head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_cage_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s'
 t $? "csv header row"
 iters=$(jq '.iterations' "$TMP/csv.json")
 rows=$(($(wc -l <"$TMP/run.csv") - 1))
@@ -79,19 +79,19 @@ rows=$(($(wc -l <"$TMP/run.csv") - 1))
 t $? "csv rows ($rows) == iterations ($iters) + 0 or 1"
 awk -F, 'NR > 2 && $1 <= prev { bad = 1 } NR > 1 { prev = $1 } END { exit bad }' "$TMP/run.csv"
 t $? "csv iteration column strictly increasing"
-awk -F, 'NR > 1 && NF != 20 { bad = 1 } END { exit bad }' "$TMP/run.csv"
-t $? "csv rows have 20 fields"
+awk -F, 'NR > 1 && NF != 21 { bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv rows have 21 fields"
 last_T=$(tail -n 1 "$TMP/run.csv" | cut -d, -f4)
 jq -e --argjson T "$last_T" 'def abs: if . < 0 then -. else . end;
     ((.temperature_C.outer_ring - $T) | abs) <= 1e-9 * ($T | abs)' "$TMP/csv.json" >/dev/null 2>&1
 t $? "csv last-row T_outer_ring ($last_T) equals the JSON outer_ring"
-last_P=$(tail -n 1 "$TMP/run.csv" | cut -d, -f12)
+last_P=$(tail -n 1 "$TMP/run.csv" | cut -d, -f13)
 jq -e --argjson P "$last_P" 'def abs: if . < 0 then -. else . end;
     ((.losses_W.total - $P) | abs) <= 1e-9 * ($P | abs)' "$TMP/csv.json" >/dev/null 2>&1
 t $? "csv last-row P_total equals the JSON total"
-awk -F, 'NR > 1 { s = $7 + $8 + $9 + $10 + $11; d = s - $12; if (d < 0) d = -d;
-    if (d > 1e-8 * ($12 < 0 ? -$12 : $12) + 1e-12) bad = 1 } END { exit bad }' "$TMP/run.csv"
-t $? "csv: every row's total equals the sum of its five losses"
+awk -F, 'NR > 1 { s = $7 + $8 + $9 + $10 + $11 + $12; d = s - $13; if (d < 0) d = -d;
+    if (d > 1e-8 * ($13 < 0 ? -$13 : $13) + 1e-12) bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv: every row's total equals the sum of its six losses"
 
 # ---- --set ----
 "$ACBB" run "$PRESET" --json --set operating.axial_load_N=200 >"$TMP/200.json" 2>"$TMP/err"
@@ -223,5 +223,22 @@ has "$TMP/keys.txt" "bearing.ball_diameter_mm" "keys lists bearing.ball_diameter
 "$ACBB" presets >"$TMP/presets.txt" 2>"$TMP/err"
 code $? 0 "presets exits 0"
 has "$TMP/presets.txt" "7008C.ini" "presets lists 7008C.ini"
+
+# The sixth loss (MODEL.md 6 iii) is one row of the loss table: switched on,
+# it shows in the JSON, the CSV and the text summary with the other five.
+"$ACBB" run presets/7008C.ini --set effects.loss_cage=on --json --csv "$TMP/cage.csv" \
+    >"$TMP/cage.json" 2>"$TMP/err"
+code $? 0 "run with effects.loss_cage=on exits 0"
+jq -e 'def abs: if . < 0 then -. else . end; .losses_W.cage > 0 and ((.losses_W.shear
+    + .losses_W.slip + .losses_W.spin + .losses_W.rolling + .losses_W.drag + .losses_W.cage
+    - .losses_W.total) | abs) < 1e-6' \
+    "$TMP/cage.json" >/dev/null
+t $? "JSON: cage loss > 0 and the six losses sum to the total"
+awk -F, 'NR > 1 && $12 <= 0 { bad = 1 } END { exit bad }' "$TMP/cage.csv"
+t $? "CSV: P_cage_W column positive in every row"
+"$ACBB" run presets/7008C.ini --set effects.loss_cage=on >"$TMP/cage.txt" 2>&1
+has "$TMP/cage.txt" "cage" "text summary lists the cage loss"
+awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/cage.txt"
+t $? "text summary with six losses fits 80 columns"
 
 tap_done

@@ -55,14 +55,14 @@ static void test_spin_closed_form(void)
         acbb_quad_init(&q, grids[g]);
         acbb_contact_loss L;
         ok(acbb_contact_losses(&s, &q, &c, &oil, &L) == ACBB_OK, "losses %dx%d", grids[g], grids[g]);
-        double err = fabs(L.P_s - want) / want;
+        double err = fabs(L.P[ACBB_LOSS_SPIN] - want) / want;
         shrinking &= err < err_prev;
         err_prev = err;
         if (grids[g] == 32)
-            is_close(L.P_s, want, 2e-3, 0, "spin loss = w (3 pi/16) mu Q a (32x32)");
+            is_close(L.P[ACBB_LOSS_SPIN], want, 2e-3, 0, "spin loss = w (3 pi/16) mu Q a (32x32)");
         if (grids[g] == 16) {
-            ok(L.P_t == 0 && L.P_L == 0, "no translational slip -> no P_t, no P_L");
-            ok(L.P_r == 0, "no entrainment -> no rolling loss");
+            ok(L.P[ACBB_LOSS_SLIP] == 0 && L.P[ACBB_LOSS_SHEAR] == 0, "no translational slip -> no P_t, no P_L");
+            ok(L.P[ACBB_LOSS_ROLLING] == 0, "no entrainment -> no rolling loss");
         }
     }
     ok(shrinking, "spin loss error shrinks as the grid is refined (last %.2e)", err_prev);
@@ -84,16 +84,16 @@ static void test_slip_and_rolling(void)
     acbb_contact_loss L;
     acbb_contact_losses(&s, &q, &c, &oil, &L);
     /* With boundary friction only, P_t = mu * integral(p |V|) = mu Q slide. */
-    is_close(L.P_t, s.mu_bd * c.Q * L.slide, 2e-3, 0, "P_t = mu Q (pressure-weighted slip)");
+    is_close(L.P[ACBB_LOSS_SLIP], s.mu_bd * c.Q * L.slide, 2e-3, 0, "P_t = mu Q (pressure-weighted slip)");
     ok(L.slide > 0, "non-zero sliding speed (%.3g m/s)", L.slide);
     double Pr = 4 * s.hysteresis * c.Q * c.a / (3 * M_PI * c.D) * c.u;
-    is_close(L.P_r, Pr, 1e-12, 0, "P_r = 4 eps Q a u / (3 pi D) (hand value)");
+    is_close(L.P[ACBB_LOSS_ROLLING], Pr, 1e-12, 0, "P_r = 4 eps Q a u / (3 pi D) (hand value)");
     s.hyst_axis = ACBB_HYST_MINOR;
     acbb_contact_losses(&s, &q, &c, &oil, &L);
-    is_close(L.P_r, Pr * 0.2, 1e-12, 0, "hysteresis on the minor axis scales with b/a");
+    is_close(L.P[ACBB_LOSS_ROLLING], Pr * 0.2, 1e-12, 0, "hysteresis on the minor axis scales with b/a");
     s.loss_slip = s.loss_rolling = s.loss_spin = s.loss_shear = false;
     acbb_contact_losses(&s, &q, &c, &oil, &L);
-    ok(L.P_t == 0 && L.P_r == 0 && L.P_s == 0 && L.P_L == 0, "disabled losses are zero");
+    ok(L.P[ACBB_LOSS_SLIP] == 0 && L.P[ACBB_LOSS_ROLLING] == 0 && L.P[ACBB_LOSS_SPIN] == 0 && L.P[ACBB_LOSS_SHEAR] == 0, "disabled losses are zero");
 }
 
 static void test_slip_field(void)
@@ -123,9 +123,48 @@ static void test_drag(void)
     is_close(acbb_drag_loss(&s, &mix, 0.0), 0.0, 0, 1e-15, "no drag at rest");
 }
 
+/* MODEL.md 6 note iii: Petroff's cage-land shear with the 7008C cage
+ * (d_c 57.7 mm, d_2 58.1 mm -> c_g 0.2 mm, W_c 10.1 mm). */
+static void test_cage(void)
+{
+    acbb_scene s;
+    scene_min(&s);
+    s.cage_diameter = 57.7e-3;
+    s.outer_land_diameter = 58.1e-3;
+    s.cage_width = 10.1e-3;
+    acbb_mixture mix = { .eta = 1.9e-5 };
+    double wm = 660.0, rc = 28.85e-3;
+    double want = 2 * M_PI * 1.9e-5 * rc * rc * rc * 10.1e-3 * wm * wm / 0.2e-3;
+    is_close(acbb_cage_loss(&s, &mix, wm), want, 1e-9, 0, "cage loss = 2 pi eta r^3 W w^2 / c_g");
+    is_close(acbb_cage_loss(&s, &mix, 2 * wm), 4 * want, 1e-12, 0, "cage loss ~ w^2");
+}
+
+/* The loss table: one row per kind, each with a name, symbol, effect switch
+ * and exactly one formula; names are unique JSON keys. */
+static void test_table(void)
+{
+    int good = 1;
+    for (int k = 0; k < ACBB_LOSS_KINDS; k++) {
+        const acbb_loss_desc *d = &acbb_loss_table[k];
+        int formulas = (d->point != NULL) + (d->contact != NULL) + (d->bearing != NULL);
+        if (!d->name || !d->symbol || !d->label || !d->effect || formulas != 1) good = 0;
+        for (int j = 0; j < k && good; j++)
+            if (strcmp(d->name, acbb_loss_table[j].name) == 0) good = 0;
+    }
+    ok(good, "every loss row has names, an effect and exactly one formula; names unique");
+    acbb_scene s;
+    acbb_scene_default(&s);
+    ok(!acbb_loss_enabled(&s, ACBB_LOSS_CAGE) && acbb_loss_enabled(&s, ACBB_LOSS_SHEAR),
+       "default scene: the five seed losses on, the cage loss off");
+    s.loss_cage = true;
+    ok(acbb_loss_enabled(&s, ACBB_LOSS_CAGE), "effects.loss_cage switches it on");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_cage();
+    test_table();
     test_spin_closed_form();
     test_slip_and_rolling();
     test_slip_field();

@@ -100,7 +100,7 @@ static acbb_net_inputs inputs_15k(const acbb_scene *s)
     return in;
 }
 
-static const acbb_heat_sources SRC = {20.0, 15.0, 5.0, 3.0};   /* 43 W */
+static const acbb_heat_sources SRC = {20.0, 15.0, 5.0, 3.0, 0.0};   /* 43 W */
 
 static double cap_sum(const acbb_network *nw, const int *nodes, int n)
 {

@@ -46,7 +46,7 @@ static void make_run(void)
         snap.T_inner_ring = 20.0 + 25.0 * rise;
         snap.T_ball = snap.T_inner_ring + 2.0;
         snap.T_housing = 20.0 + 10.0 * rise;
-        snap.losses = (acbb_losses){ 1, 2, 3, 4, 5, 15, 6, 4 };
+        snap.losses = (acbb_losses){ { 1, 2, 3, 4, 5, 0 }, 15, 6, 4 };
         acbb_history_push(&hist, &snap);
     }
 }

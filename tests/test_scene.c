@@ -184,6 +184,7 @@ static const char *const k_expected[][2] = {
     {"effects.gyroscopic", "on"}, {"effects.ring_centrifugal", "on"},
     {"effects.ehl_film", "on"}, {"effects.loss_shear", "on"}, {"effects.loss_slip", "on"},
     {"effects.loss_spin", "on"}, {"effects.loss_rolling", "on"}, {"effects.loss_drag", "on"},
+    {"effects.loss_cage", "off"},
     {"fidelity.model", "quasi-dynamic"}, {"fidelity.contact_grid", "6"},
     {"fidelity.hertz", "bh77"}, {"fidelity.geometry", "clean"},
     {"fidelity.race_control", "outer"}, {"fidelity.loss_form", "clean"},

@@ -29,7 +29,7 @@ static int plausible(const acbb_snapshot *o, int film)
     for (int i = 0; i < o->n_nodes; i++)
         if (!(o->T[i] >= 26.0 - 1e-6 && o->T[i] <= 150.0)) return 0;
     const acbb_losses *L = &o->losses;
-    if (!(L->shear >= 0 && L->slip >= 0 && L->spin >= 0 && L->rolling >= 0 && L->drag >= 0))
+    if (!(L->P[ACBB_LOSS_SHEAR] >= 0 && L->P[ACBB_LOSS_SLIP] >= 0 && L->P[ACBB_LOSS_SPIN] >= 0 && L->P[ACBB_LOSS_ROLLING] >= 0 && L->P[ACBB_LOSS_DRAG] >= 0))
         return 0;
     for (int j = 0; j < o->n_balls; j++) {
         const acbb_ball_view *b = &o->balls[j];
@@ -73,11 +73,11 @@ static void test_seed_conclusion_1(void)
             ok(snapshot_finite(&snap_a), "snapshot finite");
             ok(snap_a.T_outer_ring > s.ambient_C + 0.1, "outer ring heats up (%.2f C)",
                snap_a.T_outer_ring);
-            double sum = snap_a.losses.shear + snap_a.losses.slip + snap_a.losses.spin
-                       + snap_a.losses.rolling + snap_a.losses.drag;
+            double sum = snap_a.losses.P[ACBB_LOSS_SHEAR] + snap_a.losses.P[ACBB_LOSS_SLIP] + snap_a.losses.P[ACBB_LOSS_SPIN]
+                       + snap_a.losses.P[ACBB_LOSS_ROLLING] + snap_a.losses.P[ACBB_LOSS_DRAG];
             is_close(snap_a.losses.total, sum, 1e-12, 0, "total = sum of the five losses");
-            ok(snap_a.losses.shear >= 0 && snap_a.losses.slip >= 0 && snap_a.losses.spin >= 0
-               && snap_a.losses.rolling >= 0 && snap_a.losses.drag >= 0, "every loss >= 0");
+            ok(snap_a.losses.P[ACBB_LOSS_SHEAR] >= 0 && snap_a.losses.P[ACBB_LOSS_SLIP] >= 0 && snap_a.losses.P[ACBB_LOSS_SPIN] >= 0
+               && snap_a.losses.P[ACBB_LOSS_ROLLING] >= 0 && snap_a.losses.P[ACBB_LOSS_DRAG] >= 0, "every loss >= 0");
             is_close(snap_a.heat_out, snap_a.heat_in, 1e-6, 0,
                      "steady state: heat in = heat out (1e-6)");
             Qi[l][te] = snap_a.balls[0].Qi;
@@ -145,8 +145,8 @@ static void test_hard_cases(void)
     rc = run(&s, &snap_a, &err);
     ok(rc == ACBB_OK && plausible(&snap_a, 0), "50 N, 16000 rpm, no film: converged (%s)",
        snap_a.message);
-    ok(snap_a.losses.shear == 0 && snap_a.losses.slip > 0,
-       "no film: no lubricant shear, asperity slip instead (%.3f W)", snap_a.losses.slip);
+    ok(snap_a.losses.P[ACBB_LOSS_SHEAR] == 0 && snap_a.losses.P[ACBB_LOSS_SLIP] > 0,
+       "no film: no lubricant shear, asperity slip instead (%.3f W)", snap_a.losses.P[ACBB_LOSS_SLIP]);
     /* Combined load with a load zone. */
     s = base(10000, 600, 1);
     s.radial_load = 1200;
@@ -241,13 +241,35 @@ static void test_disabled_effects(void)
     s.loss_spin = false;
     acbb_error err = { "" };
     run(&s, &snap_a, &err);
-    ok(snap_a.losses.drag == 0 && snap_a.losses.spin == 0, "disabled losses are not computed");
+    ok(snap_a.losses.P[ACBB_LOSS_DRAG] == 0 && snap_a.losses.P[ACBB_LOSS_SPIN] == 0, "disabled losses are not computed");
     ok(snap_a.losses.total > 0, "the enabled ones still are");
+}
+
+/* The sixth loss (MODEL.md 6 iii): off by default and then exactly zero;
+ * on, it adds its heat to the cage node and the steady state still
+ * balances (heat in = heat out through the fixed nodes). */
+static void test_cage_loss(void)
+{
+    acbb_scene s = base(15000, 1000, 1);
+    acbb_error err = { "" };
+    run(&s, &snap_a, &err);
+    s.loss_cage = true;
+    acbb_status rc = run(&s, &snap_b, &err);
+    ok(snap_a.losses.P[ACBB_LOSS_CAGE] == 0.0, "cage loss off by default: exactly 0 W");
+    ok(rc == ACBB_OK && snap_b.losses.P[ACBB_LOSS_CAGE] > 0.0,
+       "cage loss on: %.4g W", snap_b.losses.P[ACBB_LOSS_CAGE]);
+    double sum = 0.0;
+    for (int k = 0; k < ACBB_LOSS_KINDS; k++) sum += snap_b.losses.P[k];
+    is_close(snap_b.losses.total, sum, 1e-12, 0, "total = sum of the six losses");
+    is_close(snap_b.heat_out, snap_b.heat_in, 1e-6, 0, "steady state with the cage loss: heat in = out");
+    is_close(snap_b.heat_in, snap_b.losses.total, 1e-9, 0, "every loss reaches the network");
+    ok(snap_b.T[14] > snap_a.T[14], "the cage node warms (%.3f > %.3f C)", snap_b.T[14], snap_a.T[14]);
 }
 
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_cage_loss();
     test_seed_conclusion_1();
     test_zero_speed();
     test_steady_mode_matches_transient();

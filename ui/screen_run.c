@@ -126,22 +126,26 @@ static void temps_panel(acbb_app *a, acbb_rect r)
     }
 }
 
+/* The rows of the loss table that the scene switches on (or that carry a
+ * value, for a run started before an edit), then the total. */
 static void losses_panel(acbb_app *a, acbb_rect r)
 {
     const acbb_losses *l = &a->st.snap.losses;
-    const struct { const char *name; double W; } rows[] = {
-        { "Shear   P_L", l->shear }, { "Slip    P_t", l->slip }, { "Spin    P_s", l->spin },
-        { "Rolling P_r", l->rolling }, { "Drag    P_v", l->drag },
-    };
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Power loss        W      %%");
     double tot = l->total > 0 ? l->total : 1.0;
-    for (int i = 0; i < 5 && i + 1 < r.h; i++) {
-        acbb_put(a, r.y + 1 + i, r.x, r.w, ACBB_ROLE_NORMAL, "%-12s %7.2f %6.1f", rows[i].name,
-                 rows[i].W, 100 * rows[i].W / tot);
-        acbb_bar(a, r.y + 1 + i, r.x + 28, r.w - 29, rows[i].W / tot, ACBB_ROLE_BAR);
+    int row = 1;
+    for (int k = 0; k < ACBB_LOSS_KINDS && row < r.h; k++) {
+        const acbb_loss_desc *d = &acbb_loss_table[k];
+        if (!acbb_loss_enabled(&a->ed.scene, (acbb_loss_kind)k) && l->P[k] == 0.0) continue;
+        char name[16];
+        snprintf(name, sizeof name, "%.7s %s", d->name, d->symbol);
+        acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_NORMAL, "%-12s %7.2f %6.1f", name, l->P[k],
+                 100 * l->P[k] / tot);
+        acbb_bar(a, r.y + row, r.x + 28, r.w - 29, l->P[k] / tot, ACBB_ROLE_BAR);
+        row++;
     }
-    if (r.h > 6)
-        acbb_put(a, r.y + 6, r.x, r.w, ACBB_ROLE_HEADER, "%-12s %7.2f %6.1f", "Total",
+    if (row < r.h)
+        acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_HEADER, "%-12s %7.2f %6.1f", "Total",
                  l->total, 100.0);
 }
 

@@ -16,7 +16,7 @@ typedef struct {
     long iteration;
     double time;                    /* s */
     double T_outer_ring, T_inner_ring, T_ball, T_housing; /* C */
-    double shear, slip, spin, rolling, drag, total;       /* W */
+    double loss[ACBB_LOSS_KINDS], total;                  /* W, by acbb_loss_kind */
     double Qi, Qo;                  /* ball 0, N */
     double alpha_i, alpha_o;        /* ball 0, rad */
     double exp_inner, exp_outer, exp_ball; /* m (exp_inner includes centrifugal) */

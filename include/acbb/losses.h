@@ -1,10 +1,16 @@
-/* acbb — the five power losses of the seed (eqs 14-18), MODEL.md section 6,
- * by Gauss-Legendre quadrature over each contact ellipse. */
+/* acbb — the power losses: the seed's five (eqs 14-18) and the optional
+ * cage-land shear, MODEL.md section 6. Every loss is a row of one table
+ * (acbb_loss_table): its names, where its heat goes, the effect switch that
+ * enables it, and its formula -- a per-point integrand over the contact
+ * ellipse (Gauss-Legendre), a closed form per contact, or a closed form for
+ * the whole bearing. Adding a loss is one enum value, one row, one formula;
+ * every client (JSON, CSV, TUI, plots) lists the table. */
 #ifndef ACBB_LOSSES_H
 #define ACBB_LOSSES_H
 
 #include "acbb/scene.h"
 #include "acbb/status.h"
+#include <stddef.h>
 #include "acbb/lubrication.h"
 
 #define ACBB_QUAD_MAX 64
@@ -34,8 +40,66 @@ typedef struct {
     double omega_m;     /* orbital speed (seed-form P_L, P_r), rad/s */
 } acbb_contact_in;
 
+typedef enum {
+    ACBB_LOSS_SHEAR,    /* P_L lubricant shear */
+    ACBB_LOSS_SLIP,     /* P_t differential slipping (asperity) */
+    ACBB_LOSS_SPIN,     /* P_s spinning */
+    ACBB_LOSS_ROLLING,  /* P_r rolling (elastic hysteresis) */
+    ACBB_LOSS_DRAG,     /* P_v oil-air drag */
+    ACBB_LOSS_CAGE,     /* P_c cage-land shear (Petroff), MODEL.md 6 note iii */
+    ACBB_LOSS_KINDS
+} acbb_loss_kind;
+
+/* Where a loss's heat enters the thermal network (MODEL.md 8.2). */
+typedef enum {
+    ACBB_HEAT_CONTACT,  /* the contact's race node (44 inner / 45 outer) */
+    ACBB_HEAT_BALL,     /* the ball centre (15) */
+    ACBB_HEAT_CAVITY,   /* the oil-air (43) */
+    ACBB_HEAT_CAGE      /* the cage body (14) */
+} acbb_heat_sink;
+
+/* What a per-point integrand sees at one quadrature point of a contact. */
 typedef struct {
-    double P_L, P_t, P_s, P_r; /* W */
+    const acbb_scene *s;
+    const acbb_contact_in *c;
+    const acbb_film *film;
+    const acbb_oil_state *oil;
+    int seed;               /* fidelity.loss_form = seed */
+    double x, y;            /* point on the ellipse, m */
+    double p;               /* Hertz pressure, Pa */
+    double V;               /* translational slip speed, m/s */
+    double eta;             /* pressure viscosity, Pa s (0 without film) */
+    double tauV;            /* lubricant shear stress at V, Pa */
+} acbb_loss_point;
+
+/* Whole-bearing inputs of the bearing-level losses. */
+typedef struct {
+    const acbb_scene *s;
+    const acbb_mixture *mix;
+    double omega_m;         /* mean orbital (cage) speed, rad/s */
+} acbb_bearing_in;
+
+typedef struct {
+    const char *name;       /* JSON / CSV key, e.g. "shear" */
+    const char *symbol;     /* e.g. "P_L" */
+    const char *label;      /* e.g. "lubricant shear" */
+    const char *effect;     /* its [effects] key, e.g. "loss_shear" */
+    size_t flag;            /* offsetof(acbb_scene, that bool) */
+    acbb_heat_sink sink;
+    /* Exactly one formula: */
+    double (*point)(const acbb_loss_point *pt);      /* integrand (W/m^2) */
+    double (*finish)(const acbb_contact_in *c, int seed, double integral); /* NULL: as is */
+    double (*contact)(const acbb_scene *s, const acbb_contact_in *c, double u); /* W */
+    double (*bearing)(const acbb_bearing_in *in);    /* W */
+} acbb_loss_desc;
+
+extern const acbb_loss_desc acbb_loss_table[ACBB_LOSS_KINDS];
+
+/* Is loss k switched on in the scene ([effects] loss_*)? */
+int acbb_loss_enabled(const acbb_scene *s, acbb_loss_kind k);
+
+typedef struct {
+    double P[ACBB_LOSS_KINDS]; /* W; bearing-level kinds stay 0 here */
     double slide;       /* pressure-weighted mean |translational slip|, m/s */
     acbb_film film;
 } acbb_contact_loss;
@@ -55,5 +119,9 @@ double acbb_slip_speed(const acbb_contact_in *c, double x);
  * F_v = pi/32 C_D rho_eff D^2 (dm omega_m)^2, P_v = Z omega_m F_v dm / 2. */
 double acbb_drag_force(const acbb_scene *s, const acbb_mixture *mix, double omega_m);
 double acbb_drag_loss(const acbb_scene *s, const acbb_mixture *mix, double omega_m);
+
+/* Cage-land shear (Petroff), P_c = 2 pi eta_eff r_c^3 W_c omega_c^2 / c_g with
+ * r_c = d_c/2, c_g = (d_2 - d_c)/2 (outer-land guided cage), omega_c = omega_m. */
+double acbb_cage_loss(const acbb_scene *s, const acbb_mixture *mix, double omega_m);
 
 #endif

@@ -21,8 +21,9 @@
 typedef struct {
     double inner_contact;   /* P_L,i + P_t,i + P_r,i  (node 44 / 7-node: IR share) */
     double outer_contact;   /* P_L,o + P_t,o + P_r,o  (node 45) */
-    double spin;            /* P_s,i + P_s,o          (node 15, ball centre) */
-    double drag;            /* P_v                    (node 43, cavity) */
+    double ball;            /* P_s,i + P_s,o          (node 15, ball centre) */
+    double cavity;          /* P_v                    (node 43, cavity) */
+    double cage;            /* P_c                    (node 14, cage; 7-node: node 3) */
 } acbb_heat_sources;
 
 /* State that the resistances depend on (one representative ball: mean over

@@ -109,6 +109,7 @@ typedef struct {
     bool loss_spin;              /* P_s */
     bool loss_rolling;           /* P_r */
     bool loss_drag;              /* P_v */
+    bool loss_cage;              /* P_c cage-land shear (MODEL.md 6 iii), default off */
 
     /* [fidelity] */
     acbb_model_level model;

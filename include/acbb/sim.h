@@ -15,6 +15,7 @@
 #include "acbb/scene.h"
 #include "acbb/status.h"
 #include "acbb/limits.h"
+#include "acbb/losses.h"
 
 /* What a user sees of one ball. Sliding speeds are the pressure-weighted
  * mean magnitude of the translational (Heathcote + gross) slip over the
@@ -34,13 +35,10 @@ typedef struct {
     double loss;                /* this ball's share of P_L+P_t+P_s+P_r, W */
 } acbb_ball_view;
 
-/* The five losses of the seed, W. */
+/* The losses, W, indexed by acbb_loss_kind (losses.h: acbb_loss_table
+ * gives each one's name, symbol and heat node). */
 typedef struct {
-    double shear;    /* P_L lubricant shear */
-    double slip;     /* P_t differential slipping (asperity) */
-    double spin;     /* P_s spinning */
-    double rolling;  /* P_r rolling (elastic hysteresis) */
-    double drag;     /* P_v oil-air drag */
+    double P[ACBB_LOSS_KINDS];
     double total;
     double inner, outer; /* contact heat to the inner / outer contact nodes */
 } acbb_losses;
