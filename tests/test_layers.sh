@@ -49,7 +49,9 @@ hits() {
     pat=$1; shift
     for f in "$@"; do
         [ -f "$f" ] || continue
-        strip "$f" | grep -n -E -- "$pat" | sed "s|^|$f:|"
+        c="$TMP/stripped/$f"        # each file is stripped once
+        [ -f "$c" ] || { mkdir -p "$(dirname "$c")" && strip "$f" >"$c"; }
+        grep -n -E -- "$pat" "$c" | sed "s|^|$f:|"
     done
 }
 
@@ -62,6 +64,8 @@ check() {
     [ -z "$found" ] || printf '%s\n' "$found" | sed 's/^/#   /'
 }
 
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
 shopt -s nullglob globstar
 clients=(src/cli*.c src/cli*.h cli/**/*.[ch] ui/**/*.[ch])
 engine=(include/**/*.h)
@@ -76,8 +80,6 @@ done
 
 # Self-check of the scanner on known text, so a broken stripper or pattern
 # cannot pass silently.
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
 printf '%s\n' '/* acbb_sim_step( in a comment */' 'x = "acbb_sim_step(";' \
     '  rc = acbb_sim_step (sim); // step' > "$TMP/probe.c"
 [ "$(hits 'acbb_sim_step[[:space:]]*\(' "$TMP/probe.c")" = "$TMP/probe.c:3:  rc = acbb_sim_step (sim); " ]
