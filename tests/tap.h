@@ -1,6 +1,7 @@
 /* Minimal TAP helper for numeric tests (header-only; one plan per binary).
  * is_close(got, want, rtol, atol, name): passes if
- * |got - want| <= atol + rtol * |want|, and prints both values otherwise. */
+ * |got - want| <= atol + rtol * |want|, and prints both values otherwise.
+ * skip(reason, name): a check that cannot run here (TAP # SKIP). */
 #ifndef ACBB_TAP_H
 #define ACBB_TAP_H
 
@@ -24,6 +25,21 @@ static inline int ok(int cond, const char *fmt, ...)
     if (!cond) tap_failed++;
     fflush(stdout);
     return cond;
+}
+
+/* A check that cannot run here: reported as passing with a TAP "# SKIP"
+ * directive and the reason, so it is counted but visibly not done. */
+static inline void skip(const char *reason, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static inline void skip(const char *reason, const char *fmt, ...)
+{
+    va_list ap;
+    tap_n++;
+    printf("ok %d - ", tap_n);
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    printf(" # SKIP %s\n", reason);
+    fflush(stdout);
 }
 
 static inline int is_close(double got, double want, double rtol, double atol,

@@ -253,8 +253,6 @@ static void check_thermal(const acbb_accuracy_row *rows, size_t n)
     ok(all_errors_below(t5, 1e-6) && all_errors_below(t30, 1e-6),
        "time_step 5 s and 30 s: every error < 1e-6");
     ok(all_errors_below(st, 1e-6), "thermal_mode steady: every error < 1e-6");
-    ok(st && ref && st->wall_ms > 0 && ref->wall_ms > 0 && t5->wall_ms > 0 && t30->wall_ms > 0,
-       "thermal rows timed (> 0 ms)");
     ok(st && ref && st->iterations < ref->iterations,
        "steady mode takes fewer coupled steps than transient (%ld vs %ld)",
        st ? st->iterations : -1, ref ? ref->iterations : -1);
@@ -265,8 +263,6 @@ static void check_network(const acbb_accuracy_row *rows, size_t n)
     const acbb_accuracy_row *r = find(rows, n, ACBB_KNOB_NETWORK, "7");
     int fin = r && isfinite(r->e_loss) && isfinite(r->e_T) && isfinite(r->e_Qi) &&
               isfinite(r->e_alpha) && isfinite(r->e_slide);
-    ok(fin && r->e_loss >= 0 && r->e_T >= 0 && r->e_Qi >= 0 && r->e_alpha >= 0 && r->e_slide >= 0,
-       "network 7 vs 46: errors finite and non-negative");
     ok(fin && r->e_T > 0.01, "the 7-node network is a different model (T error %.3g)",
        r ? r->e_T : NAN);
 }
@@ -347,7 +343,7 @@ static void check_plot(const acbb_accuracy_row *rows, size_t n)
     err.msg[0] = '\0';
     st = acbb_plot_accuracy_file(rows, n, ACBB_PLOT_SVG, path, 800, 500, "7008C", &err);
     if (st == ACBB_EIO && strstr(err.msg, "not found")) {
-        ok(1, "svg plot # SKIP gnuplot not installed");
+        skip("gnuplot not installed", "svg plot written");
         return;
     }
     ok(st == ACBB_OK, "svg plot written (%s)", err.msg);

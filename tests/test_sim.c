@@ -5,6 +5,7 @@
 #include <gsl/gsl_errno.h>
 #include "tap.h"
 #include "acbb/sim.h"
+#include "snapshot_check.h"
 
 #define RPM (M_PI / 30.0)
 
@@ -18,31 +19,6 @@ static acbb_scene base(double rpm, double Fx, int te)
     return s;
 }
 
-/* A published state must be physically plausible, not merely finite (the
- * engine ends a run on a non-finite value, and a NaN hidden as 0 would show
- * here as a zero film, angle or temperature): node temperatures between
- * ambient and the runaway limit, losses >= 0, loaded balls with angles in
- * (0, 90) deg and, at speed, a positive film. */
-static int plausible(const acbb_snapshot *o, int film)
-{
-    if (o->status == ACBB_NONFINITE) return 0;
-    for (int i = 0; i < o->n_nodes; i++)
-        if (!(o->T[i] >= 26.0 - 1e-6 && o->T[i] <= 150.0)) return 0;
-    const acbb_losses *L = &o->losses;
-    if (!(L->P[ACBB_LOSS_SHEAR] >= 0 && L->P[ACBB_LOSS_SLIP] >= 0 && L->P[ACBB_LOSS_SPIN] >= 0 && L->P[ACBB_LOSS_ROLLING] >= 0 && L->P[ACBB_LOSS_DRAG] >= 0))
-        return 0;
-    for (int j = 0; j < o->n_balls; j++) {
-        const acbb_ball_view *b = &o->balls[j];
-        if (!(b->Qi >= 0 && b->Qo >= 0)) return 0;
-        if (b->Qi > 1e-3 && !(b->alpha_i > 0 && b->alpha_i < M_PI / 2)) return 0;
-        if (b->Qo > 1e-3 && !(b->alpha_o > -M_PI / 2 && b->alpha_o < M_PI / 2)) return 0;
-        if (film && b->Qi > 1e-3 && b->omega_m > 1.0 && !(b->film_i > 0 && b->film_o > 0))
-            return 0;
-    }
-    return isfinite(o->T_outer_ring) && isfinite(o->exp_inner);
-}
-
-static int snapshot_finite(const acbb_snapshot *o) { return plausible(o, 1); }
 
 /* Run a scene to its end; returns the final status and fills snap. */
 static acbb_status run(const acbb_scene *s, acbb_snapshot *snap, acbb_error *err)
@@ -70,7 +46,8 @@ static void test_seed_conclusion_1(void)
             ok(rc == ACBB_OK && snap_a.state == ACBB_RUN_CONVERGED,
                "15000 rpm, %.0f N, %s converges (%s %s)", loads[l], te ? "TE" : "WTE",
                acbb_status_name(rc), snap_a.message);
-            ok(snapshot_finite(&snap_a), "snapshot finite");
+            ok(snapshot_plausible(&snap_a, 1),
+               "snapshot plausible (temperatures, losses, angles, film)");
             ok(snap_a.T_outer_ring > s.ambient_C + 0.1, "outer ring heats up (%.2f C)",
                snap_a.T_outer_ring);
             double sum = snap_a.losses.P[ACBB_LOSS_SHEAR] + snap_a.losses.P[ACBB_LOSS_SLIP] + snap_a.losses.P[ACBB_LOSS_SPIN]
@@ -134,7 +111,7 @@ static void test_hard_cases(void)
     /* Light load, high speed (skidding regime of MODEL.md 11). */
     acbb_scene s = base(16000, 50, 1);
     acbb_status rc = run(&s, &snap_a, &err);
-    ok(rc == ACBB_OK && snapshot_finite(&snap_a), "50 N at 16000 rpm: converged, finite (%s)",
+    ok(rc == ACBB_OK && snapshot_plausible(&snap_a, 1), "50 N at 16000 rpm: converged, plausible (%s)",
        snap_a.message);
     ok(snap_a.balls[0].alpha_o < snap_a.balls[0].alpha_i,
        "light load, high speed: alpha_o < alpha_i");
@@ -143,7 +120,7 @@ static void test_hard_cases(void)
     s = base(16000, 50, 1);
     s.ehl_film = false;
     rc = run(&s, &snap_a, &err);
-    ok(rc == ACBB_OK && plausible(&snap_a, 0), "50 N, 16000 rpm, no film: converged (%s)",
+    ok(rc == ACBB_OK && snapshot_plausible(&snap_a, 0), "50 N, 16000 rpm, no film: converged (%s)",
        snap_a.message);
     ok(snap_a.losses.P[ACBB_LOSS_SHEAR] == 0 && snap_a.losses.P[ACBB_LOSS_SLIP] > 0,
        "no film: no lubricant shear, asperity slip instead (%.3f W)", snap_a.losses.P[ACBB_LOSS_SLIP]);
@@ -151,7 +128,7 @@ static void test_hard_cases(void)
     s = base(10000, 600, 1);
     s.radial_load = 1200;
     rc = run(&s, &snap_a, &err);
-    ok(rc == ACBB_OK && snapshot_finite(&snap_a), "combined load converges (%s)",
+    ok(rc == ACBB_OK && snapshot_plausible(&snap_a, 1), "combined load converges (%s)",
        snap_a.message);
     ok(snap_a.balls[0].Qi > 3 * snap_a.balls[snap_a.n_balls / 2].Qi,
        "load zone: ball under the load carries > 3x the opposite one");
@@ -162,7 +139,7 @@ static void test_hard_cases(void)
     ok(rc == ACBB_RUNAWAY && snap_a.state == ACBB_RUN_FAILED, "temp limit -> ACBB_RUNAWAY (%s)",
        acbb_status_name(rc));
     has_substr(snap_a.message, "thermal runaway", "runaway message names it");
-    ok(snapshot_finite(&snap_a), "runaway keeps a finite last good state");
+    ok(snapshot_plausible(&snap_a, 1), "runaway keeps a plausible last good state");
     /* Step limit. */
     s = base(15000, 1000, 1);
     s.max_steps = 3;
@@ -174,8 +151,8 @@ static void test_hard_cases(void)
     s.preload = ACBB_PRELOAD_DISPLACEMENT;
     s.preload_force = 1000;
     rc = run(&s, &snap_a, &err);
-    ok((rc == ACBB_OK || rc == ACBB_RUNAWAY) && snapshot_finite(&snap_a),
-       "rigid preload 1000 N at 16000 rpm: %s, finite", acbb_status_name(rc));
+    ok((rc == ACBB_OK || rc == ACBB_RUNAWAY) && snapshot_plausible(&snap_a, 1),
+       "rigid preload 1000 N at 16000 rpm: %s, plausible", acbb_status_name(rc));
     ok(snap_a.reaction_x > 1000, "rigid preload: heat and speed raise the axial reaction (%.0f N)",
        snap_a.reaction_x);
     /* 7-node teaching network. */

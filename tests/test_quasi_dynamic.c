@@ -1,0 +1,150 @@
+/* Tests of the Level-2 quasi-dynamic ball kinematics (quasi_dynamic.h,
+ * MODEL.md section 4 "Level 2"): the returned speeds satisfy the y'-force
+ * and moment balances, recomputed here from the public traction API; in
+ * the pure-rolling limit (equal contact angles, heavy load, low speed) the
+ * orbital speed is the rolling kinematics of section 4 Level 1; balls
+ * without load and a stopped ring are left alone (section 11). */
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include "tap.h"
+#include "ball_fixture.h"
+
+/* Level-2 residual of ball b0's contacts (tables and film as the solver
+ * built them from b0) at speeds w = (omega_m, wx, wy, wz): r[0] the
+ * y'-force balance over mu (Qi + Qo), r[1..3] the moment balance over
+ * mu (Qi + Qo) D/2. Returns max |r|. */
+static double residual(const ball_fixture *f, const acbb_ball_state *b0, const double w[4])
+{
+    acbb_traction tr[2];
+    for (int inner = 0; inner < 2; inner++) {
+        acbb_contact_in c;
+        acbb_film film;
+        acbb_traction_contact tc;
+        acbb_mech_contact_input(f->g, b0, inner, f->wi, &c);
+        double u = fabs(c.u);
+        double srr = u > 1e-6 ? fmin(acbb_slip_speed(&c, 0.0) / u, 2.0) : 0.0;
+        acbb_film_compute(&f->s, &f->oil, u, c.Q, c.Rx, c.kappa, c.E_eff, c.pmax, srr, &film);
+        if (acbb_traction_contact_init(&tc, f->q.n) != ACBB_OK
+            || acbb_traction_prepare(&f->s, &f->q, &c, &film, &f->oil, &tc) != ACBB_OK)
+            return INFINITY;
+        acbb_traction_eval(&f->s, &tc, w + 1, inner ? f->wi - w[0] : -w[0], &tr[inner]);
+        acbb_traction_contact_free(&tc);
+    }
+    double Fv = f->s.loss_drag ? acbb_drag_force(&f->s, &f->mix, w[0]) : 0.0;
+    double J = f->g->J, Fs = f->s.mu_bd * (b0->Qi + b0->Qo), Ms = 0.5 * f->g->D * Fs;
+    /* Required moment in the orbiting frame: J omega_m (0, -wz, wy). */
+    double Mreq[3] = { 0.0, -J * w[0] * w[3], J * w[0] * w[2] };
+    double r = fabs(tr[0].F[1] + tr[1].F[1] + Fv) / Fs;
+    for (int d = 0; d < 3; d++)
+        r = fmax(r, fabs(tr[0].M[d] + tr[1].M[d] - Mreq[d]) / Ms);
+    return r;
+}
+
+static void test_residual(double rpm, double Fx)
+{
+    ball_fixture f;
+    acbb_scene_default(&f.s);
+    if (!ok(fixture_setup(&f, rpm, Fx), "%.0f rpm, %.0f N: quasi-static start", rpm, Fx)) return;
+    acbb_qd *qd;
+    ok(acbb_qd_new(f.s.contact_grid, &qd) == ACBB_OK, "workspace");
+    acbb_ball_state b0 = f.st.ball[0];
+    double change;
+    acbb_error err = { "" };
+    acbb_status rc = acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st,
+                                    &change, &err);
+    const acbb_ball_state *b = &f.st.ball[0];
+    ok(rc == ACBB_OK && b->traction_valid, "Level 2 solved (%s)", err.msg);
+    double w1[4] = { b0.kin.omega_m, b0.kin.wx, b0.kin.wy, b0.kin.wz };
+    double r1 = residual(&f, &b0, w1), r2 = residual(&f, &b0, b->qd_w);
+    ok(r2 < 1e-6, "residual at the Level-2 speeds %.2e < 1e-6 of mu Q (MODEL 4)", r2);
+    ok(r1 > 1e3 * r2, "the race-control start is not a solution (residual %.2e)", r1);
+    ok(fabs(change - fabs(b->qd_w[0] - w1[0]) / w1[0]) < 1e-12,
+       "*change = relative move of omega_m (%.3g)", change);
+    /* The stored meridional tractions are those at the solution: the y'
+     * components balance the drag (force on the ball along +y'). */
+    double Fv = acbb_drag_force(&f.s, &f.mix, b->qd_w[0]);
+    is_close(b->tr_i[1] + b->tr_o[1], -Fv, 0, 1e-6 * f.s.mu_bd * (b->Qi + b->Qo),
+             "stored tractions: F_i,y' + F_o,y' = -F_drag");
+    ok(b->tr_Qi == b0.Qi && b->tr_Qo == b0.Qo, "stored loads are the loads solved at");
+    int same = 1;
+    for (int j = 1; j < f.st.n; j++)
+        same &= memcmp(f.st.ball[j].qd_w, b->qd_w, sizeof b->qd_w) == 0;
+    ok(f.st.symmetric && same, "symmetric thrust: every ball takes ball 1's speeds");
+    acbb_qd_free(qd);
+    acbb_mech_free(f.m);
+}
+
+/* Pure rolling limit: with the centrifugal force off the two contact angles
+ * are equal, and rolling without gross slip at both contact centres gives
+ * (MODEL 4, Level 1, any beta) omega_m / omega_i = (1 - gamma') / 2,
+ * gamma' = D cos(alpha) / dm. At 1000 rpm and 1000 N the slip of the
+ * Level-2 solution is micro-slip (Heathcote): omega_m matches to 1e-3 and
+ * the slip at the contact centres stays under 0.5 % of the entrainment speed. */
+static void test_pure_rolling(void)
+{
+    ball_fixture f;
+    acbb_scene_default(&f.s);
+    f.s.centrifugal = false;
+    f.s.loss_drag = false;
+    if (!ok(fixture_setup(&f, 1000, 1000), "1000 rpm, 1000 N, no centrifugal force")) return;
+    acbb_qd *qd;
+    acbb_qd_new(f.s.contact_grid, &qd);
+    int passes = fixture_level2(&f, qd, 1e-10);
+    ok(passes > 0, "Level 1 <-> Level 2 iteration converges (%d passes)", passes);
+    const acbb_ball_state *b = &f.st.ball[0];
+    is_close(b->alpha_i, b->alpha_o, 0, 1e-6, "no centrifugal force: alpha_i = alpha_o");
+    double gam = f.g->D * cos(b->alpha_o) / f.g->dm, want = 0.5 * (1.0 - gam) * f.wi;
+    acbb_kin k1;
+    acbb_kinematics_race_control(b->alpha_i, b->alpha_o, f.g->D, f.g->dm, f.wi,
+                                 ACBB_CONTROL_OUTER, &k1);
+    is_close(k1.omega_m, want, 1e-6, 0, "race control omega_m = omega_i (1 - gamma')/2 (1e-6)");
+    is_close(b->qd_w[0], want, 1e-3, 0, "Level-2 omega_m = omega_i (1 - gamma')/2 (1e-3)");
+    /* Gross slip at the contact centres, relative to the entrainment speed. */
+    double rm = 0.5 * f.g->dm, h = 0.5 * f.g->D;
+    double so = h * b->kin.roll_o - b->kin.omega_m * (rm + h * cos(b->alpha_o));
+    double si = h * b->kin.roll_i - (f.wi - b->kin.omega_m) * (rm - h * cos(b->alpha_i));
+    ok(fabs(so) < 5e-3 * b->kin.u_o && fabs(si) < 5e-3 * b->kin.u_i,
+       "centre slip < 0.5 %% of entrainment (outer %.2e, inner %.2e m/s)", so, si);
+    acbb_qd_free(qd);
+    acbb_mech_free(f.m);
+}
+
+/* MODEL 11: unloaded balls keep race-control speeds; a stopped ring has no
+ * kinematics to solve. */
+static void test_guards(void)
+{
+    ball_fixture f;
+    acbb_scene_default(&f.s);
+    if (!ok(fixture_setup(&f, 8000, 200), "8000 rpm, 200 N")) return;
+    acbb_qd *qd;
+    acbb_qd_new(f.s.contact_grid, &qd);
+    static acbb_mech_state before;
+    before = f.st;
+    double change = -1;
+    acbb_error err = { "" };
+    ok(acbb_qd_update(qd, &f.s, &f.q, f.g, 0.0, &f.oil, &f.oil, &f.mix, &f.st, &change, &err)
+           == ACBB_OK && change == 0.0 && memcmp(&before, &f.st, sizeof before) == 0,
+       "omega_i = 0: OK, no change, state untouched");
+    f.st.ball[0].Qo = 0.5e-3;
+    f.st.ball[0].traction_valid = 1;
+    before = f.st;
+    ok(acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err)
+           == ACBB_OK && change == 0.0,
+       "outer load 0.5 mN (< 1 mN): OK, no change");
+    ok(f.st.ball[0].traction_valid == 0
+           && memcmp(&before.ball[0].kin, &f.st.ball[0].kin, sizeof before.ball[0].kin) == 0,
+       "unloaded ball: traction dropped, race-control speeds kept");
+    acbb_qd_free(qd);
+    acbb_mech_free(f.m);
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    test_residual(15000, 1000);
+    test_residual(15000, 100);  /* light load: skidding regime (MODEL 11) */
+    test_pure_rolling();
+    test_guards();
+    return done_testing();
+}
