@@ -105,6 +105,20 @@ void acbb_study_item3(const acbb_study_runs *c, acbb_study_item *it)
     add_check(it, "3b", ss > 0.0 ? V(ss >= REPORT_MAINLY * sl) : V_NOT_EVAL, &t);
 }
 
+/* The transient items read the per-step record of the TE load sweep. */
+static bool need_traj(acbb_study_item *it, const char *id, const acbb_study_runs *c)
+{
+    for (int k = 0; k < NL; k++) {
+        const acbb_study_point *p = P(c, LV_BASE, BLK_LOAD, k, TE);
+        if (p->n_traj > 0 && p->traj) continue;
+        tbuf t = { .n = 0 };
+        tb(&t, "run %s: no transient recorded", p->label);
+        add_check(it, id, V_NOT_EVAL, &t);
+        return false;
+    }
+    return true;
+}
+
 /* Transient of the TE load-sweep point k: sign changes of
  * (theta_i + theta_icen) - theta_o, and the time of the first one. */
 static int crossings(const acbb_study_point *p, double *t_first)
@@ -126,7 +140,7 @@ static int crossings(const acbb_study_point *p, double *t_first)
 
 void acbb_study_item4(const acbb_study_runs *c, acbb_study_item *it)
 {
-    if (!need(it, "4", c, LV_BASE, BLK_LOAD)) return;
+    if (!need(it, "4", c, LV_BASE, BLK_LOAD) || !need_traj(it, "4", c)) return;
     int n_early = 0, n_final = 0, n_one = 0, n_ball = 0;
     tbuf ta = { .n = 0 }, tc = { .n = 0 }, td = { .n = 0 };
     tb(&ta, "(theta_i+theta_icen) - theta_o um at step 0 / final:");
@@ -190,7 +204,7 @@ static size_t argmax_traj(const acbb_study_point *p, int what)
 
 void acbb_study_item5(const acbb_study_runs *c, acbb_study_item *it)
 {
-    if (!need(it, "5", c, LV_BASE, BLK_LOAD)) return;
+    if (!need(it, "5", c, LV_BASE, BLK_LOAD) || !need_traj(it, "5", c)) return;
     tbuf tr = { .n = 0 }, tp = { .n = 0 }, tl = { .n = 0 }, tg = { .n = 0 }, tx = { .n = 0 };
     int n_rise = 0, n_peak = 0, n_light = 0, n_large = 0, n_dx = 0;
     tb(&tr, "peak rise of Qi/Qo over step 0 (need > %.1f %%):", 100.0 * REPORT_RISE);
