@@ -30,7 +30,7 @@
 #include "cli_output.h"
 #include "cli_plot.h"
 #include "cli_accuracy.h"
-#include "cli_report.h"
+#include "../cli/report.h"
 #include "tui.h"
 
 enum { EXIT_CONVERGED = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4 };

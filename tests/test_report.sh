@@ -2,7 +2,8 @@
 # End-to-end test of `acbb report` (TAP). $1 = path of the acbb binary;
 # cwd = repository root. Needs jq. Checks the report's bookkeeping (every
 # MODEL.md section 12 item exactly once, counts that add up, JSON that
-# agrees with the table), that the sanity item 18 holds, that item 1's
+# agrees with the table), that the sanity item 18 holds, that no nan/inf
+# is printed (issue 11), that item 1's
 # numbers are the ones `acbb run` gives for the same operating points, the
 # Markdown file, and the exit status of bad input.
 set -u
@@ -82,6 +83,17 @@ for F in 200 1000; do
         t $? "item 1 P_T at 15000 rpm, $F N, $tag: report $b W = acbb run $a W"
     done
 done
+
+# ---- issue 11: no NaN/Inf reaches the report (axial load 0) ----
+"$ACBB" report "$PRESET" --set operating.axial_load_N=0 >"$TMP/zero.txt" 2>"$TMP/err"
+code $? 0 "report with axial load 0 runs"
+# (item 18's statement says "dt -> inf": words, not a number)
+! sed 's/-> inf / /g' "$TMP/zero.txt" | grep -q -i -w -E -- '-?(nan|inf)'
+t $? "axial load 0: the text report prints no nan/inf"
+"$ACBB" report "$PRESET" --set operating.axial_load_N=0 --json >"$TMP/zero.json" 2>"$TMP/err"
+jq -e '[.. | strings | gsub("-> inf "; " ") | select(test("(^|[^a-z_])-?(nan|inf)([^a-z_]|$)"))] | length == 0' \
+    "$TMP/zero.json" >/dev/null 2>&1
+t $? "axial load 0: no nan/inf in any JSON text"
 
 # ---- bad input ----
 "$ACBB" report "$PRESET" --set operating.axial_load_N=abc >/dev/null 2>"$TMP/err"

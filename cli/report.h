@@ -1,7 +1,9 @@
 /* acbb CLI — `acbb report`: the seed's qualitative acceptance statements
  * (MODEL.md section 12, items 1-18) and its conclusions (seed section 5),
  * each judged HELD / NOT HELD / NOT EVALUATED from runs of the engine.
- * Private to the executable (src/cli.c dispatches `report` here).
+ * A thin client of the engine study (include/acbb/study.h): it parses the
+ * command line, plans and runs the study and formats its results. Private
+ * to the executable (src/cli.c dispatches `report` here).
  *
  *   acbb report PRESET [--set section.key=value]... [--json] [--md FILE]
  *
@@ -9,23 +11,25 @@
  * 15000 rpm and the speed sweeps 2000..16000 rpm at 100 N and 1000 N, each
  * with (TE) and without (WTE) thermal expansion, at the preset's fidelity
  * level; the same again at quasi-dynamic for the items MODEL.md marks (L2);
- * one zero-speed run. Speed and load of the sweeps override the preset's
- * (and --set's) operating point; every other key is the preset's.
+ * one zero-speed run at the preset's load and four at the light loads
+ * (the static angles of item 6). Speed and load of the sweeps override the
+ * preset's (and --set's) operating point; every other key is the preset's.
  *
  * stdout: a table fitting 80 columns (item, verdict, statement, then every
  * check with the numbers that decide it), the seed's conclusions mapped
  * onto those checks, and "N held, M not held, K not evaluated". --json
  * prints instead a JSON array of {item, statement, verdict, level,
  * seed_conclusions, evidence: {checks, values}}. --md FILE also writes the
- * report as Markdown (FILE.tmp* then rename).
+ * report as Markdown (through acbb_out_*: nothing is replaced unless
+ * complete).
  *
  * Exit status: 0 the report ran (whatever the verdicts: NOT HELD is a
  * finding, not an error); 2 bad input (preset, --set, options, --md path);
  * 3 some run failed (the report is still printed; the items that needed it
  * are NOT EVALUATED with the run's status); 4 internal error (out of
  * memory, stdout or the Markdown file could not be written). */
-#ifndef ACBB_CLI_REPORT_H
-#define ACBB_CLI_REPORT_H
+#ifndef ACBB_CLI_REPORT_CLIENT_H
+#define ACBB_CLI_REPORT_CLIENT_H
 
 /* argv[0] is "report": call as acbb_cli_report(argc - 1, argv + 1) from
  * main's argv ("acbb", "report", PRESET, ...). Passing main's argc/argv

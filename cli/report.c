@@ -1,0 +1,374 @@
+/* acbb CLI — `acbb report`: formats the engine study's results (see
+ * cli/report.h for the command line and exit statuses). Everything judged
+ * comes from include/acbb/study.h; this file only parses arguments and
+ * prints text (80 columns), JSON or Markdown. */
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "acbb/outfile.h"
+#include "acbb/scene.h"
+#include "acbb/study.h"
+#include "report.h"
+
+enum { EXIT_OK = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4 };
+
+/* What the formatters need besides the study. */
+typedef struct {
+    const char *preset;
+    const char **sets;           /* the --set edits as typed */
+    int n_sets;
+    acbb_model_level model;      /* the preset's level */
+    const acbb_study *st;
+    const acbb_study_runs *runs;
+} report_view;
+
+static const char *const k_vmark[] = { "ok", "NO", "n/e" };
+
+/* ---- text output (80 columns) ---- */
+
+static void wrap(FILE *f, const char *head, int indent, const char *text)
+{
+    int col = fprintf(f, "%s", head);
+    const char *w = text;
+    bool first = true;
+    while (*w) {
+        while (*w == ' ') w++;
+        if (!*w) break;
+        int len = (int)strcspn(w, " ");
+        if (!first && col + 1 + len > 80) {
+            fprintf(f, "\n%*s", indent, "");
+            col = indent;
+            first = true;
+        }
+        col += fprintf(f, "%s%.*s", first ? "" : " ", len, w);
+        first = false;
+        w += len;
+    }
+    fputc('\n', f);
+}
+
+static const char *level_name(const report_view *c, int l2)
+{
+    return l2 ? "quasi-dynamic" : acbb_model_level_name(c->model);
+}
+
+/* " [checks 5a 9b]" of conclusion i. */
+static void concl_checks(char *buf, size_t cap, const acbb_study_conclusion *cc, const char *pre,
+                         const char *post)
+{
+    size_t n = (size_t)snprintf(buf, cap, "%s", pre);
+    for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc->checks[k] && n < cap; k++)
+        n += (size_t)snprintf(buf + n, cap - n, " %s", cc->checks[k]);
+    if (n < cap) snprintf(buf + n, cap - n, "%s", post);
+}
+
+static void print_items_text(FILE *f, const report_view *c)
+{
+    fprintf(f, "%-4s %-14s %s\n", "item", "verdict", "statement / checks");
+    for (size_t i = 0; i < acbb_study_n_items(c->st); i++) {
+        const acbb_study_item *it = acbb_study_item_at(c->st, i);
+        char head[64], st[600];
+        snprintf(head, sizeof head, "%3d  %-14s ", it->num, acbb_verdict_name(it->verdict));
+        snprintf(st, sizeof st, "%s%s", it->l2 ? "(L2) " : "", it->statement);
+        wrap(f, head, 20, st);
+        for (int k = 0; k < it->n_checks; k++) {
+            const acbb_study_check *ch = &it->checks[k];
+            snprintf(head, sizeof head, "%5s%-4s %-5s", "", ch->id,
+                     ch->info ? "info" : k_vmark[ch->verdict]);
+            wrap(f, head, 15, ch->text);
+        }
+    }
+}
+
+static void print_text(FILE *f, const report_view *c)
+{
+    char line[4600];
+    snprintf(line, sizeof line, "acbb report: %s - the seed's acceptance statements "
+             "(MODEL.md section 12)", c->preset);
+    wrap(f, "", 0, line);
+    snprintf(line, sizeof line, "Runs: %zu (%s; items marked (L2) at quasi-dynamic), %zu failed, "
+             "%.1f s wall. Load sweep 50-1000 N at 15000 rpm; speed sweeps 2000-16000 rpm at "
+             "100 N and 1000 N; TE and WTE; zero-speed runs. Checks: ok = held, NO = not "
+             "held, n/e = not evaluated, info = not part of the verdict.",
+             c->runs->n, acbb_model_level_name(c->model), acbb_study_n_failed(c->st),
+             1e-3 * c->runs->wall_ms);
+    wrap(f, "", 0, line);
+    fputc('\n', f);
+    print_items_text(f, c);
+    fputc('\n', f);
+    wrap(f, "", 0, "Seed conclusions (seed section 5 lists seven), each judged from the checks "
+                   "it maps onto:");
+    size_t nc;
+    const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
+    for (size_t i = 0; i < nc; i++) {
+        char head[64], txt[700], ids[64];
+        snprintf(head, sizeof head, "(%zu)  %-14s ", i + 1,
+                 acbb_verdict_name(acbb_study_conclusion_verdict(c->st, i)));
+        concl_checks(ids, sizeof ids, &cc[i], " [checks", "]");
+        snprintf(txt, sizeof txt, "%s%s", cc[i].text, ids);
+        wrap(f, head, 20, txt);
+    }
+    int nv[3];
+    acbb_study_counts(c->st, nv);
+    fprintf(f, "\n%d held, %d not held, %d not evaluated\n", nv[0], nv[1], nv[2]);
+}
+
+/* ---- JSON ---- */
+
+static void json_str(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        unsigned char ch = (unsigned char)*s;
+        if (ch == '"' || ch == '\\') fprintf(f, "\\%c", ch);
+        else if (ch < 0x20) fprintf(f, "\\u%04x", ch);
+        else fputc(ch, f);
+    }
+    fputc('"', f);
+}
+
+static void json_num(FILE *f, double v)
+{
+    if (isfinite(v)) fprintf(f, "%.10g", v);
+    else fputs("null", f);
+}
+
+static void print_json_checks(FILE *f, const acbb_study_item *it)
+{
+    for (int k = 0; k < it->n_checks; k++) {
+        fprintf(f, "%s\n     {\"id\": ", k ? "," : "");
+        json_str(f, it->checks[k].id);
+        fputs(", \"verdict\": ", f);
+        json_str(f, acbb_verdict_name(it->checks[k].verdict));
+        fprintf(f, ", \"info\": %s, \"text\": ", it->checks[k].info ? "true" : "false");
+        json_str(f, it->checks[k].text);
+        fputc('}', f);
+    }
+}
+
+static void print_json(FILE *f, const report_view *c)
+{
+    size_t n = acbb_study_n_items(c->st), nc;
+    acbb_study_conclusions(&nc);
+    fputs("[\n", f);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_study_item *it = acbb_study_item_at(c->st, i);
+        fprintf(f, "  {\"item\": %d, \"statement\": ", it->num);
+        json_str(f, it->statement);
+        fputs(", \"verdict\": ", f);
+        json_str(f, acbb_verdict_name(it->verdict));
+        fputs(", \"level\": ", f);
+        json_str(f, level_name(c, it->l2));
+        fputs(", \"seed_conclusions\": [", f);
+        bool first = true;
+        for (size_t k = 0; k < nc; k++)
+            if (acbb_study_item_in_conclusion(c->st, i, k)) {
+                fprintf(f, "%s%zu", first ? "" : ", ", k + 1);
+                first = false;
+            }
+        fputs("],\n   \"evidence\": {\"checks\": [", f);
+        print_json_checks(f, it);
+        fputs("],\n    \"values\": {", f);
+        for (int k = 0; k < it->n_values; k++) {
+            fputs(k ? ", " : "", f);
+            json_str(f, it->values[k].key);
+            fputs(": ", f);
+            json_num(f, it->values[k].v);
+        }
+        fprintf(f, "}}}%s\n", i + 1 < n ? "," : "");
+    }
+    fputs("]\n", f);
+}
+
+/* ---- Markdown ---- */
+
+static void md_text(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        if (*s == '|' || *s == '*' || *s == '_') fputc('\\', f);
+        fputc(*s, f);
+    }
+}
+
+static void print_md_head(FILE *f, const report_view *c)
+{
+    int nv[3];
+    acbb_study_counts(c->st, nv);
+    fputs("# Seed report: the acceptance statements of MODEL.md section 12\n\n", f);
+    fprintf(f, "Generated by `acbb report %s", c->preset);
+    for (int i = 0; i < c->n_sets; i++) fprintf(f, " --set %s", c->sets[i]);
+    fputs("` (the engine study, src/study*.c, formatted by cli/report.c). Physics over "
+          "wished-for results: every statement is judged from runs of the engine, HELD, NOT "
+          "HELD or NOT EVALUATED, with the numbers that decide it.\n\n", f);
+    fprintf(f, "Runs: %zu at %s (the preset's level), items marked (L2) at quasi-dynamic; %zu "
+            "failed. Load sweep 50, 100, 150, 200, 400, 600, 800, 1000 N at 15000 rpm; speed "
+            "sweeps 2000-16000 rpm (step 2000) at 100 N and 1000 N; each with (TE) and without "
+            "(WTE) thermal expansion; one zero-speed run at the preset's load and four (WTE) at "
+            "the light loads. \"Room temperature\" is step 0 of the TE run, \"final\" its "
+            "converged state; per-ball numbers are ball 0's.\n\n", c->runs->n,
+            acbb_model_level_name(c->model), acbb_study_n_failed(c->st));
+    fprintf(f, "**%d held, %d not held, %d not evaluated** (of %zu).\n\n", nv[0], nv[1], nv[2],
+            acbb_study_n_items(c->st));
+}
+
+static void print_md(FILE *f, const report_view *c)
+{
+    size_t n = acbb_study_n_items(c->st), nc;
+    const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
+    print_md_head(f, c);
+    fputs("| # | verdict | level | statement |\n|---|---|---|---|\n", f);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_study_item *it = acbb_study_item_at(c->st, i);
+        fprintf(f, "| %d | %s | %s | ", it->num, acbb_verdict_name(it->verdict),
+                level_name(c, it->l2));
+        md_text(f, it->statement);
+        fputs(" |\n", f);
+    }
+    fputs("\n## Seed conclusions (seed section 5)\n\n| # | verdict | conclusion | checks |\n"
+          "|---|---|---|---|\n", f);
+    for (size_t i = 0; i < nc; i++) {
+        char ids[64];
+        fprintf(f, "| (%zu) | %s | ", i + 1,
+                acbb_verdict_name(acbb_study_conclusion_verdict(c->st, i)));
+        md_text(f, cc[i].text);
+        concl_checks(ids, sizeof ids, &cc[i], " |", " |\n");
+        fputs(ids, f);
+    }
+    fputs("\n## Evidence\n", f);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_study_item *it = acbb_study_item_at(c->st, i);
+        fprintf(f, "\n### %d. %s (%s)\n\n", it->num, acbb_verdict_name(it->verdict),
+                level_name(c, it->l2));
+        md_text(f, it->statement);
+        fputs("\n\n", f);
+        for (int k = 0; k < it->n_checks; k++) {
+            fprintf(f, "- **%s %s**: ", it->checks[k].id,
+                    it->checks[k].info ? "info" : acbb_verdict_name(it->checks[k].verdict));
+            md_text(f, it->checks[k].text);
+            fputc('\n', f);
+        }
+    }
+    fputs("\nThresholds MODEL.md does not give are fixed in src/study_priv.h (REPORT_*) and "
+          "named in each check.\n", f);
+}
+
+/* ---- arguments and entry ---- */
+
+static const char k_usage[] =
+    "usage: acbb report PRESET [--set section.key=value]... [--json] [--md FILE]\n";
+
+typedef struct {
+    const char *preset, *md;
+    const char **sets;
+    int n_sets;
+    bool json;
+} rargs;
+
+static int usage(const char *fmt, const char *what)
+{
+    fputs("acbb: report: ", stderr);
+    fprintf(stderr, fmt, what);
+    fputc('\n', stderr);
+    fputs(k_usage, stderr);
+    return EXIT_BADINPUT;
+}
+
+/* By hand, as in src/cli.c: four options, no user text reaches a shell. */
+static int parse(rargs *a, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i], *v = NULL;
+        bool is_set = strncmp(s, "--set", 5) == 0 && (s[5] == '\0' || s[5] == '=');
+        bool is_md = strncmp(s, "--md", 4) == 0 && (s[4] == '\0' || s[4] == '=');
+        if (is_set || is_md) {
+            const char *eq = s + (is_set ? 5 : 4);
+            if (*eq == '=') v = eq + 1;
+            else if (i + 1 < argc) v = argv[++i];
+            else return usage("%s needs a value", s);
+            if (is_set) a->sets[a->n_sets++] = v;
+            else a->md = v;
+        } else if (strcmp(s, "--json") == 0) {
+            a->json = true;
+        } else if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+            fputs(k_usage, stdout);
+            return -1;
+        } else if (s[0] == '-' && s[1] != '\0') {
+            return usage("unknown option %s", s);
+        } else if (!a->preset) {
+            a->preset = s;
+        } else {
+            return usage("unexpected argument %s", s);
+        }
+    }
+    if (!a->preset) return usage("%s", "missing PRESET");
+    return 0;
+}
+
+static int load_base(const rargs *a, acbb_scene *s)
+{
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_load(a->preset, s, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: report: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return EXIT_BADINPUT;
+    }
+    st = acbb_scene_apply_edits(s, a->sets, (size_t)a->n_sets, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: report: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        return EXIT_BADINPUT;
+    }
+    return 0;
+}
+
+/* Plan, run and print; the Markdown file is opened before the runs so a
+ * bad path fails fast, and replaces FILE only when complete. */
+static int report(const rargs *a, const acbb_scene *base)
+{
+    acbb_error err = { { 0 } };
+    acbb_out *md = NULL;
+    FILE *mf = NULL;
+    if (a->md && acbb_out_open(a->md, &md, &mf, &err) != ACBB_OK) {
+        fprintf(stderr, "acbb: report: --md %s\n", err.msg);
+        return EXIT_BADINPUT;
+    }
+    acbb_study *st = NULL;
+    if (acbb_study_plan(base, &st, &err) != ACBB_OK) {
+        fputs("acbb: report: out of memory\n", stderr);
+        if (md) acbb_out_abort(md);
+        return EXIT_INTERNAL;
+    }
+    acbb_study_run(st, 0, NULL);
+    report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st) };
+    if (a->json) print_json(stdout, &v);
+    else print_text(stdout, &v);
+    int rc = acbb_study_n_failed(st) ? EXIT_SOLVER : EXIT_OK;
+    if (fflush(stdout) != 0 || ferror(stdout)) rc = EXIT_INTERNAL;
+    if (md) {
+        print_md(mf, &v);
+        if (acbb_out_commit(md, &err) != ACBB_OK) {
+            fprintf(stderr, "acbb: report: --md %s\n", err.msg);
+            rc = EXIT_INTERNAL;
+        }
+    }
+    acbb_study_free(st);
+    return rc;
+}
+
+int acbb_cli_report(int argc, char **argv)
+{
+    if (argc >= 2 && strcmp(argv[0], "report") != 0 && strcmp(argv[1], "report") == 0) {
+        argc--;
+        argv++;
+    }
+    rargs a = { 0 };
+    a.sets = calloc((size_t)(argc > 0 ? argc : 1), sizeof *a.sets);
+    if (!a.sets) return EXIT_INTERNAL;
+    acbb_scene base;
+    int rc = parse(&a, argc, argv);
+    if (rc == 0) rc = load_base(&a, &base);
+    if (rc == 0) rc = report(&a, &base);
+    free(a.sets);
+    return rc < 0 ? EXIT_OK : rc;
+}

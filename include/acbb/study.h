@@ -1,0 +1,185 @@
+/* acbb — the seed study: MODEL.md section 12 (the seed's qualitative
+ * acceptance statements, items 1-18) and the seed's conclusions (seed
+ * section 5), judged from runs of the engine.
+ *
+ * The study is data: a table of rows {item number, statement, function
+ * over the run results}. Each function turns its statement into numeric
+ * checks (a verdict and the evidence: a short sentence with the numbers
+ * that decide it, plus named values); the item's verdict combines them.
+ * The engine prints nothing: clients format the plain structs below.
+ *
+ * Run set (MODEL.md section 12 "Conditions"): load sweep 50..1000 N at
+ * 15000 rpm and speed sweeps 2000..16000 rpm at 100 N and 1000 N, each with
+ * (TE) and without (WTE) thermal expansion, at the scene's fidelity level;
+ * the same again at quasi-dynamic for the (L2) items (shared when the scene
+ * is quasi-dynamic already); one zero-speed run at the scene's load; four
+ * zero-speed WTE runs at the light loads (the static angle of item 6).
+ * Speed and load of the sweeps override the scene's; every other key is the
+ * scene's. Runs are driven by acbb_sim_drive; a run hook records what the
+ * checks need from each step's snapshot. Only the public sim API is used:
+ * recomputations of the physics (closed forms, network solves) live in
+ * tests (tests/test_study.c).
+ *
+ * Ownership: acbb_study_plan allocates a study that acbb_study_free
+ * releases; everything the accessors return is owned by the study. */
+#ifndef ACBB_STUDY_H
+#define ACBB_STUDY_H
+
+#include <stdatomic.h>
+#include <stddef.h>
+#include "acbb/scene.h"
+#include "acbb/sim.h"
+#include "acbb/status.h"
+
+typedef enum {
+    ACBB_VERDICT_HELD,
+    ACBB_VERDICT_NOT_HELD,
+    ACBB_VERDICT_NOT_EVALUATED
+} acbb_verdict;
+
+/* "HELD", "NOT HELD", "NOT EVALUATED". */
+const char *acbb_verdict_name(acbb_verdict v);
+
+/* ---- run results (what the checks read; plain data a test can build) ---- */
+
+/* What the transient items need from each step of a recorded run. */
+typedef struct {
+    double t;                    /* simulated time, s */
+    double exp_in;               /* theta_i + theta_icen, m */
+    double exp_out, exp_ball;    /* theta_o, theta_ba, m */
+    double Qi, Qo;               /* ball 0's contact loads, N */
+    double dx;                   /* delta_x, m */
+} acbb_study_step;
+
+typedef struct {
+    acbb_scene scene;            /* the scene this point ran */
+    char label[96];              /* "15000 rpm, 100 N, TE, quasi-dynamic" */
+    int record;                  /* keep the per-step trajectory */
+    int skip;                    /* the scene edit failed: nothing to run */
+    int ok;                      /* reached thermal steady state */
+    acbb_status status;
+    char message[520];
+    acbb_snapshot first, last;   /* step 0 and the final step */
+    acbb_study_step *traj;       /* owned by the study (malloc) */
+    size_t n_traj, cap_traj;
+    int oom;
+    double min_loss;             /* smallest loss term seen at any step, W */
+    double wall_ms;
+} acbb_study_point;
+
+#define ACBB_STUDY_NPTS 8        /* points per sweep */
+#define ACBB_STUDY_NLIGHT 4      /* loads[0..3] are "light", [4..7] "large" */
+enum { ACBB_STUDY_LOAD, ACBB_STUDY_S100, ACBB_STUDY_S1000, ACBB_STUDY_NSWEEPS };
+enum { ACBB_STUDY_TE = 0, ACBB_STUDY_WTE = 1 };
+enum { ACBB_STUDY_BASE = 0, ACBB_STUDY_L2 = 1 };
+
+/* The sweep abscissae: loads in N, speeds in rpm. */
+extern const double acbb_study_loads[ACBB_STUDY_NPTS];
+extern const double acbb_study_speeds[ACBB_STUDY_NPTS];
+
+/* The run set. sweep[level][sweep] points at 2 * NPTS points laid out
+ * [2k + TE/WTE]; the L2 sweeps alias the base ones when the scene is
+ * quasi-dynamic. */
+typedef struct {
+    acbb_model_level model;      /* the scene's level */
+    acbb_study_point *all;
+    size_t n;
+    acbb_study_point *sweep[2][ACBB_STUDY_NSWEEPS];
+    acbb_study_point *zero;      /* 0 rpm at the scene's load */
+    acbb_study_point *statics;   /* 0 rpm, WTE, at the NLIGHT light loads */
+    double wall_ms;
+} acbb_study_runs;
+
+/* ---- results ---- */
+
+#define ACBB_STUDY_MAX_CHECKS 8
+#define ACBB_STUDY_MAX_VALUES 200
+#define ACBB_STUDY_TEXT 1400
+
+typedef struct {
+    char id[8];                  /* "5b" */
+    acbb_verdict verdict;
+    int info;                    /* reported, not part of the item verdict */
+    char text[ACBB_STUDY_TEXT];  /* the numbers that decide it */
+} acbb_study_check;
+
+typedef struct {
+    char key[48];                /* "P_T_TE_W_50N" */
+    double v;
+} acbb_study_value;
+
+typedef struct {
+    int num;                     /* MODEL.md section 12 item number */
+    const char *statement;
+    int l2;                      /* judged at quasi-dynamic */
+    acbb_verdict verdict;
+    int n_checks;
+    acbb_study_check checks[ACBB_STUDY_MAX_CHECKS];
+    int n_values;
+    acbb_study_value values[ACBB_STUDY_MAX_VALUES];
+} acbb_study_item;
+
+/* One row of the check table. fn appends checks and values to `out`
+ * (num, statement and l2 already set); the item's verdict is then NOT HELD
+ * if a non-info check fails, HELD if all hold, else NOT EVALUATED. */
+typedef void (*acbb_study_fn)(const acbb_study_runs *runs, acbb_study_item *out);
+typedef struct {
+    int num;
+    int l2;
+    acbb_study_fn fn;
+    const char *statement;       /* MODEL.md section 12, condensed */
+} acbb_study_row;
+
+const acbb_study_row *acbb_study_table(size_t *n);
+
+/* Evaluate one row over run results (clears `out` first). Non-finite
+ * numbers never reach the evidence: a check whose deciding number is
+ * undefined (a zero denominator) is NOT EVALUATED and says so. */
+void acbb_study_eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
+                         acbb_study_item *out);
+
+/* Seed section 5's conclusions, each mapped onto checks of the table. */
+#define ACBB_STUDY_CONCL_CHECKS 3
+typedef struct {
+    const char *text;
+    const char *checks[ACBB_STUDY_CONCL_CHECKS]; /* ids, NULL-terminated if fewer */
+} acbb_study_conclusion;
+
+const acbb_study_conclusion *acbb_study_conclusions(size_t *n);
+
+/* ---- the study ---- */
+
+typedef struct acbb_study acbb_study;
+
+/* Plan the run set from `base` (copied). Nothing runs yet. Errors: ENOMEM;
+ * a scene edit that fails marks its point (skip, status, message). */
+acbb_status acbb_study_plan(const acbb_scene *base, acbb_study **out, acbb_error *err);
+
+/* Run every point with `jobs` threads (0: one per CPU, at most 16), then
+ * evaluate the table. `cancel` (may be NULL), when set, stops the runs:
+ * unfinished points end ACBB_CANCELLED and the items that need them are
+ * NOT EVALUATED. Returns ACBB_OK when every run reached steady state, else
+ * the status of the first failed run (the results are complete either
+ * way), or ACBB_CANCELLED. */
+acbb_status acbb_study_run(acbb_study *s, int jobs, const atomic_int *cancel);
+
+/* Re-evaluate the table over the current run results (after a caller
+ * changed them through acbb_study_results: tests build results this way). */
+void acbb_study_evaluate(acbb_study *s);
+
+acbb_study_runs *acbb_study_results(acbb_study *s);
+size_t acbb_study_n_failed(const acbb_study *s);
+
+size_t acbb_study_n_items(const acbb_study *s);
+const acbb_study_item *acbb_study_item_at(const acbb_study *s, size_t i);
+/* The check `id` ("5a") or NULL. */
+const acbb_study_check *acbb_study_find_check(const acbb_study *s, const char *id);
+acbb_verdict acbb_study_conclusion_verdict(const acbb_study *s, size_t i);
+/* 1 if item i has a check that conclusion k maps onto. */
+int acbb_study_item_in_conclusion(const acbb_study *s, size_t i, size_t k);
+/* counts[v] = items with verdict v. */
+void acbb_study_counts(const acbb_study *s, int counts[3]);
+
+void acbb_study_free(acbb_study *s);
+
+#endif

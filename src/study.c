@@ -1,0 +1,290 @@
+/* acbb — the seed study: planning and running its runs (see study.h).
+ *
+ * Every point is one Sim driven by acbb_sim_drive to steady state, exactly
+ * as `acbb run PRESET --set ...` drives it; the run hook copies step 0 and
+ * the last step and, for the TE load sweep, the per-step trajectory the
+ * transient items (4, 5) read. Points run on a pool of pthreads: each Sim is
+ * private to one thread and the engine keeps no global mutable state, so
+ * results do not depend on the number of threads. */
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/measure.h"
+#include "acbb/study.h"
+#include "study_priv.h"
+
+#define MAX_JOBS 16
+#define BASE_RPM 15000.0
+
+const double acbb_study_loads[ACBB_STUDY_NPTS] = { 50, 100, 150, 200, 400, 600, 800, 1000 };
+const double acbb_study_speeds[ACBB_STUDY_NPTS] = { 2000, 4000, 6000, 8000,
+                                                    10000, 12000, 14000, 16000 };
+
+struct acbb_study {
+    acbb_scene base;
+    acbb_study_runs runs;
+    size_t n_items;
+    acbb_study_item *items;
+};
+
+/* ---- one run ---- */
+
+static void record(acbb_study_point *p, const acbb_snapshot *s)
+{
+    p->min_loss = fmin(p->min_loss, acbb_study_min_loss(s));
+    if (!p->record) return;
+    if (p->n_traj == p->cap_traj) {
+        size_t cap = p->cap_traj ? 2 * p->cap_traj : 256;
+        acbb_study_step *t = realloc(p->traj, cap * sizeof *t);
+        if (!t) {
+            p->oom = 1;
+            return;
+        }
+        p->traj = t;
+        p->cap_traj = cap;
+    }
+    p->traj[p->n_traj++] = (acbb_study_step){ s->time, s->exp_inner + s->exp_inner_cen,
+                                              s->exp_outer, s->exp_ball, s->balls[0].Qi,
+                                              s->balls[0].Qo, s->delta_x };
+}
+
+static int record_hook(void *ctx, const acbb_sim *sim)
+{
+    acbb_study_point *p = ctx;
+    acbb_sim_snapshot(sim, &p->last);
+    if (p->last.iteration == 0) p->first = p->last;
+    record(p, &p->last);
+    return 0;
+}
+
+static void run_point(acbb_study_point *p, const atomic_int *cancel)
+{
+    double t0 = acbb_now_ms();
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    if (p->skip) return;
+    p->status = acbb_sim_new_ctl(&p->scene, cancel, &sim, &err);
+    if (p->status != ACBB_OK) {
+        snprintf(p->message, sizeof p->message, "%s",
+                 err.msg[0] ? err.msg : acbb_status_name(p->status));
+        p->wall_ms = acbb_now_ms() - t0;
+        return;
+    }
+    acbb_run_ctl ctl = { .hook = record_hook, .ctx = p, .cancel = cancel };
+    acbb_status st = acbb_sim_drive(sim, &ctl);
+    acbb_sim_snapshot(sim, &p->last);
+    p->ok = p->last.state == ACBB_RUN_CONVERGED && !p->oom;
+    if (p->oom) {
+        p->status = ACBB_ENOMEM;
+        snprintf(p->message, sizeof p->message, "out of memory recording the transient");
+    } else if (!p->ok) {
+        p->status = st != ACBB_OK ? st : p->last.status;
+        if (p->last.state == ACBB_RUN_RUNNING)
+            snprintf(p->message, sizeof p->message, "the engine did not end the run");
+        else
+            snprintf(p->message, sizeof p->message, "%s", p->last.message);
+    }
+    acbb_sim_free(sim);
+    p->wall_ms = acbb_now_ms() - t0;
+}
+
+typedef struct {
+    acbb_study_point *pts;
+    size_t n;
+    atomic_size_t next;
+    const atomic_int *cancel;
+} pool;
+
+static void *pool_worker(void *arg)
+{
+    pool *pl = arg;
+    for (;;) {
+        size_t i = atomic_fetch_add(&pl->next, 1);
+        if (i >= pl->n) return NULL;
+        acbb_study_point *p = &pl->pts[i];
+        if (pl->cancel && atomic_load(pl->cancel) && !p->skip) {
+            p->status = ACBB_CANCELLED;
+            snprintf(p->message, sizeof p->message, "cancelled before it started");
+            continue;
+        }
+        run_point(p, pl->cancel);
+    }
+}
+
+static size_t n_jobs(int jobs)
+{
+    long n = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > MAX_JOBS ? MAX_JOBS : (size_t)n;
+}
+
+static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int *cancel)
+{
+    pool pl = { .pts = pts, .n = n, .cancel = cancel };
+    atomic_init(&pl.next, 0);
+    pthread_t tid[MAX_JOBS];
+    size_t extra = n_jobs(jobs) - 1, started = 0;
+    for (; started < extra; started++)
+        if (pthread_create(&tid[started], NULL, pool_worker, &pl) != 0) break;
+    pool_worker(&pl); /* the calling thread works too */
+    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
+}
+
+/* ---- planning ---- */
+
+/* Edits go through acbb_scene_set with the text `--set` would use, so a
+ * study point is bit-identical to `acbb run PRESET --set ...`. */
+static acbb_status set_point(acbb_scene *s, double rpm, double load, int te, int l2,
+                             acbb_error *err)
+{
+    char v[2][32];
+    snprintf(v[0], sizeof v[0], "%g", rpm);
+    snprintf(v[1], sizeof v[1], "%g", load);
+    acbb_status st = acbb_scene_set(s, "operating.inner_speed_rpm", v[0], err);
+    if (st == ACBB_OK) st = acbb_scene_set(s, "operating.axial_load_N", v[1], err);
+    if (st == ACBB_OK)
+        st = acbb_scene_set(s, "effects.thermal_expansion", te ? "on" : "off", err);
+    if (st == ACBB_OK && l2) st = acbb_scene_set(s, "fidelity.model", "quasi-dynamic", err);
+    return st;
+}
+
+static void init_point(acbb_study_point *p, const acbb_scene *base, double rpm, double load,
+                       int te, int l2, int rec)
+{
+    acbb_error err = { { 0 } };
+    p->scene = *base;
+    p->record = rec;
+    p->min_loss = INFINITY;
+    acbb_status st = set_point(&p->scene, rpm, load, te, l2, &err);
+    snprintf(p->label, sizeof p->label, "%g rpm, %g N, %s, %s", rpm, load, te ? "TE" : "WTE",
+             acbb_model_level_name(p->scene.model));
+    if (st != ACBB_OK) {
+        p->status = st;
+        p->skip = 1;
+        snprintf(p->message, sizeof p->message, "%s", err.msg);
+    }
+}
+
+static size_t fill_level(acbb_study_point *pts, acbb_study_point *blk[ACBB_STUDY_NSWEEPS],
+                         const acbb_scene *base, int l2)
+{
+    size_t i = 0;
+    for (int b = 0; b < ACBB_STUDY_NSWEEPS; b++) {
+        blk[b] = &pts[i];
+        for (int k = 0; k < ACBB_STUDY_NPTS; k++)
+            for (int m = 0; m < 2; m++) {
+                double rpm = b == ACBB_STUDY_LOAD ? BASE_RPM : acbb_study_speeds[k];
+                double load = b == ACBB_STUDY_LOAD ? acbb_study_loads[k]
+                              : b == ACBB_STUDY_S100 ? 100.0 : 1000.0;
+                init_point(&pts[i++], base, rpm, load, m == ACBB_STUDY_TE, l2,
+                           !l2 && b == ACBB_STUDY_LOAD && m == ACBB_STUDY_TE);
+            }
+    }
+    return i;
+}
+
+static acbb_status plan_runs(acbb_study_runs *r, const acbb_scene *base)
+{
+    int l2_own = base->model != ACBB_MODEL_QUASI_DYNAMIC;
+    size_t per_level = ACBB_STUDY_NSWEEPS * 2 * ACBB_STUDY_NPTS;
+    r->model = base->model;
+    r->n = (l2_own ? 2 : 1) * per_level + 1 + ACBB_STUDY_NLIGHT;
+    r->all = calloc(r->n, sizeof *r->all);
+    if (!r->all) return ACBB_ENOMEM;
+    size_t i = 0;
+    /* The slow quasi-dynamic points first, so the pool ends evenly. */
+    if (l2_own) i += fill_level(r->all, r->sweep[ACBB_STUDY_L2], base, 1);
+    i += fill_level(r->all + i, r->sweep[ACBB_STUDY_BASE], base, 0);
+    if (!l2_own)
+        for (int b = 0; b < ACBB_STUDY_NSWEEPS; b++)
+            r->sweep[ACBB_STUDY_L2][b] = r->sweep[ACBB_STUDY_BASE][b];
+    r->zero = &r->all[i++];
+    init_point(r->zero, base, 0.0, base->axial_load, 1, 0, 0);
+    r->statics = &r->all[i];
+    for (int k = 0; k < ACBB_STUDY_NLIGHT; k++)
+        init_point(&r->statics[k], base, 0.0, acbb_study_loads[k], 0, 0, 0);
+    return ACBB_OK;
+}
+
+acbb_status acbb_study_plan(const acbb_scene *base, acbb_study **out, acbb_error *err)
+{
+    size_t n_rows;
+    acbb_study_table(&n_rows);
+    acbb_study *s = calloc(1, sizeof *s);
+    if (s) s->items = calloc(n_rows, sizeof *s->items);
+    if (!s || !s->items || plan_runs(&s->runs, base) != ACBB_OK) {
+        acbb_study_free(s);
+        if (err) snprintf(err->msg, sizeof err->msg, "study: out of memory");
+        *out = NULL;
+        return ACBB_ENOMEM;
+    }
+    s->base = *base;
+    s->n_items = n_rows;
+    acbb_study_evaluate(s);
+    *out = s;
+    return ACBB_OK;
+}
+
+acbb_status acbb_study_run(acbb_study *s, int jobs, const atomic_int *cancel)
+{
+    double t0 = acbb_now_ms();
+    run_all(s->runs.all, s->runs.n, jobs, cancel);
+    s->runs.wall_ms = acbb_now_ms() - t0;
+    acbb_study_evaluate(s);
+    if (cancel && atomic_load(cancel)) return ACBB_CANCELLED;
+    for (size_t i = 0; i < s->runs.n; i++)
+        if (!s->runs.all[i].ok) return s->runs.all[i].status != ACBB_OK ? s->runs.all[i].status
+                                                                         : ACBB_NOT_CONVERGED;
+    return ACBB_OK;
+}
+
+/* ---- results ---- */
+
+void acbb_study_evaluate(acbb_study *s)
+{
+    size_t n;
+    const acbb_study_row *rows = acbb_study_table(&n);
+    for (size_t i = 0; i < n && i < s->n_items; i++)
+        acbb_study_eval_row(&rows[i], &s->runs, &s->items[i]);
+}
+
+acbb_study_runs *acbb_study_results(acbb_study *s) { return &s->runs; }
+
+size_t acbb_study_n_failed(const acbb_study *s)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < s->runs.n; i++) n += !s->runs.all[i].ok;
+    return n;
+}
+
+size_t acbb_study_n_items(const acbb_study *s) { return s->n_items; }
+
+const acbb_study_item *acbb_study_item_at(const acbb_study *s, size_t i)
+{
+    return i < s->n_items ? &s->items[i] : NULL;
+}
+
+const acbb_study_check *acbb_study_find_check(const acbb_study *s, const char *id)
+{
+    for (size_t i = 0; i < s->n_items; i++)
+        for (int k = 0; k < s->items[i].n_checks; k++)
+            if (strcmp(s->items[i].checks[k].id, id) == 0) return &s->items[i].checks[k];
+    return NULL;
+}
+
+void acbb_study_counts(const acbb_study *s, int counts[3])
+{
+    counts[0] = counts[1] = counts[2] = 0;
+    for (size_t i = 0; i < s->n_items; i++) counts[s->items[i].verdict]++;
+}
+
+void acbb_study_free(acbb_study *s)
+{
+    if (!s) return;
+    for (size_t i = 0; s->runs.all && i < s->runs.n; i++) free(s->runs.all[i].traj);
+    free(s->runs.all);
+    free(s->items);
+    free(s);
+}

@@ -1,0 +1,151 @@
+/* acbb — the seed study's private helpers, shared by its check files
+ * (study_items_*.c): evidence buffers, series over a sweep, shape tests.
+ * Not installed; the public interface is include/acbb/study.h. */
+#ifndef ACBB_STUDY_PRIV_H
+#define ACBB_STUDY_PRIV_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "acbb/study.h"
+
+/* Thresholds MODEL.md section 12 does not give (each check names its own). */
+#define REPORT_RISE 1e-3         /* "rises above step 0": > 0.1 % */
+#define REPORT_NEAR 0.10         /* "peak near": within 10 % of the run's time */
+#define REPORT_SAME 0.02         /* "approximately equal": within 2 % */
+#define REPORT_ABOVE 0.02        /* "final > step 0": by more than 2 % */
+#define REPORT_MUCH_SMALLER 0.25 /* "much smaller": at most a quarter */
+#define REPORT_STRONG 0.10       /* "strongly reduced": by 10 % or more */
+#define REPORT_MAINLY 5.0        /* "depends mainly on speed": spread ratio */
+#define REPORT_SIGNIFICANT 0.10  /* "P_L significant": >= 10 % of P_T */
+#define REPORT_MARKED 0.05       /* "markedly": >= 5 % */
+#define REPORT_SLIGHT 0.10       /* "slightly": a change of less than 10 % */
+#define REPORT_MICRO 0.01        /* micro-sliding: < 1 % of the orbital speed */
+#define REPORT_LEVEL 0.25        /* "levels off": later change < 25 % of early */
+#define REPORT_FLAT 0.05         /* "approximately constant": spread < 5 % */
+
+#define NL ACBB_STUDY_NPTS
+#define N_LIGHT ACBB_STUDY_NLIGHT
+#define BLK_LOAD ACBB_STUDY_LOAD
+#define BLK_S100 ACBB_STUDY_S100
+#define BLK_S1000 ACBB_STUDY_S1000
+#define NBLK ACBB_STUDY_NSWEEPS
+#define TE ACBB_STUDY_TE
+#define WTE ACBB_STUDY_WTE
+#define LV_BASE ACBB_STUDY_BASE
+#define LV_L2 ACBB_STUDY_L2
+#define k_loads acbb_study_loads
+#define k_speeds acbb_study_speeds
+/* Degrees per radian, as the report always computed it (the same rounding
+ * keeps every printed number unchanged). */
+#define DEG_PER_RAD (180.0 / 3.14159265358979323846)
+
+typedef acbb_verdict verdict;
+#define V_HELD ACBB_VERDICT_HELD
+#define V_NOT_HELD ACBB_VERDICT_NOT_HELD
+#define V_NOT_EVAL ACBB_VERDICT_NOT_EVALUATED
+
+static inline verdict V(bool held) { return held ? V_HELD : V_NOT_HELD; }
+
+static inline const acbb_study_point *P(const acbb_study_runs *r, int lv, int blk, int k, int m)
+{
+    return &r->sweep[lv][blk][2 * k + m];
+}
+
+/* ---- evidence text ---- */
+
+typedef struct {
+    char s[ACBB_STUDY_TEXT];
+    size_t n;
+} tbuf;
+
+void acbb_study_tb(tbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+void acbb_study_add_val(acbb_study_item *it, const char *key, double v);
+acbb_study_check *acbb_study_add_check(acbb_study_item *it, const char *id, verdict v,
+                                       const tbuf *text);
+/* NOT EVALUATED (with the failed run's status) unless every point of the
+ * sweep reached steady state. */
+bool acbb_study_need(acbb_study_item *it, const char *id, const acbb_study_runs *r, int lv,
+                     int blk);
+#define tb acbb_study_tb
+#define add_val acbb_study_add_val
+#define add_check acbb_study_add_check
+#define need acbb_study_need
+
+/* ---- series over a sweep ---- */
+
+typedef double (*getter)(const acbb_snapshot *);
+double acbb_study_g_total(const acbb_snapshot *s);
+double acbb_study_g_T5(const acbb_snapshot *s);
+
+/* The five losses of the seed, in one place (name, getter), so a change of
+ * acbb_losses touches only this list (study_evidence.c). */
+typedef struct {
+    const char *symbol;          /* "P_L" */
+    getter get;
+} acbb_study_loss;
+enum { LOSS_SHEAR, LOSS_SLIP, LOSS_SPIN, LOSS_ROLLING, LOSS_DRAG, N_LOSSES };
+extern const acbb_study_loss acbb_study_loss_list[N_LOSSES];
+/* Smallest of the loss terms and every ball's share, W. */
+double acbb_study_min_loss(const acbb_snapshot *s);
+
+void acbb_study_series(const acbb_study_runs *r, int lv, int blk, int m, getter g, double *v);
+bool acbb_study_incr(const double *v, int a, int z);
+bool acbb_study_decr(const double *v, int a, int z);
+bool acbb_study_peak(const double *v, int a, int z);
+bool acbb_study_valley(const double *v, int a, int z);
+double acbb_study_spread(const double *v, int a, int z);
+const double *acbb_study_xs(int blk);
+const char *acbb_study_xunit(int blk);
+void acbb_study_tb_series(tbuf *t, const char *what, int blk, const double *v, int a, int z,
+                          int prec);
+void acbb_study_tb_pairs(tbuf *t, const char *what, int blk, const double *te,
+                         const double *wte, int a, int z, int prec);
+void acbb_study_val_series(acbb_study_item *it, const char *name, int blk, const double *v,
+                           int a, int z);
+/* The TE and WTE series of g over the load sweep of level lv, kept as the
+ * values "<name>_TE_<unit>_50N"...; false (a NOT EVALUATED check `id`) if a
+ * run of the sweep failed. */
+bool acbb_study_load_pair(const acbb_study_runs *r, acbb_study_item *it, const char *id, int lv,
+                          getter g, const char *name, const char *unit, double *te,
+                          double *wte);
+/* Checks `ida` (WTE > TE at every light load) and `idb` (TE > WTE at every
+ * large load) over load-sweep series, "what TE/WTE: ..." and the counts. */
+void acbb_study_light_large(acbb_study_item *it, const char *ida, const char *idb,
+                            const char *what, const double *te, const double *wte,
+                            const char *fmt_light, const char *fmt_large);
+#define load_pair acbb_study_load_pair
+#define light_large acbb_study_light_large
+#define series acbb_study_series
+#define incr acbb_study_incr
+#define decr acbb_study_decr
+#define peak_shape acbb_study_peak
+#define valley_shape acbb_study_valley
+#define spread acbb_study_spread
+#define xs acbb_study_xs
+#define xunit acbb_study_xunit
+#define tb_series acbb_study_tb_series
+#define tb_pairs acbb_study_tb_pairs
+#define val_series acbb_study_val_series
+
+/* ---- the item functions (study_items_a.c: 1-9, study_items_b.c: 10-18) ---- */
+
+void acbb_study_item1(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item2(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item3(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item4(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item5(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item6(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item7(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item8(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item9(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item10(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item11(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item12(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item13(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item14(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item15(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item16(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item17(const acbb_study_runs *r, acbb_study_item *it);
+void acbb_study_item18(const acbb_study_runs *r, acbb_study_item *it);
+
+#endif

@@ -1,0 +1,466 @@
+/* Tests of the seed study (include/acbb/study.h, MODEL.md section 12).
+ *
+ * 1. The check table against run results built by hand, where the verdict
+ *    is known by construction: held, not held, not evaluable (a failed run,
+ *    an undefined ratio).
+ * 2. The sanity statements that need the physics recomputed below the sim
+ *    API (they used to be report checks 18c and 18e): the static thrust
+ *    solution against the closed form of MODEL.md section 3, and backward
+ *    Euler with dt -> infinity against the direct steady solve.
+ * 3. The whole study: results independent of the number of threads, no
+ *    NaN/Inf in any evidence (issue 11: axial load 0), cancellation. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include "tap.h"
+#include "acbb/geometry.h"
+#include "acbb/hertz.h"
+#include "acbb/network.h"
+#include "acbb/study.h"
+#include "acbb/units.h"
+
+#define PRESET "presets/7008C.ini"
+
+static acbb_scene preset(void)
+{
+    acbb_scene s;
+    acbb_error err = { { 0 } };
+    if (acbb_scene_load(PRESET, &s, &err) != ACBB_OK) {
+        printf("Bail out! cannot load %s: %s\n", PRESET, err.msg);
+        exit(1);
+    }
+    return s;
+}
+
+/* ---- 1. the check table on constructed results ---- */
+
+static const acbb_study_row *row(int num)
+{
+    size_t n;
+    const acbb_study_row *t = acbb_study_table(&n);
+    for (size_t i = 0; i < n; i++)
+        if (t[i].num == num) return &t[i];
+    return NULL;
+}
+
+/* Every point converged with an empty state (one ball, no nodes). */
+static void reset(acbb_study_runs *r)
+{
+    for (size_t i = 0; i < r->n; i++) {
+        acbb_study_point *p = &r->all[i];
+        memset(&p->first, 0, sizeof p->first);
+        memset(&p->last, 0, sizeof p->last);
+        p->first.n_balls = p->last.n_balls = 1;
+        p->ok = 1;
+        p->status = ACBB_OK;
+        p->min_loss = 0.0;
+    }
+}
+
+static acbb_snapshot *last(acbb_study_runs *r, int lv, int blk, int k, int m)
+{
+    return &r->sweep[lv][blk][2 * k + m].last;
+}
+
+static acbb_study_item eval(int num, const acbb_study_runs *r)
+{
+    acbb_study_item it;
+    acbb_study_eval_row(row(num), r, &it);
+    return it;
+}
+
+static const acbb_study_check *check(const acbb_study_item *it, const char *id)
+{
+    for (int k = 0; k < it->n_checks; k++)
+        if (strcmp(it->checks[k].id, id) == 0) return &it->checks[k];
+    return NULL;
+}
+
+static int has_nonfinite_text(const acbb_study_item *it)
+{
+    for (int k = 0; k < it->n_checks; k++)
+        if (strstr(it->checks[k].text, "nan") || strstr(it->checks[k].text, "inf ")
+            || strstr(it->checks[k].text, "inf%") || strstr(it->checks[k].text, "infx"))
+            return 1;
+    return 0;
+}
+
+static void test_table_shape(void)
+{
+    size_t n, nc;
+    const acbb_study_row *t = acbb_study_table(&n);
+    const acbb_study_conclusion *c = acbb_study_conclusions(&nc);
+    int in_order = n == 18;
+    for (size_t i = 0; i < n; i++)
+        in_order = in_order && t[i].num == (int)i + 1 && t[i].fn && t[i].statement[0];
+    ok(in_order, "the table has MODEL.md section 12's items 1..18, each with a statement");
+    ok(nc == 7, "seven seed conclusions (seed section 5)");
+    ok(row(10)->l2 && row(12)->l2 && row(15)->l2 && row(16)->l2 && row(17)->l2 && !row(1)->l2,
+       "the (L2) items are 10, 12, 15, 16, 17");
+    (void)c;
+}
+
+/* Item 1: P_T(WTE) > P_T(TE) at light loads, < at large loads. */
+static void test_item1(acbb_study_runs *r)
+{
+    reset(r);
+    for (int k = 0; k < ACBB_STUDY_NPTS; k++) {
+        double w = 10.0 + k, light = k < ACBB_STUDY_NLIGHT;
+        last(r, 0, ACBB_STUDY_LOAD, k, ACBB_STUDY_TE)->losses.total = light ? w - 0.5 : w + 0.5;
+        last(r, 0, ACBB_STUDY_LOAD, k, ACBB_STUDY_WTE)->losses.total = w;
+    }
+    acbb_study_item it = eval(1, r);
+    ok(it.verdict == ACBB_VERDICT_HELD, "item 1 held when WTE > TE light, TE > WTE large");
+    ok(it.n_values == 16 && fabs(it.values[0].v - 9.5) < 1e-12
+           && strcmp(it.values[0].key, "P_T_TE_W_50N") == 0,
+       "item 1 keeps the 16 losses as values (P_T_TE_W_50N = 9.5)");
+    last(r, 0, ACBB_STUDY_LOAD, 7, ACBB_STUDY_TE)->losses.total = 16.0; /* 1000 N: TE < WTE */
+    it = eval(1, r);
+    const acbb_study_check *b = check(&it, "1b");
+    ok(it.verdict == ACBB_VERDICT_NOT_HELD && b && b->verdict == ACBB_VERDICT_NOT_HELD
+           && check(&it, "1a")->verdict == ACBB_VERDICT_HELD,
+       "item 1 not held when TE < WTE at 1000 N (1a held, 1b not)");
+    has_substr(b ? b->text : NULL, "at 3 of 4 large loads", "1b counts 3 of 4");
+}
+
+/* Item 7: node-5 temperature rising with F_x from 200 N. */
+static void test_item7(acbb_study_runs *r)
+{
+    reset(r);
+    for (int k = 0; k < ACBB_STUDY_NPTS; k++)
+        for (int m = 0; m < 2; m++) last(r, 0, ACBB_STUDY_LOAD, k, m)->T_outer_ring = 30.0 + k;
+    ok(eval(7, r).verdict == ACBB_VERDICT_HELD, "item 7 held for a rising T5");
+    last(r, 0, ACBB_STUDY_LOAD, 6, ACBB_STUDY_WTE)->T_outer_ring = 40.0; /* 800 N above 1000 N */
+    ok(eval(7, r).verdict == ACBB_VERDICT_NOT_HELD, "item 7 not held when WTE T5 falls at 1000 N");
+}
+
+/* Item 9: < 5 % at 2000 rpm, 100 N; > 10 % at 16000 rpm, 1000 N. */
+static void test_item9(acbb_study_runs *r)
+{
+    reset(r);
+    last(r, 0, ACBB_STUDY_S100, 0, ACBB_STUDY_TE)->losses.total = 1.01;
+    last(r, 0, ACBB_STUDY_S100, 0, ACBB_STUDY_WTE)->losses.total = 1.0;
+    last(r, 0, ACBB_STUDY_S1000, 7, ACBB_STUDY_TE)->losses.total = 60.0;
+    last(r, 0, ACBB_STUDY_S1000, 7, ACBB_STUDY_WTE)->losses.total = 50.0;
+    acbb_study_item it = eval(9, r);
+    ok(it.verdict == ACBB_VERDICT_HELD, "item 9 held: 1 %% at low speed, 20 %% at high");
+    is_close(it.values[1].v, 20.0, 1e-12, 0, "item 9 value: 20 % at 16000 rpm, 1000 N");
+    last(r, 0, ACBB_STUDY_S1000, 7, ACBB_STUDY_TE)->losses.total = 52.0;
+    it = eval(9, r);
+    ok(it.verdict == ACBB_VERDICT_NOT_HELD && check(&it, "9b")->verdict == ACBB_VERDICT_NOT_HELD,
+       "item 9 not held: 4 %% at 16000 rpm, 1000 N");
+}
+
+/* Item 14: film thickness TE vs WTE within 5 %. */
+static void test_item14(acbb_study_runs *r)
+{
+    reset(r);
+    for (size_t i = 0; i < r->n; i++) r->all[i].last.balls[0].film_i = 1e-6;
+    for (size_t i = 0; i < r->n; i++) r->all[i].last.balls[0].film_o = 2e-6;
+    ok(eval(14, r).verdict == ACBB_VERDICT_HELD, "item 14 held for equal films");
+    last(r, 0, ACBB_STUDY_S100, 3, ACBB_STUDY_TE)->balls[0].film_o = 2.2e-6;
+    acbb_study_item it = eval(14, r);
+    ok(it.verdict == ACBB_VERDICT_NOT_HELD, "item 14 not held for a 10 %% film change");
+    is_close(it.values[0].v, 10.0, 1e-9, 0, "item 14 reports the 10 % worst change");
+    has_substr(check(&it, "14a")->text, "outer contact, 8000 rpm of the 100 N speed sweep",
+               "item 14 names where the worst change is");
+}
+
+/* A failed run makes the items that need it NOT EVALUATED, naming it. */
+static void test_failed_run(acbb_study_runs *r)
+{
+    reset(r);
+    acbb_study_point *p = &r->sweep[0][ACBB_STUDY_LOAD][2 * 5 + ACBB_STUDY_WTE];
+    p->ok = 0;
+    p->status = ACBB_DIVERGED;
+    snprintf(p->message, sizeof p->message, "constructed failure");
+    acbb_study_item it = eval(1, r);
+    ok(it.verdict == ACBB_VERDICT_NOT_EVALUATED && it.n_checks == 1,
+       "item 1 not evaluated when a load-sweep run failed");
+    has_substr(it.checks[0].text, "600 N, WTE", "the check names the failed run");
+    has_substr(it.checks[0].text, "constructed failure", "and gives its message");
+    for (int m = 0; m < 2; m++) {
+        last(r, 0, ACBB_STUDY_S100, 0, m)->losses.total = 1.0;
+        last(r, 0, ACBB_STUDY_S1000, 7, m)->losses.total = 1.0;
+    }
+    ok(eval(9, r).verdict == ACBB_VERDICT_NOT_HELD, "item 9 (speed sweeps) is still judged");
+}
+
+/* Undefined numbers never reach the evidence: no loss difference at all
+ * (item 2) and no drag at all (item 3b) are not evaluable. */
+static void test_undefined(acbb_study_runs *r)
+{
+    reset(r);
+    acbb_study_item it = eval(2, r);
+    ok(it.verdict == ACBB_VERDICT_NOT_EVALUATED, "item 2 with TE == WTE: not evaluated");
+    ok(!has_nonfinite_text(&it), "item 2: no nan/inf in the evidence");
+    has_substr(it.checks[0].text, "n/a", "item 2: the undefined share reads n/a");
+    it = eval(3, r);
+    ok(check(&it, "3a")->verdict == ACBB_VERDICT_HELD
+           && check(&it, "3b")->verdict == ACBB_VERDICT_NOT_EVALUATED,
+       "item 3 with no drag: 3a held (no difference), 3b not evaluated");
+    ok(!has_nonfinite_text(&it), "item 3: no nan/inf in the evidence");
+    int clean = 1;
+    size_t n;
+    acbb_study_table(&n);
+    for (int i = 1; i <= (int)n; i++) {
+        it = eval(i, r);
+        clean = clean && !has_nonfinite_text(&it);
+        if (has_nonfinite_text(&it)) printf("#   item %d printed a non-finite number\n", i);
+    }
+    ok(clean, "all-zero results: no item prints nan or inf");
+}
+
+/* Item 18 from what the snapshots publish. */
+static void test_item18(acbb_study_runs *r)
+{
+    reset(r);
+    for (size_t i = 0; i < r->n; i++) {
+        r->all[i].last.heat_in = r->all[i].last.heat_out = 5.0;
+        r->all[i].min_loss = 0.25;
+    }
+    r->zero->last.heat_in = r->zero->last.heat_out = 0.0;
+    acbb_study_item it = eval(18, r);
+    ok(it.verdict == ACBB_VERDICT_HELD, "item 18 held: no loss at 0 rpm, balance, losses >= 0");
+    ok(check(&it, "18c")->info && check(&it, "18e")->info,
+       "18c and 18e (recomputed physics) are info rows pointing at this test");
+    r->all[3].last.heat_out = 5.0 * (1.0 + 1e-5);
+    it = eval(18, r);
+    ok(check(&it, "18b")->verdict == ACBB_VERDICT_NOT_HELD && it.verdict == ACBB_VERDICT_NOT_HELD,
+       "item 18 not held for a 1e-5 energy imbalance");
+    r->all[3].last.heat_out = 5.0;
+    r->all[7].min_loss = -1e-3;
+    it = eval(18, r);
+    ok(check(&it, "18d")->verdict == ACBB_VERDICT_NOT_HELD, "18d not held for a negative loss");
+    r->zero->last.losses.total = 1e-3;
+    it = eval(18, r);
+    ok(check(&it, "18a")->verdict == ACBB_VERDICT_NOT_HELD, "18a not held for a loss at 0 rpm");
+}
+
+static void test_constructed(void)
+{
+    acbb_scene s = preset();
+    acbb_study *st = NULL;
+    acbb_error err = { { 0 } };
+    ok(acbb_study_plan(&s, &st, &err) == ACBB_OK, "plan the study of %s", PRESET);
+    acbb_study_runs *r = acbb_study_results(st);
+    size_t want = (s.model == ACBB_MODEL_QUASI_DYNAMIC ? 1 : 2) * 48 + 1 + 4;
+    ok(r->n == want, "run set: %zu points (%zu planned)", want, r->n);
+    ok(r->zero->scene.inner_speed == 0.0 && r->statics[3].scene.axial_load == 200.0
+           && !r->statics[3].scene.thermal_expansion,
+       "zero-speed points at the preset's load and WTE at the light loads");
+    test_item1(r);
+    test_item7(r);
+    test_item9(r);
+    test_item14(r);
+    test_failed_run(r);
+    test_undefined(r);
+    test_item18(r);
+    /* Conclusion (2) maps onto 9a and 9b: evaluate the study as a whole. */
+    reset(r);
+    last(r, 0, ACBB_STUDY_S100, 0, ACBB_STUDY_TE)->losses.total = 1.0;
+    last(r, 0, ACBB_STUDY_S100, 0, ACBB_STUDY_WTE)->losses.total = 1.0;
+    last(r, 0, ACBB_STUDY_S1000, 7, ACBB_STUDY_TE)->losses.total = 2.0;
+    last(r, 0, ACBB_STUDY_S1000, 7, ACBB_STUDY_WTE)->losses.total = 1.0;
+    acbb_study_evaluate(st);
+    ok(acbb_study_conclusion_verdict(st, 1) == ACBB_VERDICT_HELD
+           && acbb_study_item_in_conclusion(st, 8, 1) && !acbb_study_item_in_conclusion(st, 0, 1),
+       "conclusion (2) follows checks 9a, 9b and maps onto item 9 only");
+    acbb_study_free(st);
+}
+
+/* ---- 2. recomputed physics (formerly report checks 18c, 18e) ---- */
+
+/* The static thrust relation of MODEL.md section 3 ("Initial guesses")
+ * solved independently of the mechanics module: bisection on alpha of
+ * Z K_n(alpha) [A0 (cos alpha0 / cos alpha - 1)]^1.5 sin alpha = F_x, with
+ * the Hertz constants at the operating angle as the engine uses them. */
+static double kn_at(const acbb_geometry *g, acbb_hertz_mode mode, double alpha)
+{
+    double Rx, Ry;
+    acbb_hertz_const hi, ho;
+    acbb_contact_radii(g->D, g->dm, alpha, g->f_i, 1, &Rx, &Ry);
+    if (acbb_hertz_const_compute(Rx, Ry, g->E_eff, mode, &hi) != ACBB_OK) return NAN;
+    acbb_contact_radii(g->D, g->dm, alpha, g->f_o, 0, &Rx, &Ry);
+    if (acbb_hertz_const_compute(Rx, Ry, g->E_eff, mode, &ho) != ACBB_OK) return NAN;
+    return pow(pow(hi.Kc, -2.0 / 3.0) + pow(ho.Kc, -2.0 / 3.0), -1.5);
+}
+
+static double thrust_of(const acbb_geometry *g, acbb_hertz_mode mode, double alpha)
+{
+    double dn = g->A0 * (cos(g->alpha0) / cos(alpha) - 1.0);
+    return g->Z * kn_at(g, mode, alpha) * pow(fmax(dn, 0.0), 1.5) * sin(alpha);
+}
+
+/* Static contact angle (rad) and ball load (N) under thrust F > 0. Returns
+ * 0 when there is none (F <= 0: no contact to solve), leaving both 0. */
+static int static_angle(const acbb_scene *s, double F, double *alpha, double *Q)
+{
+    acbb_geometry g;
+    acbb_geometry_init(s, &g);
+    double lo = g.alpha0, hi = 89.0 * ACBB_DEG;
+    *alpha = *Q = 0.0;
+    if (!(F > 0.0) || !(thrust_of(&g, s->hertz, hi) > F)) return 0;
+    for (int it = 0; it < 200 && hi - lo > 1e-15; it++) {
+        double mid = 0.5 * (lo + hi), f = thrust_of(&g, s->hertz, mid);
+        if (!isfinite(f)) return 0;
+        if (f < F) lo = mid;
+        else hi = mid;
+    }
+    *alpha = 0.5 * (lo + hi);
+    *Q = F / (g.Z * sin(*alpha));
+    return 1;
+}
+
+static acbb_status run_to_end(const acbb_scene *s, acbb_snapshot *out)
+{
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_sim_new(s, &sim, &err);
+    if (st != ACBB_OK) return st;
+    st = acbb_sim_drive(sim, &(acbb_run_ctl){ 0 });
+    acbb_sim_snapshot(sim, out);
+    acbb_sim_free(sim);
+    return st == ACBB_OK && out->state != ACBB_RUN_CONVERGED ? ACBB_NOT_CONVERGED : st;
+}
+
+static void test_closed_form(void)
+{
+    static acbb_snapshot snap;
+    static const double loads[] = { 50.0, 200.0, 1000.0 };
+    acbb_scene s = preset();
+    s.inner_speed = 0.0;
+    for (size_t i = 0; i < sizeof loads / sizeof loads[0]; i++) {
+        s.axial_load = loads[i];
+        double a, Q;
+        int have = static_angle(&s, loads[i], &a, &Q);
+        acbb_status st = run_to_end(&s, &snap);
+        ok(have && st == ACBB_OK, "0 rpm, %g N: closed form and engine both solve", loads[i]);
+        char name[96];
+        snprintf(name, sizeof name, "0 rpm, %g N: engine alpha_i = closed form to 1e-4", loads[i]);
+        is_close(snap.balls[0].alpha_i, a, 1e-4, 0, name);
+        snprintf(name, sizeof name, "0 rpm, %g N: engine Q_i = closed form to 1e-4", loads[i]);
+        is_close(snap.balls[0].Qi, Q, 1e-4, 0, name);
+    }
+    /* Issue 11: no thrust, no closed-form angle, and nothing left unset. */
+    double a = -1.0, Q = -1.0;
+    ok(!static_angle(&s, 0.0, &a, &Q) && a == 0.0 && Q == 0.0,
+       "F_x = 0: the closed form reports no solution and sets both outputs");
+}
+
+/* BE with a huge step against the direct steady solve on the network of a
+ * converged run, with its final contact sizes, speeds and heat sources. */
+static void test_be_vs_steady(void)
+{
+    static acbb_snapshot f;
+    acbb_scene s = preset();
+    s.inner_speed = 15000.0 * ACBB_RPM;
+    s.axial_load = 1000.0;
+    s.thermal_expansion = 1;
+    ok(run_to_end(&s, &f) == ACBB_OK, "15000 rpm, 1000 N, TE converges");
+    acbb_network nw;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_network_build(&s, &nw, &err);
+    ok(st == ACBB_OK, "network builds");
+    if (st != ACBB_OK) return;
+    acbb_net_inputs in = { .a_i = f.balls[0].a_i, .b_i = f.balls[0].b_i,
+                           .a_o = f.balls[0].a_o, .b_o = f.balls[0].b_o,
+                           .omega_i = s.inner_speed, .omega_m = f.balls[0].omega_m,
+                           .T_cavity_C = f.T_cavity };
+    acbb_heat_sources h = { f.losses.inner, f.losses.outer, f.losses.P[ACBB_LOSS_SPIN],
+                            f.losses.P[ACBB_LOSS_DRAG], f.losses.P[ACBB_LOSS_CAGE] };
+    double q[ACBB_MAX_NODES], Tbe[ACBB_MAX_NODES], Tss[ACBB_MAX_NODES];
+    st = acbb_network_update(&nw, &s, &in);
+    if (st == ACBB_OK) {
+        acbb_network_heat(&nw, &s, &h, q);
+        for (int i = 0; i < nw.n; i++) Tbe[i] = s.ambient_C;
+        st = acbb_tnet_step(nw.net, q, 1e12, Tbe);
+    }
+    if (st == ACBB_OK) st = acbb_tnet_steady(nw.net, q, Tss);
+    ok(st == ACBB_OK && nw.n == f.n_nodes, "BE step and steady solve succeed on %d nodes", nw.n);
+    double diff = 0.0, rise = 0.0, vs_run = 0.0;
+    for (int i = 0; st == ACBB_OK && i < nw.n && i < f.n_nodes; i++) {
+        diff = fmax(diff, fabs(Tbe[i] - Tss[i]));
+        rise = fmax(rise, Tss[i] - s.ambient_C);
+        vs_run = fmax(vs_run, fabs(Tss[i] - f.T[i]));
+    }
+    ok(rise > 1.0, "the run heats the bearing (%.3g K rise)", rise);
+    ok(diff <= 1e-6 * rise, "BE with dt = 1e12 s equals the steady solve (%.3g K)", diff);
+    ok(vs_run <= 1e-6 * rise, "the run's final temperatures are that steady solution (%.3g K)",
+       vs_run);
+    acbb_network_free(&nw);
+}
+
+/* ---- 3. the whole study ---- */
+
+static int same_items(const acbb_study *a, const acbb_study *b)
+{
+    if (acbb_study_n_items(a) != acbb_study_n_items(b)) return 0;
+    for (size_t i = 0; i < acbb_study_n_items(a); i++) {
+        const acbb_study_item *x = acbb_study_item_at(a, i), *y = acbb_study_item_at(b, i);
+        if (x->verdict != y->verdict || x->n_checks != y->n_checks || x->n_values != y->n_values)
+            return 0;
+        for (int k = 0; k < x->n_checks; k++)
+            if (strcmp(x->checks[k].text, y->checks[k].text) != 0) return 0;
+        for (int k = 0; k < x->n_values; k++)
+            if (memcmp(&x->values[k].v, &y->values[k].v, sizeof(double)) != 0) return 0;
+    }
+    return 1;
+}
+
+static acbb_study *run_study(const acbb_scene *s, int jobs, const atomic_int *cancel,
+                             acbb_status *st)
+{
+    acbb_study *study = NULL;
+    acbb_error err = { { 0 } };
+    *st = acbb_study_plan(s, &study, &err);
+    if (*st == ACBB_OK) *st = acbb_study_run(study, jobs, cancel);
+    return study;
+}
+
+static void test_whole(void)
+{
+    acbb_scene s = preset();
+    acbb_status s1, s2, s0;
+    acbb_study *a = run_study(&s, 1, NULL, &s1), *b = run_study(&s, 2, NULL, &s2);
+    ok(a && b && s1 == ACBB_OK && s2 == ACBB_OK, "the study of %s runs (1 and 2 threads)", PRESET);
+    ok(a && b && same_items(a, b), "1 and 2 threads give identical results");
+    const acbb_study_item *it18 = a ? acbb_study_item_at(a, 17) : NULL;
+    ok(it18 && it18->verdict == ACBB_VERDICT_HELD, "item 18 (sanity) holds on %s", PRESET);
+    acbb_study_free(a);
+    acbb_study_free(b);
+
+    /* Issue 11: axial load 0 printed nan (an unset closed-form load). */
+    s.axial_load = 0.0;
+    acbb_study *z = run_study(&s, 0, NULL, &s0);
+    int clean = z != NULL, finite = z != NULL;
+    for (size_t i = 0; z && i < acbb_study_n_items(z); i++) {
+        const acbb_study_item *it = acbb_study_item_at(z, i);
+        clean = clean && !has_nonfinite_text(it);
+        for (int k = 0; k < it->n_values; k++) finite = finite && isfinite(it->values[k].v);
+    }
+    ok(clean, "axial load 0: no nan/inf in any evidence");
+    ok(finite, "axial load 0: every value finite");
+    acbb_study_free(z);
+
+    atomic_int cancel;
+    atomic_init(&cancel, 1);
+    acbb_study *c = run_study(&s, 2, &cancel, &s0);
+    int counts[3] = { 0 };
+    if (c) acbb_study_counts(c, counts);
+    ok(c && s0 == ACBB_CANCELLED && counts[ACBB_VERDICT_NOT_EVALUATED] == 18,
+       "cancelled before any run: ACBB_CANCELLED, all 18 items not evaluated");
+    acbb_study_free(c);
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    test_table_shape();
+    test_constructed();
+    test_closed_form();
+    test_be_vs_steady();
+    test_whole();
+    return done_testing();
+}
