@@ -27,10 +27,10 @@
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/history.h"
-#include "cli_output.h"
-#include "cli_plot.h"
-#include "cli_accuracy.h"
-#include "cli_report.h"
+#include "output.h"
+#include "plot.h"
+#include "accuracy.h"
+#include "../src/cli_report.h"
 #include "tui.h"
 
 enum { EXIT_CONVERGED = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4 };

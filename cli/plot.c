@@ -15,7 +15,7 @@
 #include "acbb/plot.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
-#include "cli_plot.h"
+#include "plot.h"
 
 enum { PLOT_EXIT_OK = 0, PLOT_EXIT_INPUT = 2, PLOT_EXIT_SOLVER = 3, PLOT_EXIT_PLOT = 4 };
 

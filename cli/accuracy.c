@@ -15,8 +15,8 @@
 #include "acbb/accuracy.h"
 #include "acbb/plot.h"
 #include "acbb/scene.h"
-#include "cli_accuracy.h"
-#include "cli_output.h"
+#include "accuracy.h"
+#include "output.h"
 
 enum { ACC_EXIT_OK = 0, ACC_EXIT_INPUT = 2, ACC_EXIT_SOLVER = 3, ACC_EXIT_INTERNAL = 4 };
 

@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "cli_output.h"
+#include "output.h"
 
 #define CLI_DEG (180.0 / 3.14159265358979323846)   /* rad -> deg */
 #define CLI_RPM (60.0 / (2.0 * 3.14159265358979323846)) /* rad/s -> rpm */
