@@ -1,4 +1,4 @@
-/* acbb CLI — `acbb bench accuracy` (see cli_accuracy.h).
+/* acbb CLI — `acbb bench accuracy` (see accuracy.h).
  *
  * A thin client of include/acbb/accuracy.h: load the preset, apply --set
  * edits, run the plan, print the table and the frontier, write CSV and the

@@ -124,7 +124,7 @@ static void csv_row_cb(void *ctx, const acbb_snapshot *snap)
     acbb_cli_csv_row(ctx, snap);
 }
 
-/* `run --csv` rows and the `--plot` history (cli_plot.h) from one callback. */
+/* `run --csv` rows and the `--plot` history (plot.h) from one callback. */
 typedef struct {
     acbb_cli_out *csv;
     acbb_history *hist;

@@ -1,4 +1,4 @@
-/* acbb CLI — output writers (see cli_output.h).
+/* acbb CLI — output writers (see output.h).
  *
  * The JSON writer is a few lines by hand rather than a library: the output
  * is write-only, flat and small, and a dependency (cJSON, jansson) would

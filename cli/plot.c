@@ -1,4 +1,4 @@
-/* acbb CLI — `acbb plot` and the `--plot FILE` writer (see cli_plot.h).
+/* acbb CLI — `acbb plot` and the `--plot FILE` writer (see plot.h).
  *
  * A thin client of the engine API: load the preset, apply --set edits,
  * step the Sim to the end of its run while every published snapshot goes
