@@ -25,7 +25,7 @@ install_deps() {
 }
 
 build() {
-    [ -f build/build.ninja ] || meson setup build >/dev/null
+    [ -f build/build.ninja ] || meson setup build -Dwerror=true >/dev/null
     meson compile -C build >/dev/null
 }
 

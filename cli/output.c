@@ -1,20 +1,16 @@
-/* acbb CLI — output writers (see cli_output.h).
+/* acbb CLI — output writers (see output.h).
  *
  * The JSON writer is a few lines by hand rather than a library: the output
  * is write-only, flat and small, and a dependency (cJSON, jansson) would
  * buy nothing but a build requirement. Numbers use %.10g in JSON and CSV so
  * values round-trip to ~1e-10 relative; the summary table uses fixed widths
  * that keep every line within 80 columns. */
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#include "cli_output.h"
+#include "acbb/units.h"
+#include "output.h"
 
-#define CLI_DEG (180.0 / 3.14159265358979323846)   /* rad -> deg */
-#define CLI_RPM (60.0 / (2.0 * 3.14159265358979323846)) /* rad/s -> rpm */
 #define CLI_UM 1e6                                   /* m -> um */
 
 void acbb_cli_out_init(acbb_cli_out *o, FILE *f)
@@ -176,7 +172,7 @@ static void summary_header(acbb_cli_out *o, const char *preset,
     FILE *f = o->f;
     fprintf(f, "acbb run %s\n", preset);
     fprintf(f, "%-13s%.0f rpm, Fx %g N, Fr %g N, thermal expansion %s, %s\n",
-            "scene", sc->inner_speed * CLI_RPM, sc->axial_load, sc->radial_load,
+            "scene", acbb_rads_to_rpm(sc->inner_speed), sc->axial_load, sc->radial_load,
             onoff(sc->thermal_expansion), acbb_model_level_name(sc->model));
     fprintf(f, "%-13s%s", "status", acbb_run_status_name(s));
     if (s->message[0]) fprintf(f, ": %.60s", s->message);
@@ -257,17 +253,17 @@ static void ball_rows(acbb_cli_out *o, const char *label, const acbb_ball_view *
                       bool show_psi)
 {
     fprintf(o->f, "%-13s", label);
-    if (show_psi) cell(o, 8, 2, 'f', b->psi * CLI_DEG);
+    if (show_psi) cell(o, 8, 2, 'f', acbb_rad_to_deg(b->psi));
     else fprintf(o->f, "%8s", "-");
     fprintf(o->f, "  %-5s", "inner");
     cell(o, 9, 2, 'f', b->Qi);
-    cell(o, 11, 3, 'f', b->alpha_i * CLI_DEG);
+    cell(o, 11, 3, 'f', acbb_rad_to_deg(b->alpha_i));
     cell(o, 11, 4, 'g', b->slide_i);
     cell(o, 11, 4, 'g', b->spin_i);
     cell(o, 9, 4, 'f', b->film_i * CLI_UM);
     fprintf(o->f, "\n%13s%8s  %-5s", "", "", "outer");
     cell(o, 9, 2, 'f', b->Qo);
-    cell(o, 11, 3, 'f', b->alpha_o * CLI_DEG);
+    cell(o, 11, 3, 'f', acbb_rad_to_deg(b->alpha_o));
     cell(o, 11, 4, 'g', b->slide_o);
     cell(o, 11, 4, 'g', b->spin_o);
     cell(o, 9, 4, 'f', b->film_o * CLI_UM);
@@ -306,7 +302,7 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
 static void json_scene(acbb_cli_out *o, const acbb_scene *sc)
 {
     j_open(o, "scene", '{', false);
-    j_num(o, "inner_speed_rpm", sc->inner_speed * CLI_RPM);
+    j_num(o, "inner_speed_rpm", acbb_rads_to_rpm(sc->inner_speed));
     j_num(o, "axial_load_N", sc->axial_load);
     j_num(o, "radial_load_N", sc->radial_load);
     j_bool(o, "thermal_expansion", sc->thermal_expansion);
@@ -317,11 +313,11 @@ static void json_scene(acbb_cli_out *o, const acbb_scene *sc)
 static void json_ball(acbb_cli_out *o, const acbb_ball_view *b)
 {
     j_open(o, NULL, '{', true);
-    j_num(o, "psi_deg", b->psi * CLI_DEG);
+    j_num(o, "psi_deg", acbb_rad_to_deg(b->psi));
     j_num(o, "Qi_N", b->Qi);
     j_num(o, "Qo_N", b->Qo);
-    j_num(o, "alpha_i_deg", b->alpha_i * CLI_DEG);
-    j_num(o, "alpha_o_deg", b->alpha_o * CLI_DEG);
+    j_num(o, "alpha_i_deg", acbb_rad_to_deg(b->alpha_i));
+    j_num(o, "alpha_o_deg", acbb_rad_to_deg(b->alpha_o));
     j_num(o, "slide_i_mps", b->slide_i);
     j_num(o, "slide_o_mps", b->slide_o);
     j_num(o, "spin_i_radps", b->spin_i);
@@ -414,8 +410,8 @@ void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
     c_num(o, s->losses.total, false);
     c_num(o, b ? b->Qi : NAN, false);
     c_num(o, b ? b->Qo : NAN, false);
-    c_num(o, b ? b->alpha_i * CLI_DEG : NAN, false);
-    c_num(o, b ? b->alpha_o * CLI_DEG : NAN, false);
+    c_num(o, b ? acbb_rad_to_deg(b->alpha_i) : NAN, false);
+    c_num(o, b ? acbb_rad_to_deg(b->alpha_o) : NAN, false);
     c_num(o, s->exp_ball * CLI_UM, false);
     c_num(o, (s->exp_inner + s->exp_inner_cen) * CLI_UM, false);
     c_num(o, s->exp_outer * CLI_UM, false);
@@ -451,8 +447,8 @@ static void sweep_values(const acbb_cli_point *p, double v[SW_N])
     v[SW_TOTAL] = s->losses.total;
     v[SW_QI] = has_ball ? b->Qi : NAN;
     v[SW_QO] = has_ball ? b->Qo : NAN;
-    v[SW_AI] = has_ball ? b->alpha_i * CLI_DEG : NAN;
-    v[SW_AO] = has_ball ? b->alpha_o * CLI_DEG : NAN;
+    v[SW_AI] = has_ball ? acbb_rad_to_deg(b->alpha_i) : NAN;
+    v[SW_AO] = has_ball ? acbb_rad_to_deg(b->alpha_o) : NAN;
 }
 
 static void sweep_failures(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
@@ -664,7 +660,7 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
         const acbb_cli_study_block *b = &blocks[i];
         for (size_t k = b->first; k < b->first + b->count; k++) {
             const acbb_cli_point *te = &pts[2 * k], *wte = &pts[2 * k + 1];
-            fprintf(o->f, "%s,%.10g,%.10g", b->name, te->scene.inner_speed * CLI_RPM,
+            fprintf(o->f, "%s,%.10g,%.10g", b->name, acbb_rads_to_rpm(te->scene.inner_speed),
                     te->scene.axial_load);
             study_csv_point(o, te);
             study_csv_point(o, wte);
@@ -675,45 +671,4 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
                 fputc('\n', o->f);
         }
     }
-}
-
-FILE *acbb_cli_tmp_open(const char *path, char **tmp)
-{
-    size_t len = strlen(path) + sizeof ".tmp.XXXXXX";
-    *tmp = malloc(len);
-    if (!*tmp) return NULL;
-    snprintf(*tmp, len, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(*tmp);
-    FILE *f = fd >= 0 && fchmod(fd, 0644) == 0 ? fdopen(fd, "w") : NULL;
-    if (!f) {
-        fprintf(stderr, "acbb: cannot create a temporary file next to %s: %s\n", path,
-                strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-            unlink(*tmp);
-        }
-        free(*tmp);
-        *tmp = NULL;
-    }
-    return f;
-}
-
-int acbb_cli_tmp_commit(FILE *f, char *tmp, const char *path)
-{
-    int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
-    int err = bad ? (errno ? errno : EIO) : 0;
-    if (fclose(f) != 0 && !bad) {
-        bad = 1;
-        err = errno;
-    }
-    if (!bad && rename(tmp, path) != 0) {
-        bad = 1;
-        err = errno;
-    }
-    if (bad) {
-        fprintf(stderr, "acbb: cannot write %s: %s\n", path, strerror(err));
-        unlink(tmp);
-    }
-    free(tmp);
-    return bad ? -1 : 0;
 }

@@ -1,11 +1,10 @@
-/* acbb CLI — `acbb plot` and the `--plot FILE` writer (see cli_plot.h).
+/* acbb CLI — `acbb plot` and the `--plot FILE` writer (see plot.h).
  *
  * A thin client of the engine API: load the preset, apply --set edits,
  * step the Sim to the end of its run while every published snapshot goes
  * into an acbb_history, then hand history and final snapshot to the plot
- * module. Arguments are parsed by hand, like src/cli.c: four options do
- * not need getopt_long, and no user text reaches a shell (plot.c spawns
- * gnuplot directly). */
+ * module. Arguments come parsed from the command table (args.h); no user
+ * text reaches a shell (the engine's plot module spawns gnuplot directly). */
 #include <errno.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -15,9 +14,10 @@
 #include "acbb/plot.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
-#include "cli_plot.h"
-
-enum { PLOT_EXIT_OK = 0, PLOT_EXIT_INPUT = 2, PLOT_EXIT_SOLVER = 3, PLOT_EXIT_PLOT = 4 };
+#include "commands.h"
+#include "common.h"
+#include "exit.h"
+#include "plot.h"
 
 #define PLOT_FILE_W 1000
 #define PLOT_FILE_H 600
@@ -25,72 +25,18 @@ enum { PLOT_EXIT_OK = 0, PLOT_EXIT_INPUT = 2, PLOT_EXIT_SOLVER = 3, PLOT_EXIT_PL
 #define PLOT_DUMB_H 25
 #define PLOT_N_KINDS 5
 
-static const char plot_usage[] =
-    "usage: acbb plot PRESET [--set section.key=value]...\n"
-    "         [--kind temperature|losses|loads|angles|history-loads|all]\n"
-    "         [--out FILE.png|FILE.svg | --dumb] [--size WxH]\n";
-
+/* The options of one `acbb plot`, as typed (NULL when absent). */
 typedef struct {
-    const char *preset;
-    const char **sets;
-    size_t n_sets;
-    const char *kind;   /* as typed; NULL = temperature */
+    const char *kind;   /* NULL = temperature */
     const char *out;    /* NULL = dumb */
     bool dumb;
-    const char *size;   /* "WxH" as typed, or NULL */
+    const char *size;   /* "WxH", or NULL */
 } plot_args;
 
 static int bad_usage(const char *what, const char *arg)
 {
-    fprintf(stderr, "acbb: plot: %s%s\n%s", what, arg ? arg : "", plot_usage);
-    return PLOT_EXIT_INPUT;
-}
-
-/* `--name value` or `--name=value`; NULL if absent (message printed). */
-static const char *option_value(const char *arg, size_t name_len, int argc, char **argv, int *i)
-{
-    if (arg[name_len] == '=') return arg + name_len + 1;
-    if (*i + 1 < argc) return argv[++*i];
-    fprintf(stderr, "acbb: plot: option %.*s needs a value\n", (int)name_len, arg);
-    return NULL;
-}
-
-static int parse_plot_args(plot_args *a, int argc, char **argv)
-{
-    static const char *const with_value[] = { "--set", "--kind", "--out", "--size" };
-    bool options_done = false;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (options_done || arg[0] != '-' || arg[1] == '\0') {
-            if (a->preset) return bad_usage("unexpected argument ", arg);
-            a->preset = arg;
-            continue;
-        }
-        if (strcmp(arg, "--") == 0) {
-            options_done = true;
-            continue;
-        }
-        if (strcmp(arg, "--dumb") == 0) {
-            a->dumb = true;
-            continue;
-        }
-        size_t k = 0, n = sizeof with_value / sizeof with_value[0];
-        for (; k < n; k++) {
-            size_t len = strlen(with_value[k]);
-            if (strncmp(arg, with_value[k], len) == 0 && (arg[len] == '\0' || arg[len] == '='))
-                break;
-        }
-        if (k == n) return bad_usage("unknown option ", arg);
-        const char *val = option_value(arg, strlen(with_value[k]), argc, argv, &i);
-        if (!val) return PLOT_EXIT_INPUT;
-        if (k == 0) a->sets[a->n_sets++] = val;
-        else if (k == 1) a->kind = val;
-        else if (k == 2) a->out = val;
-        else a->size = val;
-    }
-    if (!a->preset) return bad_usage("missing PRESET", NULL);
-    if (a->out && a->dumb) return bad_usage("--out and --dumb exclude each other", NULL);
-    return 0;
+    fprintf(stderr, "acbb: plot: %s%s\ntry `acbb help plot`\n", what, arg ? arg : "");
+    return ACBB_EXIT_INPUT;
 }
 
 /* "WxH" with both sides whole numbers; the plot module checks the range. */
@@ -108,35 +54,10 @@ static int parse_size(const char *text, int *w, int *h)
     return 0;
 bad:
     fprintf(stderr, "acbb: plot: --size %s: expected WxH, e.g. 1000x600\n", text);
-    return PLOT_EXIT_INPUT;
+    return ACBB_EXIT_INPUT;
 }
 
-/* ---- scene and run ---- */
-
-static int input_exit(acbb_status st)
-{
-    switch (st) {
-    case ACBB_EINVAL: case ACBB_EIO: case ACBB_ILL_POSED: return PLOT_EXIT_INPUT;
-    case ACBB_ENOMEM: return PLOT_EXIT_PLOT;
-    default: return PLOT_EXIT_SOLVER;
-    }
-}
-
-static int load_plot_scene(const plot_args *a, acbb_scene *sc)
-{
-    acbb_error err = { { 0 } };
-    acbb_status st = acbb_scene_load(a->preset, sc, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
-        return input_exit(st);
-    }
-    st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
-        return PLOT_EXIT_INPUT;
-    }
-    return 0;
-}
+/* ---- run ---- */
 
 static int record_hook(void *ctx, const acbb_sim *sim)
 {
@@ -155,8 +76,8 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
     acbb_error err = { { 0 } };
     acbb_status st = acbb_sim_new(sc, &sim, &err);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
-        return input_exit(st);
+        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        return acbb_cli_exit_for(st);
     }
     acbb_history_init(h);
     acbb_run_ctl ctl = { .hook = record_hook, .ctx = h };
@@ -166,7 +87,7 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s (plotting the last good state)\n",
                 acbb_run_status_name(snap), snap->message);
-        return PLOT_EXIT_SOLVER;
+        return ACBB_EXIT_SOLVER;
     }
     return 0;
 }
@@ -177,7 +98,7 @@ static int plot_failed(const acbb_error *err, acbb_status st)
 {
     fprintf(stderr, "acbb: %s — plot not written\n",
             err->msg[0] ? err->msg : acbb_status_name(st));
-    return st == ACBB_EINVAL ? PLOT_EXIT_INPUT : PLOT_EXIT_PLOT;
+    return st == ACBB_EINVAL ? ACBB_EXIT_INPUT : ACBB_EXIT_INTERNAL;
 }
 
 /* `path` with "-<kind>" inserted before its extension (dir/x.png ->
@@ -204,7 +125,7 @@ static int write_files(const char *path, int own, int first, int last, int w, in
         char *target = k == own ? NULL : sibling_path(path, (acbb_plot_kind)k);
         if (k != own && !target) {
             fprintf(stderr, "acbb: out of memory — plot not written\n");
-            return PLOT_EXIT_PLOT;
+            return ACBB_EXIT_INTERNAL;
         }
         acbb_error err = { { 0 } };
         acbb_status st = acbb_plot_file((acbb_plot_kind)k, fmt, target ? target : path, w, h, d,
@@ -221,7 +142,7 @@ static int write_dumb(int first, int last, int cols, int rows, const acbb_plot_d
      * covers newlines and trailing blanks. */
     size_t cap = (size_t)(cols + 2) * (size_t)(rows + 2) + 1024;
     char *text = malloc(cap);
-    if (!text) return PLOT_EXIT_PLOT;
+    if (!text) return ACBB_EXIT_INTERNAL;
     int rc = 0;
     for (int k = first; k <= last && !rc; k++) {
         acbb_error err = { { 0 } };
@@ -238,7 +159,7 @@ static int write_dumb(int first, int last, int cols, int rows, const acbb_plot_d
     free(text);
     if (!rc && (fflush(stdout) != 0 || ferror(stdout))) {
         fprintf(stderr, "acbb: cannot write to stdout\n");
-        rc = PLOT_EXIT_PLOT;
+        rc = ACBB_EXIT_INTERNAL;
     }
     return rc;
 }
@@ -248,7 +169,7 @@ int acbb_cli_plot_check_path(const char *path)
     int fmt = acbb_plot_format_from_name(path);
     if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG) {
         fprintf(stderr, "acbb: --plot %s: expected a .png or .svg file name\n", path);
-        return PLOT_EXIT_INPUT;
+        return ACBB_EXIT_INPUT;
     }
     return 0;
 }
@@ -289,40 +210,39 @@ static int check_plot_args(const plot_args *a, int *first, int *last, int *w, in
     *w = a->out ? PLOT_FILE_W : PLOT_DUMB_W;
     *h = a->out ? PLOT_FILE_H : PLOT_DUMB_H;
     if (!a->size) return 0;
-    if (parse_size(a->size, w, h)) return PLOT_EXIT_INPUT;
+    if (parse_size(a->size, w, h)) return ACBB_EXIT_INPUT;
     acbb_error err = { { 0 } };
     int fmt = a->out ? acbb_plot_format_from_name(a->out) : ACBB_PLOT_DUMB;
     if (acbb_plot_check_size((acbb_plot_format)fmt, *w, *h, &err) != ACBB_OK) {
         fprintf(stderr, "acbb: plot: --size: %s\n", err.msg);
-        return PLOT_EXIT_INPUT;
+        return ACBB_EXIT_INPUT;
     }
     return 0;
 }
 
-int acbb_cli_plot(int argc, char **argv)
+int acbb_cli_plot(const acbb_cli_args *args)
 {
-    const char **sets = calloc((size_t)(argc > 0 ? argc : 1), sizeof *sets);
-    if (!sets) return PLOT_EXIT_PLOT;
-    plot_args a = { .sets = sets };
+    plot_args a = { args->val[CLI_OPT_KIND], args->val[CLI_OPT_OUT],
+                    args->val[CLI_OPT_DUMB] != NULL, args->val[CLI_OPT_SIZE] };
     int first = 0, last = PLOT_N_KINDS - 1, w = 0, h = 0;
-    int rc = parse_plot_args(&a, argc, argv);
+    int rc = a.out && a.dumb ? bad_usage("--out and --dumb exclude each other", NULL) : 0;
     if (!rc) rc = check_plot_args(&a, &first, &last, &w, &h);
     acbb_scene *sc = rc ? NULL : malloc(sizeof *sc);
     acbb_history *hist = rc ? NULL : malloc(sizeof *hist);
     acbb_snapshot *snap = rc ? NULL : malloc(sizeof *snap);
-    if (!rc && (!sc || !hist || !snap)) rc = PLOT_EXIT_PLOT;
-    if (!rc) rc = load_plot_scene(&a, sc);
+    if (!rc && (!sc || !hist || !snap)) rc = ACBB_EXIT_INTERNAL;
+    if (!rc) rc = acbb_cli_load_scene(args, sc);
     if (!rc) {
         int run_rc = run_recording(sc, hist, snap);
         /* A run that stopped early still has a last good state to show. */
-        if (run_rc == 0 || run_rc == PLOT_EXIT_SOLVER) {
+        if (run_rc == 0 || run_rc == ACBB_EXIT_SOLVER) {
             char title[128];
-            preset_title(a.preset, title, sizeof title);
+            preset_title(args->preset, title, sizeof title);
             acbb_plot_data d = { hist, snap, title };
             int prc = a.out ? write_files(a.out, first == last ? first : -1, first, last, w, h,
                                           &d)
                             : write_dumb(first, last, w, h, &d);
-            rc = prc > run_rc ? prc : run_rc;
+            rc = acbb_cli_worst(prc, run_rc);
         } else {
             rc = run_rc;
         }
@@ -330,6 +250,5 @@ int acbb_cli_plot(int argc, char **argv)
     free(sc);
     free(hist);
     free(snap);
-    free(sets);
     return rc;
 }

@@ -1,6 +1,6 @@
 /* acbb CLI — `acbb bench accuracy`: what accuracy costs in time, on top of
  * the engine's accuracy module (include/acbb/accuracy.h). Private to the
- * executable (src/cli.c dispatches `bench accuracy` here).
+ * executable (main.c's command table routes `bench accuracy` here).
  *
  *   acbb bench accuracy PRESET [--set section.key=value]... [--repeat N]
  *        [--knobs k1,k2,...] [--models m1,m2,...] [--csv FILE]
@@ -15,7 +15,7 @@
  * --models the model levels tried (static, quasi-static, quasi-dynamic,
  * dynamic; default all that acbb_sim_new accepts — dynamic can be slow).
  * --csv writes one row per setting (errors as fractions, %.10g, empty field
- * for an undefined number) to FILE.tmp and renames it over FILE. --plot
+ * for an undefined number) atomically (include/acbb/outfile.h). --plot
  * draws error vs wall time (log-log, one point set per knob) with gnuplot.
  *
  * Exit status: 0 every setting converged; 2 bad input (preset, --set,
@@ -25,10 +25,6 @@
 #ifndef ACBB_CLI_ACCURACY_H
 #define ACBB_CLI_ACCURACY_H
 
-/* argv[0] is "accuracy": call as acbb_cli_bench_accuracy(argc - 2, argv + 2)
- * from main's argv ("acbb", "bench", "accuracy", PRESET, ...). Passing
- * main's argc/argv unchanged also works: a leading "bench" "accuracy" pair
- * after the program name is recognised and skipped. Returns the exit status. */
-int acbb_cli_bench_accuracy(int argc, char **argv);
+/* The handler, acbb_cli_bench_accuracy, is declared in commands.h. */
 
 #endif

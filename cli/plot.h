@@ -1,8 +1,8 @@
 /* acbb CLI — gnuplot export glue: the `acbb plot` subcommand and the
  * `acbb run ... --plot FILE` writer, on top of the engine's plot module
- * (include/acbb/plot.h). Private to the executable (src/cli.c calls it).
+ * (include/acbb/plot.h). Private to the executable.
  *
- * Exit statuses follow src/cli.c: 0 ok, 2 bad input, 3 the solver did not
+ * Exit statuses (exit.h): 0 ok, 2 bad input, 3 the solver did not
  * reach steady state (the plot is still written, from the last good state),
  * 4 gnuplot missing or failed; then stderr says, e.g.
  *   acbb: gnuplot not found on PATH (install gnuplot-nox) — plot not written
@@ -23,13 +23,11 @@
 #include "acbb/history.h"
 #include "acbb/sim.h"
 
-/* `acbb plot PRESET [--set section.key=value]... [--kind K|all]
- *  [--out FILE.png|FILE.svg | --dumb] [--size WxH]`; argv[0] is "plot"
- * (call as acbb_cli_plot(argc - 1, argv + 1)). Without --out the chart is
- * drawn with gnuplot's dumb terminal on stdout. --kind defaults to
- * temperature; --size defaults to 1000x600 pixels, or 80x25 characters
- * for --dumb. Returns the exit status. */
-int acbb_cli_plot(int argc, char **argv);
+/* `acbb plot` (options: main.c's command table): runs the scene and draws
+ * --kind (default temperature; all = every kind) to --out FILE.png|.svg, or
+ * with gnuplot's dumb terminal on stdout. --size defaults to 1000x600
+ * pixels, or 80x25 characters for the dumb terminal. The handler itself is
+ * acbb_cli_plot in commands.h. */
 
 /* Check a `--plot FILE` argument before a run starts: 0, or 2 with a
  * message on stderr if the extension is neither .png nor .svg. */

@@ -1,6 +1,6 @@
 /* acbb CLI — output writers: the plain summary table, JSON and CSV.
  *
- * Private to the executable (src/cli.c); not part of the engine API.
+ * Private to the executable (cli/); not part of the engine API.
  * Every writer goes through an acbb_cli_out, which counts the non-finite
  * numbers it was asked to print: the engine promises finite snapshots, so a
  * non-zero count after writing is an internal error for the caller to
@@ -46,13 +46,6 @@ typedef struct {
 } acbb_cli_study_block;
 
 void acbb_cli_out_init(acbb_cli_out *o, FILE *f);
-
-/* Atomic output files: open a unique PATH.tmp.XXXXXX (mkstemp, mode 0644)
- * next to PATH; commit flushes, fsyncs, closes and renames it over PATH, or
- * removes it on any failure. Both print the reason to stderr and return 0 /
- * -1. *tmp is allocated by open and freed by commit. */
-FILE *acbb_cli_tmp_open(const char *path, char **tmp);
-int acbb_cli_tmp_commit(FILE *f, char *tmp, const char *path);
 
 /* True when the run reached steady state. */
 bool acbb_cli_point_ok(const acbb_cli_point *p);

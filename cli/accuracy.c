@@ -1,9 +1,9 @@
-/* acbb CLI — `acbb bench accuracy` (see cli_accuracy.h).
+/* acbb CLI — `acbb bench accuracy` (see accuracy.h).
  *
  * A thin client of include/acbb/accuracy.h: load the preset, apply --set
  * edits, run the plan, print the table and the frontier, write CSV and the
- * plot. Arguments are parsed by hand like src/cli.c (a handful of options;
- * no user text reaches a shell: the plot module spawns gnuplot directly).
+ * plot. Arguments come parsed from the command table (args.h); no user
+ * text reaches a shell (the plot module spawns gnuplot directly).
  * The locale is never set, so numbers always use a decimal point. */
 #include <errno.h>
 #include <math.h>
@@ -15,25 +15,17 @@
 #include "acbb/accuracy.h"
 #include "acbb/plot.h"
 #include "acbb/scene.h"
-#include "cli_accuracy.h"
-#include "cli_output.h"
-
-enum { ACC_EXIT_OK = 0, ACC_EXIT_INPUT = 2, ACC_EXIT_SOLVER = 3, ACC_EXIT_INTERNAL = 4 };
+#include "accuracy.h"
+#include "commands.h"
+#include "common.h"
+#include "exit.h"
 
 #define ACC_PLOT_W 1000
 #define ACC_PLOT_H 650
 
-static const char acc_usage[] =
-    "usage: acbb bench accuracy PRESET [--set section.key=value]... [--repeat N]\n"
-    "         [--knobs k1,k2,...] [--models m1,m2,...] [--csv FILE]\n"
-    "         [--plot FILE.png|FILE.svg]\n"
-    "knobs: model contact_grid hertz mech_tol steady_tol thermal network\n"
-    "models: static quasi-static quasi-dynamic dynamic\n";
-
+/* What the options say, checked. */
 typedef struct {
     const char *preset;
-    const char **sets;
-    size_t n_sets;
     long repeat;
     unsigned knobs;      /* 0 = all */
     unsigned models;     /* 0 = all */
@@ -43,22 +35,12 @@ typedef struct {
 
 static int bad_usage(const char *what, const char *arg)
 {
-    fprintf(stderr, "acbb: bench accuracy: %s%s\n%s", what, arg ? arg : "", acc_usage);
-    return ACC_EXIT_INPUT;
+    fprintf(stderr, "acbb: bench accuracy: %s%s\ntry `acbb help bench accuracy`\n", what,
+            arg ? arg : "");
+    return ACBB_EXIT_INPUT;
 }
 
 /* ---- arguments ---- */
-
-static int parse_repeat(const char *text, long *out)
-{
-    char *end = NULL;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (errno || end == text || *end || v < 1 || v > ACBB_ACCURACY_MAX_REPEATS)
-        return bad_usage("--repeat expects a whole number 1..1000, got ", text);
-    *out = v;
-    return 0;
-}
 
 /* acbb_model_level from its scene name ("quasi-static"), or -1. */
 static int model_from_name(const char *name)
@@ -81,9 +63,9 @@ static int parse_list(const char *opt, const char *text, int (*lookup)(const cha
          tok = strtok_r(NULL, ",", &save)) {
         int k = lookup(tok);
         if (k < 0) {
-            fprintf(stderr, "acbb: bench accuracy: %s: unknown name '%s'\n%s", opt, tok,
-                    acc_usage);
-            return ACC_EXIT_INPUT;
+            fprintf(stderr, "acbb: bench accuracy: %s: unknown name '%s'\n"
+                    "try `acbb help bench accuracy`\n", opt, tok);
+            return ACBB_EXIT_INPUT;
         }
         *mask |= 1u << (unsigned)k;
     }
@@ -91,94 +73,21 @@ static int parse_list(const char *opt, const char *text, int (*lookup)(const cha
     return 0;
 }
 
-/* `--name value` or `--name=value` at argv[*i]; NULL (message printed) if
- * the value is missing. */
-static const char *option_value(const char *arg, size_t len, int argc, char **argv, int *i)
+static int check_args(acc_args *o, const acbb_cli_args *a)
 {
-    if (arg[len] == '=') return arg + len + 1;
-    if (*i + 1 < argc) return argv[++*i];
-    bad_usage("option needs a value: ", arg);
-    return NULL;
-}
-
-static int parse_option(acc_args *a, int argc, char **argv, int *i)
-{
-    static const char *const names[] = { "--set", "--repeat", "--knobs", "--models", "--csv",
-                                         "--plot" };
-    const char *arg = argv[*i];
-    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
-        size_t len = strlen(names[k]);
-        if (strncmp(arg, names[k], len) != 0 || (arg[len] != '\0' && arg[len] != '='))
-            continue;
-        const char *v = option_value(arg, len, argc, argv, i);
-        if (!v) return ACC_EXIT_INPUT;
-        switch (k) {
-        case 0: a->sets[a->n_sets++] = v; return 0;
-        case 1: return parse_repeat(v, &a->repeat);
-        case 2: return parse_list("--knobs", v, acbb_accuracy_knob_from_name, &a->knobs);
-        case 3: return parse_list("--models", v, model_from_name, &a->models);
-        case 4: a->csv = v; return 0;
-        default: a->plot = v; return 0;
-        }
-    }
-    return bad_usage("unknown option ", arg);
-}
-
-/* Where the arguments proper start (see cli_accuracy.h). */
-static int first_arg(int argc, char **argv)
-{
-    if (argc >= 1 && strcmp(argv[0], "accuracy") == 0) return 1;
-    if (argc >= 3 && strcmp(argv[1], "bench") == 0 && strcmp(argv[2], "accuracy") == 0)
-        return 3;
-    return 1;
-}
-
-static int parse_args(acc_args *a, int argc, char **argv)
-{
-    bool options_done = false;
-    for (int i = first_arg(argc, argv); i < argc; i++) {
-        const char *arg = argv[i];
-        if (!options_done && strcmp(arg, "--") == 0) {
-            options_done = true;
-        } else if (!options_done && arg[0] == '-' && arg[1] != '\0') {
-            int rc = parse_option(a, argc, argv, &i);
-            if (rc) return rc;
-        } else if (!a->preset) {
-            a->preset = arg;
-        } else {
-            return bad_usage("unexpected argument ", arg);
-        }
-    }
-    if (!a->preset) return bad_usage("missing PRESET", NULL);
-    if (a->plot && acbb_plot_format_from_name(a->plot) != ACBB_PLOT_PNG &&
-        acbb_plot_format_from_name(a->plot) != ACBB_PLOT_SVG)
-        return bad_usage("--plot needs a .png or .svg file name, got ", a->plot);
-    return 0;
-}
-
-/* ---- scene ---- */
-
-static int status_exit(acbb_status st)
-{
-    if (st == ACBB_ENOMEM) return ACC_EXIT_INTERNAL;
-    return (st == ACBB_EINVAL || st == ACBB_EIO || st == ACBB_ILL_POSED) ? ACC_EXIT_INPUT
-                                                                         : ACC_EXIT_SOLVER;
-}
-
-static int load_scene(const acc_args *a, acbb_scene *sc)
-{
-    acbb_error err = { { 0 } };
-    acbb_status st = acbb_scene_load(a->preset, sc, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
-        return status_exit(st);
-    }
-    st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
-        return ACC_EXIT_INPUT;
-    }
-    return 0;
+    o->preset = a->preset;
+    o->csv = a->val[CLI_OPT_CSV];
+    o->plot = a->val[CLI_OPT_PLOT];
+    int rc = acbb_cli_count(a, CLI_OPT_REPEAT, ACBB_ACCURACY_DEFAULT_REPEATS, 1,
+                            ACBB_ACCURACY_MAX_REPEATS, &o->repeat);
+    if (!rc && a->val[CLI_OPT_KNOBS])
+        rc = parse_list("--knobs", a->val[CLI_OPT_KNOBS], acbb_accuracy_knob_from_name, &o->knobs);
+    if (!rc && a->val[CLI_OPT_MODELS])
+        rc = parse_list("--models", a->val[CLI_OPT_MODELS], model_from_name, &o->models);
+    if (!rc && o->plot && acbb_plot_format_from_name(o->plot) != ACBB_PLOT_PNG &&
+        acbb_plot_format_from_name(o->plot) != ACBB_PLOT_SVG)
+        rc = bad_usage("--plot needs a .png or .svg file name, got ", o->plot);
+    return rc;
 }
 
 /* ---- formatting ---- */
@@ -319,14 +228,14 @@ static void csv_rows(FILE *f, const acbb_accuracy_row *rows, size_t n)
     }
 }
 
-/* A temp file renamed into place: a reader never sees a half-written file. */
+/* Through the atomic writer: a reader never sees a half-written file. */
 static int write_csv(const char *path, const acbb_accuracy_row *rows, size_t n)
 {
-    char *tmp;
-    FILE *f = acbb_cli_tmp_open(path, &tmp);
-    if (!f) return ACC_EXIT_INPUT;
-    csv_rows(f, rows, n);
-    return acbb_cli_tmp_commit(f, tmp, path) == 0 ? 0 : ACC_EXIT_INPUT;
+    acbb_cli_file file;
+    int rc = acbb_cli_file_open(&file, path);
+    if (rc) return rc;
+    csv_rows(file.out.f, rows, n);
+    return acbb_cli_file_close(&file);
 }
 
 /* ---- plot ---- */
@@ -342,7 +251,7 @@ static int write_plot(const char *path, const char *preset, const acbb_accuracy_
                                              &err);
     if (st == ACBB_OK) return 0;
     fprintf(stderr, "acbb: %s — plot not written\n", err.msg[0] ? err.msg : acbb_status_name(st));
-    return ACC_EXIT_INTERNAL;
+    return ACBB_EXIT_INTERNAL;
 }
 
 /* ---- main ---- */
@@ -362,22 +271,20 @@ static int any_failed(const acbb_accuracy_row *rows, size_t n)
     return 0;
 }
 
-static int worst(int a, int b) { return a > b ? a : b; }
-
 static int run_bench(const acc_args *a, const acbb_scene *base)
 {
     acbb_accuracy_options opt = { .knobs = a->knobs, .model_levels = a->models,
                                   .repeats = (int)a->repeat };
     size_t cap = acbb_accuracy_plan_size(&opt), n = 0;
     acbb_accuracy_row *rows = calloc(cap, sizeof *rows);
-    if (!rows) return ACC_EXIT_INTERNAL;
+    if (!rows) return ACBB_EXIT_INTERNAL;
     acbb_error err = { { 0 } };
     acbb_accuracy_progress tick = isatty(STDERR_FILENO) ? progress_tick : NULL;
     acbb_status st = acbb_accuracy_run(base, &opt, rows, cap, &n, tick, NULL, &err);
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         free(rows);
-        return status_exit(st);
+        return acbb_cli_exit_for(st);
     }
     print_table(a, rows, n);
     print_notes(rows, n);
@@ -385,24 +292,21 @@ static int run_bench(const acc_args *a, const acbb_scene *base)
     int rc = 0;
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fprintf(stderr, "acbb: cannot write to stdout\n");
-        rc = ACC_EXIT_INTERNAL;
+        rc = ACBB_EXIT_INTERNAL;
     }
-    if (a->csv) rc = worst(rc, write_csv(a->csv, rows, n));
-    if (a->plot) rc = worst(rc, write_plot(a->plot, a->preset, rows, n));
-    if (any_failed(rows, n)) rc = worst(rc, ACC_EXIT_SOLVER);
+    if (a->csv) rc = acbb_cli_worst(rc, write_csv(a->csv, rows, n));
+    if (a->plot) rc = acbb_cli_worst(rc, write_plot(a->plot, a->preset, rows, n));
+    if (any_failed(rows, n)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
     free(rows);
     return rc;
 }
 
-int acbb_cli_bench_accuracy(int argc, char **argv)
+int acbb_cli_bench_accuracy(const acbb_cli_args *args)
 {
-    const char **sets = calloc((size_t)(argc > 0 ? argc : 1), sizeof *sets);
-    if (!sets) return ACC_EXIT_INTERNAL;
-    acc_args a = { .sets = sets, .repeat = ACBB_ACCURACY_DEFAULT_REPEATS };
-    int rc = parse_args(&a, argc, argv);
+    acc_args a = { 0 };
     acbb_scene base;
-    if (!rc) rc = load_scene(&a, &base);
+    int rc = check_args(&a, args);
+    if (!rc) rc = acbb_cli_load_scene(args, &base);
     if (!rc) rc = run_bench(&a, &base);
-    free(sets);
     return rc;
 }

@@ -1,0 +1,261 @@
+/* acbb CLI — the table-driven argument parser and usage printer (args.h). */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include "args.h"
+#include "exit.h"
+#include "presets.h"
+
+const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
+    [CLI_OPT_SET] = { "set", "KEY=VALUE",
+                      "edit a preset key in preset units, e.g. operating.axial_load_N=200 "
+                      "(repeatable; `acbb keys` lists them)" },
+    [CLI_OPT_JSON] = { "json", NULL, "print JSON on stdout instead of the table" },
+    [CLI_OPT_CSV] = { "csv", "FILE", "also write CSV to FILE (written atomically; - = stdout)" },
+    [CLI_OPT_QUIET] = { "quiet", NULL, "print nothing on success (the exit status says it)" },
+    [CLI_OPT_PLOT] = { "plot", "FILE", "draw with gnuplot to FILE.png or FILE.svg" },
+    [CLI_OPT_PARAM] = { "param", "KEY", "the swept key, section.key (required)" },
+    [CLI_OPT_VALUES] = { "values", "V1,V2,...", "the values of --param, in preset units (required)" },
+    [CLI_OPT_JOBS] = { "jobs", "N", "parallel runs (default: the number of CPUs)" },
+    [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },
+    [CLI_OPT_KIND] = { "kind", "KIND",
+                       "temperature|losses|loads|angles|history-loads|all (default temperature)" },
+    [CLI_OPT_OUT] = { "out", "FILE", "write FILE.png or FILE.svg (default: a text chart on stdout)" },
+    [CLI_OPT_DUMB] = { "dumb", NULL, "a text chart on stdout (the default)" },
+    [CLI_OPT_SIZE] = { "size", "WxH", "pixels (default 1000x600) or characters with --dumb (80x25)" },
+    [CLI_OPT_KNOBS] = { "knobs", "K1,...",
+                        "model contact_grid hertz mech_tol steady_tol thermal network (default all)" },
+    [CLI_OPT_MODELS] = { "models", "M1,...",
+                         "static quasi-static quasi-dynamic dynamic (default all available)" },
+    [CLI_OPT_MD] = { "md", "FILE", "also write the report as Markdown" },
+    [CLI_OPT_PACE] = { "pace", "N", "steps per second (0 = flat out, the default)" },
+    [CLI_OPT_PLOT_DIR] = { "plot-dir", "DIR", "where g writes PNG+SVG plots (default ./acbb-plots)" },
+    [CLI_OPT_EXIT_AFTER_STEADY] = { "exit-after-steady", NULL,
+                                    "start the run at once and exit when it ends "
+                                    "(exit 0 converged, 3 not)" },
+    [CLI_OPT_HELP] = { "help", NULL, "this text (also -h)" },
+};
+
+/* Optimal string alignment distance: insertions, deletions, substitutions
+ * and swaps of neighbours ("josn" -> "json" is one edit). */
+size_t acbb_cli_distance(const char *a, size_t la, const char *b, size_t lb)
+{
+    enum { N = 64 };
+    if (la >= N || lb >= N) return N;
+    static const size_t none = (size_t)-1 / 2;
+    size_t d[3][N];                 /* rows i-2, i-1, i (rolling) */
+    for (size_t j = 0; j <= lb; j++) d[1][j] = j, d[0][j] = none;
+    for (size_t i = 1; i <= la; i++) {
+        size_t *cur = d[(i + 1) % 3], *up = d[i % 3], *up2 = d[(i + 2) % 3];
+        cur[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            size_t best = up[j - 1] + (a[i - 1] != b[j - 1]);
+            if (up[j] + 1 < best) best = up[j] + 1;
+            if (cur[j - 1] + 1 < best) best = cur[j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+                up2[j - 2] + 1 < best)
+                best = up2[j - 2] + 1;
+            cur[j] = best;
+        }
+    }
+    return d[(la + 1) % 3][lb];
+}
+
+/* `text` word-wrapped to 79 columns, continuation lines indented by
+ * `indent`; `col` is where the cursor stands. Returns the new column. */
+static size_t wrap(FILE *f, const char *text, size_t col, size_t indent)
+{
+    while (*text) {
+        size_t word = strcspn(text, " ");
+        if (col > indent && col + 1 + word > 79) {
+            fprintf(f, "\n%*s", (int)indent, "");
+            col = indent;
+        } else if (col > indent) {
+            fputc(' ', f);
+            col++;
+        }
+        fprintf(f, "%.*s", (int)word, text);
+        col += word;
+        text += word;
+        text += strspn(text, " ");
+    }
+    return col;
+}
+
+static void print_try(const acbb_cli_command *c)
+{
+    fprintf(stderr, "try `acbb help %s%s%s`\n", c->name, c->sub ? " " : "",
+            c->sub ? c->sub : "");
+}
+
+/* Unknown `--name`: the closest accepted option when it is near enough. */
+static int unknown_option(const acbb_cli_command *c, const char *arg, size_t len)
+{
+    for (int k = 0; k < CLI_OPT_COUNT; k++) {
+        if (strlen(acbb_cli_options[k].name) != len ||
+            strncmp(acbb_cli_options[k].name, arg, len) != 0)
+            continue;
+        fprintf(stderr, "acbb: %s: --%.*s is not an option of this command\n", c->name,
+                (int)len, arg);
+        print_try(c);
+        return ACBB_EXIT_INPUT;
+    }
+    size_t best = (size_t)-1;
+    int pick = -1;
+    for (int k = 0; k < CLI_OPT_COUNT; k++) {
+        if (!(c->options & CLI_BIT(k))) continue;
+        const char *n = acbb_cli_options[k].name;
+        size_t d = acbb_cli_distance(arg, len, n, strlen(n));
+        if (d < best) best = d, pick = k;
+    }
+    fprintf(stderr, "acbb: %s: unknown option --%.*s", c->name, (int)len, arg);
+    /* Near enough: 1 edit in a short name, up to 3 in a long one. */
+    size_t limit = 1 + len / 4 > 3 ? 3 : 1 + len / 4;
+    if (pick >= 0 && best <= limit)
+        fprintf(stderr, "; did you mean --%s?", acbb_cli_options[pick].name);
+    fputc('\n', stderr);
+    print_try(c);
+    return ACBB_EXIT_INPUT;
+}
+
+static int bad(const acbb_cli_command *c, const char *what, const char *arg)
+{
+    fprintf(stderr, "acbb: %s: %s%s\n", c->name, what, arg ? arg : "");
+    print_try(c);
+    return ACBB_EXIT_INPUT;
+}
+
+/* One `--name`, `--name value` or `--name=value` at argv[*i]. */
+static int parse_option(const acbb_cli_command *c, int argc, char **argv, int *i,
+                        acbb_cli_args *a)
+{
+    const char *arg = argv[*i] + 2;
+    const char *eq = strchr(arg, '=');
+    size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+    for (int k = 0; k < CLI_OPT_COUNT; k++) {
+        const acbb_cli_option *o = &acbb_cli_options[k];
+        if (!(c->options & CLI_BIT(k)) && k != CLI_OPT_HELP) continue;
+        if (strlen(o->name) != len || strncmp(arg, o->name, len) != 0) continue;
+        const char *val = "";
+        if (o->metavar) {
+            if (eq) val = eq + 1;
+            else if (*i + 1 < argc) val = argv[++*i];
+            else return bad(c, "option needs a value: ", argv[*i]);
+        } else if (eq) {
+            return bad(c, "option takes no value: ", argv[*i]);
+        }
+        if (k == CLI_OPT_SET) a->sets[a->n_sets++] = val;
+        a->val[k] = val;
+        return 0;
+    }
+    return unknown_option(c, arg, len);
+}
+
+static int check_positionals(const acbb_cli_command *c, acbb_cli_args *a)
+{
+    if (a->n_pos < c->min_pos) {
+        fprintf(stderr, "acbb: %s: missing %s\n", a->cmd, c->args);
+        print_try(c);
+        return ACBB_EXIT_INPUT;
+    }
+    if (c->preset_pos >= 0 && c->preset_pos < a->n_pos) {
+        if (acbb_cli_resolve_preset(a->pos[c->preset_pos], a->preset_buf,
+                                    sizeof a->preset_buf, true) != 0)
+            return ACBB_EXIT_INPUT;
+        a->preset = a->preset_buf;
+    }
+    return 0;
+}
+
+int acbb_cli_parse(const acbb_cli_command *c, int argc, char **argv, int first,
+                   acbb_cli_args *a)
+{
+    snprintf(a->cmd_buf, sizeof a->cmd_buf, "%s%s%s", c->name, c->sub ? " " : "",
+             c->sub ? c->sub : "");
+    a->cmd = a->cmd_buf;
+    bool options_done = false;
+    for (int i = first; i < argc; i++) {
+        const char *arg = argv[i];
+        if (!options_done && strcmp(arg, "--") == 0) {
+            options_done = true;
+        } else if (!options_done && strncmp(arg, "--", 2) == 0) {
+            int rc = parse_option(c, argc, argv, &i, a);
+            if (rc) return rc;
+        } else if (!options_done && strcmp(arg, "-h") == 0) {
+            a->val[CLI_OPT_HELP] = "";
+        } else if (!options_done && arg[0] == '-' && arg[1] != '\0') {
+            return bad(c, "unknown option ", arg);
+        } else if (a->n_pos < c->max_pos) {
+            a->pos[a->n_pos++] = arg;
+        } else {
+            return bad(c, "unexpected argument ", arg);
+        }
+    }
+    if (a->val[CLI_OPT_HELP]) {
+        acbb_cli_print_usage(stdout, c);
+        return -1;
+    }
+    return check_positionals(c, a);
+}
+
+void acbb_cli_print_synopsis(FILE *f, const acbb_cli_command *c)
+{
+    char word[96];
+    snprintf(word, sizeof word, "acbb %s%s%s%s%s", c->name, c->sub ? " " : "",
+             c->sub ? c->sub : "", c->args[0] ? " " : "", c->args);
+    size_t col = wrap(f, word, 7, 9);
+    for (int k = 0; k < CLI_OPT_COUNT; k++) {
+        if (!(c->options & CLI_BIT(k))) continue;
+        const acbb_cli_option *o = &acbb_cli_options[k];
+        /* One option is one word for wrapping: no break inside it. */
+        snprintf(word, sizeof word, "[--%s%s%s]%s", o->name, o->metavar ? "\x01" : "",
+                 o->metavar ? o->metavar : "", k == CLI_OPT_SET ? "..." : "");
+        if (col + 1 + strlen(word) > 79) {
+            fprintf(f, "\n%9s", "");
+            col = 9;
+        }
+        for (char *p = word; *p; p++) if (*p == '\x01') *p = ' ';
+        fprintf(f, " %s", word);
+        col += 1 + strlen(word);
+    }
+}
+
+void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c)
+{
+    fputs("usage: ", f);
+    acbb_cli_print_synopsis(f, c);
+    fprintf(f, "\n\n%s\n", c->summary);
+    if (c->details) fprintf(f, "\n%s", c->details);
+    fputs("\noptions:\n", f);
+    for (int k = 0; k < CLI_OPT_COUNT; k++) {
+        if (!(c->options & CLI_BIT(k)) && k != CLI_OPT_HELP) continue;
+        const acbb_cli_option *o = &acbb_cli_options[k];
+        char head[64];
+        snprintf(head, sizeof head, "--%s%s%s", o->name, o->metavar ? " " : "",
+                 o->metavar ? o->metavar : "");
+        if (strlen(head) > 20) fprintf(f, "  %s\n%24s", head, "");
+        else fprintf(f, "  %-20s  ", head);
+        wrap(f, o->help, 24, 24);
+        fputc('\n', f);
+    }
+}
+
+int acbb_cli_count(const acbb_cli_args *a, acbb_cli_opt o, long dflt, long lo, long hi,
+                   long *out)
+{
+    const char *text = a->val[o];
+    if (!text) {
+        *out = dflt;
+        return 0;
+    }
+    char *end = NULL;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (errno || end == text || *end || v < lo || v > hi) {
+        fprintf(stderr, "acbb: %s: --%s %s: expected a whole number %ld..%ld\n", a->cmd,
+                acbb_cli_options[o].name, text, lo, hi);
+        return ACBB_EXIT_INPUT;
+    }
+    *out = v;
+    return 0;
+}

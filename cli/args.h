@@ -1,0 +1,90 @@
+/* acbb CLI — one argument parser for every command, driven by two tables
+ * (tmux's cmd_table idea, DESIGN.md "Examples"): each option is a row
+ * {long name, value name or NULL for a flag, help}, each command a row
+ * {name, positional arguments, summary, allowed options, handler}. The same
+ * rows print `acbb help CMD`, `acbb CMD --help` and `acbb help`, so usage
+ * text can never drift from what the parser accepts.
+ *
+ * Accepted forms: `--name`, `--name value`, `--name=value`, `-h`; `--`
+ * ends the options. --set may repeat; for every other option the last one
+ * wins. An unknown option is refused with exit 2 and, when a known one is
+ * close (edit distance), "did you mean --x?". No user text ever reaches a
+ * shell. */
+#ifndef ACBB_CLI_ARGS_H
+#define ACBB_CLI_ARGS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+typedef enum {
+    CLI_OPT_SET, CLI_OPT_JSON, CLI_OPT_CSV, CLI_OPT_QUIET, CLI_OPT_PLOT,
+    CLI_OPT_PARAM, CLI_OPT_VALUES, CLI_OPT_JOBS, CLI_OPT_REPEAT, CLI_OPT_KIND,
+    CLI_OPT_OUT, CLI_OPT_DUMB, CLI_OPT_SIZE, CLI_OPT_KNOBS, CLI_OPT_MODELS,
+    CLI_OPT_MD, CLI_OPT_PACE, CLI_OPT_PLOT_DIR, CLI_OPT_EXIT_AFTER_STEADY,
+    CLI_OPT_HELP,
+    CLI_OPT_COUNT
+} acbb_cli_opt;
+
+#define CLI_BIT(o) (1u << (unsigned)(o))
+
+typedef struct {
+    const char *name;      /* long name without "--" */
+    const char *metavar;   /* value name, NULL for a flag */
+    const char *help;
+} acbb_cli_option;
+
+#define CLI_MAX_POS 2
+#define CLI_PATH_MAX 4096
+
+/* What the parser hands a command. Values point into argv. */
+typedef struct {
+    const char *cmd;                   /* "run", "bench speed": for messages */
+    char cmd_buf[32];
+    const char *pos[CLI_MAX_POS];      /* positional arguments */
+    int n_pos;
+    const char *val[CLI_OPT_COUNT];    /* last value; "" for a flag; NULL absent */
+    const char **sets;                 /* every --set, in order */
+    size_t n_sets;
+    const char *preset;                /* the PRESET positional, resolved */
+    char preset_buf[CLI_PATH_MAX];
+} acbb_cli_args;
+
+typedef struct acbb_cli_command acbb_cli_command;
+struct acbb_cli_command {
+    const char *name;
+    const char *sub;          /* second word ("bench speed"), or NULL */
+    const char *args;         /* positional synopsis, e.g. "PRESET" or "[PRESET]" */
+    const char *summary;      /* one line for `acbb help` */
+    const char *details;      /* more text for `acbb help CMD`, or NULL */
+    unsigned options;         /* CLI_BIT() of the accepted options */
+    int min_pos, max_pos;
+    int preset_pos;           /* positional resolved as a preset, or -1 */
+    int (*run)(const acbb_cli_args *a);
+};
+
+/* The option table (args.c) and the command table (main.c). */
+extern const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT];
+extern const acbb_cli_command acbb_cli_commands[];
+extern const size_t acbb_cli_n_commands;
+
+/* Parse argv[first..argc) for `c` into *a (sets must hold argc entries).
+ * Returns 0, -1 when --help/-h was given (usage already printed on
+ * stdout), or 2 with the message on stderr. */
+int acbb_cli_parse(const acbb_cli_command *c, int argc, char **argv, int first,
+                   acbb_cli_args *a);
+
+/* "acbb run PRESET [--set KEY=VALUE]... [--json]": the synopsis line. */
+void acbb_cli_print_synopsis(FILE *f, const acbb_cli_command *c);
+/* Synopsis, summary, details and every accepted option with its help. */
+void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c);
+
+/* Levenshtein distance, capped: the "did you mean" measure. */
+size_t acbb_cli_distance(const char *a, size_t la, const char *b, size_t lb);
+
+/* A whole number lo..hi from option `o` (default `dflt` when absent);
+ * 0, or 2 with a message naming the option and the range. */
+int acbb_cli_count(const acbb_cli_args *a, acbb_cli_opt o, long dflt, long lo, long hi,
+                   long *out);
+
+#endif

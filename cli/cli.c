@@ -1,0 +1,491 @@
+/* acbb CLI — the scene commands: run, check, sweep, study, bench speed and
+ * keys (commands.h). Each loads a preset, applies `--set` edits, drives the
+ * engine's one run loop (acbb_sim_drive, DESIGN.md "Data flow") and writes
+ * the snapshot as a table, JSON or CSV (output.h). Exit statuses: exit.h. */
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/utsname.h>
+#include <unistd.h>
+#include "acbb/history.h"
+#include "acbb/measure.h"
+#include "acbb/scene.h"
+#include "acbb/sim.h"
+#include "acbb/units.h"
+#include "commands.h"
+#include "common.h"
+#include "exit.h"
+#include "output.h"
+#include "plot.h"
+#include "presets.h"
+
+/* ---- driving a run ---- */
+
+typedef void (*row_fn)(void *ctx, const acbb_snapshot *snap);
+
+typedef struct {
+    acbb_snapshot *snap;
+    row_fn row;
+    void *ctx;
+} drive_ctx;
+
+static int drive_hook(void *ctx, const acbb_sim *sim)
+{
+    drive_ctx *d = ctx;
+    acbb_sim_snapshot(sim, d->snap);
+    d->row(d->ctx, d->snap);
+    return 0;
+}
+
+/* The engine's run loop to the end of the run, calling `row` for the
+ * initial state and after every step. `snap` holds the final state. */
+static acbb_status drive(acbb_sim *sim, acbb_snapshot *snap, row_fn row, void *ctx)
+{
+    drive_ctx d = { snap, row, ctx };
+    acbb_run_ctl ctl = { .hook = row ? drive_hook : NULL, .ctx = &d };
+    acbb_status st = acbb_sim_drive(sim, &ctl);
+    acbb_sim_snapshot(sim, snap);
+    return st;
+}
+
+static void run_point(acbb_cli_point *p)
+{
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    double t0 = acbb_now_ms();
+    p->status = acbb_sim_new(&p->scene, &sim, &err);
+    if (p->status != ACBB_OK) {
+        p->have_snap = false;
+        snprintf(p->message, sizeof p->message, "%s", acbb_cli_err_text(&err, p->status));
+        p->wall_ms = acbb_now_ms() - t0;
+        return;
+    }
+    p->status = drive(sim, &p->snap, NULL, NULL);
+    p->have_snap = true;
+    acbb_sim_free(sim);
+    p->wall_ms = acbb_now_ms() - t0;
+}
+
+/* Independent runs in parallel: each Sim is private to one thread and the
+ * engine keeps no global mutable state (common rules), so the results do
+ * not depend on the number of threads. */
+typedef struct {
+    acbb_cli_point *pts;
+    size_t n;
+    atomic_size_t next;
+} point_pool;
+
+static void *pool_worker(void *arg)
+{
+    point_pool *pool = arg;
+    for (;;) {
+        size_t i = atomic_fetch_add(&pool->next, 1);
+        if (i >= pool->n) return NULL;
+        run_point(&pool->pts[i]);
+    }
+}
+
+static long cpu_count(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? n : 1;
+}
+
+static void run_points(acbb_cli_point *pts, size_t n, long jobs)
+{
+    point_pool pool = { .pts = pts, .n = n };
+    atomic_init(&pool.next, 0);
+    size_t extra = jobs > 1 ? (size_t)jobs - 1 : 0;
+    if (extra > n) extra = n;
+    pthread_t tid[64];
+    if (extra > 64) extra = 64;
+    size_t started = 0;
+    for (; started < extra; started++)
+        if (pthread_create(&tid[started], NULL, pool_worker, &pool) != 0) break;
+    pool_worker(&pool); /* the main thread works too; if no thread started, alone */
+    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
+}
+
+static bool points_ok(const acbb_cli_point *pts, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!acbb_cli_point_ok(&pts[i])) return false;
+    return true;
+}
+
+/* ---- acbb run ---- */
+
+static void csv_row_cb(void *ctx, const acbb_snapshot *snap)
+{
+    acbb_cli_csv_row(ctx, snap);
+}
+
+/* `run --csv` rows and the `--plot` history (plot.h) from one callback. */
+typedef struct {
+    acbb_cli_out *csv;
+    acbb_history *hist;
+} run_rows;
+
+static void run_row_cb(void *ctx, const acbb_snapshot *snap)
+{
+    run_rows *r = ctx;
+    if (r->csv) csv_row_cb(r->csv, snap);
+    if (r->hist) acbb_history_push(r->hist, snap);
+}
+
+static int run_report(const acbb_cli_args *a, const char *preset, const acbb_scene *sc,
+                      const acbb_snapshot *snap)
+{
+    acbb_cli_out o;
+    acbb_cli_out_init(&o, stdout);
+    if (a->val[CLI_OPT_JSON]) acbb_cli_json_run(&o, sc, snap);
+    else if (!a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, sc, snap);
+    int rc = acbb_cli_stdout_check(o.nonfinite);
+    if (snap->state != ACBB_RUN_CONVERGED) {
+        fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);
+        rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    }
+    return rc;
+}
+
+int acbb_cli_cmd_run(const acbb_cli_args *a)
+{
+    int rc = 0;
+    const char *preset = a->preset;
+    const char *plot = a->val[CLI_OPT_PLOT], *csv_path = a->val[CLI_OPT_CSV];
+    bool json = a->val[CLI_OPT_JSON] != NULL;
+    if (plot && (rc = acbb_cli_plot_check_path(plot))) return rc;
+    acbb_scene sc;
+    if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
+
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_sim_new(&sc, &sim, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        if (json) {
+            acbb_cli_out o;
+            acbb_cli_out_init(&o, stdout);
+            acbb_cli_json_failed(&o, &sc, acbb_status_name(st), acbb_cli_err_text(&err, st));
+        }
+        return acbb_cli_exit_for(st);
+    }
+    acbb_cli_file csv = { 0 };
+    if (csv_path && (rc = acbb_cli_file_open(&csv, csv_path))) {
+        acbb_sim_free(sim);
+        return rc;
+    }
+    if (csv_path) acbb_cli_csv_header(&csv.out);
+    acbb_snapshot *snap = malloc(sizeof *snap);
+    if (!snap) {
+        acbb_sim_free(sim);
+        if (csv_path) acbb_out_abort(csv.handle);
+        return ACBB_EXIT_INTERNAL;
+    }
+    run_rows rows = { csv_path ? &csv.out : NULL, plot ? malloc(sizeof *rows.hist) : NULL };
+    if (rows.hist) acbb_history_init(rows.hist);
+    drive(sim, snap, (csv_path || rows.hist) ? run_row_cb : NULL, &rows);
+    acbb_sim_free(sim);
+    rc = csv_path ? acbb_cli_file_close(&csv) : 0;
+    rc = acbb_cli_worst(run_report(a, preset, &sc, snap), rc);
+    if (plot && !rows.hist) rc = acbb_cli_worst(rc, ACBB_EXIT_INTERNAL);
+    if (rows.hist) rc = acbb_cli_worst(rc, acbb_cli_write_plot(plot, rows.hist, snap, preset));
+    free(rows.hist);
+    free(snap);
+    return rc;
+}
+
+/* ---- acbb check ---- */
+
+int acbb_cli_cmd_check(const acbb_cli_args *a)
+{
+    int rc;
+    acbb_scene sc;
+    if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_validate(&sc, &err);
+    /* Ill-posedness (MODEL.md 11) is judged when the scene is compiled, so
+     * check compiles it too; no thermal step is taken. */
+    acbb_sim *sim = NULL;
+    if (st == ACBB_OK) st = acbb_sim_new(&sc, &sim, &err);
+    acbb_sim_free(sim);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        return acbb_cli_exit_for(st);
+    }
+    printf("%s: ok\n", a->preset);
+    return acbb_cli_stdout_check(0);
+}
+
+/* ---- acbb sweep ---- */
+
+/* Split "v1,v2,..." into points, each a copy of `base` with param = value. */
+static int sweep_points(const acbb_cli_args *a, const acbb_scene *base,
+                        acbb_cli_point **out, size_t *n_out)
+{
+    const char *values = a->val[CLI_OPT_VALUES], *param = a->val[CLI_OPT_PARAM];
+    size_t n = 1;
+    for (const char *p = values; *p; p++) n += *p == ',';
+    acbb_cli_point *pts = calloc(n, sizeof *pts);
+    if (!pts) return ACBB_EXIT_INTERNAL;
+    const char *p = values;
+    for (size_t i = 0; i < n; i++) {
+        size_t len = strcspn(p, ",");
+        if (len == 0 || len >= sizeof pts[i].value) {
+            fprintf(stderr, "acbb: sweep: --values %s: empty or too long value\n",
+                    values);
+            free(pts);
+            return ACBB_EXIT_INPUT;
+        }
+        memcpy(pts[i].value, p, len);
+        pts[i].value[len] = '\0';
+        p += len + (p[len] == ',');
+        pts[i].scene = *base;
+        acbb_error err = { { 0 } };
+        acbb_status st = acbb_scene_set(&pts[i].scene, param, pts[i].value, &err);
+        if (st != ACBB_OK) {
+            fprintf(stderr, "acbb: --param %s=%s: %s\n", param, pts[i].value,
+                    acbb_cli_err_text(&err, st));
+            free(pts);
+            return ACBB_EXIT_INPUT;
+        }
+    }
+    *out = pts;
+    *n_out = n;
+    return 0;
+}
+
+int acbb_cli_cmd_sweep(const acbb_cli_args *a)
+{
+    const char *param = a->val[CLI_OPT_PARAM];
+    long jobs;
+    int rc = acbb_cli_count(a, CLI_OPT_JOBS, cpu_count(), 1, 100000, &jobs);
+    if (rc) return rc;
+    if (!param || !a->val[CLI_OPT_VALUES]) {
+        fprintf(stderr, "acbb: sweep: needs --param section.key and --values v1,v2,...\n");
+        return ACBB_EXIT_INPUT;
+    }
+    acbb_scene base;
+    if ((rc = acbb_cli_load_scene(a, &base))) return rc;
+    acbb_cli_point *pts = NULL;
+    size_t n = 0;
+    if ((rc = sweep_points(a, &base, &pts, &n))) return rc;
+    run_points(pts, n, jobs);
+
+    if (a->val[CLI_OPT_CSV]) {
+        acbb_cli_file csv = { 0 };
+        rc = acbb_cli_file_open(&csv, a->val[CLI_OPT_CSV]);
+        if (!rc) {
+            acbb_cli_sweep_csv(&csv.out, param, pts, n);
+            rc = acbb_cli_file_close(&csv);
+        }
+    }
+    acbb_cli_out o;
+    acbb_cli_out_init(&o, stdout);
+    if (a->val[CLI_OPT_JSON]) acbb_cli_sweep_json(&o, param, pts, n);
+    else acbb_cli_sweep_table(&o, param, pts, n);
+    rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
+    if (!points_ok(pts, n)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    free(pts);
+    return rc;
+}
+
+/* ---- acbb study ---- */
+
+static const double study_loads[] = { 50, 100, 150, 200, 400, 600, 800, 1000 };
+static const double study_speeds[] = { 2000, 4000, 6000, 8000, 10000, 12000, 14000, 16000 };
+#define STUDY_N 8
+
+/* Pair k of the study: TE point 2k and WTE point 2k+1, otherwise equal.
+ * The scene is a plain value in SI units, so the study edits it directly. */
+static void study_pair(acbb_cli_point *pts, size_t k, const acbb_scene *base,
+                       double speed_rpm, double load_N, double x)
+{
+    for (int m = 0; m < 2; m++) {
+        acbb_cli_point *p = &pts[2 * k + (size_t)m];
+        p->scene = *base;
+        p->scene.inner_speed = acbb_rpm_to_rads(speed_rpm);
+        p->scene.axial_load = load_N;
+        p->scene.thermal_expansion = (m == 0);
+        snprintf(p->value, sizeof p->value, "%g", x);
+    }
+}
+
+int acbb_cli_cmd_study(const acbb_cli_args *a)
+{
+    long jobs;
+    int rc = acbb_cli_count(a, CLI_OPT_JOBS, cpu_count(), 1, 100000, &jobs);
+    if (rc) return rc;
+    acbb_scene base;
+    if ((rc = acbb_cli_load_scene(a, &base))) return rc;
+
+    double rpm = acbb_rads_to_rpm(base.inner_speed);
+    char titles[3][96];
+    snprintf(titles[0], sizeof titles[0], "load sweep at %.0f rpm", rpm);
+    snprintf(titles[1], sizeof titles[1], "speed sweep at 100 N");
+    snprintf(titles[2], sizeof titles[2], "speed sweep at 1000 N");
+    const acbb_cli_study_block blocks[3] = {
+        { "load", titles[0], "Fx N", 0, STUDY_N },
+        { "speed_100N", titles[1], "n rpm", STUDY_N, STUDY_N },
+        { "speed_1000N", titles[2], "n rpm", 2 * STUDY_N, STUDY_N },
+    };
+    size_t n_pairs = 3 * STUDY_N;
+    acbb_cli_point *pts = calloc(2 * n_pairs, sizeof *pts);
+    if (!pts) return ACBB_EXIT_INTERNAL;
+    for (size_t k = 0; k < STUDY_N; k++) {
+        study_pair(pts, k, &base, rpm, study_loads[k], study_loads[k]);
+        study_pair(pts, STUDY_N + k, &base, study_speeds[k], 100.0, study_speeds[k]);
+        study_pair(pts, 2 * STUDY_N + k, &base, study_speeds[k], 1000.0, study_speeds[k]);
+    }
+    run_points(pts, 2 * n_pairs, jobs);
+
+    if (a->val[CLI_OPT_CSV]) {
+        acbb_cli_file csv = { 0 };
+        rc = acbb_cli_file_open(&csv, a->val[CLI_OPT_CSV]);
+        if (!rc) {
+            acbb_cli_study_csv(&csv.out, pts, blocks, 3);
+            rc = acbb_cli_file_close(&csv);
+        }
+    }
+    acbb_cli_out o;
+    acbb_cli_out_init(&o, stdout);
+    acbb_cli_study_table(&o, pts, blocks, 3);
+    rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
+    if (!points_ok(pts, 2 * n_pairs)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    free(pts);
+    return rc;
+}
+
+/* ---- acbb bench speed ---- */
+
+/* Wall time of `n` points run with `jobs` threads, `repeat` times. */
+static int bench_points(const acbb_scene *base, const double *loads, size_t n,
+                        long jobs, long repeat, double *times, acbb_cli_point *pts)
+{
+    for (long r = 0; r < repeat; r++) {
+        for (size_t i = 0; i < n; i++) {
+            memset(&pts[i], 0, sizeof pts[i]);
+            pts[i].scene = *base;
+            if (loads) pts[i].scene.axial_load = loads[i];
+        }
+        double t0 = acbb_now_ms();
+        run_points(pts, n, jobs);
+        times[r] = acbb_now_ms() - t0;
+        if (!points_ok(pts, n)) return ACBB_EXIT_SOLVER;
+    }
+    return 0;
+}
+
+static int bench_fail(const acbb_cli_point *pts, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (acbb_cli_point_ok(&pts[i])) continue;
+        fprintf(stderr, "acbb: bench: run %zu: %s: %s\n", i, acbb_cli_point_status(&pts[i]),
+                pts[i].have_snap ? pts[i].snap.message : pts[i].message);
+    }
+    return ACBB_EXIT_SOLVER;
+}
+
+int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
+{
+    long repeat;
+    int rc = acbb_cli_count(a, CLI_OPT_REPEAT, 5, 1, 100000, &repeat);
+    if (rc) return rc;
+    /* Without PRESET: the seed's case, through the search path. */
+    acbb_cli_args with_default = *a;
+    if (!a->preset) {
+        if (acbb_cli_resolve_preset("7008C", with_default.preset_buf,
+                                    sizeof with_default.preset_buf, true) != 0)
+            return ACBB_EXIT_INPUT;
+        with_default.preset = with_default.preset_buf;
+    }
+    const char *preset = with_default.preset;
+    acbb_scene base;
+    if ((rc = acbb_cli_load_scene(&with_default, &base))) return rc;
+
+    long ncpu = cpu_count();
+    struct utsname u;
+    const char *machine = uname(&u) == 0 ? u.machine : "unknown";
+    double *times = calloc((size_t)repeat, sizeof *times);
+    acbb_cli_point *pts = calloc(STUDY_N, sizeof *pts);
+    if (!times || !pts) {
+        free(times);
+        free(pts);
+        return ACBB_EXIT_INTERNAL;
+    }
+    printf("acbb bench speed %s (median of %ld)\n", preset, repeat);
+    printf("machine            %s, %ld CPUs online (sysconf)\n", machine, ncpu);
+
+    if ((rc = bench_points(&base, NULL, 1, 1, repeat, times, pts))) goto fail;
+    printf("one run            %10.2f ms  (%ld iterations, %s, model %s)\n",
+           acbb_median(times, (size_t)repeat), pts[0].snap.iteration,
+           acbb_cli_point_status(&pts[0]), acbb_model_level_name(base.model));
+    if ((rc = bench_points(&base, study_loads, STUDY_N, 1, repeat, times, pts)))
+        goto fail;
+    printf("8-load sweep       %10.2f ms  (1 thread; loads 50..1000 N)\n",
+           acbb_median(times, (size_t)repeat));
+    if (ncpu > 1) {
+        if ((rc = bench_points(&base, study_loads, STUDY_N, ncpu, repeat, times, pts)))
+            goto fail;
+        printf("8-load sweep       %10.2f ms  (%ld threads)\n",
+               acbb_median(times, (size_t)repeat), ncpu);
+    }
+    rc = acbb_cli_stdout_check(0);
+    free(times);
+    free(pts);
+    return rc;
+fail:
+    rc = bench_fail(pts, STUDY_N);
+    free(times);
+    free(pts);
+    return rc;
+}
+
+/* ---- acbb keys ---- */
+
+static const char *type_name(acbb_field_type t)
+{
+    switch (t) {
+    case ACBB_FIELD_REAL: return "real";
+    case ACBB_FIELD_INT: return "integer";
+    case ACBB_FIELD_BOOL: return "on|off";
+    case ACBB_FIELD_ENUM: return "choice";
+    }
+    return "?";
+}
+
+static void print_key(const acbb_field_info *fi, const char *deflt)
+{
+    printf("%s.%s = %s\n    ", fi->section, fi->key, deflt);
+    if (fi->type == ACBB_FIELD_ENUM && fi->choices) {
+        for (size_t c = 0; fi->choices[c]; c++) printf("%s%s", c ? "|" : "", fi->choices[c]);
+    } else if (fi->type == ACBB_FIELD_REAL || fi->type == ACBB_FIELD_INT) {
+        printf("%s", type_name(fi->type));
+        if (fi->unit && fi->unit[0]) printf(" [%s]", fi->unit);
+        if (isfinite(fi->max) && fi->max < 1e300) printf(", %g .. %g", fi->min, fi->max);
+        else printf(", >= %g", fi->min);
+    } else {
+        printf("%s", type_name(fi->type));
+    }
+    printf(": %s\n", fi->help ? fi->help : "");
+}
+
+int acbb_cli_cmd_keys(const acbb_cli_args *a)
+{
+    (void)a;
+    acbb_scene sc;
+    acbb_scene_default(&sc);
+    size_t n = acbb_scene_field_count();
+    for (size_t i = 0; i < n; i++) {
+        const acbb_field_info *fi = acbb_scene_field(i);
+        if (!fi) continue;
+        char buf[128];
+        acbb_scene_field_format(&sc, i, buf, sizeof buf);
+        print_key(fi, buf);
+    }
+    return acbb_cli_stdout_check(0);
+}

@@ -1,0 +1,65 @@
+/* acbb CLI — shared helpers (common.h). */
+#include <stdio.h>
+#include "common.h"
+#include "exit.h"
+
+const char *acbb_cli_err_text(const acbb_error *err, acbb_status st)
+{
+    return err->msg[0] ? err->msg : acbb_status_name(st);
+}
+
+int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
+{
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_load(a->preset, sc, &err);
+    if (st == ACBB_OK) st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
+    if (st == ACBB_OK) return 0;
+    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+    return acbb_cli_exit_for(st);
+}
+
+int acbb_cli_stdout_check(long nonfinite)
+{
+    if (nonfinite) {
+        fprintf(stderr, "acbb: internal error: %ld non-finite values in the output\n",
+                nonfinite);
+        return ACBB_EXIT_INTERNAL;
+    }
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "acbb: cannot write to stdout\n");
+        return ACBB_EXIT_INTERNAL;
+    }
+    return 0;
+}
+
+int acbb_cli_file_open(acbb_cli_file *c, const char *path)
+{
+    FILE *f = NULL;
+    acbb_error err = { { 0 } };
+    c->path = path;
+    acbb_status st = acbb_out_open(path, &c->handle, &f, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        c->handle = NULL;
+        return ACBB_EXIT_INPUT;
+    }
+    acbb_cli_out_init(&c->out, f);
+    return 0;
+}
+
+int acbb_cli_file_close(acbb_cli_file *c)
+{
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_out_commit(c->handle, &err);
+    c->handle = NULL;
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        return ACBB_EXIT_INPUT;
+    }
+    if (c->out.nonfinite) {
+        fprintf(stderr, "acbb: internal error: %ld non-finite values in %s\n",
+                c->out.nonfinite, c->path);
+        return ACBB_EXIT_INTERNAL;
+    }
+    return 0;
+}

@@ -1,0 +1,36 @@
+/* acbb CLI — the exit statuses, defined once for every command.
+ *
+ *   0  converged (or the command did its job)
+ *   2  bad input: options, preset, --set edits, an ill-posed scene, an
+ *      output path that cannot be written
+ *   3  the solver did not reach steady state (output is still printed)
+ *   4  internal error: non-finite output, stdout failed, out of memory,
+ *      gnuplot missing or failing
+ * When several apply the worst (highest) one is returned. */
+#ifndef ACBB_CLI_EXIT_H
+#define ACBB_CLI_EXIT_H
+
+#include "acbb/status.h"
+
+typedef enum {
+    ACBB_EXIT_OK = 0,
+    ACBB_EXIT_INPUT = 2,
+    ACBB_EXIT_SOLVER = 3,
+    ACBB_EXIT_INTERNAL = 4,
+} acbb_cli_exit;
+
+static inline int acbb_cli_worst(int a, int b) { return a > b ? a : b; }
+
+/* The exit status for an engine status: input errors 2, out of memory 4,
+ * every solver outcome 3. */
+static inline int acbb_cli_exit_for(acbb_status st)
+{
+    switch (st) {
+    case ACBB_OK: return ACBB_EXIT_OK;
+    case ACBB_EINVAL: case ACBB_EIO: case ACBB_ILL_POSED: return ACBB_EXIT_INPUT;
+    case ACBB_ENOMEM: return ACBB_EXIT_INTERNAL;
+    default: return ACBB_EXIT_SOLVER;
+    }
+}
+
+#endif

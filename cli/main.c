@@ -1,0 +1,251 @@
+/* acbb — the command-line front end: the command table and dispatch.
+ *
+ * A thin client of the engine API. Every command is one row below: its
+ * name, positional arguments, summary, the options it accepts and its
+ * handler; args.c parses every command's arguments from that row and
+ * prints its usage from it. Adding a command = one row + one handler
+ * (README "Working on acbb"). The locale is never set, so LC_NUMERIC stays
+ * "C" and presets, CSV and JSON always use a decimal point. */
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include "args.h"
+#include "commands.h"
+#include "exit.h"
+#include "presets.h"
+#include "tui.h"
+#include "report.h"
+
+#ifndef ACBB_VERSION
+#define ACBB_VERSION "unknown"
+#endif
+
+#define O(x) CLI_BIT(CLI_OPT_##x)
+#define SCENE_OPTS O(SET)
+
+static int cmd_help(const acbb_cli_args *a);
+static int cmd_version(const acbb_cli_args *a);
+static int cmd_tui(const acbb_cli_args *a);
+static int cmd_report(const acbb_cli_args *a);
+
+const acbb_cli_command acbb_cli_commands[] = {
+    { "tui", NULL, "[PRESET]", "the terminal workbench (also `acbb` alone)",
+      "Environment: ACBB_TUI_EXIT_AFTER_STEADY=1 as --exit-after-steady;\n"
+      "ACBB_TUI_ACCURACY_KNOBS=k1,k2 limits the knobs of the accuracy screen's\n"
+      "benchmark (b). Inside, press ? for every key.\n",
+      O(PACE) | O(PLOT_DIR) | O(EXIT_AFTER_STEADY), 0, 1, -1, cmd_tui },
+    { "run", NULL, "PRESET", "run the coupled model to thermal steady state",
+      "--csv writes one row per coupled step; --plot FILE.png writes the temperature\n"
+      "plot there and the other kinds next to it (FILE-losses.png, ...).\n",
+      SCENE_OPTS | O(JSON) | O(CSV) | O(QUIET) | O(PLOT), 1, 1, 0, acbb_cli_cmd_run },
+    { "check", NULL, "PRESET", "validate the preset and the edits without running", NULL,
+      SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_check },
+    { "sweep", NULL, "PRESET", "one run per value of a parameter, in parallel",
+      "e.g. acbb sweep 7008C --param operating.axial_load_N --values 200,500,1000\n",
+      SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS), 1, 1, 0,
+      acbb_cli_cmd_sweep },
+    { "study", NULL, "PRESET", "TE vs WTE: with and without thermal expansion",
+      "Loads 50..1000 N at the preset's speed, speeds 2000..16000 rpm at 100 N\n"
+      "and at 1000 N.\n",
+      SCENE_OPTS | O(CSV) | O(JOBS), 1, 1, 0, acbb_cli_cmd_study },
+    { "plot", NULL, "PRESET", "run the scene and plot it through gnuplot",
+      "--kind all writes every kind, FILE-<kind>.png next to --out FILE.png.\n",
+      SCENE_OPTS | O(KIND) | O(OUT) | O(DUMB) | O(SIZE), 1, 1, 0, acbb_cli_plot },
+    { "bench", "speed", "[PRESET]",
+      "wall time of one run and of the 8-load sweep",
+      "Without PRESET: 7008C. --repeat defaults to 5; 1 thread, then every CPU.\n",
+      SCENE_OPTS | O(REPEAT), 0, 1, 0, acbb_cli_cmd_bench_speed },
+    { "bench", "accuracy", "PRESET",
+      "error vs wall time, one fidelity knob at a time",
+      "--repeat defaults to 3 (1..1000). Exit 3 when a setting did not converge,\n"
+      "4 when the plot could not be made (the table is still printed).\n",
+      SCENE_OPTS | O(REPEAT) | O(KNOBS) | O(MODELS) | O(CSV) | O(PLOT), 1, 1, 0,
+      acbb_cli_bench_accuracy },
+    { "report", NULL, "PRESET",
+      "the seed's conclusions (MODEL.md 12): held or not",
+      "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n",
+      SCENE_OPTS | O(JSON) | O(MD), 1, 1, 0, cmd_report },
+    { "presets", NULL, "[DIR]", "the preset search path and the presets in it",
+      NULL, 0, 0, 1, -1, acbb_cli_cmd_presets },
+    { "keys", NULL, "", "every scene key with unit, range and help", NULL, 0, 0, 0, -1,
+      acbb_cli_cmd_keys },
+    { "help", NULL, "[COMMAND]", "this overview, or one command's usage", NULL, 0, 0, 2, -1,
+      cmd_help },
+    { "version", NULL, "", "print the version (also --version)", NULL, 0, 0, 0, -1,
+      cmd_version },
+};
+const size_t acbb_cli_n_commands = sizeof acbb_cli_commands / sizeof acbb_cli_commands[0];
+
+static void overview(FILE *f)
+{
+    fputs("usage: acbb [COMMAND [ARGS]]     (no command: the TUI on 7008C)\n\ncommands:\n", f);
+    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
+        const acbb_cli_command *c = &acbb_cli_commands[i];
+        char head[40];
+        snprintf(head, sizeof head, "%s%s%s %s", c->name, c->sub ? " " : "",
+                 c->sub ? c->sub : "", c->args);
+        fprintf(f, "  %-24s%s\n", head, c->summary);
+    }
+    fputs("\n`acbb help COMMAND` or `acbb COMMAND --help` shows its options.\n"
+          "PRESET is a file, or a name (7008C) looked up in ~/.config/acbb/presets,\n"
+          "./presets and the installed presets (`acbb presets` lists them).\n"
+          "--set edits use preset units, e.g. --set operating.axial_load_N=200.\n"
+          "\nexit status: 0 converged, 2 bad input or ill-posed scene,\n"
+          "3 solver did not reach steady state, 4 internal error or gnuplot failure\n", f);
+}
+
+/* The closest command name, or NULL when none is near. */
+static const char *near_command(const char *name)
+{
+    size_t best = 3, len = strlen(name);
+    const char *pick = NULL;
+    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
+        const char *n = acbb_cli_commands[i].name;
+        size_t d = acbb_cli_distance(name, len, n, strlen(n));
+        if (d < best || (d == best && !pick && d <= len / 3)) best = d, pick = n;
+    }
+    return pick;
+}
+
+static int unknown_command(const char *name)
+{
+    const char *near = near_command(name);
+    fprintf(stderr, "acbb: unknown command '%s'", name);
+    if (near) fprintf(stderr, "; did you mean '%s'?", near);
+    fputs("\n\n", stderr);
+    overview(stderr);
+    return ACBB_EXIT_INPUT;
+}
+
+/* The row for argv[1] (and argv[2] for a two-word command); *first is
+ * where its arguments start. NULL (message printed) when there is none. */
+static const acbb_cli_command *find_command(int argc, char **argv, int *first, int *rc)
+{
+    bool name_known = false;
+    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
+        const acbb_cli_command *c = &acbb_cli_commands[i];
+        if (strcmp(c->name, argv[1]) != 0) continue;
+        name_known = true;
+        if (!c->sub) {
+            *first = 2;
+            return c;
+        }
+        if (argc > 2 && strcmp(argv[2], c->sub) == 0) {
+            *first = 3;
+            return c;
+        }
+    }
+    if (!name_known) {
+        *rc = unknown_command(argv[1]);
+        return NULL;
+    }
+    fprintf(stderr, "acbb: %s: expected one of:\n", argv[1]);
+    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
+        if (strcmp(acbb_cli_commands[i].name, argv[1]) != 0) continue;
+        fputs("  ", stderr);
+        acbb_cli_print_synopsis(stderr, &acbb_cli_commands[i]);
+        fputc('\n', stderr);
+    }
+    *rc = ACBB_EXIT_INPUT;
+    return NULL;
+}
+
+static int cmd_help(const acbb_cli_args *a)
+{
+    if (a->n_pos == 0) {
+        overview(stdout);
+        return 0;
+    }
+    bool found = false;
+    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
+        const acbb_cli_command *c = &acbb_cli_commands[i];
+        if (strcmp(c->name, a->pos[0]) != 0) continue;
+        if (a->n_pos > 1 && (!c->sub || strcmp(c->sub, a->pos[1]) != 0)) continue;
+        if (found) fputs("\n", stdout);
+        acbb_cli_print_usage(stdout, c);
+        found = true;
+    }
+    return found ? 0 : unknown_command(a->pos[0]);
+}
+
+static int cmd_version(const acbb_cli_args *a)
+{
+    (void)a;
+    printf("acbb %s\n", ACBB_VERSION);
+    return 0;
+}
+
+/* The TUI keeps its own argument loop (ui/tui.c); this hands it the parsed
+ * options and the preset, resolved through the search path (presets.h).
+ * Without one it opens 7008C from that path; when none is found the TUI
+ * starts from its built-in default scene. */
+static int cmd_tui(const acbb_cli_args *a)
+{
+    char path[CLI_PATH_MAX];
+    const char *argv[8] = { "tui" };
+    int argc = 1;
+    if (a->val[CLI_OPT_PACE]) argv[argc++] = "--pace", argv[argc++] = a->val[CLI_OPT_PACE];
+    if (a->val[CLI_OPT_PLOT_DIR])
+        argv[argc++] = "--plot-dir", argv[argc++] = a->val[CLI_OPT_PLOT_DIR];
+    if (a->val[CLI_OPT_EXIT_AFTER_STEADY]) argv[argc++] = "--exit-after-steady";
+    const char *want = a->n_pos ? a->pos[0] : "7008C";
+    if (acbb_cli_resolve_preset(want, path, sizeof path, false) == 0) argv[argc++] = path;
+    else if (a->n_pos) argv[argc++] = want;   /* the TUI reports it */
+    argv[argc] = NULL;
+    return acbb_tui_main(argc, (char **)argv);
+}
+
+/* `report` keeps its own parser (src/cli_report.c, being replaced); the
+ * table checks the options first and resolves the preset. */
+static int cmd_report(const acbb_cli_args *a)
+{
+    const char **argv = calloc(a->n_sets * 2 + 8, sizeof *argv);
+    if (!argv) return ACBB_EXIT_INTERNAL;
+    int argc = 0;
+    argv[argc++] = "report";
+    argv[argc++] = a->preset;
+    for (size_t i = 0; i < a->n_sets; i++) argv[argc++] = "--set", argv[argc++] = a->sets[i];
+    if (a->val[CLI_OPT_JSON]) argv[argc++] = "--json";
+    if (a->val[CLI_OPT_MD]) argv[argc++] = "--md", argv[argc++] = a->val[CLI_OPT_MD];
+    int rc = acbb_cli_report(argc, (char **)argv);
+    free(argv);
+    return rc;
+}
+
+static bool is_flag(const char *s, const char *lng, const char *shrt)
+{
+    return strcmp(s, lng) == 0 || (shrt && strcmp(s, shrt) == 0);
+}
+
+int main(int argc, char **argv)
+{
+    /* The default GSL handler aborts the process (common rules). */
+    gsl_set_error_handler_off();
+    char *tui_alone[] = { argv[0], "tui", NULL };
+    if (argc < 2) {
+        argc = 2;
+        argv = tui_alone;
+    }
+    if (is_flag(argv[1], "--help", "-h")) {
+        overview(stdout);
+        return 0;
+    }
+    if (is_flag(argv[1], "--version", NULL)) return cmd_version(NULL);
+    int first = 2, rc = 0;
+    const acbb_cli_command *c = find_command(argc, argv, &first, &rc);
+    if (!c) return rc;
+    acbb_cli_args *a = calloc(1, sizeof *a);
+    const char **sets = calloc((size_t)argc, sizeof *sets);
+    if (!a || !sets) {
+        free(a);
+        free(sets);
+        return ACBB_EXIT_INTERNAL;
+    }
+    a->sets = sets;
+    rc = acbb_cli_parse(c, argc, argv, first, a);
+    if (rc == 0) rc = c->run(a);
+    else if (rc < 0) rc = 0;     /* --help was printed */
+    free(sets);
+    free(a);
+    return rc;
+}
