@@ -1,0 +1,275 @@
+/* acbb — scene cross-field validation: every rule names the keys involved,
+ * their values in preset units and the reason. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "acbb/units.h"
+#include "scene_internal.h"
+
+/* ---- cross-field validation ---- */
+
+/* Current value of section.key in preset units, for messages. */
+static const char *show(const acbb_scene *s, const char *section, const char *key, char *buf)
+{
+    const acbb_sfield *f = acbb_sf_find(section, key);
+    acbb_scene_field_format(s, f ? (size_t)(f - acbb_sf_table) : acbb_sf_n, buf, 40);
+    return buf;
+}
+
+/* Raceway diameters d_i, d_o from the free contact angle (MODEL.md section 1):
+ * A0 = lambda_i + lambda_o - D, P_d = 2 A0 (1 - cos alpha0). */
+static void raceway_diameters(const acbb_scene *s, double *di, double *d_o)
+{
+    double A0 = s->inner_groove_radius + s->outer_groove_radius - s->ball_diameter;
+    double Pd = 2.0 * A0 * (1.0 - cos(s->contact_angle0));
+    *di = s->pitch_diameter - s->ball_diameter - 0.5 * Pd;
+    *d_o = s->pitch_diameter + s->ball_diameter + 0.5 * Pd;
+}
+
+/* Every field inside its range (a Scene may be built in code, not parsed).
+ * Compared in SI: x -> x * scale is monotone, so this agrees with the
+ * check on the preset value at load time. */
+static acbb_status rule_ranges(const acbb_scene *s, acbb_error *err)
+{
+    for (size_t i = 0; i < acbb_sf_n; i++) {
+        const acbb_sfield *f = &acbb_sf_table[i];
+        char val[40], why[160];
+        if (f->info.type == ACBB_FIELD_ENUM) {
+            int v = acbb_sf_get_int(s, f);
+            if (v < 0 || (size_t)v >= acbb_sf_n_choices(f))
+                return acbb_error_set(err, ACBB_EINVAL, "%s.%s = %d: not a valid choice",
+                                      f->info.section, f->info.key, v);
+            continue;
+        }
+        if (f->info.type == ACBB_FIELD_BOOL) continue;
+        double v = f->info.type == ACBB_FIELD_REAL ? acbb_sf_get_real(s, f) : acbb_sf_get_int(s, f);
+        if (!isfinite(v)) {
+            acbb_scene_field_format(s, i, val, sizeof val);
+            return acbb_error_set(err, ACBB_EINVAL, "%s.%s = %s: must be a finite number",
+                                  f->info.section, f->info.key, val);
+        }
+        acbb_sfield scaled = *f;
+        scaled.info.min *= f->scale;
+        scaled.info.max *= f->scale;
+        acbb_sf_range_reason(&scaled, v, why, sizeof why);
+        if (why[0]) {
+            acbb_scene_field_format(s, i, val, sizeof val);
+            acbb_sf_range_reason(f, v / f->scale, why, sizeof why);
+            return acbb_error_set(err, ACBB_EINVAL, "%s.%s = %s: %s", f->info.section,
+                                  f->info.key, val, why);
+        }
+    }
+    return ACBB_OK;
+}
+
+/* f = lambda / D >= 0.505 (MODEL.md section 11: near-conformal grooves make
+ * A -> 0); this also implies groove radius > ball radius. */
+static acbb_status groove_rule(const acbb_scene *s, const char *which, double lambda,
+                               acbb_error *err)
+{
+    double f = lambda / s->ball_diameter;
+    if (f >= 0.505) return ACBB_OK;
+    char key[48], a[40], b[40];
+    snprintf(key, sizeof key, "%s_groove_radius_mm", which);
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.%s = %s with ball_diameter_mm = %s: groove curvature "
+                          "f = radius / ball_diameter = %.4g must be >= 0.505 "
+                          "(MODEL.md section 11)",
+                          key, show(s, "bearing", key, a), show(s, "bearing", "ball_diameter_mm", b),
+                          f);
+}
+
+static acbb_status rule_inner_groove(const acbb_scene *s, acbb_error *err)
+{
+    return groove_rule(s, "inner", s->inner_groove_radius, err);
+}
+
+static acbb_status rule_outer_groove(const acbb_scene *s, acbb_error *err)
+{
+    return groove_rule(s, "outer", s->outer_groove_radius, err);
+}
+
+/* The balls must fit on the pitch circle with a small gap for the cage. */
+static acbb_status rule_balls_fit(const acbb_scene *s, acbb_error *err)
+{
+    double used = s->n_balls * s->ball_diameter, room = 0.98 * ACBB_PI * s->pitch_diameter;
+    if (used <= room) return ACBB_OK;
+    char a[40], b[40], c[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.n_balls = %s with ball_diameter_mm = %s, pitch_diameter_mm = %s: "
+                          "the balls do not fit on the pitch circle (n_balls * ball_diameter = "
+                          "%.4g mm > 0.98 pi pitch_diameter = %.4g mm)",
+                          show(s, "bearing", "n_balls", a), show(s, "bearing", "ball_diameter_mm", b),
+                          show(s, "bearing", "pitch_diameter_mm", c), used * 1e3, room * 1e3);
+}
+
+/* The inner ring needs material between bore and raceway. */
+static acbb_status rule_inner_ring(const acbb_scene *s, acbb_error *err)
+{
+    double di, d_o;
+    raceway_diameters(s, &di, &d_o);
+    if (s->bore < di) return ACBB_OK;
+    char a[40], b[40], c[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.bore_mm = %s with pitch_diameter_mm = %s, ball_diameter_mm = %s: "
+                          "the inner ring has no material (bore must be < the inner raceway "
+                          "diameter d_i = %.6g mm, MODEL.md section 1)",
+                          show(s, "bearing", "bore_mm", a), show(s, "bearing", "pitch_diameter_mm", b),
+                          show(s, "bearing", "ball_diameter_mm", c), di * 1e3);
+}
+
+static acbb_status rule_outer_ring(const acbb_scene *s, acbb_error *err)
+{
+    double di, d_o;
+    raceway_diameters(s, &di, &d_o);
+    if (s->outer_diameter > d_o) return ACBB_OK;
+    char a[40], b[40], c[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.outer_diameter_mm = %s with pitch_diameter_mm = %s, "
+                          "ball_diameter_mm = %s: the outer ring has no material (outer_diameter "
+                          "must be > the outer raceway diameter d_o = %.6g mm, MODEL.md section 1)",
+                          show(s, "bearing", "outer_diameter_mm", a),
+                          show(s, "bearing", "pitch_diameter_mm", b),
+                          show(s, "bearing", "ball_diameter_mm", c), d_o * 1e3);
+}
+
+/* Lands: the inner land between the inner raceway and the pitch circle,
+ * the outer land between the pitch circle and the outer raceway. */
+static acbb_status rule_inner_land(const acbb_scene *s, acbb_error *err)
+{
+    double di, d_o;
+    raceway_diameters(s, &di, &d_o);
+    if (s->inner_land_diameter > di && s->inner_land_diameter < s->pitch_diameter) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.inner_land_diameter_mm = %s with pitch_diameter_mm = %s: the "
+                          "inner land must lie between the inner raceway (d_i = %.6g mm) and "
+                          "the pitch circle",
+                          show(s, "bearing", "inner_land_diameter_mm", a),
+                          show(s, "bearing", "pitch_diameter_mm", b), di * 1e3);
+}
+
+static acbb_status rule_outer_land(const acbb_scene *s, acbb_error *err)
+{
+    double di, d_o;
+    raceway_diameters(s, &di, &d_o);
+    if (s->outer_land_diameter > s->pitch_diameter && s->outer_land_diameter < d_o) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.outer_land_diameter_mm = %s with pitch_diameter_mm = %s: the "
+                          "outer land must lie between the pitch circle and the outer raceway "
+                          "(d_o = %.6g mm)",
+                          show(s, "bearing", "outer_land_diameter_mm", a),
+                          show(s, "bearing", "pitch_diameter_mm", b), d_o * 1e3);
+}
+
+static acbb_status rule_cage_diameter(const acbb_scene *s, acbb_error *err)
+{
+    if (s->cage_diameter > s->inner_land_diameter && s->cage_diameter < s->outer_land_diameter)
+        return ACBB_OK;
+    char a[40], b[40], c[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.cage_diameter_mm = %s with inner_land_diameter_mm = %s, "
+                          "outer_land_diameter_mm = %s: the cage must lie between the two lands",
+                          show(s, "bearing", "cage_diameter_mm", a),
+                          show(s, "bearing", "inner_land_diameter_mm", b),
+                          show(s, "bearing", "outer_land_diameter_mm", c));
+}
+
+static acbb_status rule_ring_width(const acbb_scene *s, acbb_error *err)
+{
+    if (s->width > s->ball_diameter) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.width_mm = %s with ball_diameter_mm = %s: the rings must be "
+                          "wider than the balls",
+                          show(s, "bearing", "width_mm", a), show(s, "bearing", "ball_diameter_mm", b));
+}
+
+static acbb_status rule_cage_width(const acbb_scene *s, acbb_error *err)
+{
+    if (s->cage_width <= s->width) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.cage_width_mm = %s with width_mm = %s: the cage must not be "
+                          "wider than the rings",
+                          show(s, "bearing", "cage_width_mm", a), show(s, "bearing", "width_mm", b));
+}
+
+static acbb_status rule_shaft_bore(const acbb_scene *s, acbb_error *err)
+{
+    if (s->shaft_bore < s->bore) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "mounting.shaft_bore_mm = %s with bearing.bore_mm = %s: the shaft bore "
+                          "must be smaller than the bearing bore",
+                          show(s, "mounting", "shaft_bore_mm", a), show(s, "bearing", "bore_mm", b));
+}
+
+/* Oil thins when heated: the Walther law needs nu100 < nu40 (MODEL.md section 5). */
+static acbb_status rule_viscosity(const acbb_scene *s, acbb_error *err)
+{
+    if (s->oil_nu100 < s->oil_nu40) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "lubricant.oil_nu100_mm2_s = %s with oil_nu40_mm2_s = %s: the viscosity "
+                          "at 100 C must be lower than at 40 C",
+                          show(s, "lubricant", "oil_nu100_mm2_s", a),
+                          show(s, "lubricant", "oil_nu40_mm2_s", b));
+}
+
+static acbb_status rule_time_step(const acbb_scene *s, acbb_error *err)
+{
+    if (s->time_step <= s->max_time) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "fidelity.time_step_s = %s with thermal.max_time_s = %s: the time step must not "
+                          "exceed the time limit",
+                          show(s, "fidelity", "time_step_s", a), show(s, "thermal", "max_time_s", b));
+}
+
+static acbb_status rule_temp_limit(const acbb_scene *s, acbb_error *err)
+{
+    if (s->temp_limit_C > s->ambient_C) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "thermal.temp_limit_C = %s with operating.ambient_C = %s: the runaway "
+                          "limit must be above the ambient temperature",
+                          show(s, "thermal", "temp_limit_C", a), show(s, "operating", "ambient_C", b));
+}
+
+/* Pure radial load on one angular-contact bearing with a free axial DOF has
+ * no equilibrium (MODEL.md section 11): require F_x >= 1.25 F_r tan(alpha0). */
+static acbb_status rule_radial_load(const acbb_scene *s, acbb_error *err)
+{
+    double need = 1.25 * s->radial_load * tan(s->contact_angle0);
+    if (s->preload != ACBB_PRELOAD_FORCE || s->axial_load >= need) return ACBB_OK;
+    char a[40], b[40];
+    return acbb_error_set(err, ACBB_ILL_POSED,
+                          "operating.radial_load_N = %s with axial_load_N = %s: a single "
+                          "angular-contact bearing needs axial_load_N >= %.4g N "
+                          "(1.25 Fr tan(alpha0)) or mounting.preload = displacement",
+                          show(s, "operating", "radial_load_N", a),
+                          show(s, "operating", "axial_load_N", b), need);
+}
+
+typedef acbb_status (*rule_fn)(const acbb_scene *, acbb_error *);
+
+/* Order matters: ranges first (later rules divide by them), the grooves
+ * before anything that uses the raceway diameters, ill-posedness last. */
+static const rule_fn k_rules[] = {
+    rule_ranges, rule_inner_groove, rule_outer_groove, rule_balls_fit, rule_inner_ring,
+    rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
+    rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
+    rule_radial_load,
+};
+
+acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)
+{
+    for (size_t i = 0; i < sizeof k_rules / sizeof k_rules[0]; i++) {
+        acbb_status rc = k_rules[i](s, err);
+        if (rc != ACBB_OK) return rc;
+    }
+    return ACBB_OK;
+}

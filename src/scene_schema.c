@@ -1,0 +1,422 @@
+/* acbb — scene schema: the table of preset keys, defaults, field access,
+ * number formatting and ranges (scene_internal.h says how the parts share
+ * the table).
+ *
+ * Unit conversion: value_SI = value_preset * scale. No key needs an offset:
+ * temperatures stay in degrees Celsius inside a Scene (see scene.h).
+ *
+ * Locale: numbers are read with strtod and written with snprintf, and both
+ * follow LC_NUMERIC. A program using this module must leave LC_NUMERIC at
+ * "C" (set only LC_CTYPE from the environment), or presets would be read and
+ * written with decimal commas. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "acbb/limits.h"
+#include "acbb/units.h"
+#include "scene_internal.h"
+/* Enum fields are read and written through an int (memcpy, no aliasing). */
+_Static_assert(sizeof(acbb_model_level) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_geom_mode) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_race_control) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_hertz_mode) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_visc_model) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_traction_model) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_loss_form) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_hyst_axis) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_network_kind) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_preload_mode) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_thermal_mode) == sizeof(int), "enum size");
+
+/* Enum choices, in the order of the C enum values in scene.h. */
+static const char *const k_model[] = {"static", "quasi-static", "quasi-dynamic", "dynamic", NULL};
+static const char *const k_hertz[] = {"exact", "bh77", "hb83", NULL};
+static const char *const k_clean_seed[] = {"clean", "seed", NULL};
+static const char *const k_race[] = {"outer", "inner", "equal", "auto", NULL};
+static const char *const k_hyst[] = {"major", "minor", NULL};
+static const char *const k_visc[] = {"roelands", "barus", "const", NULL};
+static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
+static const char *const k_preload[] = {"force", "displacement", NULL};
+static const char *const k_network[] = {"46", "7", NULL};
+static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
+
+#define REAL(sec, key, unit, member, scale, def, ends, lo, hi, help) \
+    {{sec, key, ACBB_FIELD_REAL, unit, lo, hi, NULL, help}, \
+     offsetof(acbb_scene, member), scale, def, ends}
+#define INT(sec, key, member, def, lo, hi, help) \
+    {{sec, key, ACBB_FIELD_INT, "", lo, hi, NULL, help}, \
+     offsetof(acbb_scene, member), 1.0, def, CC}
+#define BOOL(sec, key, member, def, help) \
+    {{sec, key, ACBB_FIELD_BOOL, "", 0, 1, NULL, help}, \
+     offsetof(acbb_scene, member), 1.0, def, CC}
+#define ENUM(sec, key, member, choices, def, help) \
+    {{sec, key, ACBB_FIELD_ENUM, "", 0, \
+      (double)(sizeof(choices) / sizeof(choices[0]) - 2), choices, help}, \
+     offsetof(acbb_scene, member), 1.0, def, CC}
+
+/* Six keys per part of [materials]. */
+#define MATERIAL(part, vE, vnu, vrho, vcp, vk, vchi) \
+    REAL("materials", #part "_E_GPa", "GPa", part.E, 1e9, vE, OC, 0, 1000, \
+         "Young's modulus of the " #part), \
+    REAL("materials", #part "_poisson", "", part.nu, 1.0, vnu, OO, 0, 0.5, \
+         "Poisson ratio of the " #part), \
+    REAL("materials", #part "_density_kg_m3", "kg/m^3", part.rho, 1.0, vrho, OC, 0, 30000, \
+         "density of the " #part), \
+    REAL("materials", #part "_cp_J_kgK", "J/(kg K)", part.cp, 1.0, vcp, OC, 0, 10000, \
+         "specific heat of the " #part), \
+    REAL("materials", #part "_k_W_mK", "W/(m K)", part.k, 1.0, vk, OC, 0, 1000, \
+         "thermal conductivity of the " #part), \
+    REAL("materials", #part "_expansion_ppm_K", "ppm/K", part.chi, 1e-6, vchi, CC, 0, 100, \
+         "linear thermal expansion coefficient of the " #part)
+
+/* The schema. Defaults: MODEL.md section 10 (the 7008C case of the seed). */
+const acbb_sfield acbb_sf_table[] = {
+    REAL("bearing", "pitch_diameter_mm", "mm", pitch_diameter, 1e-3, 54, OC, 0, 2000,
+         "pitch diameter d_m (MODEL.md section 1)"),
+    REAL("bearing", "ball_diameter_mm", "mm", ball_diameter, 1e-3, 6.35, OC, 0, 100,
+         "ball diameter D"),
+    INT("bearing", "n_balls", n_balls, 21, 3, 64, "number of balls Z (the engine holds up to 64)"),
+    REAL("bearing", "inner_groove_radius_mm", "mm", inner_groove_radius, 1e-3, 3.43, OC, 0, 100,
+         "inner groove radius lambda_i (needs lambda_i / D >= 0.505)"),
+    REAL("bearing", "outer_groove_radius_mm", "mm", outer_groove_radius, 1e-3, 3.43, OC, 0, 100,
+         "outer groove radius lambda_o (needs lambda_o / D >= 0.505)"),
+    REAL("bearing", "contact_angle_deg", "deg", contact_angle0, ACBB_DEG, 15, OC, 0, 45,
+         "free contact angle alpha0; sets the clearance P_d (MODEL.md section 1)"),
+    REAL("bearing", "bore_mm", "mm", bore, 1e-3, 40, OC, 0, 2000,
+         "bearing bore (inside diameter of the inner ring)"),
+    REAL("bearing", "outer_diameter_mm", "mm", outer_diameter, 1e-3, 68, OC, 0, 2000,
+         "bearing outside diameter"),
+    REAL("bearing", "width_mm", "mm", width, 1e-3, 15, OC, 0, 500, "ring width B_w"),
+    REAL("bearing", "cage_width_mm", "mm", cage_width, 1e-3, 10.1, OC, 0, 500, "cage width W_c"),
+    REAL("bearing", "cage_diameter_mm", "mm", cage_diameter, 1e-3, 57.7, OC, 0, 2000,
+         "cage outside (guiding) diameter d_c"),
+    REAL("bearing", "inner_land_diameter_mm", "mm", inner_land_diameter, 1e-3, 49.9, OC, 0, 2000,
+         "inner ring land diameter d_1"),
+    REAL("bearing", "outer_land_diameter_mm", "mm", outer_land_diameter, 1e-3, 58.1, OC, 0, 2000,
+         "outer ring land diameter d_2"),
+    REAL("bearing", "roughness_race_um", "um", roughness_race, 1e-6, 0.34, CC, 0, 10,
+         "RMS roughness of the raceways"),
+    REAL("bearing", "roughness_ball_um", "um", roughness_ball, 1e-6, 0.10, CC, 0, 10,
+         "RMS roughness of the balls"),
+
+    MATERIAL(ball, 207, 0.3, 7810, 450, 40.1, 12.5),
+    MATERIAL(ring, 207, 0.3, 7810, 450, 40.1, 12.5),
+    MATERIAL(shaft, 212, 0.298, 7860, 485, 42.4, 11.5),
+    MATERIAL(housing, 143, 0.27, 7300, 510, 45.0, 10.5),
+    MATERIAL(cage, 206, 0.254, 7830, 460, 44.0, 11.7),
+
+    REAL("lubricant", "oil_density_kg_m3", "kg/m^3", oil_density, 1.0, 876, OC, 0, 2000,
+         "oil density at 20 C"),
+    REAL("lubricant", "oil_nu40_mm2_s", "mm^2/s", oil_nu40, 1e-6, 30, CC, 1, 10000,
+         "oil kinematic viscosity at 40 C (Walther law, MODEL.md section 5)"),
+    REAL("lubricant", "oil_nu100_mm2_s", "mm^2/s", oil_nu100, 1e-6, 5.3, CC, 1, 10000,
+         "oil kinematic viscosity at 100 C (Walther law)"),
+    REAL("lubricant", "oil_eta_const_Pa_s", "Pa s", oil_eta_const, 1.0, 0.2, OC, 0, 100,
+         "oil viscosity used when viscosity_model = const"),
+    REAL("lubricant", "oil_alpha_pv_per_GPa", "1/GPa", oil_alpha_pv, 1e-9, 20, CC, 0, 100,
+         "pressure-viscosity coefficient alpha_pv"),
+    REAL("lubricant", "oil_k_W_mK", "W/(m K)", oil_k, 1.0, 0.13, OC, 0, 10,
+         "oil thermal conductivity"),
+    REAL("lubricant", "oil_cp_J_kgK", "J/(kg K)", oil_cp, 1.0, 1950, OC, 0, 10000,
+         "oil specific heat"),
+    REAL("lubricant", "air_eta_Pa_s", "Pa s", air_eta, 1.0, 2e-5, OC, 0, 1e-3, "air viscosity"),
+    REAL("lubricant", "air_density_kg_m3", "kg/m^3", air_density, 1.0, 1.128, OC, 0, 100,
+         "air density"),
+    REAL("lubricant", "air_k_W_mK", "W/(m K)", air_k, 1.0, 0.027, OC, 0, 10,
+         "air thermal conductivity"),
+    REAL("lubricant", "air_cp_J_kgK", "J/(kg K)", air_cp, 1.0, 1007, OC, 0, 10000,
+         "air specific heat"),
+    REAL("lubricant", "air_prandtl", "", air_pr, 1.0, 0.71, OC, 0, 10, "air Prandtl number"),
+    REAL("lubricant", "mixture_k_W_mK", "W/(m K)", mix_k, 1.0, 0.04, OC, 0, 10,
+         "oil-air mixture conductivity k_d"),
+    REAL("lubricant", "air_flow_L_min", "L/min", q_air, 1e-3 / 60.0, 60, CC, 0, 10000,
+         "oil-air lubrication: air flow"),
+    REAL("lubricant", "oil_flow_ml_h", "ml/h", q_oil, 1e-6 / 3600.0, 0.4, CC, 0, 100000,
+         "oil-air lubrication: oil flow"),
+    REAL("lubricant", "boundary_friction", "", mu_bd, 1.0, 0.10, CC, 0, 1,
+         "boundary (asperity) friction coefficient mu_bd"),
+    REAL("lubricant", "limiting_shear_ratio", "", lambda_lim, 1.0, 0.07, OC, 0, 1,
+         "limiting shear stress / pressure Lambda_L"),
+    REAL("lubricant", "eyring_stress_MPa", "MPa", tau_eyring, 1e6, 5, OC, 0, 1000,
+         "Eyring stress tau_E"),
+    REAL("lubricant", "hysteresis_loss", "", hysteresis, 1.0, 0.007, CC, 0, 1,
+         "elastic hysteresis loss coefficient epsilon"),
+    REAL("lubricant", "drag_coefficient", "", drag_cd, 1.0, 0.45, CC, 0, 10,
+         "drag coefficient C_D of a ball in the oil-air mixture"),
+    ENUM("lubricant", "viscosity_model", visc, k_visc, ACBB_VISC_ROELANDS,
+         "pressure-viscosity law (const: oil_eta_const_Pa_s everywhere)"),
+    ENUM("lubricant", "traction_model", traction, k_traction, ACBB_TRACTION_EYRING_CAP,
+         "film traction law (MODEL.md section 5)"),
+
+    REAL("mounting", "shaft_bore_mm", "mm", shaft_bore, 1e-3, 25, CC, 0, 2000,
+         "hollow-shaft bore d_s (0 = solid shaft)"),
+    REAL("mounting", "h_fit_outer_W_m2K", "W/(m^2 K)", h_fit_outer, 1.0, 5000, OC, 0, 1e7,
+         "outer ring / housing contact conductance"),
+    REAL("mounting", "h_fit_inner_W_m2K", "W/(m^2 K)", h_fit_inner, 1.0, 20000, OC, 0, 1e7,
+         "inner ring / shaft contact conductance"),
+    REAL("mounting", "h_face_W_m2K", "W/(m^2 K)", h_face, 1.0, 3000, OC, 0, 1e7,
+         "clamped ring face conductance"),
+    REAL("mounting", "h_natural_W_m2K", "W/(m^2 K)", h_natural, 1.0, 10, OC, 0, 10000,
+         "natural convection on the housing exterior"),
+    ENUM("mounting", "preload", preload, k_preload, ACBB_PRELOAD_FORCE,
+         "force: axial load applied (dx free); displacement: dx fixed by preload_N"),
+    REAL("mounting", "preload_N", "N", preload_force, 1.0, 300, CC, 0, 1e6,
+         "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
+
+    REAL("operating", "inner_speed_rpm", "rpm", inner_speed, ACBB_RPM, 15000, CC, 0, 100000,
+         "inner ring speed"),
+    REAL("operating", "axial_load_N", "N", axial_load, 1.0, 1000, CC, 0, 1e6,
+         "axial load F_x on the inner ring"),
+    REAL("operating", "radial_load_N", "N", radial_load, 1.0, 0, CC, 0, 1e6,
+         "radial load F_z"),
+    REAL("operating", "moment_load_Nm", "N m", moment_load, 1.0, 0, CC, -1e5, 1e5,
+         "tilting moment M_y"),
+    REAL("operating", "ambient_C", "C", ambient_C, 1.0, 26, CC, -50, 300,
+         "ambient = assembly reference temperature"),
+
+    BOOL("effects", "thermal_expansion", thermal_expansion, 1,
+         "thermal expansion of the parts (TE; off = WTE)"),
+    BOOL("effects", "centrifugal", centrifugal, 1, "ball centrifugal force"),
+    BOOL("effects", "gyroscopic", gyroscopic, 1, "gyroscopic moment on the balls"),
+    BOOL("effects", "ring_centrifugal", ring_centrifugal, 1,
+         "centrifugal growth of the inner ring"),
+    BOOL("effects", "ehl_film", ehl_film, 1, "EHL film (off: boundary friction only)"),
+    BOOL("effects", "loss_shear", loss_shear, 1, "lubricant shear loss P_L"),
+    BOOL("effects", "loss_slip", loss_slip, 1, "sliding loss P_t"),
+    BOOL("effects", "loss_spin", loss_spin, 1, "spin loss P_s"),
+    BOOL("effects", "loss_rolling", loss_rolling, 1, "rolling (hysteresis) loss P_r"),
+    BOOL("effects", "loss_drag", loss_drag, 1, "drag loss P_v"),
+    BOOL("effects", "loss_cage", loss_cage, 0,
+         "cage-land shear loss P_c (Petroff, outer-land guided cage)"),
+
+    ENUM("fidelity", "model", model, k_model, ACBB_MODEL_QUASI_DYNAMIC,
+         "ball mechanics: static Hertz ... dynamic"),
+    INT("fidelity", "contact_grid", contact_grid, 6, 2, 64,
+        "Gauss points per axis of the contact ellipse"),
+    ENUM("fidelity", "hertz", hertz, k_hertz, ACBB_HERTZ_BH77,
+         "ellipticity: exact integrals or curve fits (MODEL.md section 2)"),
+    ENUM("fidelity", "geometry", geometry, k_clean_seed, ACBB_GEOM_CLEAN,
+         "clean geometry or the seed's literal eqs 12-13"),
+    ENUM("fidelity", "race_control", race_control, k_race, ACBB_RACE_OUTER,
+         "race control hypothesis (MODEL.md section 4)"),
+    ENUM("fidelity", "loss_form", loss_form, k_clean_seed, ACBB_LOSS_CLEAN,
+         "loss equations: clean or the seed's literal form (MODEL.md section 6)"),
+    ENUM("fidelity", "hysteresis_axis", hyst_axis, k_hyst, ACBB_HYST_MAJOR,
+         "ellipse axis used in the rolling loss P_r"),
+    REAL("fidelity", "mech_tol", "", mech_tol, 1.0, 1e-8, CC, 1e-14, 1e-3,
+         "relative force residual of the mechanics solve"),
+    REAL("fidelity", "steady_tol_K_s", "K/s", steady_tol, 1.0, 1e-4, OC, 0, 1,
+         "steady state when every |dT/dt| is below this"),
+    ENUM("fidelity", "network", network, k_network, ACBB_NET_46,
+         "thermal network: 46 nodes or the 7-node teaching one"),
+    ENUM("fidelity", "thermal_mode", thermal_mode, k_thermal_mode, ACBB_THERMAL_TRANSIENT,
+         "transient (time steps) or steady (direct) thermal solve"),
+    REAL("fidelity", "time_step_s", "s", time_step, 1.0, 5, OC, 0, 3600,
+         "initial thermal time step (adaptive)"),
+
+    REAL("thermal", "max_time_s", "s", max_time, 1.0, 36000, OC, 0, 1e8,
+         "simulated time limit"),
+    INT("thermal", "max_steps", max_steps, 20000, 1, 10000000, "coupled step limit"),
+    REAL("thermal", "temp_limit_C", "C", temp_limit_C, 1.0, 150, CC, -50, 300,
+         "runaway when any node is hotter than this"),
+    REAL("thermal", "contact_multiplier", "", contact_multiplier, 1.0, 1, OC, 0, 1000,
+         "multiplier c_mv on the race-side spot resistances"),
+    REAL("thermal", "heat_partition", "", heat_partition, 1.0, 0.5, CC, 0, 1,
+         "share phi_p of contact heat to the rings (7-node network)"),
+};
+
+const size_t acbb_sf_n = sizeof acbb_sf_table / sizeof acbb_sf_table[0];
+_Static_assert(sizeof acbb_sf_table / sizeof acbb_sf_table[0] <= ACBB_SF_MAX, "raise ACBB_SF_MAX");
+
+/* ---- raw access through the table (memcpy: no type punning) ---- */
+
+double acbb_sf_get_real(const acbb_scene *s, const acbb_sfield *f)
+{
+    double v;
+    memcpy(&v, (const char *)s + f->off, sizeof v);
+    return v;
+}
+
+int acbb_sf_get_int(const acbb_scene *s, const acbb_sfield *f)
+{
+    int v;
+    memcpy(&v, (const char *)s + f->off, sizeof v);
+    return v;
+}
+
+static bool acbb_sf_get_bool(const acbb_scene *s, const acbb_sfield *f)
+{
+    bool v;
+    memcpy(&v, (const char *)s + f->off, sizeof v);
+    return v;
+}
+
+/* Store a value given in preset units (enum: index, bool: 0/1). */
+void acbb_sf_put(acbb_scene *s, const acbb_sfield *f, double v)
+{
+    char *p = (char *)s + f->off;
+    if (f->info.type == ACBB_FIELD_REAL) {
+        double si = v * f->scale;
+        memcpy(p, &si, sizeof si);
+    } else if (f->info.type == ACBB_FIELD_BOOL) {
+        bool b = v != 0.0;
+        memcpy(p, &b, sizeof b);
+    } else {
+        int i = (int)v;
+        memcpy(p, &i, sizeof i);
+    }
+}
+
+size_t acbb_sf_n_choices(const acbb_sfield *f)
+{
+    size_t n = 0;
+    while (f->info.choices[n]) n++;
+    return n;
+}
+
+/* ---- number formatting ---- */
+
+/* Cost of a candidate text: its length, exponent forms counted 2 longer so
+ * that "36000" wins over "3.6e+04" but "1e-10" over "0.0000000001". */
+static size_t text_cost(const char *t)
+{
+    return strlen(t) + (strchr(t, 'e') ? 2 : 0);
+}
+
+/* Shortest decimal text t with strtod(t) * scale == si exactly, so that
+ * load(save(s)) == s. First collect the preset numbers p near si / scale
+ * (a few ulps either side) with p * scale == si, then print each with
+ * increasing precision. An SI value that is the image of no preset number
+ * (possible when scale != 1, e.g. an rpm speed computed in rad/s) is written
+ * as %.17g of si / scale and comes back within an ulp. */
+#define ULP_WINDOW 4
+
+static void format_real(double si, double scale, char *buf, size_t n)
+{
+    if (si == 0.0) {   /* the window would step over +0 from -0 */
+        snprintf(buf, n, "0");
+        return;
+    }
+    double exact[2 * ULP_WINDOW + 1], p = si / scale;
+    int n_exact = 0;
+    for (int k = 0; k < ULP_WINDOW; k++) p = nextafter(p, -INFINITY);
+    for (int k = 0; k <= 2 * ULP_WINDOW; k++, p = nextafter(p, INFINITY))
+        if (p * scale == si) exact[n_exact++] = p;
+
+    char best[40] = "", t[40];
+    for (int prec = 1; prec <= 17; prec++) {
+        for (int c = 0; c < n_exact; c++) {
+            snprintf(t, sizeof t, "%.*g", prec, exact[c]);
+            bool same = strtod(t, NULL) * scale == si;
+            if (same && (best[0] == '\0' || text_cost(t) < text_cost(best)))
+                memcpy(best, t, sizeof t);
+        }
+    }
+    if (best[0] == '\0') snprintf(best, sizeof best, "%.17g", si / scale);
+    snprintf(buf, n, "%s", best);
+}
+
+static const char *unit_suffix(const acbb_sfield *f, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s%s", f->info.unit[0] ? " " : "", f->info.unit);
+    return buf;
+}
+
+/* Why v (preset units) is out of range; "" if it is inside. A value below
+ * the range names the lower bound only; above it, the whole range. */
+void acbb_sf_range_reason(const acbb_sfield *f, double v, char *buf, size_t n)
+{
+    const acbb_field_info *in = &f->info;
+    bool lo_open = f->ends == OC || f->ends == OO, hi_open = f->ends == CO || f->ends == OO;
+    bool below = lo_open ? v <= in->min : v < in->min;
+    bool above = hi_open ? v >= in->max : v > in->max;
+    char u[32];
+    unit_suffix(f, u, sizeof u);
+    if (below)
+        snprintf(buf, n, "must be %s %.15g%s", lo_open ? ">" : ">=", in->min, u);
+    else if (above && !lo_open && !hi_open)
+        snprintf(buf, n, "must be between %.15g and %.15g%s", in->min, in->max, u);
+    else if (above)
+        snprintf(buf, n, "must be %s %.15g and %s %.15g%s", lo_open ? ">" : ">=", in->min,
+                 hi_open ? "<" : "<=", in->max, u);
+    else
+        buf[0] = '\0';
+}
+
+/* ---- schema introspection ---- */
+
+size_t acbb_scene_field_count(void) { return acbb_sf_n; }
+
+const acbb_field_info *acbb_scene_field(size_t i)
+{
+    return i < acbb_sf_n ? &acbb_sf_table[i].info : NULL;
+}
+
+void acbb_scene_field_format(const acbb_scene *s, size_t i, char *buf, size_t n)
+{
+    if (n == 0) return;
+    buf[0] = '\0';
+    if (i >= acbb_sf_n) return;
+    const acbb_sfield *f = &acbb_sf_table[i];
+    switch (f->info.type) {
+    case ACBB_FIELD_REAL:
+        format_real(acbb_sf_get_real(s, f), f->scale, buf, n);
+        break;
+    case ACBB_FIELD_INT:
+        snprintf(buf, n, "%d", acbb_sf_get_int(s, f));
+        break;
+    case ACBB_FIELD_BOOL:
+        snprintf(buf, n, "%s", acbb_sf_get_bool(s, f) ? "on" : "off");
+        break;
+    case ACBB_FIELD_ENUM: {
+        int v = acbb_sf_get_int(s, f);
+        bool known = v >= 0 && (size_t)v < acbb_sf_n_choices(f);
+        snprintf(buf, n, "%s", known ? f->info.choices[v] : "?");
+        break;
+    }
+    }
+}
+
+void acbb_scene_field_range(size_t i, char *buf, size_t n)
+{
+    if (n == 0) return;
+    buf[0] = '\0';
+    if (i >= acbb_sf_n) return;
+    const acbb_sfield *f = &acbb_sf_table[i];
+    char u[32];
+    size_t used = 0;
+    switch (f->info.type) {
+    case ACBB_FIELD_REAL:
+    case ACBB_FIELD_INT: {
+        bool lo_open = f->ends == OC || f->ends == OO, hi_open = f->ends == CO || f->ends == OO;
+        snprintf(buf, n, "%.15g %s x %s %.15g%s", f->info.min, lo_open ? "<" : "<=",
+                 hi_open ? "<" : "<=", f->info.max, unit_suffix(f, u, sizeof u));
+        break;
+    }
+    case ACBB_FIELD_BOOL:
+        snprintf(buf, n, "on | off");
+        break;
+    case ACBB_FIELD_ENUM:
+        for (size_t c = 0; f->info.choices[c] && used < n; c++)
+            used += (size_t)snprintf(buf + used, n - used, "%s%s", c ? " | " : "",
+                                     f->info.choices[c]);
+        break;
+    }
+}
+
+const char *acbb_model_level_name(acbb_model_level m)
+{
+    return m >= ACBB_MODEL_STATIC && m <= ACBB_MODEL_DYNAMIC ? k_model[m] : "unknown";
+}
+
+void acbb_scene_default(acbb_scene *s)
+{
+    memset(s, 0, sizeof *s);
+    for (size_t i = 0; i < acbb_sf_n; i++)
+        acbb_sf_put(s, &acbb_sf_table[i], acbb_sf_table[i].def);
+}
+
+/* The schema's ball-count range must match what the engine holds. */
+_Static_assert(ACBB_MAX_BALLS == 64, "bearing.n_balls range in the schema is 3..64");
