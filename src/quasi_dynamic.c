@@ -40,7 +40,9 @@ static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
     acbb_traction_eval(c->s, c->ci, wb, wi - wm, &c->tri);
     acbb_traction_eval(c->s, c->co, wb, -wm, &c->tro);
     double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
-    double Mreq[3] = { 0.0, -c->J * wm * wb[2], c->J * wm * wb[1] };
+    /* The gyroscopic moment omega_m x J omega_b (MODEL.md 4), off with its switch. */
+    double gy = c->s->gyroscopic ? c->J : 0.0;
+    double Mreq[3] = { 0.0, -gy * wm * wb[2], gy * wm * wb[1] };
     double Ms = c->Fscale * 0.5 * c->D;
     gsl_vector_set(f, 0, (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale);
     for (int d = 0; d < 3; d++)

@@ -273,3 +273,18 @@ acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)
     }
     return ACBB_OK;
 }
+
+/* Which switches a scene cannot feel (issue: every effect honest). Static
+ * Hertz has no ball speeds, so no centrifugal force or gyroscopic moment;
+ * WTE forces every expansion to zero (MODEL.md 9), the centrifugal ring
+ * growth included; without heating the temperatures stay at ambient. */
+size_t acbb_scene_inactive_effects(const acbb_scene *s, const char **names, size_t cap)
+{
+    size_t n = 0;
+#define INACTIVE(cond, name) do { if ((cond) && n < cap) names[n++] = (name); } while (0)
+    INACTIVE(s->model == ACBB_MODEL_STATIC && s->centrifugal, "centrifugal");
+    INACTIVE(s->model == ACBB_MODEL_STATIC && s->gyroscopic, "gyroscopic");
+    INACTIVE(!s->thermal_expansion && s->ring_centrifugal, "ring_centrifugal");
+#undef INACTIVE
+    return n;
+}

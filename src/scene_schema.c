@@ -176,6 +176,8 @@ const acbb_sfield acbb_sf_table[] = {
     REAL("operating", "ambient_C", "C", ambient_C, 1.0, 26, CC, -50, 300,
          "ambient = assembly reference temperature"),
 
+    BOOL("effects", "heating", heating, 1,
+         "power losses heat the bearing (off: isothermal at ambient_C, mechanics only)"),
     BOOL("effects", "thermal_expansion", thermal_expansion, 1,
          "thermal expansion of the parts (TE; off = WTE)"),
     BOOL("effects", "centrifugal", centrifugal, 1, "ball centrifugal force"),

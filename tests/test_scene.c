@@ -180,7 +180,7 @@ static const char *const k_expected[][2] = {
     {"operating.inner_speed_rpm", "15000"}, {"operating.axial_load_N", "1000"},
     {"operating.radial_load_N", "0"}, {"operating.moment_load_Nm", "0"},
     {"operating.ambient_C", "26"},
-    {"effects.thermal_expansion", "on"}, {"effects.centrifugal", "on"},
+    {"effects.heating", "on"}, {"effects.thermal_expansion", "on"}, {"effects.centrifugal", "on"},
     {"effects.gyroscopic", "on"}, {"effects.ring_centrifugal", "on"},
     {"effects.ehl_film", "on"}, {"effects.loss_shear", "on"}, {"effects.loss_slip", "on"},
     {"effects.loss_spin", "on"}, {"effects.loss_rolling", "on"}, {"effects.loss_drag", "on"},

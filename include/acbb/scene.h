@@ -99,6 +99,7 @@ typedef struct {
     double ambient_C;            /* ambient = reference temperature, C */
 
     /* [effects]: a disabled effect is not computed at all */
+    bool heating;                /* off: isothermal at ambient, no thermal network solve */
     bool thermal_expansion;      /* TE (true) / WTE (false) */
     bool centrifugal;            /* ball centrifugal force */
     bool gyroscopic;             /* gyroscopic moment */
@@ -192,5 +193,11 @@ void acbb_scene_field_format(const acbb_scene *s, size_t i, char *buf, size_t n)
 void acbb_scene_field_range(size_t i, char *buf, size_t n);
 
 const char *acbb_model_level_name(acbb_model_level m);
+
+/* Effect switches that do nothing in this scene (at its model level, or
+ * because another switch overrides them): their [effects] key names,
+ * static strings, at most `cap` of them; returns how many. A client says so
+ * instead of ignoring the switch silently. */
+size_t acbb_scene_inactive_effects(const acbb_scene *s, const char **names, size_t cap);
 
 #endif
