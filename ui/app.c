@@ -14,6 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "acbb/measure.h"
 #include "app.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
@@ -37,13 +38,6 @@ static int pace_index(int steps_per_s)
     for (int i = 0; i < PACE_N - 1; i++)
         if (pace_ladder[i] <= steps_per_s) best = i;
     return best;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 void acbb_app_msg(acbb_app *a, acbb_role role, const char *fmt, ...)
@@ -448,7 +442,7 @@ static void loop(acbb_app *a)
     double last_frame = 0.0;
     int stale = 1, redraw = 1, spins = 0;
     while (!a->quit) {
-        double t = now_s();
+        double t = 1e-3 * acbb_now_ms();
         if (redraw || (stale && t - last_frame >= FRAME_S)) {
             frame(a);
             last_frame = t;

@@ -5,17 +5,10 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
+#include "acbb/measure.h"
 #include "acc_chart.h"
 #include "app.h"
 #include "export.h"
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* ---- starting, following, cancelling ---- */
 
@@ -113,7 +106,7 @@ static void draw_heading(acbb_app *a)
                  "b runs it on the edited scene, 1 run per setting; B adds dynamic (~1 min/run)");
         break;
     case ACBB_BENCH_RUNNING: {
-        acbb_fmt_duration(now_s() - s->started_s, el, sizeof el);
+        acbb_fmt_duration(1e-3 * acbb_now_ms() - s->started_s, el, sizeof el);
         char left[96];
         snprintf(left, sizeof left, "%s %zu/%zu settings ", s->cancel_requested ? "cancelling" : "running",
                  s->done, s->total);

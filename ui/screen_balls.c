@@ -3,6 +3,7 @@
  * radial load is visible at a glance. */
 #include <curses.h>
 #include <math.h>
+#include "acbb/units.h"
 #include "app.h"
 
 /* Column widths: the fixed part "%2d %5.1f %6.1f %6.1f %5.2f %5.2f %8.4f"
@@ -14,7 +15,7 @@ void acbb_screen_balls_draw(acbb_app *a)
 {
     const acbb_snapshot *s = &a->st.snap;
     acbb_rect b = a->lay.body;
-    const double R2D = 180.0 / M_PI, UM = 1e6;
+    const double R2D = 1.0 / ACBB_DEG /* deg per rad */, UM = 1e6;
     int wide = b.w - FIXED_W - EXTRA_W >= 30; /* room for the outer-race slide and spin */
     int used = FIXED_W + (wide ? EXTRA_W : 0);
     int bw = (b.w - used - 2) / 2;              /* two bars: Qi and Qo */

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "acbb/units.h"
 #include "app.h"
 
 typedef struct {
@@ -71,7 +72,7 @@ void acbb_screen_compare_draw(acbb_app *a)
         acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
                  v1, v0 - v1);
     }
-    const double R2D = 180.0 / M_PI;
+    const double R2D = 1.0 / ACBB_DEG /* deg per rad */;
     if (y < b.y + b.h) ball_row(a, y++, c, "Qi ball 0 N", offsetof(acbb_ball_view, Qi), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "Qo ball 0 N", offsetof(acbb_ball_view, Qo), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "alpha_i ball 0 deg", offsetof(acbb_ball_view, alpha_i), R2D);

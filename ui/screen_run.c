@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include "acbb/units.h"
 #include "app.h"
 
 static const char *const tab_names[ACBB_SCR_COUNT] = {
@@ -168,7 +169,7 @@ static void mech_panel(acbb_app *a, acbb_rect r)
     span(s, offsetof(acbb_ball_view, Qo), &qo0, &qo1);
     span(s, offsetof(acbb_ball_view, alpha_i), &ai0, &ai1);
     span(s, offsetof(acbb_ball_view, alpha_o), &ao0, &ao1);
-    const double R2D = 180.0 / M_PI, UM = 1e6;
+    const double R2D = 1.0 / ACBB_DEG /* deg per rad */, UM = 1e6;
     char item[6][288];
     snprintf(item[0], sizeof item[0], "Qi %.1f..%.1f N  Qo %.1f..%.1f N", qi0, qi1, qo0, qo1);
     snprintf(item[1], sizeof item[1], "a_i %.2f..%.2f%s  a_o %.2f..%.2f%s", ai0 * R2D, ai1 * R2D, deg,

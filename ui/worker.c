@@ -82,18 +82,6 @@ static void copy_text(char *dst, size_t n, const char *src)
     dst[len] = '\0';
 }
 
-/* Absolute CLOCK_MONOTONIC time (the clock of acbb_now_ms and of both
- * condition variables) `ms` milliseconds into that clock. */
-static struct timespec abs_time(double ms)
-{
-    struct timespec ts;
-    ts.tv_sec = (time_t)(ms / 1e3);
-    ts.tv_nsec = (long)((ms - 1e3 * (double)ts.tv_sec) * 1e6);
-    if (ts.tv_nsec >= 1000000000L) { ts.tv_sec++; ts.tv_nsec -= 1000000000L; }
-    if (ts.tv_nsec < 0) ts.tv_nsec = 0;
-    return ts;
-}
-
 const char *acbb_worker_phase_name(acbb_worker_phase p)
 {
     switch (p) {
@@ -230,7 +218,7 @@ static int wait_step_due(acbb_worker *w, double last_step, int paced)
         if (pace <= 0) break;
         double due = last_step + 1e3 / pace;
         if (acbb_now_ms() >= due) break;
-        struct timespec ts = abs_time(due);
+        struct timespec ts = acbb_wake_abstime(due);
         pthread_cond_timedwait(&w->cv_cmd, &w->mu, &ts);
     }
     pthread_mutex_unlock(&w->mu);
@@ -612,7 +600,7 @@ void acbb_worker_drain_wake(acbb_worker *w)
 
 int acbb_worker_wait_done(acbb_worker *w, unsigned long seq, int timeout_ms)
 {
-    struct timespec ts = abs_time(acbb_now_ms() + timeout_ms);
+    struct timespec ts = acbb_wake_abstime(acbb_now_ms() + timeout_ms);
     int done;
     pthread_mutex_lock(&w->mu);
     while (!(done = w->st.cmd_done >= seq))
