@@ -95,6 +95,15 @@ start "" exit1
 wait_for "copy.ini" && wait_for "ready"
 ok $? "TUI opens the preset (title shows copy.ini, solver ready)"
 
+# The ? screen is made from the table of screens: every screen with keys
+# of its own has its section, and the screen list names all eight.
+keys '?'
+wait_for "Keys (j/k scroll" && wait_for "Run Nodes Balls Charts" && wait_for "Accuracy (screen 8)"
+ok $? "? lists the screens and each screen's own keys (from the table)"
+keys Escape
+wait_for "Outer ring (5)"
+ok $? "any other key closes the help"
+
 for i in 1 2 3 4 5; do keys -; done # flat out -> 50 steps/s
 wait_for "pace 50/s"
 ok $? "pace control: five '-' give 50 steps/s"

@@ -4,14 +4,14 @@
 #include <curses.h>
 #include <math.h>
 #include "acbb/units.h"
-#include "app.h"
+#include "screens.h"
 
 /* Column widths: the fixed part "%2d %5.1f %6.1f %6.1f %5.2f %5.2f %8.4f"
  * is 43 cells, spin_i 8, the films 14; the wide extras (slide_o, spin_o) 9 + 8. */
 #define FIXED_W 65
 #define EXTRA_W 17
 
-void acbb_screen_balls_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     const acbb_snapshot *s = &a->st.snap;
     acbb_rect b = a->lay.body;
@@ -50,7 +50,16 @@ void acbb_screen_balls_draw(acbb_app *a)
     }
 }
 
-int acbb_screen_balls_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     return acbb_scroll_key(ch, a->lay.table_rows, a->st.snap.n_balls, &a->ball_top);
 }
+
+static const acbb_help_line help[] = {
+    { "j k PgUp/Dn", "scroll the balls" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_balls = {
+    .name = "Balls", .key = '3', .draw = draw, .on_key = on_key, .help = help,
+};

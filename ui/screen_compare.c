@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "acbb/units.h"
-#include "app.h"
+#include "screens.h"
 
 typedef struct {
     const char *name;
@@ -29,7 +29,7 @@ static void ball_row(acbb_app *a, int y, const acbb_compare_result *c, const cha
              name, v[0], v[1], v[0] - v[1]);
 }
 
-void acbb_screen_compare_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     const acbb_compare_result *c = &a->st.compare;
     acbb_rect b = a->lay.body;
@@ -81,9 +81,15 @@ void acbb_screen_compare_draw(acbb_app *a)
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_ERROR, "%s", c->message);
 }
 
-int acbb_screen_compare_key(acbb_app *a, int ch)
+const acbb_screen acbb_screen_compare = {
+    .name = "TE/WTE", .key = '6', .draw = draw,
+    .hint = "t run TE vs WTE  r run  ? help  q quit",
+};
+
+/* `t` is global: it starts the comparison from any screen and shows this one. */
+void acbb_screen_compare_start(acbb_app *a)
 {
-    (void)a;
-    (void)ch;
-    return 0; /* `t` is global */
+    acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
+    acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
+
