@@ -63,11 +63,14 @@ keys() { $T send-keys -t "$S" "$@"; }
 # The value after a label on the overview screen.
 t5() { screen | sed -n 's/^Outer ring (5) *\([-0-9.]*\).*/\1/p'; }
 ptot() { screen | sed -n 's/.*Total *\([-0-9.]*\) .*/\1/p'; }
-# Start the TUI in a fresh session: $1 = environment prefix, $2 = exit file.
+# The iteration on the status line ("it N t ..."), 0 if not shown.
+iter() { v=$(screen | sed -n 's/.* it \([0-9]*\) t .*/\1/p' | head -1); echo "${v:-0}"; }
+# Start the TUI in a fresh session: $1 = environment prefix, $2 = exit file,
+# $3 = preset in $TMP (default copy.ini).
 start() {
     S=$2
     $T new-session -d -s "$S" -x 80 -y 24 \
-        "cd '$TMP' && $1 '$ACBB' tui copy.ini; rc=\$?; stty -a > '$TMP/stty.$2'; echo EXIT=\$rc > '$TMP/$2'; echo EXIT=\$rc; sleep 60"
+        "cd '$TMP' && $1 '$ACBB' tui ${3:-copy.ini}; rc=\$?; stty -a > '$TMP/stty.$2'; echo EXIT=\$rc > '$TMP/$2'; echo EXIT=\$rc; sleep 60"
 }
 # The index of a preset key in the editor (schema order, as `acbb keys` lists it).
 field_index() {
@@ -91,6 +94,15 @@ WANT_P=$(printf '%.2f' "$(printf '%s' "$JSON" | jq -r '.losses_W.total')")
 start "" exit1
 wait_for "copy.ini" && wait_for "ready"
 ok $? "TUI opens the preset (title shows copy.ini, solver ready)"
+
+# The ? screen is made from the table of screens: every screen with keys
+# of its own has its section, and the screen list names all eight.
+keys '?'
+wait_for "Keys (j/k scroll" && wait_for "Run Nodes Balls Charts" && wait_for "Accuracy (screen 8)"
+ok $? "? lists the screens and each screen's own keys (from the table)"
+keys Escape
+wait_for "Outer ring (5)"
+ok $? "any other key closes the help"
 
 for i in 1 2 3 4 5; do keys -; done # flat out -> 50 steps/s
 wait_for "pace 50/s"
@@ -306,6 +318,30 @@ start "ACBB_TUI_ACCURACY_KNOBS=contact_grid,nosuch" exit6
 wait_file "$TMP/exit6" 10
 [ "$(cat "$TMP/exit6" 2>/dev/null)" = "EXIT=2" ] && screen | grep -q "unknown knob 'nosuch'"
 ok $? "a bad ACBB_TUI_ACCURACY_KNOBS is refused with exit 2"
+
+# ---- session 7: q during a dynamic-level step ----
+# combined-load with fidelity.model = dynamic: seconds of set-up, then
+# about half a second per coupled step. Quitting must cut the step in
+# flight (the worker's cancel flag), not wait for it.
+{ cat "$ROOT/presets/combined-load.ini"; printf '\n[fidelity]\nmodel = dynamic\n'; } > "$TMP/dyn.ini"
+start "" exit7 dyn.ini
+wait_for "dyn.ini" && wait_for "ready"
+keys r
+wait_for "running" 120
+i=0
+while [ $i -lt 2400 ] && [ "$(iter)" -lt 1 ]; do sleep 0.05; i=$((i + 1)); done
+[ "$(iter)" -ge 1 ]
+ok $? "dynamic level: the run of dyn.ini is stepping (iteration $(iter))"
+sleep 0.1 # step 2 is in flight
+t0=$(date +%s.%N)
+keys q
+wait_file "$TMP/exit7" 10
+t1=$(date +%s.%N)
+took=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
+[ "$(cat "$TMP/exit7" 2>/dev/null)" = "EXIT=0" ] && awk -v t="$took" 'BEGIN { exit !(t < 2.0) }'
+ok $? "q during a dynamic-level step exits 0 within 2 s (took $took s)"
+tty_restored "$TMP/stty.exit7"
+ok $? "terminal restored after quitting mid-step"
 
 echo "1..$n"
 [ "$failed" -eq 0 ]

@@ -1,8 +1,8 @@
-/* Tests of the TUI's curses-free parts: the worker thread hand-off (also
- * run under ThreadSanitizer), the layout function for several terminal
- * sizes, the progress estimate, the chart raster and the editor model;
- * the accuracy screen's pieces: the engine's cancel hook, the benchmark
- * thread (bench.c) and the log-log chart model (acc_chart.c). */
+/* Tests of the TUI's thread hand-offs (also run under ThreadSanitizer):
+ * the Sim worker (commands, pacing, the TE/WTE comparison, and stop/quit
+ * cutting a dynamic-level step short through the engine's cancel flag),
+ * the engine's accuracy cancel hook and the benchmark thread (bench.c).
+ * The single-threaded pieces are tests/test_ui_parts.c. */
 #include <dirent.h>
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -16,177 +16,16 @@
 #include <unistd.h>
 
 #include "tap.h"
-#include "acc_chart.h"
+#include "acbb/measure.h"
 #include "bench.h"
-#include "chart.h"
-#include "editor.h"
-#include "layout.h"
-#include "progress.h"
 #include "worker.h"
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+static double now_s(void) { return 1e-3 * acbb_now_ms(); }
 
 static void sleep_ms(int ms)
 {
     struct timespec ts = { ms / 1000, (long)(ms % 1000) * 1000000L };
     nanosleep(&ts, NULL);
-}
-
-/* ---- layout ---- */
-
-static void check_layout(int rows, int cols)
-{
-    acbb_layout l;
-    int rc = acbb_layout_compute(rows, cols, &l);
-    ok(rc == 0 && !l.too_small, "%dx%d: usable", cols, rows);
-    ok(l.title.y == 0 && l.title.h == 1 && l.body.y == 1 && l.body.h == rows - 3 &&
-           l.status.y == rows - 2 && l.message.y == rows - 1,
-       "%dx%d: title, body, status, message stack over all %d rows", cols, rows, rows);
-    const acbb_rect p[4] = { l.temps, l.losses, l.mech, l.chart };
-    int inside = 1, apart = 1, area = 0;
-    for (int i = 0; i < 4; i++) {
-        inside &= acbb_rect_inside(p[i], rows, cols) && p[i].y >= l.body.y &&
-                  p[i].y + p[i].h <= l.body.y + l.body.h;
-        area += p[i].h * p[i].w;
-        for (int j = i + 1; j < 4; j++) apart &= !acbb_rect_overlap(p[i], p[j]);
-    }
-    ok(inside, "%dx%d: overview panels inside the body", cols, rows);
-    ok(apart, "%dx%d: overview panels do not overlap", cols, rows);
-    ok(area == l.body.h * l.body.w, "%dx%d: overview panels tile the body (%d of %d cells)", cols,
-       rows, area, l.body.h * l.body.w);
-    ok(l.temps.w >= 40 && l.losses.w >= 40, "%dx%d: temperature and loss panels >= 40 wide", cols, rows);
-    ok(l.chart.h >= 5, "%dx%d: overview chart keeps >= 5 rows (got %d)", cols, rows, l.chart.h);
-    int sum = 0, stacked = 1;
-    for (int i = 0; i < ACBB_LAYOUT_CHARTS; i++) {
-        sum += l.charts[i].h;
-        if (i > 0) stacked &= l.charts[i].y == l.charts[i - 1].y + l.charts[i - 1].h;
-    }
-    ok(sum == l.body.h && stacked && l.charts[0].y == l.body.y,
-       "%dx%d: history charts stack over the body", cols, rows);
-    int want_cols = cols / ACBB_LAYOUT_NODE_COL_W > 4 ? 4 : cols / ACBB_LAYOUT_NODE_COL_W;
-    ok(l.node_columns == want_cols && l.node_columns * ACBB_LAYOUT_NODE_COL_W <= cols,
-       "%dx%d: %d node-table columns fit", cols, rows, l.node_columns);
-    ok(l.table_rows == rows - 4, "%dx%d: table rows = rows - 4", cols, rows);
-}
-
-static void test_layout(void)
-{
-    check_layout(24, 80);
-    check_layout(30, 100);
-    check_layout(60, 200);
-    acbb_layout l;
-    /* 80x24: two columns of 40; 8-row top panels, 4-row mechanics, 9-row chart. */
-    acbb_layout_compute(24, 80, &l);
-    ok(l.temps.w == 40 && l.losses.x == 40 && l.mech.y == 9 && l.chart.y == 13 && l.chart.h == 9,
-       "80x24: panels at the planned places");
-    acbb_layout_compute(60, 200, &l);
-    ok(l.mech.y == l.temps.y && l.mech.x > l.losses.x, "200x60: mechanics is a third column");
-    const int small[][2] = { { 10, 40 }, { 24, 79 }, { 23, 80 }, { 0, 0 } };
-    for (int i = 0; i < 4; i++) {
-        int rc = acbb_layout_compute(small[i][0], small[i][1], &l);
-        ok(rc == -1 && l.too_small, "%dx%d: terminal too small", small[i][1], small[i][0]);
-    }
-    acbb_layout_compute(10, 40, &l);
-    ok(l.message.y == 9 && l.message.w == 40, "40x10: the notice row is still the bottom row");
-}
-
-/* ---- progress ---- */
-
-static void test_progress(void)
-{
-    acbb_progress p;
-    acbb_progress_reset(&p);
-    ok(!p.valid && p.eta_s < 0, "progress: unknown before the first residual");
-    acbb_progress_update(&p, 1.0, 0.0, 1e-4);
-    is_close(p.fraction, 0.0, 0, 1e-15, "progress: 0 at the first residual");
-    /* r: 1 -> 1e-2 in 2 s; tol 1e-4: half way on the log scale,
-     * ln(1e-2/1e-4) / (ln(1/1e-2) / 2 s) = 2 s left. */
-    acbb_progress_update(&p, 1e-2, 2.0, 1e-4);
-    is_close(p.fraction, 0.5, 1e-12, 0, "progress: ln(1/1e-2)/ln(1/1e-4) = 0.5");
-    is_close(p.eta_s, 2.0, 1e-12, 0, "progress: ETA extrapolates the log decay rate (2 s)");
-    acbb_progress_update(&p, 1e-5, 5.0, 1e-4);
-    ok(p.fraction == 1.0 && p.eta_s == 0.0, "progress: clamps at 1 below tolerance");
-}
-
-/* ---- chart raster ---- */
-
-static void test_chart(void)
-{
-    static acbb_chart c;
-    char g[8];
-    const double x[2] = { 0, 1 }, y[2] = { 1, 1 };
-    acbb_chart_init(&c, 2, 1, 0, 1, 0, 1);
-    acbb_chart_plot(&c, x, y, 2, 0);
-    /* y = ymax is the top dot row: bits 0x01 | 0x08 in both cells = U+2809. */
-    ok(c.dots[0][0] == 0x09 && c.dots[0][1] == 0x09, "chart: a line at ymax lights the top dots");
-    acbb_chart_cell(&c, 0, 0, 1, g);
-    ok(strcmp(g, "\xe2\xa0\x89") == 0, "chart: cell drawn as braille U+2809");
-    int owner = acbb_chart_cell(&c, 0, 1, 0, g);
-    ok(strcmp(g, "'") == 0 && owner == 0, "chart: ASCII fallback draws top dots as ' (series 0)");
-    /* A flat series widens the range by 5 % and sits mid-height:
-     * dot row round(0.5 * 3) = 2 -> bits 0x04 | 0x20, ASCII '.'. */
-    const double y5[2] = { 5, 5 };
-    acbb_chart_init(&c, 1, 1, 0, 1, 5, 5);
-    is_close(c.ymax - c.ymin, 0.5, 1e-12, 0, "chart: flat range widened by +-5 %");
-    acbb_chart_plot(&c, x, y5, 2, 1);
-    ok(c.dots[0][0] == 0x24, "chart: a flat line sits on dot row 2");
-    acbb_chart_cell(&c, 0, 0, 0, g);
-    ok(strcmp(g, ".") == 0, "chart: ASCII '.' for bottom-half dots");
-    /* A diagonal is joined: every dot column of a 4x2 chart has a dot. */
-    acbb_chart_init(&c, 4, 2, 0, 1, 0, 1);
-    acbb_chart_plot(&c, x, x, 2, 0);
-    int cols_lit = 0;
-    for (int dx = 0; dx < 8; dx++) {
-        int lit = 0;
-        for (int row = 0; row < 2; row++)
-            for (int dr = 0; dr < 4; dr++) {
-                static const unsigned char bit[4][2] = { { 1, 8 }, { 2, 16 }, { 4, 32 }, { 64, 128 } };
-                lit |= (c.dots[row][dx / 2] & bit[dr][dx % 2]) != 0;
-            }
-        cols_lit += lit;
-    }
-    ok(cols_lit == 8, "chart: a diagonal is drawn without gaps (%d of 8 dot columns)", cols_lit);
-}
-
-/* ---- editor model ---- */
-
-static void test_editor(void)
-{
-    static acbb_editor e;
-    acbb_error err = { { 0 } };
-    size_t idiam = 0, iload = 0;
-    for (size_t i = 0; i < acbb_scene_field_count(); i++) {
-        if (strcmp(acbb_scene_field(i)->key, "ball_diameter_mm") == 0) idiam = i;
-        if (strcmp(acbb_scene_field(i)->key, "axial_load_N") == 0) iload = i;
-    }
-    ok(acbb_editor_open(&e, "presets/7008C.ini", &err) == ACBB_OK, "editor: opens 7008C (%s)", err.msg);
-    double D = e.scene.ball_diameter;
-    ok(acbb_editor_set(&e, idiam, "-3", &err) == ACBB_EINVAL, "editor: ball_diameter_mm = -3 refused");
-    has_substr(err.msg, "ball_diameter_mm = -3: must be > 0", "editor: the engine's message");
-    ok(e.scene.ball_diameter == D && !e.modified && e.undo_n == 0,
-       "editor: a refused value is not applied and not undoable");
-    ok(acbb_editor_set(&e, iload, "500", &err) == ACBB_OK && e.scene.axial_load == 500.0 && e.modified,
-       "editor: axial_load_N = 500 accepted, marked modified");
-    ok(acbb_editor_set(&e, iload, "700", &err) == ACBB_OK && e.undo_n == 2, "editor: second edit stacked");
-    ok(acbb_editor_undo(&e) && e.scene.axial_load == 500.0 && e.modified, "editor: undo restores 500");
-    ok(acbb_editor_undo(&e) && e.scene.axial_load == 1000.0 && !e.modified,
-       "editor: undo back to the file clears the marker");
-    ok(!acbb_editor_undo(&e), "editor: nothing left to undo");
-    acbb_editor_set(&e, iload, "450", &err);
-    char path[] = "/tmp/acbb-test-editor-XXXXXX";
-    int fd = mkstemp(path);
-    close(fd);
-    ok(acbb_editor_save(&e, path, &err) == ACBB_OK && !e.modified && strcmp(e.path, path) == 0,
-       "editor: save-as writes, clears the marker, adopts the path");
-    acbb_scene back;
-    ok(acbb_scene_load(path, &back, &err) == ACBB_OK && back.axial_load == 450.0,
-       "editor: the saved file loads back with axial_load_N = 450");
-    unlink(path);
 }
 
 /* ---- worker ---- */
@@ -484,145 +323,6 @@ static void test_worker_cycles(const acbb_scene *s0, int cycles)
     ok(now_s() - t0 < 2.0, "cycles: free joins (%.3f s)", now_s() - t0);
 }
 
-/* ---- accuracy screen: layout, chart model, formats ---- */
-
-static void check_acc_layout(int rows, int cols)
-{
-    acbb_layout l;
-    acbb_layout_compute(rows, cols, &l);
-    const acbb_rect p[3] = { l.acc_table, l.acc_frontier, l.acc_chart };
-    int inside = 1, apart = 1, area = 0;
-    for (int i = 0; i < 3; i++) {
-        /* Below the screen's title and progress rows, inside the body. */
-        inside &= acbb_rect_inside(p[i], rows, cols) && p[i].y >= l.body.y + 2 &&
-                  p[i].y + p[i].h <= l.body.y + l.body.h;
-        area += p[i].h * p[i].w;
-        for (int j = i + 1; j < 3; j++) apart &= !acbb_rect_overlap(p[i], p[j]);
-    }
-    ok(inside && apart, "%dx%d: accuracy table, frontier, chart inside the body, apart", cols, rows);
-    /* Wide: a one-column gap between table and chart; else they tile. */
-    int gap = cols >= ACBB_LAYOUT_ACC_WIDE_COLS ? l.body.h - 2 : 0;
-    ok(area + gap == (l.body.h - 2) * l.body.w, "%dx%d: accuracy panels fill the body below its 2 rows",
-       cols, rows);
-    ok(l.acc_table.w >= ACBB_LAYOUT_ACC_TABLE_W && l.acc_chart.h >= 7 && l.acc_table.h >= 6,
-       "%dx%d: table %d wide x %d rows, chart %d rows", cols, rows, l.acc_table.w, l.acc_table.h,
-       l.acc_chart.h);
-}
-
-static void test_acc_layout(void)
-{
-    check_acc_layout(24, 80);
-    check_acc_layout(30, 100);
-    check_acc_layout(60, 200);
-    acbb_layout l;
-    /* 80x24: body rows 1..21; rows 3..21 split: table (19 - 2) / 2 = 8,
-     * frontier 2, chart 9 (title, 7 plot rows, x labels). */
-    acbb_layout_compute(24, 80, &l);
-    ok(l.acc_table.y == 3 && l.acc_table.h == 8 && l.acc_frontier.y == 11 && l.acc_frontier.h == 2 &&
-           l.acc_chart.y == 13 && l.acc_chart.h == 9 && l.acc_chart.w == 80,
-       "80x24: accuracy table 8 rows at 3, frontier at 11, chart 9 rows at 13");
-    /* 200x60 (wide): table 74 wide on the left, chart from column 75. */
-    acbb_layout_compute(60, 200, &l);
-    ok(l.acc_table.x == 0 && l.acc_table.w == 74 && l.acc_chart.x == 75 && l.acc_chart.w == 125 &&
-           l.acc_chart.h == 55 && l.acc_frontier.h == 8 && l.acc_table.h == 47,
-       "200x60: table 74 x 47 + frontier 8 on the left, chart 125 x 55 on the right");
-}
-
-static acbb_accuracy_row acc_row(acbb_accuracy_knob k, double ms, double e_loss, double e_T)
-{
-    acbb_accuracy_row r;
-    memset(&r, 0, sizeof r);
-    r.knob = k;
-    r.status = ACBB_OK;
-    r.wall_ms = ms;
-    r.e_loss = e_loss;
-    r.e_T = e_T;
-    return r;
-}
-
-static void test_acc_chart(void)
-{
-    acbb_accuracy_row rows[7];
-    rows[0] = acc_row(ACBB_KNOB_CONTACT_GRID, 10, 0.02, 0.01);    /* 2 %: x 1, y log10 2 */
-    rows[1] = acc_row(ACBB_KNOB_CONTACT_GRID, 100, 5e-4, 1e-3);   /* 0.1 %: x 2, y -1 */
-    rows[2] = acc_row(ACBB_KNOB_CONTACT_GRID, 1000, 0, 0);        /* reference: x 3, y = floor */
-    rows[3] = acc_row(ACBB_KNOB_HERTZ, 20, 0.1, 0.1);
-    rows[3].status = ACBB_DIVERGED;                                /* failed: left out */
-    rows[4] = acc_row(ACBB_KNOB_MODEL, 30, 0.1, 0.1);
-    rows[4].skipped = 1;                                           /* skipped: left out */
-    rows[5] = acc_row(ACBB_KNOB_HERTZ, 40, NAN, 0.1);              /* undefined: left out */
-    rows[6] = acc_row(ACBB_KNOB_NETWORK, 50, 16.5, 0.07);          /* 1650 %: y 3.217 */
-    is_close(acbb_acc_error_pct(&rows[1]), 0.1, 1e-12, 0, "acc chart: error = max(e_loss, e_T) in %%");
-    ok(isnan(acbb_acc_error_pct(&rows[3])) && isnan(acbb_acc_error_pct(&rows[5])),
-       "acc chart: no error for a failed row or an undefined one");
-    static acbb_acc_chart m;
-    size_t n = acbb_acc_chart_build(rows, 7, &m);
-    ok(n == 4 && m.p[0].row == 0 && m.p[1].row == 1 && m.p[2].row == 2 && m.p[3].row == 6,
-       "acc chart: 4 points (rows 0 1 2 6), failed/skipped/undefined left out (n = %zu)", n);
-    /* Decades: 10 .. 1000 ms -> 1 .. 3; errors 0.1 .. 1650 % -> ceil(3.217) = 4
-     * at the top, floor(-1) - 1 = -2 at the bottom (the zeros' decade). */
-    ok(m.xmin == 1 && m.xmax == 3 && m.ymin == -2 && m.ymax == 4,
-       "acc chart: x 1..3, y -2..4 decades (got %g..%g, %g..%g)", m.xmin, m.xmax, m.ymin, m.ymax);
-    is_close(m.p[0].y, 0.30102999566398120, 1e-14, 0, "acc chart: 2 %% at log10 2");
-    ok(m.p[2].zero && m.p[2].y == -2 && !m.p[0].zero, "acc chart: the reference's 0 sits on the floor");
-    is_close(m.p[3].y, log10(1650.0), 1e-14, 0, "acc chart: 1650 %% at log10 1650");
-
-    /* Cells on an 11 x 4 raster (22 x 16 dots): x 1 -> dot 0, cell 0;
-     * x 3 -> dot 21, cell 10; x 2 -> dot 10.5 -> cell 5 either way.
-     * y log10 2: (1 - 2.30103 / 6) * 15 = 9.247 -> dot 9, row 2;
-     * y -2 -> dot 15, row 3; y 4 -> dot 0, row 0. */
-    static acbb_chart c;
-    int row = -1, col = -1;
-    acbb_chart_init(&c, 11, 4, m.xmin, m.xmax, m.ymin, m.ymax);
-    ok(acbb_chart_locate(&c, 1, log10(2.0), &row, &col) && row == 2 && col == 0,
-       "acc chart: (10 ms, 2 %%) in cell row 2 col 0 (got %d %d)", row, col);
-    ok(acbb_chart_locate(&c, 3, -2, &row, &col) && row == 3 && col == 10,
-       "acc chart: (1 s, 0) in the bottom-right cell (got %d %d)", row, col);
-    ok(acbb_chart_locate(&c, 2, 4, &row, &col) && row == 0 && col == 5,
-       "acc chart: (100 ms, 10^4 %%) in row 0 col 5 (got %d %d)", row, col);
-    ok(!acbb_chart_locate(&c, 0.5, 0, &row, &col) && !acbb_chart_locate(&c, 2, NAN, &row, &col),
-       "acc chart: points outside the ranges or NaN have no cell");
-    /* The marker cell is where acbb_chart_plot put the point's dot. */
-    const double px[1] = { 1 }, py[1] = { 0.30102999566398120 };
-    acbb_chart_plot(&c, px, py, 1, 0);
-    ok(c.dots[2][0] != 0 && c.owner[2][0] == 0, "acc chart: the plotted dot is in the located cell");
-
-    n = acbb_acc_chart_build(rows, 0, &m);
-    ok(n == 0 && m.xmax > m.xmin && m.ymin == -1 && m.ymax == 1,
-       "acc chart: no points -> 1 ms..10 ms, 0.1 %%..10 %% (tolerance 1 %% inside)");
-
-    int distinct = 1;
-    for (int i = 0; i < ACBB_KNOB_COUNT; i++)
-        for (int j = i + 1; j < ACBB_KNOB_COUNT; j++)
-            distinct &= acbb_acc_knob_letter((acbb_accuracy_knob)i) != acbb_acc_knob_letter((acbb_accuracy_knob)j);
-    ok(distinct && acbb_acc_knob_letter(ACBB_KNOB_CONTACT_GRID) == 'G', "acc chart: 7 distinct knob letters");
-
-    char b[16];
-    acbb_acc_fmt_pct(0.02205804262, b, sizeof b);
-    ok(strcmp(b, "2.21") == 0, "fmt pct: 0.0220580 -> 2.21 (got %s)", b);
-    acbb_acc_fmt_pct(1.724105806e-05, b, sizeof b);
-    ok(strcmp(b, "2e-03") == 0, "fmt pct: 1.72e-5 -> 2e-03 (got %s)", b);
-    acbb_acc_fmt_pct(0, b, sizeof b);
-    ok(strcmp(b, "0") == 0, "fmt pct: exact 0 -> 0");
-    acbb_acc_fmt_pct(NAN, b, sizeof b);
-    ok(strcmp(b, "-") == 0, "fmt pct: NaN -> -");
-    acbb_acc_fmt_pct(16.4865, b, sizeof b);
-    ok(strcmp(b, "2e+03") == 0, "fmt pct: 1648.65 %% -> 2e+03 (got %s)", b);
-    acbb_acc_fmt_pct_decade(0, b, sizeof b);
-    int dec_ok = strcmp(b, "1%") == 0;
-    acbb_acc_fmt_pct_decade(-5, b, sizeof b);
-    dec_ok &= strcmp(b, "1e-05%") == 0;
-    acbb_acc_fmt_ms_decade(3, b, sizeof b);
-    dec_ok &= strcmp(b, "1s") == 0;
-    acbb_acc_fmt_ms_decade(7, b, sizeof b);
-    ok(dec_ok && strcmp(b, "1e+07ms") == 0, "decade labels: 1%%, 1e-05%%, 1s, 1e+07ms");
-    acbb_accuracy_row r = acc_row(ACBB_KNOB_CONTACT_GRID, 1, 0, 0);
-    snprintf(r.key, sizeof r.key, "fidelity.contact_grid");
-    snprintf(r.value, sizeof r.value, "4");
-    acbb_acc_setting_label(&r, b, sizeof b);
-    ok(strcmp(b, "contact_grid=4") == 0, "setting label: contact_grid=4");
-}
-
 /* ---- the engine's cancel hook (include/acbb/accuracy.h) ---- */
 
 typedef struct {
@@ -800,15 +500,103 @@ static void test_bench(const acbb_scene *s0)
     ok(now_s() - t0 < 1.0, "bench: free while running joins quickly (%.3f s)", now_s() - t0);
 }
 
+/* ---- stop and quit during a dynamic-level step ---- */
+
+/* Poll (every ms) until the published iteration reaches k; the time then,
+ * or -1 after timeout_s. */
+static double wait_iteration(acbb_worker *w, long k, double timeout_s)
+{
+    double end = now_s() + timeout_s;
+    do {
+        acbb_worker_read(w, &st, NULL);
+        if (st.snap.iteration >= k) return now_s();
+        if (st.phase != ACBB_WORKER_RUNNING) return -1;
+        sleep_ms(1);
+    } while (now_s() < end);
+    return -1;
+}
+
+/* A worker running `dyn` flat out, caught just after step 2 was published:
+ * step 3 has just begun. *step_s: how long step 2 took. NULL on failure. */
+static acbb_worker *dynamic_run(const acbb_scene *s0, const acbb_scene *dyn, double *step_s)
+{
+    acbb_worker *w = NULL;
+    acbb_error err = { { 0 } };
+    if (acbb_worker_new(s0, 0, &w, &err) != ACBB_OK) return NULL;
+    unsigned long seq = acbb_worker_post(w, ACBB_CMD_START, dyn, 0);
+    double t1 = -1, t2 = -1;
+    /* The dynamic set-up takes seconds (minutes under TSan). */
+    if (seq && acbb_worker_wait_done(w, seq, 600000) && (t1 = wait_iteration(w, 1, 600)) > 0)
+        t2 = wait_iteration(w, 2, 600);
+    *step_s = t2 - t1;
+    if (t2 < 0) {
+        acbb_worker_free(w);
+        return NULL;
+    }
+    return w;
+}
+
+static void test_worker_cancel(const acbb_scene *s0)
+{
+    acbb_scene dyn;
+    acbb_error err = { { 0 } };
+    if (acbb_scene_load("presets/combined-load.ini", &dyn, &err) != ACBB_OK ||
+        acbb_scene_set(&dyn, "fidelity.model", "dynamic", &err) != ACBB_OK) {
+        ok(0, "combined-load with fidelity.model = dynamic: %s", err.msg);
+        return;
+    }
+    double step_s = 0;
+    acbb_worker *w = dynamic_run(s0, &dyn, &step_s);
+    ok(w != NULL, "dynamic level: the worker runs combined-load, step 2 took %.3f s", step_s);
+    if (!w) return;
+    long it = st.snap.iteration;
+    double T5 = st.snap.T_outer_ring, P = st.snap.losses.total;
+    double t0 = now_s();
+    unsigned long seq = acbb_worker_post(w, ACBB_CMD_STOP, NULL, 0);
+    int done = seq && acbb_worker_wait_done(w, seq, 10000);
+    double took = now_s() - t0;
+    acbb_worker_read(w, &st, &hist);
+    printf("# stop mid-step: handled %.3f s after the post (a step: %.3f s)\n", took, step_s);
+    ok(done && took < 2.0, "stop mid-step: handled within 2 s (%.3f s)", took);
+    ok(st.phase == ACBB_WORKER_STOPPED && strcmp(acbb_run_status_name(&st.snap), "cancelled") == 0,
+       "stop mid-step: phase %s, status %s (%s)", acbb_worker_phase_name(st.phase),
+       acbb_run_status_name(&st.snap), st.snap.message);
+    ok(st.snap.iteration == it, "stop mid-step: the step in flight was cut, not finished (iteration %ld, was %ld)",
+       st.snap.iteration, it);
+    int finite = st.snap.n_nodes > 0;
+    for (int i = 0; i < st.snap.n_nodes; i++) finite &= isfinite(st.snap.T[i]) != 0;
+    ok(finite && st.snap.T_outer_ring == T5 && st.snap.losses.total == P && P > 0,
+       "stop mid-step: the last good state stays (T5 %.4f C, P %.4f W, all %d nodes finite)",
+       st.snap.T_outer_ring, st.snap.losses.total, st.snap.n_nodes);
+    ok(hist.n > 0 && hist.p[hist.n - 1].iteration == it, "stop mid-step: history ends at iteration %ld", it);
+    acbb_worker_free(w);
+
+    /* Quit (acbb_worker_free) during a step. */
+    w = dynamic_run(s0, &dyn, &step_s);
+    if (w) {
+        t0 = now_s();
+        acbb_worker_free(w);
+        took = now_s() - t0;
+        printf("# quit mid-step: joined %.3f s after the request (a step: %.3f s)\n", took, step_s);
+    }
+    ok(w && took < 2.0, "quit mid-step: the worker joins within 2 s (%.3f s)", took);
+
+    /* Quit during the dynamic set-up of a START. */
+    acbb_worker_new(s0, 0, &w, &err);
+    seq = acbb_worker_post(w, ACBB_CMD_START, &dyn, 0);
+    sleep_ms(200);
+    acbb_worker_read(w, &st, NULL);
+    int in_setup = st.cmd_done < seq;
+    t0 = now_s();
+    acbb_worker_free(w);
+    took = now_s() - t0;
+    ok(took < 2.0, "quit during a dynamic set-up (%s): joined within 2 s (%.3f s)",
+       in_setup ? "set-up in flight" : "set-up already done", took);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
-    test_layout();
-    test_progress();
-    test_chart();
-    test_editor();
-    test_acc_layout();
-    test_acc_chart();
     acbb_scene s0;
     acbb_error err = { { 0 } };
     if (acbb_scene_load("presets/7008C.ini", &s0, &err) != ACBB_OK) {
@@ -820,5 +608,6 @@ int main(void)
     test_worker_basics(&s0);
     const char *env = getenv("ACBB_WORKER_CYCLES");
     test_worker_cycles(&s0, env ? atoi(env) : 200);
+    test_worker_cancel(&s0);
     return done_testing();
 }

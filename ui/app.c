@@ -14,7 +14,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "app.h"
+#include "acbb/measure.h"
+#include "screens.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
 #define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
@@ -37,13 +38,6 @@ static int pace_index(int steps_per_s)
     for (int i = 0; i < PACE_N - 1; i++)
         if (pace_ladder[i] <= steps_per_s) best = i;
     return best;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 void acbb_app_msg(acbb_app *a, acbb_role role, const char *fmt, ...)
@@ -88,7 +82,7 @@ void acbb_app_open(acbb_app *a, const char *path)
 
 /* ---- commands to the worker ---- */
 
-static void post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int warm, const char *what)
+void acbb_app_post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int warm, const char *what)
 {
     unsigned long seq = acbb_worker_post(a->worker, cmd, s, warm);
     if (seq == 0) {
@@ -101,8 +95,8 @@ static void post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int warm
 
 static void pause_or_resume(acbb_app *a)
 {
-    if (a->st.phase == ACBB_WORKER_RUNNING) post(a, ACBB_CMD_PAUSE, NULL, 0, "paused");
-    else if (a->st.phase == ACBB_WORKER_PAUSED) post(a, ACBB_CMD_RESUME, NULL, 0, "resumed");
+    if (a->st.phase == ACBB_WORKER_RUNNING) acbb_app_post(a, ACBB_CMD_PAUSE, NULL, 0, "paused");
+    else if (a->st.phase == ACBB_WORKER_PAUSED) acbb_app_post(a, ACBB_CMD_RESUME, NULL, 0, "resumed");
     else acbb_app_msg(a, ACBB_ROLE_WARN, "no run in progress (r starts one)");
 }
 
@@ -136,37 +130,29 @@ static void request_quit(acbb_app *a)
     a->confirm.kind = ACBB_CONFIRM_QUIT;
 }
 
-static void switch_screen(acbb_app *a, int s)
-{
-    a->screen = (acbb_screen_id)((s + ACBB_SCR_COUNT) % ACBB_SCR_COUNT);
-    if (a->screen == ACBB_SCR_PLOT) a->preview[0] = '\0'; /* fresh preview on entry */
-}
-
 /* ---- keys ---- */
 
 static void global_key(acbb_app *a, int ch)
 {
-    if (ch >= '1' && ch < '1' + ACBB_SCR_COUNT) {
-        switch_screen(a, ch - '1');
-        return;
-    }
+    for (int i = 0; i < acbb_screen_count; i++)
+        if (ch == acbb_screens[i]->key) {
+            acbb_screen_show(a, i);
+            return;
+        }
     switch (ch) {
-    case '\t': switch_screen(a, (int)a->screen + 1); break;
-    case KEY_BTAB: switch_screen(a, (int)a->screen - 1); break;
+    case '\t': acbb_screen_show(a, a->screen + 1); break;
+    case KEY_BTAB: acbb_screen_show(a, a->screen - 1); break;
     case '?': a->mode = ACBB_MODE_HELP; a->help_top = 0; break;
     case 'q': request_quit(a); break;
-    case 'r': post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started (cold, edited scene)"); break;
+    case 'r': acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started (cold, edited scene)"); break;
     case ' ': case 'p': pause_or_resume(a); break;
-    case 'x': post(a, ACBB_CMD_STOP, NULL, 0, "stopped"); break;
-    case 'R': post(a, ACBB_CMD_RESET, NULL, 0, "reset to ambient"); break;
-    case 'a': post(a, ACBB_CMD_APPLY, &a->ed.scene, 1, "applied edits, warm restart"); break;
-    case 'A': post(a, ACBB_CMD_APPLY, &a->ed.scene, 0, "applied edits, cold restart"); break;
+    case 'x': acbb_app_post(a, ACBB_CMD_STOP, NULL, 0, "stopped"); break;
+    case 'R': acbb_app_post(a, ACBB_CMD_RESET, NULL, 0, "reset to ambient"); break;
+    case 'a': acbb_app_post(a, ACBB_CMD_APPLY, &a->ed.scene, 1, "applied edits, warm restart"); break;
+    case 'A': acbb_app_post(a, ACBB_CMD_APPLY, &a->ed.scene, 0, "applied edits, cold restart"); break;
     case '+': case '=': change_pace(a, +1); break;
     case '-': change_pace(a, -1); break;
-    case 't':
-        post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
-        switch_screen(a, ACBB_SCR_COMPARE);
-        break;
+    case 't': acbb_screen_compare_start(a); break;
     case 'u':
         if (acbb_editor_undo(&a->ed)) acbb_app_msg(a, ACBB_ROLE_NORMAL, "undone");
         else acbb_app_msg(a, ACBB_ROLE_WARN, "nothing to undo");
@@ -188,16 +174,8 @@ static void global_key(acbb_app *a, int ch)
 
 static int screen_key(acbb_app *a, int ch)
 {
-    switch (a->screen) {
-    case ACBB_SCR_NODES: return acbb_screen_nodes_key(a, ch);
-    case ACBB_SCR_BALLS: return acbb_screen_balls_key(a, ch);
-    case ACBB_SCR_CHARTS: return acbb_screen_charts_key(a, ch);
-    case ACBB_SCR_EDIT: return acbb_screen_edit_key(a, ch);
-    case ACBB_SCR_COMPARE: return acbb_screen_compare_key(a, ch);
-    case ACBB_SCR_PLOT: return acbb_screen_plot_key(a, ch);
-    case ACBB_SCR_ACCURACY: return acbb_screen_accuracy_key(a, ch);
-    default: return 0;
-    }
+    const acbb_screen *s = acbb_screen_current(a);
+    return s->on_key ? s->on_key(a, ch) : 0;
 }
 
 static void prompt_commit(acbb_app *a)
@@ -275,13 +253,8 @@ static void handle_key(acbb_app *a, int ch)
 
 static const char *hint(const acbb_app *a)
 {
-    switch (a->screen) {
-    case ACBB_SCR_EDIT: return "Enter edit  </> cycle  u undo  w save  W save as  o open  a apply  ? help";
-    case ACBB_SCR_PLOT: return "</> kind  Enter refresh  g export PNG+SVG  ? help  q quit";
-    case ACBB_SCR_COMPARE: return "t run TE vs WTE  r run  ? help  q quit";
-    case ACBB_SCR_ACCURACY: return "b benchmark  B +dynamic  x/Esc cancel  j/k scroll  g export plot  ? help";
-    default: return "r run  space pause  x stop  +/- pace  a apply  t TE/WTE  g plots  ? help  q quit";
-    }
+    const char *h = acbb_screen_current(a)->hint;
+    return h ? h : "r run  space pause  x stop  +/- pace  a apply  t TE/WTE  g plots  ? help  q quit";
 }
 
 static void draw_message(acbb_app *a)
@@ -314,17 +287,7 @@ static void draw_body(acbb_app *a)
         acbb_screen_help_draw(a);
         return;
     }
-    switch (a->screen) {
-    case ACBB_SCR_RUN: acbb_screen_run_draw(a); break;
-    case ACBB_SCR_NODES: acbb_screen_nodes_draw(a); break;
-    case ACBB_SCR_BALLS: acbb_screen_balls_draw(a); break;
-    case ACBB_SCR_CHARTS: acbb_screen_charts_draw(a); break;
-    case ACBB_SCR_EDIT: acbb_screen_edit_draw(a); break;
-    case ACBB_SCR_COMPARE: acbb_screen_compare_draw(a); break;
-    case ACBB_SCR_PLOT: acbb_screen_plot_draw(a); break;
-    case ACBB_SCR_ACCURACY: acbb_screen_accuracy_draw(a); break;
-    case ACBB_SCR_COUNT: break;
-    }
+    acbb_screen_current(a)->draw(a);
     if (a->mode == ACBB_MODE_BROWSE) acbb_screen_browse_draw(a);
 }
 
@@ -448,7 +411,7 @@ static void loop(acbb_app *a)
     double last_frame = 0.0;
     int stale = 1, redraw = 1, spins = 0;
     while (!a->quit) {
-        double t = now_s();
+        double t = 1e-3 * acbb_now_ms();
         if (redraw || (stale && t - last_frame >= FRAME_S)) {
             frame(a);
             last_frame = t;
@@ -524,7 +487,7 @@ int acbb_app_run(const acbb_app_options *opt)
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         rc = 1;
     } else {
-        if (a->exit_after_steady) post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started");
+        if (a->exit_after_steady) acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started");
         loop(a);
         /* Restore the terminal first so a slow join never leaves it raw.
          * A running benchmark is cancelled: it stops within one step. */

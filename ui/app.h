@@ -16,11 +16,6 @@
 #include "worker.h"
 
 typedef enum {
-    ACBB_SCR_RUN, ACBB_SCR_NODES, ACBB_SCR_BALLS, ACBB_SCR_CHARTS, ACBB_SCR_EDIT,
-    ACBB_SCR_COMPARE, ACBB_SCR_PLOT, ACBB_SCR_ACCURACY, ACBB_SCR_COUNT
-} acbb_screen_id;
-
-typedef enum {
     ACBB_MODE_NORMAL, ACBB_MODE_PROMPT, ACBB_MODE_CONFIRM, ACBB_MODE_HELP, ACBB_MODE_BROWSE
 } acbb_mode;
 
@@ -39,7 +34,7 @@ typedef struct {
     acbb_editor ed;
     acbb_progress prog;
     unsigned long prog_run;        /* run the progress estimate belongs to */
-    acbb_screen_id screen;
+    int screen;                    /* index into acbb_screens (screens.c) */
     acbb_mode mode;
     struct {
         acbb_prompt_kind kind;
@@ -120,33 +115,27 @@ void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r);
 /* "1h02m", "12.3s", "--" for unknown. */
 void acbb_fmt_duration(double s, char *buf, size_t n);
 
-/* ---- screens: draw and screen-specific keys (return 1 if used) ---- */
+/* ---- the bars around every screen (bars.c) ---- */
 void acbb_draw_title(acbb_app *a);
 void acbb_draw_status(acbb_app *a);
-void acbb_screen_run_draw(acbb_app *a);
-void acbb_screen_nodes_draw(acbb_app *a);
-int acbb_screen_nodes_key(acbb_app *a, int ch);
-void acbb_screen_balls_draw(acbb_app *a);
-int acbb_screen_balls_key(acbb_app *a, int ch);
-void acbb_screen_charts_draw(acbb_app *a);
-int acbb_screen_charts_key(acbb_app *a, int ch);
-void acbb_screen_edit_draw(acbb_app *a);
-int acbb_screen_edit_key(acbb_app *a, int ch);
+
+/* ---- what screens offer beyond their descriptor (screens.h) ---- */
+/* The preset browser, a modal overlay (screen_editor.c). */
+void acbb_screen_browse_begin(acbb_app *a);
 void acbb_screen_browse_draw(acbb_app *a);
 int acbb_screen_browse_key(acbb_app *a, int ch);
-void acbb_screen_browse_begin(acbb_app *a);
-void acbb_screen_compare_draw(acbb_app *a);
-int acbb_screen_compare_key(acbb_app *a, int ch);
-void acbb_screen_plot_draw(acbb_app *a);
-int acbb_screen_plot_key(acbb_app *a, int ch);
+/* Export every plot kind as PNG+SVG (screen_plot.c; the global g). */
 void acbb_screen_plot_export(acbb_app *a);
-void acbb_screen_accuracy_draw(acbb_app *a);
-int acbb_screen_accuracy_key(acbb_app *a, int ch);
+/* Run TE vs WTE on the edited scene and show it (screen_compare.c; t). */
+void acbb_screen_compare_start(acbb_app *a);
 /* Start the benchmark on the edited scene (with the dynamic level or not). */
 void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic);
 /* Announce the end of a benchmark on the message line (once per run). */
 void acbb_screen_accuracy_follow(acbb_app *a);
+/* The `?` screen, generated from the table (a mode, not a tab). */
 void acbb_screen_help_draw(acbb_app *a);
 int acbb_screen_help_key(acbb_app *a, int ch);
+/* Post a command to the worker, saying so on the message line (app.c). */
+void acbb_app_post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int warm, const char *what);
 
 #endif

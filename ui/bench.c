@@ -14,6 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "acbb/measure.h"
 #include "bench.h"
 #include "wake.h"
 
@@ -31,13 +32,6 @@ struct acbb_bench {
     acbb_accuracy_options opt;
     acbb_accuracy_row work[ACBB_BENCH_MAX_ROWS];
 };
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 const char *acbb_bench_phase_name(acbb_bench_phase p)
 {
@@ -89,7 +83,7 @@ static void *bench_main(void *p)
     if (rc == ACBB_OK) b->st.phase = ACBB_BENCH_DONE;
     else b->st.phase = atomic_load(&b->cancel) ? ACBB_BENCH_CANCELLED : ACBB_BENCH_FAILED;
     memcpy(b->st.message, err.msg, sizeof b->st.message);
-    b->st.ended_s = now_s();
+    b->st.ended_s = 1e-3 * acbb_now_ms();
     b->st.publications++;
     pthread_cond_broadcast(&b->cv_end);
     pthread_mutex_unlock(&b->mu);
@@ -149,7 +143,7 @@ static void begin(acbb_bench *b, const acbb_accuracy_options *opt, size_t total)
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) b->st.picks[k] = -1;
     b->st.opt = *opt;
     b->st.opt.cancel = NULL;
-    b->st.started_s = now_s();
+    b->st.started_s = 1e-3 * acbb_now_ms();
     b->st.ended_s = 0.0;
     b->st.message[0] = '\0';
     pthread_mutex_unlock(&b->mu);
@@ -187,7 +181,7 @@ acbb_status acbb_bench_start(acbb_bench *b, const acbb_scene *scene,
     if (rc != 0) {
         pthread_mutex_lock(&b->mu);
         b->st.phase = ACBB_BENCH_FAILED;
-        b->st.ended_s = now_s();
+        b->st.ended_s = 1e-3 * acbb_now_ms();
         pthread_mutex_unlock(&b->mu);
         return acbb_error_set(err, ACBB_ENOMEM, "cannot start the benchmark thread: %s",
                               strerror(rc));
@@ -219,9 +213,7 @@ void acbb_bench_read(acbb_bench *b, acbb_bench_state *st)
 
 int acbb_bench_wait(acbb_bench *b, int timeout_ms)
 {
-    double t = now_s() + timeout_ms / 1000.0;
-    struct timespec ts = { (time_t)t, (long)((t - (double)(time_t)t) * 1e9) };
-    if (ts.tv_nsec >= 1000000000L) ts.tv_nsec = 999999999L;
+    struct timespec ts = acbb_wake_abstime(acbb_now_ms() + timeout_ms);
     pthread_mutex_lock(&b->mu);
     while (b->st.phase == ACBB_BENCH_RUNNING)
         if (pthread_cond_timedwait(&b->cv_end, &b->mu, &ts) == ETIMEDOUT) break;

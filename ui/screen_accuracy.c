@@ -5,17 +5,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
+#include "acbb/measure.h"
 #include "acc_chart.h"
-#include "app.h"
+#include "screens.h"
 #include "export.h"
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+extern const acbb_screen acbb_screen_accuracy;
 
 /* ---- starting, following, cancelling ---- */
 
@@ -31,7 +26,7 @@ void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic)
         .repeats = 1,
     };
     acbb_error err = { { 0 } };
-    a->screen = ACBB_SCR_ACCURACY;
+    acbb_screen_show(a, acbb_screen_index(&acbb_screen_accuracy));
     if (acbb_bench_start(a->bench, &a->ed.scene, &o, &err) != ACBB_OK) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
         return;
@@ -113,7 +108,7 @@ static void draw_heading(acbb_app *a)
                  "b runs it on the edited scene, 1 run per setting; B adds dynamic (~1 min/run)");
         break;
     case ACBB_BENCH_RUNNING: {
-        acbb_fmt_duration(now_s() - s->started_s, el, sizeof el);
+        acbb_fmt_duration(1e-3 * acbb_now_ms() - s->started_s, el, sizeof el);
         char left[96];
         snprintf(left, sizeof left, "%s %zu/%zu settings ", s->cancel_requested ? "cancelling" : "running",
                  s->done, s->total);
@@ -271,7 +266,7 @@ static void draw_frontier(acbb_app *a, acbb_rect r)
 
 /* ---- screen ---- */
 
-void acbb_screen_accuracy_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     draw_heading(a);
     draw_table(a, a->lay.acc_table);
@@ -279,7 +274,7 @@ void acbb_screen_accuracy_draw(acbb_app *a)
     acbb_draw_accuracy_chart(a, a->lay.acc_chart);
 }
 
-int acbb_screen_accuracy_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     int page = a->lay.acc_table.h - 1 > 1 ? a->lay.acc_table.h - 1 : 1;
     switch (ch) {
@@ -297,3 +292,17 @@ int acbb_screen_accuracy_key(acbb_app *a, int ch)
     default: return 0;
     }
 }
+
+static const acbb_help_line help[] = {
+    { "b", "benchmark edited scene" },
+    { "B", "same, + dynamic level" },
+    { "x  Esc", "cancel the benchmark" },
+    { "j k PgUp/Dn", "scroll the table" },
+    { "g", "export its plot (gnuplot)" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_accuracy = {
+    .name = "Accuracy", .key = '8', .draw = draw, .on_key = on_key, .help = help,
+    .hint = "b benchmark  B +dynamic  x/Esc cancel  j/k scroll  g export plot  ? help",
+};

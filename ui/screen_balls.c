@@ -3,18 +3,19 @@
  * radial load is visible at a glance. */
 #include <curses.h>
 #include <math.h>
-#include "app.h"
+#include "acbb/units.h"
+#include "screens.h"
 
 /* Column widths: the fixed part "%2d %5.1f %6.1f %6.1f %5.2f %5.2f %8.4f"
  * is 43 cells, spin_i 8, the films 14; the wide extras (slide_o, spin_o) 9 + 8. */
 #define FIXED_W 65
 #define EXTRA_W 17
 
-void acbb_screen_balls_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     const acbb_snapshot *s = &a->st.snap;
     acbb_rect b = a->lay.body;
-    const double R2D = 180.0 / M_PI, UM = 1e6;
+    const double R2D = 1.0 / ACBB_DEG /* deg per rad */, UM = 1e6;
     int wide = b.w - FIXED_W - EXTRA_W >= 30; /* room for the outer-race slide and spin */
     int used = FIXED_W + (wide ? EXTRA_W : 0);
     int bw = (b.w - used - 2) / 2;              /* two bars: Qi and Qo */
@@ -49,7 +50,16 @@ void acbb_screen_balls_draw(acbb_app *a)
     }
 }
 
-int acbb_screen_balls_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     return acbb_scroll_key(ch, a->lay.table_rows, a->st.snap.n_balls, &a->ball_top);
 }
+
+static const acbb_help_line help[] = {
+    { "j k PgUp/Dn", "scroll the balls" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_balls = {
+    .name = "Balls", .key = '3', .draw = draw, .on_key = on_key, .help = help,
+};

@@ -2,9 +2,9 @@
  * total loss, and the contact loads of ball 0, against simulated time or
  * iteration. */
 #include <stdio.h>
-#include "app.h"
+#include "screens.h"
 
-void acbb_screen_charts_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     double x[ACBB_HISTORY_CAP], t5[ACBB_HISTORY_CAP], tb[ACBB_HISTORY_CAP];
     double tot[ACBB_HISTORY_CAP], qi[ACBB_HISTORY_CAP], qo[ACBB_HISTORY_CAP];
@@ -32,9 +32,18 @@ void acbb_screen_charts_draw(acbb_app *a)
     acbb_draw_chart(a, a->lay.charts[2], title[2], x, s2, n2, 2, n);
 }
 
-int acbb_screen_charts_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     if (ch != 'i') return 0;
     a->chart_by_time = !a->chart_by_time;
     return 1;
 }
+
+static const acbb_help_line help[] = {
+    { "i", "x axis: time / iteration" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_charts = {
+    .name = "Charts", .key = '4', .draw = draw, .on_key = on_key, .help = help,
+};

@@ -4,7 +4,8 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
-#include "app.h"
+#include "acbb/units.h"
+#include "screens.h"
 
 typedef struct {
     const char *name;
@@ -28,7 +29,7 @@ static void ball_row(acbb_app *a, int y, const acbb_compare_result *c, const cha
              name, v[0], v[1], v[0] - v[1]);
 }
 
-void acbb_screen_compare_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     const acbb_compare_result *c = &a->st.compare;
     acbb_rect b = a->lay.body;
@@ -71,7 +72,7 @@ void acbb_screen_compare_draw(acbb_app *a)
         acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
                  v1, v0 - v1);
     }
-    const double R2D = 180.0 / M_PI;
+    const double R2D = 1.0 / ACBB_DEG /* deg per rad */;
     if (y < b.y + b.h) ball_row(a, y++, c, "Qi ball 0 N", offsetof(acbb_ball_view, Qi), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "Qo ball 0 N", offsetof(acbb_ball_view, Qo), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "alpha_i ball 0 deg", offsetof(acbb_ball_view, alpha_i), R2D);
@@ -80,9 +81,15 @@ void acbb_screen_compare_draw(acbb_app *a)
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_ERROR, "%s", c->message);
 }
 
-int acbb_screen_compare_key(acbb_app *a, int ch)
+const acbb_screen acbb_screen_compare = {
+    .name = "TE/WTE", .key = '6', .draw = draw,
+    .hint = "t run TE vs WTE  r run  ? help  q quit",
+};
+
+/* `t` is global: it starts the comparison from any screen and shows this one. */
+void acbb_screen_compare_start(acbb_app *a)
 {
-    (void)a;
-    (void)ch;
-    return 0; /* `t` is global */
+    acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
+    acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
+

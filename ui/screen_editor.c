@@ -5,7 +5,7 @@
 #include <glob.h>
 #include <stdio.h>
 #include <string.h>
-#include "app.h"
+#include "screens.h"
 
 #define INFO_ROWS 3 /* help of the selected field (2 rows) + refusal */
 
@@ -23,7 +23,7 @@ static void keep_visible(acbb_app *a)
     if (e->cursor >= e->top + rows) e->top = e->cursor - rows + 1;
 }
 
-void acbb_screen_edit_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     acbb_editor *e = &a->ed;
     acbb_rect b = a->lay.body;
@@ -61,7 +61,7 @@ void acbb_screen_edit_draw(acbb_app *a)
         acbb_put(a, y + 2, b.x, b.w, ACBB_ROLE_ERROR, "refused: %s", a->edit_error);
 }
 
-int acbb_screen_edit_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     acbb_editor *e = &a->ed;
     size_t n = acbb_scene_field_count(), page = (size_t)list_rows(a);
@@ -94,6 +94,21 @@ int acbb_screen_edit_key(acbb_app *a, int ch)
         return 0;
     }
 }
+
+static const acbb_help_line help[] = {
+    { "j k arrows", "move (PgUp PgDn Home End)" },
+    { "Enter  e", "type a value, Esc cancels" },
+    { "< >  h l", "cycle on/off and choices" },
+    { "u", "undo the last edit" },
+    { "w  W", "save / save as (atomic)" },
+    { "o", "open a preset" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_edit = {
+    .name = "Edit", .key = '5', .draw = draw, .on_key = on_key, .help = help,
+    .hint = "Enter edit  </> cycle  u undo  w save  W save as  o open  a apply  ? help",
+};
 
 /* ---- preset browser ---- */
 
@@ -148,3 +163,4 @@ int acbb_screen_browse_key(acbb_app *a, int ch)
         return 1; /* the browser is modal */
     }
 }
+

@@ -1,6 +1,6 @@
 /* acbb TUI — every node temperature of the thermal network, in columns. */
 #include <curses.h>
-#include "app.h"
+#include "screens.h"
 
 static int rows_per_col(const acbb_app *a)
 {
@@ -8,7 +8,7 @@ static int rows_per_col(const acbb_app *a)
     return r < 1 ? 1 : r;
 }
 
-void acbb_screen_nodes_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     const acbb_snapshot *s = &a->st.snap;
     acbb_rect b = a->lay.body;
@@ -28,8 +28,17 @@ void acbb_screen_nodes_draw(acbb_app *a)
     }
 }
 
-int acbb_screen_nodes_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     int page = (rows_per_col(a) - 1) * a->lay.node_columns;
     return acbb_scroll_key(ch, page, a->st.snap.n_nodes, &a->node_top);
 }
+
+static const acbb_help_line help[] = {
+    { "j k PgUp/Dn", "scroll the nodes" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_nodes = {
+    .name = "Nodes", .key = '2', .draw = draw, .on_key = on_key, .help = help,
+};

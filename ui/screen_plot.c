@@ -4,7 +4,7 @@
 #include <curses.h>
 #include <stdio.h>
 #include <string.h>
-#include "app.h"
+#include "screens.h"
 #include "export.h"
 
 #define N_KINDS 5
@@ -30,7 +30,7 @@ static void refresh_preview(acbb_app *a)
     }
 }
 
-void acbb_screen_plot_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
     if (!a->preview[0]) refresh_preview(a);
@@ -53,7 +53,7 @@ void acbb_screen_plot_draw(acbb_app *a)
     }
 }
 
-int acbb_screen_plot_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int ch)
 {
     switch (ch) {
     case KEY_LEFT: case 'h': a->plot_kind = (a->plot_kind + N_KINDS - 1) % N_KINDS; break;
@@ -64,6 +64,23 @@ int acbb_screen_plot_key(acbb_app *a, int ch)
     refresh_preview(a);
     return 1;
 }
+
+/* A fresh preview on every entry. */
+static void enter(acbb_app *a)
+{
+    a->preview[0] = '\0';
+}
+
+static const acbb_help_line help[] = {
+    { "< >  h l", "plot kind" },
+    { "Enter", "refresh the preview" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_plot = {
+    .name = "Plot", .key = '7', .draw = draw, .on_key = on_key, .enter = enter, .help = help,
+    .hint = "</> kind  Enter refresh  g export PNG+SVG  ? help  q quit",
+};
 
 void acbb_screen_plot_export(acbb_app *a)
 {
@@ -84,3 +101,4 @@ void acbb_screen_plot_export(acbb_app *a)
     else
         acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d plots (PNG+SVG) to %s/", written, a->plot_dir);
 }
+

@@ -1,111 +1,11 @@
-/* acbb TUI — the title bar, the status line and the overview screen
- * (key temperatures, the five losses, mechanics, outer-ring chart). */
+/* acbb TUI — the overview screen: key temperatures, the five losses,
+ * mechanics, and the outer-ring chart. */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
-#include "app.h"
-
-static const char *const tab_names[ACBB_SCR_COUNT] = {
-    "Run", "Nodes", "Balls", "Charts", "Edit", "TE/WTE", "Plot", "Accuracy" };
-
-/* Columns the tab row takes with every name spelled out. */
-static int full_tabs_width(void)
-{
-    int w = 0;
-    for (int i = 0; i < ACBB_SCR_COUNT; i++) w += (int)strlen(tab_names[i]) + 4; /* "[n name]" */
-    return w;
-}
-
-void acbb_draw_title(acbb_app *a)
-{
-    acbb_rect r = a->lay.title;
-    acbb_role_on(a, ACBB_ROLE_TITLE);
-    mvhline(r.y, r.x, ' ', r.w);
-    int x = r.x;
-    acbb_put(a, r.y, x, r.w, ACBB_ROLE_TITLE, " acbb ");
-    x += 6;
-    /* At 80 columns eight names leave no room for the scene's name (and its
-     * unsaved-edit star), so then only the current tab keeps its name. */
-    char name[PATH_MAX + 8];
-    snprintf(name, sizeof name, "%s%s ", acbb_editor_name(&a->ed), a->ed.modified ? "*" : "");
-    int compact = x + full_tabs_width() + (int)strlen(name) + 1 > r.x + r.w;
-    for (int i = 0; i < ACBB_SCR_COUNT; i++) {
-        char tab[24];
-        if (compact && (int)a->screen != i) snprintf(tab, sizeof tab, "%d", i + 1);
-        else snprintf(tab, sizeof tab, "%d %s", i + 1, tab_names[i]);
-        acbb_role rr = (int)a->screen == i ? ACBB_ROLE_TAB : ACBB_ROLE_TITLE;
-        /* Monochrome: brackets mark the current tab as well as bold. */
-        acbb_put(a, r.y, x, r.x + r.w - x, rr, (int)a->screen == i ? "[%s]" : " %s ", tab);
-        x += (int)strlen(tab) + 2;
-    }
-    int room = r.x + r.w - x - 1;
-    int len = (int)strlen(name);
-    if (room > 4) {
-        if (len > room) { /* keep the end of a long name, marked as cut */
-            acbb_put(a, r.y, r.x + r.w - room, room, ACBB_ROLE_TITLE, "%s%s", a->term.g.ellipsis,
-                     name + (len - room + 1));
-        } else {
-            acbb_put(a, r.y, r.x + r.w - len, len, ACBB_ROLE_TITLE, "%s", name);
-        }
-    }
-    acbb_role_on(a, ACBB_ROLE_NORMAL);
-}
-
-static acbb_role phase_role(const acbb_app *a)
-{
-    switch (a->st.phase) {
-    case ACBB_WORKER_RUNNING: return ACBB_ROLE_OK;
-    case ACBB_WORKER_DONE:
-        return a->st.snap.state == ACBB_RUN_CONVERGED ? ACBB_ROLE_OK : ACBB_ROLE_ERROR;
-    case ACBB_WORKER_NO_SIM: return ACBB_ROLE_ERROR;
-    default: return ACBB_ROLE_WARN;
-    }
-}
-
-static void phase_text(const acbb_app *a, char *buf, size_t n)
-{
-    if (a->st.phase == ACBB_WORKER_DONE)
-        snprintf(buf, n, "%s", acbb_run_status_name(&a->st.snap));
-    else
-        snprintf(buf, n, "%s", acbb_worker_phase_name(a->st.phase));
-}
-
-void acbb_draw_status(acbb_app *a)
-{
-    acbb_rect r = a->lay.status;
-    const acbb_snapshot *s = &a->st.snap;
-    char ph[32], wall[16], eta[16], pace[16], line[256];
-    phase_text(a, ph, sizeof ph);
-    acbb_fmt_duration(a->st.run_wall_s, wall, sizeof wall);
-    acbb_fmt_duration(a->prog.eta_s, eta, sizeof eta);
-    int p = acbb_worker_pace(a->worker); /* the atomic: current even while idle */
-    if (p > 0) snprintf(pace, sizeof pace, "%d/s", p);
-    else snprintf(pace, sizeof pace, "max");
-    int x = r.x;
-    acbb_put(a, r.y, x, r.w, phase_role(a), "%-9s", ph);
-    x += 10;
-    snprintf(line, sizeof line, "it %ld t %.0fs wall %s %.0f st/s pace %s res %.1e",
-             s->iteration, s->time, wall, a->st.steps_per_s, pace, s->residual);
-    acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", line);
-    x += (int)strlen(line) + 1;
-    /* Progress to steady state on the log scale of the residual. */
-    int room = r.x + r.w - x;
-    if (room >= 14) {
-        double f = a->st.phase == ACBB_WORKER_DONE && s->state == ACBB_RUN_CONVERGED ? 1.0
-                                                                                      : a->prog.fraction;
-        char tail[32];
-        if (f >= 1.0) snprintf(tail, sizeof tail, "100%% done");
-        else snprintf(tail, sizeof tail, "%3.0f%% eta %s", 100 * f, eta);
-        int bw = room - (int)strlen(tail) - 1;
-        if (bw > 10) bw = 10;
-        if (bw >= 3) {
-            acbb_bar(a, r.y, x, bw, f, ACBB_ROLE_BAR);
-            x += bw + 1;
-        }
-        acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", tail);
-    }
-}
+#include "acbb/units.h"
+#include "screens.h"
 
 static void temps_panel(acbb_app *a, acbb_rect r)
 {
@@ -172,7 +72,7 @@ static void mech_panel(acbb_app *a, acbb_rect r)
     span(s, offsetof(acbb_ball_view, Qo), &qo0, &qo1);
     span(s, offsetof(acbb_ball_view, alpha_i), &ai0, &ai1);
     span(s, offsetof(acbb_ball_view, alpha_o), &ao0, &ao1);
-    const double R2D = 180.0 / M_PI, UM = 1e6;
+    const double R2D = 1.0 / ACBB_DEG /* deg per rad */, UM = 1e6;
     char item[6][288];
     snprintf(item[0], sizeof item[0], "Qi %.1f..%.1f N  Qo %.1f..%.1f N", qi0, qi1, qo0, qo1);
     snprintf(item[1], sizeof item[1], "a_i %.2f..%.2f%s  a_o %.2f..%.2f%s", ai0 * R2D, ai1 * R2D, deg,
@@ -209,7 +109,7 @@ static void chart_panel(acbb_app *a, acbb_rect r)
     acbb_draw_chart(a, r, title, x, ys, names, 1, n);
 }
 
-void acbb_screen_run_draw(acbb_app *a)
+static void draw(acbb_app *a)
 {
     if (!a->st.has_snapshot) {
         acbb_put(a, a->lay.body.y + 1, 2, a->lay.body.w - 4, ACBB_ROLE_ERROR, "%s",
@@ -221,3 +121,7 @@ void acbb_screen_run_draw(acbb_app *a)
     mech_panel(a, a->lay.mech);
     chart_panel(a, a->lay.chart);
 }
+
+const acbb_screen acbb_screen_run = {
+    .name = "Run", .key = '1', .draw = draw,
+};

@@ -48,3 +48,14 @@ void acbb_wake_drain(acbb_wake *w)
     while (read(w->rd, buf, sizeof buf) > 0) {}
     atomic_store(&w->pending, 0);
 }
+
+struct timespec acbb_wake_abstime(double at_ms)
+{
+    struct timespec ts;
+    if (!(at_ms > 0.0)) at_ms = 0.0;
+    ts.tv_sec = (time_t)(at_ms / 1e3);
+    ts.tv_nsec = (long)((at_ms - 1e3 * (double)ts.tv_sec) * 1e6);
+    if (ts.tv_nsec >= 1000000000L) { ts.tv_sec++; ts.tv_nsec -= 1000000000L; }
+    if (ts.tv_nsec < 0) ts.tv_nsec = 0;
+    return ts;
+}

@@ -7,6 +7,7 @@
 #define ACBB_UI_WAKE_H
 
 #include <stdatomic.h>
+#include <time.h>
 
 typedef struct {
     int rd, wr;              /* non-blocking, close-on-exec */
@@ -17,5 +18,9 @@ int acbb_wake_init(acbb_wake *w);        /* 0, or -1 with errno */
 void acbb_wake_close(acbb_wake *w);
 void acbb_wake_signal(acbb_wake *w);     /* any thread */
 void acbb_wake_drain(acbb_wake *w);      /* the UI thread, before reading the state */
+
+/* The timespec of `at_ms` on acbb_now_ms's clock (CLOCK_MONOTONIC), for
+ * pthread_cond_timedwait on a condition variable set to that clock. */
+struct timespec acbb_wake_abstime(double at_ms);
 
 #endif

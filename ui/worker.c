@@ -4,7 +4,16 @@
  * under one mutex and pokes a pipe; the UI copies the struct out once per
  * frame. Everything the worker alone touches (the Sims, timing) lives in
  * a worker_ctx on the worker's own stack, so the shared part is exactly
- * what is behind the mutex. */
+ * what is behind the mutex.
+ *
+ * Every Sim (the main run and the TE/WTE variants) advances only through
+ * the engine's one run loop, acbb_sim_drive. Its per-step hook publishes,
+ * sleeps out the pace on the condition variable (so a command still wakes
+ * it) and returns nonzero when a command is queued: the drive returns, the
+ * loop below handles the command and drives again. STOP and QUIT also set
+ * the cancel flag the drive and the Sim's set-up watch, so they end even a
+ * long dynamic-level step at once with ACBB_CANCELLED and the last good
+ * state (DESIGN.md "Threads in the TUI"). */
 #include <errno.h>
 #include <pthread.h>
 #include <signal.h>
@@ -14,11 +23,12 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "acbb/measure.h"
 #include "worker.h"
 #include "wake.h"
 
 #define QUEUE_CAP 16
-#define RATE_WINDOW_S 0.25  /* steps/s is measured over windows this long */
+#define RATE_WINDOW_MS 250.0 /* steps/s is measured over windows this long */
 
 typedef struct {
     acbb_worker_cmd cmd;
@@ -40,6 +50,10 @@ struct acbb_worker {
     acbb_history hist;
     acbb_scene initial;        /* read by the worker once at start-up */
     _Atomic int pace;          /* steps per second, 0 = flat out */
+    /* Set by the posting thread (STOP: run; QUIT: both), cleared by the
+     * worker when it begins the next run / comparison. */
+    atomic_int cancel_run;     /* the main Sim's drive and set-up */
+    atomic_int cancel_cmp;     /* the TE/WTE variants' */
     acbb_wake wake;            /* the UI's select() wakes on it */
 };
 
@@ -49,14 +63,15 @@ typedef struct {
     acbb_scene scene;
     acbb_worker_phase phase;
     acbb_snapshot snap;
-    double last_step;          /* monotonic s of the last step (pacing) */
-    double seg_start, wall_acc;/* running wall time, pauses excluded */
-    double rate_t0, rate;      /* steps/s measurement window */
+    double last_step;          /* acbb_now_ms of the last step (pacing) */
+    double seg_start, wall_acc;/* running wall time (ms), pauses excluded */
+    double rate_t0, rate;      /* steps/s measurement window (t0 in ms) */
     long rate_n;
     /* TE vs WTE comparison */
     int cmp_active, cmp_variant;
     acbb_sim *cmp_sim;
     acbb_scene cmp_scene;
+    acbb_snapshot cmp_snap;    /* the running variant's latest state */
 } worker_ctx;
 
 /* Copy a message, truncating to fit (strncpy warns and may not terminate). */
@@ -65,23 +80,6 @@ static void copy_text(char *dst, size_t n, const char *src)
     size_t len = strnlen(src, n - 1);
     memcpy(dst, src, len);
     dst[len] = '\0';
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static struct timespec abs_time(double t)
-{
-    struct timespec ts;
-    ts.tv_sec = (time_t)t;
-    ts.tv_nsec = (long)((t - (double)ts.tv_sec) * 1e9);
-    if (ts.tv_nsec >= 1000000000L) { ts.tv_sec++; ts.tv_nsec -= 1000000000L; }
-    if (ts.tv_nsec < 0) ts.tv_nsec = 0;
-    return ts;
 }
 
 const char *acbb_worker_phase_name(acbb_worker_phase p)
@@ -103,7 +101,7 @@ static void wake_ui(acbb_worker *w) { acbb_wake_signal(&w->wake); }
 
 static double run_wall(const worker_ctx *c, double now)
 {
-    return c->wall_acc + (c->phase == ACBB_WORKER_RUNNING ? now - c->seg_start : 0.0);
+    return 1e-3 * (c->wall_acc + (c->phase == ACBB_WORKER_RUNNING ? now - c->seg_start : 0.0));
 }
 
 /* Copy the worker's view into the shared state. Called with w->mu held. */
@@ -111,7 +109,7 @@ static void publish_locked(acbb_worker *w, const worker_ctx *c, int with_snapsho
 {
     w->st.phase = c->phase;
     w->st.pace = atomic_load(&w->pace);
-    w->st.run_wall_s = run_wall(c, now_s());
+    w->st.run_wall_s = run_wall(c, acbb_now_ms());
     w->st.steps_per_s = c->rate;
     if (with_snapshot && c->sim) {
         w->st.snap = c->snap;
@@ -133,12 +131,12 @@ static void publish(acbb_worker *w, const worker_ctx *c, int push_history)
 
 static void set_phase(worker_ctx *c, acbb_worker_phase p)
 {
-    double t = now_s();
+    double t = acbb_now_ms();
     if (c->phase == ACBB_WORKER_RUNNING && p != ACBB_WORKER_RUNNING)
         c->wall_acc += t - c->seg_start;
     if (c->phase != ACBB_WORKER_RUNNING && p == ACBB_WORKER_RUNNING) {
         c->seg_start = t;
-        c->last_step = t - 1e9; /* first step is due at once */
+        c->last_step = t - 1e12; /* first step is due at once */
         c->rate_t0 = t;
         c->rate_n = 0;
     }
@@ -164,27 +162,81 @@ static void begin_run(acbb_worker *w, worker_ctx *c, acbb_worker_phase p)
     pthread_mutex_unlock(&w->mu);
 }
 
+/* A new run or comparison begins: forget an earlier STOP/QUIT unless one
+ * is still queued behind this command (then the set-up is cut short and
+ * that command handled next). `quit_only`: only QUIT counts (comparisons
+ * ignore STOP, which is about the main run). */
+static void rearm_cancel(acbb_worker *w, atomic_int *flag, int quit_only)
+{
+    pthread_mutex_lock(&w->mu);
+    int pending = 0;
+    for (int i = 0; i < w->q_len; i++) {
+        acbb_worker_cmd k = w->q[(w->q_head + i) % QUEUE_CAP].cmd;
+        pending |= k == ACBB_CMD_QUIT || (!quit_only && k == ACBB_CMD_STOP);
+    }
+    if (!pending) atomic_store(flag, 0);
+    pthread_mutex_unlock(&w->mu);
+}
+
 /* (Re)build the Sim for `s`: restart in place when one exists so a failure
- * leaves the current run untouched (acbb_sim_restart's contract). */
-static acbb_status load_scene(worker_ctx *c, const acbb_scene *s, int warm, acbb_error *err)
+ * leaves the current run untouched (acbb_sim_restart's contract). The Sim
+ * keeps the cancel flag it was made with, so a stop or quit also cuts a
+ * long set-up (the initial dynamic-level window) short. */
+static acbb_status load_scene(acbb_worker *w, worker_ctx *c, const acbb_scene *s, int warm,
+                              acbb_error *err)
 {
     acbb_status rc;
+    rearm_cancel(w, &w->cancel_run, 0);
     if (c->sim)
         rc = acbb_sim_restart(c->sim, s, warm, err);
     else
-        rc = acbb_sim_new(s, &c->sim, err);
+        rc = acbb_sim_new_ctl(s, &w->cancel_run, &c->sim, err);
+    if (rc == ACBB_CANCELLED)
+        acbb_error_set(err, rc, "run set-up cancelled by stop/quit; the previous state is kept");
     if (rc == ACBB_OK) c->scene = *s;
     return rc;
 }
 
+/* ---- the drive hook's pace (worker side) ---- */
+
+typedef struct {
+    acbb_worker *w;
+    worker_ctx *c;
+} hook_ctx;
+
+/* Sleep until a step `paced` after `last_step` (ms) is due, on the
+ * condition variable so a command or a pace change wakes it at once.
+ * Returns 1 as soon as a command is queued (the hook then pauses the
+ * drive so the command is handled), 0 when the next step is due. */
+static int wait_step_due(acbb_worker *w, double last_step, int paced)
+{
+    int cmd;
+    pthread_mutex_lock(&w->mu);
+    for (;;) {
+        if ((cmd = w->q_len > 0)) break;
+        int pace = paced ? atomic_load(&w->pace) : 0;
+        if (pace <= 0) break;
+        double due = last_step + 1e3 / pace;
+        if (acbb_now_ms() >= due) break;
+        struct timespec ts = acbb_wake_abstime(due);
+        pthread_cond_timedwait(&w->cv_cmd, &w->mu, &ts);
+    }
+    pthread_mutex_unlock(&w->mu);
+    return cmd;
+}
+
 /* ---- comparison (worker side) ---- */
 
-static void compare_finish_variant(acbb_worker *w, worker_ctx *c)
+/* Variant v ended (ok: its snapshot is in `snap`; else `why` says why it
+ * could not run): publish and move on to the next one. */
+static void compare_end_variant(acbb_worker *w, worker_ctx *c, const acbb_snapshot *snap,
+                                const char *why)
 {
     int v = c->cmp_variant;
     pthread_mutex_lock(&w->mu);
-    w->st.compare.ok[v] = 1;
-    acbb_sim_snapshot(c->cmp_sim, &w->st.compare.snap[v]);
+    w->st.compare.ok[v] = snap != NULL;
+    if (snap) w->st.compare.snap[v] = *snap;
+    else copy_text(w->st.compare.message, sizeof w->st.compare.message, why);
     if (v == 1) w->st.compare.phase = ACBB_CMP_DONE;
     else w->st.compare.variant = 1;
     publish_locked(w, c, 0);
@@ -192,46 +244,46 @@ static void compare_finish_variant(acbb_worker *w, worker_ctx *c)
     wake_ui(w);
     acbb_sim_free(c->cmp_sim);
     c->cmp_sim = NULL;
-    c->cmp_variant++;
-    if (c->cmp_variant > 1) c->cmp_active = 0;
+    if (++c->cmp_variant > 1) c->cmp_active = 0;
 }
 
-/* One step of the comparison: build the variant's Sim on its first step,
- * step it, and publish progress every so often. */
-static void compare_step(acbb_worker *w, worker_ctx *c)
+/* After each step of a variant: publish progress every so often; pause
+ * the drive when a command is queued (comparisons run flat out). */
+static int compare_hook(void *ctx, const acbb_sim *sim)
 {
-    acbb_error err = { { 0 } };
+    hook_ctx *h = ctx;
+    worker_ctx *c = h->c;
+    acbb_sim_snapshot(sim, &c->cmp_snap);
+    if (c->cmp_snap.iteration % 16 == 0) {
+        pthread_mutex_lock(&h->w->mu);
+        h->w->st.compare.snap[c->cmp_variant] = c->cmp_snap;
+        publish_locked(h->w, c, 0);
+        pthread_mutex_unlock(&h->w->mu);
+        wake_ui(h->w);
+    }
+    return wait_step_due(h->w, 0.0, 0);
+}
+
+/* Drive the current variant (building its Sim first) until it ends or a
+ * command is queued. */
+static void compare_drive(acbb_worker *w, worker_ctx *c)
+{
     if (!c->cmp_sim) {
+        acbb_error err = { { 0 } };
         acbb_scene s = c->cmp_scene;
         s.thermal_expansion = c->cmp_variant == 0;
-        if (acbb_sim_new(&s, &c->cmp_sim, &err) != ACBB_OK) {
+        if (acbb_sim_new_ctl(&s, &w->cancel_cmp, &c->cmp_sim, &err) != ACBB_OK) {
             c->cmp_sim = NULL;
-            int v = c->cmp_variant;
-            pthread_mutex_lock(&w->mu);
-            w->st.compare.ok[v] = 0;
-            copy_text(w->st.compare.message, sizeof w->st.compare.message, err.msg);
-            if (v == 1) w->st.compare.phase = ACBB_CMP_DONE;
-            else w->st.compare.variant = 1;
-            pthread_mutex_unlock(&w->mu);
-            wake_ui(w);
-            if (++c->cmp_variant > 1) c->cmp_active = 0;
+            compare_end_variant(w, c, NULL, err.msg);
             return;
         }
     }
-    acbb_sim_step(c->cmp_sim);
-    if (acbb_sim_state(c->cmp_sim) != ACBB_RUN_RUNNING) {
-        compare_finish_variant(w, c);
-        return;
-    }
-    acbb_snapshot snap;
-    acbb_sim_snapshot(c->cmp_sim, &snap);
-    if (snap.iteration % 16 == 0) {
-        pthread_mutex_lock(&w->mu);
-        w->st.compare.snap[c->cmp_variant] = snap;
-        publish_locked(w, c, 0);
-        pthread_mutex_unlock(&w->mu);
-        wake_ui(w);
-    }
+    hook_ctx h = { w, c };
+    const acbb_run_ctl ctl = { compare_hook, &h, &w->cancel_cmp };
+    acbb_sim_drive(c->cmp_sim, &ctl);
+    if (acbb_sim_state(c->cmp_sim) == ACBB_RUN_RUNNING) return; /* a command waits */
+    acbb_sim_snapshot(c->cmp_sim, &c->cmp_snap);
+    compare_end_variant(w, c, &c->cmp_snap, NULL);
 }
 
 static void compare_begin(acbb_worker *w, worker_ctx *c, const acbb_scene *s)
@@ -241,10 +293,68 @@ static void compare_begin(acbb_worker *w, worker_ctx *c, const acbb_scene *s)
     c->cmp_scene = *s;
     c->cmp_active = 1;
     c->cmp_variant = 0;
+    rearm_cancel(w, &w->cancel_cmp, 1);
     pthread_mutex_lock(&w->mu);
     memset(&w->st.compare, 0, sizeof w->st.compare);
     w->st.compare.phase = ACBB_CMP_RUNNING;
     pthread_mutex_unlock(&w->mu);
+}
+
+/* ---- the main run (worker side) ---- */
+
+static void measure_rate(worker_ctx *c, double t)
+{
+    c->rate_n++;
+    if (t - c->rate_t0 >= RATE_WINDOW_MS) {
+        c->rate = 1e3 * (double)c->rate_n / (t - c->rate_t0);
+        c->rate_t0 = t;
+        c->rate_n = 0;
+    }
+}
+
+/* After each step of the main run (and once at iteration 0): publish the
+ * new state with its history point, then wait out the pace. */
+static int run_hook(void *ctx, const acbb_sim *sim)
+{
+    hook_ctx *h = ctx;
+    worker_ctx *c = h->c;
+    long before = c->snap.iteration;
+    acbb_sim_snapshot(sim, &c->snap);
+    if (c->snap.iteration != before) { /* iteration 0 was published by begin_run */
+        double t = acbb_now_ms();
+        c->last_step = t;
+        measure_rate(c, t);
+        publish(h->w, c, 1);
+    }
+    return wait_step_due(h->w, c->last_step, 1);
+}
+
+/* Drive the main run until it ends or a command is queued. A cancelled
+ * run (STOP or QUIT arrived mid-step) is STOPPED with its last good state. */
+static void run_drive(acbb_worker *w, worker_ctx *c)
+{
+    hook_ctx h = { w, c };
+    const acbb_run_ctl ctl = { run_hook, &h, &w->cancel_run };
+    acbb_status rc = acbb_sim_drive(c->sim, &ctl);
+    if (acbb_sim_state(c->sim) == ACBB_RUN_RUNNING) return; /* a command waits */
+    double t = acbb_now_ms();
+    /* A run shorter than one window still reports its rate. */
+    if (c->rate == 0.0 && t > c->rate_t0) c->rate = 1e3 * (double)c->rate_n / (t - c->rate_t0);
+    acbb_sim_snapshot(c->sim, &c->snap);
+    set_phase(c, rc == ACBB_CANCELLED ? ACBB_WORKER_STOPPED : ACBB_WORKER_DONE);
+    publish(w, c, 0);
+}
+
+/* The user's stop between steps: the drive ends the run as cancelled
+ * before stepping, so every stop leaves the same named status whether or
+ * not it caught a step in flight. */
+static void stop_run(acbb_worker *w, worker_ctx *c)
+{
+    atomic_store(&w->cancel_run, 1);
+    const acbb_run_ctl ctl = { NULL, NULL, &w->cancel_run };
+    acbb_sim_drive(c->sim, &ctl);
+    acbb_sim_snapshot(c->sim, &c->snap);
+    set_phase(c, ACBB_WORKER_STOPPED);
 }
 
 /* ---- commands (worker side) ---- */
@@ -260,7 +370,7 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
     case ACBB_CMD_APPLY:
     case ACBB_CMD_RESET: {
         int warm = q->cmd == ACBB_CMD_APPLY && q->warm;
-        rc = load_scene(c, s, warm, &err);
+        rc = load_scene(w, c, s, warm, &err);
         if (rc == ACBB_OK)
             begin_run(w, c, q->cmd == ACBB_CMD_RESET ? ACBB_WORKER_IDLE : ACBB_WORKER_RUNNING);
         else if (!c->sim)
@@ -274,8 +384,7 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
         if (c->phase == ACBB_WORKER_PAUSED) set_phase(c, ACBB_WORKER_RUNNING);
         break;
     case ACBB_CMD_STOP:
-        if (c->phase == ACBB_WORKER_RUNNING || c->phase == ACBB_WORKER_PAUSED)
-            set_phase(c, ACBB_WORKER_STOPPED);
+        if (c->phase == ACBB_WORKER_RUNNING || c->phase == ACBB_WORKER_PAUSED) stop_run(w, c);
         break;
     case ACBB_CMD_COMPARE:
         compare_begin(w, c, s);
@@ -297,61 +406,23 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
     wake_ui(w);
 }
 
-/* ---- stepping (worker side) ---- */
+/* ---- the loop (worker side) ---- */
 
-static void measure_rate(worker_ctx *c, double t)
-{
-    c->rate_n++;
-    if (t - c->rate_t0 >= RATE_WINDOW_S) {
-        c->rate = (double)c->rate_n / (t - c->rate_t0);
-        c->rate_t0 = t;
-        c->rate_n = 0;
-    }
-}
-
-static void step_run(acbb_worker *w, worker_ctx *c)
-{
-    acbb_status rc = acbb_sim_step(c->sim);
-    double t = now_s();
-    c->last_step = t;
-    measure_rate(c, t);
-    acbb_sim_snapshot(c->sim, &c->snap);
-    if (rc != ACBB_OK || acbb_sim_state(c->sim) != ACBB_RUN_RUNNING) {
-        /* A run shorter than one window still reports its rate. */
-        if (c->rate == 0.0 && t > c->rate_t0) c->rate = (double)c->rate_n / (t - c->rate_t0);
-        set_phase(c, ACBB_WORKER_DONE);
-    }
-    publish(w, c, 1);
-}
-
-/* Wait until there is a command (returns 1 with it in *out) or a step is
- * due (returns 0). Paced runs sleep on the condition variable so a command
- * or a pace change wakes them at once. */
+/* Wait until there is a command (returns 1 with it in *out) or something
+ * to drive (returns 0): a comparison, or the main run while RUNNING. */
 static int next_action(acbb_worker *w, const worker_ctx *c, queued_cmd *out)
 {
     pthread_mutex_lock(&w->mu);
-    for (;;) {
-        if (w->q_len > 0) {
-            *out = w->q[w->q_head];
-            w->q_head = (w->q_head + 1) % QUEUE_CAP;
-            w->q_len--;
-            pthread_mutex_unlock(&w->mu);
-            return 1;
-        }
-        if (c->cmp_active) break;
-        if (c->phase != ACBB_WORKER_RUNNING) {
-            pthread_cond_wait(&w->cv_cmd, &w->mu);
-            continue;
-        }
-        int pace = atomic_load(&w->pace);
-        if (pace <= 0) break;
-        double due = c->last_step + 1.0 / pace;
-        if (now_s() >= due) break;
-        struct timespec ts = abs_time(due);
-        pthread_cond_timedwait(&w->cv_cmd, &w->mu, &ts);
+    while (w->q_len == 0 && !c->cmp_active && c->phase != ACBB_WORKER_RUNNING)
+        pthread_cond_wait(&w->cv_cmd, &w->mu);
+    int got = w->q_len > 0;
+    if (got) {
+        *out = w->q[w->q_head];
+        w->q_head = (w->q_head + 1) % QUEUE_CAP;
+        w->q_len--;
     }
     pthread_mutex_unlock(&w->mu);
-    return 0;
+    return got;
 }
 
 static void *worker_main(void *arg)
@@ -371,9 +442,9 @@ static void *worker_main(void *arg)
             handle_cmd(w, &c, &q);
             if (q.cmd == ACBB_CMD_QUIT) break;
         } else if (c.cmp_active) {
-            compare_step(w, &c);
+            compare_drive(w, &c);
         } else {
-            step_run(w, &c);
+            run_drive(w, &c);
         }
     }
     acbb_sim_free(c.cmp_sim);
@@ -404,6 +475,8 @@ acbb_status acbb_worker_new(const acbb_scene *scene, int pace, acbb_worker **out
     w->initial = *scene;
     w->st.phase = ACBB_WORKER_NO_SIM; /* until the thread has built the Sim */
     atomic_init(&w->pace, pace < 0 ? 0 : pace);
+    atomic_init(&w->cancel_run, 0);
+    atomic_init(&w->cancel_cmp, 0);
     acbb_history_init(&w->hist);
     if (acbb_wake_init(&w->wake) != 0) {
         free(w);
@@ -447,6 +520,10 @@ static unsigned long post_locked(acbb_worker *w, acbb_worker_cmd cmd, const acbb
     q->has_scene = scene != NULL;
     if (scene) q->scene = *scene;
     q->seq = ++w->next_seq;
+    /* Set now, not when the worker gets to the command: the flag is what
+     * ends a step (or a set-up) already in flight. */
+    if (cmd == ACBB_CMD_STOP || cmd == ACBB_CMD_QUIT) atomic_store(&w->cancel_run, 1);
+    if (cmd == ACBB_CMD_QUIT) atomic_store(&w->cancel_cmp, 1);
     w->q_len++;
     pthread_cond_signal(&w->cv_cmd);
     return q->seq;
@@ -465,6 +542,9 @@ void acbb_worker_free(acbb_worker *w)
 {
     if (!w) return;
     unsigned long seq;
+    /* End a step in flight now, even before QUIT finds room in the queue. */
+    atomic_store(&w->cancel_run, 1);
+    atomic_store(&w->cancel_cmp, 1);
     /* QUIT must get in even if the queue is full: wait for room. */
     while ((seq = acbb_worker_post(w, ACBB_CMD_QUIT, NULL, 0)) == 0) {
         struct timespec ts = { 0, 1000000L };
@@ -520,7 +600,7 @@ void acbb_worker_drain_wake(acbb_worker *w)
 
 int acbb_worker_wait_done(acbb_worker *w, unsigned long seq, int timeout_ms)
 {
-    struct timespec ts = abs_time(now_s() + timeout_ms / 1000.0);
+    struct timespec ts = acbb_wake_abstime(acbb_now_ms() + timeout_ms);
     int done;
     pthread_mutex_lock(&w->mu);
     while (!(done = w->st.cmd_done >= seq))

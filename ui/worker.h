@@ -12,6 +12,13 @@
  * the worker never waits for the UI. The pace (steps per second, 0 = flat
  * out) is an _Atomic the UI may change at any time.
  *
+ * The worker advances every Sim only through the engine's run loop,
+ * acbb_sim_drive, whose per-step hook publishes and paces. STOP and QUIT
+ * also raise a cancel flag the moment they are posted, so they end a step
+ * (or a Sim's set-up) in flight, e.g. a long dynamic-level window: the run
+ * is then STOPPED with the snapshot status ACBB_CANCELLED ("cancelled")
+ * and its last good state.
+ *
  * The thread is created with SIGINT, SIGTERM, SIGHUP and SIGWINCH blocked
  * so those signals are always delivered to the UI thread.
  *
@@ -30,7 +37,7 @@ typedef enum {
     ACBB_WORKER_IDLE,     /* a fresh Sim at ambient, not stepping (also after reset) */
     ACBB_WORKER_RUNNING,  /* stepping (flat out or paced) */
     ACBB_WORKER_PAUSED,   /* run in progress, not stepping */
-    ACBB_WORKER_STOPPED,  /* run halted by the user; the last state stays visible */
+    ACBB_WORKER_STOPPED,  /* run halted by the user (status "cancelled"); the last good state stays visible */
     ACBB_WORKER_DONE,     /* the run ended by itself: converged or a named failure */
     ACBB_WORKER_NO_SIM    /* the scene could not be compiled (message says why) */
 } acbb_worker_phase;

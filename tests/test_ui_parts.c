@@ -1,0 +1,318 @@
+/* Tests of the TUI's curses-free, single-threaded parts: the layout
+ * function for several terminal sizes, the progress estimate, the chart
+ * raster, the editor model, and the accuracy screen's layout and log-log
+ * chart model (acc_chart.c). The thread hand-offs are tests/test_worker.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "tap.h"
+#include "acc_chart.h"
+#include "chart.h"
+#include "editor.h"
+#include "layout.h"
+#include "progress.h"
+
+/* ---- layout ---- */
+
+static void check_layout(int rows, int cols)
+{
+    acbb_layout l;
+    int rc = acbb_layout_compute(rows, cols, &l);
+    ok(rc == 0 && !l.too_small, "%dx%d: usable", cols, rows);
+    ok(l.title.y == 0 && l.title.h == 1 && l.body.y == 1 && l.body.h == rows - 3 &&
+           l.status.y == rows - 2 && l.message.y == rows - 1,
+       "%dx%d: title, body, status, message stack over all %d rows", cols, rows, rows);
+    const acbb_rect p[4] = { l.temps, l.losses, l.mech, l.chart };
+    int inside = 1, apart = 1, area = 0;
+    for (int i = 0; i < 4; i++) {
+        inside &= acbb_rect_inside(p[i], rows, cols) && p[i].y >= l.body.y &&
+                  p[i].y + p[i].h <= l.body.y + l.body.h;
+        area += p[i].h * p[i].w;
+        for (int j = i + 1; j < 4; j++) apart &= !acbb_rect_overlap(p[i], p[j]);
+    }
+    ok(inside, "%dx%d: overview panels inside the body", cols, rows);
+    ok(apart, "%dx%d: overview panels do not overlap", cols, rows);
+    ok(area == l.body.h * l.body.w, "%dx%d: overview panels tile the body (%d of %d cells)", cols,
+       rows, area, l.body.h * l.body.w);
+    ok(l.temps.w >= 40 && l.losses.w >= 40, "%dx%d: temperature and loss panels >= 40 wide", cols, rows);
+    ok(l.chart.h >= 5, "%dx%d: overview chart keeps >= 5 rows (got %d)", cols, rows, l.chart.h);
+    int sum = 0, stacked = 1;
+    for (int i = 0; i < ACBB_LAYOUT_CHARTS; i++) {
+        sum += l.charts[i].h;
+        if (i > 0) stacked &= l.charts[i].y == l.charts[i - 1].y + l.charts[i - 1].h;
+    }
+    ok(sum == l.body.h && stacked && l.charts[0].y == l.body.y,
+       "%dx%d: history charts stack over the body", cols, rows);
+    int want_cols = cols / ACBB_LAYOUT_NODE_COL_W > 4 ? 4 : cols / ACBB_LAYOUT_NODE_COL_W;
+    ok(l.node_columns == want_cols && l.node_columns * ACBB_LAYOUT_NODE_COL_W <= cols,
+       "%dx%d: %d node-table columns fit", cols, rows, l.node_columns);
+    ok(l.table_rows == rows - 4, "%dx%d: table rows = rows - 4", cols, rows);
+}
+
+static void test_layout(void)
+{
+    check_layout(24, 80);
+    check_layout(30, 100);
+    check_layout(60, 200);
+    acbb_layout l;
+    /* 80x24: two columns of 40; 8-row top panels, 4-row mechanics, 9-row chart. */
+    acbb_layout_compute(24, 80, &l);
+    ok(l.temps.w == 40 && l.losses.x == 40 && l.mech.y == 9 && l.chart.y == 13 && l.chart.h == 9,
+       "80x24: panels at the planned places");
+    acbb_layout_compute(60, 200, &l);
+    ok(l.mech.y == l.temps.y && l.mech.x > l.losses.x, "200x60: mechanics is a third column");
+    const int small[][2] = { { 10, 40 }, { 24, 79 }, { 23, 80 }, { 0, 0 } };
+    for (int i = 0; i < 4; i++) {
+        int rc = acbb_layout_compute(small[i][0], small[i][1], &l);
+        ok(rc == -1 && l.too_small, "%dx%d: terminal too small", small[i][1], small[i][0]);
+    }
+    acbb_layout_compute(10, 40, &l);
+    ok(l.message.y == 9 && l.message.w == 40, "40x10: the notice row is still the bottom row");
+}
+
+/* ---- progress ---- */
+
+static void test_progress(void)
+{
+    acbb_progress p;
+    acbb_progress_reset(&p);
+    ok(!p.valid && p.eta_s < 0, "progress: unknown before the first residual");
+    acbb_progress_update(&p, 1.0, 0.0, 1e-4);
+    is_close(p.fraction, 0.0, 0, 1e-15, "progress: 0 at the first residual");
+    /* r: 1 -> 1e-2 in 2 s; tol 1e-4: half way on the log scale,
+     * ln(1e-2/1e-4) / (ln(1/1e-2) / 2 s) = 2 s left. */
+    acbb_progress_update(&p, 1e-2, 2.0, 1e-4);
+    is_close(p.fraction, 0.5, 1e-12, 0, "progress: ln(1/1e-2)/ln(1/1e-4) = 0.5");
+    is_close(p.eta_s, 2.0, 1e-12, 0, "progress: ETA extrapolates the log decay rate (2 s)");
+    acbb_progress_update(&p, 1e-5, 5.0, 1e-4);
+    ok(p.fraction == 1.0 && p.eta_s == 0.0, "progress: clamps at 1 below tolerance");
+}
+
+/* ---- chart raster ---- */
+
+static void test_chart(void)
+{
+    static acbb_chart c;
+    char g[8];
+    const double x[2] = { 0, 1 }, y[2] = { 1, 1 };
+    acbb_chart_init(&c, 2, 1, 0, 1, 0, 1);
+    acbb_chart_plot(&c, x, y, 2, 0);
+    /* y = ymax is the top dot row: bits 0x01 | 0x08 in both cells = U+2809. */
+    ok(c.dots[0][0] == 0x09 && c.dots[0][1] == 0x09, "chart: a line at ymax lights the top dots");
+    acbb_chart_cell(&c, 0, 0, 1, g);
+    ok(strcmp(g, "\xe2\xa0\x89") == 0, "chart: cell drawn as braille U+2809");
+    int owner = acbb_chart_cell(&c, 0, 1, 0, g);
+    ok(strcmp(g, "'") == 0 && owner == 0, "chart: ASCII fallback draws top dots as ' (series 0)");
+    /* A flat series widens the range by 5 % and sits mid-height:
+     * dot row round(0.5 * 3) = 2 -> bits 0x04 | 0x20, ASCII '.'. */
+    const double y5[2] = { 5, 5 };
+    acbb_chart_init(&c, 1, 1, 0, 1, 5, 5);
+    is_close(c.ymax - c.ymin, 0.5, 1e-12, 0, "chart: flat range widened by +-5 %");
+    acbb_chart_plot(&c, x, y5, 2, 1);
+    ok(c.dots[0][0] == 0x24, "chart: a flat line sits on dot row 2");
+    acbb_chart_cell(&c, 0, 0, 0, g);
+    ok(strcmp(g, ".") == 0, "chart: ASCII '.' for bottom-half dots");
+    /* A diagonal is joined: every dot column of a 4x2 chart has a dot. */
+    acbb_chart_init(&c, 4, 2, 0, 1, 0, 1);
+    acbb_chart_plot(&c, x, x, 2, 0);
+    int cols_lit = 0;
+    for (int dx = 0; dx < 8; dx++) {
+        int lit = 0;
+        for (int row = 0; row < 2; row++)
+            for (int dr = 0; dr < 4; dr++) {
+                static const unsigned char bit[4][2] = { { 1, 8 }, { 2, 16 }, { 4, 32 }, { 64, 128 } };
+                lit |= (c.dots[row][dx / 2] & bit[dr][dx % 2]) != 0;
+            }
+        cols_lit += lit;
+    }
+    ok(cols_lit == 8, "chart: a diagonal is drawn without gaps (%d of 8 dot columns)", cols_lit);
+}
+
+/* ---- editor model ---- */
+
+static void test_editor(void)
+{
+    static acbb_editor e;
+    acbb_error err = { { 0 } };
+    size_t idiam = 0, iload = 0;
+    for (size_t i = 0; i < acbb_scene_field_count(); i++) {
+        if (strcmp(acbb_scene_field(i)->key, "ball_diameter_mm") == 0) idiam = i;
+        if (strcmp(acbb_scene_field(i)->key, "axial_load_N") == 0) iload = i;
+    }
+    ok(acbb_editor_open(&e, "presets/7008C.ini", &err) == ACBB_OK, "editor: opens 7008C (%s)", err.msg);
+    double D = e.scene.ball_diameter;
+    ok(acbb_editor_set(&e, idiam, "-3", &err) == ACBB_EINVAL, "editor: ball_diameter_mm = -3 refused");
+    has_substr(err.msg, "ball_diameter_mm = -3: must be > 0", "editor: the engine's message");
+    ok(e.scene.ball_diameter == D && !e.modified && e.undo_n == 0,
+       "editor: a refused value is not applied and not undoable");
+    ok(acbb_editor_set(&e, iload, "500", &err) == ACBB_OK && e.scene.axial_load == 500.0 && e.modified,
+       "editor: axial_load_N = 500 accepted, marked modified");
+    ok(acbb_editor_set(&e, iload, "700", &err) == ACBB_OK && e.undo_n == 2, "editor: second edit stacked");
+    ok(acbb_editor_undo(&e) && e.scene.axial_load == 500.0 && e.modified, "editor: undo restores 500");
+    ok(acbb_editor_undo(&e) && e.scene.axial_load == 1000.0 && !e.modified,
+       "editor: undo back to the file clears the marker");
+    ok(!acbb_editor_undo(&e), "editor: nothing left to undo");
+    acbb_editor_set(&e, iload, "450", &err);
+    char path[] = "/tmp/acbb-test-editor-XXXXXX";
+    int fd = mkstemp(path);
+    close(fd);
+    ok(acbb_editor_save(&e, path, &err) == ACBB_OK && !e.modified && strcmp(e.path, path) == 0,
+       "editor: save-as writes, clears the marker, adopts the path");
+    acbb_scene back;
+    ok(acbb_scene_load(path, &back, &err) == ACBB_OK && back.axial_load == 450.0,
+       "editor: the saved file loads back with axial_load_N = 450");
+    unlink(path);
+}
+
+/* ---- accuracy screen: layout, chart model, formats ---- */
+
+static void check_acc_layout(int rows, int cols)
+{
+    acbb_layout l;
+    acbb_layout_compute(rows, cols, &l);
+    const acbb_rect p[3] = { l.acc_table, l.acc_frontier, l.acc_chart };
+    int inside = 1, apart = 1, area = 0;
+    for (int i = 0; i < 3; i++) {
+        /* Below the screen's title and progress rows, inside the body. */
+        inside &= acbb_rect_inside(p[i], rows, cols) && p[i].y >= l.body.y + 2 &&
+                  p[i].y + p[i].h <= l.body.y + l.body.h;
+        area += p[i].h * p[i].w;
+        for (int j = i + 1; j < 3; j++) apart &= !acbb_rect_overlap(p[i], p[j]);
+    }
+    ok(inside && apart, "%dx%d: accuracy table, frontier, chart inside the body, apart", cols, rows);
+    /* Wide: a one-column gap between table and chart; else they tile. */
+    int gap = cols >= ACBB_LAYOUT_ACC_WIDE_COLS ? l.body.h - 2 : 0;
+    ok(area + gap == (l.body.h - 2) * l.body.w, "%dx%d: accuracy panels fill the body below its 2 rows",
+       cols, rows);
+    ok(l.acc_table.w >= ACBB_LAYOUT_ACC_TABLE_W && l.acc_chart.h >= 7 && l.acc_table.h >= 6,
+       "%dx%d: table %d wide x %d rows, chart %d rows", cols, rows, l.acc_table.w, l.acc_table.h,
+       l.acc_chart.h);
+}
+
+static void test_acc_layout(void)
+{
+    check_acc_layout(24, 80);
+    check_acc_layout(30, 100);
+    check_acc_layout(60, 200);
+    acbb_layout l;
+    /* 80x24: body rows 1..21; rows 3..21 split: table (19 - 2) / 2 = 8,
+     * frontier 2, chart 9 (title, 7 plot rows, x labels). */
+    acbb_layout_compute(24, 80, &l);
+    ok(l.acc_table.y == 3 && l.acc_table.h == 8 && l.acc_frontier.y == 11 && l.acc_frontier.h == 2 &&
+           l.acc_chart.y == 13 && l.acc_chart.h == 9 && l.acc_chart.w == 80,
+       "80x24: accuracy table 8 rows at 3, frontier at 11, chart 9 rows at 13");
+    /* 200x60 (wide): table 74 wide on the left, chart from column 75. */
+    acbb_layout_compute(60, 200, &l);
+    ok(l.acc_table.x == 0 && l.acc_table.w == 74 && l.acc_chart.x == 75 && l.acc_chart.w == 125 &&
+           l.acc_chart.h == 55 && l.acc_frontier.h == 8 && l.acc_table.h == 47,
+       "200x60: table 74 x 47 + frontier 8 on the left, chart 125 x 55 on the right");
+}
+
+static acbb_accuracy_row acc_row(acbb_accuracy_knob k, double ms, double e_loss, double e_T)
+{
+    acbb_accuracy_row r;
+    memset(&r, 0, sizeof r);
+    r.knob = k;
+    r.status = ACBB_OK;
+    r.wall_ms = ms;
+    r.e_loss = e_loss;
+    r.e_T = e_T;
+    return r;
+}
+
+static void test_acc_chart(void)
+{
+    acbb_accuracy_row rows[7];
+    rows[0] = acc_row(ACBB_KNOB_CONTACT_GRID, 10, 0.02, 0.01);    /* 2 %: x 1, y log10 2 */
+    rows[1] = acc_row(ACBB_KNOB_CONTACT_GRID, 100, 5e-4, 1e-3);   /* 0.1 %: x 2, y -1 */
+    rows[2] = acc_row(ACBB_KNOB_CONTACT_GRID, 1000, 0, 0);        /* reference: x 3, y = floor */
+    rows[3] = acc_row(ACBB_KNOB_HERTZ, 20, 0.1, 0.1);
+    rows[3].status = ACBB_DIVERGED;                                /* failed: left out */
+    rows[4] = acc_row(ACBB_KNOB_MODEL, 30, 0.1, 0.1);
+    rows[4].skipped = 1;                                           /* skipped: left out */
+    rows[5] = acc_row(ACBB_KNOB_HERTZ, 40, NAN, 0.1);              /* undefined: left out */
+    rows[6] = acc_row(ACBB_KNOB_NETWORK, 50, 16.5, 0.07);          /* 1650 %: y 3.217 */
+    is_close(acbb_acc_error_pct(&rows[1]), 0.1, 1e-12, 0, "acc chart: error = max(e_loss, e_T) in %%");
+    ok(isnan(acbb_acc_error_pct(&rows[3])) && isnan(acbb_acc_error_pct(&rows[5])),
+       "acc chart: no error for a failed row or an undefined one");
+    static acbb_acc_chart m;
+    size_t n = acbb_acc_chart_build(rows, 7, &m);
+    ok(n == 4 && m.p[0].row == 0 && m.p[1].row == 1 && m.p[2].row == 2 && m.p[3].row == 6,
+       "acc chart: 4 points (rows 0 1 2 6), failed/skipped/undefined left out (n = %zu)", n);
+    /* Decades: 10 .. 1000 ms -> 1 .. 3; errors 0.1 .. 1650 % -> ceil(3.217) = 4
+     * at the top, floor(-1) - 1 = -2 at the bottom (the zeros' decade). */
+    ok(m.xmin == 1 && m.xmax == 3 && m.ymin == -2 && m.ymax == 4,
+       "acc chart: x 1..3, y -2..4 decades (got %g..%g, %g..%g)", m.xmin, m.xmax, m.ymin, m.ymax);
+    is_close(m.p[0].y, 0.30102999566398120, 1e-14, 0, "acc chart: 2 %% at log10 2");
+    ok(m.p[2].zero && m.p[2].y == -2 && !m.p[0].zero, "acc chart: the reference's 0 sits on the floor");
+    is_close(m.p[3].y, log10(1650.0), 1e-14, 0, "acc chart: 1650 %% at log10 1650");
+
+    /* Cells on an 11 x 4 raster (22 x 16 dots): x 1 -> dot 0, cell 0;
+     * x 3 -> dot 21, cell 10; x 2 -> dot 10.5 -> cell 5 either way.
+     * y log10 2: (1 - 2.30103 / 6) * 15 = 9.247 -> dot 9, row 2;
+     * y -2 -> dot 15, row 3; y 4 -> dot 0, row 0. */
+    static acbb_chart c;
+    int row = -1, col = -1;
+    acbb_chart_init(&c, 11, 4, m.xmin, m.xmax, m.ymin, m.ymax);
+    ok(acbb_chart_locate(&c, 1, log10(2.0), &row, &col) && row == 2 && col == 0,
+       "acc chart: (10 ms, 2 %%) in cell row 2 col 0 (got %d %d)", row, col);
+    ok(acbb_chart_locate(&c, 3, -2, &row, &col) && row == 3 && col == 10,
+       "acc chart: (1 s, 0) in the bottom-right cell (got %d %d)", row, col);
+    ok(acbb_chart_locate(&c, 2, 4, &row, &col) && row == 0 && col == 5,
+       "acc chart: (100 ms, 10^4 %%) in row 0 col 5 (got %d %d)", row, col);
+    ok(!acbb_chart_locate(&c, 0.5, 0, &row, &col) && !acbb_chart_locate(&c, 2, NAN, &row, &col),
+       "acc chart: points outside the ranges or NaN have no cell");
+    /* The marker cell is where acbb_chart_plot put the point's dot. */
+    const double px[1] = { 1 }, py[1] = { 0.30102999566398120 };
+    acbb_chart_plot(&c, px, py, 1, 0);
+    ok(c.dots[2][0] != 0 && c.owner[2][0] == 0, "acc chart: the plotted dot is in the located cell");
+
+    n = acbb_acc_chart_build(rows, 0, &m);
+    ok(n == 0 && m.xmax > m.xmin && m.ymin == -1 && m.ymax == 1,
+       "acc chart: no points -> 1 ms..10 ms, 0.1 %%..10 %% (tolerance 1 %% inside)");
+
+    int distinct = 1;
+    for (int i = 0; i < ACBB_KNOB_COUNT; i++)
+        for (int j = i + 1; j < ACBB_KNOB_COUNT; j++)
+            distinct &= acbb_acc_knob_letter((acbb_accuracy_knob)i) != acbb_acc_knob_letter((acbb_accuracy_knob)j);
+    ok(distinct && acbb_acc_knob_letter(ACBB_KNOB_CONTACT_GRID) == 'G', "acc chart: 7 distinct knob letters");
+
+    char b[16];
+    acbb_acc_fmt_pct(0.02205804262, b, sizeof b);
+    ok(strcmp(b, "2.21") == 0, "fmt pct: 0.0220580 -> 2.21 (got %s)", b);
+    acbb_acc_fmt_pct(1.724105806e-05, b, sizeof b);
+    ok(strcmp(b, "2e-03") == 0, "fmt pct: 1.72e-5 -> 2e-03 (got %s)", b);
+    acbb_acc_fmt_pct(0, b, sizeof b);
+    ok(strcmp(b, "0") == 0, "fmt pct: exact 0 -> 0");
+    acbb_acc_fmt_pct(NAN, b, sizeof b);
+    ok(strcmp(b, "-") == 0, "fmt pct: NaN -> -");
+    acbb_acc_fmt_pct(16.4865, b, sizeof b);
+    ok(strcmp(b, "2e+03") == 0, "fmt pct: 1648.65 %% -> 2e+03 (got %s)", b);
+    acbb_acc_fmt_pct_decade(0, b, sizeof b);
+    int dec_ok = strcmp(b, "1%") == 0;
+    acbb_acc_fmt_pct_decade(-5, b, sizeof b);
+    dec_ok &= strcmp(b, "1e-05%") == 0;
+    acbb_acc_fmt_ms_decade(3, b, sizeof b);
+    dec_ok &= strcmp(b, "1s") == 0;
+    acbb_acc_fmt_ms_decade(7, b, sizeof b);
+    ok(dec_ok && strcmp(b, "1e+07ms") == 0, "decade labels: 1%%, 1e-05%%, 1s, 1e+07ms");
+    acbb_accuracy_row r = acc_row(ACBB_KNOB_CONTACT_GRID, 1, 0, 0);
+    snprintf(r.key, sizeof r.key, "fidelity.contact_grid");
+    snprintf(r.value, sizeof r.value, "4");
+    acbb_acc_setting_label(&r, b, sizeof b);
+    ok(strcmp(b, "contact_grid=4") == 0, "setting label: contact_grid=4");
+}
+
+int main(void)
+{
+    test_layout();
+    test_progress();
+    test_chart();
+    test_editor();
+    test_acc_layout();
+    test_acc_chart();
+    return done_testing();
+}
