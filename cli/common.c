@@ -13,7 +13,15 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
     acbb_error err = { { 0 } };
     acbb_status st = acbb_scene_load(a->preset, sc, &err);
     if (st == ACBB_OK) st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
-    if (st == ACBB_OK) return 0;
+    if (st == ACBB_OK) {
+        /* A switch the scene cannot feel is said, not silently ignored. */
+        acbb_inactive_effect in[8];
+        size_t n = acbb_scene_inactive_effects(sc, in, 8);
+        for (size_t i = 0; i < n; i++)
+            fprintf(stderr, "acbb: note: effects.%s = on has no effect here: %s\n",
+                    in[i].effect, in[i].why);
+        return 0;
+    }
     fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
     return acbb_cli_exit_for(st);
 }

@@ -324,8 +324,54 @@ static void json_ball(acbb_cli_out *o, const acbb_ball_view *b)
     j_num(o, "spin_o_radps", b->spin_o);
     j_num(o, "film_i_um", b->film_i * CLI_UM);
     j_num(o, "film_o_um", b->film_o * CLI_UM);
+    j_num(o, "hmin_i_um", b->hmin_i * CLI_UM);
+    j_num(o, "hmin_o_um", b->hmin_o * CLI_UM);
     j_num(o, "omega_m_radps", b->omega_m);
+    j_open(o, "losses_W", '{', true);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        if (acbb_loss_table[l].point || acbb_loss_table[l].contact)
+            j_num(o, acbb_loss_table[l].name, b->loss_kind[l]);
+    j_num(o, "total", b->loss);
     j_close(o, '}');
+    j_close(o, '}');
+}
+
+/* Ring displacements and stiffness, the squeeze decomposition (MODEL.md
+ * 13), the work each part did, and the effects the scene cannot feel. */
+static void json_ring_and_work(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
+{
+    j_open(o, "ring", '{', false);
+    j_num(o, "delta_x_um", s->delta_x * CLI_UM);
+    j_num(o, "delta_z_um", s->delta_z * CLI_UM);
+    j_num(o, "tilt_y_mrad", s->tilt_y * 1e3);
+    j_num(o, "stiffness_axial_N_per_um", s->stiffness_axial * 1e-6);
+    j_close(o, '}');
+    const acbb_squeeze *q = &s->squeeze;
+    j_open(o, "squeeze_um", '{', false);
+    j_num(o, "inner_thermal", q->inner_thermal * CLI_UM);
+    j_num(o, "inner_centrifugal", q->inner_centrifugal * CLI_UM);
+    j_num(o, "outer", q->outer * CLI_UM);
+    j_num(o, "ball", q->ball * CLI_UM);
+    j_num(o, "net", q->net * CLI_UM);
+    j_close(o, '}');
+    const acbb_work *w = &s->work;
+    j_open(o, "work", '{', false);
+    j_long(o, "mechanics_solves", w->mechanics_solves);
+    j_long(o, "traction_solves", w->traction_solves);
+    j_long(o, "loss_quadratures", w->loss_quadratures);
+    j_long(o, "network_solves", w->network_solves);
+    j_long(o, "expansion_updates", w->expansion_updates);
+    j_close(o, '}');
+    acbb_inactive_effect in[8];
+    size_t n = acbb_scene_inactive_effects(sc, in, 8);
+    j_open(o, "effects_inactive", '[', false);
+    for (size_t i = 0; i < n; i++) {
+        j_open(o, NULL, '{', true);
+        j_str(o, "effect", in[i].effect);
+        j_str(o, "why", in[i].why);
+        j_close(o, '}');
+    }
+    j_close(o, ']');
 }
 
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
@@ -363,6 +409,8 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapsho
     j_num(o, "inner_centrifugal", s->exp_inner_cen * CLI_UM);
     j_close(o, '}');
 
+    json_ring_and_work(o, sc, s);
+
     j_open(o, "balls", '[', false);
     for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) json_ball(o, &s->balls[k]);
     j_close(o, ']');
@@ -392,7 +440,9 @@ void acbb_cli_csv_header(acbb_cli_out *o)
     fputs("iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,", o->f);
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) fprintf(o->f, "P_%s_W,", acbb_loss_table[l].name);
     fputs("P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,"
-          "exp_outer_um,residual_K_s\n", o->f);
+          "exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,"
+          "hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,"
+          "squeeze_outer_um,squeeze_ball_um,squeeze_net_um\n", o->f);
 }
 
 /* exp_inner_um is thermal + centrifugal, as expansion_um.inner_ring in the
@@ -415,7 +465,15 @@ void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
     c_num(o, s->exp_ball * CLI_UM, false);
     c_num(o, (s->exp_inner + s->exp_inner_cen) * CLI_UM, false);
     c_num(o, s->exp_outer * CLI_UM, false);
-    c_num(o, s->residual, true);
+    c_num(o, s->residual, false);
+    const acbb_squeeze *q = &s->squeeze;
+    const double tail[] = { s->delta_x * CLI_UM, s->delta_z * CLI_UM, s->tilt_y * 1e3,
+                            b ? b->film_i * CLI_UM : NAN, b ? b->film_o * CLI_UM : NAN,
+                            b ? b->hmin_i * CLI_UM : NAN, b ? b->hmin_o * CLI_UM : NAN,
+                            q->inner_thermal * CLI_UM, q->inner_centrifugal * CLI_UM,
+                            q->outer * CLI_UM, q->ball * CLI_UM, q->net * CLI_UM };
+    size_t n = sizeof tail / sizeof tail[0];
+    for (size_t i = 0; i < n; i++) c_num(o, tail[i], i + 1 == n);
 }
 
 /* ---- acbb sweep ---- */

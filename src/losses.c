@@ -159,6 +159,24 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
     }
 }
 
+/* The pressure-weighted mean slip alone (kinematics, no loss integrand):
+ * what a scene with every contact loss switched off still reports. */
+static double mean_slide(const acbb_quad *q, const acbb_contact_in *c)
+{
+    double sumP = 0.0, sumPV = 0.0;
+    for (int i = 0; i < q->n; i++) {
+        double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
+        double V = acbb_slip_speed(c, c->a * xi);
+        for (int k = 0; k < q->n; k++) {
+            double t = q->x[k];
+            double pw = q->w[i] * q->w[k] * sq * sq * sqrt(1.0 - t * t);
+            sumP += pw;
+            sumPV += pw * V;
+        }
+    }
+    return sumP > 0.0 ? sumPV / sumP : 0.0;
+}
+
 acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
                                 const acbb_contact_in *c, const acbb_oil_state *oil,
                                 acbb_contact_loss *out)
@@ -178,7 +196,11 @@ acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
         const acbb_loss_desc *d = &acbb_loss_table[l];
         on[l] = d->point && acbb_loss_enabled(s, (acbb_loss_kind)l);
     }
-    integrate(s, q, c, oil, out, on);
+    int any = 0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) any |= on[l];
+    if (any) integrate(s, q, c, oil, out, on);
+    else out->slide = mean_slide(q, c);
+    out->integrated = any;
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         const acbb_loss_desc *d = &acbb_loss_table[l];
         if (d->contact && acbb_loss_enabled(s, (acbb_loss_kind)l))

@@ -278,13 +278,21 @@ acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)
  * Hertz has no ball speeds, so no centrifugal force or gyroscopic moment;
  * WTE forces every expansion to zero (MODEL.md 9), the centrifugal ring
  * growth included; without heating the temperatures stay at ambient. */
-size_t acbb_scene_inactive_effects(const acbb_scene *s, const char **names, size_t cap)
+size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap)
 {
+    const struct {
+        bool when;
+        acbb_inactive_effect e;
+    } rows[] = {
+        { s->model == ACBB_MODEL_STATIC && s->centrifugal,
+          { "centrifugal", "fidelity.model = static has no ball speeds" } },
+        { s->model == ACBB_MODEL_STATIC && s->gyroscopic,
+          { "gyroscopic", "fidelity.model = static has no ball speeds" } },
+        { !s->thermal_expansion && s->ring_centrifugal,
+          { "ring_centrifugal", "effects.thermal_expansion = off (WTE) zeroes every expansion" } },
+    };
     size_t n = 0;
-#define INACTIVE(cond, name) do { if ((cond) && n < cap) names[n++] = (name); } while (0)
-    INACTIVE(s->model == ACBB_MODEL_STATIC && s->centrifugal, "centrifugal");
-    INACTIVE(s->model == ACBB_MODEL_STATIC && s->gyroscopic, "gyroscopic");
-    INACTIVE(!s->thermal_expansion && s->ring_centrifugal, "ring_centrifugal");
-#undef INACTIVE
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
+        if (rows[i].when && n < cap) out[n++] = rows[i].e;
     return n;
 }

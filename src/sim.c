@@ -71,6 +71,10 @@ struct acbb_sim {
     acbb_status status;
     char msg[256];
     const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
+    acbb_work work;            /* per-part work counters */
+    double K_axial;            /* axial stiffness at the converged state, N/m */
+    int fixed_axial;           /* displacement preload: dx held at fixed_dx */
+    double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
 };
 
@@ -94,6 +98,7 @@ static acbb_status fail(acbb_sim *sim, acbb_status st, const char *fmt, const ch
 
 static void expansions(acbb_sim *sim)
 {
+    sim->work.expansion_updates++;
     acbb_part_temps pt;
     acbb_network_part_temps(&sim->nw, sim->T, &pt);
     acbb_expansion_compute(&sim->s, &pt, &sim->exp);
@@ -164,6 +169,7 @@ static acbb_status losses(acbb_sim *sim)
             rc = acbb_contact_losses(s, &sim->quad, &co, &oil_o, &bl->out);
         if (rc != ACBB_OK)
             return rc;
+        sim->work.loss_quadratures += bl->in.integrated + bl->out.integrated;
         for (int l = 0; l < ACBB_LOSS_KINDS; l++)
             L.P[l] += w * (bl->in.P[l] + bl->out.P[l]);
         route_contact(&bl->in, w, &H.inner_contact, &H.ball);
@@ -217,6 +223,7 @@ static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
     int nb = sim->ms.symmetric ? 1 : sim->ms.n;
     for (int j = 0; j < nb; j++) {
         double window = sim->ms.ball[j].traction_valid ? DYN_WINDOW_WARM : DYN_WINDOW_COLD, c;
+        sim->work.traction_solves++;
         acbb_status rc = acbb_dyn_ball(sim->dyn, sim->mech, &sim->s, &sim->quad,
                                        sim->s.inner_speed, oi, oo, mix, &sim->ms, j, window,
                                        &c, err);
@@ -232,6 +239,12 @@ static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
     return ACBB_OK;
 }
 
+static acbb_status mech_solve(acbb_sim *sim, acbb_error *err)
+{
+    sim->work.mechanics_solves++;
+    return acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+}
+
 /* Equilibrium, and at the quasi-dynamic level the ball speeds from
  * traction equilibrium, iterated a few passes (the remaining mismatch
  * shrinks over the thermal steps; the final polish converges it). */
@@ -241,8 +254,7 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
      * re-solves the equilibrium anyway, so the first solve is skipped (the
      * loads it would refresh lag one step, like the rest of the coupling). */
     int warm = (sim->qd || sim->dyn) && sim->transient_pass && sim->ms.ball[0].traction_valid;
-    acbb_status rc = warm ? ACBB_OK
-                          : acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+    acbb_status rc = warm ? ACBB_OK : mech_solve(sim, err);
     if (rc != ACBB_OK || (!sim->qd && !sim->dyn)) return rc;
     acbb_oil_state oi, oo;
     acbb_mixture mix;
@@ -256,11 +268,13 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
             return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
         if (sim->dyn)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
-        else
+        else {
+            sim->work.traction_solves++;
             rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
                                 sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
+        }
         if (rc != ACBB_OK) return rc;
-        rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
+        rc = mech_solve(sim, err);
         if (rc != ACBB_OK || change < QD_TOL) return rc;
     }
     return ACBB_OK;
@@ -280,8 +294,10 @@ static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
     if (rc != ACBB_OK)
         return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "
                               "last good state kept");
+    if (!sim->s.heating) return ACBB_OK; /* isothermal: no network at all */
     acbb_net_inputs in;
     network_inputs(sim, &in);
+    sim->work.network_solves++;
     rc = acbb_network_update(&sim->nw, &sim->s, &in);
     if (rc != ACBB_OK)
         return acbb_error_set(err, rc, "thermal network: update failed");
@@ -389,6 +405,7 @@ static acbb_status thermal_step(acbb_sim *sim, double *Tn, double *dT, double *d
     int n = sim->nw.n;
     for (;;) {
         memcpy(Tn, sim->T, sizeof(double) * n);
+        sim->work.network_solves++;
         acbb_status rc = acbb_tnet_step(sim->nw.net, sim->q, sim->dt, Tn);
         if (rc != ACBB_OK) return rc;
         *dT = max_change(Tn, sim->T, n);
@@ -401,6 +418,7 @@ static acbb_status thermal_step(acbb_sim *sim, double *Tn, double *dT, double *d
 static acbb_status steady_step(acbb_sim *sim, double relax, double *Tn, double *dT)
 {
     int n = sim->nw.n;
+    sim->work.network_solves++;
     acbb_status rc = acbb_tnet_steady(sim->nw.net, sim->q, Tn);
     if (rc != ACBB_OK) return rc;
     /* Under-relaxed Picard (MODEL.md section 9, 0.5 in steady mode). */
@@ -498,11 +516,63 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
     }
 }
 
+/* Axial stiffness dFx/d(delta_x) at the converged state: central
+ * difference with the axial displacement held, the other ring freedoms
+ * free, ball speeds and tractions as converged. 0 if a solve fails. */
+static double axial_stiffness(acbb_sim *sim)
+{
+    acbb_mech_state *st = malloc(sizeof *st);
+    if (!st) return 0.0;
+    double dx = sim->ms.dx, h = fmax(1e-9, 1e-4 * fabs(dx)), F[2] = { 0, 0 };
+    acbb_status rc = ACBB_OK;
+    for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
+        acbb_mech_state_copy(st, &sim->ms);
+        acbb_mech_fix_axial(sim->mech, 1, dx + (k ? -h : h));
+        rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, st, NULL);
+        F[k] = st->Fx;
+    }
+    int held = sim->s.preload == ACBB_PRELOAD_DISPLACEMENT;
+    acbb_mech_fix_axial(sim->mech, held, held ? dx : 0.0);
+    free(st);
+    double K = (F[0] - F[1]) / (2.0 * h);
+    return rc == ACBB_OK && isfinite(K) ? K : 0.0;
+}
+
+static void converge(acbb_sim *sim, const char *what)
+{
+    finish_energy(sim);
+    sim->K_axial = axial_stiffness(sim);
+    sim->state = ACBB_RUN_CONVERGED;
+    snprintf(sim->msg, sizeof sim->msg, "%s", what);
+}
+
+/* effects.heating = off: temperatures stay at ambient, so one converged
+ * mechanics (and Level-2) state is the answer; no network is solved. */
+static acbb_status isothermal(acbb_sim *sim)
+{
+    acbb_error err = { "" };
+    for (int it = 0; it < POLISH_ITERS; it++) {
+        double prev = sim->loss.total;
+        acbb_status rc = evaluate(sim, &err);
+        if (rc != ACBB_OK)
+            return fail(sim, rc, "%s", err.msg[0] ? err.msg : acbb_status_name(rc));
+        sim->iter++;
+        if (fabs(sim->loss.total - prev) <= 1e-12 * fmax(sim->loss.total, 1e-12)) break;
+    }
+    converge(sim, "isothermal mechanics at ambient (effects.heating = off)");
+    return ACBB_OK;
+}
+
 acbb_status acbb_sim_step(acbb_sim *sim)
 {
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
     double t0 = acbb_now_ms();
+    if (!sim->s.heating) {
+        acbb_status rc = isothermal(sim);
+        sim->wall_ms += acbb_now_ms() - t0;
+        return rc;
+    }
     acbb_error err = { "" };
     double dT = 0.0, dTs = 0.0;
     int steady_mode = sim->s.thermal_mode == ACBB_THERMAL_STEADY;
@@ -533,9 +603,9 @@ acbb_status acbb_sim_step(acbb_sim *sim)
             sim->wall_ms += acbb_now_ms() - t0;
             return fail(sim, rc, "%s", err.msg);
         }
-        finish_energy(sim);
-        sim->state = ACBB_RUN_CONVERGED;
-        snprintf(sim->msg, sizeof sim->msg, "thermal steady state after %ld steps", sim->iter);
+        char what[64];
+        snprintf(what, sizeof what, "thermal steady state after %ld steps", sim->iter);
+        converge(sim, what);
     } else if (sim->iter >= sim->s.max_steps || sim->time >= sim->s.max_time) {
         finish_energy(sim);
         sim->wall_ms += acbb_now_ms() - t0;
@@ -613,6 +683,7 @@ static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
     acbb_status rc = acbb_mech_init_state(sim->mech, &sim->ms, err);
     if (rc != ACBB_OK) return rc;
     for (int k = 1; k <= 4 && sim->s.inner_speed > 0.0; k++) {
+        sim->work.mechanics_solves++;
         rc = acbb_mech_solve(sim->mech, sim->s.inner_speed * k / 4.0, NULL, &sim->ms, err);
         if (rc != ACBB_OK) return rc;
     }
@@ -735,14 +806,30 @@ static void ball_view(const acbb_sim *sim, int j, acbb_ball_view *v)
     v->a_i = b->ct_i.a; v->b_i = b->ct_i.b; v->a_o = b->ct_o.a; v->b_o = b->ct_o.b;
     v->omega_m = b->kin.omega_m;
     v->omega_x = b->kin.wx; v->omega_y = b->kin.wy; v->omega_z = b->kin.wz;
+    v->hmin_i = bl->in.film.hmin; v->hmin_o = bl->out.film.hmin;
     v->loss = 0.0;
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) v->loss += bl->in.P[l] + bl->out.P[l];
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        v->loss_kind[l] = fin(bl->in.P[l] + bl->out.P[l]);
+        v->loss += bl->in.P[l] + bl->out.P[l];
+    }
     /* Last guard only: evaluate() already ended the run on a non-finite value. */
     double *f[] = { &v->psi, &v->Qi, &v->Qo, &v->alpha_i, &v->alpha_o, &v->slide_i,
                     &v->slide_o, &v->spin_i, &v->spin_o, &v->film_i, &v->film_o, &v->pmax_i,
                     &v->pmax_o, &v->a_i, &v->b_i, &v->a_o, &v->b_o, &v->omega_m, &v->omega_x,
-                    &v->omega_y, &v->omega_z, &v->loss };
+                    &v->omega_y, &v->omega_z, &v->loss, &v->hmin_i, &v->hmin_o };
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) *f[k] = fin(*f[k]);
+}
+
+/* MODEL.md 13: S = theta_i + theta_icen - theta_o + 2 theta_ba cos(alpha). */
+static void squeeze(const acbb_sim *sim, acbb_squeeze *q)
+{
+    const acbb_ball_state *b = &sim->ms.ball[0];
+    double alpha = 0.5 * (b->alpha_i + b->alpha_o);
+    q->inner_thermal = fin(sim->exp.inner);
+    q->inner_centrifugal = fin(sim->exp.inner_cen);
+    q->outer = fin(-sim->exp.outer);
+    q->ball = fin(2.0 * sim->exp.ball * cos(alpha));
+    q->net = q->inner_thermal + q->inner_centrifugal + q->outer + q->ball;
 }
 
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
@@ -779,6 +866,10 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->exp_outer = fin(sim->exp.outer);
     o->delta_x = fin(sim->ms.dx);
     o->delta_z = fin(sim->ms.dz);
+    o->tilt_y = fin(sim->ms.thy);
+    o->stiffness_axial = fin(sim->K_axial);
+    o->work = sim->work;
+    squeeze(sim, &o->squeeze);
     o->reaction_x = fin(sim->ms.Fx);
     o->heat_in = fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
                      + sim->heat.cavity + sim->heat.cage);

@@ -100,6 +100,7 @@ int acbb_loss_enabled(const acbb_scene *s, acbb_loss_kind k);
 
 typedef struct {
     double P[ACBB_LOSS_KINDS]; /* W; bearing-level kinds stay 0 here */
+    int integrated;     /* 1 when the ellipse quadrature ran */
     double slide;       /* pressure-weighted mean |translational slip|, m/s */
     acbb_film film;
 } acbb_contact_loss;

@@ -194,10 +194,14 @@ void acbb_scene_field_range(size_t i, char *buf, size_t n);
 
 const char *acbb_model_level_name(acbb_model_level m);
 
-/* Effect switches that do nothing in this scene (at its model level, or
- * because another switch overrides them): their [effects] key names,
- * static strings, at most `cap` of them; returns how many. A client says so
- * instead of ignoring the switch silently. */
-size_t acbb_scene_inactive_effects(const acbb_scene *s, const char **names, size_t cap);
+/* Effect switches that are on but do nothing in this scene (at its model
+ * level, or because another switch overrides them): the [effects] key and
+ * why, static strings; at most `cap` of them; returns how many. A client
+ * says so instead of ignoring the switch silently. */
+typedef struct {
+    const char *effect;
+    const char *why;
+} acbb_inactive_effect;
+size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap);
 
 #endif

@@ -32,8 +32,31 @@ typedef struct {
     double a_i, b_i, a_o, b_o;  /* contact semi-axes, m */
     double omega_m;             /* orbital speed, rad/s */
     double omega_x, omega_y, omega_z; /* ball angular velocity in the orbiting frame, rad/s */
-    double loss;                /* this ball's share of P_L+P_t+P_s+P_r, W */
+    double hmin_i, hmin_o;      /* minimum film thickness, m */
+    double loss;                /* this ball's contact losses (both contacts), W */
+    double loss_kind[ACBB_LOSS_KINDS]; /* the same by kind (bearing-level kinds 0), W */
 } acbb_ball_view;
+
+/* Why thermal expansion squeezes or loosens the balls (MODEL.md 13): the
+ * radial move of the inner groove centre and the ball growth along the
+ * contact line, as radial groove-centre equivalents (CLEAN geometry). The
+ * balls are squeezed (loads up, angles down) when net > 0. */
+typedef struct {
+    double inner_thermal;       /* + theta_i, m */
+    double inner_centrifugal;   /* + theta_icen, m */
+    double outer;               /* - theta_o, m */
+    double ball;                /* + 2 theta_ba cos(alpha), alpha of ball 0, m */
+    double net;                 /* sum, m */
+} acbb_squeeze;
+
+/* Work each part of the model did so far (a disabled effect does none). */
+typedef struct {
+    long mechanics_solves;      /* ball/ring equilibrium solves */
+    long traction_solves;       /* Level-2 (quasi-dynamic) or dynamic ball-speed updates */
+    long loss_quadratures;      /* contact-ellipse loss integrations */
+    long network_solves;        /* thermal network updates and linear solves */
+    long expansion_updates;     /* thermal/centrifugal expansion evaluations */
+} acbb_work;
 
 /* The losses, W, indexed by acbb_loss_kind (losses.h: acbb_loss_table
  * gives each one's name, symbol and heat node). */
@@ -62,6 +85,10 @@ typedef struct {
     acbb_losses losses;
     double exp_ball, exp_inner, exp_inner_cen, exp_outer; /* radial expansions, m */
     double delta_x, delta_z;    /* inner-ring displacement, m */
+    double tilt_y;              /* inner-ring tilt about y, rad */
+    double stiffness_axial;     /* dFx/d(delta_x) at the solution, N/m (0 until converged) */
+    acbb_squeeze squeeze;
+    acbb_work work;
     double reaction_x;          /* axial reaction (== load under force control), N */
     double heat_in, heat_out;   /* W: sources vs heat into fixed nodes (energy balance) */
     int n_balls;
