@@ -34,6 +34,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                                     "start the run at once and exit when it ends "
                                     "(exit 0 converged, 3 not)" },
     [CLI_OPT_HELP] = { "help", NULL, "this text (also -h)" },
+    [CLI_OPT_BASELINE] = { "baseline", "FILE",
+                           "compare with a saved `acbb run --json` (what-if: what changed, "
+                           "absolute and %)" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

@@ -20,6 +20,7 @@
 #include "common.h"
 #include "exit.h"
 #include "output.h"
+#include "baseline.h"
 #include "plot.h"
 #include "presets.h"
 
@@ -142,9 +143,13 @@ static int run_report(const acbb_cli_args *a, const char *preset, const acbb_sce
 {
     acbb_cli_out o;
     acbb_cli_out_init(&o, stdout);
-    if (a->val[CLI_OPT_JSON]) acbb_cli_json_run(&o, sc, snap);
-    else if (!a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, sc, snap);
-    int rc = acbb_cli_stdout_check(o.nonfinite);
+    const char *base = a->val[CLI_OPT_BASELINE];
+    bool json = a->val[CLI_OPT_JSON] != NULL;
+    int rc = 0;
+    if (json && !base) acbb_cli_json_run(&o, sc, snap);
+    else if (!json && !a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, sc, snap);
+    if (base) rc = acbb_cli_baseline(base, sc, snap, json);
+    rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);
         rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);

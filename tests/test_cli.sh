@@ -392,4 +392,25 @@ code $? 0 "heating off exits 0"
 jq -e '.work.network_solves == 0 and .temperature_C.outer_ring == 26' "$TMP/iso.json" >/dev/null
 t $? "heating off: no network solve, outer ring at ambient"
 
+# What-if baseline: a saved run's JSON against this run.
+"$ACBB" run presets/7008C.ini --baseline "$TMP/csv.json" >"$TMP/same.txt" 2>"$TMP/err"
+code $? 0 "run --baseline (same scene) exits 0"
+has "$TMP/same.txt" "(no value changed)" "the same scene against its own baseline: nothing changed"
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=500 --baseline "$TMP/csv.json" \
+    >"$TMP/what.txt" 2>"$TMP/err"
+code $? 0 "run --baseline with an edit exits 0"
+grep -q 'scene.axial_load_N  *1000  *500  *-500  *-50.00%' "$TMP/what.txt"
+t $? "the edited input is listed with its absolute and relative change"
+grep -q '^  losses_W.total .*-' "$TMP/what.txt"
+t $? "a lower load lowers the total loss (negative change)"
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=500 --baseline "$TMP/csv.json" \
+    --json >"$TMP/what.json" 2>"$TMP/err"
+jq -e '[.vs_baseline[] | select(.path == "scene.axial_load_N")][0].change == -500
+    and (.losses_W.total > 0)' "$TMP/what.json" >/dev/null
+t $? "JSON: the run with a vs_baseline array of changes"
+printf 'not json' >"$TMP/bad.json"
+"$ACBB" run presets/7008C.ini --baseline "$TMP/bad.json" >/dev/null 2>"$TMP/err"
+code $? 2 "a baseline that is not an acbb run JSON: exit 2"
+has "$TMP/err" "not the JSON of" "and the message says why"
+
 tap_done

@@ -1,0 +1,169 @@
+/* acbb CLI — the what-if baseline (baseline.h). */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cjson/cJSON.h>
+#include "baseline.h"
+#include "exit.h"
+#include "output.h"
+
+#define MAX_FILE (16 << 20)  /* a run's JSON is ~10 kB; refuse anything absurd */
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *buf = malloc(MAX_FILE + 1);
+    size_t n = buf ? fread(buf, 1, MAX_FILE, f) : 0;
+    fclose(f);
+    if (buf) buf[n] = '\0';
+    return buf;
+}
+
+/* This run as the JSON `acbb run --json` prints, parsed. */
+static cJSON *run_json(const acbb_scene *sc, const acbb_snapshot *snap)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&text, &len);
+    if (!m) return NULL;
+    acbb_cli_out o;
+    acbb_cli_out_init(&o, m);
+    acbb_cli_json_run(&o, sc, snap);
+    fclose(m);
+    cJSON *doc = cJSON_Parse(text);
+    free(text);
+    return doc;
+}
+
+/* Paths that are bookkeeping, not results or inputs. */
+static bool skipped(const char *path)
+{
+    static const char *const skip[] = { "wall_ms", "message", "work.", "iterations", "time_s" };
+    for (size_t i = 0; i < sizeof skip / sizeof skip[0]; i++)
+        if (strncmp(path, skip[i], strlen(skip[i])) == 0) return true;
+    return false;
+}
+
+static void add_row(cJSON *rows, const char *path, const cJSON *was, const cJSON *now)
+{
+    cJSON *r = cJSON_CreateObject();
+    cJSON_AddStringToObject(r, "path", path);
+    if (cJSON_IsNumber(was) && cJSON_IsNumber(now)) {
+        double a = was->valuedouble, b = now->valuedouble;
+        cJSON_AddNumberToObject(r, "baseline", a);
+        cJSON_AddNumberToObject(r, "now", b);
+        cJSON_AddNumberToObject(r, "change", b - a);
+        if (a != 0.0) cJSON_AddNumberToObject(r, "change_pct", 100.0 * (b - a) / fabs(a));
+        else cJSON_AddNullToObject(r, "change_pct");
+    } else {
+        cJSON_AddItemToObject(r, "baseline", cJSON_Duplicate(was, 1));
+        cJSON_AddItemToObject(r, "now", cJSON_Duplicate(now, 1));
+    }
+    cJSON_AddItemToArray(rows, r);
+}
+
+/* Walk the baseline; a leaf present in both documents that differs is a row
+ * (numbers beyond a relative 1e-12, strings and booleans when unequal). */
+static void diff(const cJSON *was, const cJSON *now, const char *path, cJSON *rows)
+{
+    if (!now || skipped(path)) return;
+    if (cJSON_IsObject(was) || cJSON_IsArray(was)) {
+        int i = 0;
+        for (const cJSON *c = was->child; c; c = c->next, i++) {
+            char sub[256];
+            const cJSON *n = cJSON_IsObject(was) ? cJSON_GetObjectItemCaseSensitive(now, c->string)
+                                                 : cJSON_GetArrayItem(now, i);
+            if (cJSON_IsObject(was))
+                snprintf(sub, sizeof sub, "%s%s%s", path, path[0] ? "." : "", c->string);
+            else
+                snprintf(sub, sizeof sub, "%s[%d]", path, i);
+            diff(c, n, sub, rows);
+        }
+        return;
+    }
+    if (cJSON_IsNumber(was) && cJSON_IsNumber(now)) {
+        double a = was->valuedouble, b = now->valuedouble;
+        if (fabs(b - a) > 1e-12 * fmax(fabs(a), fabs(b))) add_row(rows, path, was, now);
+    } else if (!cJSON_Compare(was, now, 1)) {
+        add_row(rows, path, was, now);
+    }
+}
+
+static void print_row(const cJSON *r)
+{
+    const cJSON *a = cJSON_GetObjectItem(r, "baseline"), *b = cJSON_GetObjectItem(r, "now");
+    const char *p = cJSON_GetObjectItem(r, "path")->valuestring;
+    if (cJSON_IsNumber(a)) {
+        const cJSON *pct = cJSON_GetObjectItem(r, "change_pct");
+        printf("  %-34.34s %12.6g %12.6g %+11.4g", p, a->valuedouble, b->valuedouble,
+               b->valuedouble - a->valuedouble);
+        if (cJSON_IsNumber(pct)) printf(" %+7.2f%%\n", pct->valuedouble);
+        else printf(" %8s\n", "-");
+        return;
+    }
+    char *sa = cJSON_PrintUnformatted(a), *sb = cJSON_PrintUnformatted(b);
+    printf("  %-34.34s %12.12s %12.12s\n", p, sa ? sa : "?", sb ? sb : "?");
+    free(sa);
+    free(sb);
+}
+
+/* The text table keeps to what fits a screen: the inputs that changed, then
+ * the results with ball 0 standing for the balls and without the node list
+ * (the JSON has every row). */
+static void print_table(const cJSON *rows, const char *path)
+{
+    printf("\nchange against the baseline %s\n", path);
+    if (cJSON_GetArraySize(rows) == 0) {
+        printf("  (no value changed)\n");
+        return;
+    }
+    printf("  %-34s %12s %12s %11s %8s\n", "value", "baseline", "now", "change", "%");
+    for (int pass = 0; pass < 2; pass++) {
+        const cJSON *r;
+        cJSON_ArrayForEach(r, rows) {
+            const char *p = cJSON_GetObjectItem(r, "path")->valuestring;
+            bool input = strncmp(p, "scene.", 6) == 0;
+            bool brief = strncmp(p, "balls[", 6) != 0 || strncmp(p, "balls[0]", 8) == 0;
+            if (input == (pass == 0) && brief && !strstr(p, "nodes[")) print_row(r);
+        }
+    }
+}
+
+int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapshot *snap,
+                      bool json)
+{
+    char *text = slurp(path);
+    if (!text) {
+        fprintf(stderr, "acbb: --baseline %s: cannot read: %s\n", path, strerror(errno));
+        return ACBB_EXIT_INPUT;
+    }
+    cJSON *was = cJSON_Parse(text);
+    free(text);
+    if (!cJSON_IsObject(was) || !cJSON_GetObjectItem(was, "losses_W")) {
+        fprintf(stderr, "acbb: --baseline %s: not the JSON of `acbb run --json`\n", path);
+        cJSON_Delete(was);
+        return ACBB_EXIT_INPUT;
+    }
+    cJSON *now = run_json(sc, snap), *rows = cJSON_CreateArray();
+    int rc = now && rows ? ACBB_EXIT_OK : ACBB_EXIT_INTERNAL;
+    if (rc == ACBB_EXIT_OK) {
+        diff(was, now, "", rows);
+        if (json) {
+            cJSON_AddItemToObject(now, "vs_baseline", rows);
+            rows = NULL;
+            char *out = cJSON_Print(now);
+            if (out) puts(out);
+            else rc = ACBB_EXIT_INTERNAL;
+            free(out);
+        } else {
+            print_table(rows, path);
+        }
+    }
+    cJSON_Delete(rows);
+    cJSON_Delete(now);
+    cJSON_Delete(was);
+    return rc;
+}
