@@ -241,4 +241,27 @@ has "$TMP/cage.txt" "cage" "text summary lists the cage loss"
 awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/cage.txt"
 t $? "text summary with six losses fits 80 columns"
 
+# Preset files (issue "Nothing lost, nothing overwritten"): text after a
+# section header is an error with file:line, not silently dropped; a FIFO
+# is refused at once (timeout only turns a hang into a failure).
+printf '[operating] axial_load_N = 5000\n[bearing]\nn_balls = 20\n' >"$TMP/hdr.ini"
+"$ACBB" check "$TMP/hdr.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check: text after a section header exits 2"
+has "$TMP/err" "$TMP/hdr.ini:1: text after the section header [operating]" \
+    "message is file:1: text after the section header"
+mkfifo "$TMP/fifo.ini"
+timeout 60 "$ACBB" check "$TMP/fifo.ini" >"$TMP/out" 2>"$TMP/err"
+rc=$?
+[ "$rc" -ne 0 ] && [ "$rc" -ne 124 ]
+t $? "check of a FIFO fails at once (exit $rc)"
+has "$TMP/err" "a FIFO, not a regular file" "FIFO message says it is not a regular file"
+printf '[operating]\naxial_load_N = 0x10\n' >"$TMP/hex.ini"
+"$ACBB" check "$TMP/hex.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check: a hexadecimal value exits 2"
+printf '[operating]\naxial_load_N = 5\033[2J\n' >"$TMP/esc.ini"
+"$ACBB" check "$TMP/esc.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check: a control character in a preset exits 2"
+! grep -q "$(printf '\033')" "$TMP/err"
+t $? "no raw escape character reaches the terminal"
+
 tap_done
