@@ -452,31 +452,14 @@ fail:
 
 /* ---- acbb keys ---- */
 
-static const char *type_name(acbb_field_type t)
+/* One key: its default, then the interval exactly as the check applies it
+ * ("(0, 100] mm": an open end is refused, a closed one accepted). */
+static void print_key(size_t i, const acbb_field_info *fi, const char *deflt)
 {
-    switch (t) {
-    case ACBB_FIELD_REAL: return "real";
-    case ACBB_FIELD_INT: return "integer";
-    case ACBB_FIELD_BOOL: return "on|off";
-    case ACBB_FIELD_ENUM: return "choice";
-    }
-    return "?";
-}
-
-static void print_key(const acbb_field_info *fi, const char *deflt)
-{
-    printf("%s.%s = %s\n    ", fi->section, fi->key, deflt);
-    if (fi->type == ACBB_FIELD_ENUM && fi->choices) {
-        for (size_t c = 0; fi->choices[c]; c++) printf("%s%s", c ? "|" : "", fi->choices[c]);
-    } else if (fi->type == ACBB_FIELD_REAL || fi->type == ACBB_FIELD_INT) {
-        printf("%s", type_name(fi->type));
-        if (fi->unit && fi->unit[0]) printf(" [%s]", fi->unit);
-        if (isfinite(fi->max) && fi->max < 1e300) printf(", %g .. %g", fi->min, fi->max);
-        else printf(", >= %g", fi->min);
-    } else {
-        printf("%s", type_name(fi->type));
-    }
-    printf(": %s\n", fi->help ? fi->help : "");
+    char range[160];
+    acbb_scene_field_interval(i, range, sizeof range);
+    printf("%s.%s = %s\n    %s: %s\n", fi->section, fi->key, deflt, range,
+           fi->help ? fi->help : "");
 }
 
 int acbb_cli_cmd_keys(const acbb_cli_args *a)
@@ -490,7 +473,7 @@ int acbb_cli_cmd_keys(const acbb_cli_args *a)
         if (!fi) continue;
         char buf[128];
         acbb_scene_field_format(&sc, i, buf, sizeof buf);
-        print_key(fi, buf);
+        print_key(i, fi, buf);
     }
     return acbb_cli_stdout_check(0);
 }

@@ -4,7 +4,8 @@
  *                 ranges (acbb_scene_field*, `acbb keys`)
  * scene_value.c   key lookup, suggestions, value parsing, acbb_scene_set*
  * scene_rules.c   cross-field validation (acbb_scene_validate)
- * scene_io.c      INI load and full save
+ * scene_io.c      INI parsing, load and full save
+ * scene_edit.c    saving into an existing file, keeping the user's lines
  *
  * ONE table (acbb_sf_table) describes every preset key: section, key (unit
  * in the name), type, unit, where the value lives in acbb_scene, the factor
@@ -51,5 +52,37 @@ const acbb_sfield *acbb_sf_find(const char *section, const char *key);
 acbb_status acbb_sf_unknown_key(const char *section, const char *key, acbb_error *err);
 /* Parse `text` (preset units) into field f of s; s untouched on failure. */
 acbb_status acbb_sf_apply(acbb_scene *s, const acbb_sfield *f, const char *text, acbb_error *err);
+
+/* Distinct schema sections, in table order ("bearing", "materials", ...). */
+#define ACBB_SF_SECTIONS_MAX 16
+size_t acbb_sf_section_count(void);
+const char *acbb_sf_section_name(size_t k);
+/* Index of a schema section, or -1. */
+int acbb_sf_section_index(const char *name);
+
+/* Rewrite err->msg with control characters (and UTF-8 C1 controls) shown as
+ * \xNN, so that file or command-line text quoted in a message cannot drive
+ * the terminal. Safe with err == NULL. */
+void acbb_sf_escape_msg(acbb_error *err);
+
+/* What a preset file says, before the cross-field rules. */
+typedef struct {
+    acbb_scene scene;              /* defaults, then every key of the file */
+    int n_keys;
+    int first_line[ACBB_SF_MAX];   /* line of each key, 0 = not in the file */
+    int section_end[ACBB_SF_SECTIONS_MAX]; /* last line (header or key) of the
+                                      section's last occurrence, 0 = absent */
+} acbb_sf_parsed;
+
+/* Open a preset for reading: refuses (ACBB_EIO, with the reason) anything
+ * but a regular file, without blocking on a FIFO. */
+FILE *acbb_sf_open_preset(const char *path, acbb_error *err);
+
+/* Parse an open preset stream (`path` names it in messages): syntax, keys
+ * and each key's own range, not the cross-field rules, not emptiness. */
+acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_error *err);
+
+/* The whole preset, every key with its help and range (acbb_scene_save). */
+int acbb_sf_write_preset(FILE *f, const acbb_scene *s);
 
 #endif

@@ -1,12 +1,19 @@
-/* acbb — scene files: INI load and full save.
+/* acbb — scene files: INI parsing, load and full save.
  *
  * Files are parsed with inih (Debian libinih, 200-byte line buffer). A small
- * reader wrapped around fgets counts lines (inih's handler does not get the
- * line number in this build), refuses over-long lines instead of letting
- * inih split them, and strips leading blanks so that an indented line is
- * never taken as a multi-line continuation of the previous value. */
+ * reader wrapped around getc counts lines (inih's handler does not get the
+ * line number in this build) and looks at each raw line before inih does:
+ * - it refuses over-long lines instead of letting inih split them;
+ * - it refuses text after a section header ("[operating] axial_load_N = 5",
+ *   or a stray CR as line break), which inih would drop silently;
+ * - it refuses NUL bytes (fgets/inih would cut the value there) and control
+ *   characters other than tab (a line starting with \v or \f would be read
+ *   as a continuation of the previous value);
+ * - it strips leading blanks so that an indented line is never taken as a
+ *   multi-line continuation of the previous value. */
 #include <errno.h>
 #include <fcntl.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,48 +22,140 @@
 
 #include <ini.h>
 
+#include "acbb/outfile.h"
 #include "scene_internal.h"
 
-/* ---- loading ---- */
+/* ---- opening ---- */
+
+static const char *file_kind(mode_t m)
+{
+    if (S_ISDIR(m)) return "a directory";
+    if (S_ISFIFO(m)) return "a FIFO";
+    if (S_ISCHR(m) || S_ISBLK(m)) return "a device";
+    if (S_ISSOCK(m)) return "a socket";
+    return "not a regular file";
+}
+
+/* O_NONBLOCK so that opening a FIFO with no writer returns at once; fstat
+ * on the open descriptor, so what is checked is what is read. */
+FILE *acbb_sf_open_preset(const char *path, acbb_error *err)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        acbb_error_set(err, ACBB_EIO, "%s: cannot open: %s", path, strerror(errno));
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        acbb_error_set(err, ACBB_EIO, "%s: cannot read: %s", path, strerror(errno));
+        close(fd);
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        acbb_error_set(err, ACBB_EIO, "%s: cannot read: %s, not a regular file (a preset must "
+                       "be a file)", path, file_kind(st.st_mode));
+        close(fd);
+        return NULL;
+    }
+    int flags = fcntl(fd, F_GETFL);
+    if (flags >= 0) (void)fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    FILE *f = fdopen(fd, "r");
+    if (!f) {
+        acbb_error_set(err, ACBB_EIO, "%s: cannot open: %s", path, strerror(errno));
+        close(fd);
+    }
+    return f;
+}
+
+/* ---- parsing ---- */
 
 typedef struct {
     const char *path;
     FILE *file;
-    acbb_scene scene;
+    acbb_sf_parsed *out;
     int line;                   /* line number of the line inih is handling */
-    int n_keys;
-    int first_line[ACBB_SF_MAX];   /* where each key was set, 0 = not yet */
     int err_line;               /* first error found by us, 0 = none */
     acbb_status err_code;
     acbb_error err;
 } load_ctx;
 
-static void load_fail(load_ctx *c, acbb_status code, const char *msg)
+static bool load_fail(load_ctx *c, acbb_status code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static bool load_fail(load_ctx *c, acbb_status code, const char *fmt, ...)
 {
-    if (c->err_line) return;
+    if (c->err_line) return false;
+    char msg[sizeof c->err.msg];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
     c->err_line = c->line;
     c->err_code = code;
     acbb_error_set(&c->err, code, "%s:%d: %s", c->path, c->line, msg);
+    return false;
 }
 
-/* fgets for inih that counts lines, stops on a line that does not fit the
- * buffer (inih would silently split it into two lines), and strips leading
- * blanks so no line is read as a continuation of the previous value. */
+/* A "[section]" line: nothing but blanks or a comment may follow the ']'
+ * (inih ignores the rest of the line). Notes where a schema section is. */
+static bool check_header(load_ctx *c, const char *p)
+{
+    const char *close = strchr(p, ']');
+    if (!close) return true;   /* inih reports the malformed line */
+    const char *rest = close + 1 + strspn(close + 1, " \t\r");
+    if (*rest && *rest != '\n' && *rest != ';' && *rest != '#') {
+        size_t n = strcspn(rest, "\n");
+        while (n > 0 && rest[n - 1] == '\r') n--;
+        return load_fail(c, ACBB_EINVAL, "text after the section header %.*s: \"%.*s\" (put "
+                         "each key on a line of its own)", (int)(close + 1 - p), p, (int)n, rest);
+    }
+    char name[INI_MAX_LINE];
+    snprintf(name, sizeof name, "%.*s", (int)(close - p - 1), p + 1);
+    int k = acbb_sf_section_index(name);
+    if (k >= 0) c->out->section_end[k] = c->line;
+    return true;
+}
+
+/* Control characters: only tab, and CR right before the line end. */
+static bool check_controls(load_ctx *c, const char *str)
+{
+    for (const char *q = str; *q; q++) {
+        unsigned char u = (unsigned char)*q;
+        bool line_end = u == '\n' || (u == '\r' && (q[1] == '\n' || q[1] == '\0'));
+        if ((u < 0x20 && u != '\t' && !line_end) || u == 0x7f)
+            return load_fail(c, ACBB_EINVAL, "control character \\x%02x in the line (a preset "
+                             "is plain text; only spaces and tabs as blanks)", u);
+    }
+    return true;
+}
+
+/* One raw line for inih, checked as the file comment says. */
 static char *read_line(char *str, int num, void *stream)
 {
     load_ctx *c = stream;
-    if (c->err_line || !fgets(str, num, c->file)) return NULL;
-    c->line++;
-    size_t len = strlen(str);
-    if (len == 0 || str[len - 1] != '\n') {
-        int ch = fgetc(c->file);
-        if (ch != EOF) {
-            char msg[96];
-            snprintf(msg, sizeof msg, "line too long (at most %d characters)", num - 3);
-            load_fail(c, ACBB_EINVAL, msg);
-            return NULL;
-        }
+    if (c->err_line) return NULL;
+    size_t len = 0, max = (size_t)num - 1;
+    bool nul = false;
+    int ch;
+    while (len < max && (ch = getc(c->file)) != EOF) {
+        nul |= ch == '\0';
+        str[len++] = (char)(ch ? ch : ' ');
+        if (ch == '\n') break;
     }
+    if (len == 0) return NULL;
+    str[len] = '\0';
+    c->line++;
+    if (str[len - 1] != '\n' && (ch = getc(c->file)) != EOF) {
+        load_fail(c, ACBB_EINVAL, "line too long (at most %d characters)", num - 3);
+        return NULL;
+    }
+    if (nul) {
+        load_fail(c, ACBB_EINVAL, "NUL byte in line %d (a preset is plain text)", c->line);
+        return NULL;
+    }
+    const char *p = str;
+    if (c->line == 1 && memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
+    p += strspn(p, " \t");
+    if ((*p == '[' && !check_header(c, p)) || !check_controls(c, str)) return NULL;
     size_t skip = strspn(str, " \t");
     memmove(str, str + skip, strlen(str + skip) + 1);
     return str;
@@ -67,73 +166,77 @@ static int on_key(void *user, const char *section, const char *name, const char 
     load_ctx *c = user;
     if (c->err_line) return 1;
     acbb_error e;
-    c->n_keys++;
+    c->out->n_keys++;
     const acbb_sfield *f = acbb_sf_find(section, name);
     if (!f) {
         acbb_sf_unknown_key(section, name, &e);
-        load_fail(c, ACBB_EINVAL, e.msg);
-        return 0;
+        return load_fail(c, ACBB_EINVAL, "%s", e.msg);
     }
     size_t i = (size_t)(f - acbb_sf_table);
-    if (c->first_line[i]) {
-        snprintf(e.msg, sizeof e.msg, "%s.%s: set twice (first at line %d)", section, name,
-                 c->first_line[i]);
-        load_fail(c, ACBB_EINVAL, e.msg);
-        return 0;
-    }
-    c->first_line[i] = c->line;
-    if (acbb_sf_apply(&c->scene, f, value, &e) != ACBB_OK) {
-        load_fail(c, ACBB_EINVAL, e.msg);
-        return 0;
-    }
+    if (c->out->first_line[i])
+        return load_fail(c, ACBB_EINVAL, "%s.%s: set twice (first at line %d)", section, name,
+                         c->out->first_line[i]);
+    c->out->first_line[i] = c->line;
+    c->out->section_end[acbb_sf_section_index(section)] = c->line;
+    if (acbb_sf_apply(&c->out->scene, f, value, &e) != ACBB_OK)
+        return load_fail(c, ACBB_EINVAL, "%s", e.msg);
     return 1;
 }
 
-acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err)
+acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_error *err)
 {
     load_ctx *c = calloc(1, sizeof *c);
     if (!c) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", path);
+    memset(out, 0, sizeof *out);
+    acbb_scene_default(&out->scene);
     c->path = path;
-    acbb_scene_default(&c->scene);
-    c->file = fopen(path, "r");
-    if (!c->file) {
-        int e = errno;
-        free(c);
-        return acbb_error_set(err, ACBB_EIO, "%s: cannot open: %s", path, strerror(e));
-    }
-
+    c->file = f;
+    c->out = out;
     int ret = ini_parse_stream(read_line, c, on_key, c);
-    int read_errno = ferror(c->file) ? errno : 0;
-    bool read_error = ferror(c->file) != 0;
-    fclose(c->file);
-
     acbb_status rc = ACBB_OK;
-    if (read_error) {
-        rc = acbb_error_set(err, ACBB_EIO, "%s: cannot read: %s", path, strerror(read_errno));
-    } else if (ret < 0) {
+    if (ferror(f))
+        rc = acbb_error_set(err, ACBB_EIO, "%s: cannot read: %s", path, strerror(errno));
+    else if (ret < 0)
         rc = acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", path);
-    } else if (ret > 0 && (c->err_line == 0 || ret < c->err_line)) {
+    else if (ret > 0 && (c->err_line == 0 || ret < c->err_line))
         rc = acbb_error_set(err, ACBB_EINVAL,
                             "%s:%d: malformed line (expected key = value or [section])", path, ret);
-    } else if (c->err_line) {
+    else if (c->err_line)
         rc = acbb_error_set(err, c->err_code, "%s", c->err.msg);
-    } else if (c->n_keys == 0) {
+    free(c);
+    return rc;
+}
+
+/* ---- loading ---- */
+
+acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err)
+{
+    acbb_sf_parsed *p = calloc(1, sizeof *p);
+    if (!p) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", path);
+    acbb_status rc = ACBB_EIO;
+    FILE *f = acbb_sf_open_preset(path, err);
+    if (f) {
+        rc = acbb_sf_parse(f, path, p, err);
+        fclose(f);
+    }
+    if (rc == ACBB_OK && p->n_keys == 0) {
         rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", path);
-    } else {
+    } else if (rc == ACBB_OK) {
         acbb_error e;
-        rc = acbb_scene_validate(&c->scene, &e);
+        rc = acbb_scene_validate(&p->scene, &e);
         if (rc != ACBB_OK)
             acbb_error_set(err, rc, "%s: %s", path, e.msg);
         else
-            *s = c->scene;
+            *s = p->scene;
     }
-    free(c);
+    free(p);
+    if (rc != ACBB_OK) acbb_sf_escape_msg(err);
     return rc;
 }
 
 /* ---- saving ---- */
 
-static int write_preset(FILE *f, const acbb_scene *s)
+int acbb_sf_write_preset(FILE *f, const acbb_scene *s)
 {
     const char *section = "";
     int bad = fprintf(f, "; acbb preset (bearing scene). Units are in the key names; decimal "
@@ -153,62 +256,25 @@ static int write_preset(FILE *f, const acbb_scene *s)
     return bad ? -1 : 0;
 }
 
-/* Flush the rename to disk; best effort (the file itself is already safe). */
-static void sync_parent_dir(const char *path)
-{
-    char *dir = strdup(path);
-    if (!dir) return;
-    char *slash = strrchr(dir, '/');
-    const char *d = ".";
-    if (slash) {
-        slash[slash == dir ? 1 : 0] = '\0';
-        d = dir;
-    }
-    int fd = open(d, O_RDONLY | O_DIRECTORY);
-    if (fd >= 0) {
-        (void)fsync(fd);
-        close(fd);
-    }
-    free(dir);
-}
-
+/* Through acbb_out (outfile.h): temp file beside the target, fsync, rename;
+ * mode kept, symlinks followed, non-regular targets written directly. */
 acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *err)
 {
     acbb_error e;
     acbb_status rc = acbb_scene_validate(s, &e);
-    if (rc != ACBB_OK) return acbb_error_set(err, rc, "%s: not saved: %s", path, e.msg);
-
-    size_t n = strlen(path) + sizeof ".tmp.XXXXXX";
-    char *tmp = malloc(n);
-    if (!tmp) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", path);
-    snprintf(tmp, n, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        int en = errno;
-        free(tmp);
-        return acbb_error_set(err, ACBB_EIO, "%s: cannot save (temporary file): %s", path,
-                              strerror(en));
+    if (rc != ACBB_OK) {
+        acbb_error_set(err, rc, "%s: not saved: %s", path, e.msg);
+    } else {
+        acbb_out *o;
+        FILE *f;
+        rc = acbb_out_open(path, &o, &f, err);
+        if (rc == ACBB_OK && acbb_sf_write_preset(f, s) != 0) {
+            acbb_out_abort(o);
+            rc = acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
+        } else if (rc == ACBB_OK) {
+            rc = acbb_out_commit(o, err);
+        }
     }
-    /* mkstemp makes the file 0600; keep the mode of the file we replace. */
-    struct stat st;
-    (void)fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644);
-
-    const char *step = "write";
-    FILE *f = fdopen(fd, "w");
-    bool ok = f != NULL;
-    if (!ok) close(fd);
-    if (ok) ok = write_preset(f, s) == 0 && fflush(f) == 0;
-    if (ok && fsync(fileno(f)) != 0) ok = false, step = "fsync";
-    int en = errno;
-    if (f && fclose(f) != 0 && ok) ok = false, en = errno;
-    if (ok && rename(tmp, path) != 0) ok = false, en = errno, step = "rename";
-    if (!ok) {
-        unlink(tmp);
-        free(tmp);
-        return acbb_error_set(err, ACBB_EIO, "%s: cannot save (%s): %s", path, step,
-                              strerror(en));
-    }
-    free(tmp);
-    sync_parent_dir(path);
-    return ACBB_OK;
+    if (rc != ACBB_OK) acbb_sf_escape_msg(err);
+    return rc;
 }

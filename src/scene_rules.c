@@ -254,6 +254,21 @@ static acbb_status rule_radial_load(const acbb_scene *s, acbb_error *err)
                           show(s, "operating", "axial_load_N", b), need);
 }
 
+/* A displacement preload fixes the axial offset dx to what preload_N
+ * produces at 20 C, 0 rpm (MODEL.md section 1, preload modes); with
+ * preload_N = 0 that offset leaves every ball unloaded, so no run could
+ * find contact. */
+static acbb_status rule_preload(const acbb_scene *s, acbb_error *err)
+{
+    if (s->preload != ACBB_PRELOAD_DISPLACEMENT || s->preload_force > 0.0) return ACBB_OK;
+    char a[40];
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "mounting.preload = displacement with preload_N = %s: a displacement "
+                          "preload is set by the force that makes it; preload_N must be > 0 N "
+                          "(or use preload = force)",
+                          show(s, "mounting", "preload_N", a));
+}
+
 typedef acbb_status (*rule_fn)(const acbb_scene *, acbb_error *);
 
 /* Order matters: ranges first (later rules divide by them), the grooves
@@ -262,7 +277,7 @@ static const rule_fn k_rules[] = {
     rule_ranges, rule_inner_groove, rule_outer_groove, rule_balls_fit, rule_inner_ring,
     rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
-    rule_radial_load,
+    rule_preload, rule_radial_load,
 };
 
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)

@@ -42,18 +42,20 @@ static const char *const k_preload[] = {"force", "displacement", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
 
+#define LO_OPEN(ends) ((ends) == OC || (ends) == OO)
+#define HI_OPEN(ends) ((ends) == CO || (ends) == OO)
 #define REAL(sec, key, unit, member, scale, def, ends, lo, hi, help) \
-    {{sec, key, ACBB_FIELD_REAL, unit, lo, hi, NULL, help}, \
+    {{sec, key, ACBB_FIELD_REAL, unit, lo, hi, NULL, help, LO_OPEN(ends), HI_OPEN(ends)}, \
      offsetof(acbb_scene, member), scale, def, ends}
 #define INT(sec, key, member, def, lo, hi, help) \
-    {{sec, key, ACBB_FIELD_INT, "", lo, hi, NULL, help}, \
+    {{sec, key, ACBB_FIELD_INT, "", lo, hi, NULL, help, false, false}, \
      offsetof(acbb_scene, member), 1.0, def, CC}
 #define BOOL(sec, key, member, def, help) \
-    {{sec, key, ACBB_FIELD_BOOL, "", 0, 1, NULL, help}, \
+    {{sec, key, ACBB_FIELD_BOOL, "", 0, 1, NULL, help, false, false}, \
      offsetof(acbb_scene, member), 1.0, def, CC}
 #define ENUM(sec, key, member, choices, def, help) \
     {{sec, key, ACBB_FIELD_ENUM, "", 0, \
-      (double)(sizeof(choices) / sizeof(choices[0]) - 2), choices, help}, \
+      (double)(sizeof(choices) / sizeof(choices[0]) - 2), choices, help, false, false}, \
      offsetof(acbb_scene, member), 1.0, def, CC}
 
 /* Six keys per part of [materials]. */
@@ -381,7 +383,9 @@ void acbb_scene_field_format(const acbb_scene *s, size_t i, char *buf, size_t n)
     }
 }
 
-void acbb_scene_field_range(size_t i, char *buf, size_t n)
+/* Allowed values as text; numbers either as "0 < x <= 100 mm" or, with
+ * `interval`, as "(0, 100] mm". */
+static void describe_range(size_t i, bool interval, char *buf, size_t n)
 {
     if (n == 0) return;
     buf[0] = '\0';
@@ -389,14 +393,17 @@ void acbb_scene_field_range(size_t i, char *buf, size_t n)
     const acbb_sfield *f = &acbb_sf_table[i];
     char u[32];
     size_t used = 0;
+    bool lo_open = f->info.min_open, hi_open = f->info.max_open;
     switch (f->info.type) {
     case ACBB_FIELD_REAL:
-    case ACBB_FIELD_INT: {
-        bool lo_open = f->ends == OC || f->ends == OO, hi_open = f->ends == CO || f->ends == OO;
-        snprintf(buf, n, "%.15g %s x %s %.15g%s", f->info.min, lo_open ? "<" : "<=",
-                 hi_open ? "<" : "<=", f->info.max, unit_suffix(f, u, sizeof u));
+    case ACBB_FIELD_INT:
+        if (interval)
+            snprintf(buf, n, "%c%.15g, %.15g%c%s", lo_open ? '(' : '[', f->info.min, f->info.max,
+                     hi_open ? ')' : ']', unit_suffix(f, u, sizeof u));
+        else
+            snprintf(buf, n, "%.15g %s x %s %.15g%s", f->info.min, lo_open ? "<" : "<=",
+                     hi_open ? "<" : "<=", f->info.max, unit_suffix(f, u, sizeof u));
         break;
-    }
     case ACBB_FIELD_BOOL:
         snprintf(buf, n, "on | off");
         break;
@@ -408,9 +415,47 @@ void acbb_scene_field_range(size_t i, char *buf, size_t n)
     }
 }
 
+void acbb_scene_field_range(size_t i, char *buf, size_t n)
+{
+    describe_range(i, false, buf, n);
+}
+
+void acbb_scene_field_interval(size_t i, char *buf, size_t n)
+{
+    describe_range(i, true, buf, n);
+}
+
 const char *acbb_model_level_name(acbb_model_level m)
 {
     return m >= ACBB_MODEL_STATIC && m <= ACBB_MODEL_DYNAMIC ? k_model[m] : "unknown";
+}
+
+/* ---- sections (the table lists each section's keys together) ---- */
+
+static bool starts_section(size_t i)
+{
+    return i == 0 || strcmp(acbb_sf_table[i].info.section, acbb_sf_table[i - 1].info.section) != 0;
+}
+
+size_t acbb_sf_section_count(void)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < acbb_sf_n; i++) k += starts_section(i);
+    return k;
+}
+
+const char *acbb_sf_section_name(size_t k)
+{
+    for (size_t i = 0; i < acbb_sf_n; i++)
+        if (starts_section(i) && k-- == 0) return acbb_sf_table[i].info.section;
+    return NULL;
+}
+
+int acbb_sf_section_index(const char *name)
+{
+    for (size_t k = 0; k < ACBB_SF_SECTIONS_MAX && acbb_sf_section_name(k); k++)
+        if (strcmp(acbb_sf_section_name(k), name) == 0) return (int)k;
+    return -1;
 }
 
 void acbb_scene_default(acbb_scene *s)

@@ -131,6 +131,11 @@ static acbb_status parse_number(const acbb_sfield *f, const char *t, double *out
 {
     char *end;
     if (t[0] == '\0') return reason(why, n, "missing value");
+    /* strtod also reads C99 hexadecimal ("0x10" = 16, "0x1p4"); a preset
+     * holds decimal numbers only, so "0x10" is not silently sixteen. */
+    const char *digits = t + (t[0] == '+' || t[0] == '-');
+    if (digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X'))
+        return reason(why, n, "decimal numbers only (hexadecimal like 0x10 is not accepted)");
     double v = strtod(t, &end);
     if (end == t) return reason(why, n, "not a number");
     if (*end != '\0')
@@ -195,8 +200,8 @@ acbb_status acbb_sf_apply(acbb_scene *s, const acbb_sfield *f, const char *text,
 
 /* ---- acbb_scene_set ---- */
 
-static acbb_status set_one(acbb_scene *s, const char *dotted_key, const char *value,
-                           int cross_check, acbb_error *err)
+static acbb_status set_one_raw(acbb_scene *s, const char *dotted_key, const char *value,
+                               int cross_check, acbb_error *err)
 {
     char section[EDIT_MAX], hint[160];
     const char *dot = strchr(dotted_key, '.');
@@ -215,6 +220,15 @@ static acbb_status set_one(acbb_scene *s, const char *dotted_key, const char *va
     acbb_status rc = acbb_sf_apply(&trial, f, value, err);
     if (rc == ACBB_OK && cross_check) rc = acbb_scene_validate(&trial, err);
     if (rc == ACBB_OK) *s = trial;
+    return rc;
+}
+
+/* Every message quotes the caller's text: shown escaped. */
+static acbb_status set_one(acbb_scene *s, const char *dotted_key, const char *value,
+                           int cross_check, acbb_error *err)
+{
+    acbb_status rc = set_one_raw(s, dotted_key, value, cross_check, err);
+    if (rc != ACBB_OK) acbb_sf_escape_msg(err);
     return rc;
 }
 
@@ -237,17 +251,48 @@ acbb_status acbb_scene_apply_edits(acbb_scene *s, const char *const *edits, size
     for (size_t i = 0; i < n; i++) {
         const char *text = edits[i], *eq = strchr(text, '=');
         char key[EDIT_MAX];
-        if (!eq || eq == text || (size_t)(eq - text) >= sizeof key)
-            return acbb_error_set(err, ACBB_EINVAL, "--set %s: expected section.key=value", text);
+        if (!eq || eq == text || (size_t)(eq - text) >= sizeof key) {
+            acbb_error_set(err, ACBB_EINVAL, "--set %s: expected section.key=value", text);
+            acbb_sf_escape_msg(err);
+            return ACBB_EINVAL;
+        }
         memcpy(key, text, (size_t)(eq - text));
         key[eq - text] = '\0';
         acbb_error e = { "" };
         acbb_status rc = set_one(&trial, key, eq + 1, 0, &e);
-        if (rc != ACBB_OK)
-            return acbb_error_set(err, rc, "--set %s: %s", text, e.msg);
+        if (rc != ACBB_OK) {
+            acbb_error_set(err, rc, "--set %s: %s", text, e.msg);
+            acbb_sf_escape_msg(err);
+            return rc;
+        }
     }
     /* Cross-field rules once, on the scene as a whole. */
     acbb_status rc = acbb_scene_validate(&trial, err);
     if (rc == ACBB_OK) *s = trial;
     return rc;
+}
+
+void acbb_sf_escape_msg(acbb_error *err)
+{
+    if (!err) return;
+    char in[sizeof err->msg];
+    memcpy(in, err->msg, sizeof in);
+    in[sizeof in - 1] = '\0';
+    size_t o = 0, cap = sizeof err->msg;
+    for (const unsigned char *p = (const unsigned char *)in; *p; p++) {
+        /* C0 controls, DEL, and C1 controls as UTF-8 (0xc2 0x80..0x9f). */
+        bool c1 = p[0] == 0xc2 && p[1] >= 0x80 && p[1] <= 0x9f;
+        if (*p < 0x20 || *p == 0x7f || c1) {
+            size_t len = c1 ? 8 : 4;
+            if (o + len >= cap) break;
+            if (c1) snprintf(err->msg + o, cap - o, "\\xc2\\x%02x", p[1]);
+            else snprintf(err->msg + o, cap - o, "\\x%02x", *p);
+            p += c1;
+            o += len;
+        } else {
+            if (o + 1 >= cap) break;
+            err->msg[o++] = (char)*p;
+        }
+    }
+    err->msg[o] = '\0';
 }

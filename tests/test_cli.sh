@@ -413,4 +413,34 @@ printf 'not json' >"$TMP/bad.json"
 code $? 2 "a baseline that is not an acbb run JSON: exit 2"
 has "$TMP/err" "not the JSON of" "and the message says why"
 
+# Preset files (issue "Nothing lost, nothing overwritten"): text after a
+# section header is an error with file:line, not silently dropped; a FIFO
+# is refused at once (timeout only turns a hang into a failure).
+printf '[operating] axial_load_N = 5000\n[bearing]\nn_balls = 20\n' >"$TMP/hdr.ini"
+"$ACBB" check "$TMP/hdr.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check: text after a section header exits 2"
+has "$TMP/err" "$TMP/hdr.ini:1: text after the section header [operating]" \
+    "message is file:1: text after the section header"
+mkfifo "$TMP/fifo.ini"
+timeout 60 "$ACBB" check "$TMP/fifo.ini" >"$TMP/out" 2>"$TMP/err"
+rc=$?
+[ "$rc" -ne 0 ] && [ "$rc" -ne 124 ]
+t $? "check of a FIFO fails at once (exit $rc)"
+has "$TMP/err" "a FIFO, not a regular file" "FIFO message says it is not a regular file"
+printf '[operating]\naxial_load_N = 0x10\n' >"$TMP/hex.ini"
+"$ACBB" check "$TMP/hex.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check: a hexadecimal value exits 2"
+printf '[operating]\naxial_load_N = 5\033[2J\n' >"$TMP/esc.ini"
+"$ACBB" check "$TMP/esc.ini" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "check: a control character in a preset exits 2"
+! grep -q "$(printf '\033')" "$TMP/err"
+t $? "no raw escape character reaches the terminal"
+
+# acbb keys shows each range as the check applies it (open or closed ends).
+"$ACBB" keys >"$TMP/keys2.txt" 2>&1
+grep -A1 -x 'bearing.ball_diameter_mm = 6.35' "$TMP/keys2.txt" | grep -q '(0, 100\] mm'
+t $? "keys: ball diameter shown as (0, 100] mm (0 refused, 100 accepted)"
+grep -A1 -x 'bearing.n_balls = 21' "$TMP/keys2.txt" | grep -q '\[3, 64\]'
+t $? "keys: n_balls shown as the closed interval [3, 64]"
+
 tap_done

@@ -4,7 +4,7 @@
  * stored in degrees Celsius (only differences and the Walther law use them;
  * the Walther law converts to K itself). The preset file uses the units
  * named in each key (`ball_diameter_mm`, `inner_speed_rpm`, ...); the schema
- * table in scene.c converts both ways.
+ * table in src/scene_schema.c converts both ways.
  *
  * Ownership: an acbb_scene is a plain value (no pointers); copy it freely. */
 #ifndef ACBB_SCENE_H
@@ -139,12 +139,45 @@ void acbb_scene_default(acbb_scene *s);
 
 /* Load a preset: starts from acbb_scene_default, then applies every key.
  * On failure returns ACBB_EIO or ACBB_EINVAL and writes
- * "path:line: section.key = value: reason" into err. */
+ * "path:line: section.key = value: reason" into err. Only a regular file
+ * is read (a FIFO or device is refused at once, without blocking). Numbers
+ * are decimal only (no 0x10). Control characters quoted from the file are
+ * shown escaped (\x1b) in every message of this module. */
 acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err);
 
-/* Save atomically (temp file in the same directory, fsync, rename).
- * Every schema key is written, with its unit in the key name. */
+/* Write the whole preset: every schema key, with its unit in the key name
+ * and a comment line (help and range) above it. Written through acbb_out
+ * (outfile.h): temp file beside the target, fsync, rename; the mode is
+ * kept, a symlink is followed (the link stays), a non-regular target (FIFO,
+ * /dev/stdout) is written directly. An invalid scene is not written
+ * (message "PATH: not saved: reason"). Use this for "save as" to a new file
+ * or an export; to save back into the user's own preset, use
+ * acbb_scene_save_edits. */
 acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *err);
+
+/* Save `s` into the preset at `path`, keeping the user's file (the way
+ * `git config` writes; DESIGN.md). For the TUI's Save and `acbb edit`.
+ * - `path` exists and is a regular file (a symlink is followed): only the
+ *   lines of keys whose values changed are rewritten, and on such a line
+ *   only the value: the key spelling, blanks and an inline comment after the
+ *   value stay. A value written differently but meaning the same ("1e3" for
+ *   1000, "yes" for on) is not a change. Comments, blank lines, order and
+ *   line ends (LF or CRLF) stay. A key that is not in the file and whose
+ *   new value differs from the default is appended at the end of its
+ *   section (after the section's last key, in its last occurrence); a
+ *   missing section is appended at the end of the file. Keys absent from
+ *   the file whose value is the default stay absent.
+ * - `path` does not exist, is empty, or is not a regular file (FIFO,
+ *   device): the full preset is written as by acbb_scene_save.
+ * - The existing file must itself read as a preset (syntax, known keys,
+ *   each key's range; the cross-field rules of the OLD file do not
+ *   matter): otherwise nothing is written and the message names the line
+ *   ("PATH: not saved: PATH:3: ...").
+ * `s` must pass acbb_scene_validate. Written through acbb_out (atomic, mode
+ * kept, symlink followed). Returns ACBB_OK, ACBB_EINVAL/ACBB_ILL_POSED (the
+ * scene or the old file), ACBB_EIO or ACBB_ENOMEM; on failure the file is
+ * untouched. */
+acbb_status acbb_scene_save_edits(const char *path, const acbb_scene *s, acbb_error *err);
 
 /* Set one value from text, "section.key" and "value" in preset units
  * (as `--set` on the CLI and the TUI editor do). Validates the value;
@@ -178,9 +211,11 @@ typedef struct {
     const char *key;         /* "ball_diameter_mm" (unit in the name) */
     acbb_field_type type;
     const char *unit;        /* "mm", "rpm", "" */
-    double min, max;         /* allowed range in preset units (inclusive) */
+    double min, max;         /* allowed range in preset units; an end is
+                                included unless min_open / max_open */
     const char *const *choices; /* NULL-terminated, for ENUM */
     const char *help;        /* one line */
+    bool min_open, max_open; /* true: that end is excluded (x > min, x < max) */
 } acbb_field_info;
 
 size_t acbb_scene_field_count(void);
@@ -191,6 +226,10 @@ void acbb_scene_field_format(const acbb_scene *s, size_t i, char *buf, size_t n)
  * "0 < x <= 100 mm", "on | off", "static | quasi-static | ...". Says which
  * range ends are exclusive, which acbb_field_info cannot. */
 void acbb_scene_field_range(size_t i, char *buf, size_t n);
+
+/* The same as an interval, as the check applies it (for `acbb keys`):
+ * "(0, 100] mm", "[3, 64]", "on | off", "static | quasi-static | ...". */
+void acbb_scene_field_interval(size_t i, char *buf, size_t n);
 
 const char *acbb_model_level_name(acbb_model_level m);
 
