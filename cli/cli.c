@@ -226,6 +226,28 @@ int acbb_cli_cmd_check(const acbb_cli_args *a)
     return acbb_cli_stdout_check(0);
 }
 
+/* ---- acbb edit ---- */
+
+int acbb_cli_cmd_edit(const acbb_cli_args *a)
+{
+    int rc;
+    acbb_scene sc;
+    if (a->n_sets == 0) {
+        fprintf(stderr, "acbb: edit: nothing to do (give --set section.key=value)\n");
+        return ACBB_EXIT_INPUT;
+    }
+    if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_scene_validate(&sc, &err);
+    if (st == ACBB_OK) st = acbb_scene_save_edits(a->preset, &sc, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        return acbb_cli_exit_for(st);
+    }
+    printf("%s: %zu edit%s saved\n", a->preset, a->n_sets, a->n_sets == 1 ? "" : "s");
+    return acbb_cli_stdout_check(0);
+}
+
 /* ---- acbb sweep ---- */
 
 /* Split "v1,v2,..." into points, each a copy of `base` with param = value. */

@@ -41,6 +41,11 @@ const acbb_cli_command acbb_cli_commands[] = {
       acbb_cli_cmd_run },
     { "check", NULL, "PRESET", "validate the preset and the edits without running", NULL,
       SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_check },
+    { "edit", NULL, "PRESET", "apply --set edits to the preset file in place",
+      "Only the lines of the changed keys are rewritten; comments, order and blank\n"
+      "lines stay; new keys go at the end of their section. The file is replaced\n"
+      "atomically, and only if the edited scene is valid.\n",
+      SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_edit },
     { "sweep", NULL, "PRESET", "one run per value of a parameter, in parallel",
       "e.g. acbb sweep 7008C --param operating.axial_load_N --values 200,500,1000\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS), 1, 1, 0,

@@ -443,4 +443,18 @@ t $? "keys: ball diameter shown as (0, 100] mm (0 refused, 100 accepted)"
 grep -A1 -x 'bearing.n_balls = 21' "$TMP/keys2.txt" | grep -q '\[3, 64\]'
 t $? "keys: n_balls shown as the closed interval [3, 64]"
 
+# acbb edit: the preset changes in place, one line, comments kept.
+printf '; my bearing\n[operating]\n; the load I test\naxial_load_N = 1000 ; N\n\ninner_speed_rpm = 15000\n' \
+    >"$TMP/mine.ini"
+cp "$TMP/mine.ini" "$TMP/mine.orig"
+"$ACBB" edit "$TMP/mine.ini" --set operating.axial_load_N=500 >"$TMP/out" 2>"$TMP/err"
+code $? 0 "edit exits 0"
+[ "$(diff "$TMP/mine.orig" "$TMP/mine.ini" | grep -c '^[<>]')" = 2 ] \
+    && grep -q '^; the load I test$' "$TMP/mine.ini" && grep -q '^axial_load_N = 500' "$TMP/mine.ini"
+t $? "edit rewrote exactly the one line; comments stay"
+"$ACBB" edit "$TMP/mine.ini" --set bearing.ball_diameter_mm=-3 >/dev/null 2>"$TMP/err"
+code $? 2 "edit with a bad value exits 2"
+grep -q '^axial_load_N = 500' "$TMP/mine.ini"
+t $? "and leaves the file as it was"
+
 tap_done
