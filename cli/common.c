@@ -61,8 +61,10 @@ int acbb_cli_file_close(acbb_cli_file *c)
     acbb_status st = acbb_out_commit(c->handle, &err);
     c->handle = NULL;
     if (st != ACBB_OK) {
+        /* Same rule for every output flag: a path that cannot be opened is
+         * bad input (2), a write that fails once open (disk full) is 4. */
         fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
-        return ACBB_EXIT_INPUT;
+        return ACBB_EXIT_INTERNAL;
     }
     if (c->out.nonfinite) {
         fprintf(stderr, "acbb: internal error: %ld non-finite values in %s\n",

@@ -1,4 +1,10 @@
-/* acbb — atomic, non-destructive output files (outfile.h). */
+#define _GNU_SOURCE /* O_TMPFILE, linkat through /proc (Linux) */
+/* acbb — atomic, non-destructive output files (outfile.h).
+ *
+ * The temporary file is an unnamed O_TMPFILE inode in the target's
+ * directory where the file system offers it: a kill before the commit
+ * leaves nothing behind. It gets a name (linkat) only at commit, just
+ * before the rename. Elsewhere a hidden mkstemp name is the fallback. */
 #include <errno.h>
 #include <fcntl.h>
 #include <libgen.h>
@@ -11,7 +17,8 @@
 
 struct acbb_out {
     char *target;      /* resolved path (symlinks followed) */
-    char *tmp;         /* temporary file, NULL when written directly */
+    char *tmp;         /* named temporary file (mkstemp fallback), else NULL */
+    int fd;            /* the temporary file, or the target when direct; -1 none */
     FILE *f;
     int direct;        /* 1: write into the target itself (non-regular, stdout) */
     int is_stdout;
@@ -49,45 +56,55 @@ static char *resolve(const char *path)
     return cur;
 }
 
-static acbb_status open_temp(acbb_out *o, acbb_error *err)
+/* dir and base of the target as two malloc'd strings. */
+static int split(const char *path, char **dir, char **base)
 {
-    /* A hidden name beside the target: the same file system for rename. */
-    char *copy = strdup(o->target), *copy2 = strdup(o->target);
-    if (!copy || !copy2) {
-        free(copy); free(copy2);
-        return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    }
-    const char *dir = dirname(copy), *base = basename(copy2);
+    char *a = strdup(path), *b = strdup(path);
+    *dir = a ? strdup(dirname(a)) : NULL;
+    *base = b ? strdup(basename(b)) : NULL;
+    free(a);
+    free(b);
+    if (*dir && *base) return 0;
+    free(*dir);
+    free(*base);
+    return -1;
+}
+
+static mode_t file_mode(const acbb_out *o)
+{
+    if (o->existed) return o->st.st_mode & 07777;
+    /* The umask cannot be read without setting it; the usual 022 is assumed
+     * rather than changing process-wide state under other threads. */
+    return 0644;
+}
+
+static int named_temp(acbb_out *o, const char *dir, const char *base)
+{
     size_t len = strlen(dir) + strlen(base) + 32;
     o->tmp = malloc(len);
-    if (o->tmp) snprintf(o->tmp, len, "%s/.%s.acbb-XXXXXX", dir, base);
-    free(copy); free(copy2);
-    if (!o->tmp) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    int fd = mkstemp(o->tmp);
-    if (fd < 0) {
-        int en = errno;
-        free(o->tmp);
-        o->tmp = NULL;
-        return acbb_error_set(err, ACBB_EIO, "cannot write %s: cannot create a temporary file beside it: %s",
-                              o->target, strerror(en));
-    }
-    mode_t mode;
-    if (o->existed) {
-        mode = o->st.st_mode & 07777;
-        /* Keep the owner where we may (root replacing a user's file). */
-        if (fchown(fd, o->st.st_uid, o->st.st_gid) != 0) { /* not ours to keep */ }
-    } else {
-        mode_t um = umask(022);
-        umask(um);
-        mode = 0666 & ~um;
-    }
-    (void)fchmod(fd, mode);
-    o->f = fdopen(fd, "w");
-    if (!o->f) {
-        close(fd);
-        unlink(o->tmp);
-        return acbb_error_set(err, ACBB_EIO, "%s: cannot open: %s", o->target, strerror(errno));
-    }
+    if (!o->tmp) return -1;
+    snprintf(o->tmp, len, "%s/.%s.acbb-XXXXXX", dir, base);
+    return mkstemp(o->tmp);
+}
+
+static acbb_status open_temp(acbb_out *o, acbb_error *err)
+{
+    char *dir, *base;
+    if (split(o->target, &dir, &base) != 0)
+        return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    int fd = open(dir, O_TMPFILE | O_RDWR | O_CLOEXEC, file_mode(o));
+    if (fd < 0 && errno != ENOENT && errno != EACCES && errno != EROFS)
+        fd = named_temp(o, dir, base); /* no O_TMPFILE on this file system */
+    int en = errno;
+    free(dir);
+    free(base);
+    if (fd < 0)
+        return acbb_error_set(err, ACBB_EIO, "cannot write %s: cannot create a temporary file "
+                              "beside it: %s", o->target, strerror(en));
+    (void)fchmod(fd, file_mode(o));
+    /* Keep the owner where we may (root replacing a user's file). */
+    if (o->existed && fchown(fd, o->st.st_uid, o->st.st_gid) != 0) { /* not ours to keep */ }
+    o->fd = fd;
     return ACBB_OK;
 }
 
@@ -98,49 +115,57 @@ static void release(acbb_out *o)
     free(o);
 }
 
+static acbb_status open_target(acbb_out *o, const char *path, int want_stream, acbb_error *err)
+{
+    o->target = resolve(path);
+    if (!o->target) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    o->existed = stat(o->target, &o->st) == 0;
+    if (o->existed && S_ISDIR(o->st.st_mode))
+        return acbb_error_set(err, ACBB_EIO, "cannot write %s: it is a directory", path);
+    if (o->existed && access(o->target, W_OK) != 0)
+        return acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
+    o->direct = o->existed && !S_ISREG(o->st.st_mode);
+    if (o->direct && want_stream) {
+        o->fd = open(o->target, O_WRONLY | O_CLOEXEC | O_NOCTTY);
+        if (o->fd < 0)
+            return acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
+        return ACBB_OK;
+    }
+    return open_temp(o, err);
+}
+
 acbb_status acbb_out_open(const char *path, acbb_out **out, FILE **f, acbb_error *err)
 {
     *out = NULL;
     if (f) *f = NULL;
-    if (!path || !path[0])
-        return acbb_error_set(err, ACBB_EINVAL, "output path is empty");
+    if (!path || !path[0]) return acbb_error_set(err, ACBB_EINVAL, "output path is empty");
     acbb_out *o = calloc(1, sizeof *o);
     if (!o) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    o->fd = -1;
     if (strcmp(path, "-") == 0) {
         o->is_stdout = o->direct = 1;
         o->target = strdup("standard output");
         o->f = stdout;
     } else {
-        o->target = resolve(path);
-        if (!o->target) { release(o); return acbb_error_set(err, ACBB_ENOMEM, "out of memory"); }
-        o->existed = stat(o->target, &o->st) == 0;
-        if (o->existed && S_ISDIR(o->st.st_mode)) {
+        acbb_status rc = open_target(o, path, f != NULL, err);
+        if (rc == ACBB_OK && f && !(o->f = fdopen(o->fd, "w")))
+            rc = acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
+        if (rc != ACBB_OK) {
+            if (o->fd >= 0) close(o->fd);
+            if (o->tmp) unlink(o->tmp);
             release(o);
-            return acbb_error_set(err, ACBB_EIO, "%s: is a directory", path);
+            return rc;
         }
-        if (o->existed && access(o->target, W_OK) != 0) {
-            int en = errno;
-            release(o);
-            return acbb_error_set(err, ACBB_EIO, "%s: not writable: %s", path, strerror(en));
-        }
-        o->direct = o->existed && !S_ISREG(o->st.st_mode);
-        acbb_status rc = ACBB_OK;
-        if (o->direct && f) {
-            o->f = fopen(o->target, "w");
-            if (!o->f) rc = acbb_error_set(err, ACBB_EIO, "%s: cannot open: %s", path, strerror(errno));
-            else if (f) { *f = o->f; *out = o; return ACBB_OK; }
-        }
-        if (rc == ACBB_OK) rc = open_temp(o, err);
-        if (rc != ACBB_OK) { release(o); return rc; }
+        if (o->f) o->fd = -1; /* the stream owns it now */
     }
     *out = o;
     if (f) *f = o->f;
     return ACBB_OK;
 }
 
-const char *acbb_out_temp_path(const acbb_out *o)
+int acbb_out_fd(const acbb_out *o)
 {
-    return o->tmp;
+    return o->f ? fileno(o->f) : o->fd;
 }
 
 static void sync_dir(const char *path)
@@ -156,39 +181,57 @@ static void sync_dir(const char *path)
 }
 
 /* A non-regular target written by an external program: copy the bytes in. */
-static int copy_into(const char *from, const char *to)
+static int copy_into(int from, const char *to)
 {
-    FILE *in = fopen(from, "rb"), *out = in ? fopen(to, "wb") : NULL;
+    int out = open(to, O_WRONLY | O_CLOEXEC | O_NOCTTY);
     char buf[65536];
-    size_t n;
-    int bad = !in || !out;
-    while (!bad && (n = fread(buf, 1, sizeof buf, in)) > 0)
-        bad = fwrite(buf, 1, n, out) != n;
-    if (in) fclose(in);
-    if (out && fclose(out) != 0) bad = 1;
+    ssize_t n;
+    int bad = out < 0 || lseek(from, 0, SEEK_SET) != 0;
+    while (!bad && (n = read(from, buf, sizeof buf)) > 0)
+        bad = write(out, buf, (size_t)n) != n;
+    if (out >= 0 && close(out) != 0) bad = 1;
     return bad ? -1 : 0;
+}
+
+/* Give the unnamed temporary file a name beside the target and rename it
+ * over the target. */
+static int link_and_rename(acbb_out *o, int fd)
+{
+    if (!o->tmp) {
+        char *dir, *base;
+        if (split(o->target, &dir, &base) != 0) return -1;
+        for (int attempt = 0; attempt < 100; attempt++) {
+            size_t len = strlen(dir) + strlen(base) + 40;
+            free(o->tmp);
+            o->tmp = malloc(len);
+            if (!o->tmp) break;
+            snprintf(o->tmp, len, "%s/.%s.acbb-%ld-%d", dir, base, (long)getpid(), attempt);
+            char proc[64];
+            snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
+            if (linkat(AT_FDCWD, proc, AT_FDCWD, o->tmp, AT_SYMLINK_FOLLOW) == 0) break;
+            if (errno != EEXIST) { free(o->tmp); o->tmp = NULL; break; }
+        }
+        free(dir);
+        free(base);
+        if (!o->tmp) return -1;
+    }
+    return rename(o->tmp, o->target);
 }
 
 acbb_status acbb_out_commit(acbb_out *o, acbb_error *err)
 {
-    int bad = 0, en = 0;
-    if (o->f) {
-        bad = fflush(o->f) != 0 || ferror(o->f);
-        if (!bad && !o->direct && fsync(fileno(o->f)) != 0) bad = 1;
-        en = bad ? (errno ? errno : EIO) : 0;
-        if (!o->is_stdout && fclose(o->f) != 0 && !bad) bad = 1, en = errno;
-        o->f = NULL;
+    int bad = 0, en = 0, fd = acbb_out_fd(o);
+    if (o->f) bad = fflush(o->f) != 0 || ferror(o->f);
+    if (!bad && !o->direct && fd >= 0 && fsync(fd) != 0) bad = 1;
+    en = bad ? (errno ? errno : EIO) : 0;
+    if (!bad && !o->is_stdout && !o->direct) {
+        if (link_and_rename(o, fd) != 0) bad = 1, en = errno ? errno : EIO;
+        else sync_dir(o->target);
+    } else if (!bad && o->direct && !o->f && fd >= 0) {
+        if (copy_into(fd, o->target) != 0) bad = 1, en = errno ? errno : EIO;
     }
-    if (!bad && o->tmp) {
-        if (o->direct) {
-            if (copy_into(o->tmp, o->target) != 0) bad = 1, en = errno ? errno : EIO;
-            unlink(o->tmp);
-        } else if (rename(o->tmp, o->target) != 0) {
-            bad = 1, en = errno;
-        } else {
-            sync_dir(o->target);
-        }
-    }
+    if (o->f && !o->is_stdout && fclose(o->f) != 0 && !bad) bad = 1, en = errno;
+    if (!o->f && fd >= 0) close(fd);
     acbb_status rc = ACBB_OK;
     if (bad) {
         if (o->tmp) unlink(o->tmp);
@@ -202,6 +245,7 @@ void acbb_out_abort(acbb_out *o)
 {
     if (!o) return;
     if (o->f && !o->is_stdout) fclose(o->f);
+    else if (!o->f && o->fd >= 0) close(o->fd);
     if (o->tmp) unlink(o->tmp);
     release(o);
 }

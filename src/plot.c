@@ -308,7 +308,8 @@ static acbb_status script_body(sbuf *b, const plot_kind_spec *k, const acbb_plot
 /* ---- running gnuplot ---- */
 
 typedef struct {
-    const char *file;     /* stdout goes to this file (opened by us, not gnuplot) */
+    bool to_file;         /* stdout goes to file_fd (a file we opened, not gnuplot) */
+    int file_fd;
     char *out;            /* captured stdout, NULL to discard */
     size_t out_cap, out_len;
     char err[2048];       /* the start of stderr, NUL-terminated */
@@ -453,7 +454,7 @@ static acbb_status exit_error(int wstatus, bool timed_out, const gp_io *io, acbb
 
 /* Start gnuplot with the three pipes (stdout to /dev/null unless captured). */
 static acbb_status spawn(const char *prog, int in[2], int out[2], int errp[2], pid_t *pid,
-                         const char *file, acbb_error *err)
+                         const gp_io *io, acbb_error *err)
 {
     posix_spawn_file_actions_t fa;
     int rc = posix_spawn_file_actions_init(&fa);
@@ -461,9 +462,10 @@ static acbb_status spawn(const char *prog, int in[2], int out[2], int errp[2], p
     /* dup2 clears FD_CLOEXEC on the copies; the CLOEXEC originals vanish at exec. */
     rc = posix_spawn_file_actions_adddup2(&fa, in[0], STDIN_FILENO);
     if (!rc && out[1] >= 0) rc = posix_spawn_file_actions_adddup2(&fa, out[1], STDOUT_FILENO);
+    else if (!rc && io->to_file)
+        rc = posix_spawn_file_actions_adddup2(&fa, io->file_fd, STDOUT_FILENO);
     else if (!rc)
-        rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, file ? file : "/dev/null",
-                                              O_WRONLY | O_TRUNC, 0);
+        rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     if (!rc) rc = posix_spawn_file_actions_adddup2(&fa, errp[1], STDERR_FILENO);
     char *argv[] = { (char *)prog, NULL };
     if (!rc) rc = posix_spawnp(pid, prog, &fa, NULL, argv, environ);
@@ -515,7 +517,7 @@ static acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err)
     }
     const char *prog = acbb_plot_program();
     pid_t pid = -1;
-    acbb_status st = spawn(prog, in, out, errp, &pid, io->file, err);
+    acbb_status st = spawn(prog, in, out, errp, &pid, io, err);
     close_fd(&in[0]);
     close_fd(&out[1]);
     close_fd(&errp[1]);
@@ -556,31 +558,30 @@ static void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
 
 /* An image is complete when it ends as its format ends: PNG with the IEND
  * chunk, SVG with </svg> (a full disk leaves neither). */
-static bool image_complete(const char *path, acbb_plot_format fmt)
+static bool image_complete(int fd, acbb_plot_format fmt)
 {
     static const unsigned char iend[8] = { 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
     unsigned char tail[64] = { 0 };
-    FILE *f = fopen(path, "rb");
-    if (!f) return false;
-    long n = 0;
-    if (fseek(f, -(long)sizeof tail, SEEK_END) != 0) rewind(f);
-    n = (long)fread(tail, 1, sizeof tail, f);
-    fclose(f);
+    struct stat st;
+    if (fstat(fd, &st) != 0 || st.st_size <= 0) return false;
+    off_t from = st.st_size > (off_t)sizeof tail ? st.st_size - (off_t)sizeof tail : 0;
+    ssize_t n = pread(fd, tail, sizeof tail, from);
+    if (n <= 0) return false;
     if (fmt == ACBB_PLOT_PNG) return n >= 8 && memcmp(tail + n - 8, iend, 8) == 0;
-    return n > 0 && memmem(tail, (size_t)n, "</svg>", 6) != NULL;
+    return memmem(tail, (size_t)n, "</svg>", 6) != NULL;
 }
 
-/* gnuplot writes the image to its stdout, which we open on the temporary
- * file: no file name ever reaches gnuplot's string scanner. */
+/* gnuplot writes the image to its stdout, which is our temporary file: no
+ * file name ever reaches gnuplot's string scanner. */
 static acbb_status render_file(const sbuf *b, acbb_plot_format fmt, const char *path,
                                acbb_error *err)
 {
     acbb_out *o = NULL;
     acbb_status st = acbb_out_open(path, &o, NULL, err);
     if (st != ACBB_OK) return st;
-    gp_io io = { .file = acbb_out_temp_path(o) };
+    gp_io io = { .to_file = true, .file_fd = acbb_out_fd(o) };
     st = run_gnuplot(b, &io, err);
-    if (st == ACBB_OK && !image_complete(io.file, fmt))
+    if (st == ACBB_OK && !image_complete(io.file_fd, fmt))
         st = acbb_error_set(err, ACBB_EIO, "gnuplot did not finish %s (disk full?); "
                             "the old file is kept", path);
     if (st != ACBB_OK) {

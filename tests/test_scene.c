@@ -706,7 +706,7 @@ static void test_save_failures(void)
     snprintf(path, sizeof path, "%s/target.ini", sub);
     mkdir(path, 0755);
     ok(acbb_scene_save(path, &s, &e) == ACBB_EIO, "save over a directory is ACBB_EIO");
-    snprintf(want, sizeof want, "%s: is a directory", path);
+    snprintf(want, sizeof want, "cannot write %s: it is a directory", path);
     ok(strcmp(e.msg, want) == 0, "directory target message: %s", e.msg);
     ok(count_temp_files(sub) == 0, "no temp file left after a failed save");
     struct stat st = { 0 };

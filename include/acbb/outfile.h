@@ -8,8 +8,10 @@
  *   itself stays.
  * - A non-regular target (a FIFO, a device, /dev/stdout) is written
  *   directly, never replaced; "-" means standard output.
- * - An external writer (gnuplot) writes to acbb_out_temp_path(); commit
- *   checks it is complete before it takes the target's place.
+ * - An external writer (gnuplot) writes to acbb_out_fd() (its stdout);
+ *   the caller checks the result before commit moves it into place.
+ * - The temporary file is unnamed (O_TMPFILE) where the file system allows:
+ *   a process killed mid-write leaves no stray file.
  *
  * Ownership: acbb_out_open returns an acbb_out that exactly one of
  * acbb_out_commit / acbb_out_abort releases, and a FILE* owned by it. */
@@ -26,9 +28,10 @@ typedef struct acbb_out acbb_out;
  * path and the reason (ACBB_EIO, ACBB_EINVAL). */
 acbb_status acbb_out_open(const char *path, acbb_out **out, FILE **f, acbb_error *err);
 
-/* The temporary file an external program should write (for a non-regular
- * target too: its bytes are copied into the target at commit). */
-const char *acbb_out_temp_path(const acbb_out *o);
+/* The descriptor an external program should write (the temporary file; for
+ * a non-regular target opened without a stream, its bytes are copied into
+ * the target at commit). Owned by o. */
+int acbb_out_fd(const acbb_out *o);
 
 /* Flush, fsync and move the result into place; on failure the target is
  * untouched and the temporary file removed. Releases o. */
