@@ -5,8 +5,10 @@
  * conduction, TC thermal contact, SP contact-spot constriction, BI ball
  * interior, CV convection, GF cage guide-gap film, ADV oil-air advection.
  * Bearing dimensions come from the scene; the housing, shaft segment and end
- * cap around the bearing are not in the seed paper [S] and are the ASSUMED
- * constants below (MODEL.md 8.1 "Geometry for the network").
+ * cap around the bearing are not in the seed paper [S]: they come from the
+ * scene's [surroundings], unset sizes scaled from the seed's ASSUMED 7008C
+ * rig (acbb_scene_surroundings; MODEL.md 8.1 "Geometry for the network",
+ * 13 "Surroundings"), and so do the boundary conditions of the cooled faces.
  *
  * Edges whose resistance depends on the running state (SP spots, the
  * speed-dependent CV films and the ADV edge) are recomputed by
@@ -17,20 +19,6 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 #include "acbb/network.h"
-
-/* ---- ASSUMED surroundings (MODEL.md 8.1, section 10 "housing / shaft /
- * cap geometry"), m. Offsets are taken from the bearing OD so the shoulder
- * and cap stay in contact with the outer-ring faces for other bearings. ---- */
-#define H_R_OUT 0.060          /* housing outer radius */
-#define H_LEN 0.045            /* housing length (centred on the bearing) */
-#define H_SH_T 0.010           /* rear shoulder wall thickness */
-#define H_SH_DR 0.004          /* shoulder protrudes 4 mm inside the OR OD (r 30 for 7008C) */
-#define H_X36 0.017            /* |x| of the end-wall body node 36 */
-#define CAP_R_OUT 0.060        /* front end cap outer radius */
-#define CAP_DR 0.006           /* cap inner radius = OD/2 - 6 mm (r 28 for 7008C) */
-#define CAP_T 0.010            /* cap thickness */
-#define SHAFT_LEN 0.045        /* shaft segment length carried by the network */
-#define CAGE_DR 0.0015         /* cage inner radius = d_m/2 - 1.5 mm (r 25.5) */
 
 #define R_OPEN 1e6             /* "no contact" spot / no-flow resistance, K/W */
 #define RE_DISC_TURB 2.4e5     /* rotating-disc laminar/turbulent transition (UNSURE) */
@@ -45,6 +33,10 @@ typedef struct {
     double r_sb;                                  /* shaft bore radius */
     double r_sh, r_hm, r_36;                      /* housing shoulder, mid, node 36 */
     double r_cap_in;
+    /* surroundings (acbb_surroundings): housing outer radius and length,
+     * shoulder thickness, |x| of node 36, cap outer radius and thickness,
+     * shaft segment length */
+    double r_h, L_h, t_sh, x36, r_cap_out, t_cap, L_s;
     double A_face_o;                              /* OR end-face annulus */
     double A_cap_cav;                             /* cap area wetted by the cavity */
     double V_h, V_or, V_ir, V_ball, V_cage, V_shaft, V_cap, V_cav;
@@ -93,14 +85,23 @@ static acbb_status geom_from_scene(const acbb_scene *s, net_geom *g, acbb_error 
     g->r_race_i = 0.5 * (g->dm - g->D);
     g->r_land_i = 0.5 * s->inner_land_diameter;
     g->r_mid_i = 0.5 * (g->r_b + g->r_race_i);
+    acbb_surroundings u;
+    acbb_scene_surroundings(s, &u);
+    g->r_h = 0.5 * u.housing_od;
+    g->L_h = u.housing_length;
+    g->t_sh = u.shoulder_thickness;
+    g->x36 = u.x_end_wall;
+    g->r_cap_out = 0.5 * u.cap_od;
+    g->t_cap = u.cap_thickness;
+    g->L_s = u.shaft_length;
     g->r_c = 0.5 * s->cage_diameter;
-    g->r_cin = 0.5 * g->dm - CAGE_DR;
+    g->r_cin = 0.5 * g->dm - u.cage_clearance;
     g->r_cmid = 0.5 * (g->r_c + g->r_cin);
-    g->r_sb = 0.5 * s->shaft_bore;
-    g->r_sh = g->r_o - H_SH_DR;
-    g->r_hm = 0.5 * (g->r_o + H_R_OUT);
-    g->r_36 = 0.5 * (g->r_sh + H_R_OUT);
-    g->r_cap_in = g->r_o - CAP_DR;
+    g->r_sb = 0.5 * u.shaft_bore;
+    g->r_sh = g->r_o - u.shoulder_inset;
+    g->r_hm = 0.5 * (g->r_o + g->r_h);
+    g->r_36 = 0.5 * (g->r_sh + g->r_h);
+    g->r_cap_in = g->r_o - u.cap_inset;
 
     if (!(g->Bw > 0 && g->Wc > 0 && g->D > 0 && g->dm > 0 && g->Z >= 1))
         return acbb_error_set(err, ACBB_EINVAL, "network: width, cage width, ball "
@@ -111,28 +112,37 @@ static acbb_status geom_from_scene(const acbb_scene *s, net_geom *g, acbb_error 
         return acbb_error_set(err, ACBB_EINVAL, "network: radii must increase shaft bore "
                               "< bore < IR raceway < IR land < cage ID (d_m/2 - 1.5 mm) < "
                               "cage OD < OR land < OR raceway < OD");
-    if (!(g->r_o + 0.005 < H_R_OUT && g->Bw + 2 * H_SH_T < H_LEN + 1e-12 &&
-          g->r_sb > 0))
-        return acbb_error_set(err, ACBB_EINVAL, "network: bearing does not fit the "
-                              "assumed housing (r = 60 mm, length 45 mm) or the shaft "
-                              "is not hollow");
+    if (!(g->r_land_i < g->r_cap_in && g->r_land_o < g->r_sh))
+        return acbb_error_set(err, ACBB_EINVAL, "network: the end cap bore (r = %.4g mm) must "
+                              "clear the inner ring land (r = %.4g mm) and the housing shoulder "
+                              "(r = %.4g mm) sit on the outer ring face (land r = %.4g mm)",
+                              g->r_cap_in * 1e3, g->r_land_i * 1e3, g->r_sh * 1e3,
+                              g->r_land_o * 1e3);
+    if (!(g->r_o < g->r_h && g->r_o < g->r_cap_out && g->Bw + 2 * fmax(g->t_sh, g->t_cap) <=
+          g->L_h * (1.0 + 1e-12) && g->Bw <= g->L_s && g->r_sb > 0))
+        return acbb_error_set(err, ACBB_EINVAL, "network: the surroundings do not hold the "
+                              "bearing (housing r = %.4g mm, length %.4g mm; cap r = %.4g mm, "
+                              "%.4g mm thick; shaft segment %.4g mm, bore r = %.4g mm; bearing "
+                              "r = %.4g mm, width %.4g mm)", g->r_h * 1e3, g->L_h * 1e3,
+                              g->r_cap_out * 1e3, g->t_cap * 1e3, g->L_s * 1e3, g->r_sb * 1e3,
+                              g->r_o * 1e3, g->Bw * 1e3);
 
     g->A_face_o = annulus(g->r_land_o, g->r_o);
     /* cap bore plus the part of its face over the cavity (inside the OR land) */
-    g->A_cap_cav = 2.0 * M_PI * g->r_cap_in * CAP_T;
+    g->A_cap_cav = 2.0 * M_PI * g->r_cap_in * g->t_cap;
     if (g->r_land_o > g->r_cap_in) g->A_cap_cav += annulus(g->r_cap_in, g->r_land_o);
     /* Capacities (MODEL.md 8.1 "Capacities"): ring sections from raceway
      * bottom to bore/OD (land ridges and groove neglected: they nearly
      * cancel), housing sleeve plus rear shoulder. */
-    g->V_h = annulus(g->r_o, H_R_OUT) * H_LEN + annulus(g->r_sh, g->r_o) * H_SH_T;
+    g->V_h = annulus(g->r_o, g->r_h) * g->L_h + annulus(g->r_sh, g->r_o) * g->t_sh;
     g->V_or = annulus(g->r_race_o, g->r_o) * g->Bw;
     g->V_ir = annulus(g->r_b, g->r_race_i) * g->Bw;
     g->V_ball = g->Z * M_PI * pow(g->D, 3) / 6.0;
     /* cage ring minus Z cylindrical pockets of diameter D */
     g->V_cage = annulus(g->r_cin, g->r_c) * g->Wc
                 - g->Z * M_PI * sq(0.5 * g->D) * (g->r_c - g->r_cin);
-    g->V_shaft = annulus(g->r_sb, g->r_b) * SHAFT_LEN;
-    g->V_cap = annulus(g->r_cap_in, CAP_R_OUT) * CAP_T;
+    g->V_shaft = annulus(g->r_sb, g->r_b) * g->L_s;
+    g->V_cap = annulus(g->r_cap_in, g->r_cap_out) * g->t_cap;
     g->V_cav = annulus(g->r_land_i, g->r_land_o) * g->Bw - g->V_ball - fmax(g->V_cage, 0.0);
     if (!(g->V_cage > 0 && g->V_cav > 0))
         return acbb_error_set(err, ACBB_EINVAL, "network: balls and cage do not fit "
@@ -159,6 +169,13 @@ static acbb_status check_scene(const acbb_scene *s, acbb_error *err)
           s->q_air >= 0 && s->q_oil >= 0))
         return acbb_error_set(err, ACBB_EINVAL, "network: air/oil properties must be "
                               "> 0 and flows >= 0");
+    const acbb_face_bc *bc[2] = {&s->bore_bc, &s->cap_bc};
+    for (int i = 0; i < 2; i++)
+        if (!(isfinite(bc[i]->dT) && (bc[i]->kind == ACBB_BC_FIXED ||
+              (bc[i]->kind == ACBB_BC_CONVECTIVE && bc[i]->h > 0 && isfinite(bc[i]->h)))))
+            return acbb_error_set(err, ACBB_EINVAL, "network: a convective %s needs a film "
+                                  "coefficient > 0 W/(m^2 K) and a finite coolant temperature",
+                                  i ? "end cap" : "shaft bore");
     if (!(isfinite(s->ambient_C) && s->contact_multiplier > 0 &&
           s->heat_partition >= 0 && s->heat_partition <= 1))
         return acbb_error_set(err, ACBB_EINVAL, "network: ambient must be finite, "
@@ -257,9 +274,9 @@ static void films_at(const net_geom *g, const acbb_scene *s, const net_fluid *f,
      * (ASSUMED), with their axial width as the plate length */
     h->cage = fmax(h_plate(f, 0.5 * omega_m * g->r_c, g->Wc), hn);
     h->or_land = fmax(h_plate(f, 0.5 * omega_m * g->r_land_o, g->Bw), hn);
-    h->h_bore = fmax(h_plate(f, 0.5 * omega_m * g->r_o, 0.5 * (H_LEN - g->Bw)), hn);
-    h->h_shoulder = fmax(h_plate(f, 0.5 * omega_m * g->r_sh, H_SH_T), hn);
-    h->cap = fmax(h_plate(f, 0.5 * omega_m * g->r_cap_in, CAP_T), hn);
+    h->h_bore = fmax(h_plate(f, 0.5 * omega_m * g->r_o, 0.5 * (g->L_h - g->Bw)), hn);
+    h->h_shoulder = fmax(h_plate(f, 0.5 * omega_m * g->r_sh, g->t_sh), hn);
+    h->cap = fmax(h_plate(f, 0.5 * omega_m * g->r_cap_in, g->t_cap), hn);
 }
 
 /* ---- contact spots (MODEL.md 8.1 SP, [Y]) ---- */
@@ -303,9 +320,9 @@ static const char *const names46[46] = {
     "45 outer contact",
 };
 
-static const char *const names7[7] = {
+static const char *const names7[8] = {
     "0 ambient", "1 housing", "2 outer ring", "3 balls and cage", "4 inner ring",
-    "5 shaft", "6 oil-air",
+    "5 shaft", "6 oil-air", "7 shaft bore coolant",
 };
 
 /* ---- the state-dependent edges, in the order shared by build and update ---- */
@@ -320,8 +337,8 @@ static int cv_edges46(const net_geom *g, const acbb_scene *s, const net_fluid *f
     double A_disc = annulus(g->r_b, g->r_land_i);
     double r_ball_half = 1.0 / (2.0 * h.ball * A_ball);   /* 15-16, 16-43 split */
     int n = 0;
-    e[n++] = (net_edge){34, 43, r_film(h.h_bore, 2 * M_PI * g->r_o * 0.5 * (H_LEN - g->Bw))};
-    e[n++] = (net_edge){35, 43, r_film(h.h_shoulder, 2 * M_PI * g->r_sh * H_SH_T)};
+    e[n++] = (net_edge){34, 43, r_film(h.h_bore, 2 * M_PI * g->r_o * 0.5 * (g->L_h - g->Bw))};
+    e[n++] = (net_edge){35, 43, r_film(h.h_shoulder, 2 * M_PI * g->r_sh * g->t_sh)};
     e[n++] = (net_edge){10, 43, r_film(h.or_land, 2 * M_PI * g->r_land_o * g->Bw)};
     e[n++] = (net_edge){39, 43, r_film(h.cap, g->A_cap_cav)};
     e[n++] = (net_edge){15, 16, r_ball_half};
@@ -393,45 +410,70 @@ static void set_avg(int *dst, int *n, const int *src, int count)
     *n = count;
 }
 
-static void build46(net_builder *b, const acbb_scene *s, const net_geom *g)
+/* Series film of a convective face (0 for a fixed one): the face node then
+ * stands for the coolant, held at ambient + dT like a fixed face, and the
+ * algebraic surface node between conduction and film is eliminated
+ * exactly (MODEL.md 8.1 CV, 13 "Surroundings"). */
+static double r_face(const acbb_face_bc *bc, double A)
 {
-    acbb_network *nw = b->nw;
-    const double kh = s->housing.k, kr = s->ring.k, ks = s->shaft.k, kc = s->cage.k;
-    const double hB = 0.5 * g->Bw, qB = 0.25 * g->Bw;     /* half / quarter width */
-    const double A_ho = annulus(g->r_hm, H_R_OUT), A_hi = annulus(g->r_o, g->r_hm);
-    const double A_or = annulus(g->r_race_o, g->r_o), A_ir = annulus(g->r_b, g->r_race_i);
-    const double A_sh = annulus(g->r_sb, g->r_b);
-    const double r_cap1 = g->r_cap_in + (CAP_R_OUT - g->r_cap_in) / 3.0;
-    const double r_cap2 = g->r_cap_in + 2.0 * (CAP_R_OUT - g->r_cap_in) / 3.0;
+    return bc->kind == ACBB_BC_CONVECTIVE ? r_film(bc->h, A) : 0.0;
+}
+
+/* Fixed nodes: ambient, the shaft bore (28, 30) and the cap's outer face
+ * (38, 40, 42) at their coolant temperature ([S] section 3: ambient), the
+ * housing exterior (1, 3, 32, 33) when it is fixed; else its natural
+ * convection to ambient. */
+static void boundaries46(net_builder *b, const acbb_scene *s, const net_geom *g)
+{
     const double hn = s->h_natural;
+    fix(b, 0, s->ambient_C);
+    fix(b, 28, s->ambient_C + s->bore_bc.dT);
+    fix(b, 30, s->ambient_C + s->bore_bc.dT);
+    for (int n = 38; n <= 42; n += 2) fix(b, n, s->ambient_C + s->cap_bc.dT);
+    if (s->housing_bc == ACBB_BC_FIXED) {
+        static const int ext[] = {1, 3, 32, 33};
+        for (int i = 0; i < 4; i++) fix(b, ext[i], s->ambient_C);
+        return;
+    }
+    add(b, 0, 1, r_film(hn, 2 * M_PI * g->r_h * 0.5 * g->L_h));
+    add(b, 0, 3, r_film(hn, 2 * M_PI * g->r_h * 0.5 * g->L_h));
+    add(b, 0, 32, r_film(hn, annulus(g->r_o, g->r_h)));
+    add(b, 0, 33, r_film(hn, annulus(g->r_o, g->r_h)));
+}
 
-    static const int fixed46[] = {0, 28, 30, 38, 40, 42};
-    for (size_t i = 0; i < sizeof fixed46 / sizeof fixed46[0]; i++)
-        fix(b, fixed46[i], s->ambient_C);
-
-    /* housing <-> ambient: natural convection */
-    add(b, 0, 1, r_film(hn, 2 * M_PI * H_R_OUT * 0.5 * H_LEN));
-    add(b, 0, 3, r_film(hn, 2 * M_PI * H_R_OUT * 0.5 * H_LEN));
-    add(b, 0, 32, r_film(hn, annulus(g->r_o, H_R_OUT)));
-    add(b, 0, 33, r_film(hn, annulus(g->r_o, H_R_OUT)));
-    /* housing body: outer (r_hm..60) and inner (r_o..r_hm) half annuli */
-    add(b, 1, 2, r_rc(g->r_o, H_R_OUT, kh, 0.5 * H_LEN));
-    add(b, 3, 4, r_rc(g->r_o, H_R_OUT, kh, 0.5 * H_LEN));
-    add(b, 1, 3, r_ac(0.5 * H_LEN, kh, A_ho));
+/* Housing body: outer (r_hm..r_h) and inner (r_o..r_hm) half annuli, rear
+ * shoulder wall; housing <-> OR: fit halves and the shoulder face. */
+static void housing46(net_builder *b, const acbb_scene *s, const net_geom *g)
+{
+    const double kh = s->housing.k, hB = 0.5 * g->Bw, qB = 0.25 * g->Bw, L = g->L_h;
+    const double A_ho = annulus(g->r_hm, g->r_h), A_hi = annulus(g->r_o, g->r_hm);
+    add(b, 1, 2, r_rc(g->r_o, g->r_h, kh, 0.5 * L));
+    add(b, 3, 4, r_rc(g->r_o, g->r_h, kh, 0.5 * L));
+    add(b, 1, 3, r_ac(0.5 * L, kh, A_ho));
     add(b, 2, 4, r_ac(hB, kh, A_hi));
-    add(b, 2, 34, r_ac(0.5 * (hB + 0.5 * H_LEN) - qB, kh, A_hi));
-    add(b, 1, 33, r_ac(0.25 * H_LEN, kh, A_ho));
-    add(b, 34, 33, r_ac(0.5 * H_LEN - 0.5 * (hB + 0.5 * H_LEN), kh, A_hi));
-    add(b, 3, 36, r_rc(g->r_36, H_R_OUT, kh, H_SH_T));
-    add(b, 4, 36, r_ac(H_X36 - qB, kh, A_hi));
-    add(b, 36, 31, r_rc(0.5 * (g->r_o + g->r_race_o), g->r_36, kh, H_SH_T));
-    add(b, 36, 32, r_ac(0.5 * H_LEN - H_X36, kh, annulus(g->r_sh, H_R_OUT)));
-    add(b, 36, 35, r_rc(g->r_sh, g->r_36, kh, H_SH_T));
-    /* housing <-> OR: fit halves and the shoulder face */
+    add(b, 2, 34, r_ac(0.5 * (hB + 0.5 * L) - qB, kh, A_hi));
+    add(b, 1, 33, r_ac(0.25 * L, kh, A_ho));
+    add(b, 34, 33, r_ac(0.5 * L - 0.5 * (hB + 0.5 * L), kh, A_hi));
+    add(b, 3, 36, r_rc(g->r_36, g->r_h, kh, g->t_sh));
+    add(b, 4, 36, r_ac(g->x36 - qB, kh, A_hi));
+    add(b, 36, 31, r_rc(0.5 * (g->r_o + g->r_race_o), g->r_36, kh, g->t_sh));
+    add(b, 36, 32, r_ac(0.5 * L - g->x36, kh, annulus(g->r_sh, g->r_h)));
+    add(b, 36, 35, r_rc(g->r_sh, g->r_36, kh, g->t_sh));
     add(b, 2, 5, r_film(s->h_fit_outer, M_PI * 2 * g->r_o * hB));
     add(b, 4, 8, r_film(s->h_fit_outer, M_PI * 2 * g->r_o * hB));
     add(b, 31, 11, r_film(s->h_face, g->A_face_o));
-    /* OR body */
+}
+
+/* OR body, cage guide film, OR <-> cap face, and the cap (housing
+ * material, ASSUMED) whose outer face is split in three annuli. */
+static void outer46(net_builder *b, const acbb_scene *s, const net_geom *g)
+{
+    const double kh = s->housing.k, kr = s->ring.k, hB = 0.5 * g->Bw, qB = 0.25 * g->Bw;
+    const double A_or = annulus(g->r_race_o, g->r_o), hT = 0.5 * g->t_cap;
+    const double r_cap1 = g->r_cap_in + (g->r_cap_out - g->r_cap_in) / 3.0;
+    const double r_cap2 = g->r_cap_in + 2.0 * (g->r_cap_out - g->r_cap_in) / 3.0;
+    const double A1 = annulus(g->r_cap_in, r_cap1), A2 = annulus(r_cap1, r_cap2),
+                 A3 = annulus(r_cap2, g->r_cap_out);
     add(b, 5, 6, r_rc(g->r_mid_o, g->r_o, kr, hB));
     add(b, 8, 9, r_rc(g->r_mid_o, g->r_o, kr, hB));
     add(b, 6, 7, r_rc(g->r_race_o, g->r_mid_o, kr, hB));
@@ -441,25 +483,30 @@ static void build46(net_builder *b, const acbb_scene *s, const net_geom *g)
     add(b, 6, 9, r_ac(hB, kr, A_or));
     add(b, 6, 12, r_ac(qB, kr, A_or));
     add(b, 9, 11, r_ac(qB, kr, A_or));
-    /* OR land <-> cage guide film, OR <-> cap face */
     add(b, 10, 18, r_rc(g->r_c, g->r_land_o, s->mix_k, g->Wc));
     add(b, 12, 37, r_film(s->h_face, g->A_face_o));
-    /* cap (housing material, ASSUMED); outer face split in three annuli */
-    add(b, 37, 41, r_ac(0.5 * CAP_T, kh, g->A_face_o));
-    add(b, 39, 41, r_ac(0.5 * CAP_T, kh, g->A_cap_cav));
-    add(b, 41, 38, r_ac(0.5 * CAP_T, kh, annulus(g->r_cap_in, r_cap1)));
-    add(b, 41, 40, r_ac(0.5 * CAP_T, kh, annulus(r_cap1, r_cap2)));
-    add(b, 41, 42, r_ac(0.5 * CAP_T, kh, annulus(r_cap2, CAP_R_OUT)));
-    /* contacts (open until the first update) and ball interior */
+    add(b, 37, 41, r_ac(hT, kh, g->A_face_o));
+    add(b, 39, 41, r_ac(hT, kh, g->A_cap_cav));
+    add(b, 41, 38, r_ac(hT, kh, A1) + r_face(&s->cap_bc, A1));
+    add(b, 41, 40, r_ac(hT, kh, A2) + r_face(&s->cap_bc, A2));
+    add(b, 41, 42, r_ac(hT, kh, A3) + r_face(&s->cap_bc, A3));
+}
+
+/* Contacts (open until the first update), ball interior, cage body, IR
+ * body, IR <-> shaft fit halves and the shaft segment to its bore. */
+static void inner46(net_builder *b, const acbb_scene *s, const net_geom *g)
+{
+    acbb_network *nw = b->nw;
+    const double kr = s->ring.k, ks = s->shaft.k, hB = 0.5 * g->Bw, qB = 0.25 * g->Bw;
+    const double A_ir = annulus(g->r_b, g->r_race_i), A_sh = annulus(g->r_sb, g->r_b);
+    const double A_bore = 2 * M_PI * g->r_sb * 0.5 * g->L_s;   /* per half */
     nw->edge_sp_race_o = add(b, 7, 45, R_OPEN);
     nw->edge_sp_ball_o = add(b, 45, 13, R_OPEN);
     nw->edge_sp_race_i = add(b, 19, 44, R_OPEN);
     nw->edge_sp_ball_i = add(b, 44, 17, R_OPEN);
     add(b, 13, 15, r_bi(g, s));
     add(b, 17, 15, r_bi(g, s));
-    /* cage body */
-    add(b, 14, 18, r_rc(g->r_cmid, g->r_c, kc, g->Wc));
-    /* IR body */
+    add(b, 14, 18, r_rc(g->r_cmid, g->r_c, s->cage.k, g->Wc));
     add(b, 19, 20, r_rc(g->r_mid_i, g->r_race_i, kr, hB));
     add(b, 19, 23, r_rc(g->r_mid_i, g->r_race_i, kr, hB));
     add(b, 20, 21, r_rc(g->r_b, g->r_mid_i, kr, hB));
@@ -469,21 +516,17 @@ static void build46(net_builder *b, const acbb_scene *s, const net_geom *g)
     add(b, 20, 23, r_ac(hB, kr, A_ir));
     add(b, 20, 25, r_ac(qB, kr, A_ir));
     add(b, 23, 26, r_ac(qB, kr, A_ir));
-    /* IR <-> shaft fit halves; shaft: bore at ambient [S] section 3 */
     add(b, 21, 27, r_film(s->h_fit_inner, M_PI * s->bore * hB));
     add(b, 24, 29, r_film(s->h_fit_inner, M_PI * s->bore * hB));
-    add(b, 27, 28, r_rc(g->r_sb, g->r_b, ks, 0.5 * SHAFT_LEN));
-    add(b, 29, 30, r_rc(g->r_sb, g->r_b, ks, 0.5 * SHAFT_LEN));
+    add(b, 27, 28, r_rc(g->r_sb, g->r_b, ks, 0.5 * g->L_s) + r_face(&s->bore_bc, A_bore));
+    add(b, 29, 30, r_rc(g->r_sb, g->r_b, ks, 0.5 * g->L_s) + r_face(&s->bore_bc, A_bore));
     add(b, 27, 29, r_ac(hB, ks, A_sh));
+}
 
-    /* speed-dependent films and the advection edge, at standstill */
-    net_fluid f;
-    net_edge cv[16];
-    fluid_at(s, s->ambient_C, &f);
-    nw->n_edge_cv = cv_edges46(g, s, &f, 0.0, 0.0, cv);
-    for (int i = 0; i < nw->n_edge_cv; i++) nw->edge_cv[i] = add(b, cv[i].a, cv[i].b, cv[i].R);
-
-    /* capacities C = rho cp V */
+/* Capacities C = rho cp V (MODEL.md 8.1 "Capacities"). */
+static void capacities46(net_builder *b, const acbb_scene *s, const net_geom *g,
+                         const net_fluid *f)
+{
     double ch = s->housing.rho * s->housing.cp, cr = s->ring.rho * s->ring.cp;
     static const int housing_nodes[] = {1, 2, 3, 4, 36};
     for (int i = 0; i < 5; i++) cap(b, housing_nodes[i], ch * g->V_h / 5.0);
@@ -496,9 +539,14 @@ static void build46(net_builder *b, const acbb_scene *s, const net_geom *g)
     cap(b, 27, 0.5 * s->shaft.rho * s->shaft.cp * g->V_shaft);
     cap(b, 29, 0.5 * s->shaft.rho * s->shaft.cp * g->V_shaft);
     cap(b, 41, ch * g->V_cap);
-    cap(b, 16, 0.5 * f.rho_cp * g->V_cav);
-    cap(b, 43, 0.5 * f.rho_cp * g->V_cav);
+    cap(b, 16, 0.5 * f->rho_cp * g->V_cav);
+    cap(b, 43, 0.5 * f->rho_cp * g->V_cav);
+}
 
+/* Key nodes, heat destinations, part averages (MODEL.md 7 table) and
+ * lubricant inlet nodes (MODEL.md 5). */
+static void roles46(acbb_network *nw)
+{
     nw->names = names46;
     nw->node_ambient = 0;
     nw->node_outer_ring = 5;
@@ -512,23 +560,42 @@ static void build46(net_builder *b, const acbb_scene *s, const net_geom *g)
     nw->heat_outer = 45;
     nw->heat_spin = 15;
     nw->heat_drag = 43;
-    /* MODEL.md 7 table */
     set_avg(nw->avg_ball, &nw->n_avg_ball, (const int[]){15}, 1);
     set_avg(nw->avg_inner, &nw->n_avg_inner, (const int[]){19, 20, 22, 23}, 4);
     set_avg(nw->avg_shaft, &nw->n_avg_shaft, (const int[]){27, 29}, 2);
     set_avg(nw->avg_housing, &nw->n_avg_housing, (const int[]){1, 2, 3, 4}, 4);
     set_avg(nw->avg_outer, &nw->n_avg_outer, (const int[]){5, 6, 8, 9}, 4);
-    /* MODEL.md 5 inlet temperatures */
     nw->inlet_inner[0] = 19;
     nw->inlet_inner[1] = 17;
     nw->inlet_outer[0] = 7;
     nw->inlet_outer[1] = 13;
 }
 
+/* 46-node network (MODEL.md 8.1): fixed edges in the seed order, then the
+ * speed-dependent films and the advection edge at standstill. */
+static void build46(net_builder *b, const acbb_scene *s, const net_geom *g)
+{
+    boundaries46(b, s, g);
+    housing46(b, s, g);
+    outer46(b, s, g);
+    inner46(b, s, g);
+    net_fluid f;
+    net_edge cv[16];
+    fluid_at(s, s->ambient_C, &f);
+    b->nw->n_edge_cv = cv_edges46(g, s, &f, 0.0, 0.0, cv);
+    for (int i = 0; i < b->nw->n_edge_cv; i++)
+        b->nw->edge_cv[i] = add(b, cv[i].a, cv[i].b, cv[i].R);
+    capacities46(b, s, g, &f);
+    roles46(b->nw);
+}
+
 /* 7-node network (MODEL.md 8.3). Node 5 (shaft) stays free: its edge 5-0 is
- * pure conduction to the shaft bore, and the bore surface is at ambient as
- * [S] assumes for nodes 28/30 ("thorough" bore convection). This keeps the
- * shaft expansion of MODEL.md 7 alive, unlike a Dirichlet node 5. */
+ * conduction to the shaft bore, and the bore surface is at ambient as [S]
+ * assumes for nodes 28/30 ("thorough" bore convection) unless
+ * surroundings.shaft_bore is convective (film in series) or its coolant is
+ * not at ambient (an eighth, fixed node). This keeps the shaft expansion of
+ * MODEL.md 7 alive, unlike a Dirichlet node 5. The 7-node network has no
+ * end cap: the cap keys do not apply to it. */
 static void build7(net_builder *b, const acbb_scene *s, const net_geom *g)
 {
     acbb_network *nw = b->nw;
@@ -537,10 +604,13 @@ static void build7(net_builder *b, const acbb_scene *s, const net_geom *g)
 
     fix(b, 0, s->ambient_C);
     /* housing exterior: outer cylinder and both end annuli */
-    add(b, 0, 1, r_film(s->h_natural, 2 * M_PI * H_R_OUT * H_LEN
-                                      + 2.0 * annulus(g->r_o, H_R_OUT)));
+    if (s->housing_bc == ACBB_BC_FIXED)
+        fix(b, 1, s->ambient_C);
+    else
+        add(b, 0, 1, r_film(s->h_natural, 2 * M_PI * g->r_h * g->L_h
+                                          + 2.0 * annulus(g->r_o, g->r_h)));
     /* housing mid radius -> bore, fit, OR OD -> OR centroid (series) */
-    add(b, 1, 2, r_rc(g->r_o, g->r_hm, kh, H_LEN)
+    add(b, 1, 2, r_rc(g->r_o, g->r_hm, kh, g->L_h)
                  + r_film(s->h_fit_outer, 2 * M_PI * g->r_o * g->Bw)
                  + r_rc(g->r_mid_o, g->r_o, kr, g->Bw));
     nw->edge_sp_race_o = add(b, 2, 3, R_OPEN);
@@ -548,8 +618,13 @@ static void build7(net_builder *b, const acbb_scene *s, const net_geom *g)
     nw->edge_sp_ball_o = nw->edge_sp_ball_i = -1;   /* lumped into the edges above */
     add(b, 4, 5, r_rc(g->r_b, g->r_mid_i, kr, g->Bw)
                  + r_film(s->h_fit_inner, 2 * M_PI * g->r_b * g->Bw)
-                 + r_rc(r_smid, g->r_b, ks, SHAFT_LEN));
-    add(b, 5, 0, r_rc(g->r_sb, r_smid, ks, SHAFT_LEN));
+                 + r_rc(r_smid, g->r_b, ks, g->L_s));
+    /* shaft -> its bore, plus the bore film when convective; a coolant
+     * other than ambient is its own fixed node 7 */
+    int sink = nw->n > 7 ? 7 : 0;
+    if (sink) fix(b, sink, s->ambient_C + s->bore_bc.dT);
+    add(b, 5, sink, r_rc(g->r_sb, r_smid, ks, g->L_s)
+                    + r_face(&s->bore_bc, 2 * M_PI * g->r_sb * g->L_s));
 
     net_fluid f;
     net_edge cv[16];
@@ -602,7 +677,7 @@ acbb_status acbb_network_build(const acbb_scene *s, acbb_network *out, acbb_erro
     if (st != ACBB_OK) return st;
 
     out->kind = s->network;
-    out->n = s->network == ACBB_NET_46 ? 46 : 7;
+    out->n = s->network == ACBB_NET_46 ? 46 : 7 + (s->bore_bc.dT != 0.0);
     out->net = acbb_tnet_new(out->n);
     if (!out->net) return acbb_error_set(err, ACBB_ENOMEM, "network: out of memory");
     net_builder b = {out, ACBB_OK};

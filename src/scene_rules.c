@@ -207,6 +207,80 @@ static acbb_status rule_shaft_bore(const acbb_scene *s, acbb_error *err)
                           show(s, "mounting", "shaft_bore_mm", a), show(s, "bearing", "bore_mm", b));
 }
 
+/* ---- surroundings (MODEL.md 8.1, 13) ---- */
+
+/* An unset (0) size is the seed rig's value scaled by dim / ref; ref is
+ * written as the schema computes a preset value (mm * 1e-3) so the 7008C
+ * scene scales by exactly 1 and keeps the seed's network bit for bit. */
+static double scaled(double set, double seed_m, double dim, double ref_mm)
+{
+    return set > 0.0 ? set : seed_m * (dim / (ref_mm * 1e-3));
+}
+
+void acbb_scene_surroundings(const acbb_scene *s, acbb_surroundings *o)
+{
+    /* outer-ring face height (land to OD); the seed's is 4.95 mm */
+    double face = 0.5 * s->outer_diameter - 0.5 * s->outer_land_diameter;
+    double face0 = 0.5 * (68 * 1e-3) - 0.5 * (58.1 * 1e-3);
+    o->housing_od = scaled(s->housing_od, 0.120, s->outer_diameter, 68);
+    o->housing_length = scaled(s->housing_length, 0.045, s->width, 15);
+    o->shaft_bore = scaled(s->shaft_bore, 0.025, s->bore, 40);
+    o->shaft_length = scaled(s->shaft_length, 0.045, s->width, 15);
+    o->cap_od = s->cap_od > 0.0 ? s->cap_od : o->housing_od;
+    o->cap_thickness = scaled(s->cap_thickness, 0.010, s->width, 15);
+    o->shoulder_thickness = scaled(0.0, 0.010, s->width, 15);
+    o->shoulder_inset = 0.004 * (face / face0);
+    o->cap_inset = 0.006 * (face / face0);
+    o->x_end_wall = 0.017 * (o->housing_length / 0.045);
+    o->cage_clearance = scaled(0.0, 0.0015, s->ball_diameter, 6.35);
+}
+
+/* The housing, cap and shaft segment must hold the bearing; a coolant must
+ * stay below the runaway limit. */
+static acbb_status rule_surroundings(const acbb_scene *s, acbb_error *err)
+{
+    acbb_surroundings u;
+    acbb_scene_surroundings(s, &u);
+    char a[40], b[40];
+    const char *od = show(s, "bearing", "outer_diameter_mm", b);
+    if (!(u.housing_od > s->outer_diameter))
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_outer_diameter_mm = %s "
+                              "with bearing.outer_diameter_mm = %s: the housing must be larger "
+                              "than the bearing (0 = derive %.4g mm)",
+                              show(s, "surroundings", "housing_outer_diameter_mm", a), od,
+                              0.120e3 * s->outer_diameter / (68 * 1e-3));
+    if (!(u.cap_od > s->outer_diameter))
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.cap_outer_diameter_mm = %s with "
+                              "bearing.outer_diameter_mm = %s: the end cap must cover the outer "
+                              "ring face and reach the housing (> the bearing OD; 0 = the housing "
+                              "outer diameter)", show(s, "surroundings", "cap_outer_diameter_mm", a), od);
+    double need = s->width + 2.0 * fmax(u.shoulder_thickness, u.cap_thickness);
+    if (u.housing_length < need * (1.0 - 1e-12))
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_length_mm = %s (%.4g mm "
+                              "used) with bearing.width_mm = %s: the housing must hold the bearing "
+                              "and, each side, the rear shoulder (%.4g mm) or end cap (%.4g mm): "
+                              "length >= %.4g mm",
+                              show(s, "surroundings", "housing_length_mm", a), u.housing_length * 1e3,
+                              show(s, "bearing", "width_mm", b), u.shoulder_thickness * 1e3,
+                              u.cap_thickness * 1e3, need * 1e3);
+    if (u.shaft_length < s->width)
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.shaft_length_mm = %s with "
+                              "bearing.width_mm = %s: the shaft segment must be at least as long "
+                              "as the inner ring", show(s, "surroundings", "shaft_length_mm", a),
+                              show(s, "bearing", "width_mm", b));
+    const acbb_face_bc *bc[2] = {&s->bore_bc, &s->cap_bc};
+    static const char *const key[2] = {"shaft_bore_coolant_dT_K", "cap_coolant_dT_K"};
+    for (int i = 0; i < 2; i++)
+        if (s->ambient_C + bc[i]->dT >= s->temp_limit_C)
+            return acbb_error_set(err, ACBB_EINVAL, "surroundings.%s = %s with "
+                                  "operating.ambient_C = %s: the coolant (%.4g C) must be below "
+                                  "thermal.temp_limit_C = %.4g C", key[i],
+                                  show(s, "surroundings", key[i], a),
+                                  show(s, "operating", "ambient_C", b),
+                                  s->ambient_C + bc[i]->dT, s->temp_limit_C);
+    return ACBB_OK;
+}
+
 /* Oil thins when heated: the Walther law needs nu100 < nu40 (MODEL.md section 5). */
 static acbb_status rule_viscosity(const acbb_scene *s, acbb_error *err)
 {
@@ -277,7 +351,7 @@ static const rule_fn k_rules[] = {
     rule_ranges, rule_inner_groove, rule_outer_groove, rule_balls_fit, rule_inner_ring,
     rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
-    rule_preload, rule_radial_load,
+    rule_preload, rule_surroundings, rule_radial_load,
 };
 
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)

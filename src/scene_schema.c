@@ -29,6 +29,7 @@ _Static_assert(sizeof(acbb_hyst_axis) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_network_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_preload_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_thermal_mode) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_bc_kind) == sizeof(int), "enum size");
 
 /* Enum choices, in the order of the C enum values in scene.h. */
 static const char *const k_model[] = {"static", "quasi-static", "quasi-dynamic", "dynamic", NULL};
@@ -41,6 +42,7 @@ static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
 static const char *const k_preload[] = {"force", "displacement", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
+static const char *const k_bc[] = {"fixed", "convective", NULL};
 
 #define LO_OPEN(ends) ((ends) == OC || (ends) == OO)
 #define HI_OPEN(ends) ((ends) == CO || (ends) == OO)
@@ -72,6 +74,16 @@ static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
          "thermal conductivity of the " #part), \
     REAL("materials", #part "_expansion_ppm_K", "ppm/K", part.chi, 1e-6, vchi, CC, 0, 100, \
          "linear thermal expansion coefficient of the " #part)
+
+/* Three keys per cooled face of [surroundings] (MODEL.md 8.1, 13); the
+ * seed holds each face at ambient. */
+#define FACE_BC(name, member, what, h_def) \
+    ENUM("surroundings", name, member.kind, k_bc, ACBB_BC_FIXED, \
+         what ": fixed at the coolant temperature (seed) or convective"), \
+    REAL("surroundings", name "_h_W_m2K", "W/(m^2 K)", member.h, 1.0, h_def, OC, 0, 1e10, \
+         "film coefficient of a convective " what), \
+    REAL("surroundings", name "_coolant_dT_K", "K", member.dT, 1.0, 0, CC, -100, 200, \
+         what " coolant temperature minus operating.ambient_C (0: at ambient)")
 
 /* The schema. Defaults: MODEL.md section 10 (the 7008C case of the seed). */
 const acbb_sfield acbb_sf_table[] = {
@@ -152,8 +164,8 @@ const acbb_sfield acbb_sf_table[] = {
     ENUM("lubricant", "traction_model", traction, k_traction, ACBB_TRACTION_EYRING_CAP,
          "film traction law (MODEL.md section 5)"),
 
-    REAL("mounting", "shaft_bore_mm", "mm", shaft_bore, 1e-3, 25, CC, 0, 2000,
-         "hollow-shaft bore d_s (0 = solid shaft)"),
+    REAL("mounting", "shaft_bore_mm", "mm", shaft_bore, 1e-3, 0, CC, 0, 2000,
+         "hollow-shaft bore d_s (0 = derive: 25/40 x bore, the seed's 25 mm for 7008C)"),
     REAL("mounting", "h_fit_outer_W_m2K", "W/(m^2 K)", h_fit_outer, 1.0, 5000, OC, 0, 1e7,
          "outer ring / housing contact conductance"),
     REAL("mounting", "h_fit_inner_W_m2K", "W/(m^2 K)", h_fit_inner, 1.0, 20000, OC, 0, 1e7,
@@ -166,6 +178,23 @@ const acbb_sfield acbb_sf_table[] = {
          "force: axial load applied (dx free); displacement: dx fixed by preload_N"),
     REAL("mounting", "preload_N", "N", preload_force, 1.0, 300, CC, 0, 1e6,
          "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
+
+    /* [surroundings] (MODEL.md 8.1, 13): 0 = derive from the bearing by
+     * scaling the seed's 7008C rig (acbb_scene_surroundings in scene.h) */
+    REAL("surroundings", "housing_outer_diameter_mm", "mm", housing_od, 1e-3, 0, CC, 0, 10000,
+         "housing outer diameter (0 = derive: 120/68 x bearing OD; material: materials.housing_*)"),
+    REAL("surroundings", "housing_length_mm", "mm", housing_length, 1e-3, 0, CC, 0, 10000,
+         "housing length, centred on the bearing (0 = derive: 3 x width)"),
+    ENUM("surroundings", "housing_exterior", housing_bc, k_bc, ACBB_BC_CONVECTIVE,
+         "housing exterior: convective (mounting.h_natural_W_m2K to ambient) or fixed at ambient"),
+    REAL("surroundings", "shaft_length_mm", "mm", shaft_length, 1e-3, 0, CC, 0, 10000,
+         "shaft segment carried by the network (0 = derive: 3 x width)"),
+    FACE_BC("shaft_bore", bore_bc, "shaft bore", 500),
+    REAL("surroundings", "cap_outer_diameter_mm", "mm", cap_od, 1e-3, 0, CC, 0, 10000,
+         "end cap outer diameter (0 = derive: the housing outer diameter)"),
+    REAL("surroundings", "cap_thickness_mm", "mm", cap_thickness, 1e-3, 0, CC, 0, 1000,
+         "end cap thickness (0 = derive: 2/3 x width)"),
+    FACE_BC("cap", cap_bc, "end cap outer face", 10),
 
     REAL("operating", "inner_speed_rpm", "rpm", inner_speed, ACBB_RPM, 15000, CC, 0, 100000,
          "inner ring speed"),

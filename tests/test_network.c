@@ -61,6 +61,7 @@ static void scene_7008c(acbb_scene *s)
     s->network = ACBB_NET_46;
     s->contact_multiplier = 1.0;
     s->heat_partition = 0.5;
+    s->housing_bc = ACBB_BC_CONVECTIVE;   /* [surroundings]: sizes 0 = derived */
 }
 
 /* Complete elliptic integral K(k) by the arithmetic-geometric mean,
@@ -407,9 +408,9 @@ static void test_build_errors(const acbb_scene *s0)
     acbb_scene s = *s0;
     acbb_network nw;
     acbb_error err = {{0}};
-    s.outer_diameter = 0.125;
+    s.housing_od = 0.060;   /* the housing no longer sits at a fixed 120 mm */
     ok(acbb_network_build(&s, &nw, &err) == ACBB_EINVAL, "OD beyond the housing: EINVAL");
-    has_substr(err.msg, "assumed housing", "message names the assumed housing");
+    has_substr(err.msg, "do not hold the bearing", "message names the surroundings");
     s = *s0;
     s.cage_diameter = 59e-3;
     ok(acbb_network_build(&s, &nw, &err) == ACBB_EINVAL, "cage OD above OR land: EINVAL");
@@ -421,6 +422,182 @@ static void test_build_errors(const acbb_scene *s0)
     s.housing.k = 0;
     ok(acbb_network_build(&s, &nw, &err) == ACBB_EINVAL, "k = 0: EINVAL");
     ok(nw.net == NULL, "failed build leaves no network to free");
+}
+
+/* ---- surroundings (MODEL.md 8.1, 13 "Surroundings") ---- */
+
+/* The derived surroundings of the default (7008C) scene are the seed rig of
+ * MODEL.md 8.1 bit for bit; a set value is used as given; other bearings get
+ * the rig scaled (diameters by OD/68, axial sizes by width/15). */
+static void test_surroundings_derived(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    acbb_surroundings u;
+    acbb_scene_surroundings(&s, &u);
+    ok(u.housing_od == 0.120 && u.housing_length == 0.045 && u.cap_od == 0.120 &&
+       u.cap_thickness == 0.010 && u.shoulder_thickness == 0.010 && u.shaft_length == 0.045 &&
+       u.shaft_bore == 0.025, "7008C: housing 120 x 45, cap 120 x 10, shoulder 10, shaft "
+       "45 long with a 25 mm bore, exactly the seed rig");
+    ok(u.shoulder_inset == 0.004 && u.cap_inset == 0.006 && u.x_end_wall == 0.017 &&
+       u.cage_clearance == 0.0015, "7008C: shoulder r 30, cap bore r 28, node 36 at 17 mm, "
+       "cage bore r 25.5, exactly the seed rig");
+    s.housing_od = 0.2;
+    s.cap_thickness = 0.012;
+    s.shaft_bore = 0.02;
+    acbb_scene_surroundings(&s, &u);
+    ok(u.housing_od == 0.2 && u.cap_od == 0.2 && u.cap_thickness == 0.012 &&
+       u.shaft_bore == 0.02, "set sizes are used as given (the cap follows the housing)");
+    acbb_scene_default(&s);
+    s.outer_diameter = 0.136;
+    s.width = 0.030;
+    s.bore = 0.080;
+    acbb_scene_surroundings(&s, &u);
+    is_close(u.housing_od, 0.240, 1e-15, 0, "OD x 2: housing OD x 2 (240 mm)");
+    is_close(u.housing_length, 0.090, 1e-15, 0, "width x 2: housing length x 2 (90 mm)");
+    is_close(u.cap_thickness, 0.020, 1e-15, 0, "width x 2: cap thickness x 2 (20 mm)");
+    is_close(u.shaft_bore, 0.050, 1e-15, 0, "bore x 2: shaft bore x 2 (50 mm)");
+}
+
+/* The hand-built 7008C scene scaled by bore / 40 mm (70xx proportions). */
+static void scaled_scene(acbb_scene *s, double bore_mm)
+{
+    scene_7008c(s);
+    double k = bore_mm / 40.0;
+    double *dims[] = {&s->pitch_diameter, &s->ball_diameter, &s->inner_groove_radius,
+                      &s->outer_groove_radius, &s->bore, &s->outer_diameter, &s->width,
+                      &s->cage_width, &s->cage_diameter, &s->inner_land_diameter,
+                      &s->outer_land_diameter, &s->shaft_bore};
+    for (size_t i = 0; i < sizeof dims / sizeof dims[0]; i++) *dims[i] *= k;
+}
+
+/* Bores 10..200 mm: both networks build with the derived surroundings, and
+ * their steady states conserve energy and obey the maximum principle. The
+ * bearing of the issue (pitch 100 mm, bore 80 mm) was refused before. */
+static void test_scaled_networks(void)
+{
+    static const double bores[] = {10, 40, 80, 100, 200};
+    static const int hot46[] = {13, 15, 17, 44, 45}, hot7[] = {2, 3, 4};
+    for (int i = 0; i < 5; i++)
+        for (int kind = 0; kind < 2; kind++) {
+            acbb_scene s;
+            scaled_scene(&s, bores[i]);
+            s.network = kind ? ACBB_NET_7 : ACBB_NET_46;
+            acbb_network nw;
+            acbb_error err = {{0}};
+            char tag[64];
+            snprintf(tag, sizeof tag, "bore %g mm, %s", bores[i], kind ? "7-node" : "46-node");
+            if (!ok(acbb_network_build(&s, &nw, &err) == ACBB_OK, "%s: builds (%s)", tag, err.msg))
+                continue;
+            acbb_net_inputs in = inputs_15k(&s);
+            ok(acbb_network_update(&nw, &s, &in) == ACBB_OK, "%s: update OK", tag);
+            double Tss[ACBB_MAX_NODES];
+            check_steady(&s, &nw, tag, kind ? hot7 : hot46, 3 + 2 * !kind, Tss);
+            acbb_network_free(&nw);
+        }
+}
+
+/* Steady node temperatures of scene s under SRC at 15000 rpm. */
+static int steady_of(const acbb_scene *s, double *T, int *n)
+{
+    acbb_network nw;
+    acbb_error err = {{0}};
+    if (acbb_network_build(s, &nw, &err) != ACBB_OK) return 0;
+    acbb_net_inputs in = inputs_15k(s);
+    double q[ACBB_MAX_NODES];
+    acbb_network_update(&nw, s, &in);
+    acbb_network_heat(&nw, s, &SRC, q);
+    int good = acbb_tnet_steady(nw.net, q, T) == ACBB_OK &&
+               fabs(acbb_tnet_heat_to_fixed(nw.net, T) - 43.0) < 43.0 * 1e-9;
+    *n = nw.n;
+    acbb_network_free(&nw);
+    return good;
+}
+
+/* Convective faces: the film 1/(h A) in series (hand areas of MODEL.md 8.1
+ * geometry), h -> 1e9 W/m^2K gives the fixed face, a warm coolant warms the
+ * shaft, a fixed housing exterior pins nodes 1, 3, 32, 33. */
+static void test_face_bcs(const acbb_scene *s0)
+{
+    acbb_scene s = *s0;
+    acbb_network a, b;
+    acbb_error err = {{0}};
+    acbb_network_build(&s, &a, &err);
+    s.bore_bc = (acbb_face_bc){ACBB_BC_CONVECTIVE, 500, 0};
+    s.cap_bc = (acbb_face_bc){ACBB_BC_CONVECTIVE, 20, 0};
+    ok(acbb_network_build(&s, &b, &err) == ACBB_OK, "convective bore and cap build");
+    double dR_bore = acbb_tnet_resistance(b.net, find_edge(&b, 27, 28)) -
+                     acbb_tnet_resistance(a.net, find_edge(&a, 27, 28));
+    is_close(dR_bore, 1.0 / (500 * 2 * M_PI * 0.0125 * 0.0225), 1e-9, 0,
+             "bore film in series: 1/(h 2 pi r_sb L_s/2), r_sb 12.5, L_s 45 mm");
+    double r1 = 0.028 + 0.032 / 3.0;   /* cap bore r 28, outer r 60, inner third */
+    double dR_cap = acbb_tnet_resistance(b.net, find_edge(&b, 41, 38)) -
+                    acbb_tnet_resistance(a.net, find_edge(&a, 41, 38));
+    is_close(dR_cap, 1.0 / (20 * M_PI * (r1 * r1 - 0.028 * 0.028)), 1e-9, 0,
+             "cap film in series: 1/(h A), inner third of the r 28..60 mm face");
+    acbb_network_free(&a);
+    acbb_network_free(&b);
+
+    double Tf[ACBB_MAX_NODES], Tc[ACBB_MAX_NODES];
+    int nf, nc;
+    s = *s0;
+    ok(steady_of(&s, Tf, &nf), "fixed faces: steady, balanced");
+    s.bore_bc = (acbb_face_bc){ACBB_BC_CONVECTIVE, 1e9, 0};
+    s.cap_bc = (acbb_face_bc){ACBB_BC_CONVECTIVE, 1e9, 0};
+    ok(steady_of(&s, Tc, &nc), "h = 1e9 faces: steady, balanced");
+    double worst = 0.0;
+    for (int i = 0; i < nf; i++) worst = fmax(worst, fabs(Tc[i] - Tf[i]));
+    ok(worst < 1e-3, "h = 1e9 W/m^2K equals the fixed faces (max |dT| %.2g K)", worst);
+    s.bore_bc = (acbb_face_bc){ACBB_BC_FIXED, 0, 10};
+    steady_of(&s, Tc, &nc);
+    ok(Tc[28] == s.ambient_C + 10 && Tc[27] > Tf[27] + 5, "coolant +10 K: bore at %.1f C, "
+       "shaft %.2f > %.2f C", Tc[28], Tc[27], Tf[27]);
+
+    s = *s0;
+    s.housing_bc = ACBB_BC_FIXED;
+    acbb_network_build(&s, &a, &err);
+    int pinned = 1;
+    static const int ext[] = {1, 3, 32, 33};
+    for (int i = 0; i < 4; i++) pinned &= acbb_tnet_is_fixed(a.net, ext[i]);
+    ok(pinned && find_edge(&a, 0, 1) < 0, "fixed housing exterior: 1, 3, 32, 33 pinned, no film");
+    acbb_network_free(&a);
+    int good = steady_of(&s, Tc, &nc);
+    ok(good && Tc[5] < Tf[5], "fixed housing: cooler outer ring (%.2f < %.2f C)", Tc[5], Tf[5]);
+
+    s = *s0;
+    s.network = ACBB_NET_7;
+    steady_of(&s, Tf, &nf);
+    s.bore_bc = (acbb_face_bc){ACBB_BC_CONVECTIVE, 500, 10};
+    good = steady_of(&s, Tc, &nc);
+    ok(good && nc == 8 && Tc[7] == s.ambient_C + 10,
+       "7-node, coolant +10 K: an eighth node fixed at %.1f C, balanced", Tc[7]);
+    ok(Tc[5] > Tf[5] + 5, "7-node: warm coolant behind a film: warmer shaft (%.2f > %.2f C)",
+       Tc[5], Tf[5]);
+}
+
+/* Cross-field rule: the surroundings must hold the bearing. */
+static void test_surroundings_rule(void)
+{
+    static const char *const cases[][3] = {
+        {"surroundings.housing_outer_diameter_mm", "60", "the housing must be larger"},
+        {"surroundings.housing_length_mm", "30", "length >= 35 mm"},
+        {"surroundings.cap_outer_diameter_mm", "68", "the end cap must cover"},
+        {"surroundings.shaft_length_mm", "10", "at least as long as the inner ring"},
+        {"surroundings.shaft_bore_coolant_dT_K", "130", "must be below thermal.temp_limit_C"},
+    };
+    for (int i = 0; i < 5; i++) {
+        acbb_scene s;
+        acbb_scene_default(&s);
+        acbb_error err = {{0}};
+        ok(acbb_scene_set(&s, cases[i][0], cases[i][1], &err) == ACBB_EINVAL,
+           "%s = %s refused", cases[i][0], cases[i][1]);
+        has_substr(err.msg, cases[i][2], err.msg);
+    }
+    acbb_scene s;
+    acbb_scene_default(&s);
+    acbb_error err = {{0}};
+    ok(acbb_scene_set(&s, "bearing.outer_diameter_mm", "130", &err) == ACBB_OK,
+       "a larger OD is fine with the derived housing (%s)", err.msg);
 }
 
 int main(void)
@@ -443,5 +620,9 @@ int main(void)
     acbb_network_free(&nw);
     test_net7(&s);
     test_build_errors(&s);
+    test_surroundings_derived();
+    test_scaled_networks();
+    test_face_bcs(&s);
+    test_surroundings_rule();
     return done_testing();
 }

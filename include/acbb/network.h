@@ -5,6 +5,12 @@
  * Build once from a Scene; before each thermal step call
  * acbb_network_update with the current contact sizes and speeds so the
  * state-dependent resistances (contact spots, convection) follow the run.
+ * Surroundings (housing, shaft segment, end cap) and the boundary condition
+ * of each cooled face come from the scene's [surroundings]. A convective
+ * shaft bore or cap puts its film in series with the conduction edge into
+ * the face nodes (46-node: 28/30, 38/40/42), which then hold the coolant
+ * temperature; a 7-node shaft coolant not at ambient adds node 7.
+ *
  * Ownership: acbb_network_build fills a caller-owned struct whose `net`
  * the caller releases with acbb_network_free. */
 #ifndef ACBB_NETWORK_H

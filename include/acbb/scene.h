@@ -36,6 +36,14 @@ typedef enum { ACBB_HYST_MAJOR, ACBB_HYST_MINOR } acbb_hyst_axis;
 typedef enum { ACBB_NET_46, ACBB_NET_7 } acbb_network_kind;
 typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
+/* Boundary condition of a cooled face (MODEL.md 8.1, 13 "Surroundings"). */
+typedef enum { ACBB_BC_FIXED, ACBB_BC_CONVECTIVE } acbb_bc_kind;
+
+typedef struct {
+    acbb_bc_kind kind;   /* fixed: face at the coolant temperature; convective: film h */
+    double h;            /* film coefficient, W/(m^2 K) (convective only) */
+    double dT;           /* coolant temperature minus ambient_C, K */
+} acbb_face_bc;
 
 typedef struct {
     /* [bearing] geometry (MODEL.md section 1, section 10) */
@@ -90,6 +98,17 @@ typedef struct {
     double h_natural;            /* housing exterior convection, W/(m^2 K) */
     acbb_preload_mode preload;
     double preload_force;        /* N; displacement preload set at 20 C, 0 rpm */
+
+    /* [surroundings] (MODEL.md 8.1, 13): sizes 0 = derived from the bearing
+     * (acbb_scene_surroundings); housing and cap use materials.housing */
+    double housing_od;           /* housing outer diameter, m */
+    double housing_length;       /* housing length (centred on the bearing), m */
+    acbb_bc_kind housing_bc;     /* exterior: convective (h_natural, to ambient) or fixed */
+    double shaft_length;         /* shaft segment carried by the network, m */
+    acbb_face_bc bore_bc;        /* hollow-shaft bore face (seed: fixed at ambient) */
+    double cap_od;               /* end cap outer diameter, m */
+    double cap_thickness;        /* end cap thickness, m */
+    acbb_face_bc cap_bc;         /* end cap outer face (seed: fixed at ambient) */
 
     /* [operating] */
     double inner_speed;          /* omega_i, rad/s (preset: rpm) */
@@ -201,6 +220,24 @@ acbb_status acbb_scene_apply_edits(acbb_scene *s, const char *const *edits, size
 /* Cross-field consistency (balls fit on the pitch circle, groove radius >
  * ball radius, ...). Returns ACBB_EINVAL with the reason in err. */
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err);
+
+/* The surroundings the thermal network puts around the bearing (MODEL.md
+ * 8.1), m: the scene's [surroundings] values, each unset (0) size derived by
+ * scaling the seed's 7008C rig (OD 68, width 15, bore 40 mm) with the
+ * bearing: diameters outside the bearing by OD/68, axial sizes by width/15,
+ * insets on the outer-ring face by its height (OD - outer land)/2 / 4.95 mm,
+ * the cage bore clearance by D/6.35 mm. The 7008C scene gets the seed rig
+ * exactly (housing 120 x 45, shoulder 10, cap 10, shaft bore 25, shaft 45). */
+typedef struct {
+    double housing_od, housing_length, shaft_bore, shaft_length, cap_od, cap_thickness;
+    double shoulder_thickness;   /* rear housing shoulder wall (10 mm for 7008C) */
+    double shoulder_inset;       /* shoulder reaches this far inside the OD radius (4) */
+    double cap_inset;            /* cap bore radius = OD/2 - cap_inset (6) */
+    double x_end_wall;           /* |x| of the housing end-wall body node 36 (17) */
+    double cage_clearance;       /* cage bore radius = d_m/2 - this (1.5) */
+} acbb_surroundings;
+
+void acbb_scene_surroundings(const acbb_scene *s, acbb_surroundings *out);
 
 /* ---- schema introspection (for the TUI editor and help output) ---- */
 typedef enum { ACBB_FIELD_REAL, ACBB_FIELD_INT, ACBB_FIELD_BOOL,
