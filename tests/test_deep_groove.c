@@ -21,6 +21,7 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
+#include "acbb/designation.h"
 #include "acbb/geometry.h"
 #include "acbb/hertz.h"
 #include "acbb/lubrication.h"
@@ -256,6 +257,51 @@ static void test_preload(void)
              NAME("fixed dx = %.4f um, the 500 N preload alone at 0 rpm", dx * 1e6));
 }
 
+/* Designations: the generated scenes validate and their mechanics solve
+ * (bores 10, 40, 100, 200 mm; the thermal network is not involved: its
+ * housing does not yet scale with the bearing, see tests/test_new.sh). */
+static void test_designations(void)
+{
+    static const char *const names[] = { "7000C", "7008C", "7020AC", "7040B", "6000", "6008",
+                                         "6220", "6340", "71840C", "61900" };
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        acbb_designation d;
+        acbb_error e;
+        acbb_scene s;
+        acbb_estimate notes[16];
+        if (!ok(acbb_designation_parse(names[i], &d, &e) == ACBB_OK, "%s parses", names[i]))
+            continue;
+        acbb_designation_scene(&d, &s, notes, 16);
+        acbb_status rc = acbb_scene_validate(&s, &e);
+        if (!ok(rc == ACBB_OK, "%s: scene validates", names[i])) {
+            diag("%s", e.msg);
+            continue;
+        }
+        /* Thrust for an angular-contact bearing, radial for a deep groove. */
+        s.axial_load = d.deep_groove ? 0.0 : 0.02 * s.n_balls * s.ball_diameter * 1e6;
+        s.radial_load = d.deep_groove ? 0.05 * s.n_balls * s.ball_diameter * 1e6 : 0.0;
+        acbb_mech *m = NULL;
+        acbb_mech_state st;
+        rc = acbb_mech_new(&s, &m, &e);
+        if (rc == ACBB_OK) rc = acbb_mech_init_state(m, &st, &e);
+        if (rc == ACBB_OK) rc = acbb_mech_solve(m, 0.5 * s.inner_speed, NULL, &st, &e);
+        acbb_mech_free(m);
+        ok(rc == ACBB_OK, "%s (%g x %g x %g mm, %d x %.4g mm balls): mechanics solve at %.0f rpm",
+           d.name, d.bore * 1e3, d.outer_diameter * 1e3, d.width * 1e3, s.n_balls,
+           s.ball_diameter * 1e3, 0.5 * s.inner_speed / ACBB_RPM);
+    }
+    acbb_designation a, b;
+    acbb_error e;
+    acbb_designation_parse("71810C", &a, &e);
+    is_close(a.outer_diameter, 65e-3, 1e-12, 0, "71810C: D = 65 mm (ISO 15 series 18)");
+    ok(acbb_designation_make(70, 70, 15, &b, &e) == ACBB_OK && !strcmp(b.name, "7014C"),
+       "series 70, bore 70, 15 deg = 7014C");
+    ok(acbb_designation_parse("7014", &a, &e) == ACBB_EINVAL && strstr(e.msg, "suffix"),
+       "7014 without an angle suffix refused: %s", e.msg);
+    ok(acbb_designation_parse("7023C", &a, &e) == ACBB_EINVAL && strstr(e.msg, "115 mm"),
+       "bore 115 mm (not in ISO 15) refused: %s", e.msg);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -263,5 +309,6 @@ int main(void)
     test_load_zone();
     test_film();
     test_preload();
+    test_designations();
     return done_testing();
 }
