@@ -33,6 +33,11 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_EXIT_AFTER_STEADY] = { "exit-after-steady", NULL,
                                     "start the run at once and exit when it ends "
                                     "(exit 0 converged, 3 not)" },
+    [CLI_OPT_SERIES] = { "series", "S",
+                         "bearing series: 70 72 73 718 719 (angular contact), 60 62 63 618 619" },
+    [CLI_OPT_BORE] = { "bore", "MM", "bore diameter d in mm (10..200, ISO 15 sizes)" },
+    [CLI_OPT_ANGLE] = { "angle", "DEG", "contact angle, 5..45 deg (C 15, AC 25, B 40); none for "
+                                        "deep groove" },
     [CLI_OPT_HELP] = { "help", NULL, "this text (also -h)" },
     [CLI_OPT_BASELINE] = { "baseline", "FILE",
                            "compare with a saved `acbb run --json` (what-if: what changed, "

@@ -15,6 +15,7 @@
 #include "presets.h"
 #include "tui.h"
 #include "report.h"
+#include "new.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -71,6 +72,11 @@ const acbb_cli_command acbb_cli_commands[] = {
       "the seed's conclusions (MODEL.md 12): held or not",
       "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n",
       SCENE_OPTS | O(JSON) | O(MD), 1, 1, 0, cmd_report },
+    { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
+      "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
+      "never over an existing file) with the ISO 15 bore, outside diameter and width;\n"
+      "internal geometry is estimated and marked `; estimated:` in the file.\n",
+      O(OUT) | O(SERIES) | O(BORE) | O(ANGLE), 0, 1, -1, acbb_cli_cmd_new },
     { "presets", NULL, "[DIR]", "the preset search path and the presets in it",
       NULL, 0, 0, 1, -1, acbb_cli_cmd_presets },
     { "keys", NULL, "", "every scene key with unit, range and help", NULL, 0, 0, 0, -1,

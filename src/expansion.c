@@ -1,6 +1,7 @@
 /* acbb — thermal and centrifugal expansion (MODEL.md section 7, seed eqs
  * 1-11). All results are radial displacements (radius changes), m. */
 #include "acbb/expansion.h"
+#include "acbb/geometry.h"
 
 #include <math.h>
 #include <string.h>
@@ -36,14 +37,11 @@ double acbb_expansion_centrifugal(double rho, double omega, double E, double nu,
 }
 
 /* IR raceway radius r_il = d_i/2, d_i = dm - D - Pd/2 with the unmounted
- * clearance Pd = 2 A0 (1 - cos alpha0), A0 = lambda_i + lambda_o - D
- * (MODEL.md section 1; 7008C: d_i = 47.633 mm). */
+ * clearance Pd (given, or 2 A0 (1 - cos alpha0), A0 = lambda_i + lambda_o
+ * - D; MODEL.md section 1; 7008C: d_i = 47.633 mm). */
 static double inner_raceway_radius(const acbb_scene *s)
 {
-    double D = s->ball_diameter;
-    double A0 = s->inner_groove_radius + s->outer_groove_radius - D;
-    double Pd = 2.0 * A0 * (1.0 - cos(s->contact_angle0));
-    return 0.5 * (s->pitch_diameter - D - 0.5 * Pd);
+    return 0.5 * (s->pitch_diameter - s->ball_diameter - 0.5 * acbb_diametral_clearance(s));
 }
 
 void acbb_expansion_compute(const acbb_scene *s, const acbb_part_temps *t,

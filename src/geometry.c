@@ -4,6 +4,26 @@
 #include "acbb/geometry.h"
 #include "acbb/hertz.h"
 
+static double groove_centre_distance(const acbb_scene *s)
+{
+    return s->inner_groove_radius + s->outer_groove_radius - s->ball_diameter;
+}
+
+double acbb_diametral_clearance(const acbb_scene *s)
+{
+    if (s->clearance > 0.0) return s->clearance;
+    /* cos(alpha0) = 1 - Pd / (2 A0)  [HK-EC] */
+    return 2.0 * groove_centre_distance(s) * (1.0 - cos(s->contact_angle0));
+}
+
+double acbb_free_contact_angle(const acbb_scene *s)
+{
+    if (!(s->clearance > 0.0)) return s->contact_angle0;
+    double A0 = groove_centre_distance(s);
+    if (!(A0 > 0.0)) return s->contact_angle0; /* refused by the groove rules */
+    return acos(fmax(-1.0, 1.0 - s->clearance / (2.0 * A0)));
+}
+
 void acbb_geometry_init(const acbb_scene *s, acbb_geometry *g)
 {
     g->D = s->ball_diameter;
@@ -14,9 +34,8 @@ void acbb_geometry_init(const acbb_scene *s, acbb_geometry *g)
     g->f_i = g->lambda_i / g->D;
     g->f_o = g->lambda_o / g->D;
     g->A0 = g->lambda_i + g->lambda_o - g->D;
-    g->alpha0 = s->contact_angle0;
-    /* cos(alpha0) = 1 - Pd / (2 A0)  [HK-EC] */
-    g->Pd = 2.0 * g->A0 * (1.0 - cos(g->alpha0));
+    g->alpha0 = acbb_free_contact_angle(s);
+    g->Pd = acbb_diametral_clearance(s);
     g->d_i = g->dm - g->D - 0.5 * g->Pd;
     g->d_o = g->dm + g->D + 0.5 * g->Pd;
     g->Re_i = 0.5 * g->d_i + g->lambda_i;

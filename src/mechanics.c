@@ -32,6 +32,7 @@ struct acbb_mech {
     double Fx, Fz, My;          /* applied loads on the IR */
     int fix_axial;
     double dx_fixed;
+    int centred;                /* dx fixed by symmetry (deep groove, no thrust) */
     int dof_dz, dof_thy;        /* active ring DOFs besides dx */
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     gsl_root_fsolver *brent;
@@ -639,7 +640,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (rc == ACBB_OK) {
         int any = 0;
         for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > LOADED_N;
-        if (!any && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || m->fix_axial))
+        if (!any && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || (m->fix_axial && !m->centred)))
             rc = ACBB_CONTACT_LOST;
     }
     if (rc != ACBB_OK) {
@@ -709,6 +710,17 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
     m->My = s->moment_load;
     m->dof_dz = s->radial_load != 0.0 || s->moment_load != 0.0;
     m->dof_thy = s->moment_load != 0.0;
+    /* Deep groove (nominal angle 0) without thrust or moment: the bearing is
+     * mirror-symmetric about the groove plane, so the inner ring sits
+     * axially centred (A1 = 0 in MODEL.md 3, dx = -A0 sin alpha0) and the
+     * axial DOF is fixed by symmetry instead of solved: with clearance its
+     * Jacobian row is zero until a ball touches. (SEED geometry's A0' and
+     * projections break the symmetry by far less than a micrometre.) */
+    m->centred = s->contact_angle0 == 0.0 && s->axial_load == 0.0 && s->moment_load == 0.0;
+    if (m->centred) {
+        m->fix_axial = 1;
+        m->dx_fixed = -m->g.A0 * sin(m->g.alpha0);
+    }
     m->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     m->brent_z = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     m->brent_a = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -742,6 +754,7 @@ void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
 {
     m->fix_axial = fixed;
     m->dx_fixed = dx;
+    m->centred = 0; /* an explicit choice replaces the symmetry default */
 }
 
 acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err)
@@ -764,12 +777,17 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
     acbb_ball_state *b0 = &st->ball[0];
     double Kn = pow(pow(b0->hc_i.Kc, -2.0 / 3.0) + pow(b0->hc_o.Kc, -2.0 / 3.0), -1.5);
     double Fx = m->fix_axial ? 0.0 : fmax(m->Fx, 1.0);
-    double a = acbb_static_thrust_angle(Fx, g->Z, Kn, g->A0, g->alpha0);
+    double a = m->centred ? 0.0 : acbb_static_thrust_angle(Fx, g->Z, Kn, g->A0, g->alpha0);
     if (!isfinite(a)) a = g->alpha0;
-    double dn = g->A0 * (cos(g->alpha0) / cos(a) - 1.0);
+    double dn = m->centred ? 0.0 : g->A0 * (cos(g->alpha0) / cos(a) - 1.0);
     double q = pow(fmax(dn, 0.0), 1.5) * Kn;
     double Lo = g->lambda_o - 0.5 * g->D + pow(q / b0->hc_o.Kc, 2.0 / 3.0);
     st->dx = m->fix_axial ? m->dx_fixed : (g->A0 + dn) * sin(a) - g->A0 * sin(g->alpha0);
+    /* Centred under radial load: start the ring where the most loaded ball
+     * carries Stribeck's 5 Fr / Z [HK-EC, static load distribution], past
+     * half the clearance, so the first Jacobian sees loaded balls. */
+    if (m->centred && m->Fz > 0.0)
+        st->dz = 0.5 * g->Pd + pow(5.0 * m->Fz / (g->Z * Kn), 2.0 / 3.0);
     for (int j = 0; j < st->n; j++) {
         acbb_ball_state *b = &st->ball[j];
         b->alpha_i = b->alpha_o = a;

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "acbb/geometry.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
 
@@ -17,12 +18,11 @@ static const char *show(const acbb_scene *s, const char *section, const char *ke
     return buf;
 }
 
-/* Raceway diameters d_i, d_o from the free contact angle (MODEL.md section 1):
- * A0 = lambda_i + lambda_o - D, P_d = 2 A0 (1 - cos alpha0). */
+/* Raceway diameters d_i, d_o from the clearance (MODEL.md section 1):
+ * P_d given, or 2 A0 (1 - cos alpha0) with A0 = lambda_i + lambda_o - D. */
 static void raceway_diameters(const acbb_scene *s, double *di, double *d_o)
 {
-    double A0 = s->inner_groove_radius + s->outer_groove_radius - s->ball_diameter;
-    double Pd = 2.0 * A0 * (1.0 - cos(s->contact_angle0));
+    double Pd = acbb_diametral_clearance(s);
     *di = s->pitch_diameter - s->ball_diameter - 0.5 * Pd;
     *d_o = s->pitch_diameter + s->ball_diameter + 0.5 * Pd;
 }
@@ -88,6 +88,32 @@ static acbb_status rule_inner_groove(const acbb_scene *s, acbb_error *err)
 static acbb_status rule_outer_groove(const acbb_scene *s, acbb_error *err)
 {
     return groove_rule(s, "outer", s->outer_groove_radius, err);
+}
+
+/* Geometry by the free angle OR by the clearance (MODEL.md section 1,
+ * geometry.h): a clearance > 0 gives cos alpha0 = 1 - P_d / (2 A0); the
+ * angle key must then be 0 (deep groove, nominal angle) or that angle. */
+static acbb_status rule_clearance(const acbb_scene *s, acbb_error *err)
+{
+    if (!(s->clearance > 0.0)) return ACBB_OK;
+    double A0 = s->inner_groove_radius + s->outer_groove_radius - s->ball_diameter;
+    double c = 1.0 - s->clearance / (2.0 * A0), a0 = acos(fmax(-1.0, c)) / ACBB_DEG;
+    char a[40], b[40];
+    if (!(a0 <= 45.0))
+        return acbb_error_set(err, ACBB_EINVAL,
+                              "bearing.clearance_um = %s with groove-centre distance A0 = %.4g "
+                              "mm: the free contact angle acos(1 - P_d/(2 A0)) = %.4g deg is "
+                              "above 45 deg (MODEL.md section 1)",
+                              show(s, "bearing", "clearance_um", a), A0 * 1e3, a0);
+    double given = s->contact_angle0 / ACBB_DEG;
+    if (given == 0.0 || fabs(given - a0) <= 0.05) return ACBB_OK;
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "bearing.clearance_um = %s and contact_angle_deg = %s disagree: the "
+                          "clearance gives a free contact angle of %.4f deg (cos a0 = 1 - "
+                          "P_d/(2 A0), MODEL.md section 1); set contact_angle_deg = 0 (deep "
+                          "groove) or %.4f, or clearance_um = 0 (geometry from the angle)",
+                          show(s, "bearing", "clearance_um", a),
+                          show(s, "bearing", "contact_angle_deg", b), a0, a0);
 }
 
 /* The balls must fit on the pitch circle with a small gap for the cage. */
@@ -348,8 +374,8 @@ typedef acbb_status (*rule_fn)(const acbb_scene *, acbb_error *);
 /* Order matters: ranges first (later rules divide by them), the grooves
  * before anything that uses the raceway diameters, ill-posedness last. */
 static const rule_fn k_rules[] = {
-    rule_ranges, rule_inner_groove, rule_outer_groove, rule_balls_fit, rule_inner_ring,
-    rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
+    rule_ranges, rule_inner_groove, rule_outer_groove, rule_clearance, rule_balls_fit,
+    rule_inner_ring, rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
     rule_preload, rule_surroundings, rule_radial_load,
 };

@@ -96,8 +96,12 @@ const acbb_sfield acbb_sf_table[] = {
          "inner groove radius lambda_i (needs lambda_i / D >= 0.505)"),
     REAL("bearing", "outer_groove_radius_mm", "mm", outer_groove_radius, 1e-3, 3.43, OC, 0, 100,
          "outer groove radius lambda_o (needs lambda_o / D >= 0.505)"),
-    REAL("bearing", "contact_angle_deg", "deg", contact_angle0, ACBB_DEG, 15, OC, 0, 45,
-         "free contact angle alpha0; sets the clearance P_d (MODEL.md section 1)"),
+    REAL("bearing", "contact_angle_deg", "deg", contact_angle0, ACBB_DEG, 15, CC, 0, 45,
+         "free contact angle alpha0; sets P_d unless clearance_um > 0; 0 = deep groove "
+         "(MODEL.md 1)"),
+    REAL("bearing", "clearance_um", "um", clearance, 1e-6, 0, CC, 0, 1000,
+         "diametral clearance P_d; 0 = from contact_angle_deg; > 0 gives the free angle "
+         "(contact_angle_deg 0 or equal to it)"),
     REAL("bearing", "bore_mm", "mm", bore, 1e-3, 40, OC, 0, 2000,
          "bearing bore (inside diameter of the inner ring)"),
     REAL("bearing", "outer_diameter_mm", "mm", outer_diameter, 1e-3, 68, OC, 0, 2000,

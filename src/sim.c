@@ -660,11 +660,16 @@ static acbb_status check_supported(const acbb_scene *s, acbb_error *err)
 }
 
 /* Displacement preload: fix dx at the value the preload force gives at
- * zero speed and room temperature (MODEL.md section 1). */
+ * zero speed and room temperature (MODEL.md section 1), from the preload
+ * alone: the radial load and moment come on afterwards, against the
+ * fixed ring. */
 static acbb_status fix_preload(acbb_sim *sim, acbb_error *err)
 {
     acbb_scene s0 = sim->s;
     s0.axial_load = s0.preload_force;
+    s0.radial_load = 0.0;
+    s0.moment_load = 0.0;
+    s0.inner_speed = 0.0;
     s0.preload = ACBB_PRELOAD_FORCE;
     acbb_mech *m0;
     acbb_status rc = acbb_mech_new(&s0, &m0, err);

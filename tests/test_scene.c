@@ -151,6 +151,7 @@ static const char *const k_expected[][2] = {
     {"bearing.pitch_diameter_mm", "54"}, {"bearing.ball_diameter_mm", "6.35"},
     {"bearing.n_balls", "21"}, {"bearing.inner_groove_radius_mm", "3.43"},
     {"bearing.outer_groove_radius_mm", "3.43"}, {"bearing.contact_angle_deg", "15"},
+    {"bearing.clearance_um", "0"},
     {"bearing.bore_mm", "40"}, {"bearing.outer_diameter_mm", "68"}, {"bearing.width_mm", "15"},
     {"bearing.cage_width_mm", "10.1"}, {"bearing.cage_diameter_mm", "57.7"},
     {"bearing.inner_land_diameter_mm", "49.9"}, {"bearing.outer_land_diameter_mm", "58.1"},

@@ -22,6 +22,15 @@ typedef struct {
 
 void acbb_geometry_init(const acbb_scene *s, acbb_geometry *g);
 
+/* The geometry is given by the free contact angle OR by the diametral
+ * clearance (MODEL.md section 1: cos alpha0 = 1 - P_d / (2 A0), A0 =
+ * lambda_i + lambda_o - D): with bearing.clearance_um = 0 the clearance
+ * follows from contact_angle_deg, with clearance_um > 0 the angle follows
+ * from the clearance (scene_rules.c refuses an angle that disagrees, except
+ * 0, the deep-groove bearing's nominal angle). Both in SI (rad, m). */
+double acbb_free_contact_angle(const acbb_scene *s);
+double acbb_diametral_clearance(const acbb_scene *s);
+
 /* Thermal offsets entering the compatibility equations for one ball. */
 typedef struct {
     double A0;      /* groove-centre distance used in A1, A2 (SEED: with f') */

@@ -52,7 +52,9 @@ typedef struct {
     int n_balls;                 /* Z */
     double inner_groove_radius;  /* lambda_i, m */
     double outer_groove_radius;  /* lambda_o, m */
-    double contact_angle0;       /* alpha^0 free contact angle, rad */
+    double contact_angle0;       /* alpha^0 nominal free contact angle, rad (0: deep groove) */
+    double clearance;            /* P_d diametral clearance, m; 0 = derived from contact_angle0
+                                  * (acbb_free_contact_angle, geometry.h, gives the angle in use) */
     double bore;                 /* bearing bore diameter, m */
     double outer_diameter;       /* bearing outside diameter, m */
     double width;                /* bearing width B_w, m */

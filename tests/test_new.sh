@@ -1,0 +1,97 @@
+#!/bin/sh
+# `acbb new`: presets from bearing designations (TAP). $1 = the acbb binary;
+# cwd = repository root. Checks the written files against the ISO 15
+# boundary dimensions, the estimate markers, `acbb check` on them, the
+# shipped 7008C preset's geometry, the explicit form and refusals.
+set -u
+
+ACBB=${1:?usage: test_new.sh path/to/acbb}
+case $ACBB in /*) ;; *) ACBB=$PWD/$ACBB ;; esac
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-new.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+XDG_CONFIG_HOME="$TMP/xdg"
+export XDG_CONFIG_HOME
+
+. "$(dirname "$0")/tap.sh"
+
+# val FILE KEY: the value of KEY (first match) in an INI file.
+val() { sed -n "s/^$2 = //p" "$1" | head -n 1; }
+
+# near GOT WANT RTOL NAME: |GOT - WANT| <= RTOL |WANT|.
+near() {
+    awk -v g="$1" -v w="$2" -v r="$3" 'BEGIN { d = g - w; if (d < 0) d = -d;
+        exit !(g != "" && d <= r * (w < 0 ? -w : w)) }'
+    t $? "$4 (got $1, want $2 within $3)"
+}
+
+# ---- the designation form: files written with the ISO 15 dimensions ----
+# bore mm, outside mm, width mm for each (ISO 15 dimension series 10, 02, 18).
+for row in "7000C 10 26 8" "7008C 40 68 15" "7020AC 100 150 24" "7040B 200 310 51" \
+           "6205 25 52 15" "71810C 50 65 7" "6220 100 180 34"; do
+    set -- $row
+    (cd "$TMP" && "$ACBB" new "$1" >"$TMP/out" 2>"$TMP/err")
+    code $? 0 "new $1"
+    f="$TMP/$1.ini"
+    [ -s "$f" ]; t $? "$1: $1.ini written"
+    [ "$(val "$f" bore_mm)" = "$2" ] && [ "$(val "$f" outer_diameter_mm)" = "$3" ] &&
+        [ "$(val "$f" width_mm)" = "$4" ]
+    t $? "$1: d x D x B = $2 x $3 x $4 mm"
+    grep -B1 '^ball_diameter_mm = ' "$f" | grep -q '^; estimated:'
+    t $? "$1: the ball diameter is marked estimated"
+    "$ACBB" check "$f" >"$TMP/out" 2>"$TMP/err"
+    rc=$?
+    # The thermal network's surroundings are still the seed's fixed-size
+    # test rig (MODEL.md 13): a bearing that does not fit it is refused by
+    # the network, not by the scene. Skipped until the network scales.
+    if [ $rc -ne 0 ] && grep -q '^acbb: network:' "$TMP/err"; then
+        skip "$1: acbb check passes" "$(head -c 90 "$TMP/err")"
+    else
+        code $rc 0 "$1: acbb check passes"
+    fi
+done
+
+# ---- angles and clearance ----
+[ "$(val "$TMP/7000C.ini" contact_angle_deg)" = 15 ]; t $? "7000C: contact angle 15 deg (C)"
+[ "$(val "$TMP/7020AC.ini" contact_angle_deg)" = 25 ]; t $? "7020AC: contact angle 25 deg (AC)"
+[ "$(val "$TMP/7040B.ini" contact_angle_deg)" = 40 ]; t $? "7040B: contact angle 40 deg (B)"
+[ "$(val "$TMP/6205.ini" contact_angle_deg)" = 0 ]; t $? "6205: deep groove, angle 0"
+# ISO 5753-1 group N for a 25 mm bore: 5..20 um, middle 12.5.
+[ "$(val "$TMP/6205.ini" clearance_um)" = 12.5 ]; t $? "6205: clearance 12.5 um (CN middle)"
+grep -B1 '^clearance_um = ' "$TMP/6205.ini" | grep -q '^; estimated:'
+t $? "6205: the clearance is marked estimated"
+
+# ---- 7008C from its designation vs the shipped (seed) preset ----
+P=presets/7008C.ini
+for k in bore_mm outer_diameter_mm width_mm pitch_diameter_mm contact_angle_deg; do
+    near "$(val "$TMP/7008C.ini" $k)" "$(val $P $k)" 1e-9 "7008C: $k as the shipped preset"
+done
+near "$(val "$TMP/7008C.ini" ball_diameter_mm)" "$(val $P ball_diameter_mm)" 0.15 \
+    "7008C: estimated ball diameter near the preset's"
+near "$(val "$TMP/7008C.ini" n_balls)" "$(val $P n_balls)" 0.15 \
+    "7008C: estimated ball count near the preset's"
+near "$(val "$TMP/7008C.ini" inner_groove_radius_mm)" "$(val $P inner_groove_radius_mm)" 0.15 \
+    "7008C: estimated groove radius near the preset's"
+(cd "$TMP" && "$ACBB" run 7008C.ini --set operating.inner_speed_rpm=6000 --json >run.json 2>err)
+code $? 0 "the generated 7008C preset runs to steady state"
+
+# ---- the explicit form ----
+(cd "$TMP" && "$ACBB" new --series 70 --bore 70 --angle 15 --out explicit.ini >out 2>err)
+code $? 0 "new --series 70 --bore 70 --angle 15"
+(cd "$TMP" && "$ACBB" new 7014C >out 2>err)
+cmp -s "$TMP/explicit.ini" "$TMP/7014C.ini"; t $? "the explicit form writes what 7014C writes"
+
+# ---- refusals ----
+(cd "$TMP" && "$ACBB" new 7008C >out 2>err)
+code $? 2 "an existing file is never overwritten"
+has "$TMP/err" "exists" "  and the message says so"
+"$ACBB" new 7014 --out "$TMP/x.ini" >/dev/null 2>"$TMP/err"
+code $? 2 "7014 without an angle suffix refused"
+has "$TMP/err" "angle suffix" "  message names the suffix"
+"$ACBB" new 7023C --out "$TMP/x.ini" >/dev/null 2>"$TMP/err"
+code $? 2 "bore 115 mm refused"
+has "$TMP/err" "ISO 15" "  message names the table"
+"$ACBB" new --series 62 --bore 25 --angle 15 --out "$TMP/x.ini" >/dev/null 2>"$TMP/err"
+code $? 2 "a deep-groove series with an angle refused"
+[ ! -e "$TMP/x.ini" ]; t $? "nothing written on a refusal"
+
+tap_done
