@@ -37,6 +37,13 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_BASELINE] = { "baseline", "FILE",
                            "compare with a saved `acbb run --json` (what-if: what changed, "
                            "absolute and %)" },
+    [CLI_OPT_GRID] = { "grid", "KEY=V1,V2,...|KEY=LO:HI:N",
+                       "a sweep dimension (repeatable): values, or N evenly spaced from LO to HI" },
+    [CLI_OPT_JSONL] = { "jsonl", "FILE",
+                        "stream one JSON line per point to FILE as it finishes (- = stdout); "
+                        "an existing FILE is resumed" },
+    [CLI_OPT_SHARD] = { "shard", "K/N", "run only points with index % N == K-1 (K = 1..N)" },
+    [CLI_OPT_MAX_POINTS] = { "max-points", "N", "run at most N of the remaining points, then stop" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions
@@ -148,6 +155,9 @@ static int parse_option(const acbb_cli_command *c, int argc, char **argv, int *i
             return bad(c, "option takes no value: ", argv[*i]);
         }
         if (k == CLI_OPT_SET) a->sets[a->n_sets++] = val;
+        if (k == CLI_OPT_GRID && a->n_grids == CLI_MAX_GRIDS)
+            return bad(c, "too many --grid (at most 8): ", val);
+        if (k == CLI_OPT_GRID) a->grids[a->n_grids++] = val;
         a->val[k] = val;
         return 0;
     }
