@@ -14,8 +14,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_CSV] = { "csv", "FILE", "also write CSV to FILE (written atomically; - = stdout)" },
     [CLI_OPT_QUIET] = { "quiet", NULL, "print nothing on success (the exit status says it)" },
     [CLI_OPT_PLOT] = { "plot", "FILE", "draw with gnuplot to FILE.png or FILE.svg" },
-    [CLI_OPT_PARAM] = { "param", "KEY", "the swept key, section.key (required)" },
-    [CLI_OPT_VALUES] = { "values", "V1,V2,...", "the values of --param, in preset units (required)" },
+    [CLI_OPT_PARAM] = { "param", "KEY", "the swept key, section.key (1-D shorthand of --grid)" },
+    [CLI_OPT_VALUES] = { "values", "V1,V2,...", "the values of --param, in preset units" },
     [CLI_OPT_JOBS] = { "jobs", "N", "parallel runs (default: the number of CPUs)" },
     [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },
     [CLI_OPT_KIND] = { "kind", "KIND",
@@ -42,6 +42,13 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_BASELINE] = { "baseline", "FILE",
                            "compare with a saved `acbb run --json` (what-if: what changed, "
                            "absolute and %)" },
+    [CLI_OPT_GRID] = { "grid", "KEY=V1,V2,...|KEY=LO:HI:N",
+                       "a sweep dimension (repeatable): values, or N evenly spaced from LO to HI" },
+    [CLI_OPT_JSONL] = { "jsonl", "FILE",
+                        "stream one JSON line per point to FILE as it finishes (- = stdout); "
+                        "an existing FILE is resumed" },
+    [CLI_OPT_SHARD] = { "shard", "K/N", "run only points with index % N == K-1 (K = 1..N)" },
+    [CLI_OPT_MAX_POINTS] = { "max-points", "N", "run at most N of the remaining points, then stop" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions
@@ -153,6 +160,9 @@ static int parse_option(const acbb_cli_command *c, int argc, char **argv, int *i
             return bad(c, "option takes no value: ", argv[*i]);
         }
         if (k == CLI_OPT_SET) a->sets[a->n_sets++] = val;
+        if (k == CLI_OPT_GRID && a->n_grids == CLI_MAX_GRIDS)
+            return bad(c, "too many --grid (at most 8): ", val);
+        if (k == CLI_OPT_GRID) a->grids[a->n_grids++] = val;
         a->val[k] = val;
         return 0;
     }

@@ -6,7 +6,7 @@
  * text can never drift from what the parser accepts.
  *
  * Accepted forms: `--name`, `--name value`, `--name=value`, `-h`; `--`
- * ends the options. --set may repeat; for every other option the last one
+ * ends the options. --set and --grid may repeat; for every other option the last one
  * wins. An unknown option is refused with exit 2 and, when a known one is
  * close (edit distance), "did you mean --x?". No user text ever reaches a
  * shell. */
@@ -24,6 +24,7 @@ typedef enum {
     CLI_OPT_MD, CLI_OPT_PACE, CLI_OPT_PLOT_DIR, CLI_OPT_EXIT_AFTER_STEADY,
     CLI_OPT_SERIES, CLI_OPT_BORE, CLI_OPT_ANGLE,
     CLI_OPT_HELP, CLI_OPT_BASELINE,
+    CLI_OPT_GRID, CLI_OPT_JSONL, CLI_OPT_SHARD, CLI_OPT_MAX_POINTS,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
@@ -35,8 +36,9 @@ typedef struct {
     const char *help;
 } acbb_cli_option;
 
-#define CLI_MAX_POS 2
+#define CLI_MAX_POS 1024              /* `acbb merge OUT IN...` */
 #define CLI_PATH_MAX 4096
+#define CLI_MAX_GRIDS 8                /* ACBB_SWEEP_MAX_DIMS */
 
 /* What the parser hands a command. Values point into argv. */
 typedef struct {
@@ -47,6 +49,8 @@ typedef struct {
     const char *val[CLI_OPT_COUNT];    /* last value; "" for a flag; NULL absent */
     const char **sets;                 /* every --set, in order */
     size_t n_sets;
+    const char *grids[CLI_MAX_GRIDS];  /* every --grid, in order */
+    size_t n_grids;
     const char *preset;                /* the PRESET positional, resolved */
     char preset_buf[CLI_PATH_MAX];
 } acbb_cli_args;

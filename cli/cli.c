@@ -1,4 +1,4 @@
-/* acbb CLI — the scene commands: run, check, sweep, study, bench speed and
+/* acbb CLI — the scene commands: run, check, study, bench speed and
  * keys (commands.h). Each loads a preset, applies `--set` edits, drives the
  * engine's one run loop (acbb_sim_drive, DESIGN.md "Data flow") and writes
  * the snapshot as a table, JSON or CSV (output.h). Exit statuses: exit.h. */
@@ -246,79 +246,6 @@ int acbb_cli_cmd_edit(const acbb_cli_args *a)
     }
     printf("%s: %zu edit%s saved\n", a->preset, a->n_sets, a->n_sets == 1 ? "" : "s");
     return acbb_cli_stdout_check(0);
-}
-
-/* ---- acbb sweep ---- */
-
-/* Split "v1,v2,..." into points, each a copy of `base` with param = value. */
-static int sweep_points(const acbb_cli_args *a, const acbb_scene *base,
-                        acbb_cli_point **out, size_t *n_out)
-{
-    const char *values = a->val[CLI_OPT_VALUES], *param = a->val[CLI_OPT_PARAM];
-    size_t n = 1;
-    for (const char *p = values; *p; p++) n += *p == ',';
-    acbb_cli_point *pts = calloc(n, sizeof *pts);
-    if (!pts) return ACBB_EXIT_INTERNAL;
-    const char *p = values;
-    for (size_t i = 0; i < n; i++) {
-        size_t len = strcspn(p, ",");
-        if (len == 0 || len >= sizeof pts[i].value) {
-            fprintf(stderr, "acbb: sweep: --values %s: empty or too long value\n",
-                    values);
-            free(pts);
-            return ACBB_EXIT_INPUT;
-        }
-        memcpy(pts[i].value, p, len);
-        pts[i].value[len] = '\0';
-        p += len + (p[len] == ',');
-        pts[i].scene = *base;
-        acbb_error err = { { 0 } };
-        acbb_status st = acbb_scene_set(&pts[i].scene, param, pts[i].value, &err);
-        if (st != ACBB_OK) {
-            fprintf(stderr, "acbb: --param %s=%s: %s\n", param, pts[i].value,
-                    acbb_cli_err_text(&err, st));
-            free(pts);
-            return ACBB_EXIT_INPUT;
-        }
-    }
-    *out = pts;
-    *n_out = n;
-    return 0;
-}
-
-int acbb_cli_cmd_sweep(const acbb_cli_args *a)
-{
-    const char *param = a->val[CLI_OPT_PARAM];
-    long jobs;
-    int rc = acbb_cli_count(a, CLI_OPT_JOBS, cpu_count(), 1, 100000, &jobs);
-    if (rc) return rc;
-    if (!param || !a->val[CLI_OPT_VALUES]) {
-        fprintf(stderr, "acbb: sweep: needs --param section.key and --values v1,v2,...\n");
-        return ACBB_EXIT_INPUT;
-    }
-    acbb_scene base;
-    if ((rc = acbb_cli_load_scene(a, &base))) return rc;
-    acbb_cli_point *pts = NULL;
-    size_t n = 0;
-    if ((rc = sweep_points(a, &base, &pts, &n))) return rc;
-    run_points(pts, n, jobs);
-
-    if (a->val[CLI_OPT_CSV]) {
-        acbb_cli_file csv = { 0 };
-        rc = acbb_cli_file_open(&csv, a->val[CLI_OPT_CSV]);
-        if (!rc) {
-            acbb_cli_sweep_csv(&csv.out, param, pts, n);
-            rc = acbb_cli_file_close(&csv);
-        }
-    }
-    acbb_cli_out o;
-    acbb_cli_out_init(&o, stdout);
-    if (a->val[CLI_OPT_JSON]) acbb_cli_sweep_json(&o, param, pts, n);
-    else acbb_cli_sweep_table(&o, param, pts, n);
-    rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
-    if (!points_ok(pts, n)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
-    free(pts);
-    return rc;
 }
 
 /* ---- acbb study ---- */

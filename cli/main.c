@@ -16,6 +16,7 @@
 #include "tui.h"
 #include "report.h"
 #include "new.h"
+#include "sweep.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -47,10 +48,21 @@ const acbb_cli_command acbb_cli_commands[] = {
       "lines stay; new keys go at the end of their section. The file is replaced\n"
       "atomically, and only if the edited scene is valid.\n",
       SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_edit },
-    { "sweep", NULL, "PRESET", "one run per value of a parameter, in parallel",
-      "e.g. acbb sweep 7008C --param operating.axial_load_N --values 200,500,1000\n",
-      SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS), 1, 1, 0,
-      acbb_cli_cmd_sweep },
+    { "sweep", NULL, "PRESET", "runs over a grid of parameter values, on every core",
+      "e.g. acbb sweep 7008C --grid operating.axial_load_N=200,500,1000 \\\n"
+      "       --grid operating.inner_speed_rpm=2000:16000:8 --jsonl out.jsonl\n"
+      "The cartesian product of the --grid dimensions, point index row-major (the\n"
+      "first --grid slowest). --jsonl/--csv get one record per point as it finishes;\n"
+      "running the same command again resumes (points in the file are skipped).\n"
+      "Shards: --shard K/N on N machines, then `acbb merge`. --param/--values alone:\n"
+      "one dimension, printed as a table (or --json, --csv) at the end.\n",
+      SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
+      O(SHARD) | O(MAX_POINTS), 1, 1, 0, acbb_cli_cmd_sweep },
+    { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
+      "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
+      "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
+      "byte. JSONL or CSV (not mixed); OUT - is stdout.\n",
+      0, 2, CLI_MAX_POS, -1, acbb_cli_cmd_merge },
     { "study", NULL, "PRESET", "TE vs WTE: with and without thermal expansion",
       "Loads 50..1000 N at the preset's speed, speeds 2000..16000 rpm at 100 N\n"
       "and at 1000 N.\n",

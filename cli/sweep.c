@@ -1,0 +1,282 @@
+/* acbb CLI — `acbb sweep`: a grid of points run by the engine's sweep pool
+ * (include/acbb/sweep.h), streamed as each point finishes (sweep.h), or,
+ * for the 1-D `--param K --values V` form alone, the table / JSON / CSV of
+ * output.h once every point is in. */
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/measure.h"
+#include "commands.h"
+#include "common.h"
+#include "exit.h"
+#include "output.h"
+#include "sweep.h"
+
+/* Ctrl-C: stop cleanly, every finished point already in the file. */
+static atomic_int stop_flag;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    atomic_store(&stop_flag, 1);
+}
+
+typedef struct {
+    FILE *f;
+    const char *path;
+    acbb_cli_rec_format fmt;
+    int own;                   /* fclose it */
+} sweep_sink;
+
+typedef struct {
+    const acbb_sweep *grid;
+    sweep_sink sink[2];
+    size_t n_sinks;
+    size_t total, done, failed;
+    long nonfinite;
+    int write_error;
+    int progress;              /* stderr is a terminal */
+    double t0, last_shown;
+    acbb_cli_point *pts;       /* the 1-D form: results kept for the table */
+    const acbb_scene *base;
+} sweep_run;
+
+static void show_progress(sweep_run *s, int final)
+{
+    double now = acbb_now_ms(), el = (now - s->t0) / 1e3;
+    if (!s->progress || (!final && now - s->last_shown < 200)) return;
+    s->last_shown = now;
+    double rate = el > 0 ? (double)s->done / el : 0;
+    double eta = rate > 0 ? (double)(s->total - s->done) / rate : 0;
+    fprintf(stderr, "\rsweep: %zu/%zu done, %zu failed, %.1f points/s, ETA %.0f s   %s",
+            s->done, s->total, s->failed, rate, eta, final ? "\n" : "");
+}
+
+/* Called by the engine under its lock, one point at a time. */
+static void on_point(void *ctx, const acbb_sweep_result *r)
+{
+    sweep_run *s = ctx;
+    s->done++;
+    s->failed += !(r->have_snap && r->snap.state == ACBB_RUN_CONVERGED);
+    for (size_t k = 0; k < s->n_sinks; k++) {
+        sweep_sink *o = &s->sink[k];
+        s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, s->grid, r);
+        if (fflush(o->f) != 0 || ferror(o->f)) s->write_error = 1;
+    }
+    if (s->pts) {
+        acbb_cli_point *p = &s->pts[r->index];
+        snprintf(p->value, sizeof p->value, "%s", acbb_sweep_value(s->grid, r->index, 0));
+        acbb_error err = { { 0 } };
+        acbb_sweep_scene(s->grid, s->base, r->index, &p->scene, &err);
+        p->status = r->status;
+        p->have_snap = r->have_snap;
+        snprintf(p->message, sizeof p->message, "%s", r->message);
+        p->wall_ms = r->wall_ms;
+        p->snap = r->snap;
+    }
+    show_progress(s, 0);
+}
+
+/* The grid from --param/--values (first) and every --grid. */
+static int build_grid(const acbb_cli_args *a, acbb_sweep *g)
+{
+    acbb_error err = { { 0 } };
+    if (a->val[CLI_OPT_PARAM] || a->val[CLI_OPT_VALUES]) {
+        if (!a->val[CLI_OPT_PARAM] || !a->val[CLI_OPT_VALUES]) {
+            fprintf(stderr, "acbb: sweep: --param and --values go together\n");
+            return ACBB_EXIT_INPUT;
+        }
+        size_t len = strlen(a->val[CLI_OPT_PARAM]) + strlen(a->val[CLI_OPT_VALUES]) + 2;
+        char *spec = malloc(len);
+        if (!spec) return ACBB_EXIT_INTERNAL;
+        snprintf(spec, len, "%s=%s", a->val[CLI_OPT_PARAM], a->val[CLI_OPT_VALUES]);
+        acbb_status st = acbb_sweep_add(g, spec, &err);
+        free(spec);
+        if (st != ACBB_OK) goto bad;
+    }
+    for (size_t i = 0; i < a->n_grids; i++)
+        if (acbb_sweep_add(g, a->grids[i], &err) != ACBB_OK) goto bad;
+    if (acbb_sweep_n_dims(g) > 0) return 0;
+    fprintf(stderr, "acbb: sweep: needs --grid section.key=v1,v2,... (repeatable) or "
+                    "--param section.key and --values v1,v2,...\n");
+    return ACBB_EXIT_INPUT;
+bad:
+    fprintf(stderr, "acbb: sweep: %s\n", err.msg);
+    return ACBB_EXIT_INPUT;
+}
+
+/* "K/N", 1 <= K <= N. */
+static int parse_shard(const acbb_cli_args *a, acbb_sweep_opts *o)
+{
+    const char *t = a->val[CLI_OPT_SHARD];
+    if (!t) return 0;
+    char *end = NULL;
+    unsigned long k = strtoul(t, &end, 10), n = 0;
+    if (end != t && *end == '/') {
+        const char *t2 = end + 1;
+        n = strtoul(t2, &end, 10);
+        if (end == t2) n = 0;
+    }
+    if (t[0] == '-' || *end || k < 1 || n < 1 || k > n || n > 1000000) {
+        fprintf(stderr, "acbb: sweep: --shard %s: expected K/N with 1 <= K <= N <= 1000000\n", t);
+        return ACBB_EXIT_INPUT;
+    }
+    o->shard_k = k;
+    o->shard_n = n;
+    return 0;
+}
+
+/* The 1-D form refuses a bad value before running anything (exit 2). */
+static int check_values(const acbb_sweep *g, const acbb_scene *base, const char *param)
+{
+    for (size_t i = 0; i < acbb_sweep_n_points(g); i++) {
+        acbb_scene sc;
+        acbb_error err = { { 0 } };
+        acbb_status st = acbb_sweep_scene(g, base, i, &sc, &err);
+        if (st != ACBB_OK) {
+            fprintf(stderr, "acbb: --param %s=%s: %s\n", param, acbb_sweep_value(g, i, 0),
+                    acbb_cli_err_text(&err, st));
+            return ACBB_EXIT_INPUT;
+        }
+    }
+    return 0;
+}
+
+static int legacy_output(const acbb_cli_args *a, const acbb_cli_point *pts, size_t n)
+{
+    const char *param = a->val[CLI_OPT_PARAM];
+    int rc = 0;
+    if (a->val[CLI_OPT_CSV]) {
+        acbb_cli_file csv = { 0 };
+        rc = acbb_cli_file_open(&csv, a->val[CLI_OPT_CSV]);
+        if (!rc) {
+            acbb_cli_sweep_csv(&csv.out, param, pts, n);
+            rc = acbb_cli_file_close(&csv);
+        }
+    }
+    acbb_cli_out o;
+    acbb_cli_out_init(&o, stdout);
+    if (a->val[CLI_OPT_JSON]) acbb_cli_sweep_json(&o, param, pts, n);
+    else acbb_cli_sweep_table(&o, param, pts, n);
+    rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
+    for (size_t i = 0; i < n; i++)
+        if (!acbb_cli_point_ok(&pts[i])) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    return rc;
+}
+
+/* Open --jsonl / --csv for streaming; an existing file is resumed. */
+static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
+                     unsigned char *count)
+{
+    sweep_sink *o = &s->sink[s->n_sinks];
+    o->path = path;
+    o->fmt = fmt;
+    if (strcmp(path, "-") == 0) {
+        o->f = stdout;
+        if (fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(stdout, s->grid, 1);
+        s->n_sinks++; /* nothing to resume */
+        return 0;
+    }
+    o->f = fopen(path, "a+");
+    if (!o->f) {
+        fprintf(stderr, "acbb: sweep: %s: cannot open for writing\n", path);
+        return ACBB_EXIT_INPUT;
+    }
+    o->own = 1;
+    s->n_sinks++;
+    size_t found = 0;
+    int rc = acbb_cli_sweep_resume(o->f, path, fmt, s->grid, count, &found);
+    if (!rc && found && s->progress)
+        fprintf(stderr, "sweep: %s: resuming, %zu point%s already there\n", path, found,
+                found == 1 ? "" : "s");
+    return rc;
+}
+
+static int close_sinks(sweep_run *s)
+{
+    int rc = s->write_error ? ACBB_EXIT_INPUT : 0;
+    for (size_t k = 0; k < s->n_sinks; k++) {
+        if (s->sink[k].own && fclose(s->sink[k].f) != 0) rc = ACBB_EXIT_INPUT;
+        if (!s->sink[k].own && fflush(s->sink[k].f) != 0) rc = ACBB_EXIT_INPUT;
+    }
+    if (rc) fprintf(stderr, "acbb: sweep: an output file could not be written\n");
+    return rc;
+}
+
+/* Streaming: the points of the shard not yet in every output file. */
+static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *base,
+                        acbb_sweep_opts *o)
+{
+    unsigned char *count = calloc(s->total ? s->total : 1, 1);
+    if (!count) return ACBB_EXIT_INTERNAL;
+    int rc = 0;
+    if (a->val[CLI_OPT_JSONL]) rc = open_sink(s, a->val[CLI_OPT_JSONL], ACBB_CLI_REC_JSONL, count);
+    if (!rc && a->val[CLI_OPT_CSV]) rc = open_sink(s, a->val[CLI_OPT_CSV], ACBB_CLI_REC_CSV, count);
+    if (!rc && s->n_sinks == 0) rc = open_sink(s, "-", ACBB_CLI_REC_JSONL, count);
+    size_t n_files = 0;
+    for (size_t k = 0; k < s->n_sinks; k++) n_files += (size_t)s->sink[k].own;
+    /* A point is done when every output file has it. */
+    for (size_t i = 0; i < s->total; i++) count[i] = n_files && count[i] >= n_files;
+    o->skip = count;
+    struct sigaction sa = { .sa_handler = on_signal }, old_int, old_term;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    if (!rc) {
+        s->total = acbb_sweep_n_todo(s->grid, o);
+        s->t0 = acbb_now_ms();
+        acbb_status st = acbb_sweep_run(s->grid, base, o, NULL);
+        show_progress(s, 1);
+        if (st == ACBB_CANCELLED) {
+            fprintf(stderr, "acbb: sweep: interrupted after %zu points; run the same command "
+                            "again to resume\n", s->done);
+            rc = ACBB_EXIT_INTERNAL;
+        } else if (st != ACBB_OK) {
+            rc = acbb_cli_exit_for(st);
+        }
+    }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    rc = acbb_cli_worst(rc, close_sinks(s));
+    if (s->nonfinite) rc = acbb_cli_worst(rc, acbb_cli_stdout_check(s->nonfinite));
+    if (s->failed) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    free(count);
+    return rc;
+}
+
+int acbb_cli_cmd_sweep(const acbb_cli_args *a)
+{
+    long jobs, max_points;
+    int rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_MAX_POINTS, 0, 1, ACBB_SWEEP_MAX_POINTS, &max_points);
+    acbb_sweep_opts o = { .jobs = (int)jobs, .max_points = (size_t)max_points,
+                          .cancel = &stop_flag, .done = on_point };
+    if (!rc) rc = parse_shard(a, &o);
+    acbb_sweep *g = NULL;
+    if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;
+    if (!rc) rc = build_grid(a, g);
+    acbb_scene base;
+    if (!rc) rc = acbb_cli_load_scene(a, &base);
+    if (rc) {
+        acbb_sweep_free(g);
+        return rc;
+    }
+    sweep_run s = { .grid = g, .total = acbb_sweep_n_points(g), .base = &base,
+                    .progress = isatty(STDERR_FILENO) };
+    o.ctx = &s;
+    bool legacy = a->n_grids == 0 && !a->val[CLI_OPT_JSONL] && !a->val[CLI_OPT_SHARD] &&
+                  !a->val[CLI_OPT_MAX_POINTS];
+    if (!legacy) {
+        rc = sweep_stream(a, &s, &base, &o);
+    } else if (!(rc = check_values(g, &base, a->val[CLI_OPT_PARAM]))) {
+        s.pts = calloc(s.total, sizeof *s.pts);
+        s.progress = 0;
+        if (!s.pts) rc = ACBB_EXIT_INTERNAL;
+        else if (acbb_sweep_run(g, &base, &o, NULL) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;
+        else rc = legacy_output(a, s.pts, s.total);
+        free(s.pts);
+    }
+    acbb_sweep_free(g);
+    return rc;
+}

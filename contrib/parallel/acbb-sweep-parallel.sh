@@ -1,0 +1,39 @@
+#!/bin/sh
+# acbb sweep in N shards through GNU parallel, on this machine or on many
+# over ssh, then merged into OUTDIR/sweep.jsonl (the canonical table, equal
+# byte for byte to one machine's `acbb merge OUT sweep.jsonl`).
+#
+#   acbb-sweep-parallel.sh N OUTDIR PRESET [acbb sweep options]
+#
+# Environment:
+#   SSHLOGIN   GNU parallel's --sshlogin, e.g. "1/node1,1/node2" (one shard
+#              at a time per host; acbb uses every core of it). acbb and the
+#              preset must exist on every host; OUTDIR is created under the
+#              same path there and each shard file is copied back (--return).
+#   ACBB       the acbb binary (default: acbb)
+#   ACBB_JOBS  threads per shard (default: every CPU; set 1 when N shards
+#              share one machine)
+# A shard that fails can be re-run with the same command: it resumes.
+set -u
+n=${1:?usage: acbb-sweep-parallel.sh N OUTDIR PRESET [sweep options]}
+out=${2:?usage: acbb-sweep-parallel.sh N OUTDIR PRESET [sweep options]}
+shift 2
+ACBB=${ACBB:-acbb}
+mkdir -p "$out"
+jobs=${ACBB_JOBS:+--jobs $ACBB_JOBS}
+if [ -n "${SSHLOGIN:-}" ]; then
+    # shellcheck disable=SC2086
+    parallel --will-cite -q --sshlogin "$SSHLOGIN" --workdir . --return "$out/shard-{}.jsonl" \
+        sh -c 'mkdir -p "$1" && shift && exec "$@"' sh "$out" \
+        "$ACBB" sweep "$@" --shard "{}/$n" $jobs --jsonl "$out/shard-{}.jsonl" ::: $(seq "$n")
+else
+    # shellcheck disable=SC2086
+    parallel --will-cite -q -j "$n" "$ACBB" sweep "$@" --shard "{}/$n" $jobs \
+        --jsonl "$out/shard-{}.jsonl" ::: $(seq "$n")
+fi
+rc=$?
+# parallel's exit status counts failed shards; exit 3 (a point that did not
+# converge) is recorded in the files, so merge whatever is there.
+"$ACBB" merge "$out/sweep.jsonl" "$out"/shard-*.jsonl || exit $?
+[ "$rc" -eq 0 ] || echo "acbb-sweep-parallel: $rc shard(s) exited non-zero (3: points that did not converge)" >&2
+exit 0

@@ -1,0 +1,97 @@
+/* acbb — sweeps in N dimensions: a grid of scene edits, its cartesian
+ * product, shards of it, and a pool of worker threads running the points.
+ *
+ * A grid is a list of dimensions, each a scene key (section.key, preset
+ * units, as acbb_scene_set) with its values: "key=v1,v2,..." (the text as
+ * given) or "key=lo:hi:n" (n evenly spaced values, both ends included,
+ * printed %.10g). Point i of the product is numbered row-major: the first
+ * dimension varies slowest, the last fastest, so the index names the point
+ * on every machine. Shard K of N holds the points with i % N == K - 1.
+ *
+ * acbb_sweep_run runs points on `jobs` threads through the one run loop
+ * (acbb_sim_drive). Each Sim is private to its thread and the engine has
+ * no global mutable state, so a point's result does not depend on the
+ * thread count or on which machine ran it. The workers share one atomic
+ * counter and take the one lock only to hand a finished point to `done`
+ * (the client's writer): a point costs milliseconds, the hand-off
+ * microseconds.
+ *
+ * Ownership: acbb_sweep_new allocates a grid that acbb_sweep_free
+ * releases; value strings returned are owned by the grid. */
+#ifndef ACBB_SWEEP_H
+#define ACBB_SWEEP_H
+
+#include <stdatomic.h>
+#include <stddef.h>
+#include "acbb/scene.h"
+#include "acbb/sim.h"
+#include "acbb/status.h"
+
+#define ACBB_SWEEP_MAX_DIMS 8
+#define ACBB_SWEEP_MAX_VALUES 100000    /* per dimension */
+#define ACBB_SWEEP_MAX_POINTS 100000000 /* the whole product */
+#define ACBB_SWEEP_KEY 64
+#define ACBB_SWEEP_VALUE 64
+
+typedef struct acbb_sweep acbb_sweep;
+
+acbb_status acbb_sweep_new(acbb_sweep **out);
+void acbb_sweep_free(acbb_sweep *g);
+
+/* Add a dimension from "key=v1,v2,..." or "key=lo:hi:n". The key must be a
+ * scene key; the values are not checked against the key's range here (a
+ * bad value is that point's failure, recorded by the run). Errors
+ * (ACBB_EINVAL with a message): no '=', empty or over-long value, a range
+ * that is not two finite numbers and a whole n in 1..MAX_VALUES, a key
+ * given twice, too many dimensions or points. */
+acbb_status acbb_sweep_add(acbb_sweep *g, const char *spec, acbb_error *err);
+
+size_t acbb_sweep_n_dims(const acbb_sweep *g);
+const char *acbb_sweep_key(const acbb_sweep *g, size_t dim);
+size_t acbb_sweep_n_values(const acbb_sweep *g, size_t dim);
+size_t acbb_sweep_n_points(const acbb_sweep *g);
+/* Dimension dim's value text at point `index`. */
+const char *acbb_sweep_value(const acbb_sweep *g, size_t index, size_t dim);
+
+/* `base` with point `index`'s edits applied (first failing edit reported). */
+acbb_status acbb_sweep_scene(const acbb_sweep *g, const acbb_scene *base, size_t index,
+                             acbb_scene *out, acbb_error *err);
+
+/* Shard k (1-based) of n holds index i when i % n == k - 1; n <= 1: all. */
+int acbb_sweep_in_shard(size_t index, size_t k, size_t n);
+
+/* One finished point. status: the edit or set-up failure when !have_snap,
+ * else the run's final status (snap.state says converged or not). */
+typedef struct {
+    size_t index;
+    acbb_status status;
+    int have_snap;
+    char message[512];      /* the edit / set-up message when !have_snap */
+    double wall_ms;         /* edits + set-up + run, CLOCK_MONOTONIC */
+    acbb_snapshot snap;
+} acbb_sweep_result;
+
+/* Called with the lock held, one point at a time, in completion order. */
+typedef void (*acbb_sweep_done_fn)(void *ctx, const acbb_sweep_result *r);
+
+typedef struct {
+    int jobs;                      /* threads; <= 0: one per CPU */
+    size_t shard_k, shard_n;       /* shard_n <= 1: every point */
+    const unsigned char *skip;     /* skip[i] != 0: point i is done already (may be NULL) */
+    size_t max_points;             /* run at most this many (0: no limit) */
+    const atomic_int *cancel;      /* set: stop; cancelled points are not reported */
+    acbb_sweep_done_fn done;
+    void *ctx;
+} acbb_sweep_opts;
+
+/* Run the points of the shard not skipped, lowest index first. Returns
+ * ACBB_OK (failed points are results, not errors), ACBB_ENOMEM, or
+ * ACBB_CANCELLED when `cancel` stopped it. *n_run (may be NULL) receives
+ * how many points were reported. */
+acbb_status acbb_sweep_run(const acbb_sweep *g, const acbb_scene *base,
+                           const acbb_sweep_opts *o, size_t *n_run);
+
+/* How many points acbb_sweep_run would run with these options. */
+size_t acbb_sweep_n_todo(const acbb_sweep *g, const acbb_sweep_opts *o);
+
+#endif
