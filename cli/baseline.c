@@ -96,6 +96,7 @@ static void print_row(const cJSON *r)
 {
     const cJSON *a = cJSON_GetObjectItem(r, "baseline"), *b = cJSON_GetObjectItem(r, "now");
     const char *p = cJSON_GetObjectItem(r, "path")->valuestring;
+    if (strncmp(p, "scene.keys.", 11) == 0) p += 11; /* the inputs block says what it is */
     if (cJSON_IsNumber(a)) {
         const cJSON *pct = cJSON_GetObjectItem(r, "change_pct");
         printf("  %-34.34s %12.6g %12.6g %+11.4g", p, a->valuedouble, b->valuedouble,
@@ -125,7 +126,8 @@ static void print_table(const cJSON *rows, const char *path)
         const cJSON *r;
         cJSON_ArrayForEach(r, rows) {
             const char *p = cJSON_GetObjectItem(r, "path")->valuestring;
-            bool input = strncmp(p, "scene.", 6) == 0;
+            bool input = strncmp(p, "scene.keys.", 11) == 0;
+            if (strncmp(p, "scene.", 6) == 0 && !input) continue; /* the short echo repeats it */
             bool brief = strncmp(p, "balls[", 6) != 0 || strncmp(p, "balls[0]", 8) == 0;
             if (input == (pass == 0) && brief && !strstr(p, "nodes[")) print_row(r);
         }

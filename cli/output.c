@@ -307,6 +307,16 @@ static void json_scene(acbb_cli_out *o, const acbb_scene *sc)
     j_num(o, "radial_load_N", sc->radial_load);
     j_bool(o, "thermal_expansion", sc->thermal_expansion);
     j_str(o, "model", acbb_model_level_name(sc->model));
+    /* Every key of the schema in preset units: the run's full input. */
+    j_open(o, "keys", '{', false);
+    for (size_t i = 0; i < acbb_scene_field_count(); i++) {
+        const acbb_field_info *fi = acbb_scene_field(i);
+        char key[96], val[128];
+        snprintf(key, sizeof key, "%s.%s", fi->section, fi->key);
+        acbb_scene_field_format(sc, i, val, sizeof val);
+        j_value_text(o, key, val);
+    }
+    j_close(o, '}');
     j_close(o, '}');
 }
 
@@ -324,6 +334,12 @@ static void json_ball(acbb_cli_out *o, const acbb_ball_view *b)
     j_num(o, "spin_o_radps", b->spin_o);
     j_num(o, "film_i_um", b->film_i * CLI_UM);
     j_num(o, "film_o_um", b->film_o * CLI_UM);
+    j_num(o, "pmax_i_GPa", b->pmax_i * 1e-9);
+    j_num(o, "pmax_o_GPa", b->pmax_o * 1e-9);
+    j_num(o, "a_i_mm", b->a_i * 1e3);
+    j_num(o, "b_i_mm", b->b_i * 1e3);
+    j_num(o, "a_o_mm", b->a_o * 1e3);
+    j_num(o, "b_o_mm", b->b_o * 1e3);
     j_num(o, "hmin_i_um", b->hmin_i * CLI_UM);
     j_num(o, "hmin_o_um", b->hmin_o * CLI_UM);
     j_num(o, "omega_m_radps", b->omega_m);

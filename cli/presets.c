@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include "exit.h"
 #include "presets.h"
+#include "acbb/preset_info.h"
 
 /* Set by meson (meson.build); the fallbacks keep a bare compile working. */
 #ifndef ACBB_PRESET_DIR
@@ -127,23 +128,39 @@ static int cmp_str(const void *x, const void *y)
     return strcmp(*(char *const *)x, *(char *const *)y);
 }
 
-/* First line whose first non-blank character is ';' or '#', marker and
- * blanks stripped. */
-static void first_comment(const char *path, char *buf, size_t n)
+/* Text from a file, with control characters shown as \xNN so a preset
+ * cannot drive the terminal. */
+static void put_safe(const char *t, size_t max)
 {
-    snprintf(buf, n, "(no description)");
-    FILE *f = fopen(path, "r");
-    if (!f) return;
-    char line[512];
-    while (fgets(line, sizeof line, f)) {
-        char *p = line + strspn(line, " \t");
-        if (*p != ';' && *p != '#') continue;
-        p += strspn(p, ";# \t");
-        p[strcspn(p, "\r\n")] = '\0';
-        snprintf(buf, n, "%s", p);
-        break;
+    for (size_t i = 0; t[i] && i < max; i++) {
+        unsigned char c = (unsigned char)t[i];
+        if (c < 0x20 || c == 0x7f) printf("\\x%02x", c);
+        else putchar(c);
     }
-    fclose(f);
+}
+
+/* The "Look at:" paragraph wrapped at 78 columns under the preset. */
+static void put_wrapped(const char *label, const char *text)
+{
+    const int indent = 6, width = 78;
+    printf("%*s%s", indent, "", label);
+    int col = indent + (int)strlen(label);
+    const char *p = text;
+    while (*p) {
+        size_t w = strcspn(p, " ");
+        if (col + 1 + (int)w > width && col > indent + (int)strlen(label)) {
+            printf("\n%*s", indent + 2, "");
+            col = indent + 2;
+        } else if (p != text) {
+            putchar(' ');
+            col++;
+        }
+        put_safe(p, w);
+        col += (int)w;
+        p += w;
+        p += strspn(p, " ");
+    }
+    putchar('\n');
 }
 
 /* The *.ini names in `dir`, sorted; NULL with *n = 0 when none. */
@@ -178,16 +195,25 @@ static void list_dir(const char *dir, const acbb_cli_preset_dir *dirs, size_t be
     size_t n;
     char **names = ini_names(dir, &n);
     for (size_t i = 0; i < n; i++) {
-        char path[CLI_PATH_MAX + 256], desc[256], other[CLI_PATH_MAX + 256];
+        char path[CLI_PATH_MAX + 256], other[CLI_PATH_MAX + 256];
         snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        first_comment(path, desc, sizeof desc);
+        acbb_preset_info info;
+        if (acbb_preset_info_read(path, &info, NULL) != ACBB_OK || !info.title[0])
+            snprintf(info.title, sizeof info.title, "(no description)");
         const char *shadow = NULL;
         for (size_t k = 0; k < before && !shadow; k++) {
             snprintf(other, sizeof other, "%s/%s", dirs[k].path, names[i]);
             if (is_file(other)) shadow = dirs[k].path;
         }
-        printf("  %-30s  %s%s%s\n", names[i], shadow ? "(shadowed by " : "", shadow ? shadow : desc,
-               shadow ? ")" : "");
+        printf("  %s", names[i]);
+        if (shadow) {
+            printf("  (shadowed by %s)\n", shadow);
+        } else {
+            putchar('\n');
+            put_wrapped("", info.title);
+            if (info.look_at[0]) put_wrapped("look at: ", info.look_at);
+            if (info.expect[0]) printf("      expect: %s\n", info.expect);
+        }
         free(names[i]);
     }
     if (n == 0) puts("  (no presets)");

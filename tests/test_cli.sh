@@ -399,7 +399,7 @@ has "$TMP/same.txt" "(no value changed)" "the same scene against its own baselin
 "$ACBB" run presets/7008C.ini --set operating.axial_load_N=500 --baseline "$TMP/csv.json" \
     >"$TMP/what.txt" 2>"$TMP/err"
 code $? 0 "run --baseline with an edit exits 0"
-grep -q 'scene.axial_load_N  *1000  *500  *-500  *-50.00%' "$TMP/what.txt"
+grep -q 'operating.axial_load_N  *1000  *500  *-500  *-50.00%' "$TMP/what.txt"
 t $? "the edited input is listed with its absolute and relative change"
 grep -q '^  losses_W.total .*-' "$TMP/what.txt"
 t $? "a lower load lowers the total loss (negative change)"

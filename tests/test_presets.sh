@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The teaching library: every shipped preset says what it is, what to look
+# at and how its run ends ("Expect:"), and its run ends that way.
+# $1 = the acbb binary.
+. "$(dirname "$0")/tap.sh"
+ACBB=$1
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+n_presets=$(ls presets/*.ini | wc -l)
+[ "$n_presets" -ge 12 ]
+t $? "at least 12 presets ship ($n_presets: 8 teaching scenes and the seed cases)"
+
+"$ACBB" presets >"$TMP/list" 2>&1
+for f in presets/*.ini; do
+    name=$(basename "$f")
+    expect=$(sed -n 's/^; Expect: *\([a-z_]*\).*/\1/p' "$f" | head -n 1)
+    grep -q '^; Look at:' "$f" && [ -n "$expect" ]
+    t $? "$name: has a 'Look at:' paragraph and an 'Expect:' status ($expect)"
+    grep -A3 -x "  $name" "$TMP/list" | grep -q 'look at:'
+    t $? "$name: acbb presets shows what to look at"
+    start=$(date +%s%N)
+    "$ACBB" run "$f" --json >"$TMP/out.json" 2>/dev/null
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    got=$(jq -r .status "$TMP/out.json")
+    [ "$got" = "$expect" ]
+    t $? "$name: runs to its documented status ($got, want $expect; ${ms} ms)"
+done
+
+# The scenes say true things: a few of their stated numbers, checked.
+"$ACBB" run presets/hertz-contact.ini --json >"$TMP/h.json" 2>/dev/null
+jq -e '((.balls[0].Qi_N - 153.5) | if . < 0 then -. else . end) < 0.1
+    and .balls[0].pmax_i_GPa > .balls[0].pmax_o_GPa' "$TMP/h.json" >/dev/null
+t $? "hertz-contact: Q = Fx / (Z sin alpha) = 153.5 N, inner pmax above outer"
+"$ACBB" run presets/angle-split.ini --json >"$TMP/a.json" 2>/dev/null
+jq -e '.balls[0].alpha_i_deg > .balls[0].alpha_o_deg + 5' "$TMP/a.json" >/dev/null
+t $? "angle-split: alpha_i exceeds alpha_o by more than 5 deg at 16 000 rpm"
+"$ACBB" run presets/warm-shaft.ini --json >"$TMP/w.json" 2>/dev/null
+"$ACBB" run presets/warm-shaft.ini --set effects.thermal_expansion=off --json >"$TMP/ww.json" 2>/dev/null
+jq -e --slurpfile w "$TMP/ww.json" '.squeeze_um.net > 0 and .balls[0].Qi_N > $w[0].balls[0].Qi_N' \
+    "$TMP/w.json" >/dev/null
+t $? "warm-shaft: the net squeeze is positive and TE raises Qi over WTE"
+"$ACBB" run presets/te-wte-heavy.ini --json >"$TMP/hv.json" 2>/dev/null
+jq -e '.squeeze_um.net < 0' "$TMP/hv.json" >/dev/null
+t $? "te-wte-heavy: the net squeeze is negative (TE loosens at the seed's boundaries)"
+
+tap_done
