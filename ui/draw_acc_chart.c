@@ -100,16 +100,7 @@ static void plot_points(acbb_app *a, acbb_rect r, const acbb_acc_chart *m)
             }
         acbb_chart_plot(c, xs, ys, cnt, k);
     }
-    for (int row = 0; row < c->h; row++) {
-        move(r.y + 1 + row, r.x + LABEL_W);
-        for (int col = 0; col < c->w; col++) {
-            char g[8];
-            int owner = acbb_chart_cell(c, row, col, a->term.g.utf8, g);
-            acbb_role_on(a, owner >= 0 ? series_role[owner % 3] : ACBB_ROLE_NORMAL);
-            addstr(g);
-        }
-    }
-    acbb_role_on(a, ACBB_ROLE_NORMAL);
+    acbb_chart_blit(a, c, r.y + 1, r.x + LABEL_W, series_role, 3);
 }
 
 void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r)
