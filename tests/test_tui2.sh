@@ -94,10 +94,14 @@ wait_for "x1000"
 keys r
 wait_for "eta" 10
 ok $? "while running the status line shows an ETA at 80 columns"
-bad=0; eta_ok=1; sampled=""
+bad=0; sampled=""; ytop=""; shrank=0
 i=0
 while [ $i -lt 400 ]; do
     st=$(status_line)
+    # The chart's top y label (the row under its title) may only grow.
+    y=$(screen | sed -n '/Temperature \[C\]/{n;s/^ *\([0-9.]*\) C.*/\1/p;}')
+    if [ -n "$y" ] && [ -n "$ytop" ] && awk -v a="$y" -v b="$ytop" 'BEGIN { exit !(a < b) }'; then shrank=1; fi
+    [ -n "$y" ] && ytop=$y
     case $st in
     running*100%*) bad=1 ;;
     running*) # first sample past a quarter of the run: wall + eta
@@ -114,6 +118,8 @@ while [ $i -lt 400 ]; do
 done
 [ $bad -eq 0 ]
 ok $? "the status line never says 100% while the run is still running"
+[ $shrank -eq 0 ] && [ -n "$ytop" ]
+ok $? "the chart's y axis only widened during the run (top label ends at $ytop C)"
 total=$(status_line | sed -n 's/.* wall \([0-9.]*\)s .*/\1/p')
 status_line | grep -q "100% done"
 ok $? "converged: 100% done"

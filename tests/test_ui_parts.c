@@ -10,6 +10,7 @@
 
 #include "tap.h"
 #include "acc_chart.h"
+#include "bench.h"
 #include "chart.h"
 #include "editor.h"
 #include "layout.h"
@@ -345,8 +346,33 @@ static void test_acc_chart(void)
     ok(strcmp(b, "contact_grid=4") == 0, "setting label: contact_grid=4");
 }
 
+/* The recommendation does not follow timing noise: of two settings within
+ * tolerance, the one earlier in the (cheapest-first) plan is picked even
+ * when its measured time came out longer. */
+static void test_bench_frontier(void)
+{
+    static acbb_accuracy_row rows[4];
+    const double err[4] = { 0.02, 0.005, 0.002, 0.0 }, wall[4] = { 30, 50, 40, 200 };
+    memset(rows, 0, sizeof rows);
+    for (int i = 0; i < 4; i++) {
+        rows[i].knob = ACBB_KNOB_CONTACT_GRID;
+        rows[i].status = ACBB_OK;
+        rows[i].is_reference = i == 3;
+        rows[i].e_loss = rows[i].e_T = err[i];
+        rows[i].wall_ms = wall[i];
+    }
+    long by_time[ACBB_KNOB_COUNT], by_plan[ACBB_KNOB_COUNT];
+    acbb_accuracy_frontier(rows, 4, ACBB_ACCURACY_FRONTIER_TOL, by_time);
+    acbb_bench_frontier(rows, 4, by_plan);
+    ok(by_time[ACBB_KNOB_CONTACT_GRID] == 2 && by_plan[ACBB_KNOB_CONTACT_GRID] == 1,
+       "frontier: by measured time picks row %ld (noise), by plan order row %ld (the cheaper setting)",
+       by_time[ACBB_KNOB_CONTACT_GRID], by_plan[ACBB_KNOB_CONTACT_GRID]);
+    ok(rows[1].wall_ms == 50 && rows[2].wall_ms == 40, "frontier: the rows' times are left as measured");
+}
+
 int main(void)
 {
+    test_bench_frontier();
     test_layout();
     test_progress();
     test_chart();
