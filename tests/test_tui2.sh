@@ -81,12 +81,34 @@ wait_for "teach.ini*"
 after=$(screen | grep "thermal_expansion" | head -1)
 ! screen | grep -q "unknown key" && [ "$before" != "$after" ]
 ok $? "> cycles the value the header advertises (no 'unknown key')"
+# The mouse wheel (an X10 report, button 5) moves the editor cursor.
+keys Home
+wait_for "bearing." 3 >/dev/null
+first=$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)
+keys -l "$(printf '\033[Ma((')"
+i=0
+while [ $i -lt 40 ] && [ "$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)" = "$first" ]; do sleep 0.05; i=$((i + 1)); done
+now=$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)
+[ -n "$first" ] && [ -n "$now" ] && [ "$now" != "$first" ]
+ok $? "the mouse wheel moves the editor cursor ($first -> $now)"
 keys u
 wait_for "undone"
 ! screen | head -1 | grep -qF "teach.ini*"
 ok $? "u undoes the cycle: the scene is unmodified again"
 keys 1
 wait_for "Idle at ambient"
+
+# Nodes: / finds a node by name; the Plot screen answers > with the next kind.
+keys 2 / s h a f t Enter
+wait_for "/shaft  (n next"
+ok $? "/shaft on the Nodes screen finds the shaft node"
+keys 7
+wait_for "gnuplot preview: temperature" 20
+keys '>'
+wait_for "gnuplot preview: losses" 20
+! screen | grep -q "unknown key"
+ok $? "> on the Plot screen shows the next plot kind"
+keys 1
 
 # Run at x1000: the ETA, never 100% while running, then the chart.
 keys + +
