@@ -98,6 +98,17 @@ ok $? "u undoes the cycle: the scene is unmodified again"
 keys 1
 wait_for "Idle at ambient"
 
+# A long validation message is wrapped in the editor, not cut.
+keys 5 / i n n e r _ g r o o v e Enter
+wait_for "bearing.inner_groove_radius_mm:"
+keys Enter C-u 1 Enter
+wait_for "refused"
+screen | tr -s ' \n' ' ' | grep -q "must be >= 0.505 (MODEL.md section 11)"
+ok $? "a long refusal (groove curvature) is shown in full at 80 columns"
+keys n
+! screen | grep -q "unknown key"
+ok $? "n repeats the search (no 'unknown key')"
+
 # Nodes: / finds a node by name; the Plot screen answers > with the next kind.
 keys 2 / s h a f t Enter
 wait_for "/shaft  (n next"

@@ -185,7 +185,10 @@ int acbb_app_search_key(acbb_app *a, int ch, int in_help)
     switch (ch) {
     case '/': search_begin(a, in_help); return 1;
     case 'n': case 'N':
-        if (!in_help && !acbb_screen_current(a)->search) return 0;
+        if (!in_help && !acbb_screen_current(a)->search) {
+            search_begin(a, 0); /* says where / works */
+            return 1;
+        }
         a->search_help = in_help;
         search(a, ch == 'n' ? 1 : -1);
         return 1;

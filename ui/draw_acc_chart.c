@@ -58,7 +58,7 @@ static void y_labels(acbb_app *a, acbb_rect r, const acbb_chart *c)
     for (int d = (int)c->ymax - 1; d > (int)c->ymin && n < ACBB_CHART_MAX_H + 2; d--)
         if (d != ltol) order[n++] = d;
     used[c->h - 1] = 1;
-    acbb_put(a, r.y + 1 + c->h - 1, r.x, LABEL_W, ACBB_ROLE_DIM, "%6s", "0");
+    acbb_put(a, r.y + 1 + c->h - 1, r.x, LABEL_W, ACBB_ROLE_NORMAL, "%6s", "0");
     for (int i = 0; i < n; i++) {
         int row, col;
         if (!acbb_chart_locate(c, c->xmin, order[i], &row, &col) || used[row]) continue;
@@ -66,7 +66,7 @@ static void y_labels(acbb_app *a, acbb_rect r, const acbb_chart *c)
         used[row] = 1;
         char t[16];
         acbb_acc_fmt_pct_decade(order[i], t, sizeof t);
-        acbb_put(a, r.y + 1 + row, r.x, LABEL_W, ACBB_ROLE_DIM, "%6s", t);
+        acbb_put(a, r.y + 1 + row, r.x, LABEL_W, ACBB_ROLE_NORMAL, "%6s", t);
     }
 }
 
@@ -81,7 +81,7 @@ static void x_labels(acbb_app *a, acbb_rect r, const acbb_chart *c)
         int len = (int)strlen(t), x = r.x + LABEL_W + col;
         if (x + len > r.x + r.w) x = r.x + r.w - len;
         if (x < last_end + 1 && d != (int)c->xmin) continue;
-        acbb_put(a, y, x, len, ACBB_ROLE_DIM, "%s", t);
+        acbb_put(a, y, x, len, ACBB_ROLE_NORMAL, "%s", t);
         last_end = x + len;
     }
 }

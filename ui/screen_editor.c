@@ -8,7 +8,7 @@
 #include <strings.h>
 #include "screens.h"
 
-#define INFO_ROWS 4 /* help of the selected field (2 rows) + refusal (2 rows) */
+#define INFO_ROWS 4 /* help of the selected field (2 rows, 1 when a refusal takes 3) */
 
 static int list_rows(const acbb_app *a)
 {
@@ -51,15 +51,16 @@ static void draw(acbb_app *a)
     }
     const acbb_field_info *f = acbb_scene_field(e->cursor);
     int y = b.y + 1 + rows;
+    int help_rows = a->edit_error[0] ? 1 : 2;
     if (f) {
         char text[1024];
         snprintf(text, sizeof text, "%s.%s: %s", f->section, f->key, f->help);
-        acbb_put_wrap(a, y, b.x, b.w, 2, ACBB_ROLE_NORMAL, text);
+        acbb_put_wrap(a, y, b.x, b.w, help_rows, ACBB_ROLE_NORMAL, text);
     }
     if (a->edit_error[0]) {
         char text[600];
         snprintf(text, sizeof text, "refused: %s", a->edit_error);
-        acbb_put_wrap(a, y + 2, b.x, b.w, 2, ACBB_ROLE_ERROR, text);
+        acbb_put_wrap(a, y + help_rows, b.x, b.w, INFO_ROWS - help_rows, ACBB_ROLE_ERROR, text);
     }
 }
 
