@@ -235,6 +235,17 @@ wait_file "$TMP/teach" 10
     keys y; wait_file "$TMP/teach" 5; [ "$(cat "$TMP/teach" 2>/dev/null)" = "EXIT=0" ]; }
 ok $? "F10 quits"
 
+# ---- the presentation view with a baseline in the C locale, no colour ----
+TUI_ARGS="--pace 0" start "env LC_ALL=C NO_COLOR=1" ascii teach.ini
+wait_for "teach.ini"
+keys r
+wait_for "converged" 30
+keys m v
+wait_for "Qi +0.00"
+screen | grep -q "###" && ! screen | LC_ALL=C grep -q '[^ -~]'
+ok $? "C locale: the presentation view draws its digits in ASCII (#), with the baseline changes"
+keys q
+
 # ---- a failed run's reason, in full at 80 columns ----
 TUI_ARGS="--pace 0 --no-mouse" start "" hot hot.ini
 wait_for "hot.ini"

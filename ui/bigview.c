@@ -50,7 +50,7 @@ static void big_text(acbb_app *a, int y, int x, int maxw, acbb_role role, const 
 }
 
 typedef struct {
-    char label[64], value[32], delta[64];
+    char label[64], value[32], delta[112];
 } headline;
 
 /* The most loaded ball: its loads and angles are the ones a class asks about. */
@@ -81,10 +81,15 @@ static void headlines(acbb_app *a, headline h[4])
     for (int i = 0; i < 4; i++) h[i].delta[0] = '\0';
     if (!a->has_base || s->n_balls == 0) return;
     double amb = a->st.scene.ambient_C;
-    acbb_fmt_delta(s->T_outer_ring, b->T_outer_ring, b->T_outer_ring - amb, h[0].delta, 64);
-    acbb_fmt_delta(s->losses.total, b->losses.total, b->losses.total, h[1].delta, 64);
-    acbb_fmt_delta(v->Qi, vb->Qi, vb->Qi, h[2].delta, 64);
-    acbb_fmt_delta((v->alpha_i) * R2D, vb->alpha_i * R2D, vb->alpha_i * R2D, h[3].delta, 64);
+    acbb_fmt_delta(s->T_outer_ring, b->T_outer_ring, b->T_outer_ring - amb, h[0].delta, sizeof h[0].delta);
+    acbb_fmt_delta(s->losses.total, b->losses.total, b->losses.total, h[1].delta, sizeof h[1].delta);
+    char d[2][48];
+    acbb_fmt_delta(v->Qi, vb->Qi, vb->Qi, d[0], sizeof d[0]);
+    acbb_fmt_delta(v->Qo, vb->Qo, vb->Qo, d[1], sizeof d[1]);
+    snprintf(h[2].delta, sizeof h[2].delta, "Qi %s Qo %s", d[0], d[1]);
+    acbb_fmt_delta(v->alpha_i * R2D, vb->alpha_i * R2D, vb->alpha_i * R2D, d[0], sizeof d[0]);
+    acbb_fmt_delta(v->alpha_o * R2D, vb->alpha_o * R2D, vb->alpha_o * R2D, d[1], sizeof d[1]);
+    snprintf(h[3].delta, sizeof h[3].delta, "in %s out %s", d[0], d[1]);
 }
 
 void acbb_draw_bigview(acbb_app *a, acbb_rect r)
@@ -97,7 +102,8 @@ void acbb_draw_bigview(acbb_app *a, acbb_rect r)
         acbb_put(a, y, x, cw - 1, ACBB_ROLE_HEADER, "%s", h[i].label);
         big_text(a, y + 1, x + 1, cw - 2, ACBB_ROLE_NORMAL, h[i].value);
         if (h[i].delta[0]) /* the row under the digits */
-            acbb_put(a, y + 1 + GLYPH_H, x, cw - 1, ACBB_ROLE_WARN, "vs base %s", h[i].delta);
+            acbb_put(a, y + 1 + GLYPH_H, x, cw - 1, ACBB_ROLE_WARN, "%s%s", i < 2 ? "vs base " : "",
+                     h[i].delta);
     }
     int used = (4 / per_row) * ch;
     char text[512];
