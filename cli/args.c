@@ -28,7 +28,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_MODELS] = { "models", "M1,...",
                          "static quasi-static quasi-dynamic dynamic (default all available)" },
     [CLI_OPT_MD] = { "md", "FILE", "also write the report as Markdown" },
-    [CLI_OPT_PACE] = { "pace", "N", "steps per second (0 = flat out, the default)" },
+    [CLI_OPT_PACE] = { "pace", "N", "simulated seconds per wall second (default 200, 0 = flat out)" },
+    [CLI_OPT_NO_MOUSE] = { "no-mouse", NULL, "leave the mouse to the terminal (no clicks, no wheel)" },
     [CLI_OPT_PLOT_DIR] = { "plot-dir", "DIR", "where g writes PNG+SVG plots (default ./acbb-plots)" },
     [CLI_OPT_EXIT_AFTER_STEADY] = { "exit-after-steady", NULL,
                                     "start the run at once and exit when it ends "

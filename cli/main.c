@@ -35,7 +35,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "Environment: ACBB_TUI_EXIT_AFTER_STEADY=1 as --exit-after-steady;\n"
       "ACBB_TUI_ACCURACY_KNOBS=k1,k2 limits the knobs of the accuracy screen's\n"
       "benchmark (b). Inside, press ? for every key.\n",
-      O(PACE) | O(PLOT_DIR) | O(EXIT_AFTER_STEADY), 0, 1, -1, cmd_tui },
+      O(PACE) | O(PLOT_DIR) | O(EXIT_AFTER_STEADY) | O(NO_MOUSE), 0, 1, -1, cmd_tui },
     { "run", NULL, "PRESET", "run the coupled model to thermal steady state",
       "--csv writes one row per coupled step; --plot FILE.png writes the temperature\n"
       "plot there and the other kinds next to it (FILE-losses.png, ...).\n",
@@ -206,12 +206,13 @@ static int cmd_version(const acbb_cli_args *a)
 static int cmd_tui(const acbb_cli_args *a)
 {
     char path[CLI_PATH_MAX];
-    const char *argv[8] = { "tui" };
+    const char *argv[12] = { "tui" };
     int argc = 1;
     if (a->val[CLI_OPT_PACE]) argv[argc++] = "--pace", argv[argc++] = a->val[CLI_OPT_PACE];
     if (a->val[CLI_OPT_PLOT_DIR])
         argv[argc++] = "--plot-dir", argv[argc++] = a->val[CLI_OPT_PLOT_DIR];
     if (a->val[CLI_OPT_EXIT_AFTER_STEADY]) argv[argc++] = "--exit-after-steady";
+    if (a->val[CLI_OPT_NO_MOUSE]) argv[argc++] = "--no-mouse";
     const char *want = a->n_pos ? a->pos[0] : "7008C";
     if (acbb_cli_resolve_preset(want, path, sizeof path, false) == 0) argv[argc++] = path;
     else if (a->n_pos) argv[argc++] = want;   /* the TUI reports it */

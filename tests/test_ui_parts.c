@@ -10,6 +10,7 @@
 
 #include "tap.h"
 #include "acc_chart.h"
+#include "bench.h"
 #include "chart.h"
 #include "editor.h"
 #include "layout.h"
@@ -80,18 +81,57 @@ static void test_progress(void)
     acbb_progress p;
     acbb_progress_reset(&p);
     ok(!p.valid && p.eta_s < 0, "progress: unknown before the first residual");
-    acbb_progress_update(&p, 1.0, 0.0, 1e-4);
-    is_close(p.fraction, 0.0, 0, 1e-15, "progress: 0 at the first residual");
-    /* r: 1 -> 1e-2 in 2 s; tol 1e-4: half way on the log scale,
-     * ln(1e-2/1e-4) / (ln(1/1e-2) / 2 s) = 2 s left. */
-    acbb_progress_update(&p, 1e-2, 2.0, 1e-4);
-    is_close(p.fraction, 0.5, 1e-12, 0, "progress: ln(1/1e-2)/ln(1/1e-4) = 0.5");
-    is_close(p.eta_s, 2.0, 1e-12, 0, "progress: ETA extrapolates the log decay rate (2 s)");
-    acbb_progress_update(&p, 1e-5, 5.0, 1e-4);
-    ok(p.fraction == 1.0 && p.eta_s == 0.0, "progress: clamps at 1 below tolerance");
+    /* A single mode r = e^-t, tol e^-10: the run ends at t = 10 s; at 4 s
+     * the ETA is 6 s and the fraction 0.4 (elapsed / (elapsed + eta)). */
+    for (int k = 0; k <= 10; k++) acbb_progress_update(&p, exp(-0.05 * k), 0.05 * k, exp(-10.0));
+    ok(p.eta_s < 0, "progress: no ETA in the first half second (only fast modes are seen then)");
+    for (int k = 11; k <= 80; k++) acbb_progress_update(&p, exp(-0.05 * k), 0.05 * k, exp(-10.0));
+    is_close(p.eta_s, 6.0, 1e-9, 0, "progress: one mode: ETA 6 s at 4 s of a 10 s run");
+    is_close(p.fraction, 0.4, 1e-9, 0, "progress: fraction = elapsed / (elapsed + eta) = 0.4");
+    /* Two modes, r = 10 e^-5t + 0.01 e^-0.5t, tol 1e-4: the slow mode sets
+     * the end (t = 2 ln 100 = 9.21 s). At 4.6 s the mean decay rate since
+     * the start promises 1.2 s; the recent rate gives the 4.6 s left. */
+    acbb_progress_reset(&p);
+    double t;
+    for (t = 0; t <= 4.6; t += 0.05)
+        acbb_progress_update(&p, 10 * exp(-5 * t) + 0.01 * exp(-0.5 * t), t, 1e-4);
+    double left = 2 * log(100.0) - (t - 0.05);
+    is_close(p.eta_s, left, 0.1, 0, "progress: two modes: ETA within 10 % of the true time left");
+    acbb_progress_update(&p, 1e-5, 10.0, 1e-4);
+    ok(p.fraction < 1.0 && p.eta_s == 0.0,
+       "progress: below tolerance the fraction stays < 1 (100%% belongs to a finished run)");
 }
 
 /* ---- chart raster ---- */
+
+/* Nice axes: hand-worked ranges, and an axis fed its own range plus new
+ * data only widens (the Run chart must not jump from frame to frame). */
+static void test_nice(void)
+{
+    double lo, hi, st;
+    acbb_chart_nice(25.3, 33.8, 5, &lo, &hi, &st);
+    ok(lo == 25.0 && hi == 35.0 && st == 2.5, "nice: 25.3..33.8 -> 25..35 step 2.5 (got %g..%g step %g)",
+       lo, hi, st);
+    acbb_chart_nice(0.0, 3097.4, 5, &lo, &hi, &st);
+    ok(lo == 0.0 && hi == 4000.0 && st == 1000.0, "nice: 0..3097 s -> 0..4000 step 1000 (got %g..%g step %g)",
+       lo, hi, st);
+    double a, b, s2;
+    acbb_chart_nice(lo, hi, 5, &a, &b, &s2);
+    ok(a == lo && b == hi && s2 == st, "nice: a nice range maps to itself");
+    /* Grow a temperature series step by step: the range never shrinks and
+     * each frame's range holds the previous one. */
+    int widen_only = 1;
+    double plo = 25.0, phi = 25.0;
+    for (int k = 0; k < 200; k++) {
+        double T = 25.0 + 8.8 * (1 - exp(-k / 40.0)), nlo, nhi;
+        acbb_chart_nice(fmin(plo, T), fmax(phi, T), 5, &nlo, &nhi, &st);
+        if (k > 0 && (nlo > plo || nhi < phi)) widen_only = 0;
+        plo = nlo;
+        phi = nhi;
+    }
+    ok(widen_only && plo <= 25.0 && phi >= 33.8, "nice: a growing series widens the axis only (%g..%g)",
+       plo, phi);
+}
 
 static void test_chart(void)
 {
@@ -306,11 +346,37 @@ static void test_acc_chart(void)
     ok(strcmp(b, "contact_grid=4") == 0, "setting label: contact_grid=4");
 }
 
+/* The recommendation does not follow timing noise: of two settings within
+ * tolerance, the one earlier in the (cheapest-first) plan is picked even
+ * when its measured time came out longer. */
+static void test_bench_frontier(void)
+{
+    static acbb_accuracy_row rows[4];
+    const double err[4] = { 0.02, 0.005, 0.002, 0.0 }, wall[4] = { 30, 50, 40, 200 };
+    memset(rows, 0, sizeof rows);
+    for (int i = 0; i < 4; i++) {
+        rows[i].knob = ACBB_KNOB_CONTACT_GRID;
+        rows[i].status = ACBB_OK;
+        rows[i].is_reference = i == 3;
+        rows[i].e_loss = rows[i].e_T = err[i];
+        rows[i].wall_ms = wall[i];
+    }
+    long by_time[ACBB_KNOB_COUNT], by_plan[ACBB_KNOB_COUNT];
+    acbb_accuracy_frontier(rows, 4, ACBB_ACCURACY_FRONTIER_TOL, by_time);
+    acbb_bench_frontier(rows, 4, by_plan);
+    ok(by_time[ACBB_KNOB_CONTACT_GRID] == 2 && by_plan[ACBB_KNOB_CONTACT_GRID] == 1,
+       "frontier: by measured time picks row %ld (noise), by plan order row %ld (the cheaper setting)",
+       by_time[ACBB_KNOB_CONTACT_GRID], by_plan[ACBB_KNOB_CONTACT_GRID]);
+    ok(rows[1].wall_ms == 50 && rows[2].wall_ms == 40, "frontier: the rows' times are left as measured");
+}
+
 int main(void)
 {
+    test_bench_frontier();
     test_layout();
     test_progress();
     test_chart();
+    test_nice();
     test_editor();
     test_acc_layout();
     test_acc_chart();

@@ -21,7 +21,11 @@
 #define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
 #define HANGUP_SPINS 1000    /* stdin readable but no key, this often: the tty is gone */
 
-static const int pace_ladder[] = { 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 0 };
+/* Simulated seconds per wall second. The default, x200, shows the
+ * transients of the presets (2000-5000 simulated s) in 10-25 s of wall
+ * time: long enough to watch, short enough for a lesson. */
+static const int pace_ladder[] = { 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 0 };
+#define PACE_DEFAULT 200
 #define PACE_N (int)(sizeof pace_ladder / sizeof pace_ladder[0])
 
 int acbb_app_pace(int idx)
@@ -107,7 +111,7 @@ static void change_pace(acbb_app *a, int dir)
     if (a->pace_idx >= PACE_N) a->pace_idx = PACE_N - 1;
     int p = acbb_app_pace(a->pace_idx);
     acbb_worker_set_pace(a->worker, p);
-    if (p > 0) acbb_app_msg(a, ACBB_ROLE_NORMAL, "pace %d steps/s", p);
+    if (p > 0) acbb_app_msg(a, ACBB_ROLE_NORMAL, "pace x%d: %d simulated s per second", p, p);
     else acbb_app_msg(a, ACBB_ROLE_NORMAL, "pace: flat out");
 }
 
@@ -132,6 +136,66 @@ static void request_quit(acbb_app *a)
 
 /* ---- keys ---- */
 
+int acbb_app_polished(const acbb_app *a)
+{
+    return a->st.phase == ACBB_WORKER_DONE && a->st.snap.state == ACBB_RUN_CONVERGED && a->hist.n > 1;
+}
+
+/* m: pin the result on screen as the what-if baseline; M clears it. */
+static void baseline(acbb_app *a, int pin)
+{
+    if (!pin) {
+        a->has_base = 0;
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "baseline cleared");
+    } else if (!a->st.has_snapshot) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "no result to pin yet (r runs one)");
+    } else {
+        a->base = a->st.snap;
+        a->has_base = 1;
+        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned at t = %.0f s: the Run screen shows changes against it (M clears)",
+                     a->base.time);
+    }
+}
+
+/* `/` and n/N go to the screen's (or the help's) search. */
+static void search(acbb_app *a, int dir)
+{
+    if (!a->search[0]) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "no search yet: / types one");
+        return;
+    }
+    int found = a->search_help ? acbb_screen_help_search(a, a->search, dir)
+                               : acbb_screen_current(a)->search(a, a->search, dir);
+    if (found) acbb_app_msg(a, ACBB_ROLE_NORMAL, "/%s  (n next, N previous)", a->search);
+    else acbb_app_msg(a, ACBB_ROLE_WARN, "not found: %s", a->search);
+}
+
+static void search_begin(acbb_app *a, int in_help)
+{
+    if (!in_help && !acbb_screen_current(a)->search) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "/ searches the Edit and Nodes screens and the help (?)");
+        return;
+    }
+    a->search_help = in_help;
+    acbb_app_prompt(a, ACBB_PROMPT_SEARCH, "/", "");
+}
+
+int acbb_app_search_key(acbb_app *a, int ch, int in_help)
+{
+    switch (ch) {
+    case '/': search_begin(a, in_help); return 1;
+    case 'n': case 'N':
+        if (!in_help && !acbb_screen_current(a)->search) {
+            search_begin(a, 0); /* says where / works */
+            return 1;
+        }
+        a->search_help = in_help;
+        search(a, ch == 'n' ? 1 : -1);
+        return 1;
+    default: return 0;
+    }
+}
+
 static void global_key(acbb_app *a, int ch)
 {
     for (int i = 0; i < acbb_screen_count; i++)
@@ -142,8 +206,18 @@ static void global_key(acbb_app *a, int ch)
     switch (ch) {
     case '\t': acbb_screen_show(a, a->screen + 1); break;
     case KEY_BTAB: acbb_screen_show(a, a->screen - 1); break;
-    case '?': a->mode = ACBB_MODE_HELP; a->help_top = 0; break;
-    case 'q': request_quit(a); break;
+    case '?': case KEY_F(1): a->mode = ACBB_MODE_HELP; a->help_top = 0; break;
+    case 'q': case KEY_F(10): request_quit(a); break;
+    case 12: clearok(curscr, TRUE); break; /* Ctrl-L: redraw from scratch */
+    case 'v':
+        a->bigview = !a->bigview;
+        acbb_screen_show(a, acbb_screen_index(&acbb_screen_run));
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, a->bigview ? "presentation view (v: back)" : "panels view");
+        break;
+    case 'm': baseline(a, 1); break;
+    case 'M': baseline(a, 0); break;
+    case '/': case 'n': case 'N': acbb_app_search_key(a, ch, 0); break;
+    case KEY_MOUSE: acbb_app_mouse(a); break;
     case 'r': acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started (cold, edited scene)"); break;
     case ' ': case 'p': pause_or_resume(a); break;
     case 'x': acbb_app_post(a, ACBB_CMD_STOP, NULL, 0, "stopped"); break;
@@ -199,13 +273,23 @@ static void prompt_commit(acbb_app *a)
     case ACBB_PROMPT_OPEN:
         if (text[0]) acbb_app_open(a, text);
         break;
+    case ACBB_PROMPT_SEARCH:
+        if (a->search_help) a->mode = ACBB_MODE_HELP;
+        if (text[0]) {
+            snprintf(a->search, sizeof a->search, "%.63s", text);
+            search(a, 0);
+        }
+        break;
     }
 }
 
 static void prompt_key(acbb_app *a, int ch)
 {
     switch (ch) {
-    case 27: a->mode = ACBB_MODE_NORMAL; acbb_app_msg(a, ACBB_ROLE_NORMAL, "cancelled"); return;
+    case 27:
+        a->mode = a->prompt.kind == ACBB_PROMPT_SEARCH && a->search_help ? ACBB_MODE_HELP : ACBB_MODE_NORMAL;
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "cancelled");
+        return;
     case '\n': case '\r': case KEY_ENTER: prompt_commit(a); return;
     case KEY_BACKSPACE: case 127: case 8:
         if (a->prompt.len > 0) a->prompt.buf[--a->prompt.len] = '\0';
@@ -237,8 +321,16 @@ static void confirm_key(acbb_app *a, int ch)
     }
 }
 
-static void handle_key(acbb_app *a, int ch)
+void acbb_app_key(acbb_app *a, int ch)
 {
+    /* While the terminal is too small nothing is drawn, so no key may act
+     * unseen: only quitting, redrawing and resizing. */
+    if (a->lay.too_small) {
+        if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) confirm_key(a, ch);
+        else if (ch == 'q' || ch == KEY_F(10)) request_quit(a);
+        else if (ch == 12) clearok(curscr, TRUE);
+        return;
+    }
     switch (a->mode) {
     case ACBB_MODE_PROMPT: prompt_key(a, ch); return;
     case ACBB_MODE_CONFIRM: confirm_key(a, ch); return;
@@ -251,10 +343,10 @@ static void handle_key(acbb_app *a, int ch)
 
 /* ---- frame ---- */
 
-static const char *hint(const acbb_app *a)
+const char *acbb_app_hint(const acbb_app *a)
 {
     const char *h = acbb_screen_current(a)->hint;
-    return h ? h : "r run  space pause  x stop  +/- pace  a apply  t TE/WTE  g plots  ? help  q quit";
+    return h ? h : ACBB_RUN_HINT;
 }
 
 static void draw_message(acbb_app *a)
@@ -277,7 +369,7 @@ static void draw_message(acbb_app *a)
     } else if (a->msg[0]) {
         acbb_put(a, r.y, r.x, r.w, a->msg_role, "%s", a->msg);
     } else {
-        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s", hint(a));
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s", acbb_app_hint(a));
     }
 }
 
@@ -325,7 +417,10 @@ static void frame(acbb_app *a)
     if (a->lay.too_small) {
         acbb_put(a, 0, 0, cols, ACBB_ROLE_ERROR, "terminal too small: %dx%d, need %dx%d", cols, rows,
                  ACBB_LAYOUT_MIN_COLS, ACBB_LAYOUT_MIN_ROWS);
-        if (rows > 1) acbb_put(a, 1, 0, cols, ACBB_ROLE_NORMAL, "q quits");
+        if (rows > 1)
+            acbb_put(a, 1, 0, cols, ACBB_ROLE_NORMAL, "%s",
+                     a->mode == ACBB_MODE_CONFIRM ? "unsaved edits: quit anyway? y/n"
+                                                  : "keys wait until it is larger; q quits");
     } else {
         acbb_draw_title(a);
         draw_body(a);
@@ -395,7 +490,7 @@ static void read_keys(acbb_app *a, int *redraw, int *spins)
     int ch, got = 0;
     while ((ch = getch()) != ERR) {
         got = 1;
-        handle_key(a, ch);
+        acbb_app_key(a, ch);
         if (a->quit) break;
     }
     *spins = got ? 0 : *spins + 1;
@@ -468,7 +563,7 @@ int acbb_app_run(const acbb_app_options *opt)
     a->preview = preview;
     a->chart_by_time = 1;
     a->exit_after_steady = opt->exit_after_steady;
-    a->pace_idx = pace_index(opt->pace);
+    a->pace_idx = pace_index(opt->pace < 0 ? PACE_DEFAULT : opt->pace);
     a->acc_knobs = opt->acc_knobs;
     snprintf(a->plot_dir, sizeof a->plot_dir, "%s", opt->plot_dir ? opt->plot_dir : "./acbb-plots");
     load_initial(a, opt->preset);
@@ -480,6 +575,7 @@ int acbb_app_run(const acbb_app_options *opt)
         return 2;
     }
     int rc = 0;
+    if (!opt->no_mouse) a->mouse = acbb_term_mouse(&a->term);
     if (acbb_bench_new(&a->bench, &err) != ACBB_OK ||
         acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
         acbb_term_close(&a->term);

@@ -19,11 +19,22 @@ typedef enum {
     ACBB_MODE_NORMAL, ACBB_MODE_PROMPT, ACBB_MODE_CONFIRM, ACBB_MODE_HELP, ACBB_MODE_BROWSE
 } acbb_mode;
 
-typedef enum { ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN } acbb_prompt_kind;
+typedef enum { ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN, ACBB_PROMPT_SEARCH } acbb_prompt_kind;
 typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
 #define ACBB_PREVIEW_MAX 65536
+
+/* A chart's axis ranges kept between frames, so they only widen while
+ * `key` (run and x mode) stays the same (draw_chart.c). */
+typedef struct {
+    unsigned long key;
+    int valid;
+    double r[4];                   /* xlo, xhi, ylo, yhi */
+} acbb_axis_memo;
+
+#define ACBB_CHART_MEMOS 4
+#define ACBB_MAX_TABS 16
 
 typedef struct {
     acbb_term term;
@@ -72,15 +83,26 @@ typedef struct {
     int acc_top;                   /* first table row shown */
     int quit, exit_code;
     acbb_chart chart;              /* scratch raster */
+    acbb_axis_memo memo[ACBB_CHART_MEMOS]; /* Run chart, then the three history charts */
+    int bigview;                   /* Run screen: presentation view (v) */
+    int has_base;                  /* a baseline is pinned (m) */
+    acbb_snapshot base;            /* ... this result */
+    char search[64];               /* last / search */
+    int mouse;                     /* mouse reports on */
+    int search_help;               /* the / prompt searches the help */
+    int help_hit;                  /* help row of the last search hit */
+    int node_hit;                  /* Nodes: the node the last search found (-1: none) */
+    int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
 } acbb_app;
 
 /* Options from the command line. */
 typedef struct {
     const char *preset;            /* NULL: presets/7008C.ini */
     const char *plot_dir;          /* NULL: ./acbb-plots */
-    int pace;                      /* steps per second, 0 = flat out */
+    int pace;                      /* simulated s per wall s, 0 = flat out, -1 = the default */
     int exit_after_steady;
     unsigned acc_knobs;            /* accuracy plan knob mask (0 = all) */
+    int no_mouse;                  /* --no-mouse: never ask the terminal for mouse reports */
 } acbb_app_options;
 
 /* Run the TUI until the user quits; returns the exit code. */
@@ -89,7 +111,7 @@ int acbb_app_run(const acbb_app_options *opt);
 /* Message line (printf-style). */
 void acbb_app_msg(acbb_app *a, acbb_role role, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* Pace ladder: steps per second for index i (0 = flat out). */
+/* Pace ladder: simulated seconds per wall second for index i (0 = flat out). */
 int acbb_app_pace(int idx);
 /* Open a preset into the editor (asks first when there are unsaved edits). */
 void acbb_app_open(acbb_app *a, const char *path);
@@ -101,19 +123,50 @@ void acbb_role_on(acbb_app *a, acbb_role r);
 /* Print at (y, x), clipped to w columns, in role r. */
 void acbb_put(acbb_app *a, int y, int x, int w, acbb_role r, const char *fmt, ...)
     __attribute__((format(printf, 6, 7)));
+/* Text wrapped at spaces into rows of w columns, at most max_rows (the
+ * last one marked as cut if the text goes on); returns the rows drawn. */
+int acbb_put_wrap(acbb_app *a, int y, int x, int w, int max_rows, acbb_role r, const char *text);
+/* Rows acbb_put_wrap needs for the whole text. */
+int acbb_wrap_count(const char *text, int w);
 /* Horizontal bar of w cells filled to fraction f (eighths with UTF-8). */
 void acbb_bar(acbb_app *a, int y, int x, int w, double f, acbb_role r);
 void acbb_hrule(acbb_app *a, int y, int x, int w);
 /* Scroll keys (j k arrows PgUp PgDn Home) over n rows shown `page` at a
  * time: updates *top within [0, n - page]; returns 1 if ch was one of them. */
 int acbb_scroll_key(int ch, int page, int n, int *top);
-/* A chart in rect: title row, y labels on the left; up to 3 series. */
-void acbb_draw_chart(acbb_app *a, acbb_rect r, const char *title, const double *x,
-                     const double *const *ys, const char *const *names, int nser, size_t n);
+/* One chart: up to 3 series of n points against x (draw_chart.c). */
+typedef struct {
+    const char *title, *yunit, *xunit;
+    const double *x;
+    const double *const *ys;
+    const char *const *names;
+    int nser;
+    size_t n;
+    int polish;                    /* the last point is the steady solve: marked, not joined */
+    double floor_y;                /* a value the y axis must include (NAN: none) */
+    acbb_axis_memo *memo;          /* widen-only ranges; NULL: fit every frame */
+    unsigned long memo_key;
+} acbb_chart_spec;
+void acbb_chart_draw(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp);
+/* The raster's cells at (y, x), each in the role of the series that drew it. */
+void acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles);
+/* The Run screen's ring and ball temperatures chart. */
+void acbb_draw_temp_chart(acbb_app *a, acbb_rect r);
+/* 1 when the history ends with the converged run's steady solve. */
+int acbb_app_polished(const acbb_app *a);
+/* The presentation view: headline numbers in big digits, chart below (bigview.c). */
+void acbb_draw_bigview(acbb_app *a, acbb_rect r);
+/* ---- the Run screen's words (screen_run.c) ---- */
+void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role);
+void acbb_run_outer_label(const acbb_snapshot *s, char *buf, size_t n);
+/* "+1.23 +4.5%": v against base, the percentage of |ref|. */
+void acbb_fmt_delta(double v, double base, double ref, char *buf, size_t n);
 /* The accuracy screen's error-vs-time chart of a->bst in rect (draw_acc_chart.c). */
 void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r);
 /* "1h02m", "12.3s", "--" for unknown. */
 void acbb_fmt_duration(double s, char *buf, size_t n);
+/* "x200" (simulated seconds per wall second) or "max" for 0. */
+void acbb_fmt_pace(int pace, char *buf, size_t n);
 
 /* ---- the bars around every screen (bars.c) ---- */
 void acbb_draw_title(acbb_app *a);
@@ -135,6 +188,17 @@ void acbb_screen_accuracy_follow(acbb_app *a);
 /* The `?` screen, generated from the table (a mode, not a tab). */
 void acbb_screen_help_draw(acbb_app *a);
 int acbb_screen_help_key(acbb_app *a, int ch);
+/* `/` n N: search keys on the current screen (in_help: the help); 1 if used. */
+int acbb_app_search_key(acbb_app *a, int ch, int in_help);
+/* Search the help rows for text (help screen). */
+int acbb_screen_help_search(acbb_app *a, const char *text, int dir);
+/* Handle one key as if typed (the mouse presses keys this way). */
+void acbb_app_key(acbb_app *a, int ch);
+/* A mouse event is waiting (KEY_MOUSE): act on it (mouse.c). */
+void acbb_app_mouse(acbb_app *a);
+/* The message-row hint of the current screen. */
+const char *acbb_app_hint(const acbb_app *a);
+#define ACBB_RUN_HINT "r run  space pause  x stop  +/- pace  v view  m base  g plots  ? help  q quit"
 /* Post a command to the worker, saying so on the message line (app.c). */
 void acbb_app_post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int warm, const char *what);
 

@@ -34,6 +34,10 @@ void acbb_draw_title(acbb_app *a)
         acbb_role rr = a->screen == i ? ACBB_ROLE_TAB : ACBB_ROLE_TITLE;
         /* Monochrome: brackets mark the current tab as well as bold. */
         acbb_put(a, r.y, x, r.x + r.w - x, rr, a->screen == i ? "[%s]" : " %s ", tab);
+        if (i < ACBB_MAX_TABS) { /* where a mouse click opens this tab */
+            a->tab_x0[i] = x;
+            a->tab_x1[i] = x + (int)strlen(tab) + 2;
+        }
         x += (int)strlen(tab) + 2;
     }
     int room = r.x + r.w - x - 1;
@@ -68,38 +72,65 @@ static void phase_text(const acbb_app *a, char *buf, size_t n)
         snprintf(buf, n, "%s", acbb_worker_phase_name(a->st.phase));
 }
 
+/* The pace as the user thinks of it: simulated seconds per wall second. */
+void acbb_fmt_pace(int pace, char *buf, size_t n)
+{
+    if (pace > 0) snprintf(buf, n, "x%d", pace);
+    else snprintf(buf, n, "max");
+}
+
+/* The progress tail: an ETA only while the run is stepping; "100% done"
+ * only once it converged (issue: ETA kept by a stopped run, 100% while
+ * still running). */
+static void progress_tail(const acbb_app *a, double *f, char *tail, size_t n)
+{
+    const acbb_snapshot *s = &a->st.snap;
+    char eta[16];
+    acbb_fmt_duration(a->prog.eta_s, eta, sizeof eta);
+    *f = a->prog.fraction;
+    switch (a->st.phase) {
+    case ACBB_WORKER_RUNNING:
+        if (a->prog.valid && a->prog.eta_s == 0.0) snprintf(tail, n, "%2.0f%% finishing", 100 * *f);
+        else snprintf(tail, n, "%2.0f%% eta %s", 100 * *f, eta);
+        break;
+    case ACBB_WORKER_DONE:
+        if (s->state == ACBB_RUN_CONVERGED) {
+            *f = 1.0;
+            snprintf(tail, n, "100%% done");
+        } else snprintf(tail, n, "%2.0f%% failed", 100 * *f);
+        break;
+    case ACBB_WORKER_PAUSED: snprintf(tail, n, "%2.0f%% paused", 100 * *f); break;
+    case ACBB_WORKER_STOPPED: snprintf(tail, n, "%2.0f%% stopped", 100 * *f); break;
+    default: *f = 0.0; snprintf(tail, n, "not started"); break;
+    }
+}
+
 void acbb_draw_status(acbb_app *a)
 {
     acbb_rect r = a->lay.status;
     const acbb_snapshot *s = &a->st.snap;
-    char ph[32], wall[16], eta[16], pace[16], line[256];
+    char ph[32], wall[16], pace[16], line[256], rate[32] = "", tail[48];
     phase_text(a, ph, sizeof ph);
     acbb_fmt_duration(a->st.run_wall_s, wall, sizeof wall);
-    acbb_fmt_duration(a->prog.eta_s, eta, sizeof eta);
-    int p = acbb_worker_pace(a->worker); /* the atomic: current even while idle */
-    if (p > 0) snprintf(pace, sizeof pace, "%d/s", p);
-    else snprintf(pace, sizeof pace, "max");
+    acbb_fmt_pace(acbb_worker_pace(a->worker), pace, sizeof pace); /* the atomic: current even while idle */
     int x = r.x;
     acbb_put(a, r.y, x, r.w, phase_role(a), "%-9s", ph);
     x += 10;
-    snprintf(line, sizeof line, "it %ld t %.0fs wall %s %.0f st/s pace %s res %.1e",
-             s->iteration, s->time, wall, a->st.steps_per_s, pace, s->residual);
+    /* The step rate only where there is room: at 80 columns the progress
+     * bar and its ETA come first. */
+    if (r.w >= 100) snprintf(rate, sizeof rate, " %.0f st/s", a->st.steps_per_s);
+    snprintf(line, sizeof line, "it %ld t %.0fs wall %s%s %s res %.1e", s->iteration, s->time, wall,
+             rate, pace, s->residual);
+    double f;
+    progress_tail(a, &f, tail, sizeof tail);
+    int room = r.x + r.w - x - (int)strlen(line) - 1;
+    int bw = room - (int)strlen(tail) - 1;
+    if (bw > 10) bw = 10;
     acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", line);
     x += (int)strlen(line) + 1;
-    /* Progress to steady state on the log scale of the residual. */
-    int room = r.x + r.w - x;
-    if (room >= 14) {
-        double f = a->st.phase == ACBB_WORKER_DONE && s->state == ACBB_RUN_CONVERGED ? 1.0
-                                                                                      : a->prog.fraction;
-        char tail[32];
-        if (f >= 1.0) snprintf(tail, sizeof tail, "100%% done");
-        else snprintf(tail, sizeof tail, "%3.0f%% eta %s", 100 * f, eta);
-        int bw = room - (int)strlen(tail) - 1;
-        if (bw > 10) bw = 10;
-        if (bw >= 3) {
-            acbb_bar(a, r.y, x, bw, f, ACBB_ROLE_BAR);
-            x += bw + 1;
-        }
-        acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", tail);
+    if (bw >= 3) {
+        acbb_bar(a, r.y, x, bw, f, ACBB_ROLE_BAR);
+        x += bw + 1;
     }
+    acbb_put(a, r.y, x, r.x + r.w - x, ACBB_ROLE_NORMAL, "%s", tail);
 }

@@ -6,6 +6,7 @@
  * `opt` and `work` while it runs (written before pthread_create, read after
  * pthread_join); everything in `st` is behind `mu`. */
 #include <errno.h>
+#include <math.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
@@ -64,6 +65,18 @@ static void on_progress(void *ctx, size_t done, size_t total)
     wake_ui(b);
 }
 
+void acbb_bench_frontier(const acbb_accuracy_row *rows, size_t n, long picks[ACBB_KNOB_COUNT])
+{
+    acbb_accuracy_row *by_plan = malloc(n * sizeof *by_plan + 1);
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) picks[k] = -1;
+    if (!by_plan) return;
+    memcpy(by_plan, rows, n * sizeof *by_plan);
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(by_plan[i].wall_ms)) by_plan[i].wall_ms = (double)i; /* plan order */
+    acbb_accuracy_frontier(by_plan, n, ACBB_ACCURACY_FRONTIER_TOL, picks);
+    free(by_plan);
+}
+
 static void *bench_main(void *p)
 {
     acbb_bench *b = p;
@@ -73,7 +86,7 @@ static void *bench_main(void *p)
     acbb_status rc = acbb_accuracy_run(&b->scene, &b->opt, b->work, ACBB_BENCH_MAX_ROWS, &n,
                                        on_progress, b, &err);
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) picks[k] = -1;
-    if (rc == ACBB_OK) acbb_accuracy_frontier(b->work, n, ACBB_ACCURACY_FRONTIER_TOL, picks);
+    if (rc == ACBB_OK) acbb_bench_frontier(b->work, n, picks);
 
     pthread_mutex_lock(&b->mu);
     /* The final rows replace the published ones: only now are the errors known. */

@@ -48,6 +48,13 @@ typedef struct {
 
 typedef struct acbb_bench acbb_bench;
 
+/* The frontier the screen recommends: acbb_accuracy_frontier with each
+ * setting's cost taken as its place in the plan (cheapest-first by
+ * design), not its measured wall time, so repeated runs of the same plan
+ * recommend the same settings (two settings a few ms apart swapped with
+ * timing noise). rows[0..n) are left unchanged. */
+void acbb_bench_frontier(const acbb_accuracy_row *rows, size_t n, long picks[ACBB_KNOB_COUNT]);
+
 /* Create the hand-off (no thread yet). */
 acbb_status acbb_bench_new(acbb_bench **out, acbb_error *err);
 /* Cancel a running benchmark, join its thread, free everything. NULL is a no-op. */

@@ -106,6 +106,30 @@ int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf)
     return c->owner[row][col];
 }
 
+static double nice_step(double raw)
+{
+    double p = pow(10.0, floor(log10(raw))), f = raw / p;
+    double m = f <= 1.0 ? 1.0 : f <= 2.0 ? 2.0 : f <= 2.5 ? 2.5 : f <= 5.0 ? 5.0 : 10.0;
+    return m * p;
+}
+
+void acbb_chart_nice(double lo, double hi, int ticks, double *nlo, double *nhi, double *step)
+{
+    if (!isfinite(lo) || !isfinite(hi)) lo = hi = 0.0;
+    if (hi < lo) { double t = lo; lo = hi; hi = t; }
+    if (!(hi - lo > 1e-9 * fmax(1.0, fabs(hi)))) { /* flat: a unit-ish band around it */
+        double pad = fabs(lo) > 0 ? 0.05 * fabs(lo) : 1.0;
+        lo -= pad;
+        hi += pad;
+    }
+    if (ticks < 2) ticks = 2;
+    double s = nice_step((hi - lo) / (ticks - 1));
+    /* A small tolerance so an end already on a multiple stays put. */
+    *nlo = floor(lo / s + 1e-9) * s;
+    *nhi = ceil(hi / s - 1e-9) * s;
+    *step = s;
+}
+
 void acbb_chart_extend(const double *v, size_t n, double *lo, double *hi)
 {
     for (size_t k = 0; k < n; k++) {

@@ -31,6 +31,12 @@ int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf);
  * point (x, y); 0 (row/col unchanged) if the point is non-finite or outside
  * the ranges. Lets a caller write a marker where a point was plotted. */
 int acbb_chart_locate(const acbb_chart *c, double x, double y, int *row, int *col);
+/* A "nice" axis covering [lo, hi] with about `ticks` ticks: a step of
+ * 1, 2, 2.5 or 5 times a power of ten and ends on multiples of it
+ * (Heckbert, "Nice numbers for graph labels", Graphics Gems 1990).
+ * A nice range maps to itself, so feeding back the union of the last
+ * range and the data gives an axis that only widens and never jitters. */
+void acbb_chart_nice(double lo, double hi, int ticks, double *nlo, double *nhi, double *step);
 /* Smallest and largest finite value of v[0..n) into *lo, *hi (unchanged if none). */
 void acbb_chart_extend(const double *v, size_t n, double *lo, double *hi);
 

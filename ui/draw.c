@@ -45,6 +45,50 @@ void acbb_put(acbb_app *a, int y, int x, int w, acbb_role r, const char *fmt, ..
     acbb_role_on(a, ACBB_ROLE_NORMAL);
 }
 
+/* Byte length of the next line of at most w columns of s, broken at a
+ * space when there is one; *next is where the following line starts. */
+static size_t wrap_line(const char *s, int w, const char **next)
+{
+    size_t n = clip_bytes(s, w);
+    if (!s[n]) {
+        *next = s + n;
+        return n;
+    }
+    size_t cut = n;
+    while (cut > 0 && s[cut] != ' ') cut--;
+    if (cut == 0) cut = n; /* one long word: hard break */
+    const char *p = s + cut;
+    while (*p == ' ') p++;
+    *next = p;
+    return cut;
+}
+
+int acbb_wrap_count(const char *text, int w)
+{
+    int rows = 0;
+    if (w <= 0) return 0;
+    for (const char *p = text; *p; rows++) wrap_line(p, w, &p);
+    return rows;
+}
+
+int acbb_put_wrap(acbb_app *a, int y, int x, int w, int max_rows, acbb_role r, const char *text)
+{
+    int row = 0;
+    if (w <= 0) return 0;
+    for (const char *p = text; *p && row < max_rows; row++) {
+        const char *next;
+        size_t n = wrap_line(p, w, &next);
+        /* The last row that fits keeps the rest, marked as cut. */
+        if (row == max_rows - 1 && *next) {
+            acbb_put(a, y + row, x, w, r, "%.*s%s", (int)clip_bytes(p, w - 1), p, a->term.g.ellipsis);
+            return row + 1;
+        }
+        acbb_put(a, y + row, x, w, r, "%.*s", (int)n, p);
+        p = next;
+    }
+    return row;
+}
+
 void acbb_bar(acbb_app *a, int y, int x, int w, double f, acbb_role r)
 {
     if (w <= 0 || !isfinite(f)) return;
@@ -74,49 +118,6 @@ void acbb_fmt_duration(double s, char *buf, size_t n)
     else if (s < 60) snprintf(buf, n, "%.1fs", s);
     else if (s < 3600) snprintf(buf, n, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
     else snprintf(buf, n, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
-}
-
-#define LABEL_W 9 /* y-axis labels: "%8.4g " */
-
-void acbb_draw_chart(acbb_app *a, acbb_rect r, const char *title, const double *x,
-                     const double *const *ys, const char *const *names, int nser, size_t n)
-{
-    static const acbb_role series_role[3] = { ACBB_ROLE_SERIES1, ACBB_ROLE_SERIES2, ACBB_ROLE_WARN };
-    if (r.h < 3 || r.w < LABEL_W + 4) return;
-    double lo = INFINITY, hi = -INFINITY, xlo = INFINITY, xhi = -INFINITY;
-    for (int s = 0; s < nser; s++) acbb_chart_extend(ys[s], n, &lo, &hi);
-    acbb_chart_extend(x, n, &xlo, &xhi);
-
-    /* Title row: the name, the latest value of each series, the x range. */
-    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%s", title);
-    int col = r.x + (int)strlen(title) + 2;
-    for (int s = 0; s < nser && n > 0; s++) {
-        char item[96];
-        snprintf(item, sizeof item, "%s %.2f  ", names[s], ys[s][n - 1]);
-        if (col + (int)strlen(item) > r.x + r.w) break;
-        acbb_put(a, r.y, col, r.w - (col - r.x), series_role[s % 3], "%s", item);
-        col += (int)strlen(item);
-    }
-    if (n == 0 || !isfinite(lo)) {
-        acbb_put(a, r.y + 1, r.x + LABEL_W, r.w - LABEL_W, ACBB_ROLE_DIM, "(no data yet)");
-        return;
-    }
-    int ph = r.h - 1, pw = r.w - LABEL_W;
-    acbb_chart *c = &a->chart;
-    acbb_chart_init(c, pw, ph, xlo, xhi, lo, hi);
-    for (int s = 0; s < nser; s++) acbb_chart_plot(c, x, ys[s], n, s);
-    acbb_put(a, r.y + 1, r.x, LABEL_W, ACBB_ROLE_DIM, "%8.4g", c->ymax);
-    acbb_put(a, r.y + ph, r.x, LABEL_W, ACBB_ROLE_DIM, "%8.4g", c->ymin);
-    for (int row = 0; row < c->h; row++) {
-        move(r.y + 1 + row, r.x + LABEL_W);
-        for (int cc = 0; cc < c->w; cc++) {
-            char g[8];
-            int owner = acbb_chart_cell(c, row, cc, a->term.g.utf8, g);
-            acbb_role_on(a, owner >= 0 ? series_role[owner % 3] : ACBB_ROLE_NORMAL);
-            addstr(g);
-        }
-    }
-    acbb_role_on(a, ACBB_ROLE_NORMAL);
 }
 
 int acbb_scroll_key(int ch, int page, int n, int *top)

@@ -58,7 +58,7 @@ static void y_labels(acbb_app *a, acbb_rect r, const acbb_chart *c)
     for (int d = (int)c->ymax - 1; d > (int)c->ymin && n < ACBB_CHART_MAX_H + 2; d--)
         if (d != ltol) order[n++] = d;
     used[c->h - 1] = 1;
-    acbb_put(a, r.y + 1 + c->h - 1, r.x, LABEL_W, ACBB_ROLE_DIM, "%6s", "0");
+    acbb_put(a, r.y + 1 + c->h - 1, r.x, LABEL_W, ACBB_ROLE_NORMAL, "%6s", "0");
     for (int i = 0; i < n; i++) {
         int row, col;
         if (!acbb_chart_locate(c, c->xmin, order[i], &row, &col) || used[row]) continue;
@@ -66,7 +66,7 @@ static void y_labels(acbb_app *a, acbb_rect r, const acbb_chart *c)
         used[row] = 1;
         char t[16];
         acbb_acc_fmt_pct_decade(order[i], t, sizeof t);
-        acbb_put(a, r.y + 1 + row, r.x, LABEL_W, ACBB_ROLE_DIM, "%6s", t);
+        acbb_put(a, r.y + 1 + row, r.x, LABEL_W, ACBB_ROLE_NORMAL, "%6s", t);
     }
 }
 
@@ -81,7 +81,7 @@ static void x_labels(acbb_app *a, acbb_rect r, const acbb_chart *c)
         int len = (int)strlen(t), x = r.x + LABEL_W + col;
         if (x + len > r.x + r.w) x = r.x + r.w - len;
         if (x < last_end + 1 && d != (int)c->xmin) continue;
-        acbb_put(a, y, x, len, ACBB_ROLE_DIM, "%s", t);
+        acbb_put(a, y, x, len, ACBB_ROLE_NORMAL, "%s", t);
         last_end = x + len;
     }
 }
@@ -100,16 +100,7 @@ static void plot_points(acbb_app *a, acbb_rect r, const acbb_acc_chart *m)
             }
         acbb_chart_plot(c, xs, ys, cnt, k);
     }
-    for (int row = 0; row < c->h; row++) {
-        move(r.y + 1 + row, r.x + LABEL_W);
-        for (int col = 0; col < c->w; col++) {
-            char g[8];
-            int owner = acbb_chart_cell(c, row, col, a->term.g.utf8, g);
-            acbb_role_on(a, owner >= 0 ? series_role[owner % 3] : ACBB_ROLE_NORMAL);
-            addstr(g);
-        }
-    }
-    acbb_role_on(a, ACBB_ROLE_NORMAL);
+    acbb_chart_blit(a, c, r.y + 1, r.x + LABEL_W, series_role, 3);
 }
 
 void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r)

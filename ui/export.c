@@ -48,7 +48,8 @@ acbb_status acbb_export_plots(const char *dir, const acbb_history *h, const acbb
                               const char *title, int *written, acbb_error *err)
 {
     static const acbb_plot_kind kinds[] = { ACBB_PLOT_TEMPERATURE, ACBB_PLOT_LOSSES,
-                                            ACBB_PLOT_LOADS, ACBB_PLOT_ANGLES };
+                                            ACBB_PLOT_LOADS, ACBB_PLOT_ANGLES,
+                                            ACBB_PLOT_HISTORY_LOADS };
     *written = 0;
     acbb_status rc = make_dir(dir, err);
     if (rc != ACBB_OK) return rc;

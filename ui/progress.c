@@ -2,6 +2,11 @@
 #include <math.h>
 #include "progress.h"
 
+#define WINDOW_MIN_S 0.5  /* shortest window for the recent decay rate */
+#define WINDOW_FRAC 0.33  /* window = this share of the elapsed wall time */
+#define SETTLE_S (2 * WINDOW_MIN_S) /* wall time before any ETA */
+#define FRACTION_CAP 0.99 /* "100%" belongs to a run that has ended */
+
 void acbb_progress_reset(acbb_progress *p)
 {
     p->valid = 0;
@@ -9,25 +14,63 @@ void acbb_progress_reset(acbb_progress *p)
     p->wall0 = 0.0;
     p->fraction = 0.0;
     p->eta_s = -1.0;
+    p->n = 0;
+}
+
+/* Keep (t, ln r); when full, drop every other old sample (the window only
+ * needs coarse history). */
+static void keep(acbb_progress *p, double t, double lr)
+{
+    if (p->n > 0 && t <= p->t[p->n - 1]) { /* same frame: replace */
+        p->lr[p->n - 1] = lr;
+        return;
+    }
+    if (p->n == ACBB_PROGRESS_SAMPLES) {
+        for (int i = 0; i < ACBB_PROGRESS_SAMPLES / 2; i++) {
+            p->t[i] = p->t[2 * i];
+            p->lr[i] = p->lr[2 * i];
+        }
+        p->n = ACBB_PROGRESS_SAMPLES / 2;
+    }
+    p->t[p->n] = t;
+    p->lr[p->n] = lr;
+    p->n++;
+}
+
+/* Decay rate of ln r per wall second over the recent window (> 0 when the
+ * residual falls), 0 if unknown. */
+static double recent_rate(const acbb_progress *p)
+{
+    if (p->n < 2) return 0.0;
+    double now = p->t[p->n - 1], el = now - p->wall0;
+    double win = fmax(WINDOW_MIN_S, WINDOW_FRAC * el);
+    int i = p->n - 2;
+    while (i > 0 && now - p->t[i] < win) i--;
+    double dt = now - p->t[i];
+    return dt > 0 ? (p->lr[i] - p->lr[p->n - 1]) / dt : 0.0;
 }
 
 void acbb_progress_update(acbb_progress *p, double residual, double wall_s, double tol)
 {
-    if (!(residual > 0) || !(tol > 0) || !isfinite(residual)) return;
+    if (!(residual > 0) || !(tol > 0) || !isfinite(residual) || !isfinite(wall_s)) return;
     double lr = log(residual), lt = log(tol);
     if (!p->valid) {
         p->valid = 1;
         p->log_r0 = lr;
         p->wall0 = wall_s;
     }
-    double span = p->log_r0 - lt;
-    if (!(span > 0)) {
-        p->fraction = lr <= lt ? 1.0 : 0.0;
-        p->eta_s = -1.0;
+    keep(p, wall_s, lr);
+    double rate = recent_rate(p), el = wall_s - p->wall0;
+    if (lr <= lt) { /* below the tolerance: only the final steady solve is left */
+        p->eta_s = 0.0;
+        p->fraction = FRACTION_CAP;
         return;
     }
-    double f = (p->log_r0 - lr) / span;
-    p->fraction = f < 0 ? 0 : f > 1 ? 1 : f;
-    double dt = wall_s - p->wall0, done = p->log_r0 - lr;
-    p->eta_s = (dt > 0 && done > 0) ? (lr - lt > 0 ? (lr - lt) * dt / done : 0.0) : -1.0;
+    /* No ETA from the first instants: the fast modes alone decay then
+     * (a 5.5 s run promised to end at 1 s). */
+    p->eta_s = rate > 0 && el >= SETTLE_S ? (lr - lt) / rate : -1.0;
+    double f;
+    if (p->eta_s >= 0 && el > 0) f = el / (el + p->eta_s);
+    else f = p->log_r0 > lt ? (p->log_r0 - lr) / (p->log_r0 - lt) : 0.0;
+    p->fraction = f < 0 ? 0 : f > FRACTION_CAP ? FRACTION_CAP : f;
 }

@@ -105,7 +105,7 @@ static void draw_heading(acbb_app *a)
     switch (s->phase) {
     case ACBB_BENCH_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
-                 "b runs it on the edited scene, 1 run per setting; B adds dynamic (~1 min/run)");
+                 "b runs it on the edited scene, 1 run per setting; B adds the dynamic level (slow)");
         break;
     case ACBB_BENCH_RUNNING: {
         acbb_fmt_duration(1e-3 * acbb_now_ms() - s->started_s, el, sizeof el);

@@ -1,35 +1,43 @@
-/* acbb TUI — history charts of the whole run: outer-ring temperature,
- * total loss, and the contact loads of ball 0, against simulated time or
- * iteration. */
+/* acbb TUI — history charts of the whole run: temperatures, total loss,
+ * and the contact loads of ball 0, against simulated time or iteration. */
+#include <math.h>
 #include <stdio.h>
 #include "screens.h"
 
 static void draw(acbb_app *a)
 {
-    double x[ACBB_HISTORY_CAP], t5[ACBB_HISTORY_CAP], tb[ACBB_HISTORY_CAP];
-    double tot[ACBB_HISTORY_CAP], qi[ACBB_HISTORY_CAP], qo[ACBB_HISTORY_CAP];
+    double x[ACBB_HISTORY_CAP], y[5][ACBB_HISTORY_CAP]; /* 48 kB each: fine on the stack */
     size_t n = a->hist.n;
     for (size_t k = 0; k < n; k++) {
         const acbb_history_point *p = &a->hist.p[k];
         x[k] = a->chart_by_time ? p->time : (double)p->iteration;
-        t5[k] = p->T_outer_ring;
-        tb[k] = p->T_ball;
-        tot[k] = p->total;
-        qi[k] = p->Qi;
-        qo[k] = p->Qo;
+        y[0][k] = p->T_outer_ring;
+        y[1][k] = p->T_inner_ring;
+        y[2][k] = p->T_ball;
+        y[3][k] = p->total;
+        y[4][k] = p->Qi;
     }
-    char xr[64];
-    snprintf(xr, sizeof xr, "  [x: %s 0..%.0f, i toggles]", a->chart_by_time ? "time s" : "iteration",
-             n ? x[n - 1] : 0.0);
-    char title[3][128];
-    snprintf(title[0], sizeof title[0], "Temperature C%s", xr);
-    snprintf(title[1], sizeof title[1], "Total loss W");
-    snprintf(title[2], sizeof title[2], "Contact load N (ball 0)");
-    const double *s0[2] = { t5, tb }, *s1[1] = { tot }, *s2[2] = { qi, qo };
-    const char *n0[2] = { "outer ring", "ball" }, *n1[1] = { "total" }, *n2[2] = { "Qi", "Qo" };
-    acbb_draw_chart(a, a->lay.charts[0], title[0], x, s0, n0, 2, n);
-    acbb_draw_chart(a, a->lay.charts[1], title[1], x, s1, n1, 1, n);
-    acbb_draw_chart(a, a->lay.charts[2], title[2], x, s2, n2, 2, n);
+    double qo[ACBB_HISTORY_CAP];
+    for (size_t k = 0; k < n; k++) qo[k] = a->hist.p[k].Qo;
+    const double *s0[3] = { y[0], y[1], y[2] }, *s1[1] = { y[3] }, *s2[2] = { y[4], qo };
+    const char *n0[3] = { "outer ring", "inner ring", "ball" }, *n1[1] = { "total" },
+               *n2[2] = { "Qi", "Qo" };
+    const char *titles[3] = { "Temperature", "Total loss", "Contact load, ball 0" };
+    const char *units[3] = { "C", "W", "N" };
+    const double *const *ser[3] = { s0, s1, s2 };
+    const char *const *names[3] = { n0, n1, n2 };
+    const int nser[3] = { 3, 1, 2 };
+    const char *xunit = a->chart_by_time ? "s" : "iteration";
+    /* The memo key changes with the run and the x mode (i). */
+    unsigned long key = a->st.run_id * 2 + (unsigned long)a->chart_by_time;
+    for (int i = 0; i < 3; i++) {
+        acbb_chart_spec sp = { .title = titles[i], .yunit = units[i], .xunit = xunit, .x = x,
+                               .ys = ser[i], .names = names[i], .nser = nser[i], .n = n,
+                               .polish = acbb_app_polished(a),
+                               .floor_y = i == 0 ? a->st.scene.ambient_C : NAN,
+                               .memo = &a->memo[1 + i], .memo_key = key };
+        acbb_chart_draw(a, a->lay.charts[i], &sp);
+    }
 }
 
 static int on_key(acbb_app *a, int ch)

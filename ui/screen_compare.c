@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 #include "acbb/units.h"
 #include "screens.h"
 
@@ -11,7 +12,10 @@ typedef struct {
     const char *name;
     size_t off;      /* offset of a double in acbb_snapshot */
     double scale;
+    int detail;      /* 1: shown only when the body has room (the squeeze comes first) */
 } row_spec;
+
+#define ROOM_FOR_DETAIL 32 /* body rows that hold every row */
 
 static double field(const acbb_snapshot *s, size_t off)
 {
@@ -27,6 +31,36 @@ static void ball_row(acbb_app *a, int y, const acbb_compare_result *c, const cha
                                       : NAN;
     acbb_put(a, y, a->lay.body.x, a->lay.body.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f",
              name, v[0], v[1], v[0] - v[1]);
+}
+
+/* Why TE raises or lowers the loads, in numbers (MODEL.md 13): the
+ * squeeze terms of each variant in um, the net first, then one line that
+ * says what the sign means. Returns the next free row. */
+static int squeeze_rows(acbb_app *a, int y, const acbb_compare_result *c)
+{
+    const acbb_rect b = a->lay.body;
+    const row_spec rows[] = {
+        { "Squeeze net um", offsetof(acbb_snapshot, squeeze.net), 1e6, 0 },
+        { "  inner ring thermal", offsetof(acbb_snapshot, squeeze.inner_thermal), 1e6, 0 },
+        { "  inner centrifugal", offsetof(acbb_snapshot, squeeze.inner_centrifugal), 1e6, 0 },
+        { "  outer ring (-)", offsetof(acbb_snapshot, squeeze.outer), 1e6, 0 },
+        { "  ball", offsetof(acbb_snapshot, squeeze.ball), 1e6, 0 },
+    };
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0] && y < b.y + b.h; i++) {
+        double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
+        double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
+        acbb_put(a, y++, b.x, b.w, i == 0 ? ACBB_ROLE_HEADER : ACBB_ROLE_NORMAL,
+                 "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0, v1, v0 - v1);
+    }
+    if (y < b.y + b.h && c->phase == ACBB_CMP_DONE && c->ok[0]) {
+        double net = c->snap[0].squeeze.net * 1e6;
+        char text[256];
+        snprintf(text, sizeof text,
+                 "TE net %+.3f um: %s (net > 0 squeezes the balls: loads rise, angles fall; < 0 loosens)",
+                 net, net > 0 ? "the balls are squeezed, loads rise" : "the balls are loosened, loads fall");
+        y += acbb_put_wrap(a, y, b.x, b.w, b.y + b.h - y, ACBB_ROLE_OK, text);
+    }
+    return y;
 }
 
 static void draw(acbb_app *a)
@@ -52,21 +86,25 @@ static void draw(acbb_app *a)
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER, "%-24s %12s %12s %12s", "", "TE", "WTE", "TE-WTE");
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12s %12s", "status", st[0], st[1]);
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12s %12s", "iterations", it[0], it[1]);
+    char outer[48];
+    acbb_run_outer_label(&c->snap[0], outer, sizeof outer);
+    strcat(outer, " T C");
     const row_spec rows[] = {
-        { "Outer ring T (5) C", offsetof(acbb_snapshot, T_outer_ring), 1 },
-        { "Inner ring T C", offsetof(acbb_snapshot, T_inner_ring), 1 },
-        { "Ball T C", offsetof(acbb_snapshot, T_ball), 1 },
-        { "Housing T C", offsetof(acbb_snapshot, T_housing), 1 },
-        { "Total loss W", offsetof(acbb_snapshot, losses.total), 1 },
-        { "  shear P_L W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SHEAR]), 1 },
-        { "  slip P_t W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SLIP]), 1 },
-        { "  spin P_s W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SPIN]), 1 },
-        { "  rolling P_r W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_ROLLING]), 1 },
-        { "  drag P_v W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_DRAG]), 1 },
-        { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6 },
-        { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6 },
+        { outer, offsetof(acbb_snapshot, T_outer_ring), 1, 0 },
+        { "Inner ring T C", offsetof(acbb_snapshot, T_inner_ring), 1, 0 },
+        { "Ball T C", offsetof(acbb_snapshot, T_ball), 1, 0 },
+        { "Housing T C", offsetof(acbb_snapshot, T_housing), 1, 1 },
+        { "Total loss W", offsetof(acbb_snapshot, losses.total), 1, 0 },
+        { "  shear P_L W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SHEAR]), 1, 1 },
+        { "  slip P_t W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SLIP]), 1, 1 },
+        { "  spin P_s W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SPIN]), 1, 1 },
+        { "  rolling P_r W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_ROLLING]), 1, 1 },
+        { "  drag P_v W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_DRAG]), 1, 1 },
+        { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6, 0 },
+        { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6, 0 },
     };
     for (size_t i = 0; i < sizeof rows / sizeof rows[0] && y < b.y + b.h; i++) {
+        if (rows[i].detail && b.h < ROOM_FOR_DETAIL) continue;
         double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
         double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
         acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
@@ -77,8 +115,9 @@ static void draw(acbb_app *a)
     if (y < b.y + b.h) ball_row(a, y++, c, "Qo ball 0 N", offsetof(acbb_ball_view, Qo), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "alpha_i ball 0 deg", offsetof(acbb_ball_view, alpha_i), R2D);
     if (y < b.y + b.h) ball_row(a, y++, c, "alpha_o ball 0 deg", offsetof(acbb_ball_view, alpha_o), R2D);
+    y = squeeze_rows(a, y, c);
     if (c->message[0] && y < b.y + b.h)
-        acbb_put(a, y, b.x, b.w, ACBB_ROLE_ERROR, "%s", c->message);
+        acbb_put_wrap(a, y, b.x, b.w, b.y + b.h - y, ACBB_ROLE_ERROR, c->message);
 }
 
 const acbb_screen acbb_screen_compare = {

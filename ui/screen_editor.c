@@ -5,9 +5,10 @@
 #include <glob.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 #include "screens.h"
 
-#define INFO_ROWS 3 /* help of the selected field (2 rows) + refusal */
+#define INFO_ROWS 4 /* help of the selected field (2 rows, 1 when a refusal takes 3) */
 
 static int list_rows(const acbb_app *a)
 {
@@ -28,7 +29,7 @@ static void draw(acbb_app *a)
     acbb_editor *e = &a->ed;
     acbb_rect b = a->lay.body;
     keep_visible(a);
-    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%s%s  Enter edit  </> cycle  u undo  w save  W save as  o open",
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%s%s  Enter edit  </> cycle  / find  u undo  w save",
              e->path[0] ? e->path : "(built-in default)", e->modified ? " [modified]" : "");
     size_t n = acbb_scene_field_count();
     int rows = list_rows(a);
@@ -50,15 +51,17 @@ static void draw(acbb_app *a)
     }
     const acbb_field_info *f = acbb_scene_field(e->cursor);
     int y = b.y + 1 + rows;
+    int help_rows = a->edit_error[0] ? 1 : 2;
     if (f) {
-        acbb_put(a, y, b.x, b.w, ACBB_ROLE_DIM, "%s.%s: %s", f->section, f->key, f->help);
-        const char *h = f->help;
-        int first = b.w - (int)(strlen(f->section) + strlen(f->key) + 3);
-        if (first > 0 && (int)strlen(h) > first)
-            acbb_put(a, y + 1, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "%s", h + first);
+        char text[1024];
+        snprintf(text, sizeof text, "%s.%s: %s", f->section, f->key, f->help);
+        acbb_put_wrap(a, y, b.x, b.w, help_rows, ACBB_ROLE_NORMAL, text);
     }
-    if (a->edit_error[0])
-        acbb_put(a, y + 2, b.x, b.w, ACBB_ROLE_ERROR, "refused: %s", a->edit_error);
+    if (a->edit_error[0]) {
+        char text[600];
+        snprintf(text, sizeof text, "refused: %s", a->edit_error);
+        acbb_put_wrap(a, y + help_rows, b.x, b.w, INFO_ROWS - help_rows, ACBB_ROLE_ERROR, text);
+    }
 }
 
 static int on_key(acbb_app *a, int ch)
@@ -82,8 +85,8 @@ static int on_key(acbb_app *a, int ch)
         acbb_app_prompt(a, ACBB_PROMPT_VALUE, label, val);
         return 1;
     }
-    case KEY_LEFT: case KEY_RIGHT: case 'h': case 'l':
-        if (acbb_editor_cycle(e, e->cursor, ch == KEY_RIGHT || ch == 'l' ? 1 : -1, &err) != ACBB_OK) {
+    case KEY_LEFT: case KEY_RIGHT: case 'h': case 'l': case '<': case '>':
+        if (acbb_editor_cycle(e, e->cursor, ch == KEY_RIGHT || ch == 'l' || ch == '>' ? 1 : -1, &err) != ACBB_OK) {
             acbb_app_msg(a, ACBB_ROLE_WARN, "%s", err.msg);
         } else {
             a->edit_error[0] = '\0';
@@ -95,7 +98,44 @@ static int on_key(acbb_app *a, int ch)
     }
 }
 
+static int icontains(const char *hay, const char *needle)
+{
+    size_t len = strlen(needle);
+    for (; *hay; hay++)
+        if (strncasecmp(hay, needle, len) == 0) return 1;
+    return 0;
+}
+
+/* `/`: the next field from the cursor on whose section.key holds the text
+ * (any case); only if no key does, the next whose help does. */
+static int search(acbb_app *a, const char *text, int dir)
+{
+    acbb_editor *e = &a->ed;
+    size_t n = acbb_scene_field_count();
+    for (int in_help = 0; in_help < 2; in_help++)
+        for (size_t k = dir == 0 ? 0 : 1; k <= n; k++) {
+            size_t i = dir < 0 ? (e->cursor + n * 2 - k) % n : (e->cursor + k) % n;
+            const acbb_field_info *f = acbb_scene_field(i);
+            char hay[512];
+            snprintf(hay, sizeof hay, "%s.%s", f->section, f->key);
+            if (icontains(in_help ? f->help : hay, text)) {
+                e->cursor = i;
+                keep_visible(a);
+                return 1;
+            }
+        }
+    return 0;
+}
+
+static void click(acbb_app *a, int row, int col)
+{
+    (void)col;
+    size_t i = a->ed.top + (size_t)(row - 1);
+    if (row >= 1 && row <= list_rows(a) && i < acbb_scene_field_count()) a->ed.cursor = i;
+}
+
 static const acbb_help_line help[] = {
+    { "/  n  N", "find a key (e.g. /axial), next / previous" },
     { "j k arrows", "move (PgUp PgDn Home End)" },
     { "Enter  e", "type a value, Esc cancels" },
     { "< >  h l", "cycle on/off and choices" },
@@ -106,8 +146,9 @@ static const acbb_help_line help[] = {
 };
 
 const acbb_screen acbb_screen_edit = {
-    .name = "Edit", .key = '5', .draw = draw, .on_key = on_key, .help = help,
-    .hint = "Enter edit  </> cycle  u undo  w save  W save as  o open  a apply  ? help",
+    .name = "Edit", .key = '5', .draw = draw, .on_key = on_key, .help = help, .search = search,
+    .click = click,
+    .hint = "Enter edit  </> cycle  / find  u undo  w save  o open  a apply  ? help",
 };
 
 /* ---- preset browser ---- */

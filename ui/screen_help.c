@@ -5,6 +5,7 @@
 #include <curses.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 #include "screens.h"
 
 #define COL_W 40
@@ -13,21 +14,32 @@
 
 static const acbb_help_line global_help[] = {
     { "Tab  S-Tab", "next / previous screen" },
-    { "?", "this help" },
-    { "q  Ctrl-C", "quit (asks if unsaved)" },
+    { "?  F1", "this help" },
+    { "/  n  N", "search (Edit, Nodes, help); next / previous match" },
+    { "Esc", "clear the message; cancel a prompt" },
+    { "Ctrl-L", "redraw the whole screen" },
+    { "q  F10", "quit (asks if unsaved)" },
+    { "Ctrl-C", "quit, like q" },
+    { "mouse", "click a tab, a row or a key of the hint line; wheel scrolls (off: --no-mouse)" },
     { NULL, NULL },
 };
 
 static const acbb_help_line run_help[] = {
     { "r", "cold run of edited scene" },
-    { "space", "pause / resume" },
+    { "space  p", "pause / resume" },
     { "x", "stop the run" },
     { "R", "reset to ambient" },
     { "a", "apply edits warm (keep T)" },
     { "A", "apply edits, cold" },
-    { "+  -", "pace faster / slower" },
+    { "+ =  -", "pace faster / slower (simulated s per second, x200 to start)" },
+    { "v", "presentation view: big digits, chart below" },
+    { "m", "pin the result as what-if baseline: live values show their change" },
+    { "M", "clear the baseline" },
+    { "u", "undo the last edit" },
+    { "w  W  o", "save / save as / open a preset" },
+    { "b  B", "accuracy benchmark (B with the dynamic level)" },
     { "t", "TE vs WTE to steady state" },
-    { "g", "export PNG+SVG (gnuplot)" },
+    { "g", "export PNG+SVG (gnuplot) of the run" },
     { NULL, NULL },
 };
 
@@ -43,13 +55,36 @@ typedef struct {
     int n;
 } help_rows;
 
-static void add(help_rows *h, const char *keys, const char *what)
+static void add_row(help_rows *h, const char *keys, const char *what, int title)
 {
     if (h->n == HELP_MAX) return;
     help_row *r = &h->r[h->n++];
     snprintf(r->keys, sizeof r->keys, "%s", keys);
-    snprintf(r->what, sizeof r->what, "%s", what ? what : "");
-    r->title = what == NULL;
+    snprintf(r->what, sizeof r->what, "%s", what);
+    r->title = title;
+}
+
+/* A key's text wrapped at spaces into WHAT_W columns: never cut. */
+static void add(help_rows *h, const char *keys, const char *what)
+{
+    if (!what) {
+        add_row(h, keys, "", 1);
+        return;
+    }
+    const char *p = what;
+    do {
+        size_t n = strlen(p);
+        if (n > WHAT_W) {
+            n = WHAT_W;
+            while (n > 0 && p[n] != ' ') n--;
+            if (n == 0) n = WHAT_W;
+        }
+        char part[WHAT_W + 1];
+        snprintf(part, sizeof part, "%.*s", (int)n, p);
+        add_row(h, p == what ? keys : "", part, 0);
+        p += n;
+        while (*p == ' ') p++;
+    } while (*p);
 }
 
 static void add_lines(help_rows *h, const acbb_help_line *l)
@@ -100,28 +135,63 @@ void acbb_screen_help_draw(acbb_app *a)
     int ncol = b.w >= 2 * COL_W ? 2 : 1, per = b.h - 1;
     help_rows rows; /* about 16 kB: rebuilt per frame, cheap next to drawing */
     build(&rows);
-    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "Keys (j/k scroll, any other key closes)");
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "Keys (j/k scroll, / search, any other key closes)");
     for (int i = a->help_top; i < rows.n; i++) {
         int k = i - a->help_top, col = k / per, row = k % per;
         if (col >= ncol) break;
         int x = b.x + col * COL_W, y = b.y + 1 + row;
         const help_row *r = &rows.r[i];
+        int hit = a->search[0] && a->search_help && i == a->help_hit;
         if (r->title)
-            acbb_put(a, y, x, COL_W - 1, ACBB_ROLE_HEADER, "%s", r->keys);
+            acbb_put(a, y, x, COL_W - 1, hit ? ACBB_ROLE_SELECTED : ACBB_ROLE_HEADER, "%s", r->keys);
         else
-            acbb_put(a, y, x, COL_W - 1, ACBB_ROLE_NORMAL, " %-12s %s", r->keys, r->what);
+            acbb_put(a, y, x, COL_W - 1, hit ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL, " %-12s %s",
+                     r->keys, r->what);
     }
+}
+
+static int icontains(const char *hay, const char *needle)
+{
+    size_t n = strlen(needle);
+    for (; *hay; hay++)
+        if (strncasecmp(hay, needle, n) == 0) return 1;
+    return 0;
+}
+
+static int max_top(const acbb_app *a, int n)
+{
+    int per = a->lay.body.h - 1, ncol = a->lay.body.w >= 2 * COL_W ? 2 : 1;
+    int m = n - per * ncol;
+    return m < 0 ? 0 : m;
+}
+
+int acbb_screen_help_search(acbb_app *a, const char *text, int dir)
+{
+    help_rows rows;
+    build(&rows);
+    int from = a->help_hit >= 0 && a->help_hit < rows.n ? a->help_hit : 0;
+    for (int k = dir == 0 ? 0 : 1; k <= rows.n; k++) {
+        int i = ((from + (dir < 0 ? -k : k)) % rows.n + rows.n) % rows.n;
+        if (icontains(rows.r[i].keys, text) || icontains(rows.r[i].what, text)) {
+            a->help_hit = i;
+            int shown = (a->lay.body.h - 1) * (a->lay.body.w >= 2 * COL_W ? 2 : 1);
+            /* Keep the hit on screen. */
+            if (i < a->help_top || i >= a->help_top + shown)
+                a->help_top = i < max_top(a, rows.n) ? i : max_top(a, rows.n);
+            return 1;
+        }
+    }
+    return 0;
 }
 
 int acbb_screen_help_key(acbb_app *a, int ch)
 {
-    int per = a->lay.body.h - 1;
-    int ncol = a->lay.body.w >= 2 * COL_W ? 2 : 1;
     help_rows rows;
     build(&rows);
-    int max_top = rows.n - per * ncol;
+    int top_max = max_top(a, rows.n);
+    if (acbb_app_search_key(a, ch, 1)) return 1;
     if (ch == 'j' || ch == KEY_DOWN) {
-        if (a->help_top < max_top) a->help_top++;
+        if (a->help_top < top_max) a->help_top++;
         return 1;
     }
     if (ch == 'k' || ch == KEY_UP) {

@@ -1,5 +1,7 @@
 /* acbb TUI — every node temperature of the thermal network, in columns. */
 #include <curses.h>
+#include <string.h>
+#include <strings.h>
 #include "screens.h"
 
 static int rows_per_col(const acbb_app *a)
@@ -22,7 +24,8 @@ static void draw(acbb_app *a)
             int i = a->node_top + c * (per - 1) + r;
             if (i >= s->n_nodes) return;
             const char *name = s->node_names ? s->node_names[i] : "?";
-            acbb_put(a, b.y + 1 + r, b.x + c * cw, cw - 1, ACBB_ROLE_NORMAL, "%-25.25s%7.2f%+7.2f",
+            acbb_role role = i == a->node_hit ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL;
+            acbb_put(a, b.y + 1 + r, b.x + c * cw, cw - 1, role, "%-25.25s%7.2f%+7.2f",
                      name, s->T[i], s->T[i] - amb);
         }
     }
@@ -34,11 +37,34 @@ static int on_key(acbb_app *a, int ch)
     return acbb_scroll_key(ch, page, a->st.snap.n_nodes, &a->node_top);
 }
 
+/* `/`: the next node whose name holds the text (e.g. /raceway, /shaft). */
+static int search(acbb_app *a, const char *text, int dir)
+{
+    const acbb_snapshot *s = &a->st.snap;
+    int n = s->n_nodes, from = a->node_hit >= 0 && a->node_hit < n ? a->node_hit : 0;
+    size_t len = strlen(text);
+    for (int k = dir == 0 ? 0 : 1; n > 0 && k <= n; k++) {
+        int i = ((from + (dir < 0 ? -k : k)) % n + n) % n;
+        const char *name = s->node_names ? s->node_names[i] : "";
+        for (const char *p = name; *p; p++)
+            if (strncasecmp(p, text, len) == 0) {
+                int page = (rows_per_col(a) - 1) * a->lay.node_columns;
+                a->node_hit = i;
+                if (i < a->node_top || i >= a->node_top + page) a->node_top = i;
+                if (a->node_top > n - page) a->node_top = n - page;
+                if (a->node_top < 0) a->node_top = 0;
+                return 1;
+            }
+    }
+    return 0;
+}
+
 static const acbb_help_line help[] = {
+    { "/  n  N", "find a node by name, next / previous" },
     { "j k PgUp/Dn", "scroll the nodes" },
     { NULL, NULL },
 };
 
 const acbb_screen acbb_screen_nodes = {
-    .name = "Nodes", .key = '2', .draw = draw, .on_key = on_key, .help = help,
+    .name = "Nodes", .key = '2', .draw = draw, .on_key = on_key, .help = help, .search = search,
 };

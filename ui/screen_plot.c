@@ -56,8 +56,8 @@ static void draw(acbb_app *a)
 static int on_key(acbb_app *a, int ch)
 {
     switch (ch) {
-    case KEY_LEFT: case 'h': a->plot_kind = (a->plot_kind + N_KINDS - 1) % N_KINDS; break;
-    case KEY_RIGHT: case 'l': a->plot_kind = (a->plot_kind + 1) % N_KINDS; break;
+    case KEY_LEFT: case 'h': case '<': a->plot_kind = (a->plot_kind + N_KINDS - 1) % N_KINDS; break;
+    case KEY_RIGHT: case 'l': case '>': a->plot_kind = (a->plot_kind + 1) % N_KINDS; break;
     case '\n': case '\r': case KEY_ENTER: break;
     default: return 0;
     }
@@ -96,6 +96,10 @@ void acbb_screen_plot_export(acbb_app *a)
     acbb_put(a, a->lay.message.y, 0, a->lay.message.w, ACBB_ROLE_WARN, "%s", a->msg);
     wnoutrefresh(stdscr);
     doupdate();
+    if (a->hist.n < 2 || a->st.phase == ACBB_WORKER_IDLE || a->st.phase == ACBB_WORKER_NO_SIM) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "nothing to plot yet: r runs the scene, then g exports it");
+        return;
+    }
     if (acbb_export_plots(a->plot_dir, &a->hist, &a->st.snap, title, &written, &err) != ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
     else

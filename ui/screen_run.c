@@ -1,5 +1,8 @@
-/* acbb TUI — the overview screen: key temperatures, the five losses,
- * mechanics, and the outer-ring chart. */
+/* acbb TUI — the overview screen: key temperatures, the losses, mechanics,
+ * what the run is doing, and the temperature chart. With a baseline pinned
+ * (m) every live value also shows its change against it; v swaps the
+ * panels for the presentation view (bigview.c). */
+#include <ctype.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -7,22 +10,63 @@
 #include "acbb/units.h"
 #include "screens.h"
 
+/* The network node that the snapshot's T_outer_ring reads: the one whose
+ * temperature it copies and whose name says outer ring (node 5 of the
+ * 46-node network, node 2 of the 7-node one). -1 if not identifiable. */
+static int outer_ring_node(const acbb_snapshot *s)
+{
+    if (!s->node_names) return -1;
+    for (int i = 0; i < s->n_nodes; i++) {
+        char low[64];
+        snprintf(low, sizeof low, "%s", s->node_names[i]);
+        for (char *c = low; *c; c++) *c = (char)tolower((unsigned char)*c);
+        if (s->T[i] == s->T_outer_ring && (strstr(low, "outer ring") || strstr(low, "(sensor)")))
+            return i;
+    }
+    return -1;
+}
+
+void acbb_run_outer_label(const acbb_snapshot *s, char *buf, size_t n)
+{
+    int k = outer_ring_node(s);
+    if (k >= 0) snprintf(buf, n, "Outer ring (%d)", k);
+    else snprintf(buf, n, "Outer ring");
+}
+
+void acbb_fmt_delta(double v, double base, double ref, char *buf, size_t n)
+{
+    if (fabs(ref) > 1e-12) snprintf(buf, n, "%+.2f %+5.1f%%", v - base, 100 * (v - base) / fabs(ref));
+    else snprintf(buf, n, "%+.2f    --", v - base);
+}
+
 static void temps_panel(acbb_app *a, acbb_rect r)
 {
-    const acbb_snapshot *s = &a->st.snap;
+    const acbb_snapshot *s = &a->st.snap, *b = &a->base;
     double amb = a->st.scene.ambient_C;
-    const struct { const char *name; double T; } rows[] = {
-        { "Outer ring (5)", s->T_outer_ring }, { "Inner ring", s->T_inner_ring },
-        { "Ball", s->T_ball }, { "Housing", s->T_housing }, { "Shaft", s->T_shaft },
-        { "Oil-air", s->T_cavity },
+    char outer[32];
+    acbb_run_outer_label(s, outer, sizeof outer);
+    const struct { const char *name; double T, B; } rows[] = {
+        { outer, s->T_outer_ring, b->T_outer_ring }, { "Inner ring", s->T_inner_ring, b->T_inner_ring },
+        { "Ball", s->T_ball, b->T_ball }, { "Housing", s->T_housing, b->T_housing },
+        { "Shaft", s->T_shaft, b->T_shaft }, { "Oil-air", s->T_cavity, b->T_cavity },
     };
-    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Temperature        C   rise(%.0f)", amb);
+    if (a->has_base)
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Temperature     C  vs base  %%rise");
+    else
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Temperature        C   rise(%.0f)", amb);
     double hi = 1.0;
     for (size_t i = 0; i < 6; i++) hi = fmax(hi, rows[i].T - amb);
     for (size_t i = 0; i < 6 && (int)i + 1 < r.h; i++) {
-        acbb_put(a, r.y + 1 + (int)i, r.x, r.w, ACBB_ROLE_NORMAL, "%-15s %7.2f %+7.2f",
-                 rows[i].name, rows[i].T, rows[i].T - amb);
-        acbb_bar(a, r.y + 1 + (int)i, r.x + 32, r.w - 33, (rows[i].T - amb) / hi, ACBB_ROLE_BAR2);
+        int y = r.y + 1 + (int)i;
+        if (a->has_base) {
+            char d[48];
+            acbb_fmt_delta(rows[i].T, rows[i].B, rows[i].B - amb, d, sizeof d);
+            acbb_put(a, y, r.x, r.w, ACBB_ROLE_NORMAL, "%-14s %6.2f %s", rows[i].name, rows[i].T, d);
+            continue;
+        }
+        acbb_put(a, y, r.x, r.w, ACBB_ROLE_NORMAL, "%-15s %7.2f %+7.2f", rows[i].name, rows[i].T,
+                 rows[i].T - amb);
+        acbb_bar(a, y, r.x + 32, r.w - 33, (rows[i].T - amb) / hi, ACBB_ROLE_BAR2);
     }
 }
 
@@ -30,23 +74,30 @@ static void temps_panel(acbb_app *a, acbb_rect r)
  * value, for a run started before an edit), then the total. */
 static void losses_panel(acbb_app *a, acbb_rect r)
 {
-    const acbb_losses *l = &a->st.snap.losses;
-    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Power loss        W      %%");
+    const acbb_losses *l = &a->st.snap.losses, *lb = &a->base.losses;
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER,
+             a->has_base ? "Power loss      W  vs base     %%" : "Power loss        W      %%");
     double tot = l->total > 0 ? l->total : 1.0;
     int row = 1;
-    for (int k = 0; k < ACBB_LOSS_KINDS && row < r.h; k++) {
-        const acbb_loss_desc *d = &acbb_loss_table[k];
-        if (!acbb_loss_enabled(&a->ed.scene, (acbb_loss_kind)k) && l->P[k] == 0.0) continue;
+    for (int k = 0; k <= ACBB_LOSS_KINDS && row < r.h; k++, row++) {
+        int total = k == ACBB_LOSS_KINDS;
+        double v = total ? l->total : l->P[k], vb = total ? lb->total : lb->P[k];
         char name[16];
-        snprintf(name, sizeof name, "%.7s %s", d->name, d->symbol);
-        acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_NORMAL, "%-12s %7.2f %6.1f", name, l->P[k],
-                 100 * l->P[k] / tot);
-        acbb_bar(a, r.y + row, r.x + 28, r.w - 29, l->P[k] / tot, ACBB_ROLE_BAR);
-        row++;
+        if (!total) {
+            const acbb_loss_desc *d = &acbb_loss_table[k];
+            if (!acbb_loss_enabled(&a->ed.scene, (acbb_loss_kind)k) && v == 0.0) { row--; continue; }
+            snprintf(name, sizeof name, "%.7s %s", d->name, d->symbol);
+        } else snprintf(name, sizeof name, "Total");
+        acbb_role role = total ? ACBB_ROLE_HEADER : ACBB_ROLE_NORMAL;
+        if (a->has_base) {
+            char d[48];
+            acbb_fmt_delta(v, vb, vb, d, sizeof d);
+            acbb_put(a, r.y + row, r.x, r.w, role, "%-12s %6.2f %s", name, v, d);
+            continue;
+        }
+        acbb_put(a, r.y + row, r.x, r.w, role, "%-12s %7.2f %6.1f", name, v, 100 * v / tot);
+        if (!total) acbb_bar(a, r.y + row, r.x + 28, r.w - 29, v / tot, ACBB_ROLE_BAR);
     }
-    if (row < r.h)
-        acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_HEADER, "%-12s %7.2f %6.1f", "Total",
-                 l->total, 100.0);
 }
 
 /* Min and max of a ball quantity over the balls (one ball under pure axial load). */
@@ -63,63 +114,100 @@ static void span(const acbb_snapshot *s, size_t off, double *lo, double *hi)
     if (s->n_balls == 0) *lo = *hi = 0.0;
 }
 
+/* "Qi 412.3 N" with its range, or its change against the baseline. */
+static void ball_item(acbb_app *a, char *buf, size_t n, const char *name, size_t off, double scale,
+                      const char *unit)
+{
+    double lo, hi, blo, bhi;
+    span(&a->st.snap, off, &lo, &hi);
+    if (!a->has_base) {
+        if (hi - lo > 1e-9 * fabs(hi)) snprintf(buf, n, "%s %.2f..%.2f%s", name, lo * scale, hi * scale, unit);
+        else snprintf(buf, n, "%s %.2f%s", name, hi * scale, unit);
+        return;
+    }
+    char d[48];
+    span(&a->base, off, &blo, &bhi);
+    acbb_fmt_delta(hi * scale, bhi * scale, bhi * scale, d, sizeof d);
+    snprintf(buf, n, "%s max %.2f%s %s", name, hi * scale, unit, d);
+}
+
 static void mech_panel(acbb_app *a, acbb_rect r)
 {
     const acbb_snapshot *s = &a->st.snap;
-    const char *deg = a->term.g.deg;
-    double qi0, qi1, qo0, qo1, ai0, ai1, ao0, ao1;
-    span(s, offsetof(acbb_ball_view, Qi), &qi0, &qi1);
-    span(s, offsetof(acbb_ball_view, Qo), &qo0, &qo1);
-    span(s, offsetof(acbb_ball_view, alpha_i), &ai0, &ai1);
-    span(s, offsetof(acbb_ball_view, alpha_o), &ao0, &ao1);
     const double R2D = 1.0 / ACBB_DEG /* deg per rad */, UM = 1e6;
     char item[6][288];
-    snprintf(item[0], sizeof item[0], "Qi %.1f..%.1f N  Qo %.1f..%.1f N", qi0, qi1, qo0, qo1);
-    snprintf(item[1], sizeof item[1], "a_i %.2f..%.2f%s  a_o %.2f..%.2f%s", ai0 * R2D, ai1 * R2D, deg,
-             ao0 * R2D, ao1 * R2D, deg);
-    snprintf(item[2], sizeof item[2], "growth um: ball %.2f IR %.2f OR %.2f", s->exp_ball * UM,
+    ball_item(a, item[0], sizeof item[0], "Qi", offsetof(acbb_ball_view, Qi), 1, " N");
+    ball_item(a, item[1], sizeof item[1], "Qo", offsetof(acbb_ball_view, Qo), 1, " N");
+    ball_item(a, item[2], sizeof item[2], "a_i", offsetof(acbb_ball_view, alpha_i), R2D, a->term.g.deg);
+    ball_item(a, item[3], sizeof item[3], "a_o", offsetof(acbb_ball_view, alpha_o), R2D, a->term.g.deg);
+    snprintf(item[4], sizeof item[4], "growth um: ball %.2f IR %.2f OR %.2f", s->exp_ball * UM,
              (s->exp_inner + s->exp_inner_cen) * UM, s->exp_outer * UM);
-    snprintf(item[3], sizeof item[3], "Fx %.0f N  dx %.2f um  dt %.3g s", s->reaction_x,
-             s->delta_x * UM, s->dt);
-    snprintf(item[4], sizeof item[4], "heat in %.2f W  out %.2f W", s->heat_in, s->heat_out);
-    snprintf(item[5], sizeof item[5], "%s", s->message);
-    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Mechanics (min..max, %d balls)", s->n_balls);
+    snprintf(item[5], sizeof item[5], "Fx %.0f N dx %.2f um heat %.2f/%.2f W", s->reaction_x,
+             s->delta_x * UM, s->heat_in, s->heat_out);
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Mechanics (%d balls%s)", s->n_balls,
+             a->has_base ? ", change vs base" : ", min..max");
     /* A tall panel (wide layout) gets one item per row, a short one pairs. */
-    int per_row = r.h - 1 >= 6 ? 1 : 2;
+    int per_row = r.h - 1 >= 6 ? 1 : 2, half = r.w / 2;
     for (int k = 0, row = 1; k < 6 && row < r.h; k += per_row, row++) {
-        if (per_row == 1)
-            acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_NORMAL, "%s", item[k]);
-        else
-            acbb_put(a, r.y + row, r.x, r.w, ACBB_ROLE_NORMAL, "%-38s  %s", item[k], item[k + 1]);
+        acbb_put(a, r.y + row, r.x, per_row == 1 ? r.w : half - 1, ACBB_ROLE_NORMAL, "%s", item[k]);
+        if (per_row == 2) acbb_put(a, r.y + row, r.x + half, r.w - half, ACBB_ROLE_NORMAL, "%s", item[k + 1]);
     }
 }
 
-static void chart_panel(acbb_app *a, acbb_rect r)
+/* What the run is doing, in words: never "running" when nothing runs
+ * (at launch, after R, after x), and a failure's reason in full. */
+void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role)
 {
-    double x[ACBB_HISTORY_CAP], y[ACBB_HISTORY_CAP];
-    size_t n = a->hist.n;
-    for (size_t k = 0; k < n; k++) {
-        x[k] = a->hist.p[k].time;
-        y[k] = a->hist.p[k].T_outer_ring;
+    const acbb_snapshot *s = &a->st.snap;
+    *role = ACBB_ROLE_NORMAL;
+    switch (a->st.phase) {
+    case ACBB_WORKER_IDLE: snprintf(buf, n, "Idle at ambient: r starts a run."); break;
+    case ACBB_WORKER_RUNNING:
+        snprintf(buf, n, "Running: t = %.0f s, step %.3g s, heating towards steady state.", s->time, s->dt);
+        break;
+    case ACBB_WORKER_PAUSED: snprintf(buf, n, "Paused at t = %.0f s (space resumes).", s->time); break;
+    case ACBB_WORKER_STOPPED:
+        snprintf(buf, n, "Stopped by the user at t = %.0f s (r runs again).", s->time);
+        break;
+    case ACBB_WORKER_DONE:
+        *role = s->state == ACBB_RUN_CONVERGED ? ACBB_ROLE_OK : ACBB_ROLE_ERROR;
+        snprintf(buf, n, "%s: %s", s->state == ACBB_RUN_CONVERGED ? "Steady state" : "Run failed",
+                 s->message);
+        break;
+    case ACBB_WORKER_NO_SIM:
+        *role = ACBB_ROLE_ERROR;
+        snprintf(buf, n, "No simulation: %s", a->st.message);
+        break;
     }
-    const double *ys[1] = { y };
-    const char *names[1] = { "T5" };
-    char title[96];
-    snprintf(title, sizeof title, "Outer ring C vs time 0..%.0f s", n ? x[n - 1] : 0.0);
-    acbb_draw_chart(a, r, title, x, ys, names, 1, n);
+}
+
+/* The state line(s) at the top of r, the chart of the ring and ball
+ * temperatures below. */
+static void state_and_chart(acbb_app *a, acbb_rect r)
+{
+    char text[512];
+    acbb_role role;
+    acbb_run_state_text(a, text, sizeof text, &role);
+    int used = acbb_put_wrap(a, r.y, r.x, r.w, 3, role, text);
+    acbb_rect c = { r.y + used, r.x, r.h - used, r.w };
+    acbb_draw_temp_chart(a, c);
 }
 
 static void draw(acbb_app *a)
 {
     if (!a->st.has_snapshot) {
-        acbb_put(a, a->lay.body.y + 1, 2, a->lay.body.w - 4, ACBB_ROLE_ERROR, "%s",
-                 a->st.message[0] ? a->st.message : "no simulation yet");
+        acbb_put_wrap(a, a->lay.body.y + 1, 2, a->lay.body.w - 4, 4, ACBB_ROLE_ERROR,
+                      a->st.message[0] ? a->st.message : "no simulation yet");
+        return;
+    }
+    if (a->bigview) {
+        acbb_draw_bigview(a, a->lay.body);
         return;
     }
     temps_panel(a, a->lay.temps);
     losses_panel(a, a->lay.losses);
     mech_panel(a, a->lay.mech);
-    chart_panel(a, a->lay.chart);
+    state_and_chart(a, a->lay.chart);
 }
 
 const acbb_screen acbb_screen_run = {

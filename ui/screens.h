@@ -24,7 +24,15 @@ typedef struct {
     void (*enter)(acbb_app *a);          /* on being switched to. NULL: nothing */
     const char *hint;                    /* message-row hint. NULL: the run keys */
     const acbb_help_line *help;          /* its `?` section, ended by { NULL, NULL }. NULL: none */
+    /* `/` and n/N: find `text` from the current place on, forwards (dir 1)
+     * or backwards (-1), wrapping; 1 if found. NULL: the screen has no search. */
+    int (*search)(acbb_app *a, const char *text, int dir);
+    /* A mouse click at body row `row` (0 = the body's first row). NULL: none. */
+    void (*click)(acbb_app *a, int row, int col);
 } acbb_screen;
+
+/* The Run screen (the presentation view and baseline keys show it). */
+extern const acbb_screen acbb_screen_run;
 
 /* The table, in tab order (screens.c). */
 extern const acbb_screen *const acbb_screens[];

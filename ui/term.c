@@ -10,6 +10,19 @@
 #include <unistd.h>
 
 #include "term.h"
+/* ncurses' terminfo header, by its full path: "term.h" above is ours. */
+#include <ncursesw/term.h>
+
+#define CLI_POINTER "use the CLI instead: `acbb run PRESET` (or `acbb help`)"
+
+/* TERM=dumb, or a terminal without cursor addressing, cannot draw a
+ * screen: refuse clearly and point at the CLI (before and after curses
+ * starts, since a terminfo entry may exist but lack `cup`). */
+static int no_cursor_addressing(void)
+{
+    const char *cup = tigetstr("cup");
+    return cup == NULL || cup == (char *)-1;
+}
 
 /* The only global mutable state of the TUI (allowed by DESIGN.md):
  * the signal handler can reach nothing else, so it writes the flags below
@@ -122,6 +135,10 @@ acbb_status acbb_term_open(acbb_term *t, acbb_error *err)
     const char *cs = nl_langinfo(CODESET);
     const char *force = getenv("ACBB_ASCII");
     acbb_glyphs_init(&t->g, cs && strcmp(cs, "UTF-8") == 0 && !(force && force[0]));
+    const char *term = getenv("TERM");
+    if (!term || !term[0] || strcmp(term, "dumb") == 0)
+        return acbb_error_set(err, ACBB_EIO, "TERM=%s cannot address the cursor, so the TUI cannot draw; %s",
+                              term && term[0] ? term : "(unset)", CLI_POINTER);
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))
         return acbb_error_set(err, ACBB_EIO, "the TUI needs a terminal (use `acbb run` for batch work)");
     if (install_signals(t) != 0)
@@ -130,8 +147,12 @@ acbb_status acbb_term_open(acbb_term *t, acbb_error *err)
     t->scr = newterm(NULL, stdout, stdin);
     if (!t->scr) {
         acbb_term_close(t);
-        const char *term = getenv("TERM");
-        return acbb_error_set(err, ACBB_EIO, "cannot start curses for TERM=%s", term ? term : "(unset)");
+        return acbb_error_set(err, ACBB_EIO, "cannot start curses for TERM=%s; %s", term, CLI_POINTER);
+    }
+    if (no_cursor_addressing()) {
+        acbb_term_close(t);
+        return acbb_error_set(err, ACBB_EIO, "TERM=%s has no cursor addressing, so the TUI cannot draw; %s",
+                              term, CLI_POINTER);
     }
     curses_active = 1;
     atexit(restore_backstop);
@@ -144,6 +165,15 @@ acbb_status acbb_term_open(acbb_term *t, acbb_error *err)
     curs_set(0);
     init_roles(t);
     return ACBB_OK;
+}
+
+int acbb_term_mouse(acbb_term *t)
+{
+    (void)t;
+    mmask_t want = BUTTON1_PRESSED | BUTTON4_PRESSED | BUTTON5_PRESSED, got;
+    got = mousemask(want, NULL);
+    mouseinterval(0); /* presses at once, no click detection delay */
+    return got != 0;
 }
 
 void acbb_term_close(acbb_term *t)

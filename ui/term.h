@@ -46,6 +46,8 @@ void acbb_glyphs_init(acbb_glyphs *g, int utf8);
  * cbreak/noecho/keypad mode, colours or monochrome. On failure nothing is
  * left changed and err says why. */
 acbb_status acbb_term_open(acbb_term *t, acbb_error *err);
+/* Ask for mouse reports (press, wheel); 0 if the terminal has none. */
+int acbb_term_mouse(acbb_term *t);
 /* Restore the terminal (idempotent). */
 void acbb_term_close(acbb_term *t);
 /* Drain the self-pipe and report the signals that arrived. */

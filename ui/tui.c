@@ -6,10 +6,12 @@
 #include "tui.h"
 
 static const char usage_text[] =
-    "usage: acbb tui [--pace N] [--plot-dir DIR] [--exit-after-steady] [PRESET]\n"
+    "usage: acbb tui [--pace N] [--plot-dir DIR] [--no-mouse] [--exit-after-steady] [PRESET]\n"
     "  PRESET               scene to open (default presets/7008C.ini)\n"
-    "  --pace N             steps per second (0 = flat out, the default)\n"
+    "  --pace N             simulated seconds per wall second (default 200,\n"
+    "                       0 = flat out; + and - change it live)\n"
     "  --plot-dir DIR       where g writes PNG+SVG plots (default ./acbb-plots)\n"
+    "  --no-mouse           leave the mouse to the terminal (no clicks, no wheel)\n"
     "  --exit-after-steady  start the run at once and exit when it ends\n"
     "                       (also ACBB_TUI_EXIT_AFTER_STEADY=1; exit 0 converged, 3 not)\n"
     "Environment:\n"
@@ -46,7 +48,7 @@ static int parse_knobs(const char *text, unsigned *mask)
 
 int acbb_tui_main(int argc, char **argv)
 {
-    acbb_app_options o = { 0 };
+    acbb_app_options o = { .pace = -1 };
     const char *knobs = getenv("ACBB_TUI_ACCURACY_KNOBS");
     if (knobs && knobs[0] && parse_knobs(knobs, &o.acc_knobs) != 0) return 2;
     const char *env = getenv("ACBB_TUI_EXIT_AFTER_STEADY");
@@ -59,11 +61,13 @@ int acbb_tui_main(int argc, char **argv)
             return 0;
         } else if (strcmp(s, "--pace") == 0 && i + 1 < argc) {
             if (parse_int(argv[++i], &o.pace) != 0) {
-                fprintf(stderr, "acbb tui: --pace wants steps per second (0 .. 1000000), got '%s'\n", argv[i]);
+                fprintf(stderr, "acbb tui: --pace wants simulated seconds per second (0 .. 1000000), got '%s'\n", argv[i]);
                 return 2;
             }
         } else if (strcmp(s, "--plot-dir") == 0 && i + 1 < argc) {
             o.plot_dir = argv[++i];
+        } else if (strcmp(s, "--no-mouse") == 0) {
+            o.no_mouse = 1;
         } else if (strcmp(s, "--exit-after-steady") == 0) {
             o.exit_after_steady = 1;
         } else if (s[0] == '-' && s[1]) {

@@ -49,7 +49,7 @@ struct acbb_worker {
     acbb_worker_state st;
     acbb_history hist;
     acbb_scene initial;        /* read by the worker once at start-up */
-    _Atomic int pace;          /* steps per second, 0 = flat out */
+    _Atomic int pace;          /* simulated s per wall s, 0 = flat out */
     /* Set by the posting thread (STOP: run; QUIT: both), cleared by the
      * worker when it begins the next run / comparison. */
     atomic_int cancel_run;     /* the main Sim's drive and set-up */
@@ -204,19 +204,21 @@ typedef struct {
     worker_ctx *c;
 } hook_ctx;
 
-/* Sleep until a step `paced` after `last_step` (ms) is due, on the
+/* Sleep until the next step is due: `sim_dt` simulated seconds (the step
+ * just taken) after `last_step` (ms), at the pace in force; on the
  * condition variable so a command or a pace change wakes it at once.
  * Returns 1 as soon as a command is queued (the hook then pauses the
  * drive so the command is handled), 0 when the next step is due. */
-static int wait_step_due(acbb_worker *w, double last_step, int paced)
+static int wait_step_due(acbb_worker *w, double last_step, double sim_dt)
 {
+    int paced = sim_dt > 0;
     int cmd;
     pthread_mutex_lock(&w->mu);
     for (;;) {
         if ((cmd = w->q_len > 0)) break;
         int pace = paced ? atomic_load(&w->pace) : 0;
         if (pace <= 0) break;
-        double due = last_step + 1e3 / pace;
+        double due = last_step + 1e3 * sim_dt / pace;
         if (acbb_now_ms() >= due) break;
         struct timespec ts = acbb_wake_abstime(due);
         pthread_cond_timedwait(&w->cv_cmd, &w->mu, &ts);
@@ -261,7 +263,7 @@ static int compare_hook(void *ctx, const acbb_sim *sim)
         pthread_mutex_unlock(&h->w->mu);
         wake_ui(h->w);
     }
-    return wait_step_due(h->w, 0.0, 0);
+    return wait_step_due(h->w, 0.0, 0.0);
 }
 
 /* Drive the current variant (building its Sim first) until it ends or a
@@ -319,14 +321,16 @@ static int run_hook(void *ctx, const acbb_sim *sim)
     hook_ctx *h = ctx;
     worker_ctx *c = h->c;
     long before = c->snap.iteration;
+    double t_before = c->snap.time, sim_dt = 0.0;
     acbb_sim_snapshot(sim, &c->snap);
     if (c->snap.iteration != before) { /* iteration 0 was published by begin_run */
+        sim_dt = c->snap.time - t_before;
         double t = acbb_now_ms();
         c->last_step = t;
         measure_rate(c, t);
         publish(h->w, c, 1);
     }
-    return wait_step_due(h->w, c->last_step, 1);
+    return wait_step_due(h->w, c->last_step, sim_dt);
 }
 
 /* Drive the main run until it ends or a command is queued. A cancelled
@@ -558,9 +562,9 @@ void acbb_worker_free(acbb_worker *w)
     free(w);
 }
 
-void acbb_worker_set_pace(acbb_worker *w, int steps_per_s)
+void acbb_worker_set_pace(acbb_worker *w, int sim_s_per_s)
 {
-    atomic_store(&w->pace, steps_per_s < 0 ? 0 : steps_per_s);
+    atomic_store(&w->pace, sim_s_per_s < 0 ? 0 : sim_s_per_s);
     pthread_mutex_lock(&w->mu);
     pthread_cond_signal(&w->cv_cmd); /* re-evaluate a paced sleep */
     pthread_mutex_unlock(&w->mu);

@@ -9,8 +9,8 @@
  * After every publication the worker writes one byte to a non-blocking
  * wake-up pipe (only if the previous byte was not yet drained) so the UI's
  * select() loop wakes and redraws. Publishing is a memcpy under the mutex;
- * the worker never waits for the UI. The pace (steps per second, 0 = flat
- * out) is an _Atomic the UI may change at any time.
+ * the worker never waits for the UI. The pace (simulated seconds per wall
+ * second, 0 = flat out) is an _Atomic the UI may change at any time.
  *
  * The worker advances every Sim only through the engine's run loop,
  * acbb_sim_drive, whose per-step hook publishes and paces. STOP and QUIT
@@ -70,7 +70,7 @@ typedef struct {
     unsigned long cmd_done;      /* number of the last command handled */
     unsigned long publications;  /* bumped on every publication */
     unsigned long run_id;        /* bumped whenever a new run (or reset) begins */
-    int pace;                    /* steps per second in force, 0 = flat out */
+    int pace;                    /* simulated s per wall s in force, 0 = flat out */
     double run_wall_s;           /* wall time spent running this run (pauses excluded) */
     double steps_per_s;          /* measured stepping rate (smoothed) */
     acbb_status last_error;      /* of the last failed command */
@@ -97,8 +97,9 @@ void acbb_worker_free(acbb_worker *w);
 unsigned long acbb_worker_post(acbb_worker *w, acbb_worker_cmd cmd,
                                const acbb_scene *scene, int warm);
 
-/* Steps per second (0 = flat out). Takes effect at once. */
-void acbb_worker_set_pace(acbb_worker *w, int steps_per_s);
+/* Simulated seconds per wall second (0 = flat out): after a step of dt
+ * simulated seconds the worker waits dt / pace. Takes effect at once. */
+void acbb_worker_set_pace(acbb_worker *w, int sim_s_per_s);
 int acbb_worker_pace(const acbb_worker *w);
 
 /* Copy the published state (and the history, if `hist` is not NULL). */
