@@ -205,9 +205,9 @@ static void eval_traj(const acbb_figure_row *row, const acbb_fig_input *in, acbb
                 why(d, what, acbb_status_name(tr->status), tr->message);
                 continue;
             }
-            acbb_fig_series *s = add_series(d, tr->n, k + 1, qi + 1, 0, "%s%s%g N",
+            acbb_fig_series *s = add_series(d, tr->n, k - a + 1, qi + 1, 0, "%s%s%g N",
                                             row->nq > 1 ? q->label : "",
-                                            row->nq > 1 ? ", " : "", acbb_study_loads[k]);
+                                            row->nq > 1 ? " at " : "", acbb_study_loads[k]);
             for (size_t i = 0; s && i < tr->n; i++) {
                 const char *step = (const char *)&tr->p[i];
                 double x, y;
@@ -232,7 +232,7 @@ static void eval_sweep(const acbb_figure_row *row, const acbb_fig_input *in, acb
                 acbb_fig_series *s = add_series(
                     d, ACBB_STUDY_NPTS, 1 + bi * row->nq + qi, m == ACBB_STUDY_TE ? 1 : 2, 1,
                     "%s %s%s", row->q[qi].label, m == ACBB_STUDY_TE ? "TE" : "WTE",
-                    !both ? "" : bi ? ", 1000 N" : ", 100 N");
+                    !both ? "" : bi ? " at 1000 N" : " at 100 N");
                 for (int k = 0; s && k < ACBB_STUDY_NPTS; k++) {
                     const acbb_study_point *p = &pts[2 * k + m];
                     if (!p->ok) {

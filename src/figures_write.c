@@ -12,10 +12,11 @@
 #include "acbb/plot.h"
 #include "figures_priv.h"
 
-/* A header field: the CSV separator inside a label becomes ';'. */
+/* A label in the data file: the CSV separator becomes ';' and a double
+ * quote a single one, so a plain split on ',' reads every row. */
 static void csv_field(FILE *f, const char *s)
 {
-    for (; *s; s++) fputc(*s == ',' ? ';' : *s, f);
+    for (; *s; s++) fputc(*s == ',' ? ';' : *s == '"' ? '\'' : *s, f);
 }
 
 static acbb_status write_csv(const acbb_figure_row *row, const acbb_fig_data *d,
@@ -33,8 +34,11 @@ static acbb_status write_csv(const acbb_figure_row *row, const acbb_fig_data *d,
     csv_field(f, row->ylabel);
     fputc('\n', f);
     for (int i = 0; i < d->n; i++)
-        for (size_t k = 0; k < d->s[i].n; k++)
-            fprintf(f, "\"%s\",%.10g,%.10g\n", d->s[i].label, d->s[i].x[k], d->s[i].y[k]);
+        for (size_t k = 0; k < d->s[i].n; k++) {
+            fputc('"', f);
+            csv_field(f, d->s[i].label);
+            fprintf(f, "\",%.10g,%.10g\n", d->s[i].x[k], d->s[i].y[k]);
+        }
     return acbb_out_commit(o, err);
 }
 
