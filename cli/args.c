@@ -20,7 +20,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },
     [CLI_OPT_KIND] = { "kind", "KIND",
                        "temperature|losses|loads|angles|history-loads|all (default temperature)" },
-    [CLI_OPT_OUT] = { "out", "FILE", "write FILE.png or FILE.svg (default: a text chart on stdout)" },
+    [CLI_OPT_OUT] = { "out", "PATH", "plot: write PATH.png or .svg (default: a text chart on "
+                      "stdout); new: the preset file; study: the figure directory" },
     [CLI_OPT_DUMB] = { "dumb", NULL, "a text chart on stdout (the default)" },
     [CLI_OPT_SIZE] = { "size", "WxH", "pixels (default 1000x600) or characters with --dumb (80x25)" },
     [CLI_OPT_KNOBS] = { "knobs", "K1,...",

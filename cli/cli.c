@@ -23,6 +23,7 @@
 #include "baseline.h"
 #include "plot.h"
 #include "presets.h"
+#include "figures.h"
 
 /* ---- driving a run ---- */
 
@@ -269,11 +270,30 @@ static void study_pair(acbb_cli_point *pts, size_t k, const acbb_scene *base,
     }
 }
 
-int acbb_cli_cmd_study(const acbb_cli_args *a)
+static int study_table(const acbb_cli_args *a, long jobs);
+
+/* PRESET `seed` is the seed's case, 7008C, through the preset search path;
+ * with --out DIR the seed's figures are written (cli/figures.c). */
+int acbb_cli_cmd_study(const acbb_cli_args *args)
 {
     long jobs;
-    int rc = acbb_cli_count(a, CLI_OPT_JOBS, cpu_count(), 1, 100000, &jobs);
+    int rc = acbb_cli_count(args, CLI_OPT_JOBS, cpu_count(), 1, 100000, &jobs);
     if (rc) return rc;
+    acbb_cli_args *a = malloc(sizeof *a);
+    if (!a) return ACBB_EXIT_INTERNAL;
+    *a = *args;
+    const char *name = strcmp(a->pos[0], "seed") == 0 ? "7008C" : a->pos[0];
+    if (acbb_cli_resolve_preset(name, a->preset_buf, sizeof a->preset_buf, true) != 0)
+        rc = ACBB_EXIT_INPUT;
+    a->preset = a->preset_buf;
+    if (!rc) rc = a->val[CLI_OPT_OUT] ? acbb_cli_study_figures(a, jobs) : study_table(a, jobs);
+    free(a);
+    return rc;
+}
+
+static int study_table(const acbb_cli_args *a, long jobs)
+{
+    int rc;
     acbb_scene base;
     if ((rc = acbb_cli_load_scene(a, &base))) return rc;
 

@@ -31,6 +31,7 @@
 #include "acbb/plot.h"
 #include "acbb/outfile.h"
 #include "acbb/units.h"
+#include "plot_priv.h"
 
 extern char **environ;
 
@@ -122,11 +123,7 @@ const char *acbb_plot_kind_name(acbb_plot_kind k)
 
 /* ---- script buffer ---- */
 
-typedef struct {
-    char *p;
-    size_t n, cap;
-    bool oom;
-} sbuf;
+/* sbuf: plot_priv.h */
 
 static bool sb_reserve(sbuf *b, size_t extra)
 {
@@ -144,8 +141,7 @@ static bool sb_reserve(sbuf *b, size_t extra)
     return true;
 }
 
-static void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void sb_printf(sbuf *b, const char *fmt, ...)
+void sb_printf(sbuf *b, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -164,7 +160,7 @@ static void sb_printf(sbuf *b, const char *fmt, ...)
 /* A gnuplot single-quoted string: no escapes are processed inside, and ''
  * stands for one quote. A control character would end the command line,
  * so it becomes a space (callers reject control characters in paths). */
-static void sb_quoted(sbuf *b, const char *s)
+void sb_quoted(sbuf *b, const char *s)
 {
     if (!sb_reserve(b, 2 * strlen(s) + 2)) return;
     b->p[b->n++] = '\'';
@@ -177,7 +173,7 @@ static void sb_quoted(sbuf *b, const char *s)
     b->p[b->n] = '\0';
 }
 
-static bool has_control_char(const char *s)
+bool has_control_char(const char *s)
 {
     for (; *s; s++)
         if ((unsigned char)*s < 0x20 || *s == 0x7f) return true;
@@ -307,14 +303,7 @@ static acbb_status script_body(sbuf *b, const plot_kind_spec *k, const acbb_plot
 
 /* ---- running gnuplot ---- */
 
-typedef struct {
-    bool to_file;         /* stdout goes to file_fd (a file we opened, not gnuplot) */
-    int file_fd;
-    char *out;            /* captured stdout, NULL to discard */
-    size_t out_cap, out_len;
-    char err[2048];       /* the start of stderr, NUL-terminated */
-    size_t err_len;
-} gp_io;
+/* gp_io: plot_priv.h */
 
 static void close_fd(int *fd)
 {
@@ -467,6 +456,8 @@ static acbb_status spawn(const char *prog, int in[2], int out[2], int errp[2], p
     else if (!rc)
         rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     if (!rc) rc = posix_spawn_file_actions_adddup2(&fa, errp[1], STDERR_FILENO);
+    for (int k = 0; !rc && k < io->n_extra; k++)
+        rc = posix_spawn_file_actions_adddup2(&fa, io->extra[k], 3 + k);
     char *argv[] = { (char *)prog, NULL };
     if (!rc) rc = posix_spawnp(pid, prog, &fa, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
@@ -502,7 +493,7 @@ static void sigpipe_restore(const sigset_t *old, bool raised)
     pthread_sigmask(SIG_SETMASK, old, NULL);
 }
 
-static acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err)
+acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err)
 {
     int in[2] = { -1, -1 }, out[2] = { -1, -1 }, errp[2] = { -1, -1 };
     if (pipe2(in, O_CLOEXEC) || pipe2(errp, O_CLOEXEC) || (io->out && pipe2(out, O_CLOEXEC))) {
@@ -543,7 +534,7 @@ static acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err)
 
 /* ---- public entry points ---- */
 
-static void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
+void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
 {
     if (fmt == ACBB_PLOT_PNG)
         sb_printf(b, "set terminal pngcairo size %d,%d\n", w, h);
@@ -558,7 +549,7 @@ static void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
 
 /* An image is complete when it ends as its format ends: PNG with the IEND
  * chunk, SVG with </svg> (a full disk leaves neither). */
-static bool image_complete(int fd, acbb_plot_format fmt)
+bool image_complete(int fd, acbb_plot_format fmt)
 {
     static const unsigned char iend[8] = { 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82 };
     unsigned char tail[64] = { 0 };

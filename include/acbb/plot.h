@@ -67,6 +67,32 @@ acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
                                     acbb_plot_format fmt, const char *path, int width,
                                     int height, const char *title, acbb_error *err);
 
+/* ---- general x-y plot (src/plot_xy.c; the seed's figures, figures.h) ---- */
+
+typedef struct {
+    const char *label;       /* key entry, plain text */
+    const double *x, *y;     /* n points; a point with a non-finite coordinate is left out */
+    size_t n;
+    int color;               /* gnuplot linecolor index 1..; 0: by series order */
+    int dash;                /* gnuplot dashtype: 0 or 1 solid, 2 dashed, 3 dotted, ... */
+    int points;              /* lines with points (sweeps) instead of plain lines */
+} acbb_plot_series;
+
+typedef struct {
+    const char *title, *xlabel, *ylabel; /* plain text (noenhanced); title may be NULL */
+    const acbb_plot_series *series;
+    size_t n_series;
+} acbb_plot_xy;
+
+/* Write one x-y plot as PNG to `png_path` and as SVG to `svg_path` (either
+ * may be NULL, not both), width x height pixels, from ONE gnuplot process:
+ * gnuplot writes the images to its descriptors 3 and 4, which are our
+ * temporary files (acbb_out), so no path reaches its script. A file is
+ * replaced only when both images are complete. ACBB_EINVAL if no series
+ * has a finite point or a label has a control character. */
+acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
+                               const char *svg_path, int width, int height, acbb_error *err);
+
 /* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
 const char *acbb_plot_program(void);
 

@@ -1,0 +1,150 @@
+/* acbb — the general x-y plot (plot.h: acbb_plot_xy_files), for the seed's
+ * figures (figures.h): N labelled series, lines or lines with points.
+ *
+ * One gnuplot process draws both formats: the script sets the pngcairo
+ * terminal with `set output '/dev/fd/3'`, plots, then the svg terminal with
+ * '/dev/fd/4' and plots again. Those two strings are ours; the descriptors
+ * are the unnamed temporaries of acbb_out, so a user path never enters the
+ * script (DESIGN.md "Practical notes"), and a gnuplot start-up (the cost of
+ * a figure) is paid once per figure, not once per image. */
+#define _GNU_SOURCE /* F_DUPFD_CLOEXEC */
+#include <fcntl.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/outfile.h"
+#include "acbb/plot.h"
+#include "plot_priv.h"
+
+/* Descriptors at or above this are safe dup2 sources for gnuplot's 3 and 4. */
+#define XY_FD_MIN 10
+
+/* Datablocks $S0.. of the finite points; the count of series drawn. */
+static size_t xy_blocks(sbuf *b, const acbb_plot_xy *p, bool *drawn)
+{
+    size_t used = 0;
+    for (size_t k = 0; k < p->n_series; k++) {
+        const acbb_plot_series *s = &p->series[k];
+        size_t rows = 0;
+        sb_printf(b, "$S%zu << EOD\n", k);
+        for (size_t i = 0; i < s->n; i++) {
+            if (!isfinite(s->x[i]) || !isfinite(s->y[i])) continue;
+            sb_printf(b, "%.17g %.17g\n", s->x[i], s->y[i]);
+            rows++;
+        }
+        sb_printf(b, "EOD\n");
+        drawn[k] = rows > 0;
+        used += drawn[k];
+    }
+    return used;
+}
+
+static void xy_plot(sbuf *b, const acbb_plot_xy *p, const bool *drawn)
+{
+    if (p->title && p->title[0]) {
+        sb_printf(b, "set title ");
+        sb_quoted(b, p->title);
+        sb_printf(b, "\n");
+    }
+    sb_printf(b, "set xlabel ");
+    sb_quoted(b, p->xlabel ? p->xlabel : "");
+    sb_printf(b, "\nset ylabel ");
+    sb_quoted(b, p->ylabel ? p->ylabel : "");
+    sb_printf(b, "\nset grid\nplot ");
+    bool first = true;
+    for (size_t k = 0; k < p->n_series; k++) {
+        const acbb_plot_series *s = &p->series[k];
+        if (!drawn[k]) continue;
+        sb_printf(b, "%s$S%zu using 1:2 with %s linewidth 2 linecolor %d dashtype %d title ",
+                  first ? "" : ", ", k, s->points ? "linespoints pointtype 7 pointsize 0.8"
+                                                  : "lines",
+                  s->color > 0 ? s->color : (int)k + 1, s->dash > 0 ? s->dash : 1);
+        sb_quoted(b, s->label ? s->label : "");
+        first = false;
+    }
+    sb_printf(b, "\n");
+}
+
+static acbb_status xy_check(const acbb_plot_xy *p, const char *png, const char *svg, int w,
+                            int h, acbb_error *err)
+{
+    if (!p || !p->series || p->n_series == 0)
+        return acbb_error_set(err, ACBB_EINVAL, "x-y plot: no series");
+    if (!png && !svg) return acbb_error_set(err, ACBB_EINVAL, "x-y plot: no output file");
+    const char *paths[2] = { png, svg };
+    for (int i = 0; i < 2; i++)
+        if (paths[i] && (!paths[i][0] || has_control_char(paths[i])))
+            return acbb_error_set(err, ACBB_EINVAL,
+                                  "plot path is empty or has a control character");
+    acbb_status st = acbb_plot_check_size(ACBB_PLOT_PNG, w, h, err);
+    if (st != ACBB_OK) return st;
+    return ACBB_OK;
+}
+
+/* The whole script: data once, then one terminal + output + plot per format. */
+static acbb_status xy_script(sbuf *b, const acbb_plot_xy *p, const bool want[2], int w, int h,
+                             acbb_error *err)
+{
+    bool *drawn = calloc(p->n_series, sizeof *drawn);
+    if (!drawn) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
+    size_t used = xy_blocks(b, p, drawn);
+    for (int f = 0, fd = 3; f < 2 && used; f++) {
+        if (!want[f]) continue;
+        terminal_line(b, f == 0 ? ACBB_PLOT_PNG : ACBB_PLOT_SVG, w, h);
+        sb_printf(b, "set output '/dev/fd/%d'\n", fd++);
+        xy_plot(b, p, drawn);
+        /* `set output` with no file closes (and so completes) the image. */
+        sb_printf(b, "set output\n");
+    }
+    sb_printf(b, "exit\n");
+    free(drawn);
+    if (!used)
+        return acbb_error_set(err, ACBB_EINVAL, "x-y plot '%s': no finite point to plot",
+                              p->title ? p->title : "");
+    if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
+    return ACBB_OK;
+}
+
+/* Open the targets, run gnuplot on copies of their descriptors, check and
+ * commit both (or neither). */
+static acbb_status xy_render(const sbuf *b, const char *paths[2], acbb_error *err)
+{
+    acbb_out *o[2] = { NULL, NULL };
+    gp_io io = { .to_file = false };
+    acbb_status st = ACBB_OK;
+    for (int f = 0; f < 2 && st == ACBB_OK; f++) {
+        if (!paths[f]) continue;
+        st = acbb_out_open(paths[f], &o[f], NULL, err);
+        if (st != ACBB_OK) break;
+        int fd = fcntl(acbb_out_fd(o[f]), F_DUPFD_CLOEXEC, XY_FD_MIN);
+        if (fd < 0) st = acbb_error_set(err, ACBB_EIO, "cannot pass %s to gnuplot", paths[f]);
+        else io.extra[io.n_extra++] = fd;
+    }
+    if (st == ACBB_OK) st = run_gnuplot(b, &io, err);
+    for (int f = 0; f < 2 && st == ACBB_OK; f++)
+        if (o[f] && !image_complete(acbb_out_fd(o[f]), f == 0 ? ACBB_PLOT_PNG : ACBB_PLOT_SVG))
+            st = acbb_error_set(err, ACBB_EIO, "gnuplot did not finish %s (disk full?); "
+                                "the old file is kept", paths[f]);
+    for (int k = 0; k < io.n_extra; k++) close(io.extra[k]);
+    for (int f = 0; f < 2; f++) {
+        if (!o[f]) continue;
+        if (st == ACBB_OK) st = acbb_out_commit(o[f], err);
+        else acbb_out_abort(o[f]);
+    }
+    return st;
+}
+
+acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
+                               const char *svg_path, int width, int height, acbb_error *err)
+{
+    acbb_status st = xy_check(p, png_path, svg_path, width, height, err);
+    if (st != ACBB_OK) return st;
+    const char *paths[2] = { png_path, svg_path };
+    bool want[2] = { png_path != NULL, svg_path != NULL };
+    sbuf b = { 0 };
+    st = xy_script(&b, p, want, width, height, err);
+    if (st == ACBB_OK) st = xy_render(&b, paths, err);
+    free(b.p);
+    return st;
+}

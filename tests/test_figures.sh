@@ -1,0 +1,90 @@
+#!/bin/sh
+# End-to-end test of `acbb study seed --out DIR` (TAP): the seed's Figs.
+# 7-19. $1 = path of the acbb binary; cwd = repository root. Needs jq and
+# gnuplot (skipped with the reason when gnuplot is missing). Checks that
+# every panel REPORT.md lists exists as a complete PNG (ends with IEND), a
+# complete SVG (ends with </svg>) and a CSV with at least two finite data
+# rows, that REPORT.md links all three, that every seed figure 7-19 has a
+# section, that the verdict lines agree with `acbb report --json`, and the
+# exit statuses of a bad --out and of a missing gnuplot.
+set -u
+
+ACBB=${1:?usage: test_figures.sh path/to/acbb}
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-figures.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+
+. "$(dirname "$0")/tap.sh"
+
+OUT="$TMP/out"
+if ! command -v "${ACBB_GNUPLOT:-gnuplot}" >/dev/null 2>&1; then
+    skip "study seed --out writes the seed's figures" "gnuplot not installed"
+    tap_done
+    exit $?
+fi
+
+"$ACBB" study seed --out "$OUT" >"$TMP/stdout" 2>"$TMP/err"
+code $? 0 "study seed --out DIR runs"
+[ -s "$OUT/REPORT.md" ]
+t $? "REPORT.md written"
+
+# Panel rows: "| figNN... | title | [PNG](...) ... |" or "| ... | not computed | why |".
+grep -E '^\| fig[0-9]{2}[a-z0-9]* \|' "$OUT/REPORT.md" | awk -F'|' '{gsub(/ /, "", $2); print $2}' \
+    >"$TMP/ids"
+[ "$(wc -l <"$TMP/ids")" -ge 30 ]
+t $? "REPORT.md lists the panels ($(wc -l <"$TMP/ids") of them)"
+! grep -q ' | not computed | ' "$OUT/REPORT.md"
+t $? "every panel was computed (default preset)"
+
+# One check per panel: the three files complete, the data finite, the links.
+while read -r id; do
+    bad=""
+    [ "$(tail -c 8 "$OUT/$id.png" 2>/dev/null | od -An -tx1 | tr -d ' \n')" = "49454e44ae426082" ] \
+        || bad="$bad png"
+    tail -c 16 "$OUT/$id.svg" 2>/dev/null | grep -q '</svg>' || bad="$bad svg"
+    # Data rows: skip comments and the header; x and y must be plain finite numbers.
+    rows=$(awk -F, '/^#/ || NR == 0 { next } !hdr { hdr = 1; next }
+        { if ($2 !~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/ || $3 !~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/) bad++; n++ }
+        END { print (bad ? -1 : n + 0) }' "$OUT/$id.csv" 2>/dev/null)
+    [ "${rows:--1}" -ge 2 ] || bad="$bad csv($rows)"
+    head -3 "$OUT/$id.csv" | grep -q '^series,.*(.*),.*(.*)$' || bad="$bad csv-header"
+    for l in "[PNG]($id.png)" "[SVG]($id.svg)" "[data]($id.csv)"; do
+        grep -F -q "$l" "$OUT/REPORT.md" || bad="$bad link:$l"
+    done
+    [ -z "$bad" ]
+    t $? "$id: complete PNG and SVG, $rows finite data rows, linked${bad:+ (bad:$bad)}"
+done <"$TMP/ids"
+
+[ "$(ls "$OUT"/fig*.png | wc -l)" -eq "$(wc -l <"$TMP/ids")" ]
+t $? "no image that REPORT.md does not list"
+
+for f in 7 8 9 10 11 12 13 14 15 16 17 18 19; do
+    grep -q "^## Fig. $f\$" "$OUT/REPORT.md" || echo "$f" >>"$TMP/missing"
+done
+[ ! -s "$TMP/missing" ]
+t $? "a section for each of the seed's Figs. 7-19"
+
+# Verdicts: "- Item N: VERDICT - statement" against acbb report --json.
+"$ACBB" report presets/7008C.ini --json >"$TMP/report.json" 2>"$TMP/err"
+code $? 0 "acbb report --json runs"
+jq -r '.[] | "\(.item) \(.verdict)"' "$TMP/report.json" | sort >"$TMP/want"
+sed -n 's/^- Item \([0-9]*\): \(HELD\|NOT HELD\|NOT EVALUATED\) - .*/\1 \2/p' "$OUT/REPORT.md" \
+    | sort -u >"$TMP/got"
+[ -s "$TMP/got" ] && join "$TMP/got" "$TMP/want" >/dev/null && \
+    [ "$(join -v1 "$TMP/got" "$TMP/want" | wc -l)" -eq 0 ]
+t $? "each verdict line of REPORT.md is the verdict acbb report gives ($(wc -l <"$TMP/got") items)"
+[ "$(wc -l <"$TMP/got")" -ge 15 ]
+t $? "REPORT.md cites at least 15 of the 18 statements"
+
+# ---- failures ----
+: >"$TMP/file"
+"$ACBB" study seed --out "$TMP/file" >/dev/null 2>"$TMP/err"
+code $? 2 "--out naming a regular file is refused"
+grep -q 'not a directory' "$TMP/err"
+t $? "and the message says why"
+
+ACBB_GNUPLOT="$TMP/no-such-gnuplot" "$ACBB" study seed --out "$TMP/nogp" >/dev/null 2>"$TMP/err"
+code $? 4 "a missing gnuplot is exit 4"
+grep -q 'not computed.*not found' "$TMP/nogp/REPORT.md" 2>/dev/null
+t $? "and REPORT.md lists the panels as not computed, with the reason"
+
+tap_done
