@@ -16,9 +16,11 @@
 
 #include "acbb/measure.h"
 #include "screens.h"
+#include "recover.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
 #define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
+#define RECOVER_S 5.0        /* unsaved edits go to the recovery file this often */
 #define HANGUP_SPINS 1000    /* stdin readable but no key, this often: the tty is gone */
 
 /* Simulated seconds per wall second. The default, x200, shows the
@@ -62,6 +64,14 @@ void acbb_app_prompt(acbb_app *a, acbb_prompt_kind kind, const char *label, cons
     a->prompt.len = strlen(a->prompt.buf);
 }
 
+/* Unsaved edits of this preset from an earlier session: offer them back. */
+static void offer_recovery(acbb_app *a)
+{
+    if (!acbb_recover_pending(&a->ed, a->confirm.path, sizeof a->confirm.path)) return;
+    a->mode = ACBB_MODE_CONFIRM;
+    a->confirm.kind = ACBB_CONFIRM_RECOVER;
+}
+
 static void open_now(acbb_app *a, const char *path)
 {
     acbb_error err = { { 0 } };
@@ -71,6 +81,7 @@ static void open_now(acbb_app *a, const char *path)
     }
     a->edit_error[0] = '\0';
     acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
+    offer_recovery(a);
 }
 
 void acbb_app_open(acbb_app *a, const char *path)
@@ -118,10 +129,12 @@ static void change_pace(acbb_app *a, int dir)
 static void save(acbb_app *a, const char *path)
 {
     acbb_error err = { { 0 } };
-    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK)
+    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "save failed: %s", err.msg);
-    else
+    } else {
+        acbb_recover_clear(&a->ed);
         acbb_app_msg(a, ACBB_ROLE_OK, "saved %s", a->ed.path);
+    }
 }
 
 static void request_quit(acbb_app *a)
@@ -309,9 +322,21 @@ static void prompt_key(acbb_app *a, int ch)
 static void confirm_key(acbb_app *a, int ch)
 {
     a->mode = ACBB_MODE_NORMAL;
-    if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
-        if (ch == 'y' || ch == 'Y') a->quit = 1;
-        else if (ch == 's' || ch == 'S') {
+    if (a->confirm.kind == ACBB_CONFIRM_RECOVER) {
+        char why[512];
+        if (ch != 'y' && ch != 'Y') {
+            acbb_recover_clear(&a->ed);
+            acbb_app_msg(a, ACBB_ROLE_NORMAL, "recovered edits discarded");
+        } else if (acbb_recover_restore(&a->ed, a->confirm.path, why, sizeof why) != 0) {
+            acbb_app_msg(a, ACBB_ROLE_ERROR, "cannot restore: %s", why);
+        } else {
+            acbb_app_msg(a, ACBB_ROLE_OK, "edits restored from the recovery file (u undoes, w writes them)");
+        }
+    } else if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
+        if (ch == 'y' || ch == 'Y') {
+            acbb_recover_clear(&a->ed); /* the user chose to discard them */
+            a->quit = 1;
+        } else if (ch == 's' || ch == 'S') {
             save(a, NULL);
             if (!a->ed.modified) a->quit = 1;
         } else acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting");
@@ -362,6 +387,10 @@ static void draw_message(acbb_app *a)
         if (a->confirm.kind == ACBB_CONFIRM_QUIT)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
                      "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
+                     acbb_editor_name(&a->ed));
+        else if (a->confirm.kind == ACBB_CONFIRM_RECOVER)
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
+                     "Unsaved edits of %s from an earlier session. Restore them? y/n",
                      acbb_editor_name(&a->ed));
         else
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "Unsaved edits. Discard them and open %s? y/n",
@@ -471,12 +500,18 @@ static void handle_signals(acbb_app *a, int *redraw)
         *redraw = 1;
     }
     if (ev.fatal) {
-        /* SIGTERM / SIGHUP: leave now; the caller restores the terminal. */
+        /* SIGTERM / SIGHUP / SIGQUIT: keep the edits, leave now; the
+         * caller restores the terminal. */
+        acbb_recover_write(&a->ed);
         a->quit = 1;
         a->exit_code = 128 + ev.fatal;
     } else if (ev.interrupt) {
-        /* Ctrl-C is "quit"; a second one while asking means yes. */
-        if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) a->quit = 1;
+        /* Ctrl-C is "quit"; a second one while asking means yes, and the
+         * edits go to the recovery file rather than being lost. */
+        if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) {
+            acbb_recover_write(&a->ed);
+            a->quit = 1;
+        }
         else {
             a->mode = ACBB_MODE_NORMAL;
             request_quit(a);
@@ -503,10 +538,14 @@ static void read_keys(acbb_app *a, int *redraw, int *spins)
 
 static void loop(acbb_app *a)
 {
-    double last_frame = 0.0;
+    double last_frame = 0.0, last_recover = 1e-3 * acbb_now_ms();
     int stale = 1, redraw = 1, spins = 0;
     while (!a->quit) {
         double t = 1e-3 * acbb_now_ms();
+        if (t - last_recover >= RECOVER_S) {
+            acbb_recover_write(&a->ed);
+            last_recover = t;
+        }
         if (redraw || (stale && t - last_frame >= FRAME_S)) {
             frame(a);
             last_frame = t;
@@ -547,6 +586,7 @@ static void load_initial(acbb_app *a, const char *preset)
         return;
     }
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "opened %s: r runs it, ? lists every key", path);
+    offer_recovery(a);
 }
 
 int acbb_app_run(const acbb_app_options *opt)

@@ -20,7 +20,7 @@ typedef enum {
 } acbb_mode;
 
 typedef enum { ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN, ACBB_PROMPT_SEARCH } acbb_prompt_kind;
-typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN } acbb_confirm_kind;
+typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
 #define ACBB_PREVIEW_MAX 65536

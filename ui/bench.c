@@ -187,6 +187,7 @@ acbb_status acbb_bench_start(acbb_bench *b, const acbb_scene *scene,
     sigaddset(&block, SIGINT);
     sigaddset(&block, SIGTERM);
     sigaddset(&block, SIGHUP);
+    sigaddset(&block, SIGQUIT);
     sigaddset(&block, SIGWINCH);
     pthread_sigmask(SIG_BLOCK, &block, &old);
     int rc = pthread_create(&b->thread, NULL, bench_main, b);

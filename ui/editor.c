@@ -51,6 +51,13 @@ static void push_undo(acbb_editor *e)
     if (e->undo_n < ACBB_EDITOR_UNDO) e->undo_n++;
 }
 
+void acbb_editor_replace(acbb_editor *e, const acbb_scene *s)
+{
+    push_undo(e);
+    e->scene = *s;
+    refresh_modified(e);
+}
+
 acbb_status acbb_editor_set(acbb_editor *e, size_t i, const char *text, acbb_error *err)
 {
     const acbb_field_info *f = acbb_scene_field(i);
@@ -101,7 +108,9 @@ acbb_status acbb_editor_save(acbb_editor *e, const char *path, acbb_error *err)
     if (!p[0]) return acbb_error_set(err, ACBB_EINVAL, "no file name: use save-as");
     if (strlen(p) >= sizeof e->path)
         return acbb_error_set(err, ACBB_EINVAL, "%s: path too long", p);
-    acbb_status rc = acbb_scene_save(p, &e->scene, err);
+    /* Only the changed lines of the user's file are rewritten (comments and
+     * order stay); a new file is written in full. */
+    acbb_status rc = acbb_scene_save_edits(p, &e->scene, err);
     if (rc != ACBB_OK) return rc;
     if (p != e->path) memmove(e->path, p, strlen(p) + 1);
     e->saved = e->scene;

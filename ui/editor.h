@@ -35,10 +35,14 @@ acbb_status acbb_editor_open(acbb_editor *e, const char *path, acbb_error *err);
 acbb_status acbb_editor_set(acbb_editor *e, size_t i, const char *text, acbb_error *err);
 /* Next (dir > 0) or previous choice of a bool/enum field. */
 acbb_status acbb_editor_cycle(acbb_editor *e, size_t i, int dir, acbb_error *err);
+/* Replace the whole scene (recovered edits) as one undoable edit. */
+void acbb_editor_replace(acbb_editor *e, const acbb_scene *s);
 /* Undo the last accepted edit; 0 if there was none. */
 int acbb_editor_undo(acbb_editor *e);
-/* Save to `path` (NULL: the current path) atomically; on success the
- * editor's path becomes `path` and the marker clears. */
+/* Save to `path` (NULL: the current path) atomically through
+ * acbb_scene_save_edits: in an existing preset only the lines of changed
+ * keys are rewritten, comments and order stay. On success the editor's
+ * path becomes `path` and the marker clears. */
 acbb_status acbb_editor_save(acbb_editor *e, const char *path, acbb_error *err);
 /* Base name of the path for titles ("(default)" without one). */
 const char *acbb_editor_name(const acbb_editor *e);

@@ -36,7 +36,7 @@ typedef struct {
 typedef struct {
     int winch;                /* the terminal was resized */
     int interrupt;            /* SIGINT: the user asks to quit */
-    int fatal;                /* SIGTERM / SIGHUP number: quit now, 0 if none */
+    int fatal;                /* SIGTERM / SIGHUP / SIGQUIT number: quit now, 0 if none */
 } acbb_term_events;
 
 /* Glyphs for a UTF-8 (1) or ASCII (0) terminal. Pure. */

@@ -498,6 +498,7 @@ acbb_status acbb_worker_new(const acbb_scene *scene, int pace, acbb_worker **out
     sigaddset(&block, SIGINT);
     sigaddset(&block, SIGTERM);
     sigaddset(&block, SIGHUP);
+    sigaddset(&block, SIGQUIT);
     sigaddset(&block, SIGWINCH);
     pthread_sigmask(SIG_BLOCK, &block, &old);
     int rc = pthread_create(&w->thread, NULL, worker_main, w);
