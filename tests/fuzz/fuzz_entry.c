@@ -63,6 +63,9 @@ static acbb_fuzz_outcome check_refusal(acbb_status st, const acbb_error *err, co
     if (err->msg[0] == '\0') return broken(why, n, "%s refused with an empty message%s", what, "");
     if (!memchr(err->msg, '\0', sizeof err->msg))
         return broken(why, n, "%s: message not terminated%s", what, "");
+    if (st != ACBB_EINVAL && st != ACBB_EIO && st != ACBB_ILL_POSED)
+        return broken(why, n, "%s refused with status %s", what, acbb_status_name(st));
+    snprintf(why, n, "%s", err->msg);
     return ACBB_FUZZ_REJECTED;
 }
 
@@ -124,8 +127,11 @@ acbb_fuzz_outcome acbb_fuzz_set(const uint8_t *data, size_t size, char *why, siz
                                         "--set batch", why, n);
     if (o == ACBB_FUZZ_ACCEPTED) o = check_scene(&s, why, n);
     for (size_t i = 0; i < k && o != ACBB_FUZZ_BROKEN; i++) {
-        acbb_fuzz_outcome one = set_one(edits[i], why, n);
-        if (one == ACBB_FUZZ_BROKEN) o = one;
+        char one_why[1024];
+        if (set_one(edits[i], one_why, sizeof one_why) == ACBB_FUZZ_BROKEN) {
+            snprintf(why, n, "edit %zu alone: %s", i + 1, one_why);
+            o = ACBB_FUZZ_BROKEN;
+        }
     }
     free(text);
     return o;

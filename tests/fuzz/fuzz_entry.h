@@ -6,7 +6,8 @@
  * the issue "Nothing lost, nothing overwritten, nothing hangs" asks of it:
  * a rejected input gets a failure status and a non-empty message, an
  * accepted one gives a scene whose every value is finite and which passes
- * acbb_scene_validate. */
+ * acbb_scene_validate. `why` gets the refusal's message, or for
+ * ACBB_FUZZ_BROKEN the invariant that failed. */
 #ifndef ACBB_FUZZ_ENTRY_H
 #define ACBB_FUZZ_ENTRY_H
 
