@@ -24,49 +24,56 @@
 #include "plot.h"
 #include "presets.h"
 #include "figures.h"
+#include "progress.h"
 
 /* ---- driving a run ---- */
 
 typedef void (*row_fn)(void *ctx, const acbb_snapshot *snap);
 
+/* What a run reports on the way: rows (CSV, plot history) and the
+ * progress line, both fed the snapshot after every step; `cancel` is the
+ * Ctrl-C flag (progress.h). Every field but snap may be NULL. */
 typedef struct {
     acbb_snapshot *snap;
     row_fn row;
     void *ctx;
+    acbb_cli_progress *progress;
+    const atomic_int *cancel;
 } drive_ctx;
 
 static int drive_hook(void *ctx, const acbb_sim *sim)
 {
     drive_ctx *d = ctx;
     acbb_sim_snapshot(sim, d->snap);
-    d->row(d->ctx, d->snap);
+    if (d->row) d->row(d->ctx, d->snap);
+    if (d->progress) acbb_cli_progress_step(d->progress, d->snap);
     return 0;
 }
 
-/* The engine's run loop to the end of the run, calling `row` for the
- * initial state and after every step. `snap` holds the final state. */
-static acbb_status drive(acbb_sim *sim, acbb_snapshot *snap, row_fn row, void *ctx)
+/* The engine's run loop to the end of the run (or a cancel). `d->snap`
+ * holds the final state. */
+static acbb_status drive(acbb_sim *sim, drive_ctx *d)
 {
-    drive_ctx d = { snap, row, ctx };
-    acbb_run_ctl ctl = { .hook = row ? drive_hook : NULL, .ctx = &d };
+    bool watch = d->row || (d->progress && d->progress->on);
+    acbb_run_ctl ctl = { .hook = watch ? drive_hook : NULL, .ctx = d, .cancel = d->cancel };
     acbb_status st = acbb_sim_drive(sim, &ctl);
-    acbb_sim_snapshot(sim, snap);
+    acbb_sim_snapshot(sim, d->snap);
     return st;
 }
 
-static void run_point(acbb_cli_point *p)
+static void run_point(acbb_cli_point *p, const atomic_int *cancel)
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
     double t0 = acbb_now_ms();
-    p->status = acbb_sim_new(&p->scene, &sim, &err);
+    p->status = acbb_sim_new_ctl(&p->scene, cancel, &sim, &err);
     if (p->status != ACBB_OK) {
         p->have_snap = false;
         snprintf(p->message, sizeof p->message, "%s", acbb_cli_err_text(&err, p->status));
         p->wall_ms = acbb_now_ms() - t0;
         return;
     }
-    p->status = drive(sim, &p->snap, NULL, NULL);
+    p->status = drive(sim, &(drive_ctx){ .snap = &p->snap, .cancel = cancel });
     p->have_snap = true;
     acbb_sim_free(sim);
     p->wall_ms = acbb_now_ms() - t0;
@@ -79,6 +86,7 @@ typedef struct {
     acbb_cli_point *pts;
     size_t n;
     atomic_size_t next;
+    const atomic_int *cancel;
 } point_pool;
 
 static void *pool_worker(void *arg)
@@ -87,7 +95,14 @@ static void *pool_worker(void *arg)
     for (;;) {
         size_t i = atomic_fetch_add(&pool->next, 1);
         if (i >= pool->n) return NULL;
-        run_point(&pool->pts[i]);
+        acbb_cli_point *p = &pool->pts[i];
+        if (pool->cancel && atomic_load(pool->cancel)) {
+            p->have_snap = false;
+            p->status = ACBB_CANCELLED;
+            snprintf(p->message, sizeof p->message, "cancelled before it started");
+            continue;
+        }
+        run_point(p, pool->cancel);
     }
 }
 
@@ -97,9 +112,9 @@ static long cpu_count(void)
     return n > 0 ? n : 1;
 }
 
-static void run_points(acbb_cli_point *pts, size_t n, long jobs)
+static void run_points(acbb_cli_point *pts, size_t n, long jobs, const atomic_int *cancel)
 {
-    point_pool pool = { .pts = pts, .n = n };
+    point_pool pool = { .pts = pts, .n = n, .cancel = cancel };
     atomic_init(&pool.next, 0);
     size_t extra = jobs > 1 ? (size_t)jobs - 1 : 0;
     if (extra > n) extra = n;
@@ -158,6 +173,27 @@ static int run_report(const acbb_cli_args *a, const char *preset, const acbb_sce
     return rc;
 }
 
+/* Compile the scene (cancellable: a dynamic-level set-up is long); on
+ * failure the message, the JSON failure record and the exit status. */
+static int start_sim(const acbb_scene *sc, bool json, const atomic_int *cancel,
+                     acbb_cli_progress *prog, acbb_sim **sim)
+{
+    acbb_error err = { { 0 } };
+    acbb_cli_progress_note(prog, "setting up the %s model", acbb_model_level_name(sc->model));
+    acbb_status st = acbb_sim_new_ctl(sc, cancel, sim, &err);
+    acbb_cli_progress_end(prog);
+    if (st == ACBB_OK) return 0;
+    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+    if (json) {
+        acbb_cli_out o;
+        acbb_cli_out_init(&o, stdout);
+        acbb_cli_json_failed(&o, sc, acbb_status_name(st), acbb_cli_err_text(&err, st));
+    }
+    return acbb_cli_exit_for(st);
+}
+
+/* Ctrl-C / SIGTERM end the run as `cancelled` with the last good state
+ * (progress.h); the output below is written as for any other failure. */
 int acbb_cli_cmd_run(const acbb_cli_args *a)
 {
     int rc = 0;
@@ -168,33 +204,30 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     acbb_scene sc;
     if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
 
+    acbb_cli_progress prog;
+    acbb_cli_progress_init(&prog, stderr, sc.steady_tol);
+    const atomic_int *cancel = acbb_cli_interrupt_begin();
     acbb_sim *sim = NULL;
-    acbb_error err = { { 0 } };
-    acbb_status st = acbb_sim_new(&sc, &sim, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
-        if (json) {
-            acbb_cli_out o;
-            acbb_cli_out_init(&o, stdout);
-            acbb_cli_json_failed(&o, &sc, acbb_status_name(st), acbb_cli_err_text(&err, st));
-        }
-        return acbb_cli_exit_for(st);
-    }
+    rc = start_sim(&sc, json, cancel, &prog, &sim);
     acbb_cli_file csv = { 0 };
-    if (csv_path && (rc = acbb_cli_file_open(&csv, csv_path))) {
+    if (!rc && csv_path && (rc = acbb_cli_file_open(&csv, csv_path))) acbb_sim_free(sim);
+    acbb_snapshot *snap = rc ? NULL : malloc(sizeof *snap);
+    if (!rc && !snap) {
         acbb_sim_free(sim);
+        if (csv_path) acbb_out_abort(csv.handle);
+        rc = ACBB_EXIT_INTERNAL;
+    }
+    if (rc) {
+        acbb_cli_interrupt_end();
         return rc;
     }
     if (csv_path) acbb_cli_csv_header(&csv.out);
-    acbb_snapshot *snap = malloc(sizeof *snap);
-    if (!snap) {
-        acbb_sim_free(sim);
-        if (csv_path) acbb_out_abort(csv.handle);
-        return ACBB_EXIT_INTERNAL;
-    }
     run_rows rows = { csv_path ? &csv.out : NULL, plot ? malloc(sizeof *rows.hist) : NULL };
     if (rows.hist) acbb_history_init(rows.hist);
-    drive(sim, snap, (csv_path || rows.hist) ? run_row_cb : NULL, &rows);
+    drive(sim, &(drive_ctx){ snap, (csv_path || rows.hist) ? run_row_cb : NULL, &rows, &prog,
+                             cancel });
+    acbb_cli_progress_end(&prog);
+    acbb_cli_interrupt_end();
     acbb_sim_free(sim);
     rc = csv_path ? acbb_cli_file_close(&csv) : 0;
     rc = acbb_cli_worst(run_report(a, preset, &sc, snap), rc);
@@ -315,7 +348,8 @@ static int study_table(const acbb_cli_args *a, long jobs)
         study_pair(pts, STUDY_N + k, &base, study_speeds[k], 100.0, study_speeds[k]);
         study_pair(pts, 2 * STUDY_N + k, &base, study_speeds[k], 1000.0, study_speeds[k]);
     }
-    run_points(pts, 2 * n_pairs, jobs);
+    run_points(pts, 2 * n_pairs, jobs, acbb_cli_interrupt_begin());
+    acbb_cli_interrupt_end();
 
     if (a->val[CLI_OPT_CSV]) {
         acbb_cli_file csv = { 0 };
@@ -347,7 +381,7 @@ static int bench_points(const acbb_scene *base, const double *loads, size_t n,
             if (loads) pts[i].scene.axial_load = loads[i];
         }
         double t0 = acbb_now_ms();
-        run_points(pts, n, jobs);
+        run_points(pts, n, jobs, NULL);
         times[r] = acbb_now_ms() - t0;
         if (!points_ok(pts, n)) return ACBB_EXIT_SOLVER;
     }

@@ -10,6 +10,7 @@
 #include "acbb/outfile.h"
 #include "acbb/scene.h"
 #include "acbb/study.h"
+#include "progress.h"
 #include "report.h"
 
 enum { EXIT_OK = 0, EXIT_BADINPUT = 2, EXIT_SOLVER = 3, EXIT_INTERNAL = 4 };
@@ -339,7 +340,9 @@ static int report(const rargs *a, const acbb_scene *base)
         if (md) acbb_out_abort(md);
         return EXIT_INTERNAL;
     }
-    acbb_study_run(st, 0, NULL);
+    /* Ctrl-C ends the unfinished runs as cancelled (cli/progress.h). */
+    acbb_study_run(st, 0, acbb_cli_interrupt_begin());
+    acbb_cli_interrupt_end();
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st) };
     if (a->json) print_json(stdout, &v);
     else print_text(stdout, &v);

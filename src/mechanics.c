@@ -223,17 +223,29 @@ static double ball_force_scale(const acbb_mech *m)
     return fmax(F / m->g.Z, 1.0);
 }
 
-/* Park a ball whose contacts are both open (zero speed under radial load):
- * centre on the line between the groove centres, touching nothing. */
+/* Park a ball whose contacts are both open (zero speed, no interference):
+ * on the line between the groove centres, the gap g <= 0 split so that the
+ * smoothed law gives Qi = Qo (the ball's equilibrium without body forces).
+ * Zeroing the loads instead made the thrust jump by Z Kc (eps/2)^1.5 sin(a)
+ * (~1 mN for 7008C) where the gap closes, so a thrust below that had no
+ * equilibrium and ended as "contact lost" (MODEL.md 11, unloaded balls). */
 static void ball_freeze(ball_ctx *c)
 {
     const acbb_geometry *g = &c->m->g;
+    const acbb_ball_state *b = c->b;
     double L = hypot(c->A1, c->A2);
     double Lo = g->lambda_o - 0.5 * g->D - c->off.dL_o;
-    double r1, r2;
-    ball_eval(c, c->A1 / L * Lo, c->A2 / L * Lo, &r1, &r2);
-    c->b->Qi = c->b->Qo = 0.0;
-    c->b->loaded = 0;
+    double gap = L - Lo - (g->lambda_i - 0.5 * g->D - c->off.dL_i);
+    /* Qo(d_o) - Qi(gap - d_o) rises with d_o: bisect on the outer deflection. */
+    double lo = gap - 1e-6, hi = 1e-6;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * (1.0 + fabs(lo)); it++) {
+        double mid = 0.5 * (lo + hi);
+        double f = b->hc_o.Kc * pos15(mid) - b->hc_i.Kc * pos15(gap - mid);
+        if (f > 0.0) hi = mid; else lo = mid;
+    }
+    double r1, r2, Lb = Lo + 0.5 * (lo + hi);
+    ball_eval(c, c->A1 / L * Lb, c->A2 / L * Lb, &r1, &r2);
+    c->b->loaded = c->b->Qi > LOADED_N || c->b->Qo > LOADED_N;
 }
 
 /* ---- bracketed fallback (MODEL.md section 11: "fallback: 1-D bisection")
@@ -342,7 +354,10 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, doubl
         return ACBB_OK;
     }
     c.L0 = m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o;
-    double z = delta_to_z(hypot(b->X1, b->X2) - c.L0), a = atan2(b->X1, b->X2);
+    /* Start no deeper than outer contact: a ball parked open at zero speed
+     * (ball_freeze) sits a gap away, where the bracketed fallback's radial
+     * bracket may not reach. */
+    double z = delta_to_z(fmax(hypot(b->X1, b->X2) - c.L0, 0.0)), a = atan2(b->X1, b->X2);
     double tol = fmax(m->tol, 1e-14) * ball_force_scale(m);
     double z0 = z, a0 = a;
     acbb_status rc = ball_newton(&c, &z, &a, tol);
@@ -638,8 +653,13 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (rc == ACBB_OK && !state_finite(w))
         rc = ACBB_NONFINITE;
     if (rc == ACBB_OK) {
+        /* A converged equilibrium with no inner contact carrying load is a
+         * lost contact, unless the applied load itself is below what open
+         * contacts carry: 1e-5 N of thrust puts ~2e-6 N on each ball, less
+         * than LOADED_N but a carried load (the threshold follows it). */
+        double floor_N = fmin(LOADED_N, 0.5 * (fabs(m->Fx) + fabs(m->Fz)) / m->g.Z);
         int any = 0;
-        for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > LOADED_N;
+        for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > floor_N;
         if (!any && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || (m->fix_axial && !m->centred)))
             rc = ACBB_CONTACT_LOST;
     }

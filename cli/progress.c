@@ -1,0 +1,138 @@
+/* acbb CLI — progress line and Ctrl-C for long runs (progress.h). */
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/measure.h"
+#include "progress.h"
+
+/* A signal handler can only reach file-scope state: the CLI's one flag
+ * (the engine keeps none; it is handed the pointer). */
+static atomic_int interrupt_flag;
+static struct sigaction old_int, old_term;
+
+static void on_interrupt(int sig)
+{
+    (void)sig;
+    atomic_store(&interrupt_flag, 1);
+}
+
+const atomic_int *acbb_cli_interrupt_begin(void)
+{
+    atomic_store(&interrupt_flag, 0);
+    /* SA_RESETHAND: the first signal asks the run to stop, a second one
+     * finds the default action and kills at once. */
+    struct sigaction sa = { .sa_handler = on_interrupt, .sa_flags = SA_RESETHAND };
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    return &interrupt_flag;
+}
+
+void acbb_cli_interrupt_end(void)
+{
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+}
+
+bool acbb_cli_interrupted(void) { return atomic_load(&interrupt_flag) != 0; }
+
+/* ---- the residual's decay ---- */
+
+/* Each new point multiplies the old weights by this: about the last 10
+ * steps count, so the fit follows the run's slowest (final) decay rate. */
+#define FIT_FADE 0.9
+#define FIT_MIN_POINTS 10
+
+void acbb_cli_decay_add(acbb_cli_decay_fit *fit, double t, double residual)
+{
+    if (!(residual > 0.0) || !isfinite(residual) || !isfinite(t)) return;
+    double y = log(residual);
+    fit->s0 = FIT_FADE * fit->s0 + 1.0;
+    fit->sx = FIT_FADE * fit->sx + t;
+    fit->sy = FIT_FADE * fit->sy + y;
+    fit->sxx = FIT_FADE * fit->sxx + t * t;
+    fit->sxy = FIT_FADE * fit->sxy + t * y;
+    fit->n++;
+}
+
+double acbb_cli_decay_eta(const acbb_cli_decay_fit *fit, double now, double target)
+{
+    if (fit->n < FIT_MIN_POINTS || !(target > 0.0)) return -1.0;
+    double mx = fit->sx / fit->s0, my = fit->sy / fit->s0;
+    double vxx = fit->sxx / fit->s0 - mx * mx, vxy = fit->sxy / fit->s0 - mx * my;
+    if (!(vxx > 1e-12)) return -1.0;        /* all points at one instant */
+    double slope = vxy / vxx;               /* d ln(residual) / dt, 1/s */
+    if (!(slope < 0.0)) return -1.0;        /* not decaying (yet) */
+    double y_now = my + slope * (now - mx);
+    double eta = (log(target) - y_now) / slope;
+    if (eta < 0.0) eta = 0.0;
+    return isfinite(eta) && eta < 1e7 ? eta : -1.0;
+}
+
+/* ---- the line ---- */
+
+void acbb_cli_progress_init(acbb_cli_progress *p, FILE *f, double steady_tol)
+{
+    memset(p, 0, sizeof *p);
+    p->f = f;
+    p->target = steady_tol;
+    const char *env = getenv("ACBB_PROGRESS");
+    if (env && *env) p->on = strcmp(env, "0") != 0;
+    else p->on = isatty(fileno(f)) != 0;
+    p->t0_ms = acbb_now_ms();
+    p->last_ms = -1e9;
+}
+
+static void format_eta(char *buf, size_t n, double eta)
+{
+    if (eta < 0.0) snprintf(buf, n, "ETA ?");
+    else if (eta < 120.0) snprintf(buf, n, "ETA %.0f s", eta);
+    else if (eta < 7200.0) snprintf(buf, n, "ETA %.0f min", eta / 60.0);
+    else snprintf(buf, n, "ETA %.1f h", eta / 3600.0);
+}
+
+/* Write `line` over the previous one (padding instead of an ANSI erase). */
+static void show_line(acbb_cli_progress *p, const char *line, int len)
+{
+    if (len < 0) return;
+    fprintf(p->f, "\r%s%*s", line, p->shown > len ? p->shown - len : 0, "");
+    fflush(p->f);
+    p->shown = len;
+}
+
+void acbb_cli_progress_note(acbb_cli_progress *p, const char *fmt, ...)
+{
+    if (!p->on) return;
+    char line[160];
+    va_list ap;
+    va_start(ap, fmt);
+    int len = vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    show_line(p, line, len < (int)sizeof line ? len : (int)sizeof line - 1);
+}
+
+void acbb_cli_progress_step(acbb_cli_progress *p, const acbb_snapshot *snap)
+{
+    if (!p->on) return;
+    double now_ms = acbb_now_ms(), now = (now_ms - p->t0_ms) / 1e3;
+    if (snap->iteration > 0) acbb_cli_decay_add(&p->fit, now, snap->residual);
+    if (now_ms - p->last_ms < 250.0) return;   /* at most ~4 redraws a second */
+    p->last_ms = now_ms;
+    char eta[32], line[160];
+    format_eta(eta, sizeof eta, acbb_cli_decay_eta(&p->fit, now, p->target));
+    int len = snprintf(line, sizeof line,
+                       "step %ld  residual %.2e / %.1e K/s  t %.0f s  %s  (Ctrl-C stops)",
+                       snap->iteration, snap->residual, p->target, snap->time, eta);
+    show_line(p, line, len < (int)sizeof line ? len : (int)sizeof line - 1);
+}
+
+void acbb_cli_progress_end(acbb_cli_progress *p)
+{
+    if (!p->on || p->shown == 0) return;
+    fprintf(p->f, "\r%*s\r", p->shown, "");
+    fflush(p->f);
+    p->shown = 0;
+}

@@ -1,0 +1,60 @@
+/* acbb CLI — watching and stopping a long run (issue "Nothing lost,
+ * nothing overwritten, nothing hangs").
+ *
+ * Interrupts: acbb_cli_interrupt_begin installs SIGINT/SIGTERM handlers
+ * that set one flag, passed as acbb_run_ctl.cancel (sim.h) so the engine
+ * ends the run with ACBB_CANCELLED and the last good state. The handlers
+ * reset themselves (SA_RESETHAND): a second Ctrl-C kills at once.
+ * acbb_cli_interrupt_end restores the previous handlers.
+ *
+ * Progress: one line on stderr, rewritten in place (\r) at most four times a
+ * second and erased at the end: step, residual vs the steady target,
+ * simulated time and an ETA from a log-linear fit of the residual over wall
+ * time. Shown when stderr is a terminal; ACBB_PROGRESS=1 forces it on (for
+ * tests and logs), ACBB_PROGRESS=0 off. */
+#ifndef ACBB_CLI_PROGRESS_H
+#define ACBB_CLI_PROGRESS_H
+
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include "acbb/sim.h"
+
+/* Install the handlers; returns the flag they set (cleared first). */
+const atomic_int *acbb_cli_interrupt_begin(void);
+void acbb_cli_interrupt_end(void);
+bool acbb_cli_interrupted(void);
+
+/* Weighted least squares of ln(residual) against wall seconds, older
+ * points fading (the decay rate changes as the run settles). */
+typedef struct {
+    double s0, sx, sy, sxx, sxy;
+    int n;
+} acbb_cli_decay_fit;
+
+typedef struct {
+    FILE *f;
+    bool on;
+    double t0_ms, last_ms;
+    double target;             /* fidelity steady_tol, K/s */
+    int shown;                 /* length of the line on screen */
+    acbb_cli_decay_fit fit;
+} acbb_cli_progress;
+
+/* Whether to show progress on `f` (terminal or ACBB_PROGRESS). */
+void acbb_cli_progress_init(acbb_cli_progress *p, FILE *f, double steady_tol);
+/* Feed one step (every step: the fit uses them all); draws when due. */
+void acbb_cli_progress_step(acbb_cli_progress *p, const acbb_snapshot *snap);
+/* A one-off line (e.g. "setting up"), shown at once when progress is on. */
+void acbb_cli_progress_note(acbb_cli_progress *p, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+/* Erase the line. */
+void acbb_cli_progress_end(acbb_cli_progress *p);
+
+/* Seconds until the residual reaches `target` at the fitted decay rate,
+ * measured from wall second `now`; < 0 while not estimable (too few
+ * points, or not decaying). */
+double acbb_cli_decay_eta(const acbb_cli_decay_fit *fit, double now, double target);
+void acbb_cli_decay_add(acbb_cli_decay_fit *fit, double t, double residual);
+
+#endif

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Long runs can be watched and stopped (issue "Nothing lost, nothing
+# overwritten, nothing hangs"): SIGINT/SIGTERM end `acbb run` as
+# `cancelled`, exit 3, with the last good state in the JSON; a second
+# SIGINT kills at once; the progress line (ACBB_PROGRESS=1) is drawn on
+# stderr and erased. $1 = the acbb binary.
+. "$(dirname "$0")/tap.sh"
+ACBB=$1
+PRESETS=$PWD/presets
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+now_ms() { date +%s%3N; }
+
+# finite FILE NAME: valid JSON (a NaN would not parse) whose every number is finite.
+finite() {
+    jq -e '[.. | numbers | select(isinfinite or isnan)] | length == 0' "$1" >/dev/null 2>&1
+    t $? "$2"
+}
+
+# wait_for FILE PATTERN SECONDS: until the (\r-split) FILE shows a line matching PATTERN.
+wait_for() {
+    local i
+    for ((i = 0; i < $3 * 10; i++)); do
+        tr '\r' '\n' <"$1" 2>/dev/null | grep -q -- "$2" && return 0
+        sleep 0.1
+    done
+    return 1
+}
+
+# 1. The issue's case: the dynamic level of combined-load (set-up alone takes
+#    many seconds), SIGINT after 1 s.
+"$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
+    >"$TMP/a.json" 2>"$TMP/err" &
+pid=$!
+sleep 1
+t0=$(now_ms)
+kill -INT $pid
+wait $pid
+rc=$?
+dt=$(($(now_ms) - t0))
+code $rc 3 "dynamic combined-load, SIGINT after 1 s: exit 3"
+[ "$dt" -lt 2000 ]
+t $? "it ended ${dt} ms after the signal (bound 2000 ms)"
+jqt "$TMP/a.json" '.status == "cancelled"' "JSON status is cancelled"
+finite "$TMP/a.json" "every number in that JSON is finite"
+has "$TMP/err" "cancelled" "stderr says cancelled"
+
+# 2. Cancelled after some steps: the last good state is in the output. The
+#    dynamic level on 7008C with a 3x3 contact grid steps within seconds.
+ACBB_PROGRESS=1 "$ACBB" run "$PRESETS/7008C.ini" --set fidelity.model=dynamic \
+    --set fidelity.contact_grid=3 --json >"$TMP/b.json" 2>"$TMP/b.err" &
+pid=$!
+if wait_for "$TMP/b.err" '^step [1-9]' 60; then
+    kill -TERM $pid
+    wait $pid
+    rc=$?
+    cp "$TMP/b.err" "$TMP/err"
+    code $rc 3 "SIGTERM after the first steps: exit 3"
+    jqt "$TMP/b.json" '.status == "cancelled" and .iterations >= 1 and .time_s > 0' \
+        "JSON: cancelled, with the steps taken and the simulated time"
+    jqt "$TMP/b.json" '.temperature_C.outer_ring > 20 and .losses_W.total > 0' \
+        "JSON: the last state has heated the outer ring and has losses"
+    finite "$TMP/b.json" "every number in that JSON is finite"
+    tr '\r' '\n' <"$TMP/b.err" | grep -q '^step [0-9]*  residual [0-9.e+-]* / 1.0e-04 K/s  t [0-9]* s  ETA'
+    t $? "the progress line shows step, residual vs target, simulated time and ETA"
+    # The line is erased (blanks, then \r) before the final message.
+    tr '\r' '\n' <"$TMP/b.err" | grep -B1 '^acbb: cancelled' | head -n 1 | grep -q '^ *$'
+    t $? "the progress line is erased before the final message"
+else
+    kill -KILL $pid 2>/dev/null
+    t 1 "the dynamic run took a step within 60 s"
+fi
+
+# 3. A second SIGINT kills at once (default action restored). The two are
+#    sent back to back; when the first already ended the run before the
+#    second arrived, the check cannot tell and is skipped.
+"$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
+    >/dev/null 2>"$TMP/err" &
+pid=$!
+sleep 0.5
+kill -INT $pid
+kill -INT $pid 2>/dev/null
+wait $pid
+rc=$?
+if [ $rc -eq 3 ]; then
+    skip "a second SIGINT ends the process at once" "the first one ended the run first"
+else
+    [ $rc -eq 130 ]
+    t $? "a second SIGINT ends the process at once (exit $rc, want 130)"
+fi
+
+# 4. Without a terminal (and without ACBB_PROGRESS) nothing is drawn.
+ACBB_PROGRESS= "$ACBB" run "$PRESETS/7008C.ini" --quiet 2>"$TMP/err"
+code $? 0 "a plain run still converges"
+! grep -q $'\r' "$TMP/err"
+t $? "no progress line when stderr is not a terminal"
+
+tap_done
