@@ -63,6 +63,16 @@ const acbb_cli_command acbb_cli_commands[] = {
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
       "byte. JSONL or CSV (not mixed); OUT - is stdout.\n",
       0, 2, CLI_MAX_POS, -1, acbb_cli_cmd_merge },
+    { "sensitivity", NULL, "PRESET", "which uncertain input moves a result, or flips its sign",
+      "e.g. acbb sensitivity 7008C --metric balls[0].Qi_N --delta thermal_expansion\n"
+      "Every uncertain input (`acbb keys` shows its plausible range and source) is\n"
+      "set to each end of its range, one at a time; the table is sorted by effect\n"
+      "and FLIPS SIGN marks the inputs whose range changes the metric's sign.\n"
+      "--morris R adds Morris elementary effects over all inputs together\n"
+      "(R (k+1) points, k inputs; seed 1). --plot FILE.png|svg: a tornado chart.\n"
+      "Exit 3 when a run did not reach steady state (the table is still printed).\n",
+      SCENE_OPTS | O(METRIC) | O(DELTA) | O(MORRIS) | O(JOBS) | O(JSON) | O(CSV) | O(PLOT), 1, 1,
+      0, acbb_cli_cmd_sensitivity },
     { "study", NULL, "PRESET", "TE vs WTE: with and without thermal expansion",
       "Loads 50..1000 N at the preset's speed, speeds 2000..16000 rpm at 100 N\n"
       "and at 1000 N.\n",

@@ -808,10 +808,18 @@ static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t 
     sb_printf(b, "\nset xlabel ");
     sb_quoted(b, xlabel && xlabel[0] ? xlabel : "metric");
     sb_printf(b, "\nset ytics nomirror font ',8'\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
-    sb_printf(b, "set style fill solid 0.6 border -1\nset key outside right top\n");
-    /* dashed: the scene's value; solid: zero, where the metric changes sign */
+    sb_printf(b, "set style fill solid 0.6 border -1\nset key below\n");
+    /* dashed: the scene's value; solid: zero, where the metric changes
+     * sign (drawn only when a bar reaches it) */
+    double lo = base, hi = base;
+    for (size_t i = 0; i < n; i++) {
+        if (isfinite(bars[i].lo)) lo = fmin(lo, bars[i].lo), hi = fmax(hi, bars[i].lo);
+        if (isfinite(bars[i].hi)) lo = fmin(lo, bars[i].hi), hi = fmax(hi, bars[i].hi);
+    }
     sb_printf(b, "set arrow from %.17g, graph 0 to %.17g, graph 1 nohead dashtype 2\n", base, base);
-    sb_printf(b, "set arrow from 0, graph 0 to 0, graph 1 nohead linewidth 2 linecolor 'black'\n");
+    if (lo <= 0.0 && hi >= 0.0)
+        sb_printf(b, "set arrow from 0, graph 0 to 0, graph 1 nohead linewidth 2 "
+                     "linecolor 'black'\n");
     sb_printf(b, "plot $T using (($2+$3)/2):1:(($3<$2)?$3:$2):(($3<$2)?$2:$3):($1-0.35):($1+0.35)"
                  ":ytic(5) with boxxyerror linecolor 1 title 'low end of the plausible range', "
                  "$T using (($2+$4)/2):1:(($4<$2)?$4:$2):(($4<$2)?$2:$4):($1-0.35):($1+0.35) "
