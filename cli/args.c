@@ -54,6 +54,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                          "balls[0].Qi_N, squeeze_um.net, ..." },
     [CLI_OPT_DELTA] = { "delta", "thermal_expansion",
                         "the metric's difference TE - WTE (two runs per point)" },
+    [CLI_OPT_SENSITIVITY] = { "sensitivity", NULL,
+                              "also test each TE-WTE sign statement against the plausible "
+                              "ranges of the uncertain inputs (about 1300 more runs)" },
     [CLI_OPT_MORRIS] = { "morris", "R",
                          "also Morris elementary effects: R trajectories on a 4-level grid "
                          "(0..1000; 10 is usual)" },
