@@ -51,6 +51,17 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                         "an existing FILE is resumed" },
     [CLI_OPT_SHARD] = { "shard", "K/N", "run only points with index % N == K-1 (K = 1..N)" },
     [CLI_OPT_MAX_POINTS] = { "max-points", "N", "run at most N of the remaining points, then stop" },
+    [CLI_OPT_METRIC] = { "metric", "M",
+                         "a scalar of the run's JSON: losses_W.total, temperature_C.outer_ring, "
+                         "balls[0].Qi_N, squeeze_um.net, ..." },
+    [CLI_OPT_DELTA] = { "delta", "thermal_expansion",
+                        "the metric's difference TE - WTE (two runs per point)" },
+    [CLI_OPT_SENSITIVITY] = { "sensitivity", NULL,
+                              "also test each TE-WTE sign statement against the plausible "
+                              "ranges of the uncertain inputs (about 1300 more runs)" },
+    [CLI_OPT_MORRIS] = { "morris", "R",
+                         "also Morris elementary effects: R trajectories on a 4-level grid "
+                         "(0..1000; 10 is usual)" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

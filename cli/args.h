@@ -25,10 +25,12 @@ typedef enum {
     CLI_OPT_SERIES, CLI_OPT_BORE, CLI_OPT_ANGLE, CLI_OPT_NO_MOUSE,
     CLI_OPT_HELP, CLI_OPT_BASELINE,
     CLI_OPT_GRID, CLI_OPT_JSONL, CLI_OPT_SHARD, CLI_OPT_MAX_POINTS,
+    CLI_OPT_METRIC, CLI_OPT_DELTA, CLI_OPT_MORRIS, CLI_OPT_SENSITIVITY,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
-#define CLI_BIT(o) (1u << (unsigned)(o))
+#define CLI_BIT(o) (1ull << (unsigned)(o))
+_Static_assert(CLI_OPT_COUNT <= 64, "the command table keeps options in a 64-bit mask");
 
 typedef struct {
     const char *name;      /* long name without "--" */
@@ -62,7 +64,7 @@ struct acbb_cli_command {
     const char *args;         /* positional synopsis, e.g. "PRESET" or "[PRESET]" */
     const char *summary;      /* one line for `acbb help` */
     const char *details;      /* more text for `acbb help CMD`, or NULL */
-    unsigned options;         /* CLI_BIT() of the accepted options */
+    unsigned long long options; /* CLI_BIT() of the accepted options (CLI_OPT_COUNT <= 64) */
     int min_pos, max_pos;
     int preset_pos;           /* positional resolved as a preset, or -1 */
     int (*run)(const acbb_cli_args *a);

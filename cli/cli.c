@@ -456,13 +456,16 @@ fail:
 /* ---- acbb keys ---- */
 
 /* One key: its default, then the interval exactly as the check applies it
- * ("(0, 100] mm": an open end is refused, a closed one accepted). */
+ * ("(0, 100] mm": an open end is refused, a closed one accepted), then the
+ * plausible range of an uncertain input (what `acbb sensitivity` varies). */
 static void print_key(size_t i, const acbb_field_info *fi, const char *deflt)
 {
-    char range[160];
+    char range[160], plaus[320];
     acbb_scene_field_interval(i, range, sizeof range);
     printf("%s.%s = %s\n    %s: %s\n", fi->section, fi->key, deflt, range,
            fi->help ? fi->help : "");
+    acbb_scene_field_plausible(i, plaus, sizeof plaus);
+    if (plaus[0]) printf("    plausible: %s\n", plaus);
 }
 
 int acbb_cli_cmd_keys(const acbb_cli_args *a)

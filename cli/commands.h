@@ -15,6 +15,9 @@ int acbb_cli_cmd_study(const acbb_cli_args *a);
 int acbb_cli_cmd_bench_speed(const acbb_cli_args *a);
 int acbb_cli_cmd_keys(const acbb_cli_args *a);
 
+/* sensitivity.c */
+int acbb_cli_cmd_sensitivity(const acbb_cli_args *a);
+
 /* plot.c, accuracy.c, presets.c */
 int acbb_cli_plot(const acbb_cli_args *a);
 int acbb_cli_bench_accuracy(const acbb_cli_args *a);

@@ -63,6 +63,16 @@ const acbb_cli_command acbb_cli_commands[] = {
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
       "byte. JSONL or CSV (not mixed); OUT - is stdout.\n",
       0, 2, CLI_MAX_POS, -1, acbb_cli_cmd_merge },
+    { "sensitivity", NULL, "PRESET", "which uncertain input moves a result, or flips its sign",
+      "e.g. acbb sensitivity 7008C --metric balls[0].Qi_N --delta thermal_expansion\n"
+      "Every uncertain input (`acbb keys` shows its plausible range and source) is\n"
+      "set to each end of its range, one at a time; the table is sorted by effect\n"
+      "and FLIPS SIGN marks the inputs whose range changes the metric's sign.\n"
+      "--morris R adds Morris elementary effects over all inputs together\n"
+      "(R (k+1) points, k inputs; seed 1). --plot FILE.png|svg: a tornado chart.\n"
+      "Exit 3 when a run did not reach steady state (the table is still printed).\n",
+      SCENE_OPTS | O(METRIC) | O(DELTA) | O(MORRIS) | O(JOBS) | O(JSON) | O(CSV) | O(PLOT), 1, 1,
+      0, acbb_cli_cmd_sensitivity },
     { "study", NULL, "PRESET", "TE vs WTE: with and without thermal expansion",
       "Loads 50..1000 N at the preset's speed, speeds 2000..16000 rpm at 100 N\n"
       "and at 1000 N. PRESET `seed` is 7008C, the seed paper's case.\n"
@@ -87,7 +97,7 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "report", NULL, "PRESET",
       "the seed's conclusions (MODEL.md 12): held or not",
       "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n",
-      SCENE_OPTS | O(JSON) | O(MD), 1, 1, 0, cmd_report },
+      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY), 1, 1, 0, cmd_report },
     { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
       "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
       "never over an existing file) with the ISO 15 bore, outside diameter and width;\n"
@@ -236,6 +246,7 @@ static int cmd_report(const acbb_cli_args *a)
     for (size_t i = 0; i < a->n_sets; i++) argv[argc++] = "--set", argv[argc++] = a->sets[i];
     if (a->val[CLI_OPT_JSON]) argv[argc++] = "--json";
     if (a->val[CLI_OPT_MD]) argv[argc++] = "--md", argv[argc++] = a->val[CLI_OPT_MD];
+    if (a->val[CLI_OPT_SENSITIVITY]) argv[argc++] = "--sensitivity";
     int rc = acbb_cli_report(argc, (char **)argv);
     free(argv);
     return rc;

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/measure.h"
 #include "acbb/outfile.h"
 #include "acbb/scene.h"
 #include "acbb/study.h"
@@ -23,7 +24,38 @@ typedef struct {
     acbb_model_level model;      /* the preset's level */
     const acbb_study *st;
     const acbb_study_runs *runs;
+    const acbb_study_robust *rob;  /* --sensitivity: one per acbb_study_signs row, else NULL */
+    size_t n_rob;
+    double rob_ms;
 } report_view;
+
+/* ---- robustness (--sensitivity) ---- */
+
+/* "holds" / "does not hold", then the single plausible changes that turn
+ * it, e.g. "surroundings.shaft_bore = convective (+6.719)". */
+static void robust_text(char *buf, size_t cap, const acbb_study_robust *r)
+{
+    size_t u = 0;
+    if (!r->ok) {
+        snprintf(buf, cap, "the scene's run gave no value");
+        return;
+    }
+    u += (size_t)snprintf(buf, cap, "%+.4g at the scene's values: %s; ", r->y,
+                          r->holds ? "holds" : "does not hold");
+    if (r->n_turns == 0)
+        u += (size_t)snprintf(buf + u, u < cap ? cap - u : 0, "%s over all %zu plausible ranges "
+                              "one at a time", r->holds ? "survives" : "no single change makes "
+                              "it hold", r->n_inputs);
+    else
+        u += (size_t)snprintf(buf + u, u < cap ? cap - u : 0, "%s", r->holds
+                              ? "fails with" : "holds with");
+    for (size_t k = 0; k < r->n_turns && u < cap; k++)
+        u += (size_t)snprintf(buf + u, cap - u, "%s %s = %s (%+.4g)", k ? "," : "",
+                              r->turns[k].key, r->turns[k].value, r->turns[k].y);
+    if (r->failed && u < cap)
+        snprintf(buf + u, cap - u, " [%zu point(s) without a value]", r->failed);
+}
+
 
 static const char *const k_vmark[] = { "ok", "NO", "n/e" };
 
@@ -83,6 +115,25 @@ static void print_items_text(FILE *f, const report_view *c)
     }
 }
 
+static void print_robust_text(FILE *f, const report_view *c)
+{
+    char line[4600], head[16];
+    snprintf(line, sizeof line, "Robustness (--sensitivity, %.1f s): each TE-WTE sign "
+             "statement at 15000 rpm, every uncertain input set to each end of its plausible "
+             "range (`acbb keys`), one at a time; the changes listed turn the verdict. Physics "
+             "is unchanged; this says how close each verdict is to the uncertain inputs.",
+             1e-3 * c->rob_ms);
+    wrap(f, "", 0, line);
+    for (size_t k = 0; k < c->n_rob; k++) {
+        const acbb_study_robust *r = &c->rob[k];
+        char t[4000];
+        robust_text(t, sizeof t, r);
+        snprintf(head, sizeof head, "%2d  ", r->sign->item);
+        snprintf(line, sizeof line, "%s: %s", r->sign->what, t);
+        wrap(f, head, 4, line);
+    }
+}
+
 static void print_text(FILE *f, const report_view *c)
 {
     char line[4600];
@@ -114,6 +165,10 @@ static void print_text(FILE *f, const report_view *c)
     int nv[3];
     acbb_study_counts(c->st, nv);
     fprintf(f, "\n%d held, %d not held, %d not evaluated\n", nv[0], nv[1], nv[2]);
+    if (c->rob) {
+        fputc('\n', f);
+        print_robust_text(f, c);
+    }
 }
 
 /* ---- JSON ---- */
@@ -149,6 +204,37 @@ static void print_json_checks(FILE *f, const acbb_study_item *it)
     }
 }
 
+/* --sensitivity: the item's sign conditions and what turns them. */
+static void print_json_robust(FILE *f, const report_view *c, int item)
+{
+    bool first = true;
+    for (size_t k = 0; c->rob && k < c->n_rob; k++) {
+        const acbb_study_robust *r = &c->rob[k];
+        if (r->sign->item != item) continue;
+        fputs(first ? ",\n   \"robustness\": [" : ", ", f);
+        first = false;
+        fputs("{\"condition\": ", f);
+        json_str(f, r->sign->what);
+        fputs(", \"metric\": ", f);
+        json_str(f, r->sign->metric);
+        fprintf(f, ", \"load_N\": %g, \"value\": ", r->sign->load_N);
+        json_num(f, r->ok ? r->y : NAN);
+        fprintf(f, ", \"holds\": %s, \"inputs\": %zu, \"turned_by\": [",
+                r->holds ? "true" : "false", r->n_inputs);
+        for (size_t t = 0; t < r->n_turns; t++) {
+            fputs(t ? ", {\"key\": " : "{\"key\": ", f);
+            json_str(f, r->turns[t].key);
+            fputs(", \"value\": ", f);
+            json_str(f, r->turns[t].value);
+            fputs(", \"at\": ", f);
+            json_num(f, r->turns[t].y);
+            fputc('}', f);
+        }
+        fputs("]}", f);
+    }
+    if (!first) fputc(']', f);
+}
+
 static void print_json(FILE *f, const report_view *c)
 {
     size_t n = acbb_study_n_items(c->st), nc;
@@ -178,7 +264,9 @@ static void print_json(FILE *f, const report_view *c)
             fputs(": ", f);
             json_num(f, it->values[k].v);
         }
-        fprintf(f, "}}}%s\n", i + 1 < n ? "," : "");
+        fputs("}}", f);
+        print_json_robust(f, c, it->num);
+        fprintf(f, "}%s\n", i + 1 < n ? "," : "");
     }
     fputs("]\n", f);
 }
@@ -200,6 +288,7 @@ static void print_md_head(FILE *f, const report_view *c)
     fputs("# Seed report: the acceptance statements of MODEL.md section 12\n\n", f);
     fprintf(f, "Generated by `acbb report %s", c->preset);
     for (int i = 0; i < c->n_sets; i++) fprintf(f, " --set %s", c->sets[i]);
+    if (c->rob) fputs(" --sensitivity", f);
     fputs("` (the engine study, src/study*.c, formatted by cli/report.c). Physics over "
           "wished-for results: every statement is judged from runs of the engine, HELD, NOT "
           "HELD or NOT EVALUATED, with the numbers that decide it.\n\n", f);
@@ -212,6 +301,34 @@ static void print_md_head(FILE *f, const report_view *c)
             acbb_model_level_name(c->model), acbb_study_n_failed(c->st));
     fprintf(f, "**%d held, %d not held, %d not evaluated** (of %zu).\n\n", nv[0], nv[1], nv[2],
             acbb_study_n_items(c->st));
+}
+
+static void print_robust_md(FILE *f, const report_view *c)
+{
+    fputs("\n## Robustness over the plausible ranges (`--sensitivity`)\n\n"
+          "Each statement that is the sign of a TE - WTE difference, at 15000 rpm, with every "
+          "uncertain input (the ASSUMED and UNSURE parameters of MODEL.md and the surroundings; "
+          "`acbb keys` gives each plausible range and its source) set to each end of its "
+          "range, one at a time (`acbb sensitivity`). The last column lists the single "
+          "plausible changes that turn the condition, with the difference there: for a "
+          "condition that does not hold, what would make it hold; for one that holds, what "
+          "would break it. Nothing in the physics is changed to make a statement hold.\n\n"
+          "| # | condition | at the scene's values | single plausible changes that turn it |\n"
+          "|---|---|---|---|\n", f);
+    for (size_t k = 0; k < c->n_rob; k++) {
+        const acbb_study_robust *r = &c->rob[k];
+        char t[4000];
+        robust_text(t, sizeof t, r);
+        char *colon = strstr(t, "; ");   /* value and verdict | the changes */
+        if (colon) *colon = '\0';
+        fprintf(f, "| %d | ", r->sign->item);
+        md_text(f, r->sign->what);
+        fputs(" | ", f);
+        md_text(f, t);
+        fputs(" | ", f);
+        md_text(f, colon ? colon + 2 : "");
+        fputs(" |\n", f);
+    }
 }
 
 static void print_md(FILE *f, const report_view *c)
@@ -251,6 +368,7 @@ static void print_md(FILE *f, const report_view *c)
             fputc('\n', f);
         }
     }
+    if (c->rob) print_robust_md(f, c);
     fputs("\nThresholds MODEL.md does not give are fixed in src/study_priv.h (REPORT_*) and "
           "named in each check.\n", f);
 }
@@ -258,13 +376,14 @@ static void print_md(FILE *f, const report_view *c)
 /* ---- arguments and entry ---- */
 
 static const char k_usage[] =
-    "usage: acbb report PRESET [--set section.key=value]... [--json] [--md FILE]\n";
+    "usage: acbb report PRESET [--set section.key=value]... [--json] [--md FILE] "
+    "[--sensitivity]\n";
 
 typedef struct {
     const char *preset, *md;
     const char **sets;
     int n_sets;
-    bool json;
+    bool json, sensitivity;
 } rargs;
 
 static int usage(const char *fmt, const char *what)
@@ -292,6 +411,8 @@ static int parse(rargs *a, int argc, char **argv)
             else a->md = v;
         } else if (strcmp(s, "--json") == 0) {
             a->json = true;
+        } else if (strcmp(s, "--sensitivity") == 0) {
+            a->sensitivity = true;
         } else if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
             fputs(k_usage, stdout);
             return -1;
@@ -341,9 +462,21 @@ static int report(const rargs *a, const acbb_scene *base)
         return EXIT_INTERNAL;
     }
     /* Ctrl-C ends the unfinished runs as cancelled (cli/progress.h). */
-    acbb_study_run(st, 0, acbb_cli_interrupt_begin());
+    const atomic_int *cancel = acbb_cli_interrupt_begin();
+    acbb_study_run(st, 0, cancel);
+    report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
+                      NULL, 0, 0 };
+    size_t n_signs;
+    acbb_study_signs(&n_signs);
+    acbb_study_robust *rob = a->sensitivity ? calloc(n_signs, sizeof *rob) : NULL;
+    if (a->sensitivity) {
+        double t0 = acbb_now_ms();
+        acbb_status rs = rob ? acbb_study_robustness(base, 0, cancel, rob, &err) : ACBB_ENOMEM;
+        if (rs == ACBB_OK) v.rob = rob, v.n_rob = n_signs, v.rob_ms = acbb_now_ms() - t0;
+        else fprintf(stderr, "acbb: report: --sensitivity: %s\n",
+                     err.msg[0] ? err.msg : acbb_status_name(rs));
+    }
     acbb_cli_interrupt_end();
-    report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st) };
     if (a->json) print_json(stdout, &v);
     else print_text(stdout, &v);
     int rc = acbb_study_n_failed(st) ? EXIT_SOLVER : EXIT_OK;
@@ -356,6 +489,7 @@ static int report(const rargs *a, const acbb_scene *base)
         }
     }
     acbb_study_free(st);
+    free(rob);
     return rc;
 }
 

@@ -722,34 +722,115 @@ static acbb_status accuracy_script(sbuf *b, const acbb_accuracy_row *rows, size_
     return ACBB_OK;
 }
 
+/* Format, path and size of a plot file, checked before any work. */
+static acbb_status check_file_args(acbb_plot_format fmt, const char *path, int width,
+                                   int height, acbb_error *err)
+{
+    if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)
+        return acbb_error_set(err, ACBB_EINVAL, "plot file format must be png or svg");
+    if (!path || !path[0] || has_control_char(path))
+        return acbb_error_set(err, ACBB_EINVAL, "plot path is empty or has a control character");
+    return acbb_plot_check_size(fmt, width, height, err);
+}
+
+/* The terminal line, then `body` (already checked), rendered into path. */
+static acbb_status render_body(const sbuf *body, acbb_plot_format fmt, const char *path,
+                               int width, int height, acbb_error *err)
+{
+    sbuf b = { 0 };
+    terminal_line(&b, fmt, width, height);
+    if (sb_reserve(&b, body->n)) {
+        memcpy(b.p + b.n, body->p, body->n);
+        b.n += body->n;
+        b.p[b.n] = '\0';
+    }
+    acbb_status st = b.oom ? acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot")
+                           : render_file(&b, fmt, path, err);
+    free(b.p);
+    return st;
+}
+
 acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
                                     acbb_plot_format fmt, const char *path, int width,
                                     int height, const char *title, acbb_error *err)
 {
     if (!rows || n == 0)
         return acbb_error_set(err, ACBB_EINVAL, "accuracy plot: no data");
-    if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)
-        return acbb_error_set(err, ACBB_EINVAL, "plot file format must be png or svg");
-    if (!path || !path[0] || has_control_char(path))
-        return acbb_error_set(err, ACBB_EINVAL, "plot path is empty or has a control character");
-    acbb_status st = acbb_plot_check_size(fmt, width, height, err);
+    acbb_status st = check_file_args(fmt, path, width, height, err);
     if (st != ACBB_OK) return st;
-
-    sbuf b = { 0 };
-    terminal_line(&b, fmt, width, height);
     /* The data are checked before a temporary file is made. */
     sbuf body = { 0 };
     st = accuracy_script(&body, rows, n, title, err);
-    if (st == ACBB_OK) {
-        if (sb_reserve(&b, body.n)) {
-            memcpy(b.p + b.n, body.p, body.n);
-            b.n += body.n;
-            b.p[b.n] = '\0';
-        }
-        if (b.oom) st = acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
+    if (st == ACBB_OK) st = render_body(&body, fmt, path, width, height, err);
+    free(body.p);
+    return st;
+}
+
+/* ---- tornado chart (acbb sensitivity) ---- */
+
+/* Datablock $T: one row per drawable bar, top (largest) first: y, base,
+ * low-end value, high-end value, "label". A bar with a non-finite end
+ * draws that end at the base (no bar). */
+static size_t tornado_block(sbuf *b, const acbb_tornado_bar *bars, size_t n, double base)
+{
+    size_t count = 0;
+    sb_printf(b, "$T << EOD\n");
+    for (size_t i = 0; i < n; i++) {
+        char label[96];
+        snprintf(label, sizeof label, "%s", bars[i].label ? bars[i].label : "?");
+        for (char *c = label; *c; c++)
+            if (*c == '"' || (unsigned char)*c < 0x20) *c = '_';
+        double lo = isfinite(bars[i].lo) ? bars[i].lo : base;
+        double hi = isfinite(bars[i].hi) ? bars[i].hi : base;
+        sb_printf(b, "%zu %.17g %.17g %.17g \"%s\"\n", n - i, base, lo, hi, label);
+        count++;
     }
-    if (st == ACBB_OK) st = render_file(&b, fmt, path, err);
-    free(b.p);
+    sb_printf(b, "EOD\n");
+    return count;
+}
+
+static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t n, double base,
+                                  const char *title, const char *xlabel, acbb_error *err)
+{
+    if (!isfinite(base)) return acbb_error_set(err, ACBB_EINVAL, "tornado plot: no base value");
+    tornado_block(b, bars, n, base);
+    sb_printf(b, "set title ");
+    sb_quoted(b, title && title[0] ? title : "sensitivity, one input at a time");
+    sb_printf(b, "\nset xlabel ");
+    sb_quoted(b, xlabel && xlabel[0] ? xlabel : "metric");
+    sb_printf(b, "\nset ytics nomirror font ',8'\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
+    sb_printf(b, "set style fill solid 0.6 border -1\nset key below\n");
+    /* dashed: the scene's value; solid: zero, where the metric changes
+     * sign (drawn only when a bar reaches it) */
+    double lo = base, hi = base;
+    for (size_t i = 0; i < n; i++) {
+        if (isfinite(bars[i].lo)) lo = fmin(lo, bars[i].lo), hi = fmax(hi, bars[i].lo);
+        if (isfinite(bars[i].hi)) lo = fmin(lo, bars[i].hi), hi = fmax(hi, bars[i].hi);
+    }
+    sb_printf(b, "set arrow from %.17g, graph 0 to %.17g, graph 1 nohead dashtype 2\n", base, base);
+    if (lo <= 0.0 && hi >= 0.0)
+        sb_printf(b, "set arrow from 0, graph 0 to 0, graph 1 nohead linewidth 2 "
+                     "linecolor 'black'\n");
+    sb_printf(b, "plot $T using (($2+$3)/2):1:(($3<$2)?$3:$2):(($3<$2)?$2:$3):($1-0.35):($1+0.35)"
+                 ":ytic(5) with boxxyerror linecolor 1 title 'low end of the plausible range', "
+                 "$T using (($2+$4)/2):1:(($4<$2)?$4:$2):(($4<$2)?$2:$4):($1-0.35):($1+0.35) "
+                 "with boxxyerror linecolor 2 title 'high end'\n");
+    sb_printf(b, "set output\nexit\n");
+    if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
+    return ACBB_OK;
+}
+
+acbb_status acbb_plot_tornado_file(const acbb_tornado_bar *bars, size_t n, double base,
+                                   acbb_plot_format fmt, const char *path, int width,
+                                   int height, const char *title, const char *xlabel,
+                                   acbb_error *err)
+{
+    if (!bars || n == 0) return acbb_error_set(err, ACBB_EINVAL, "tornado plot: no data");
+    acbb_status st = check_file_args(fmt, path, width, height, err);
+    if (st != ACBB_OK) return st;
+    sbuf body = { 0 };
+    st = tornado_script(&body, bars, n, base, title, xlabel, err);
+    if (st == ACBB_OK) st = render_body(&body, fmt, path, width, height, err);
     free(body.p);
     return st;
 }

@@ -47,21 +47,28 @@ static const char *const k_bc[] = {"fixed", "convective", NULL};
 #define LO_OPEN(ends) ((ends) == OC || (ends) == OO)
 #define HI_OPEN(ends) ((ends) == CO || (ends) == OO)
 #define REAL(sec, key, unit, member, scale, def, ends, lo, hi, help) \
-    {{sec, key, ACBB_FIELD_REAL, unit, lo, hi, NULL, help, LO_OPEN(ends), HI_OPEN(ends)}, \
-     offsetof(acbb_scene, member), scale, def, ends}
+    REALP(sec, key, unit, member, scale, def, ends, lo, hi, help, 0, 0, NULL)
+/* A REAL key that is an uncertain input: plausible range plo..phi (preset
+ * units) and its source (scene.h, acbb_field_info). */
+#define REALP(sec, key, unit, member, scale, def, ends, lo, hi, help, plo, phi, psrc) \
+    {{sec, key, ACBB_FIELD_REAL, unit, lo, hi, NULL, help, LO_OPEN(ends), HI_OPEN(ends), \
+      plo, phi, psrc}, offsetof(acbb_scene, member), scale, def, ends}
 #define INT(sec, key, member, def, lo, hi, help) \
-    {{sec, key, ACBB_FIELD_INT, "", lo, hi, NULL, help, false, false}, \
+    {{sec, key, ACBB_FIELD_INT, "", lo, hi, NULL, help, false, false, 0, 0, NULL}, \
      offsetof(acbb_scene, member), 1.0, def, CC}
 #define BOOL(sec, key, member, def, help) \
-    {{sec, key, ACBB_FIELD_BOOL, "", 0, 1, NULL, help, false, false}, \
+    {{sec, key, ACBB_FIELD_BOOL, "", 0, 1, NULL, help, false, false, 0, 0, NULL}, \
      offsetof(acbb_scene, member), 1.0, def, CC}
 #define ENUM(sec, key, member, choices, def, help) \
+    ENUMP(sec, key, member, choices, def, help, 0, 0, NULL)
+/* An ENUM key that is a two-level uncertain input: choices plo and phi. */
+#define ENUMP(sec, key, member, choices, def, help, plo, phi, psrc) \
     {{sec, key, ACBB_FIELD_ENUM, "", 0, \
-      (double)(sizeof(choices) / sizeof(choices[0]) - 2), choices, help, false, false}, \
-     offsetof(acbb_scene, member), 1.0, def, CC}
+      (double)(sizeof(choices) / sizeof(choices[0]) - 2), choices, help, false, false, \
+      plo, phi, psrc}, offsetof(acbb_scene, member), 1.0, def, CC}
 
 /* Six keys per part of [materials]. */
-#define MATERIAL(part, vE, vnu, vrho, vcp, vk, vchi) \
+#define MATERIAL(part, vE, vnu, vrho, vcp, vk, vchi, chi_lo, chi_hi, chi_src) \
     REAL("materials", #part "_E_GPa", "GPa", part.E, 1e9, vE, OC, 0, 1000, \
          "Young's modulus of the " #part), \
     REAL("materials", #part "_poisson", "", part.nu, 1.0, vnu, OO, 0, 0.5, \
@@ -72,16 +79,18 @@ static const char *const k_bc[] = {"fixed", "convective", NULL};
          "specific heat of the " #part), \
     REAL("materials", #part "_k_W_mK", "W/(m K)", part.k, 1.0, vk, OC, 0, 1000, \
          "thermal conductivity of the " #part), \
-    REAL("materials", #part "_expansion_ppm_K", "ppm/K", part.chi, 1e-6, vchi, CC, 0, 100, \
-         "linear thermal expansion coefficient of the " #part)
+    REALP("materials", #part "_expansion_ppm_K", "ppm/K", part.chi, 1e-6, vchi, CC, 0, 100, \
+          "linear thermal expansion coefficient of the " #part, chi_lo, chi_hi, chi_src)
 
 /* Three keys per cooled face of [surroundings] (MODEL.md 8.1, 13); the
  * seed holds each face at ambient. */
-#define FACE_BC(name, member, what, h_def) \
-    ENUM("surroundings", name, member.kind, k_bc, ACBB_BC_FIXED, \
-         what ": fixed at the coolant temperature (seed) or convective"), \
-    REAL("surroundings", name "_h_W_m2K", "W/(m^2 K)", member.h, 1.0, h_def, OC, 0, 1e10, \
-         "film coefficient of a convective " what), \
+#define FACE_BC(name, member, what, h_def, h_lo, h_hi, h_src) \
+    ENUMP("surroundings", name, member.kind, k_bc, ACBB_BC_FIXED, \
+          what ": fixed at the coolant temperature (seed) or convective", \
+          ACBB_BC_FIXED, ACBB_BC_CONVECTIVE, \
+          "MODEL.md 13: [S] holds it at ambient; convective at the h below"), \
+    REALP("surroundings", name "_h_W_m2K", "W/(m^2 K)", member.h, 1.0, h_def, OC, 0, 1e10, \
+          "film coefficient of a convective " what, h_lo, h_hi, h_src), \
     REAL("surroundings", name "_coolant_dT_K", "K", member.dT, 1.0, 0, CC, -100, 200, \
          what " coolant temperature minus operating.ambient_C (0: at ambient)")
 
@@ -119,26 +128,33 @@ const acbb_sfield acbb_sf_table[] = {
     REAL("bearing", "roughness_ball_um", "um", roughness_ball, 1e-6, 0.10, CC, 0, 10,
          "RMS roughness of the balls"),
 
-    MATERIAL(ball, 207, 0.3, 7810, 450, 40.1, 12.5),
-    MATERIAL(ring, 207, 0.3, 7810, 450, 40.1, 12.5),
-    MATERIAL(shaft, 212, 0.298, 7860, 485, 42.4, 11.5),
-    MATERIAL(housing, 143, 0.27, 7300, 510, 45.0, 10.5),
-    MATERIAL(cage, 206, 0.254, 7830, 460, 44.0, 11.7),
+    MATERIAL(ball, 207, 0.3, 7810, 450, 40.1, 12.5, 11.5, 13, "MODEL.md 10 ASSUMED 12.5 (52100 handbook 11.5-13)"),
+    MATERIAL(ring, 207, 0.3, 7810, 450, 40.1, 12.5, 11.5, 13, "MODEL.md 10 ASSUMED 12.5 (52100 handbook 11.5-13)"),
+    MATERIAL(shaft, 212, 0.298, 7860, 485, 42.4, 11.5, 10.8, 12.5,
+             "MODEL.md 10 ASSUMED 11.5 (medium-C steel 10.8-12.5)"),
+    MATERIAL(housing, 143, 0.27, 7300, 510, 45.0, 10.5, 9, 12,
+             "MODEL.md 10 ASSUMED 10.5 (grey iron 9-12)"),
+    MATERIAL(cage, 206, 0.254, 7830, 460, 44.0, 11.7, 10.8, 12.5,
+             "MODEL.md 10 ASSUMED 11.7 (steel 10.8-12.5)"),
 
     REAL("lubricant", "oil_density_kg_m3", "kg/m^3", oil_density, 1.0, 876, OC, 0, 2000,
          "oil density at 20 C"),
     REAL("lubricant", "oil_nu40_mm2_s", "mm^2/s", oil_nu40, 1e-6, 30, CC, 1, 10000,
          "oil kinematic viscosity at 40 C (Walther law, MODEL.md section 5)"),
-    REAL("lubricant", "oil_nu100_mm2_s", "mm^2/s", oil_nu100, 1e-6, 5.3, CC, 1, 10000,
-         "oil kinematic viscosity at 100 C (Walther law)"),
+    REALP("lubricant", "oil_nu100_mm2_s", "mm^2/s", oil_nu100, 1e-6, 5.3, CC, 1, 10000,
+          "oil kinematic viscosity at 100 C (Walther law)", 5.0, 5.8,
+          "MODEL.md 5 ASSUMED 5.3 (ISO VG 32, VI 90-120)"),
     REAL("lubricant", "oil_eta_const_Pa_s", "Pa s", oil_eta_const, 1.0, 0.2, OC, 0, 100,
          "oil viscosity used when viscosity_model = const"),
-    REAL("lubricant", "oil_alpha_pv_per_GPa", "1/GPa", oil_alpha_pv, 1e-9, 20, CC, 0, 100,
-         "pressure-viscosity coefficient alpha_pv"),
-    REAL("lubricant", "oil_k_W_mK", "W/(m K)", oil_k, 1.0, 0.13, OC, 0, 10,
-         "oil thermal conductivity"),
-    REAL("lubricant", "oil_cp_J_kgK", "J/(kg K)", oil_cp, 1.0, 1950, OC, 0, 10000,
-         "oil specific heat"),
+    REALP("lubricant", "oil_alpha_pv_per_GPa", "1/GPa", oil_alpha_pv, 1e-9, 20, CC, 0, 100,
+          "pressure-viscosity coefficient alpha_pv", 15, 25,
+          "MODEL.md 5 ASSUMED, mineral oil 1.5-2.5e-8 1/Pa"),
+    REALP("lubricant", "oil_k_W_mK", "W/(m K)", oil_k, 1.0, 0.13, OC, 0, 10,
+          "oil thermal conductivity", 0.11, 0.15,
+          "MODEL.md 5 ASSUMED 0.13 (mineral oils 0.11-0.15)"),
+    REALP("lubricant", "oil_cp_J_kgK", "J/(kg K)", oil_cp, 1.0, 1950, OC, 0, 10000,
+          "oil specific heat", 1800, 2100,
+          "MODEL.md 10 ASSUMED 1950 (mineral oils 1.8-2.1 kJ/kgK)"),
     REAL("lubricant", "air_eta_Pa_s", "Pa s", air_eta, 1.0, 2e-5, OC, 0, 1e-3, "air viscosity"),
     REAL("lubricant", "air_density_kg_m3", "kg/m^3", air_density, 1.0, 1.128, OC, 0, 100,
          "air density"),
@@ -147,22 +163,28 @@ const acbb_sfield acbb_sf_table[] = {
     REAL("lubricant", "air_cp_J_kgK", "J/(kg K)", air_cp, 1.0, 1007, OC, 0, 10000,
          "air specific heat"),
     REAL("lubricant", "air_prandtl", "", air_pr, 1.0, 0.71, OC, 0, 10, "air Prandtl number"),
-    REAL("lubricant", "mixture_k_W_mK", "W/(m K)", mix_k, 1.0, 0.04, OC, 0, 10,
-         "oil-air mixture conductivity k_d"),
+    REALP("lubricant", "mixture_k_W_mK", "W/(m K)", mix_k, 1.0, 0.04, OC, 0, 10,
+          "oil-air mixture conductivity k_d", 0.02, 0.06,
+          "MODEL.md 8.1 interpretation of [S] T2: +-50 %"),
     REAL("lubricant", "air_flow_L_min", "L/min", q_air, 1e-3 / 60.0, 60, CC, 0, 10000,
          "oil-air lubrication: air flow"),
     REAL("lubricant", "oil_flow_ml_h", "ml/h", q_oil, 1e-6 / 3600.0, 0.4, CC, 0, 100000,
          "oil-air lubrication: oil flow"),
-    REAL("lubricant", "boundary_friction", "", mu_bd, 1.0, 0.10, CC, 0, 1,
-         "boundary (asperity) friction coefficient mu_bd"),
-    REAL("lubricant", "limiting_shear_ratio", "", lambda_lim, 1.0, 0.07, OC, 0, 1,
-         "limiting shear stress / pressure Lambda_L"),
-    REAL("lubricant", "eyring_stress_MPa", "MPa", tau_eyring, 1e6, 5, OC, 0, 1000,
-         "Eyring stress tau_E"),
-    REAL("lubricant", "hysteresis_loss", "", hysteresis, 1.0, 0.007, CC, 0, 1,
-         "elastic hysteresis loss coefficient epsilon"),
-    REAL("lubricant", "drag_coefficient", "", drag_cd, 1.0, 0.45, CC, 0, 10,
-         "drag coefficient C_D of a ball in the oil-air mixture"),
+    REALP("lubricant", "boundary_friction", "", mu_bd, 1.0, 0.10, CC, 0, 1,
+          "boundary (asperity) friction coefficient mu_bd", 0.08, 0.13,
+          "MODEL.md 5 ASSUMED 0.08-0.13"),
+    REALP("lubricant", "limiting_shear_ratio", "", lambda_lim, 1.0, 0.07, OC, 0, 1,
+          "limiting shear stress / pressure Lambda_L", 0.05, 0.1,
+          "MODEL.md 5 ASSUMED 0.05-0.1"),
+    REALP("lubricant", "eyring_stress_MPa", "MPa", tau_eyring, 1e6, 5, OC, 0, 1000,
+          "Eyring stress tau_E", 2.5, 10,
+          "MODEL.md 5 ASSUMED 5 MPa, no range quoted: x/2 to x2"),
+    REALP("lubricant", "hysteresis_loss", "", hysteresis, 1.0, 0.007, CC, 0, 1,
+          "elastic hysteresis loss coefficient epsilon", 0.005, 0.01,
+          "MODEL.md 6 UNSURE, [HK]/[J] 0.005-0.01"),
+    REALP("lubricant", "drag_coefficient", "", drag_cd, 1.0, 0.45, CC, 0, 10,
+          "drag coefficient C_D of a ball in the oil-air mixture", 0.38, 0.5,
+          "MODEL.md 6 ASSUMED, sphere curve 0.38-0.5 for 1e3<Re<2e5"),
     ENUM("lubricant", "viscosity_model", visc, k_visc, ACBB_VISC_ROELANDS,
          "pressure-viscosity law (const: oil_eta_const_Pa_s everywhere)"),
     ENUM("lubricant", "traction_model", traction, k_traction, ACBB_TRACTION_EYRING_CAP,
@@ -170,14 +192,18 @@ const acbb_sfield acbb_sf_table[] = {
 
     REAL("mounting", "shaft_bore_mm", "mm", shaft_bore, 1e-3, 0, CC, 0, 2000,
          "hollow-shaft bore d_s (0 = derive: 25/40 x bore, the seed's 25 mm for 7008C)"),
-    REAL("mounting", "h_fit_outer_W_m2K", "W/(m^2 K)", h_fit_outer, 1.0, 5000, OC, 0, 1e7,
-         "outer ring / housing contact conductance"),
-    REAL("mounting", "h_fit_inner_W_m2K", "W/(m^2 K)", h_fit_inner, 1.0, 20000, OC, 0, 1e7,
-         "inner ring / shaft contact conductance"),
-    REAL("mounting", "h_face_W_m2K", "W/(m^2 K)", h_face, 1.0, 3000, OC, 0, 1e7,
-         "clamped ring face conductance"),
-    REAL("mounting", "h_natural_W_m2K", "W/(m^2 K)", h_natural, 1.0, 10, OC, 0, 10000,
-         "natural convection on the housing exterior"),
+    REALP("mounting", "h_fit_outer_W_m2K", "W/(m^2 K)", h_fit_outer, 1.0, 5000, OC, 0, 1e7,
+          "outer ring / housing contact conductance", 1000, 20000,
+          "MODEL.md 8.1 ASSUMED calibration knob, 1e3-2e4"),
+    REALP("mounting", "h_fit_inner_W_m2K", "W/(m^2 K)", h_fit_inner, 1.0, 20000, OC, 0, 1e7,
+          "inner ring / shaft contact conductance", 1000, 50000,
+          "MODEL.md 8.1 ASSUMED calibration knob, 1e3-5e4"),
+    REALP("mounting", "h_face_W_m2K", "W/(m^2 K)", h_face, 1.0, 3000, OC, 0, 1e7,
+          "clamped ring face conductance", 1000, 10000,
+          "MODEL.md 8.1 ASSUMED calibration knob, 1e3-1e4"),
+    REALP("mounting", "h_natural_W_m2K", "W/(m^2 K)", h_natural, 1.0, 10, OC, 0, 10000,
+          "natural convection on the housing exterior", 5, 50,
+          "MODEL.md 10 ASSUMED 10 (natural 5-25, fan-assisted 50)"),
     ENUM("mounting", "preload", preload, k_preload, ACBB_PRELOAD_FORCE,
          "force: axial load applied (dx free); displacement: dx fixed by preload_N"),
     REAL("mounting", "preload_N", "N", preload_force, 1.0, 300, CC, 0, 1e6,
@@ -193,12 +219,14 @@ const acbb_sfield acbb_sf_table[] = {
          "housing exterior: convective (mounting.h_natural_W_m2K to ambient) or fixed at ambient"),
     REAL("surroundings", "shaft_length_mm", "mm", shaft_length, 1e-3, 0, CC, 0, 10000,
          "shaft segment carried by the network (0 = derive: 3 x width)"),
-    FACE_BC("shaft_bore", bore_bc, "shaft bore", 500),
+    FACE_BC("shaft_bore", bore_bc, "shaft bore", 500, 100, 2000,
+            "ASSUMED: forced air / oil mist in a bore, 1e2-2e3 (MODEL.md 13)"),
     REAL("surroundings", "cap_outer_diameter_mm", "mm", cap_od, 1e-3, 0, CC, 0, 10000,
          "end cap outer diameter (0 = derive: the housing outer diameter)"),
     REAL("surroundings", "cap_thickness_mm", "mm", cap_thickness, 1e-3, 0, CC, 0, 1000,
          "end cap thickness (0 = derive: 2/3 x width)"),
-    FACE_BC("cap", cap_bc, "end cap outer face", 10),
+    FACE_BC("cap", cap_bc, "end cap outer face", 10, 5, 50,
+            "ASSUMED: as the housing exterior, natural 5 to fan-assisted 50"),
 
     REAL("operating", "inner_speed_rpm", "rpm", inner_speed, ACBB_RPM, 15000, CC, 0, 100000,
          "inner ring speed"),
@@ -258,10 +286,12 @@ const acbb_sfield acbb_sf_table[] = {
     INT("thermal", "max_steps", max_steps, 20000, 1, 10000000, "coupled step limit"),
     REAL("thermal", "temp_limit_C", "C", temp_limit_C, 1.0, 150, CC, -50, 300,
          "runaway when any node is hotter than this"),
-    REAL("thermal", "contact_multiplier", "", contact_multiplier, 1.0, 1, OC, 0, 1000,
-         "multiplier c_mv on the race-side spot resistances"),
-    REAL("thermal", "heat_partition", "", heat_partition, 1.0, 0.5, CC, 0, 1,
-         "share phi_p of contact heat to the rings (7-node network)"),
+    REALP("thermal", "contact_multiplier", "", contact_multiplier, 1.0, 1, OC, 0, 1000,
+          "multiplier c_mv on the race-side spot resistances", 0.5, 2,
+          "MODEL.md 8.1 ASSUMED c_mv = 1, no range quoted: x/2 to x2"),
+    REALP("thermal", "heat_partition", "", heat_partition, 1.0, 0.5, CC, 0, 1,
+          "share phi_p of contact heat to the rings (7-node network)", 0.2, 0.8,
+          "MODEL.md 8.3 phi_p = 0.5 (7-node network only), 0.2-0.8"),
 };
 
 const size_t acbb_sf_n = sizeof acbb_sf_table / sizeof acbb_sf_table[0];
@@ -456,6 +486,21 @@ void acbb_scene_field_range(size_t i, char *buf, size_t n)
 void acbb_scene_field_interval(size_t i, char *buf, size_t n)
 {
     describe_range(i, true, buf, n);
+}
+
+void acbb_scene_field_plausible(size_t i, char *buf, size_t n)
+{
+    if (n == 0) return;
+    buf[0] = '\0';
+    if (i >= acbb_sf_n || !acbb_sf_table[i].info.plaus_src) return;
+    const acbb_sfield *f = &acbb_sf_table[i];
+    char u[32];
+    if (f->info.type == ACBB_FIELD_ENUM)
+        snprintf(buf, n, "%s | %s; %s", f->info.choices[(int)f->info.plaus_lo],
+                 f->info.choices[(int)f->info.plaus_hi], f->info.plaus_src);
+    else
+        snprintf(buf, n, "[%.15g, %.15g]%s; %s", f->info.plaus_lo, f->info.plaus_hi,
+                 unit_suffix(f, u, sizeof u), f->info.plaus_src);
 }
 
 const char *acbb_model_level_name(acbb_model_level m)

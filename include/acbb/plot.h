@@ -93,6 +93,24 @@ typedef struct {
 acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
                                const char *svg_path, int width, int height, acbb_error *err);
 
+/* One bar of a tornado chart: the metric at the low and the high end of an
+ * input's range (NaN: that end failed and is not drawn). */
+typedef struct {
+    const char *label;               /* plain text, e.g. "mounting.h_face_W_m2K" */
+    double lo, hi;
+} acbb_tornado_bar;
+
+/* The tornado chart of `acbb sensitivity`: one horizontal bar pair per
+ * input, in the given order from the top (sort them by effect first),
+ * each from the scene's value `base` (dashed line) to the metric at the
+ * low end (colour 1) and at the high end (colour 2) of the input's range;
+ * a solid line at 0 shows which inputs change the metric's sign. PNG or
+ * SVG as acbb_plot_file; ACBB_EINVAL when there is nothing to draw. */
+acbb_status acbb_plot_tornado_file(const acbb_tornado_bar *bars, size_t n, double base,
+                                   acbb_plot_format fmt, const char *path, int width,
+                                   int height, const char *title, const char *xlabel,
+                                   acbb_error *err);
+
 /* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
 const char *acbb_plot_program(void);
 

@@ -255,6 +255,14 @@ typedef struct {
     const char *const *choices; /* NULL-terminated, for ENUM */
     const char *help;        /* one line */
     bool min_open, max_open; /* true: that end is excluded (x > min, x < max) */
+    /* Plausible range of an uncertain input (MODEL.md ASSUMED / UNSURE items
+     * and the surroundings), separate from the validation range above and
+     * inside it: what `acbb sensitivity` varies. plaus_src NULL: the key is
+     * not an uncertain input. REAL: preset units; ENUM: two choice indices
+     * (a two-level factor, e.g. fixed vs convective). plaus_src cites where
+     * the range comes from ("MODEL.md 5 ASSUMED 0.08-0.13"). */
+    double plaus_lo, plaus_hi;
+    const char *plaus_src;
 } acbb_field_info;
 
 size_t acbb_scene_field_count(void);
@@ -269,6 +277,11 @@ void acbb_scene_field_range(size_t i, char *buf, size_t n);
 /* The same as an interval, as the check applies it (for `acbb keys`):
  * "(0, 100] mm", "[3, 64]", "on | off", "static | quasi-static | ...". */
 void acbb_scene_field_interval(size_t i, char *buf, size_t n);
+
+/* Field i's plausible range as text (buf >= 160 bytes), e.g.
+ * "[0.08, 0.13]; MODEL.md 5 ASSUMED 0.08-0.13" or "fixed | convective;
+ * ..."; "" when the key is not an uncertain input. */
+void acbb_scene_field_plausible(size_t i, char *buf, size_t n);
 
 const char *acbb_model_level_name(acbb_model_level m);
 

@@ -28,6 +28,7 @@
 #include <stdatomic.h>
 #include <stddef.h>
 #include "acbb/scene.h"
+#include "acbb/sensitivity.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
 
@@ -181,5 +182,47 @@ int acbb_study_item_in_conclusion(const acbb_study *s, size_t i, size_t k);
 void acbb_study_counts(const acbb_study *s, int counts[3]);
 
 void acbb_study_free(acbb_study *s);
+
+/* ---- robustness over the plausible ranges (sensitivity.h) ----
+ *
+ * The items whose statement is the sign of a TE - WTE difference, each as a
+ * sign condition at one load (15000 rpm, the scene otherwise). For each,
+ * the one-at-a-time sensitivity (acbb_sensitivity_run, delta_te) over
+ * every uncertain input: whether the condition holds at the scene's values
+ * and which single plausible changes would turn it (make a failing
+ * condition hold, or a holding one fail). Physics is not changed: this
+ * only says how close each verdict is to the uncertain inputs. Items that
+ * are not a sign (thresholds, trends over loads) are not checked here. */
+typedef struct {
+    int item;                    /* MODEL.md 12 item */
+    const char *what;            /* "P_T(TE) - P_T(WTE) > 0 at 1000 N" */
+    double load_N;
+    const char *metric;          /* sensitivity.h metric, taken TE - WTE */
+    int want;                    /* +1: the statement wants > 0, -1: < 0 */
+} acbb_study_sign;
+
+const acbb_study_sign *acbb_study_signs(size_t *n);
+
+typedef struct {
+    char key[64];                /* "surroundings.shaft_bore" */
+    char value[64];              /* the end of its range: "convective" */
+    double y;                    /* the difference there */
+} acbb_study_turn;
+
+typedef struct {
+    const acbb_study_sign *sign;
+    int ok;                      /* the scene's run gave a value */
+    double y;                    /* the difference at the scene's values */
+    int holds;                   /* sign(y) == want */
+    size_t n_inputs, failed;     /* inputs varied; points without a value */
+    size_t n_turns;
+    acbb_study_turn turns[2 * ACBB_SENS_MAX];
+} acbb_study_robust;
+
+/* Run every sign condition (out holds acbb_study_signs' count). `progress`
+ * may be NULL. Returns ACBB_OK, ACBB_ENOMEM, ACBB_EINVAL (a scene edit)
+ * or ACBB_CANCELLED. */
+acbb_status acbb_study_robustness(const acbb_scene *base, int jobs, const atomic_int *cancel,
+                                  acbb_study_robust *out, acbb_error *err);
 
 #endif
