@@ -49,6 +49,10 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                         "an existing FILE is resumed" },
     [CLI_OPT_SHARD] = { "shard", "K/N", "run only points with index % N == K-1 (K = 1..N)" },
     [CLI_OPT_MAX_POINTS] = { "max-points", "N", "run at most N of the remaining points, then stop" },
+    [CLI_OPT_ENVELOPE] = { "envelope", NULL,
+                           "score every knob over the seed's 48 operating points, steady and "
+                           "transient path" },
+    [CLI_OPT_POINTS] = { "points", "N", "with --envelope: N of the 48 points, evenly spread" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions
