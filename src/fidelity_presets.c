@@ -21,17 +21,19 @@
  * worst/median steady, worst/median path, work per point */
 static const acbb_fidelity_point k_table[] = {
     { "fast", ACBB_FIDELITY_FAST, QS, 4, ACBB_HERTZ_HB83, 1e-6, 1e-3, TR, 30, N46,
-      NAN, NAN, NAN, NAN, NAN },
+      0.265, 0.106, 0.343, 0.144, 26.21 },
     { "qs-6", ACBB_FIDELITY_CUSTOM, QS, 6, ACBB_HERTZ_BH77, 1e-8, 1e-4, TR, 5, N46,
-      NAN, NAN, NAN, NAN, NAN },
+      0.251, 0.123, 0.325, 0.123, 44.69 },
     { "qd-4", ACBB_FIDELITY_CUSTOM, QD, 4, ACBB_HERTZ_BH77, 1e-8, 1e-4, TR, 5, N46,
-      NAN, NAN, NAN, NAN, NAN },
+      0.0364, 0.017, 0.27, 0.0304, 59.78 },
     { "balanced", ACBB_FIDELITY_BALANCED, QD, 6, ACBB_HERTZ_BH77, 1e-8, 1e-4, TR, 5, N46,
-      NAN, NAN, NAN, NAN, NAN },
+      0.0155, 0.00624, 0.269, 0.0208, 83.01 },
     { "qd-8", ACBB_FIDELITY_CUSTOM, QD, 8, ACBB_HERTZ_EXACT, 1e-10, 1e-5, TR, 2, N46,
-      NAN, NAN, NAN, NAN, NAN },
+      0.00957, 0.00448, 0.0281, 0.00624, 181.6 },
+    { "qd-12", ACBB_FIDELITY_CUSTOM, QD, 12, ACBB_HERTZ_EXACT, 1e-10, 1e-5, TR, 1, N46,
+      0.00644, 0.00202, 0.0047, 0.00194, 318.3 },
     { "reference", ACBB_FIDELITY_REFERENCE, QD, 24, ACBB_HERTZ_EXACT, 1e-12, 1e-5, TR, 1, N46,
-      0, 0, 0, 0, NAN },
+      0, 0, 0, 0, 1045 },
 };
 
 #define TABLE_N (sizeof k_table / sizeof k_table[0])
@@ -74,6 +76,26 @@ void acbb_fidelity_set(acbb_scene *s, const acbb_fidelity_point *p)
     s->network = p->network;
 }
 
+/* "quasi-dynamic, 6x6 grid, bh77, mech_tol 1e-08, ..." */
+static void describe(const acbb_fidelity_point *p, char *buf, size_t n)
+{
+    static const char *const hz[] = { "exact", "bh77", "hb83" };
+    snprintf(buf, n, "%s, %dx%d grid, hertz %s, mech_tol %g, steady_tol %g K/s, %s %g s, "
+             "%s-node network", acbb_model_level_name(p->model), p->contact_grid,
+             p->contact_grid, hz[p->hertz], p->mech_tol, p->steady_tol,
+             p->thermal_mode == ACBB_THERMAL_STEADY ? "steady, step" : "time step", p->time_step,
+             p->network == ACBB_NET_7 ? "7" : "46");
+}
+
+/* Append " -> knob values" to the note. */
+static void add_knobs(acbb_fidelity_choice *c)
+{
+    char k[200];
+    describe(c->point, k, sizeof k);
+    size_t len = strlen(c->note);
+    snprintf(c->note + len, sizeof c->note - len, "; %s", k);
+}
+
 static const acbb_fidelity_point *by_preset(acbb_fidelity_preset p)
 {
     for (size_t i = 0; i < TABLE_N; i++)
@@ -111,6 +133,7 @@ int acbb_fidelity_resolve(const acbb_scene *s, acbb_fidelity_choice *c)
     memset(c, 0, sizeof *c);
     if (s->target_error > 0.0) {
         resolve_target(s->target_error, c);
+        add_knobs(c);
         return 1;
     }
     if (s->fidelity_preset == ACBB_FIDELITY_CUSTOM) return 0;
@@ -121,6 +144,7 @@ int acbb_fidelity_resolve(const acbb_scene *s, acbb_fidelity_choice *c)
              "path %.3g %%)",
              c->point->name, 100.0 * acbb_fidelity_worst(c->point),
              100.0 * c->point->worst_steady, 100.0 * c->point->worst_path);
+    add_knobs(c);
     return 1;
 }
 

@@ -17,7 +17,17 @@
 #include "acbb/sim.h"
 #include "../src/accuracy_priv.h"
 
-#define TARGET_CASES
+/* Hand-checked against the committed table (worst = max(steady, path)):
+ * fast 34.3 %, qs-6 32.5 %, qd-4 27 %, balanced 26.9 %, qd-8 2.81 %,
+ * qd-12 0.644 %, reference 0 (by definition, never picked by a target). */
+#define TARGET_CASES                                                          \
+    check_target("50", "fast");         /* 34.3 <= 50 */                     \
+    check_target("33", "qs-6");         /* fast 34.3 > 33 */                 \
+    check_target("30", "qd-4");         /* qs-6 32.5 > 30 */                 \
+    check_target("26.95", "balanced");  /* qd-4 27.0 > 26.95 */              \
+    check_target("5", "qd-8");                                               \
+    check_target("1", "qd-12");         /* qd-8 2.81 > 1 */                  \
+    check_target("0.5", "reference");   /* qd-12 0.644 > 0.5 */
 
 static const acbb_fidelity_point *entry(const char *name)
 {

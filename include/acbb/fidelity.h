@@ -55,7 +55,7 @@ void acbb_fidelity_set(acbb_scene *s, const acbb_fidelity_point *p);
 typedef struct {
     const acbb_fidelity_point *point; /* NULL: custom, the scene's own knobs */
     int target_met;                   /* target given and a stored entry meets it */
-    char note[320];                   /* what was chosen and why ("" when custom) */
+    char note[640];                   /* what was chosen and why ("" when custom) */
 } acbb_fidelity_choice;
 
 /* What the scene's preset / target_error_pct choose. Returns 1 when an
