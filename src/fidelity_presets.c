@@ -93,7 +93,8 @@ static void add_knobs(acbb_fidelity_choice *c)
     char k[200];
     describe(c->point, k, sizeof k);
     size_t len = strlen(c->note);
-    snprintf(c->note + len, sizeof c->note - len, "; %s", k);
+    snprintf(c->note + len, sizeof c->note - len, "; %s (stored frontier of the 7008C envelope)",
+             k);
 }
 
 static const acbb_fidelity_point *by_preset(acbb_fidelity_preset p)
