@@ -108,7 +108,7 @@ static const char *row_status(const acbb_accuracy_row *r)
 
 /* A relative error as a percentage in at most 6 characters; "-" when
  * undefined (NaN is never printed). */
-static void fmt_pct(double e, char *buf, size_t n)
+void acbb_cli_fmt_pct(double e, char *buf, size_t n)
 {
     double p = 100.0 * e;
     if (!isfinite(p)) snprintf(buf, n, "-");
@@ -130,12 +130,14 @@ static void print_row(const acbb_accuracy_row *r)
     char label[96], e[5][16];
     setting_label(r, label, sizeof label);
     const double errs[5] = { r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide };
-    for (int k = 0; k < 5; k++) fmt_pct(errs[k], e[k], sizeof e[k]);
-    char ms[16];
+    for (int k = 0; k < 5; k++) acbb_cli_fmt_pct(errs[k], e[k], sizeof e[k]);
+    char ms[16], wu[16];
     if (isfinite(r->wall_ms)) snprintf(ms, sizeof ms, "%7.1f", r->wall_ms);
     else snprintf(ms, sizeof ms, "%7s", "-");
-    printf("%-19s %-2s %-13s %s %6s %6s %6s %6s %6s\n", label, mark(r), row_status(r), ms,
-           e[0], e[1], e[2], e[3], e[4]);
+    if (isfinite(r->work)) snprintf(wu, sizeof wu, "%7.1f", r->work);
+    else snprintf(wu, sizeof wu, "%7s", "-");
+    printf("%-19s %-2s %-10s %s %s %6s %6s %6s %6s %6s\n", label, mark(r), row_status(r), ms,
+           wu, e[0], e[1], e[2], e[3], e[4]);
 }
 
 static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t n)
@@ -146,9 +148,10 @@ static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t
          "(finest value; model: highest level available), D: the preset's value.\n"
          "Errors in % are |x - x_ref| / |x_ref| against the knob's reference: total\n"
          "loss, outer-ring temperature RISE above ambient (T), and for ball 0 at its\n"
-         "inner contact the load Qi, angle alpha and sliding speed slide.\n");
-    printf("%-19s %-2s %-13s %7s %6s %6s %6s %6s %6s\n", "setting", "", "status", "ms",
-           "loss%", "T%", "Qi%", "alpha%", "slide%");
+         "inner contact the load Qi, angle alpha and sliding speed slide. work: cost in\n"
+         "work units (M instructions, from the Sim's counters: repeatable).\n");
+    printf("%-19s %-2s %-10s %7s %7s %6s %6s %6s %6s %6s\n", "setting", "", "status", "ms",
+           "work", "loss%", "T%", "Qi%", "alpha%", "slide%");
     acbb_accuracy_knob last = ACBB_KNOB_COUNT;
     for (size_t i = 0; i < n; i++) {
         if (rows[i].skipped) continue;
@@ -178,9 +181,9 @@ static void print_frontier(const acbb_accuracy_row *rows, size_t n)
 {
     long picks[ACBB_KNOB_COUNT];
     acbb_accuracy_frontier(rows, n, ACBB_ACCURACY_FRONTIER_TOL, picks);
-    printf("\nfrontier: the cheapest setting within %g %% of its reference on loss and T\n",
-           100.0 * ACBB_ACCURACY_FRONTIER_TOL);
-    printf("%-12s %-19s %7s %6s %6s  %s\n", "knob", "choice", "ms", "loss%", "T%",
+    printf("\nfrontier: the cheapest setting (work units) within %g %% of its reference on\n"
+           "loss and T\n", 100.0 * ACBB_ACCURACY_FRONTIER_TOL);
+    printf("%-12s %-19s %7s %6s %6s  %s\n", "knob", "choice", "work", "loss%", "T%",
            "vs reference");
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
         long ref = acbb_accuracy_reference(rows, n, (acbb_accuracy_knob)k);
@@ -195,13 +198,13 @@ static void print_frontier(const acbb_accuracy_row *rows, size_t n)
         const acbb_accuracy_row *r = &rows[picks[k]];
         char label[96], el[16], eT[16], vs[64];
         setting_label(r, label, sizeof label);
-        fmt_pct(r->e_loss, el, sizeof el);
-        fmt_pct(r->e_T, eT, sizeof eT);
+        acbb_cli_fmt_pct(r->e_loss, el, sizeof el);
+        acbb_cli_fmt_pct(r->e_T, eT, sizeof eT);
         if (picks[k] == ref)
             snprintf(vs, sizeof vs, "the reference itself");
         else
-            snprintf(vs, sizeof vs, "%.2fx faster", rows[ref].wall_ms / r->wall_ms);
-        printf("%-12s %-19s %7.1f %6s %6s  %s\n", name, label, r->wall_ms, el, eT, vs);
+            snprintf(vs, sizeof vs, "%.2fx less work", rows[ref].work / r->work);
+        printf("%-12s %-19s %7.1f %6s %6s  %s\n", name, label, r->work, el, eT, vs);
     }
 }
 
@@ -216,13 +219,13 @@ static void csv_num(FILE *f, double x)
 static void csv_rows(FILE *f, const acbb_accuracy_row *rows, size_t n)
 {
     fputs("knob,key,value,is_reference,is_default,status,iterations,wall_ms,loss_W,"
-          "dT_outer_K,Qi_N,alpha_i_rad,slide_i_m_s,e_loss,e_T,e_Qi,e_alpha,e_slide\n", f);
+          "dT_outer_K,Qi_N,alpha_i_rad,slide_i_m_s,e_loss,e_T,e_Qi,e_alpha,e_slide,work\n", f);
     for (size_t i = 0; i < n; i++) {
         const acbb_accuracy_row *r = &rows[i];
         fprintf(f, "%s,%s,%s,%d,%d,%s,%ld", acbb_accuracy_knob_name(r->knob), r->key, r->value,
                 r->is_reference, r->is_default, row_status(r), r->iterations);
         const double v[] = { r->wall_ms, r->loss, r->dT_outer, r->Qi, r->alpha_i, r->slide_i,
-                             r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide };
+                             r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide, r->work };
         for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) csv_num(f, v[k]);
         fputc('\n', f);
     }
@@ -307,6 +310,8 @@ int acbb_cli_bench_accuracy(const acbb_cli_args *args)
     acbb_scene base;
     int rc = check_args(&a, args);
     if (!rc) rc = acbb_cli_load_scene(args, &base);
+    if (!rc && args->val[CLI_OPT_ENVELOPE])
+        return acbb_cli_accuracy_envelope(args, &base, a.knobs, a.models);
     if (!rc) rc = run_bench(&a, &base);
     return rc;
 }

@@ -21,10 +21,26 @@
  * Exit status: 0 every setting converged; 2 bad input (preset, --set,
  * options, CSV file); 3 some setting did not converge (the table shows it);
  * 4 the plot could not be made (gnuplot missing or failed; the table is
- * still printed) or stdout failed. The worst applicable one is returned. */
+ * still printed) or stdout failed. The worst applicable one is returned.
+ *
+ * --envelope [--points N] [--jobs J]: acbb_accuracy_envelope instead; the
+ * table has per setting the worst and median error over the points (steady
+ * and transient path), the median work units per point, then the frontier
+ * over the envelope and the ladder's numbers as C rows for
+ * src/fidelity_presets.c. Exit 3 when a setting failed at some point. */
 #ifndef ACBB_CLI_ACCURACY_H
 #define ACBB_CLI_ACCURACY_H
 
 /* The handler, acbb_cli_bench_accuracy, is declared in commands.h. */
+
+#include "acbb/scene.h"
+#include "args.h"
+
+/* `bench accuracy --envelope` (cli/accuracy_env.c). */
+int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, unsigned knobs,
+                               unsigned models);
+
+/* A relative error as % in at most 6 characters, "-" when undefined. */
+void acbb_cli_fmt_pct(double e, char *buf, size_t n);
 
 #endif

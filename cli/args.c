@@ -62,6 +62,10 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_MORRIS] = { "morris", "R",
                          "also Morris elementary effects: R trajectories on a 4-level grid "
                          "(0..1000; 10 is usual)" },
+    [CLI_OPT_ENVELOPE] = { "envelope", NULL,
+                           "score every knob over the seed's 48 operating points, steady and "
+                           "transient path" },
+    [CLI_OPT_POINTS] = { "points", "N", "with --envelope: N of the 48 points, evenly spread" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

@@ -14,6 +14,7 @@
 #include "acbb/history.h"
 #include "acbb/measure.h"
 #include "acbb/scene.h"
+#include "acbb/fidelity.h"
 #include "acbb/sim.h"
 #include "acbb/units.h"
 #include "commands.h"
@@ -203,6 +204,10 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     if (plot && (rc = acbb_cli_plot_check_path(plot))) return rc;
     acbb_scene sc;
     if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
+    /* fidelity.preset / target: apply here, so the report shows the knobs used */
+    acbb_fidelity_choice fc;
+    if (acbb_fidelity_apply(&sc, &fc) && !a->val[CLI_OPT_QUIET])
+        fprintf(stderr, "acbb: %s\n", fc.note);
 
     acbb_cli_progress prog;
     acbb_cli_progress_init(&prog, stderr, sc.steady_tol);

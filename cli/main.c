@@ -91,8 +91,12 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "bench", "accuracy", "PRESET",
       "error vs wall time, one fidelity knob at a time",
       "--repeat defaults to 3 (1..1000). Exit 3 when a setting did not converge,\n"
-      "4 when the plot could not be made (the table is still printed).\n",
-      SCENE_OPTS | O(REPEAT) | O(KNOBS) | O(MODELS) | O(CSV) | O(PLOT), 1, 1, 0,
+      "4 when the plot could not be made (the table is still printed).\n"
+      "--envelope: every setting once at each of the seed's 48 study points (or\n"
+      "--points N of them) on --jobs threads: worst/median steady and path error,\n"
+      "median work units per point, and the fidelity ladder's stored-frontier rows.\n",
+      SCENE_OPTS | O(REPEAT) | O(KNOBS) | O(MODELS) | O(CSV) | O(PLOT) | O(ENVELOPE) |
+      O(POINTS) | O(JOBS), 1, 1, 0,
       acbb_cli_bench_accuracy },
     { "report", NULL, "PRESET",
       "the seed's conclusions (MODEL.md 12): held or not",

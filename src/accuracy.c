@@ -12,7 +12,10 @@
 #include <string.h>
 #include <time.h>
 #include "acbb/accuracy.h"
+#include "acbb/fidelity.h"
+#include "acbb/measure.h"
 #include "acbb/sim.h"
+#include "accuracy_priv.h"
 
 /* One setting of the plan: the edit shown to the user (key = value) and an
  * optional second edit applied with it (the time-step rows force a transient
@@ -83,8 +86,8 @@ int acbb_accuracy_knob_from_name(const char *name)
 }
 
 /* The options with defaults filled in; ACBB_EINVAL for a bad value. */
-static acbb_status resolve_options(const acbb_accuracy_options *opt, acbb_accuracy_options *o,
-                                   acbb_error *err)
+acbb_status acbb_acc_resolve(const acbb_accuracy_options *opt, acbb_accuracy_options *o,
+                             acbb_error *err)
 {
     acbb_accuracy_options zero = { 0 };
     *o = opt ? *opt : zero;
@@ -118,30 +121,11 @@ static size_t plan_count(const acbb_accuracy_options *o)
 size_t acbb_accuracy_plan_size(const acbb_accuracy_options *opt)
 {
     acbb_accuracy_options o;
-    if (resolve_options(opt, &o, NULL) != ACBB_OK) return 0;
+    if (acbb_acc_resolve(opt, &o, NULL) != ACBB_OK) return 0;
     return plan_count(&o);
 }
 
 /* ---- one setting ---- */
-
-static double now_ms(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return 1e3 * (double)ts.tv_sec + 1e-6 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
-static double median(double *v, size_t n)
-{
-    qsort(v, n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* True when every schema field of `a` formats like the same field of `b`:
  * compares what a user can set, not padding bytes or derived values. */
@@ -164,7 +148,7 @@ static void row_init(acbb_accuracy_row *r, const plan_entry *p)
     snprintf(r->value, sizeof r->value, "%s", p->value);
     r->is_reference = p->is_reference;
     r->status = ACBB_OK;
-    r->wall_ms = r->loss = r->dT_outer = r->Qi = r->alpha_i = r->slide_i = NAN;
+    r->wall_ms = r->work = r->loss = r->dT_outer = r->Qi = r->alpha_i = r->slide_i = NAN;
     r->e_loss = r->e_T = r->e_Qi = r->e_alpha = r->e_slide = NAN;
 }
 
@@ -173,33 +157,87 @@ static int cancelled(const _Atomic int *cancel)
     return cancel && atomic_load(cancel) != 0;
 }
 
-/* The engine's run loop; a cancel ends it inside a step too. */
-static acbb_status run_sim(acbb_sim *sim, const _Atomic int *cancel)
+void acbb_acc_path_free(acbb_acc_path *p)
+{
+    if (!p) return;
+    free(p->t);
+    free(p->y);
+    memset(p, 0, sizeof *p);
+}
+
+/* Step hook: append (time, outer-ring rise). The snapshot is large, so it
+ * lives in the recorder, not on the stack of every call. */
+typedef struct {
+    acbb_acc_path *path;
+    double ambient;
+    acbb_snapshot snap;
+} path_rec;
+
+static int record_step(void *ctx, const acbb_sim *sim)
+{
+    path_rec *pr = ctx;
+    acbb_acc_path *p = pr->path;
+    if (p->oom) return 0;
+    if (p->n == p->cap) {
+        size_t cap = p->cap ? 2 * p->cap : 256;
+        double *t = realloc(p->t, cap * sizeof *t);
+        if (t) p->t = t;
+        double *y = t ? realloc(p->y, cap * sizeof *y) : NULL;
+        if (y) p->y = y;
+        if (!t || !y) {
+            p->oom = 1;
+            return 0;
+        }
+        p->cap = cap;
+    }
+    acbb_sim_snapshot(sim, &pr->snap);
+    p->t[p->n] = pr->snap.time;
+    p->y[p->n] = pr->snap.T_outer_ring - pr->ambient;
+    p->n++;
+    return 0;
+}
+
+/* The engine's run loop; a cancel ends it inside a step too. With a path,
+ * every step's outer-ring rise is recorded. */
+static acbb_status run_sim(acbb_sim *sim, const acbb_scene *sc, const _Atomic int *cancel,
+                           acbb_acc_path *path)
 {
     acbb_run_ctl ctl = { .cancel = cancel };
-    return acbb_sim_drive(sim, &ctl);
+    path_rec *pr = path ? malloc(sizeof *pr) : NULL;
+    if (pr) {
+        pr->path = path;
+        pr->ambient = sc->ambient_C;
+        ctl.hook = record_step;
+        ctl.ctx = pr;
+    } else if (path) {
+        path->oom = 1;
+    }
+    acbb_status st = acbb_sim_drive(sim, &ctl);
+    free(pr);
+    return st;
 }
 
 /* One timed run: acbb_sim_new + acbb_sim_run + acbb_sim_free on the clock,
  * the snapshot copy off it. Returns the run's status; a run that ended
  * without converging is reported as such even if the last step said OK. */
 static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel,
-                             acbb_snapshot *snap, int *have_snap, double *ms, acbb_error *err)
+                             acbb_acc_path *path, acbb_snapshot *snap, int *have_snap, double *ms,
+                             acbb_error *err)
 {
     acbb_sim *sim = NULL;
-    double t0 = now_ms();
+    double t0 = acbb_now_ms();
     acbb_status st = acbb_sim_new_ctl(sc, cancel, &sim, err);
     if (st != ACBB_OK) {
-        *ms = now_ms() - t0;
+        *ms = acbb_now_ms() - t0;
         *have_snap = 0;
         return st;
     }
-    st = run_sim(sim, cancel);
-    double t1 = now_ms();
+    st = run_sim(sim, sc, cancel, path);
+    double t1 = acbb_now_ms();
     acbb_sim_snapshot(sim, snap);
-    double t2 = now_ms();
+    double t2 = acbb_now_ms();
     acbb_sim_free(sim);
-    *ms = (t1 - t0) + (now_ms() - t2);
+    *ms = (t1 - t0) + (acbb_now_ms() - t2);
     *have_snap = 1;
     if (st == ACBB_OK && snap->state != ACBB_RUN_CONVERGED) st = ACBB_NOT_CONVERGED;
     if (st != ACBB_OK) acbb_error_set(err, st, "%s", snap->message);
@@ -208,6 +246,7 @@ static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel,
 
 static void record_results(acbb_accuracy_row *r, const acbb_scene *sc, const acbb_snapshot *snap)
 {
+    r->work = acbb_accuracy_work_units(sc, &snap->work);
     r->loss = snap->losses.total;
     r->dT_outer = snap->T_outer_ring - sc->ambient_C;
     if (snap->n_balls > 0) {
@@ -222,6 +261,7 @@ static acbb_status make_scene(const acbb_scene *base, const plan_entry *p, acbb_
                               acbb_error *err)
 {
     *sc = *base;
+    if (!p->key[0]) return acbb_scene_validate(sc, err); /* the scene as given */
     acbb_status st = acbb_scene_set(sc, p->key, p->value, err);
     if (st == ACBB_OK && p->key2) st = acbb_scene_set(sc, p->key2, p->value2, err);
     if (st == ACBB_OK) st = acbb_scene_validate(sc, err);
@@ -232,7 +272,7 @@ static acbb_status make_scene(const acbb_scene *base, const plan_entry *p, acbb_
  * results are those of the first run; later runs only add timing samples.
  * A failure ends the repeats (the same failure would recur). */
 static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
-                      const _Atomic int *cancel, acbb_accuracy_row *r)
+                      const _Atomic int *cancel, acbb_accuracy_row *r, acbb_acc_path *path)
 {
     row_init(r, p);
     acbb_error e = { { 0 } };
@@ -251,7 +291,7 @@ static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
     int done = 0;
     for (; done < repeats && !cancelled(cancel); done++) {
         int have_snap = 0;
-        st = timed_run(&sc, cancel, &snap, &have_snap, &times[done], &e);
+        st = timed_run(&sc, cancel, done == 0 ? path : NULL, &snap, &have_snap, &times[done], &e);
         if (done == 0 && have_snap) r->iterations = snap.iteration;
         if (st != ACBB_OK) {
             done++;
@@ -260,18 +300,18 @@ static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
         if (done == 0) record_results(r, &sc, &snap);
     }
     if (done == 0) return; /* cancelled before the first run: the caller drops the row */
-    r->wall_ms = median(times, (size_t)done);
+    r->wall_ms = acbb_median(times, (size_t)done);
     if (st == ACBB_OK) return;
     r->status = st;
     snprintf(r->message, sizeof r->message, "%s", e.msg);
-    r->loss = r->dT_outer = r->Qi = r->alpha_i = r->slide_i = NAN;
+    r->work = r->loss = r->dT_outer = r->Qi = r->alpha_i = r->slide_i = NAN;
     /* An optional level that the engine refuses as input is "not available". */
     if (p->optional && st == ACBB_EINVAL) r->skipped = 1;
 }
 
 /* ---- errors against the reference ---- */
 
-static double rel_err(double x, double ref)
+double acbb_acc_rel_err(double x, double ref)
 {
     if (!isfinite(x) || !isfinite(ref)) return NAN;
     if (ref == 0.0) return x == 0.0 ? 0.0 : NAN;
@@ -304,13 +344,39 @@ static void fill_errors(acbb_accuracy_row *rows, size_t n)
         for (size_t i = 0; i < n; i++) {
             acbb_accuracy_row *r = &rows[i];
             if (r->knob != (acbb_accuracy_knob)k || r->status != ACBB_OK) continue;
-            r->e_loss = rel_err(r->loss, R->loss);
-            r->e_T = rel_err(r->dT_outer, R->dT_outer);
-            r->e_Qi = rel_err(r->Qi, R->Qi);
-            r->e_alpha = rel_err(r->alpha_i, R->alpha_i);
-            r->e_slide = rel_err(r->slide_i, R->slide_i);
+            r->e_loss = acbb_acc_rel_err(r->loss, R->loss);
+            r->e_T = acbb_acc_rel_err(r->dT_outer, R->dT_outer);
+            r->e_Qi = acbb_acc_rel_err(r->Qi, R->Qi);
+            r->e_alpha = acbb_acc_rel_err(r->alpha_i, R->alpha_i);
+            r->e_slide = acbb_acc_rel_err(r->slide_i, R->slide_i);
         }
     }
+}
+
+acbb_status acbb_acc_run_plan(const acbb_scene *base_in, const acbb_accuracy_options *o,
+                              acbb_accuracy_row *rows, acbb_acc_path *paths, size_t *n,
+                              acbb_accuracy_progress progress, void *ctx)
+{
+    /* A preset or target in the base would override every edit below:
+     * resolve it once, then vary the knobs it chose. */
+    acbb_scene base = *base_in;
+    acbb_fidelity_apply(&base, NULL);
+    size_t total = plan_count(o), done = 0;
+    for (size_t i = 0; i < PLAN_N; i++) {
+        if (!planned(o, &k_plan[i])) continue;
+        if (cancelled(o->cancel)) break;
+        run_entry(&base, &k_plan[i], o->repeats, o->cancel, &rows[done],
+                  paths ? &paths[done] : NULL);
+        /* A cancel during the row may have cut its run short: drop it. */
+        if (cancelled(o->cancel)) break;
+        done++;
+        if (progress) progress(ctx, done, total);
+    }
+    *n = done;
+    if (done < total) return ACBB_CANCELLED; /* only a cancel stops the loop early */
+    mark_model_reference(rows, done);
+    fill_errors(rows, done);
+    return ACBB_OK;
 }
 
 acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_options *opt,
@@ -322,33 +388,29 @@ acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_option
     if (!base || !rows || !n)
         return acbb_error_set(err, ACBB_EINVAL, "accuracy: base, rows and n are required");
     acbb_accuracy_options o;
-    acbb_status st = resolve_options(opt, &o, err);
+    acbb_status st = acbb_acc_resolve(opt, &o, err);
     if (st != ACBB_OK) return st;
     size_t total = plan_count(&o);
     if (cap < total)
         return acbb_error_set(err, ACBB_EINVAL, "accuracy: %zu rows needed, room for %zu",
                               total, cap);
     if ((st = acbb_scene_validate(base, err)) != ACBB_OK) return st;
+    st = acbb_acc_run_plan(base, &o, rows, NULL, n, progress, ctx);
+    if (st == ACBB_CANCELLED)
+        acbb_error_set(err, ACBB_CANCELLED, "accuracy: cancelled after %zu of %zu settings",
+                       *n, total);
+    return st;
+}
 
-    size_t done = 0;
-    for (size_t i = 0; i < PLAN_N; i++) {
-        if (!planned(&o, &k_plan[i])) continue;
-        if (cancelled(o.cancel)) break;
-        run_entry(base, &k_plan[i], o.repeats, o.cancel, &rows[done]);
-        /* A cancel during the row may have cut its run short: drop it. */
-        if (cancelled(o.cancel)) break;
-        done++;
-        if (progress) progress(ctx, done, total);
-    }
-    if (done < total) { /* only a cancel stops the loop early */
-        *n = done;
-        return acbb_error_set(err, ACBB_CANCELLED, "accuracy: cancelled after %zu of %zu settings",
-                              done, total);
-    }
-    mark_model_reference(rows, done);
-    fill_errors(rows, done);
-    *n = done;
-    return ACBB_OK;
+/* One run of a finished scene (the envelope's ladder entries). */
+void acbb_acc_run_one(const acbb_scene *sc, const _Atomic int *cancel, acbb_accuracy_row *r,
+                      acbb_acc_path *path)
+{
+    plan_entry p = { r->knob, "", "", NULL, NULL, r->is_reference, 0, -1 };
+    acbb_accuracy_row keep = *r;
+    run_entry(sc, &p, 1, cancel, r, path);
+    memcpy(r->key, keep.key, sizeof r->key);
+    memcpy(r->value, keep.value, sizeof r->value);
 }
 
 /* ---- frontier ---- */
@@ -357,16 +419,47 @@ void acbb_accuracy_frontier(const acbb_accuracy_row *rows, size_t n, double tol,
                             long picks[ACBB_KNOB_COUNT])
 {
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
-        long best = acbb_accuracy_reference(rows, n, (acbb_accuracy_knob)k);
+        long ref = acbb_accuracy_reference(rows, n, (acbb_accuracy_knob)k), best = -1;
         picks[k] = -1;
-        if (best < 0 || rows[best].status != ACBB_OK) continue;
+        if (ref < 0 || rows[ref].status != ACBB_OK) continue;
+        /* Rows in plan order (coarsest first), so on equal work the coarser
+         * setting wins: a deterministic tie rule. */
         for (size_t i = 0; i < n; i++) {
             const acbb_accuracy_row *r = &rows[i];
-            /* NaN errors compare false, so undefined errors never qualify. */
             if (r->knob != (acbb_accuracy_knob)k || r->status != ACBB_OK) continue;
-            if (!(r->e_loss <= tol && r->e_T <= tol)) continue;
-            if (r->wall_ms < rows[best].wall_ms) best = (long)i;
+            /* NaN errors compare false, so undefined errors never qualify. */
+            if ((long)i != ref && !(r->e_loss <= tol && r->e_T <= tol)) continue;
+            if (best < 0 || r->work < rows[best].work) best = (long)i;
         }
         picks[k] = best;
     }
+}
+
+/* ---- cost in work units ---- */
+
+/* Instructions per unit of work (millions), measured once with callgrind
+ * on the 7008C default point and its one-knob variants (BENCHMARKS.md
+ * "Cost in work units"): a mechanics solve 0.20 (bh77/hb83) or 0.30
+ * (exact Hertz); a Level-2 ball-speed update 0.0103 per Gauss point of the
+ * n x n contact grid; a dynamic-level window 3.9 per grid point (from the
+ * wall-time ratio to the quasi-dynamic run, too slow for callgrind); a
+ * loss quadrature 0.0009 per grid point; a network update + solve with the
+ * rest of its step 0.108 (46 nodes) or 0.019 (7 nodes). */
+#define MI_MECH 0.20
+#define MI_MECH_EXACT 0.30
+#define MI_QD_PER_POINT 0.0103
+#define MI_DYN_PER_POINT 3.9
+#define MI_LOSS_PER_POINT 0.0009
+#define MI_NET46 0.108
+#define MI_NET7 0.019
+
+double acbb_accuracy_work_units(const acbb_scene *sc, const acbb_work *w)
+{
+    double g2 = (double)sc->contact_grid * (double)sc->contact_grid;
+    double mech = sc->hertz == ACBB_HERTZ_EXACT ? MI_MECH_EXACT : MI_MECH;
+    double tr = sc->model == ACBB_MODEL_DYNAMIC ? MI_DYN_PER_POINT : MI_QD_PER_POINT;
+    double net = sc->network == ACBB_NET_7 ? MI_NET7 : MI_NET46;
+    return mech * (double)w->mechanics_solves + tr * g2 * (double)w->traction_solves +
+           MI_LOSS_PER_POINT * g2 * (double)w->loss_quadratures +
+           net * (double)w->network_solves;
 }

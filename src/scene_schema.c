@@ -30,6 +30,7 @@ _Static_assert(sizeof(acbb_network_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_preload_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_thermal_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_bc_kind) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_fidelity_preset) == sizeof(int), "enum size");
 
 /* Enum choices, in the order of the C enum values in scene.h. */
 static const char *const k_model[] = {"static", "quasi-static", "quasi-dynamic", "dynamic", NULL};
@@ -43,6 +44,7 @@ static const char *const k_preload[] = {"force", "displacement", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
 static const char *const k_bc[] = {"fixed", "convective", NULL};
+static const char *const k_fid_preset[] = {"custom", "fast", "balanced", "reference", NULL};
 
 #define LO_OPEN(ends) ((ends) == OC || (ends) == OO)
 #define HI_OPEN(ends) ((ends) == CO || (ends) == OO)
@@ -280,6 +282,10 @@ const acbb_sfield acbb_sf_table[] = {
          "transient (time steps) or steady (direct) thermal solve"),
     REAL("fidelity", "time_step_s", "s", time_step, 1.0, 5, OC, 0, 3600,
          "initial thermal time step (adaptive)"),
+    ENUM("fidelity", "preset", fidelity_preset, k_fid_preset, ACBB_FIDELITY_CUSTOM,
+         "named measured settings; overrides the knobs above unless custom"),
+    REAL("fidelity", "target_error_pct", "%", target_error, 0.01, 0, CC, 0, 100,
+         "cheapest stored settings within this error (0 = off; wins over preset)"),
 
     REAL("thermal", "max_time_s", "s", max_time, 1.0, 36000, OC, 0, 1e8,
          "simulated time limit"),

@@ -13,6 +13,7 @@
 #include "acbb/measure.h"
 #include "acbb/mechanics.h"
 #include "acbb/network.h"
+#include "acbb/fidelity.h"
 #include "acbb/losses.h"
 #include "acbb/lubrication.h"
 #include "acbb/expansion.h"
@@ -699,6 +700,9 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
                             acbb_error *err)
 {
     sim->s = *s;
+    /* fidelity.preset / target_error_pct override the knobs (fidelity.h). */
+    acbb_fidelity_apply(&sim->s, NULL);
+    s = &sim->s;
     acbb_status rc = acbb_scene_validate(s, err);
     if (rc != ACBB_OK) return rc;
     if ((rc = check_supported(s, err)) != ACBB_OK) return rc;

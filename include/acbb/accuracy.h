@@ -7,6 +7,8 @@
  * together with the results and their relative errors against the knob's
  * reference setting:
  *
+ * Cost: wall time and, repeatably, work units (acbb_accuracy_work_units).
+ *
  *   knob            settings (preset units)             reference
  *   model           static, quasi-static, quasi-dynamic  highest level
  *                   (+ dynamic if acbb_sim_new takes it) acbb_sim_new accepts
@@ -38,6 +40,7 @@
 
 #include <stddef.h>
 #include "acbb/scene.h"
+#include "acbb/sim.h"
 #include "acbb/status.h"
 
 typedef enum {
@@ -90,6 +93,7 @@ typedef struct {
     char message[512];       /* why it failed or was skipped; "" if converged */
     long iterations;         /* coupled steps of the (first) run */
     double wall_ms;          /* median over the repeats (NaN if never run) */
+    double work;             /* cost in work units of the first run (NaN if it failed) */
     /* Results of the first run; NaN when status != ACBB_OK. */
     double loss;             /* total loss, W */
     double dT_outer;         /* outer-ring temperature rise above ambient, K */
@@ -126,14 +130,85 @@ acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_option
                               acbb_error *err);
 
 /* The frontier: for each knob present in rows, the converged setting with
- * the smallest wall time whose e_loss and e_T are both <= tol (the
- * reference itself qualifies with zero errors). picks[k] is the row index
- * for knob k, or -1 when the knob is absent or its reference failed.
- * `picks` must hold ACBB_KNOB_COUNT entries. */
+ * the smallest cost in work units whose e_loss and e_T are both <= tol
+ * (the reference itself qualifies). Work units are deterministic, so the
+ * same plan picks the same settings on every run; on equal work the
+ * earlier (coarser) row wins. picks[k] is the row index for knob k, or -1
+ * when the knob is absent or its reference failed. `picks` must hold
+ * ACBB_KNOB_COUNT entries. */
 void acbb_accuracy_frontier(const acbb_accuracy_row *rows, size_t n, double tol,
                             long picks[ACBB_KNOB_COUNT]);
 
+/* Cost of a run in work units: the Sim's work counters (acbb_snapshot.work)
+ * weighted by instructions per unit, in millions, measured once with
+ * callgrind (the weights scale with the contact grid, the Hertz method,
+ * the model level and the network). A repeatable stand-in for wall time:
+ * the same run always costs the same. */
+double acbb_accuracy_work_units(const acbb_scene *sc, const acbb_work *w);
+
 /* Index of knob k's reference row, or -1. */
 long acbb_accuracy_reference(const acbb_accuracy_row *rows, size_t n, acbb_accuracy_knob k);
+
+/* ---- the envelope: every knob over the operating range ----
+ *
+ * The points are the seed's 48 study points (study.h): the load sweep
+ * 50..1000 N at 15000 rpm and the speed sweeps 2000..16000 rpm at 100 N
+ * and at 1000 N, each with and without thermal expansion (TE / WTE).
+ * Point i: sweep i / 16 (load, 100 N, 1000 N), abscissa (i % 16) / 2,
+ * TE when i is even. `points` < 48 takes every (48 / points)-th point,
+ * evenly spread (floor(k * 48 / points)).
+ *
+ * At every point the one-knob plan runs once per setting (no repeats: the
+ * cost is in work units), and so does the fidelity ladder (fidelity.h),
+ * each entry against the ladder's `reference`. Per setting, over the
+ * points where it and its reference converged: worst and median relative
+ * error of the steady total loss and outer-ring rise, and of the transient
+ * path (acbb: max |T(t) - T_ref(t)| / rise_ref, outer ring; NaN for the
+ * steady thermal mode, which has no path), and the median cost per point.
+ * Points run in parallel on `jobs` threads (one Sim per thread). */
+#define ACBB_ENVELOPE_POINTS 48
+
+typedef struct {
+    unsigned knobs;          /* as acbb_accuracy_options; 0 = all */
+    unsigned model_levels;   /* 0 = all (the dynamic level costs ~4 s a point) */
+    int points;              /* 1..48; 0 = 48 */
+    int jobs;                /* threads; <= 0: 2 */
+    int ladder;              /* 1: also measure the fidelity ladder */
+    const _Atomic int *cancel;
+} acbb_envelope_options;
+
+typedef struct {
+    acbb_accuracy_knob knob; /* ACBB_KNOB_COUNT for a ladder entry */
+    char key[48];            /* "fidelity.contact_grid", or "ladder" */
+    char value[32];          /* "16", or the entry's name */
+    int is_reference, is_default;
+    int n_points, n_ok;      /* points run; points where it and its reference converged */
+    double worst_loss, median_loss, worst_T, median_T;   /* relative */
+    double worst_steady, median_steady;  /* max(loss, T) per point */
+    double worst_path, median_path;      /* relative; NaN: no path */
+    double work;             /* median work units per point */
+    double wall_ms;          /* median wall time per point (noisy; for scale only) */
+} acbb_envelope_row;
+
+/* Rows acbb_accuracy_envelope writes for `o` (NULL = defaults). */
+size_t acbb_envelope_size(const acbb_envelope_options *o);
+/* Operating point i of the 48: speed in rpm, axial load in N, TE flag. */
+void acbb_envelope_point(size_t i, double *rpm, double *load_N, int *te);
+
+/* Run the envelope on `base`. Rows: the plan's settings in plan order,
+ * then the ladder entries. *wall_ms (may be NULL) receives the elapsed
+ * time. ACBB_EINVAL for bad options (message in err), ACBB_ENOMEM,
+ * ACBB_CANCELLED; otherwise ACBB_OK (failed settings are counted in n_ok). */
+acbb_status acbb_accuracy_envelope(const acbb_scene *base, const acbb_envelope_options *o,
+                                   acbb_envelope_row *rows, size_t cap, size_t *n,
+                                   double *wall_ms, acbb_accuracy_progress progress, void *ctx,
+                                   acbb_error *err);
+
+/* The frontier over envelope rows: per knob, the cheapest (work) setting
+ * whose worst steady error AND worst path error are <= tol over every point
+ * (n_ok == n_points; the steady thermal mode has no path, so never);
+ * ties go to the earlier row. picks as acbb_accuracy_frontier. */
+void acbb_envelope_frontier(const acbb_envelope_row *rows, size_t n, double tol,
+                            long picks[ACBB_KNOB_COUNT]);
 
 #endif

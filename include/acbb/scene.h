@@ -36,6 +36,9 @@ typedef enum { ACBB_HYST_MAJOR, ACBB_HYST_MINOR } acbb_hyst_axis;
 typedef enum { ACBB_NET_46, ACBB_NET_7 } acbb_network_kind;
 typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
+/* fidelity.preset (fidelity.h): custom = the individual knobs. */
+typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
+               ACBB_FIDELITY_REFERENCE } acbb_fidelity_preset;
 /* Boundary condition of a cooled face (MODEL.md 8.1, 13 "Surroundings"). */
 typedef enum { ACBB_BC_FIXED, ACBB_BC_CONVECTIVE } acbb_bc_kind;
 
@@ -148,6 +151,8 @@ typedef struct {
     acbb_network_kind network;
     acbb_thermal_mode thermal_mode;
     double time_step;            /* initial thermal time step, s */
+    acbb_fidelity_preset fidelity_preset; /* overrides the knobs above (fidelity.h) */
+    double target_error;         /* fidelity.target_error_pct as a fraction, 0 = off */
     double max_time;             /* simulated time limit, s */
     int max_steps;               /* coupled step limit */
     double temp_limit_C;         /* RUNAWAY above this node temperature, C */

@@ -1,0 +1,125 @@
+/* acbb CLI — `acbb bench accuracy --envelope` (accuracy.h): every knob
+ * setting over the seed's 48 study points, the frontier over the envelope,
+ * and the ladder's measured numbers as rows for src/fidelity_presets.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/accuracy.h"
+#include "acbb/fidelity.h"
+#include "accuracy.h"
+#include "common.h"
+#include "exit.h"
+
+static void label_of(const acbb_envelope_row *r, char *buf, size_t n)
+{
+    const char *dot = strchr(r->key, '.');
+    if (r->knob == ACBB_KNOB_COUNT) snprintf(buf, n, "ladder %s", r->value);
+    else snprintf(buf, n, "%s=%s", dot ? dot + 1 : r->key, r->value);
+}
+
+static void print_row(const acbb_envelope_row *r)
+{
+    char label[96], e[6][16], ok[16];
+    label_of(r, label, sizeof label);
+    const double v[6] = { r->worst_steady, r->median_steady, r->worst_loss, r->worst_T,
+                          r->worst_path, r->median_path };
+    for (int k = 0; k < 6; k++) acbb_cli_fmt_pct(v[k], e[k], sizeof e[k]);
+    snprintf(ok, sizeof ok, "%d/%d", r->n_ok, r->n_points);
+    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %6s %8.1f %7.1f\n", label,
+           r->is_reference ? "R" : (r->is_default ? "D" : ""), ok, e[0], e[1], e[2], e[3], e[4],
+           e[5], r->work, r->wall_ms);
+}
+
+static void print_table(const acbb_envelope_row *rows, size_t n)
+{
+    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %6s %8s %7s\n", "setting", "", "ok", "worst%",
+           "med%", "wLoss%", "wT%", "wPath%", "mPath%", "work", "ms");
+    for (size_t i = 0; i < n; i++) {
+        if (i > 0 && rows[i].knob != rows[i - 1].knob) putchar('\n');
+        print_row(&rows[i]);
+    }
+}
+
+static void print_frontier(const acbb_envelope_row *rows, size_t n)
+{
+    long picks[ACBB_KNOB_COUNT];
+    acbb_envelope_frontier(rows, n, ACBB_ACCURACY_FRONTIER_TOL, picks);
+    printf("\nfrontier over the envelope: per knob the least work whose worst steady and\n"
+           "path errors are within %g %% at every point (ties: the coarser setting)\n",
+           100.0 * ACBB_ACCURACY_FRONTIER_TOL);
+    for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
+        if (picks[k] < 0) continue;
+        char label[96], w[16], p[16];
+        label_of(&rows[picks[k]], label, sizeof label);
+        acbb_cli_fmt_pct(rows[picks[k]].worst_steady, w, sizeof w);
+        acbb_cli_fmt_pct(rows[picks[k]].worst_path, p, sizeof p);
+        printf("  %-12s %-22s worst %s %%, path %s %%, %.1f work units\n",
+               acbb_accuracy_knob_name((acbb_accuracy_knob)k), label, w, p, rows[picks[k]].work);
+    }
+}
+
+/* The measured numbers for k_table (relative errors, %.3g; work %.4g). */
+static void print_c_rows(const acbb_envelope_row *rows, size_t n)
+{
+    printf("\nstored frontier rows (paste the numbers into src/fidelity_presets.c):\n");
+    for (size_t i = 0; i < n; i++) {
+        const acbb_envelope_row *r = &rows[i];
+        if (r->knob != ACBB_KNOB_COUNT) continue;
+        printf("  /* %-9s */ %.3g, %.3g, %.3g, %.3g, %.4g\n", r->value, r->worst_steady,
+               r->median_steady, r->worst_path, r->median_path, r->work);
+    }
+}
+
+static void tick(void *ctx, size_t done, size_t total)
+{
+    (void)ctx;
+    fprintf(stderr, "\racbb: bench accuracy --envelope: %zu/%zu points", done, total);
+    if (done == total) fputs("\r\033[K", stderr);
+    fflush(stderr);
+}
+
+static int any_failed(const acbb_envelope_row *rows, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (rows[i].n_ok < rows[i].n_points) return 1;
+    return 0;
+}
+
+int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, unsigned knobs,
+                               unsigned models)
+{
+    long points = 0, jobs = 0;
+    int rc = acbb_cli_count(a, CLI_OPT_POINTS, ACBB_ENVELOPE_POINTS, 1, ACBB_ENVELOPE_POINTS,
+                            &points);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 2, 1, 64, &jobs);
+    if (rc) return rc;
+    acbb_envelope_options o = { .knobs = knobs, .model_levels = models, .points = (int)points,
+                                .jobs = (int)jobs, .ladder = 1 };
+    size_t cap = acbb_envelope_size(&o), n = 0;
+    acbb_envelope_row *rows = calloc(cap, sizeof *rows);
+    if (!rows) return ACBB_EXIT_INTERNAL;
+    acbb_error err = { { 0 } };
+    double ms = 0.0;
+    acbb_status st = acbb_accuracy_envelope(base, &o, rows, cap, &n, &ms,
+                                            isatty(STDERR_FILENO) ? tick : NULL, NULL, &err);
+    if (st != ACBB_OK) {
+        fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        free(rows);
+        return acbb_cli_exit_for(st);
+    }
+    printf("acbb bench accuracy %s --envelope: %ld of the seed's 48 study points, %ld thread%s,"
+           " %.1f s\n", a->preset, points, jobs, jobs == 1 ? "" : "s", 1e-3 * ms);
+    printf("Per setting over the points: worst / median of max(loss, T) error %% against its\n"
+           "knob's reference (ladder: against 'reference'), worst loss and T errors, the\n"
+           "transient path error (max |T(t) - T_ref(t)| / rise, outer ring; '-' = no path),\n"
+           "median work units and wall ms per point. ok: points where it and its reference\n"
+           "converged.\n\n");
+    print_table(rows, n);
+    print_frontier(rows, n);
+    print_c_rows(rows, n);
+    rc = any_failed(rows, n) ? ACBB_EXIT_SOLVER : 0;
+    free(rows);
+    return acbb_cli_worst(rc, acbb_cli_stdout_check(0));
+}
