@@ -371,11 +371,12 @@ static void ring_offsets(const acbb_mech *m, const acbb_mech_state *st, double p
     *A2 = g->A0 * cos(g->alpha0) + st->dz * cos(psi) - st->dy * sin(psi);
 }
 
-/* Solve every (distinct) ball and sum the ring reactions. */
+/* Solve every distinct ball and sum the ring reactions, each ball weighted
+ * by how many it stands for (acbb_mech_weight). */
 static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
 {
     const acbb_geometry *g = &m->g;
-    int nb = st->symmetric ? 1 : st->n;
+    int nb = acbb_mech_distinct(st);
     st->Fx = st->Fy = st->Fz = st->My = st->Mz = 0.0;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
@@ -389,7 +390,7 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         double si = sin(b->alpha_i), ci = cos(b->alpha_i);
         double ax = b->Qi * si + f[0];
         double rad = b->Qi * ci + f[1];
-        double w = st->symmetric ? st->n : 1.0;
+        double w = acbb_mech_weight(st, j);
         st->Fx += w * ax;
         st->Fz += w * rad * cos(b->psi);
         st->Fy -= w * rad * sin(b->psi);
@@ -398,14 +399,11 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         st->My += w * mom * cos(b->psi);
         st->Mz += w * mom * sin(b->psi);
     }
-    if (st->symmetric) {
-        st->Fz = st->Fy = st->My = st->Mz = 0.0;
-        for (int j = 1; j < st->n; j++) {
-            double psi = st->ball[j].psi;
-            st->ball[j] = st->ball[0];
-            st->ball[j].psi = psi;
-        }
-    }
+    /* The odd sums cancel between mirror images (and all but Fx under
+     * pure thrust): set exactly, not left at round-off. */
+    if (st->symmetric || st->mirror) st->Fy = st->Mz = 0.0;
+    if (st->symmetric) st->Fz = st->My = 0.0;
+    acbb_mech_spread(st);
     return ACBB_OK;
 }
 
@@ -565,7 +563,7 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
 static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st)
 {
     const acbb_geometry *g = &m->g;
-    int nb = st->symmetric ? 1 : st->n;
+    int nb = acbb_mech_distinct(st);
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad
@@ -763,6 +761,8 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
     memset(st, 0, sizeof *st);
     st->n = g->Z;
     st->symmetric = !m->dof_dz && !m->dof_thy;
+    /* Fy and Mz are not scene loads, dy and thz never move: mirror images. */
+    st->mirror = !st->symmetric;
     acbb_race_control rc0 = m->race;
     for (int j = 0; j < st->n; j++) {
         acbb_ball_state *b = &st->ball[j];

@@ -190,7 +190,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
 {
     *change = 0.0;
     if (omega_i <= 0.0) return ACBB_OK;
-    int nb = st->symmetric ? 1 : st->n;
+    int nb = acbb_mech_distinct(st);
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
@@ -204,11 +204,6 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
                                   "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);
         *change = fmax(*change, fabs(b->kin.omega_m - wm0) / fmax(fabs(wm0), 1e-12));
     }
-    if (st->symmetric)
-        for (int j = 1; j < st->n; j++) {
-            double psi = st->ball[j].psi;
-            st->ball[j] = st->ball[0];
-            st->ball[j].psi = psi;
-        }
+    acbb_mech_spread(st);
     return ACBB_OK;
 }
