@@ -20,6 +20,10 @@
 struct acbb_qd {
     acbb_traction_contact ci, co;
     gsl_multiroot_fdfsolver *solver;
+    /* Last Jacobian of each ball (scaled unknowns and residuals) for the
+     * Broyden steps of the next update; J_ok[j] = 0: none yet. */
+    double J[ACBB_MAX_BALLS][16];
+    int J_ok[ACBB_MAX_BALLS];
 };
 
 typedef struct {
@@ -130,6 +134,76 @@ static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const doubl
     return ACBB_DIVERGED;
 }
 
+/* Residual at x (scaled, as qd_f); 0 on a non-finite value. */
+static int eval(qd_ctx *c, const double x[4], double f[4])
+{
+    gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
+    gsl_vector_view F = gsl_vector_view_array(f, 4);
+    return qd_f(&X.vector, c, &F.vector) == GSL_SUCCESS;
+}
+
+/* GSL's residual test: sum |f_i| against RES_TOL. */
+static double resid(const double f[4])
+{
+    return fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
+}
+
+/* Solve J d = -f (4x4, partial pivoting); 0 if singular. */
+static int solve4(const double J[16], const double f[4], double d[4])
+{
+    double a[4][5];
+    for (int i = 0; i < 4; i++) {
+        for (int k = 0; k < 4; k++) a[i][k] = J[4 * i + k];
+        a[i][4] = -f[i];
+    }
+    for (int k = 0; k < 4; k++) {
+        int p = k;
+        for (int i = k + 1; i < 4; i++)
+            if (fabs(a[i][k]) > fabs(a[p][k])) p = i;
+        if (a[p][k] == 0.0 || !isfinite(a[p][k])) return 0;
+        for (int m = 0; m < 5; m++) {
+            double t = a[k][m]; a[k][m] = a[p][m]; a[p][m] = t;
+        }
+        for (int i = k + 1; i < 4; i++) {
+            double r = a[i][k] / a[k][k];
+            for (int m = k; m < 5; m++) a[i][m] -= r * a[k][m];
+        }
+    }
+    for (int k = 3; k >= 0; k--) {
+        double t = a[k][4];
+        for (int m = k + 1; m < 4; m++) t -= a[k][m] * d[m];
+        d[k] = t / a[k][k];
+    }
+    return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) && isfinite(d[3]);
+}
+
+/* Broyden's method from the ball's last Jacobian: between two thermal
+ * steps the root moves little, so two or three residual evaluations
+ * replace the five per iteration of a finite-difference Jacobian. Same
+ * stopping test as newton(); any step that does not lower the residual
+ * hands over to it. On success x is the root and c holds its tractions. */
+static acbb_status broyden(qd_ctx *c, double J[16], double x[4])
+{
+    double f[4], xn[4], fn[4], d[4];
+    if (!eval(c, x, f)) return ACBB_DIVERGED;
+    for (int it = 0; it < 8; it++) {
+        if (resid(f) < RES_TOL) return ACBB_OK;
+        if (!solve4(J, f, d)) return ACBB_DIVERGED;
+        for (int k = 0; k < 4; k++) xn[k] = x[k] + d[k];
+        if (!eval(c, xn, fn) || resid(fn) >= resid(f)) return ACBB_DIVERGED;
+        /* J += (df - J d) d^T / (d . d) */
+        double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + d[3] * d[3];
+        for (int i = 0; i < 4; i++) {
+            double u = fn[i] - f[i];
+            for (int k = 0; k < 4; k++) u -= J[4 * i + k] * d[k];
+            for (int k = 0; k < 4; k++) J[4 * i + k] += u * d[k] / dd;
+        }
+        memcpy(x, xn, sizeof xn);
+        memcpy(f, fn, sizeof fn);
+    }
+    return resid(f) < RES_TOL ? ACBB_OK : ACBB_DIVERGED;
+}
+
 /* Continuation in the slip regularisation: the traction field is nearly
  * discontinuous at zero slip (s_reg = 1 um/s, MODEL.md section 4); start from
  * a smooth 1 cm/s and tighten by sqrt(10), warm-starting each solve. With
@@ -153,10 +227,37 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
     return newton(q, F, x); /* leave the solver at the accepted root */
 }
 
+/* Level 2 of ball j: Broyden from its last Jacobian if there is one, else
+ * (or if that stalls) the hybrid Newton, with continuation as the last
+ * resort. The Jacobian is kept only from a solve at the nominal s_reg. */
+static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4])
+{
+    double J[16];
+    if (q->J_ok[j]) {
+        double xb[4];
+        memcpy(J, q->J[j], sizeof J);
+        memcpy(xb, x, sizeof xb);
+        if (broyden(c, J, xb) == ACBB_OK) {
+            memcpy(q->J[j], J, sizeof J);
+            memcpy(x, xb, sizeof xb);
+            return ACBB_OK;
+        }
+    }
+    q->J_ok[j] = 0;
+    gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, c };
+    if (newton(q, &F, x) == ACBB_OK) {
+        gsl_matrix_view JM = gsl_matrix_view_array(q->J[j], 4, 4);
+        q->J_ok[j] = qd_df(q->solver->x, c, &JM.matrix) == GSL_SUCCESS;
+    } else if (continuation(q, &F, x) != ACBB_OK)
+        return ACBB_DIVERGED;
+    for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
+    return eval(c, x, J) ? ACBB_OK : ACBB_DIVERGED; /* tractions at the accepted root */
+}
+
 static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
-                              const acbb_mixture *mix, acbb_ball_state *b)
+                              const acbb_mixture *mix, acbb_ball_state *b, int j)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -164,14 +265,11 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     qd_ctx c = { .s = s, .ci = &q->ci, .co = &q->co, .omega_i = omega_i, .J = g->J,
                  .D = g->D, .mix = mix };
     c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
-    double x0[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
-                     b->kin.wz / omega_i };
-    gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, &c };
-    if (newton(q, &F, x0) != ACBB_OK && continuation(q, &F, x0) != ACBB_OK)
+    double x[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
+                    b->kin.wz / omega_i };
+    if (solve_speeds(q, &c, j, x) != ACBB_OK)
         return ACBB_DIVERGED;
-    const gsl_vector *x = q->solver->x;
-    for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * gsl_vector_get(x, d);
-    qd_f(x, &c, q->solver->f); /* tractions at the accepted root */
+    for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * x[d];
     memcpy(b->tr_i, c.tri.F, sizeof b->tr_i);
     memcpy(b->tr_o, c.tro.F, sizeof b->tr_o);
     b->tr_Qi = b->Qi;
@@ -195,10 +293,11 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
             b->traction_valid = 0;
+            q->J_ok[j] = 0;
             continue;
         }
         double wm0 = b->kin.omega_m;
-        acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b);
+        acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
                                   "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);
