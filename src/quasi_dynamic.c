@@ -12,6 +12,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
 #include "acbb/quasi_dynamic.h"
+#include "acbb/broyden.h"
 
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
@@ -134,74 +135,12 @@ static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const doubl
     return ACBB_DIVERGED;
 }
 
-/* Residual at x (scaled, as qd_f); 0 on a non-finite value. */
-static int eval(qd_ctx *c, const double x[4], double f[4])
+/* Residual at x (scaled, as qd_f) for acbb_broyden; 0 on a non-finite value. */
+static int eval(const double *x, void *p, double *f)
 {
     gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
     gsl_vector_view F = gsl_vector_view_array(f, 4);
-    return qd_f(&X.vector, c, &F.vector) == GSL_SUCCESS;
-}
-
-/* GSL's residual test: sum |f_i| against RES_TOL. */
-static double resid(const double f[4])
-{
-    return fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
-}
-
-/* Solve J d = -f (4x4, partial pivoting); 0 if singular. */
-static int solve4(const double J[16], const double f[4], double d[4])
-{
-    double a[4][5];
-    for (int i = 0; i < 4; i++) {
-        for (int k = 0; k < 4; k++) a[i][k] = J[4 * i + k];
-        a[i][4] = -f[i];
-    }
-    for (int k = 0; k < 4; k++) {
-        int p = k;
-        for (int i = k + 1; i < 4; i++)
-            if (fabs(a[i][k]) > fabs(a[p][k])) p = i;
-        if (a[p][k] == 0.0 || !isfinite(a[p][k])) return 0;
-        for (int m = 0; m < 5; m++) {
-            double t = a[k][m]; a[k][m] = a[p][m]; a[p][m] = t;
-        }
-        for (int i = k + 1; i < 4; i++) {
-            double r = a[i][k] / a[k][k];
-            for (int m = k; m < 5; m++) a[i][m] -= r * a[k][m];
-        }
-    }
-    for (int k = 3; k >= 0; k--) {
-        double t = a[k][4];
-        for (int m = k + 1; m < 4; m++) t -= a[k][m] * d[m];
-        d[k] = t / a[k][k];
-    }
-    return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]) && isfinite(d[3]);
-}
-
-/* Broyden's method from the ball's last Jacobian: between two thermal
- * steps the root moves little, so two or three residual evaluations
- * replace the five per iteration of a finite-difference Jacobian. Same
- * stopping test as newton(); any step that does not lower the residual
- * hands over to it. On success x is the root and c holds its tractions. */
-static acbb_status broyden(qd_ctx *c, double J[16], double x[4])
-{
-    double f[4], xn[4], fn[4], d[4];
-    if (!eval(c, x, f)) return ACBB_DIVERGED;
-    for (int it = 0; it < 8; it++) {
-        if (resid(f) < RES_TOL) return ACBB_OK;
-        if (!solve4(J, f, d)) return ACBB_DIVERGED;
-        for (int k = 0; k < 4; k++) xn[k] = x[k] + d[k];
-        if (!eval(c, xn, fn) || resid(fn) >= resid(f)) return ACBB_DIVERGED;
-        /* J += (df - J d) d^T / (d . d) */
-        double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + d[3] * d[3];
-        for (int i = 0; i < 4; i++) {
-            double u = fn[i] - f[i];
-            for (int k = 0; k < 4; k++) u -= J[4 * i + k] * d[k];
-            for (int k = 0; k < 4; k++) J[4 * i + k] += u * d[k] / dd;
-        }
-        memcpy(x, xn, sizeof xn);
-        memcpy(f, fn, sizeof fn);
-    }
-    return resid(f) < RES_TOL ? ACBB_OK : ACBB_DIVERGED;
+    return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
 }
 
 /* Continuation in the slip regularisation: the traction field is nearly
@@ -227,17 +166,19 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
     return newton(q, F, x); /* leave the solver at the accepted root */
 }
 
-/* Level 2 of ball j: Broyden from its last Jacobian if there is one, else
- * (or if that stalls) the hybrid Newton, with continuation as the last
- * resort. The Jacobian is kept only from a solve at the nominal s_reg. */
+/* Level 2 of ball j: Broyden from its last Jacobian if there is one (two
+ * or three traction evaluations between thermal steps instead of five per
+ * hybrid iteration), else or if that stalls the hybrid Newton, with
+ * continuation as the last resort. On success c holds the tractions at the
+ * root. The Jacobian is kept only from a solve at the nominal s_reg. */
 static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4])
 {
-    double J[16];
+    double J[16], f[4];
     if (q->J_ok[j]) {
         double xb[4];
         memcpy(J, q->J[j], sizeof J);
         memcpy(xb, x, sizeof xb);
-        if (broyden(c, J, xb) == ACBB_OK) {
+        if (acbb_broyden(eval, c, 4, J, xb, f, RES_TOL, 8)) {
             memcpy(q->J[j], J, sizeof J);
             memcpy(x, xb, sizeof xb);
             return ACBB_OK;
@@ -251,7 +192,7 @@ static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4])
     } else if (continuation(q, &F, x) != ACBB_OK)
         return ACBB_DIVERGED;
     for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
-    return eval(c, x, J) ? ACBB_OK : ACBB_DIVERGED; /* tractions at the accepted root */
+    return eval(x, c, f) ? ACBB_OK : ACBB_DIVERGED; /* tractions at the accepted root */
 }
 
 static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
