@@ -16,6 +16,7 @@
 #include <gsl/gsl_vector.h>
 #include "acbb/mechanics.h"
 #include "acbb/losses.h"
+#include "acbb/broyden.h"
 
 #define UM 1e-6          /* ring unknowns are in um and mrad for GSL's scaling */
 #define MRAD 1e-3
@@ -35,6 +36,8 @@ struct acbb_mech {
     int centred;                /* dx fixed by symmetry (deep groove, no thrust) */
     int dof_dz, dof_thy;        /* active ring DOFs besides dx */
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
+    double ring_J[MAX_RING_DOF + 1][MAX_RING_DOF * MAX_RING_DOF]; /* last, per DOF count */
+    int ring_J_ok[MAX_RING_DOF + 1];
     gsl_root_fsolver *brent;
     gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
     /* context of the solve in progress */
@@ -386,11 +389,12 @@ static void ring_offsets(const acbb_mech *m, const acbb_mech_state *st, double p
     *A2 = g->A0 * cos(g->alpha0) + st->dz * cos(psi) - st->dy * sin(psi);
 }
 
-/* Solve every (distinct) ball and sum the ring reactions. */
+/* Solve every distinct ball and sum the ring reactions, each ball weighted
+ * by how many it stands for (acbb_mech_weight). */
 static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
 {
     const acbb_geometry *g = &m->g;
-    int nb = st->symmetric ? 1 : st->n;
+    int nb = acbb_mech_distinct(st);
     st->Fx = st->Fy = st->Fz = st->My = st->Mz = 0.0;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
@@ -404,7 +408,7 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         double si = sin(b->alpha_i), ci = cos(b->alpha_i);
         double ax = b->Qi * si + f[0];
         double rad = b->Qi * ci + f[1];
-        double w = st->symmetric ? st->n : 1.0;
+        double w = acbb_mech_weight(st, j);
         st->Fx += w * ax;
         st->Fz += w * rad * cos(b->psi);
         st->Fy -= w * rad * sin(b->psi);
@@ -413,14 +417,11 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         st->My += w * mom * cos(b->psi);
         st->Mz += w * mom * sin(b->psi);
     }
-    if (st->symmetric) {
-        st->Fz = st->Fy = st->My = st->Mz = 0.0;
-        for (int j = 1; j < st->n; j++) {
-            double psi = st->ball[j].psi;
-            st->ball[j] = st->ball[0];
-            st->ball[j].psi = psi;
-        }
-    }
+    /* The odd sums cancel between mirror images (and all but Fx under
+     * pure thrust): set exactly, not left at round-off. */
+    if (st->symmetric || st->mirror) st->Fy = st->Mz = 0.0;
+    if (st->symmetric) st->Fz = st->My = 0.0;
+    acbb_mech_spread(st);
     return ACBB_OK;
 }
 
@@ -543,6 +544,35 @@ static acbb_status solve_thrust(acbb_mech *m, acbb_mech_state *st)
     return ACBB_DIVERGED;
 }
 
+static int ring_eval(const double *x, void *p, double *f)
+{
+    acbb_mech *m = p;
+    gsl_vector_const_view X = gsl_vector_const_view_array(x, (size_t)ring_dof(m));
+    gsl_vector_view F = gsl_vector_view_array(f, (size_t)ring_dof(m));
+    return ring_f(&X.vector, m, &F.vector) == GSL_SUCCESS;
+}
+
+/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h);
+ * the first solve builds one by forward differences with GSL's step rule.
+ * Returns 1 with the trial state at the root. */
+static int ring_broyden(acbb_mech *m, int n, const double *x0)
+{
+    double x[MAX_RING_DOF], f[MAX_RING_DOF], *J = m->ring_J[n];
+    double tol = m->tol * ring_force_scale(m);
+    memcpy(x, x0, sizeof x[0] * (size_t)n);
+    if (!m->ring_J_ok[n]) {
+        if (!ring_eval(x, m, f)) return 0;
+        double r = 0.0;
+        for (int i = 0; i < n; i++) r += fabs(f[i]);
+        if (r < tol) return 1;
+        if (!acbb_fd_jacobian(ring_eval, m, n, x, f, GSL_SQRT_DBL_EPSILON, J)) return 0;
+        m->ring_J_ok[n] = 1;
+    }
+    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12)) return 1;
+    m->ring_J_ok[n] = 0;
+    return 0;
+}
+
 static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
 {
     int n = ring_dof(m);
@@ -557,6 +587,12 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
     if (!m->fix_axial) x0[k++] = st->dx / UM;
     if (m->dof_dz) x0[k++] = st->dz / UM;
     if (m->dof_thy) x0[k++] = st->thy / MRAD;
+    /* Held-displacement solves (the stiffness probes of sim.c, displacement
+     * preload) keep the hybrid path: the stiffness is a 0.3 nm central
+     * difference that would carry the different solver noise. */
+    if (!m->fix_axial && ring_broyden(m, n, x0))
+        return ACBB_OK;
+    m->inner_status = ACBB_OK;
     gsl_vector_view xv = gsl_vector_view_array(x0, n);
     gsl_multiroot_function F = { ring_f, (size_t)n, m };
     gsl_multiroot_fsolver *s = m->ring_solver[n];
@@ -580,7 +616,7 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
 static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st)
 {
     const acbb_geometry *g = &m->g;
-    int nb = st->symmetric ? 1 : st->n;
+    int nb = acbb_mech_distinct(st);
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad
@@ -678,34 +714,6 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
 
 /* ---- set-up ---- */
 
-static double thrust_closed_form(double a, void *p)
-{
-    const double *q = p; /* Fx, Z, Kn, A0, alpha0 */
-    double c = cos(q[4]) / cos(a) - 1.0;
-    return q[1] * q[2] * pow(q[3], 1.5) * pow(fmax(c, 0.0), 1.5) * sin(a) - q[0];
-}
-
-double acbb_static_thrust_angle(double Fx, int Z, double Kn, double A0, double alpha0)
-{
-    double q[5] = { Fx, (double)Z, Kn, A0, alpha0 };
-    if (Fx <= 0.0) return alpha0;
-    gsl_function F = { thrust_closed_form, q };
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (!s) return NAN;
-    double lo = alpha0, hi = 0.5 * M_PI - 1e-9, r = NAN;
-    if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS) {
-        for (int it = 0; it < 200; it++) {
-            if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
-            r = gsl_root_fsolver_root(s);
-            if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s),
-                                       gsl_root_fsolver_x_upper(s), 1e-15, 1e-14) == GSL_SUCCESS)
-                break;
-        }
-    }
-    gsl_root_fsolver_free(s);
-    return r;
-}
-
 acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
 {
     acbb_mech *m = calloc(1, sizeof *m);
@@ -783,6 +791,8 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
     memset(st, 0, sizeof *st);
     st->n = g->Z;
     st->symmetric = !m->dof_dz && !m->dof_thy;
+    /* Fy and Mz are not scene loads, dy and thz never move: mirror images. */
+    st->mirror = !st->symmetric;
     acbb_race_control rc0 = m->race;
     for (int j = 0; j < st->n; j++) {
         acbb_ball_state *b = &st->ball[j];
@@ -815,32 +825,6 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
         b->X2 = Lo * cos(a);
     }
     return acbb_mech_solve(m, 0.0, NULL, st, err);
-}
-
-void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, int inner,
-                             double omega_i, acbb_contact_in *c)
-{
-    const acbb_hertz_const *hc = inner ? &b->hc_i : &b->hc_o;
-    const acbb_hertz_contact *ct = inner ? &b->ct_i : &b->ct_o;
-    c->inner = inner;
-    c->Q = ct->Q;
-    c->a = ct->a;
-    c->b = ct->b;
-    c->pmax = ct->pmax;
-    c->delta = inner ? b->delta_i : b->delta_o;
-    c->alpha = inner ? b->alpha_i : b->alpha_o;
-    c->f = inner ? g->f_i : g->f_o;
-    c->D = g->D;
-    c->dm = g->dm;
-    c->Rx = hc->Rx;
-    c->kappa = hc->kappa;
-    c->E_eff = hc->E_eff;
-    c->roll = inner ? b->kin.roll_i : b->kin.roll_o;
-    c->race = inner ? omega_i - b->kin.omega_m : -b->kin.omega_m;
-    c->spin = inner ? b->kin.spin_i : b->kin.spin_o;
-    c->pivot = b->kin.wy;
-    c->u = inner ? b->kin.u_i : b->kin.u_o;
-    c->omega_m = b->kin.omega_m;
 }
 
 void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src)

@@ -12,6 +12,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
 #include "acbb/quasi_dynamic.h"
+#include "acbb/broyden.h"
 
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
@@ -20,6 +21,10 @@
 struct acbb_qd {
     acbb_traction_contact ci, co;
     gsl_multiroot_fdfsolver *solver;
+    /* Last Jacobian of each ball (scaled unknowns and residuals) for the
+     * Broyden steps of the next update; J_ok[j] = 0: none yet. */
+    double J[ACBB_MAX_BALLS][16];
+    int J_ok[ACBB_MAX_BALLS];
 };
 
 typedef struct {
@@ -130,6 +135,14 @@ static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const doubl
     return ACBB_DIVERGED;
 }
 
+/* Residual at x (scaled, as qd_f) for acbb_broyden; 0 on a non-finite value. */
+static int eval(const double *x, void *p, double *f)
+{
+    gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
+    gsl_vector_view F = gsl_vector_view_array(f, 4);
+    return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
+}
+
 /* Continuation in the slip regularisation: the traction field is nearly
  * discontinuous at zero slip (s_reg = 1 um/s, MODEL.md section 4); start from
  * a smooth 1 cm/s and tighten by sqrt(10), warm-starting each solve. With
@@ -153,10 +166,39 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
     return newton(q, F, x); /* leave the solver at the accepted root */
 }
 
+/* Level 2 of ball j: Broyden from its last Jacobian if there is one (two
+ * or three traction evaluations between thermal steps instead of five per
+ * hybrid iteration), else or if that stalls the hybrid Newton, with
+ * continuation as the last resort. On success c holds the tractions at the
+ * root. The Jacobian is kept only from a solve at the nominal s_reg. */
+static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4])
+{
+    double J[16], f[4];
+    if (q->J_ok[j]) {
+        double xb[4];
+        memcpy(J, q->J[j], sizeof J);
+        memcpy(xb, x, sizeof xb);
+        if (acbb_broyden(eval, c, 4, J, xb, f, RES_TOL, 8)) {
+            memcpy(q->J[j], J, sizeof J);
+            memcpy(x, xb, sizeof xb);
+            return ACBB_OK;
+        }
+    }
+    q->J_ok[j] = 0;
+    gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, c };
+    if (newton(q, &F, x) == ACBB_OK) {
+        gsl_matrix_view JM = gsl_matrix_view_array(q->J[j], 4, 4);
+        q->J_ok[j] = qd_df(q->solver->x, c, &JM.matrix) == GSL_SUCCESS;
+    } else if (continuation(q, &F, x) != ACBB_OK)
+        return ACBB_DIVERGED;
+    for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
+    return eval(x, c, f) ? ACBB_OK : ACBB_DIVERGED; /* tractions at the accepted root */
+}
+
 static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
-                              const acbb_mixture *mix, acbb_ball_state *b)
+                              const acbb_mixture *mix, acbb_ball_state *b, int j)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -164,14 +206,11 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     qd_ctx c = { .s = s, .ci = &q->ci, .co = &q->co, .omega_i = omega_i, .J = g->J,
                  .D = g->D, .mix = mix };
     c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
-    double x0[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
-                     b->kin.wz / omega_i };
-    gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, &c };
-    if (newton(q, &F, x0) != ACBB_OK && continuation(q, &F, x0) != ACBB_OK)
+    double x[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
+                    b->kin.wz / omega_i };
+    if (solve_speeds(q, &c, j, x) != ACBB_OK)
         return ACBB_DIVERGED;
-    const gsl_vector *x = q->solver->x;
-    for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * gsl_vector_get(x, d);
-    qd_f(x, &c, q->solver->f); /* tractions at the accepted root */
+    for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * x[d];
     memcpy(b->tr_i, c.tri.F, sizeof b->tr_i);
     memcpy(b->tr_o, c.tro.F, sizeof b->tr_o);
     b->tr_Qi = b->Qi;
@@ -190,25 +229,21 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
 {
     *change = 0.0;
     if (omega_i <= 0.0) return ACBB_OK;
-    int nb = st->symmetric ? 1 : st->n;
+    int nb = acbb_mech_distinct(st);
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
             b->traction_valid = 0;
+            q->J_ok[j] = 0;
             continue;
         }
         double wm0 = b->kin.omega_m;
-        acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b);
+        acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
                                   "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);
         *change = fmax(*change, fabs(b->kin.omega_m - wm0) / fmax(fabs(wm0), 1e-12));
     }
-    if (st->symmetric)
-        for (int j = 1; j < st->n; j++) {
-            double psi = st->ball[j].psi;
-            st->ball[j] = st->ball[0];
-            st->ball[j].psi = psi;
-        }
+    acbb_mech_spread(st);
     return ACBB_OK;
 }

@@ -154,13 +154,13 @@ static acbb_status losses(acbb_sim *sim)
     acbb_oil_state oil_i, oil_o;
     acbb_mixture mix;
     lubricant(sim, &oil_i, &oil_o, &mix);
-    int nb = sim->ms.symmetric ? 1 : sim->ms.n;
-    double w = sim->ms.symmetric ? sim->ms.n : 1.0;
+    int nb = acbb_mech_distinct(&sim->ms);
     acbb_losses L = { 0 };
     acbb_heat_sources H = { 0 };
     double wm_sum = 0.0;
     for (int j = 0; j < nb; j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
+        double w = acbb_mech_weight(&sim->ms, j);
         acbb_contact_in ci, co;
         contact_input(sim, b, 1, &ci);
         contact_input(sim, b, 0, &co);
@@ -177,8 +177,7 @@ static acbb_status losses(acbb_sim *sim)
         route_contact(&bl->out, w, &H.outer_contact, &H.ball);
         wm_sum += w * b->kin.omega_m;
     }
-    if (sim->ms.symmetric)
-        for (int j = 1; j < sim->ms.n; j++) sim->bl[j] = sim->bl[0];
+    for (int j = nb; j < sim->ms.n; j++) sim->bl[j] = sim->bl[acbb_mech_source(&sim->ms, j)];
     bearing_losses(sim, &mix, wm_sum / sim->ms.n, &L, &H);
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) L.total += L.P[l];
     L.inner = H.inner_contact;
@@ -221,7 +220,7 @@ static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
                                  const acbb_oil_state *oo, const acbb_mixture *mix,
                                  double *change, acbb_error *err)
 {
-    int nb = sim->ms.symmetric ? 1 : sim->ms.n;
+    int nb = acbb_mech_distinct(&sim->ms);
     for (int j = 0; j < nb; j++) {
         double window = sim->ms.ball[j].traction_valid ? DYN_WINDOW_WARM : DYN_WINDOW_COLD, c;
         sim->work.traction_solves++;
@@ -231,12 +230,7 @@ static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
         if (rc != ACBB_OK) return rc;
         *change = fmax(*change, c);
     }
-    if (sim->ms.symmetric)
-        for (int j = 1; j < sim->ms.n; j++) {
-            double psi = sim->ms.ball[j].psi;
-            sim->ms.ball[j] = sim->ms.ball[0];
-            sim->ms.ball[j].psi = psi;
-        }
+    acbb_mech_spread(&sim->ms);
     return ACBB_OK;
 }
 

@@ -5,6 +5,7 @@
 #include <gsl/gsl_errno.h>
 #include "tap.h"
 #include "acbb/mechanics.h"
+#include "acbb/broyden.h"
 
 #define DEG (M_PI / 180.0)
 #define RPM (M_PI / 30.0)
@@ -228,6 +229,76 @@ static void test_contact_lost(void)
     acbb_mech_free(m);
 }
 
+/* Mirror symmetry (no Fy, no Mz): solving balls 0..n/2 and weighting the
+ * ring sums must give what solving all 21 gives, ball for ball. Also: an
+ * even ball count, where ball n/2 is its own mirror image. */
+static void test_mirror(void)
+{
+    for (int Z = 21; Z <= 22; Z++) {
+        acbb_scene s;
+        scene_7008c(&s);
+        s.n_balls = Z;
+        s.axial_load = 300;
+        s.radial_load = 800;
+        acbb_mech *m;
+        acbb_error err;
+        acbb_mech_new(&s, &m, &err);
+        acbb_mech_state half, full;
+        acbb_status rc = acbb_mech_init_state(m, &half, &err);
+        ok(rc == ACBB_OK && half.mirror && !half.symmetric && acbb_mech_distinct(&half) == Z / 2 + 1,
+           "Z = %d under radial load: balls 0..%d solved", Z, Z / 2);
+        acbb_mech_state_copy(&full, &half);
+        full.mirror = 0;
+        for (int r = 1; r <= 4 && rc == ACBB_OK; r++) {
+            rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &half, &err);
+            if (rc == ACBB_OK) rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &full, &err);
+        }
+        ok(rc == ACBB_OK, "both solve: %s", rc ? err.msg : "ok");
+        double dq = 0.0, da = 0.0, dw = 0.0;
+        for (int j = 0; j < Z; j++) {
+            const acbb_ball_state *a = &half.ball[j], *b = &full.ball[j];
+            dq = fmax(dq, fabs(a->Qi - b->Qi) / fmax(b->Qi, 1.0));
+            da = fmax(da, fabs(a->alpha_o - b->alpha_o));
+            dw = fmax(dw, fabs(a->kin.omega_m - b->kin.omega_m) / fabs(b->kin.omega_m));
+        }
+        ok(dq < 1e-7 && da < 1e-9 && dw < 1e-9,
+           "every ball as in the full solve (Q %.1e, alpha %.1e rad, omega_m %.1e)", dq, da, dw);
+        is_close(half.Fz, full.Fz, 1e-9, 0, "weighted radial reaction equals the full sum");
+        ok(half.Fy == 0.0 && fabs(full.Fy) < 1e-6, "Fy: 0 by symmetry, %.1e N in the full sum",
+           full.Fy);
+        ok(half.ball[1].psi == full.ball[1].psi && half.ball[Z - 1].psi == full.ball[Z - 1].psi,
+           "mirrored balls keep their own azimuth");
+        acbb_mech_free(m);
+    }
+}
+
+/* Broyden on x^2 + y^2 = 4, x y = 1 from a rough Jacobian: converges to
+ * the hand root x = sqrt(2 + sqrt 3), y = 1/x; a wrong-signed Jacobian
+ * makes the first step climb and must be refused. */
+static int circle_hyperbola(const double *x, void *ctx, double *f)
+{
+    (void)ctx;
+    f[0] = x[0] * x[0] + x[1] * x[1] - 4.0;
+    f[1] = x[0] * x[1] - 1.0;
+    return 1;
+}
+
+static void test_broyden(void)
+{
+    double x[2] = { 2.0, 0.5 }, f[2], J[4];
+    circle_hyperbola(x, NULL, f);
+    ok(acbb_fd_jacobian(circle_hyperbola, NULL, 2, x, f, 1e-7, J)
+       && fabs(J[0] - 4.0) < 1e-5 && fabs(J[1] - 1.0) < 1e-5 && fabs(J[3] - 2.0) < 1e-5,
+       "forward-difference Jacobian (4, 1; 0.5, 2)");
+    ok(acbb_broyden(circle_hyperbola, NULL, 2, J, x, f, 1e-13, 30), "Broyden converges");
+    double want = sqrt(2.0 + sqrt(3.0));
+    is_close(x[0], want, 1e-12, 0, "x = sqrt(2 + sqrt 3)");
+    is_close(x[1], 1.0 / want, 1e-12, 0, "y = 1/x");
+    double y[2] = { 2.0, 0.5 }, Jbad[4] = { -4.0, -1.0, -0.5, -2.0 };
+    ok(!acbb_broyden(circle_hyperbola, NULL, 2, Jbad, y, f, 1e-13, 30) && y[0] == 2.0,
+       "a step that raises the residual is refused, x kept");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -237,5 +308,7 @@ int main(void)
     test_speed();
     test_radial();
     test_contact_lost();
+    test_mirror();
+    test_broyden();
     return done_testing();
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "acbb/sensitivity.h"
 #include "acbb/units.h"
+#include <gsl/gsl_errno.h>
 #include "tap.h"
 
 static void test_metrics(void)
@@ -219,6 +220,7 @@ static void test_errors(void)
 
 int main(void)
 {
+    gsl_set_error_handler_off();
     test_metrics();
     test_ranges();
     test_oat_flip();

@@ -47,8 +47,41 @@ typedef struct {
     double Fx, Fy, Fz, My, Mz;   /* ring reactions (N, N m) */
     int n;                       /* balls */
     int symmetric;               /* 1: every ball identical, ball 0 solved */
+    int mirror;                  /* 1: ball n-j mirrors ball j, balls 0..n/2 solved */
     acbb_ball_state ball[ACBB_MAX_BALLS];
 } acbb_mech_state;
+
+/* Which balls are solved and whom they stand for (MODEL.md section 3: the
+ * ring moves only in x, z and tilts about y, so with no Fy and no Mz ball
+ * states are even in psi; pure thrust makes them all equal). Balls
+ * 0..acbb_mech_distinct()-1 are solved; ball j carries acbb_mech_weight()
+ * balls in the ring and loss sums; acbb_mech_source(j) is the solved ball
+ * that ball j copies. */
+static inline int acbb_mech_distinct(const acbb_mech_state *st)
+{
+    return st->symmetric ? 1 : st->mirror ? st->n / 2 + 1 : st->n;
+}
+
+static inline double acbb_mech_weight(const acbb_mech_state *st, int j)
+{
+    if (st->symmetric) return st->n;
+    return st->mirror && j > 0 && 2 * j != st->n ? 2.0 : 1.0;
+}
+
+static inline int acbb_mech_source(const acbb_mech_state *st, int j)
+{
+    return st->symmetric ? 0 : st->mirror && j >= acbb_mech_distinct(st) ? st->n - j : j;
+}
+
+/* Copy every solved ball onto the balls it stands for (azimuth kept). */
+static inline void acbb_mech_spread(acbb_mech_state *st)
+{
+    for (int j = acbb_mech_distinct(st); j < st->n; j++) {
+        double psi = st->ball[j].psi;
+        st->ball[j] = st->ball[acbb_mech_source(st, j)];
+        st->ball[j].psi = psi;
+    }
+}
 
 typedef struct acbb_mech acbb_mech;
 

@@ -1,0 +1,62 @@
+/* acbb — pieces of the mechanics API that need no solver state: the
+ * closed-form static thrust angle (an independent reference for the tests
+ * and the initial guess) and the loss/traction view of one contact
+ * (mechanics.h). Kept apart from the equilibrium solver in mechanics.c. */
+#include <math.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include "acbb/mechanics.h"
+
+static double thrust_closed_form(double a, void *p)
+{
+    const double *q = p; /* Fx, Z, Kn, A0, alpha0 */
+    double c = cos(q[4]) / cos(a) - 1.0;
+    return q[1] * q[2] * pow(q[3], 1.5) * pow(fmax(c, 0.0), 1.5) * sin(a) - q[0];
+}
+
+double acbb_static_thrust_angle(double Fx, int Z, double Kn, double A0, double alpha0)
+{
+    double q[5] = { Fx, (double)Z, Kn, A0, alpha0 };
+    if (Fx <= 0.0) return alpha0;
+    gsl_function F = { thrust_closed_form, q };
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return NAN;
+    double lo = alpha0, hi = 0.5 * M_PI - 1e-9, r = NAN;
+    if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS) {
+        for (int it = 0; it < 200; it++) {
+            if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+            r = gsl_root_fsolver_root(s);
+            if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s),
+                                       gsl_root_fsolver_x_upper(s), 1e-15, 1e-14) == GSL_SUCCESS)
+                break;
+        }
+    }
+    gsl_root_fsolver_free(s);
+    return r;
+}
+
+void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, int inner,
+                             double omega_i, acbb_contact_in *c)
+{
+    const acbb_hertz_const *hc = inner ? &b->hc_i : &b->hc_o;
+    const acbb_hertz_contact *ct = inner ? &b->ct_i : &b->ct_o;
+    c->inner = inner;
+    c->Q = ct->Q;
+    c->a = ct->a;
+    c->b = ct->b;
+    c->pmax = ct->pmax;
+    c->delta = inner ? b->delta_i : b->delta_o;
+    c->alpha = inner ? b->alpha_i : b->alpha_o;
+    c->f = inner ? g->f_i : g->f_o;
+    c->D = g->D;
+    c->dm = g->dm;
+    c->Rx = hc->Rx;
+    c->kappa = hc->kappa;
+    c->E_eff = hc->E_eff;
+    c->roll = inner ? b->kin.roll_i : b->kin.roll_o;
+    c->race = inner ? omega_i - b->kin.omega_m : -b->kin.omega_m;
+    c->spin = inner ? b->kin.spin_i : b->kin.spin_o;
+    c->pivot = b->kin.wy;
+    c->u = inner ? b->kin.u_i : b->kin.u_o;
+    c->omega_m = b->kin.omega_m;
+}
