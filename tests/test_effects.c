@@ -7,6 +7,8 @@
 #include "tap.h"
 #include "acbb/sim.h"
 #include "acbb/units.h"
+#include "acbb/hertz.h"
+#include "acbb/mechanics.h"
 
 static acbb_snapshot snap_a, snap_b; /* large structs off the stack */
 
@@ -144,9 +146,39 @@ static void test_squeeze_and_stiffness(void)
        K * 1e-6);
 }
 
+/* Zero-speed thrust (Harris & Kotzalas, rigid rings): with the loaded angle
+ * alpha from Fx = Z Kn A0^1.5 (cos a0 / cos a - 1)^1.5 sin a, the axial
+ * deflection is delta_a = A0 sin(a - a0) / cos a. Kn from the Hertz
+ * constants of both contacts at that angle (Kn^-2/3 = Ki^-2/3 + Ko^-2/3). */
+static void test_thrust_deflection(void)
+{
+    acbb_scene s = base(ACBB_MODEL_STATIC);
+    s.inner_speed = 0.0;
+    s.heating = false;
+    s.hertz = ACBB_HERTZ_EXACT;
+    ok(run(&s, &snap_a) == ACBB_OK, "7008C at rest under 1000 N: converges");
+    double D = s.ball_diameter, fi = s.inner_groove_radius / D, fo = s.outer_groove_radius / D;
+    double A0 = s.inner_groove_radius + s.outer_groove_radius - D, a0 = s.contact_angle0;
+    double E = acbb_effective_modulus(s.ball.E, s.ball.nu, s.ring.E, s.ring.nu);
+    double a = snap_a.balls[0].alpha_i, K[2];
+    for (int inner = 0; inner < 2; inner++) {
+        double Rx, Ry;
+        acbb_hertz_const hc;
+        acbb_contact_radii(D, s.pitch_diameter, a, inner ? fi : fo, inner, &Rx, &Ry);
+        acbb_hertz_const_compute(Rx, Ry, E, ACBB_HERTZ_EXACT, &hc);
+        K[inner] = hc.Kc;
+    }
+    double Kn = pow(pow(K[0], -2.0 / 3.0) + pow(K[1], -2.0 / 3.0), -1.5);
+    double a_cf = acbb_static_thrust_angle(s.axial_load, s.n_balls, Kn, A0, a0);
+    is_close(a, a_cf, 1e-6, 0, "loaded angle = the closed-form thrust angle");
+    is_close(snap_a.delta_x, A0 * sin(a_cf - a0) / cos(a_cf), 1e-6, 0,
+             "axial deflection delta_x = A0 sin(a - a0) / cos a");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_thrust_deflection();
     test_two_force_ball();
     test_gyroscopic_quasi_dynamic();
     test_no_losses();
