@@ -94,4 +94,18 @@ has "$TMP/err" "ISO 15" "  message names the table"
 code $? 2 "a deep-groove series with an angle refused"
 [ ! -e "$TMP/x.ini" ]; t $? "nothing written on a refusal"
 
+# Bores 10, 40, 100 and 200 mm made by `acbb new` run to thermal steady
+# state in their derived surroundings, energy balanced (speeds kept to
+# a n*dm of about 0.6-1.2e6 mm/min, a usual limit for oil-air).
+for spec in 7000C:20000 7008C:15000 7020C:6000 7040C:3000; do
+    name=${spec%%:*}; rpm=${spec##*:}
+    "$ACBB" new "$name" --out "$TMP/run-$name.ini" >/dev/null 2>&1
+    "$ACBB" run "$TMP/run-$name.ini" --set operating.inner_speed_rpm="$rpm" --json \
+        >"$TMP/run-$name.json" 2>/dev/null
+    jq -e '.status == "converged" and .energy_W.in > 0
+        and ((.energy_W.in - .energy_W.out) | if . < 0 then -. else . end) < 1e-6 * .energy_W.in' \
+        "$TMP/run-$name.json" >/dev/null
+    t $? "$name (bore $(jq -r '.scene.keys["bearing.bore_mm"]' "$TMP/run-$name.json") mm) at $rpm rpm: converged, heat in = heat out"
+done
+
 tap_done
