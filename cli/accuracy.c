@@ -106,18 +106,6 @@ static const char *row_status(const acbb_accuracy_row *r)
     return r->status == ACBB_OK ? "converged" : acbb_status_name(r->status);
 }
 
-/* A relative error as a percentage in at most 6 characters; "-" when
- * undefined (NaN is never printed). */
-void acbb_cli_fmt_pct(double e, char *buf, size_t n)
-{
-    double p = 100.0 * e;
-    if (!isfinite(p)) snprintf(buf, n, "-");
-    else if (p == 0.0) snprintf(buf, n, "0");
-    else if (p < 0.01) snprintf(buf, n, "%.0e", p);
-    else if (p < 1000.0) snprintf(buf, n, "%.2f", p);
-    else snprintf(buf, n, "%.0e", p);
-}
-
 static const char *mark(const acbb_accuracy_row *r)
 {
     if (r->is_reference && r->is_default) return "RD";
@@ -130,7 +118,7 @@ static void print_row(const acbb_accuracy_row *r)
     char label[96], e[5][16];
     setting_label(r, label, sizeof label);
     const double errs[5] = { r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide };
-    for (int k = 0; k < 5; k++) acbb_cli_fmt_pct(errs[k], e[k], sizeof e[k]);
+    for (int k = 0; k < 5; k++) acbb_accuracy_format_pct(errs[k], e[k], sizeof e[k]);
     char ms[16], wu[16];
     if (isfinite(r->wall_ms)) snprintf(ms, sizeof ms, "%7.1f", r->wall_ms);
     else snprintf(ms, sizeof ms, "%7s", "-");
@@ -198,8 +186,8 @@ static void print_frontier(const acbb_accuracy_row *rows, size_t n)
         const acbb_accuracy_row *r = &rows[picks[k]];
         char label[96], el[16], eT[16], vs[64];
         setting_label(r, label, sizeof label);
-        acbb_cli_fmt_pct(r->e_loss, el, sizeof el);
-        acbb_cli_fmt_pct(r->e_T, eT, sizeof eT);
+        acbb_accuracy_format_pct(r->e_loss, el, sizeof el);
+        acbb_accuracy_format_pct(r->e_T, eT, sizeof eT);
         if (picks[k] == ref)
             snprintf(vs, sizeof vs, "the reference itself");
         else

@@ -40,7 +40,5 @@
 int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, unsigned knobs,
                                unsigned models);
 
-/* A relative error as % in at most 6 characters, "-" when undefined. */
-void acbb_cli_fmt_pct(double e, char *buf, size_t n);
 
 #endif

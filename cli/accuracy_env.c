@@ -25,7 +25,7 @@ static void print_row(const acbb_envelope_row *r)
     label_of(r, label, sizeof label);
     const double v[6] = { r->worst_steady, r->median_steady, r->worst_loss, r->worst_T,
                           r->worst_path, r->median_path };
-    for (int k = 0; k < 6; k++) acbb_cli_fmt_pct(v[k], e[k], sizeof e[k]);
+    for (int k = 0; k < 6; k++) acbb_accuracy_format_pct(v[k], e[k], sizeof e[k]);
     snprintf(ok, sizeof ok, "%d/%d", r->n_ok, r->n_points);
     printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %6s %8.1f %7.1f\n", label,
            r->is_reference ? "R" : (r->is_default ? "D" : ""), ok, e[0], e[1], e[2], e[3], e[4],
@@ -53,8 +53,8 @@ static void print_frontier(const acbb_envelope_row *rows, size_t n)
         if (picks[k] < 0) continue;
         char label[96], w[16], p[16];
         label_of(&rows[picks[k]], label, sizeof label);
-        acbb_cli_fmt_pct(rows[picks[k]].worst_steady, w, sizeof w);
-        acbb_cli_fmt_pct(rows[picks[k]].worst_path, p, sizeof p);
+        acbb_accuracy_format_pct(rows[picks[k]].worst_steady, w, sizeof w);
+        acbb_accuracy_format_pct(rows[picks[k]].worst_path, p, sizeof p);
         printf("  %-12s %-22s worst %s %%, path %s %%, %.1f work units\n",
                acbb_accuracy_knob_name((acbb_accuracy_knob)k), label, w, p, rows[picks[k]].work);
     }

@@ -463,3 +463,13 @@ double acbb_accuracy_work_units(const acbb_scene *sc, const acbb_work *w)
            MI_LOSS_PER_POINT * g2 * (double)w->loss_quadratures +
            net * (double)w->network_solves;
 }
+
+void acbb_accuracy_format_pct(double e, char *buf, size_t n)
+{
+    double p = 100.0 * e;
+    if (!isfinite(p)) snprintf(buf, n, "-");
+    else if (p == 0.0) snprintf(buf, n, "0");
+    else if (p < 0.01) snprintf(buf, n, "%.0e", p);
+    else if (p < 1000.0) snprintf(buf, n, "%.2f", p);
+    else snprintf(buf, n, "%.0e", p);
+}

@@ -56,14 +56,7 @@ char acbb_acc_knob_letter(acbb_accuracy_knob k)
 
 void acbb_acc_fmt_pct(double e, char *buf, size_t n)
 {
-    /* Same rules as cli_accuracy.c's fmt_pct, so a screen value can be
-     * checked against the CLI's table digit for digit. */
-    double p = 100.0 * e;
-    if (!isfinite(p)) snprintf(buf, n, "-");
-    else if (p == 0.0) snprintf(buf, n, "0");
-    else if (p < 0.01) snprintf(buf, n, "%.0e", p);
-    else if (p < 1000.0) snprintf(buf, n, "%.2f", p);
-    else snprintf(buf, n, "%.0e", p);
+    acbb_accuracy_format_pct(e, buf, n); /* the CLI's formatter: same digits */
 }
 
 void acbb_acc_fmt_pct_decade(int d, char *buf, size_t n)

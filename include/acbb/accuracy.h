@@ -211,4 +211,9 @@ acbb_status acbb_accuracy_envelope(const acbb_scene *base, const acbb_envelope_o
 void acbb_envelope_frontier(const acbb_envelope_row *rows, size_t n, double tol,
                             long picks[ACBB_KNOB_COUNT]);
 
+/* An error (a fraction) as the tables and the TUI print it, in percent:
+ * "-" when undefined, "0", "%.0e" below 0.01 % or from 1000 %, else
+ * "%.2f" (one formatter, so a screen value matches the CLI digit for digit). */
+void acbb_accuracy_format_pct(double e, char *buf, size_t n);
+
 #endif
