@@ -95,9 +95,8 @@ static void draw_heading(acbb_app *a, acbb_rect b)
                      v->res.fail0);
         else
             acbb_put(a, y, b.x, b.w, v->res.failed ? ACBB_ROLE_WARN : ACBB_ROLE_OK,
-                     "done in %s: %zu runs, %zu failed; %s%s at the scene's values: %.6g %s", took,
-                     v->res.runs, v->res.failed, v->res.delta_te ? "TE-WTE " : "", v->res.metric,
-                     v->res.y0, unit);
+                     "done in %s: %zu runs, %zu failed; at the scene's values %.6g %s", took,
+                     v->res.runs, v->res.failed, v->res.y0, unit);
         break;
     case ACBB_JOB_CANCELLED:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_WARN, "cancelled after %zu of %zu runs; r reruns", v->done,
@@ -113,6 +112,7 @@ typedef struct {
     int name_w, half;          /* columns of the input; cells of a tornado half */
     double scale;              /* the largest effect: a full half */
     int morris;                /* mu*, sigma instead of the tornado */
+    int full;                  /* every section.key fits: show them whole */
 } cols;
 
 static cols columns(const acbb_sens_result *res, int w)
@@ -125,16 +125,22 @@ static cols columns(const acbb_sens_result *res, int w)
     if (c.half < 0) c.half = 0;
     c.name_w = w - fixed - (2 * c.half + 1);
     if (c.name_w > INPUT_W_MAX) c.name_w = INPUT_W_MAX;
-    for (size_t i = 0; i < res->n; i++)
+    c.full = 1;
+    for (size_t i = 0; i < res->n; i++) {
         if (isfinite(res->rows[i].effect) && res->rows[i].effect > c.scale) c.scale = res->rows[i].effect;
+        if ((int)strlen(res->rows[i].in.key) > c.name_w) c.full = 0;
+    }
     return c;
 }
 
-/* The input's name: section.key when it fits, else the key alone, cut. */
-static void input_name(const char *key, int w, char *buf, size_t n)
+/* The input's name: section.key when every one fits, else the key alone,
+ * cut with a '~' when even that is too long. */
+static void input_name(const char *key, const cols *c, char *buf, size_t n)
 {
     const char *dot = strchr(key, '.');
-    snprintf(buf, n, "%.*s", w, (int)strlen(key) <= w || !dot ? key : dot + 1);
+    const char *name = c->full || !dot ? key : dot + 1;
+    if ((int)strlen(name) <= c->name_w) snprintf(buf, n, "%s", name);
+    else snprintf(buf, n, "%.*s~", c->name_w - 1, name);
 }
 
 /* One end's cells on the tornado: `fill` from the centre towards its side. */
@@ -166,7 +172,7 @@ static void fmt_end(int ok, double v, char *buf, size_t n)
 static void draw_row(acbb_app *a, int y, acbb_rect r, const cols *c, const acbb_sens_row *row)
 {
     char name[64], lo[24], hi[24], eff[24], tail[2 * HALF_MAX + 8];
-    input_name(row->in.key, c->name_w, name, sizeof name);
+    input_name(row->in.key, c, name, sizeof name);
     fmt_end(row->ok_lo, row->y_lo, lo, sizeof lo);
     fmt_end(row->ok_hi, row->y_hi, hi, sizeof hi);
     snprintf(eff, sizeof eff, "%.3g", row->effect);
@@ -251,7 +257,7 @@ static const acbb_help_line help[] = {
     { "< > h l", "cycle the metric" },
     { "c", "type a metric (JSON path)" },
     { "d", "metric TE - WTE on/off" },
-    { "y", "Morris off / r=4 / r=10" },
+    { "y", "Morris off/r=4/r=10 (mu* sigma)" },
     { "j k PgUp/Dn", "scroll the table" },
     { NULL, NULL },
 };

@@ -263,7 +263,7 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
 static void draw_table(acbb_app *a, acbb_rect r, int m, const char *yunit)
 {
     const acbb_sweep_view *v = &a->swv;
-    long fi = find_field(v->key);
+    long fi = find_field(v->key[0] ? v->key : a->sw.key);
     char xh[32], yh[32];
     snprintf(xh, sizeof xh, "[%s]", fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
     snprintf(yh, sizeof yh, "[%s]", yunit);
