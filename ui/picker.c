@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "acbb/scene.h"
+#include "acbb/sensitivity.h"
 #include "picker.h"
 
 const acbb_metric_item acbb_metric_menu[] = {
@@ -50,6 +51,16 @@ int acbb_scene_key_name(size_t i, char *buf, size_t n)
     const acbb_field_info *f = acbb_scene_field(i);
     if (!f) return 0;
     snprintf(buf, n, "%s.%s", f->section, f->key);
+    return 1;
+}
+
+int acbb_metric_choice(size_t i, char *buf, size_t n)
+{
+    char name[128];
+    if (!acbb_metric_name(i, name, sizeof name)) return 0;
+    char *at = strstr(name, "[i]");
+    if (at) snprintf(buf, n, "%.*s[0]%s", (int)(at - name), name, at + 3);
+    else snprintf(buf, n, "%s", name);
     return 1;
 }
 

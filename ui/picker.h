@@ -26,6 +26,10 @@ void acbb_metric_unit(const char *path, char *buf, size_t n);
  * metrics: 1 with the name in buf, 0 past the end. */
 int acbb_scene_key_name(size_t i, char *buf, size_t n);
 
+/* Metric name i as one can type it: acbb_metric_name with ball fields
+ * for ball 0 ("balls[0].Qi_N"); 0 past the end. */
+int acbb_metric_choice(size_t i, char *buf, size_t n);
+
 /* Complete `text` among the names listed by name_at: the names starting
  * with it, or (when none does) those containing it. `text` becomes their
  * longest common start when longer (the name itself when one is left).

@@ -232,7 +232,7 @@ static int on_key(acbb_app *a, int ch)
     }
     case 'c':
         acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, a->sn.metric, NULL),
-                     metric_answer, acbb_metric_name);
+                     metric_answer, acbb_metric_choice);
         return 1;
     case 'd':
         a->sn.delta_te = !a->sn.delta_te;

@@ -346,7 +346,7 @@ static int on_key(acbb_app *a, int ch)
     }
     case 'c':
         acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, a->sw.metric, NULL),
-                     metric_answer, acbb_metric_name);
+                     metric_answer, acbb_metric_choice);
         return 1;
     default: return 0;
     }
