@@ -62,6 +62,17 @@ void acbb_app_prompt(acbb_app *a, acbb_prompt_kind kind, const char *label, cons
     snprintf(a->prompt.label, sizeof a->prompt.label, "%s", label);
     snprintf(a->prompt.buf, sizeof a->prompt.buf, "%s", init);
     a->prompt.len = strlen(a->prompt.buf);
+    a->prompt.commit = NULL;
+    a->prompt.names = NULL;
+    a->prompt.shown[0] = '\0';
+}
+
+void acbb_app_ask(acbb_app *a, const char *label, const char *init, acbb_prompt_fn commit,
+                  acbb_name_fn names)
+{
+    acbb_app_prompt(a, ACBB_PROMPT_CALL, label, init);
+    a->prompt.commit = commit;
+    a->prompt.names = names;
 }
 
 /* Unsaved edits of this preset from an earlier session: offer them back. */
@@ -293,7 +304,20 @@ static void prompt_commit(acbb_app *a)
             search(a, 0);
         }
         break;
+    case ACBB_PROMPT_CALL:
+        a->prompt.commit(a, text);
+        break;
     }
+}
+
+/* Tab in a screen's question: complete among its names, listing them. */
+static void prompt_complete(acbb_app *a)
+{
+    if (!a->prompt.names) return;
+    int n = acbb_complete(a->prompt.buf, sizeof a->prompt.buf, a->prompt.names, a->prompt.shown,
+                          sizeof a->prompt.shown);
+    a->prompt.len = strlen(a->prompt.buf);
+    if (n == 0) snprintf(a->prompt.shown, sizeof a->prompt.shown, "no name contains %s", a->prompt.buf);
 }
 
 static void prompt_key(acbb_app *a, int ch)
@@ -304,6 +328,7 @@ static void prompt_key(acbb_app *a, int ch)
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "cancelled");
         return;
     case '\n': case '\r': case KEY_ENTER: prompt_commit(a); return;
+    case '\t': prompt_complete(a); return;
     case KEY_BACKSPACE: case 127: case 8:
         if (a->prompt.len > 0) a->prompt.buf[--a->prompt.len] = '\0';
         return;
@@ -383,6 +408,11 @@ static void draw_message(acbb_app *a)
         int room = r.x + r.w - x - 1;
         size_t off = a->prompt.len > (size_t)room && room > 0 ? a->prompt.len - (size_t)room : 0;
         acbb_put(a, r.y, x, room + 1, ACBB_ROLE_NORMAL, "%s_", a->prompt.buf + off);
+        if (a->prompt.shown[0]) { /* the matches, over the status line */
+            move(a->lay.status.y, 0);
+            clrtoeol();
+            acbb_put(a, a->lay.status.y, 0, a->lay.status.w, ACBB_ROLE_DIM, "%s", a->prompt.shown);
+        }
     } else if (a->mode == ACBB_MODE_CONFIRM) {
         if (a->confirm.kind == ACBB_CONFIRM_QUIT)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
@@ -418,6 +448,10 @@ static void take_state(acbb_app *a)
     acbb_worker_read(a->worker, &a->st, &a->hist);
     acbb_bench_read(a->bench, &a->bst);
     acbb_screen_accuracy_follow(a);
+    acbb_sweepjob_read(a->sweep, &a->swv);
+    acbb_screen_sweep_follow(a);
+    acbb_sensjob_read(a->sens, &a->snv);
+    acbb_screen_sensitivity_follow(a);
     if (a->st.run_id != a->prog_run) {
         acbb_progress_reset(&a->prog);
         a->prog_run = a->st.run_id;
@@ -462,22 +496,47 @@ static void frame(acbb_app *a)
 
 /* ---- the loop ---- */
 
+/* The background threads' wake-up pipes: the Sim worker, the benchmark,
+ * the sweep, the sensitivity run. */
+#define N_WAKES 4
+
 typedef struct {
-    int input, wake, bench, signal;
+    int input, signal;
+    int wake[N_WAKES];
 } ready_fds;
+
+static int wake_fd(acbb_app *a, int k)
+{
+    switch (k) {
+    case 0: return acbb_worker_wake_fd(a->worker);
+    case 1: return acbb_bench_wake_fd(a->bench);
+    case 2: return acbb_job_wake_fd(acbb_sweepjob_job(a->sweep));
+    default: return acbb_job_wake_fd(acbb_sensjob_job(a->sens));
+    }
+}
+
+static void drain_wake(acbb_app *a, int k)
+{
+    switch (k) {
+    case 0: acbb_worker_drain_wake(a->worker); break;
+    case 1: acbb_bench_drain_wake(a->bench); break;
+    case 2: acbb_job_drain_wake(acbb_sweepjob_job(a->sweep)); break;
+    default: acbb_job_drain_wake(acbb_sensjob_job(a->sens)); break;
+    }
+}
 
 static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
 {
     fd_set rf;
-    int wfd = acbb_worker_wake_fd(a->worker), sfd = a->term.sig_rd;
-    int bfd = acbb_bench_wake_fd(a->bench);
+    int sfd = a->term.sig_rd, maxfd = sfd;
     FD_ZERO(&rf);
     FD_SET(STDIN_FILENO, &rf);
-    FD_SET(wfd, &rf);
-    FD_SET(bfd, &rf);
     FD_SET(sfd, &rf);
-    int maxfd = wfd > sfd ? wfd : sfd;
-    if (bfd > maxfd) maxfd = bfd;
+    for (int k = 0; k < N_WAKES; k++) {
+        int fd = wake_fd(a, k);
+        FD_SET(fd, &rf);
+        if (fd > maxfd) maxfd = fd;
+    }
     struct timeval tv = { (time_t)timeout_s, (suseconds_t)((timeout_s - (long)timeout_s) * 1e6) };
     memset(r, 0, sizeof *r);
     int n = select(maxfd + 1, &rf, NULL, NULL, &tv);
@@ -486,9 +545,8 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
         return;
     }
     r->input = FD_ISSET(STDIN_FILENO, &rf);
-    r->wake = FD_ISSET(wfd, &rf);
-    r->bench = FD_ISSET(bfd, &rf);
     r->signal = FD_ISSET(sfd, &rf);
+    for (int k = 0; k < N_WAKES; k++) r->wake[k] = FD_ISSET(wake_fd(a, k), &rf);
 }
 
 static void handle_signals(acbb_app *a, int *redraw)
@@ -557,16 +615,14 @@ static void loop(acbb_app *a)
         ready_fds r;
         wait_events(a, timeout, &r);
         if (r.signal) handle_signals(a, &redraw);
-        if (r.wake) {
-            acbb_worker_drain_wake(a->worker);
-            stale = 1;
-        }
-        if (r.bench) {
-            acbb_bench_drain_wake(a->bench);
-            stale = 1;
-        }
+        int woken = 0;
+        for (int k = 0; k < N_WAKES; k++)
+            if (r.wake[k]) {
+                drain_wake(a, k);
+                woken = stale = 1;
+            }
         if (r.input) read_keys(a, &redraw, &spins);
-        if (!r.input && !r.wake && !r.bench && !r.signal) stale = 1; /* timeout: refresh the clock */
+        if (!r.input && !woken && !r.signal) stale = 1; /* timeout: refresh the clock */
     }
 }
 
@@ -616,19 +672,25 @@ int acbb_app_run(const acbb_app_options *opt)
     }
     int rc = 0;
     if (!opt->no_mouse) a->mouse = acbb_term_mouse(&a->term);
-    if (acbb_bench_new(&a->bench, &err) != ACBB_OK ||
+    if (acbb_bench_new(&a->bench, &err) != ACBB_OK || acbb_sweepjob_new(&a->sweep, &err) != ACBB_OK ||
+        acbb_sensjob_new(&a->sens, &err) != ACBB_OK ||
         acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
         acbb_term_close(&a->term);
         acbb_bench_free(a->bench);
+        acbb_sweepjob_free(a->sweep);
+        acbb_sensjob_free(a->sens);
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         rc = 1;
     } else {
         if (a->exit_after_steady) acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started");
         loop(a);
         /* Restore the terminal first so a slow join never leaves it raw.
-         * A running benchmark is cancelled: it stops within one step. */
+         * A running benchmark, sweep or sensitivity run is cancelled: it
+         * stops within one step. */
         acbb_term_close(&a->term);
         acbb_bench_free(a->bench);
+        acbb_sweepjob_free(a->sweep);
+        acbb_sensjob_free(a->sens);
         acbb_worker_free(a->worker);
         rc = a->exit_code;
     }

@@ -11,15 +11,20 @@
 #include "chart.h"
 #include "editor.h"
 #include "layout.h"
+#include "picker.h"
 #include "progress.h"
 #include "term.h"
+#include "whatif.h"
 #include "worker.h"
 
 typedef enum {
     ACBB_MODE_NORMAL, ACBB_MODE_PROMPT, ACBB_MODE_CONFIRM, ACBB_MODE_HELP, ACBB_MODE_BROWSE
 } acbb_mode;
 
-typedef enum { ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN, ACBB_PROMPT_SEARCH } acbb_prompt_kind;
+typedef enum {
+    ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN, ACBB_PROMPT_SEARCH,
+    ACBB_PROMPT_CALL               /* a screen's question: prompt.commit gets the answer */
+} acbb_prompt_kind;
 typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
@@ -33,10 +38,13 @@ typedef struct {
     double r[4];                   /* xlo, xhi, ylo, yhi */
 } acbb_axis_memo;
 
-#define ACBB_CHART_MEMOS 4
+#define ACBB_CHART_MEMOS 5
 #define ACBB_MAX_TABS 16
 
-typedef struct {
+typedef struct acbb_app acbb_app;
+typedef void (*acbb_prompt_fn)(acbb_app *a, const char *text);
+
+struct acbb_app {
     acbb_term term;
     acbb_layout lay;
     acbb_worker *worker;
@@ -52,6 +60,9 @@ typedef struct {
         char label[128];
         char buf[PATH_MAX];
         size_t len;
+        acbb_prompt_fn commit;     /* ACBB_PROMPT_CALL: the answer goes here */
+        acbb_name_fn names;        /* Tab completes among these (NULL: no completion) */
+        char shown[256];           /* the last completion's matches */
     } prompt;
     struct {
         acbb_confirm_kind kind;
@@ -81,6 +92,22 @@ typedef struct {
     char acc_scene[256];           /* name of the scene the benchmark ran on */
     unsigned long acc_seen_run;    /* run whose end was already announced */
     int acc_top;                   /* first table row shown */
+    /* what-if screens (screen_sweep.c, screen_sensitivity.c) */
+    acbb_sweepjob *sweep;
+    acbb_sweep_view swv;           /* copy of its published state, once per frame */
+    acbb_sensjob *sens;
+    acbb_sens_view snv;            /* copy of its published state, once per frame */
+    char metric_custom[ACBB_SENS_METRIC]; /* a typed metric: the menu's last entry */
+    struct {
+        char key[ACBB_SWEEP_KEY];  /* the swept key ("" until chosen) */
+        char range[96];            /* "lo:hi:n" or "v1,v2,..." */
+        int metric, top;           /* metric menu index; first table row shown */
+        unsigned long seen_run;    /* run whose end was already announced */
+    } sw;
+    struct {
+        int metric, delta_te, morris_r, top;
+        unsigned long seen_run;
+    } sn;
     int quit, exit_code;
     acbb_chart chart;              /* scratch raster */
     acbb_axis_memo memo[ACBB_CHART_MEMOS]; /* Run chart, then the three history charts */
@@ -93,7 +120,7 @@ typedef struct {
     int help_hit;                  /* help row of the last search hit */
     int node_hit;                  /* Nodes: the node the last search found (-1: none) */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
-} acbb_app;
+};
 
 /* Options from the command line. */
 typedef struct {
@@ -117,6 +144,10 @@ int acbb_app_pace(int idx);
 void acbb_app_open(acbb_app *a, const char *path);
 /* Begin a line prompt on the message row. */
 void acbb_app_prompt(acbb_app *a, acbb_prompt_kind kind, const char *label, const char *init);
+/* A screen's question on the message row: Enter calls commit(a, text),
+ * Tab completes among names (NULL: none), Esc drops it. */
+void acbb_app_ask(acbb_app *a, const char *label, const char *init, acbb_prompt_fn commit,
+                  acbb_name_fn names);
 
 /* ---- drawing helpers (draw.c) ---- */
 void acbb_role_on(acbb_app *a, acbb_role r);
@@ -131,6 +162,10 @@ int acbb_wrap_count(const char *text, int w);
 /* Horizontal bar of w cells filled to fraction f (eighths with UTF-8). */
 void acbb_bar(acbb_app *a, int y, int x, int w, double f, acbb_role r);
 void acbb_hrule(acbb_app *a, int y, int x, int w);
+/* A background job's progress: "running 3/9 points [bar] 1.2s  x/Esc cancels"
+ * ("cancelling" once asked), `what` naming the units counted. */
+void acbb_draw_job_line(acbb_app *a, int y, int x, int w, int cancelling, double started_s,
+                        size_t done, size_t total, const char *what);
 /* Scroll keys (j k arrows PgUp PgDn Home) over n rows shown `page` at a
  * time: updates *top within [0, n - page]; returns 1 if ch was one of them. */
 int acbb_scroll_key(int ch, int page, int n, int *top);
@@ -146,6 +181,8 @@ typedef struct {
     double floor_y;                /* a value the y axis must include (NAN: none) */
     acbb_axis_memo *memo;          /* widen-only ranges; NULL: fit every frame */
     unsigned long memo_key;
+    int x_fixed;                   /* the x axis spans [x0, x1] (else 0 .. the data) */
+    double x0, x1;
 } acbb_chart_spec;
 void acbb_chart_draw(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp);
 /* The raster's cells at (y, x), each in the role of the series that drew it. */
@@ -185,6 +222,16 @@ void acbb_screen_compare_start(acbb_app *a);
 void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic);
 /* Announce the end of a benchmark on the message line (once per run). */
 void acbb_screen_accuracy_follow(acbb_app *a);
+/* Announce the end of a sweep / sensitivity run (once per run). */
+void acbb_screen_sweep_follow(acbb_app *a);
+void acbb_screen_sensitivity_follow(acbb_app *a);
+/* The metric path and label of menu entry i (the last: a typed metric). */
+const char *acbb_whatif_metric(const acbb_app *a, int i, const char **label);
+/* Entries in the metric menu (with the typed one when there is one). */
+int acbb_whatif_metric_count(const acbb_app *a);
+/* A typed metric path becomes the menu's last entry and *slot its index;
+ * 0 (and a message) if it names no metric. */
+int acbb_whatif_metric_set(acbb_app *a, const char *text, int *slot);
 /* The `?` screen, generated from the table (a mode, not a tab). */
 void acbb_screen_help_draw(acbb_app *a);
 int acbb_screen_help_key(acbb_app *a, int ch);

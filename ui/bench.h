@@ -1,35 +1,30 @@
-/* acbb TUI — the accuracy benchmark in a background thread (no curses here).
+/* acbb TUI — the accuracy benchmark in a background job (job.h; no curses
+ * here).
  *
- * acbb_accuracy_run takes seconds to minutes, so it never runs on the UI
- * thread, and not on the Sim worker either (that would freeze the run
- * screens). Each start creates one short-lived thread that owns the rows it
- * fills; the UI sees only the published state below, behind one mutex:
- * the phase, "k of n settings" from the engine's progress callback, the
- * rows finished so far (their errors appear when the plan ends: they need
- * the knob's reference), and at the end the frontier. Like the Sim worker,
- * each publication writes one byte to a non-blocking wake-up pipe so the
- * UI's select() loop redraws. Cancelling stores into the _Atomic the engine
- * polls between coupled steps (acbb_accuracy_options.cancel).
- *
- * The thread is created with SIGINT, SIGTERM, SIGHUP and SIGWINCH blocked so
- * those signals stay with the UI thread. acbb_bench_free cancels and joins. */
+ * acbb_accuracy_run takes seconds to minutes. The job's thread owns the
+ * rows it fills; the UI sees only the published state below: the phase,
+ * "k of n settings" from the engine's progress callback, the rows finished
+ * so far (their errors appear when the plan ends: they need the knob's
+ * reference), and at the end the frontier. acbb_bench_free cancels and
+ * joins. */
 #ifndef ACBB_UI_BENCH_H
 #define ACBB_UI_BENCH_H
 
 #include "acbb/accuracy.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
+#include "job.h"
 
 /* Every plan fits: 31 settings today (accuracy.c's plan table). */
 #define ACBB_BENCH_MAX_ROWS 48
 
-typedef enum {
-    ACBB_BENCH_IDLE,       /* never started */
-    ACBB_BENCH_RUNNING,
-    ACBB_BENCH_DONE,       /* the plan ran (single settings may have failed) */
-    ACBB_BENCH_CANCELLED,  /* stopped by acbb_bench_cancel */
-    ACBB_BENCH_FAILED      /* refused before running (bad scene or options) */
-} acbb_bench_phase;
+/* The job's phases under the benchmark's names. */
+typedef acbb_job_phase acbb_bench_phase;
+#define ACBB_BENCH_IDLE ACBB_JOB_IDLE           /* never started */
+#define ACBB_BENCH_RUNNING ACBB_JOB_RUNNING
+#define ACBB_BENCH_DONE ACBB_JOB_DONE           /* the plan ran (single settings may have failed) */
+#define ACBB_BENCH_CANCELLED ACBB_JOB_CANCELLED /* stopped by acbb_bench_cancel */
+#define ACBB_BENCH_FAILED ACBB_JOB_FAILED       /* refused before running (bad scene or options) */
 
 /* Everything the UI may read, copied out in one go. */
 typedef struct {

@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "acbb/measure.h"
 #include "app.h"
 
 void acbb_role_on(acbb_app *a, acbb_role r)
@@ -135,4 +136,17 @@ int acbb_scroll_key(int ch, int page, int n, int *top)
     if (t < 0) t = 0;
     *top = t;
     return 1;
+}
+
+void acbb_draw_job_line(acbb_app *a, int y, int x, int w, int cancelling, double started_s,
+                        size_t done, size_t total, const char *what)
+{
+    char el[16], left[96];
+    acbb_fmt_duration(1e-3 * acbb_now_ms() - started_s, el, sizeof el);
+    snprintf(left, sizeof left, "%s %zu/%zu %s ", cancelling ? "cancelling" : "running", done, total,
+             what);
+    acbb_put(a, y, x, w, cancelling ? ACBB_ROLE_WARN : ACBB_ROLE_OK, "%s", left);
+    int bx = x + (int)strlen(left);
+    acbb_bar(a, y, bx, 20, total ? (double)done / (double)total : 0.0, ACBB_ROLE_BAR);
+    acbb_put(a, y, bx + 21, x + w - bx - 21, ACBB_ROLE_NORMAL, "%s  x/Esc cancels", el);
 }

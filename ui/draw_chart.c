@@ -25,7 +25,13 @@ static void ranges(const acbb_chart_spec *sp, int yticks, int xticks, double r[4
 {
     double ylo = INFINITY, yhi = -INFINITY, xlo = 0.0, xhi = -INFINITY;
     for (int s = 0; s < sp->nser; s++) acbb_chart_extend(sp->ys[s], sp->n, &ylo, &yhi);
-    acbb_chart_extend(sp->x, sp->n, &xlo, &xhi);
+    if (sp->x_fixed) { /* a sweep: its whole range from the first point on */
+        xlo = fmin(sp->x0, sp->x1);
+        xhi = fmax(sp->x0, sp->x1);
+        if (!(xhi > xlo)) xlo -= 0.5, xhi += 0.5;
+    } else {
+        acbb_chart_extend(sp->x, sp->n, &xlo, &xhi);
+    }
     if (!(xhi > xlo)) xhi = xlo + 1.0; /* one point at 0: an axis 0..1, not -1..1 */
     if (isfinite(sp->floor_y)) ylo = fmin(ylo, sp->floor_y), yhi = fmax(yhi, sp->floor_y);
     acbb_axis_memo *m = sp->memo;
@@ -52,6 +58,7 @@ static void title_row(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp)
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%s", head);
     int col = r.x + (int)strlen(head) + 2;
     for (int s = 0; s < sp->nser && sp->n > 0; s++) {
+        if (!isfinite(sp->ys[s][sp->n - 1])) continue;
         char item[96];
         snprintf(item, sizeof item, "%s %.2f", sp->names[s], sp->ys[s][sp->n - 1]);
         int need = (int)strlen(item) + (sp->nser > 1 ? 2 : 0) + 2;

@@ -5,7 +5,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/measure.h"
 #include "acc_chart.h"
 #include "screens.h"
 #include "export.h"
@@ -107,17 +106,10 @@ static void draw_heading(acbb_app *a)
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "b runs it on the edited scene, 1 run per setting; B adds the dynamic level (slow)");
         break;
-    case ACBB_BENCH_RUNNING: {
-        acbb_fmt_duration(1e-3 * acbb_now_ms() - s->started_s, el, sizeof el);
-        char left[96];
-        snprintf(left, sizeof left, "%s %zu/%zu settings ", s->cancel_requested ? "cancelling" : "running",
-                 s->done, s->total);
-        acbb_put(a, y, b.x, b.w, s->cancel_requested ? ACBB_ROLE_WARN : ACBB_ROLE_OK, "%s", left);
-        int x = b.x + (int)strlen(left);
-        acbb_bar(a, y, x, 20, s->total ? (double)s->done / (double)s->total : 0.0, ACBB_ROLE_BAR);
-        acbb_put(a, y, x + 21, b.x + b.w - x - 21, ACBB_ROLE_NORMAL, "%s  x/Esc cancels", el);
+    case ACBB_BENCH_RUNNING:
+        acbb_draw_job_line(a, y, b.x, b.w, s->cancel_requested, s->started_s, s->done, s->total,
+                           "settings");
         break;
-    }
     case ACBB_BENCH_DONE:
         acbb_fmt_duration(s->ended_s - s->started_s, el, sizeof el);
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_OK,

@@ -5,7 +5,7 @@
 
 extern const acbb_screen acbb_screen_run, acbb_screen_nodes, acbb_screen_balls,
     acbb_screen_charts, acbb_screen_edit, acbb_screen_compare, acbb_screen_plot,
-    acbb_screen_accuracy;
+    acbb_screen_accuracy, acbb_screen_sweep, acbb_screen_sensitivity;
 
 const acbb_screen *const acbb_screens[] = {
     &acbb_screen_run,
@@ -16,6 +16,8 @@ const acbb_screen *const acbb_screens[] = {
     &acbb_screen_compare,
     &acbb_screen_plot,
     &acbb_screen_accuracy,
+    &acbb_screen_sweep,
+    &acbb_screen_sensitivity,
 };
 
 const int acbb_screen_count = (int)(sizeof acbb_screens / sizeof acbb_screens[0]);

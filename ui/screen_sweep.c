@@ -1,0 +1,369 @@
+/* acbb TUI — the Sweep screen: one key of the open (edited) scene over a
+ * range, run in the background (whatif.h: acbb_sweep_run on every core),
+ * each point on a chart of the chosen metric as it finishes, with the
+ * points' table beside it. Also the metric menu both what-if screens
+ * share (picker.h). */
+#include <curses.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "screens.h"
+
+#define TABLE_W 27   /* the points' table at the right: "%10s %13s" + a margin */
+#define DEFAULT_N 9  /* points of the default range */
+
+extern const acbb_screen acbb_screen_sweep;
+
+/* ---- the metric menu (both what-if screens) ---- */
+
+int acbb_whatif_metric_count(const acbb_app *a)
+{
+    return acbb_metric_menu_n + (a->metric_custom[0] != '\0');
+}
+
+const char *acbb_whatif_metric(const acbb_app *a, int i, const char **label)
+{
+    int n = acbb_whatif_metric_count(a);
+    i = ((i % n) + n) % n;
+    if (i < acbb_metric_menu_n) {
+        if (label) *label = acbb_metric_menu[i].label;
+        return acbb_metric_menu[i].path;
+    }
+    if (label) *label = a->metric_custom;
+    return a->metric_custom;
+}
+
+int acbb_whatif_metric_set(acbb_app *a, const char *text, int *slot)
+{
+    acbb_error err = { { 0 } };
+    if (acbb_metric_check(text, &err) != ACBB_OK) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
+        return 0;
+    }
+    for (int i = 0; i < acbb_metric_menu_n; i++)
+        if (strcmp(acbb_metric_menu[i].path, text) == 0) {
+            *slot = i;
+            return 1;
+        }
+    snprintf(a->metric_custom, sizeof a->metric_custom, "%s", text);
+    *slot = acbb_metric_menu_n;
+    return 1;
+}
+
+/* ---- choosing the key and the range ---- */
+
+static long find_field(const char *key)
+{
+    char name[128];
+    for (size_t i = 0; acbb_scene_key_name(i, name, sizeof name); i++)
+        if (strcmp(name, key) == 0) return (long)i;
+    return -1;
+}
+
+/* The default range: the key's value x0.5 .. x1.5 in 9 points, kept
+ * inside the key's allowed range (an open end is not reached). */
+static void default_range(const acbb_app *a, size_t i, char *buf, size_t n)
+{
+    const acbb_field_info *f = acbb_scene_field(i);
+    char val[64];
+    acbb_scene_field_format(&a->ed.scene, i, val, sizeof val);
+    double v = strtod(val, NULL);
+    double lo = v == 0.0 ? f->min : 0.5 * v, hi = v == 0.0 ? v + 1.0 : 1.5 * v;
+    if (lo > hi) { double t = lo; lo = hi; hi = t; }
+    if (lo < f->min || (f->min_open && lo <= f->min)) lo = 0.5 * (f->min + v);
+    if (hi > f->max || (f->max_open && hi >= f->max)) hi = 0.5 * (f->max + v);
+    long pts = DEFAULT_N;
+    if (f->type == ACBB_FIELD_INT) {
+        lo = ceil(lo);
+        hi = floor(hi);
+        if (hi - lo + 1 < pts) pts = (long)(hi - lo + 1);
+        if (pts < 1) pts = 1;
+    }
+    snprintf(buf, n, "%.6g:%.6g:%ld", lo, hi, pts);
+}
+
+/* Make `key` the swept key (a number key of the schema); 0 if refused. */
+static int use_key(acbb_app *a, const char *key)
+{
+    long i = find_field(key);
+    if (i < 0) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "no key %s (Tab completes; `acbb keys` lists them)", key);
+        return 0;
+    }
+    const acbb_field_info *f = acbb_scene_field((size_t)i);
+    if (f->type != ACBB_FIELD_REAL && f->type != ACBB_FIELD_INT) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s is a choice, not a number: the Sweep screen plots numbers"
+                     " (acbb sweep --grid takes choices)", key);
+        return 0;
+    }
+    snprintf(a->sw.key, sizeof a->sw.key, "%s", key);
+    default_range(a, (size_t)i, a->sw.range, sizeof a->sw.range);
+    return 1;
+}
+
+static void key_answer(acbb_app *a, const char *text)
+{
+    if (text[0] && use_key(a, text))
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep %s over %s (e edits the range, r runs)", a->sw.key,
+                     a->sw.range);
+}
+
+static void range_answer(acbb_app *a, const char *text)
+{
+    if (!text[0]) return;
+    snprintf(a->sw.range, sizeof a->sw.range, "%s", text);
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, "range %s (r runs the sweep)", a->sw.range);
+}
+
+static void metric_answer(acbb_app *a, const char *text)
+{
+    if (text[0] && acbb_whatif_metric_set(a, text, &a->sw.metric))
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "metric %s", text);
+}
+
+/* On the way in: the editor's key under the cursor, if none is chosen yet
+ * and it is a number. */
+static void enter(acbb_app *a)
+{
+    char name[128];
+    if (a->sw.key[0] || !acbb_scene_key_name(a->ed.cursor, name, sizeof name)) return;
+    const acbb_field_info *f = acbb_scene_field(a->ed.cursor);
+    if (f->type == ACBB_FIELD_REAL || f->type == ACBB_FIELD_INT) use_key(a, name);
+}
+
+/* ---- starting, following, cancelling ---- */
+
+static void start(acbb_app *a)
+{
+    if (!a->sw.key[0]) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "no key to sweep yet: s chooses one");
+        return;
+    }
+    const char *metrics[ACBB_WHATIF_METRICS];
+    int n = acbb_whatif_metric_count(a);
+    for (int i = 0; i < n && i < ACBB_WHATIF_METRICS; i++) metrics[i] = acbb_whatif_metric(a, i, NULL);
+    char spec[192];
+    snprintf(spec, sizeof spec, "%s=%s", a->sw.key, a->sw.range);
+    acbb_error err = { { 0 } };
+    if (acbb_sweepjob_start(a->sweep, &a->ed.scene, spec, metrics, (size_t)n, 0, &err) != ACBB_OK) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
+        return;
+    }
+    a->sw.top = 0;
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep started on %s%s: %s (x cancels)", acbb_editor_name(&a->ed),
+                 a->ed.modified ? "*" : "", spec);
+}
+
+void acbb_screen_sweep_follow(acbb_app *a)
+{
+    const acbb_sweep_view *v = &a->swv;
+    if (v->job.phase <= ACBB_JOB_RUNNING || v->job.run_id == a->sw.seen_run) return;
+    a->sw.seen_run = v->job.run_id;
+    char took[16];
+    acbb_fmt_duration(v->job.ended_s - v->job.started_s, took, sizeof took);
+    if (v->job.phase == ACBB_JOB_DONE)
+        acbb_app_msg(a, v->failed ? ACBB_ROLE_WARN : ACBB_ROLE_OK, "sweep done: %zu points, %zu failed, in %s",
+                     v->done, v->failed, took);
+    else if (v->job.phase == ACBB_JOB_CANCELLED)
+        acbb_app_msg(a, ACBB_ROLE_WARN, "sweep cancelled after %zu of %zu points", v->done, v->total);
+    else
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "sweep failed: %s", v->job.message);
+}
+
+/* ---- drawing ---- */
+
+/* Where the current metric sits among those the last sweep recorded (-1: not there). */
+static int recorded(const acbb_app *a, const char **path, const char **label)
+{
+    *path = acbb_whatif_metric(a, a->sw.metric, label);
+    for (size_t m = 0; m < a->swv.n_metrics; m++)
+        if (strcmp(a->swv.metrics[m], *path) == 0) return (int)m;
+    return -1;
+}
+
+static void draw_heading(acbb_app *a, acbb_rect b)
+{
+    const acbb_sweep_view *v = &a->swv;
+    const char *path, *label;
+    recorded(a, &path, &label);
+    char unit[16];
+    acbb_metric_unit(path, unit, sizeof unit);
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "Sweep %s = %s   metric: %s [%s]",
+             a->sw.key[0] ? a->sw.key : "(s: choose a key)", a->sw.range, label, unit);
+    int y = b.y + 1;
+    char took[16];
+    acbb_fmt_duration(v->job.ended_s - v->job.started_s, took, sizeof took);
+    switch (v->job.phase) {
+    case ACBB_JOB_IDLE:
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
+                 "s key  e range  < > metric  r/Enter sweeps the edited scene in the background");
+        break;
+    case ACBB_JOB_RUNNING:
+        acbb_draw_job_line(a, y, b.x, b.w, v->job.cancel_requested, v->job.started_s, v->done,
+                           v->total, "points");
+        break;
+    case ACBB_JOB_DONE:
+        acbb_put(a, y, b.x, b.w, v->failed ? ACBB_ROLE_WARN : ACBB_ROLE_OK,
+                 "done: %zu/%zu points, %zu failed, in %s", v->done, v->total, v->failed, took);
+        break;
+    case ACBB_JOB_CANCELLED:
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_WARN, "cancelled after %zu of %zu points (%zu failed); r reruns",
+                 v->done, v->total, v->failed);
+        break;
+    case ACBB_JOB_FAILED:
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_ERROR, "failed: %s", v->job.message);
+        break;
+    }
+}
+
+/* The finished, converged points in index order (x, y of metric m). */
+static size_t curve(const acbb_sweep_view *v, int m, double *x, double *y, double span[2])
+{
+    size_t n = 0;
+    span[0] = INFINITY;
+    span[1] = -INFINITY;
+    for (size_t i = 0; i < v->total && i < ACBB_WHATIF_MAX_POINTS; i++) {
+        const acbb_whatif_point *p = &v->pts[i];
+        if (!p->have) continue;
+        span[0] = fmin(span[0], p->x);
+        span[1] = fmax(span[1], p->x);
+        if (!p->ok || m < 0 || !isfinite(p->y[m])) continue;
+        x[n] = p->x;
+        y[n++] = p->y[m];
+    }
+    return n;
+}
+
+static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const char *yunit)
+{
+    double x[ACBB_WHATIF_MAX_POINTS], y[ACBB_WHATIF_MAX_POINTS];
+    double span[2];
+    size_t n = curve(&a->swv, m, x, y, span);
+    long fi = find_field(a->swv.key);
+    const double *ys[1] = { y };
+    const char *names[1] = { label };
+    acbb_chart_spec sp = { .title = label, .yunit = yunit,
+                           .xunit = fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "", .x = x,
+                           .ys = ys, .names = names, .nser = 1, .n = n, .floor_y = NAN,
+                           .memo = &a->memo[4], .memo_key = a->swv.job.run_id * 64 + (unsigned)m,
+                           .x_fixed = isfinite(span[0]), .x0 = span[0], .x1 = span[1] };
+    if (a->swv.job.phase == ACBB_JOB_IDLE) {
+        acbb_put(a, r.y + 1, r.x + 2, r.w - 2, ACBB_ROLE_DIM, "(no sweep yet: r runs one)");
+        return;
+    }
+    if (m < 0) {
+        acbb_put(a, r.y + 1, r.x + 2, r.w - 2, ACBB_ROLE_WARN, "(%s not recorded by this sweep: r reruns)",
+                 label);
+        return;
+    }
+    acbb_chart_draw(a, r, &sp);
+}
+
+static void draw_table(acbb_app *a, acbb_rect r, int m, const char *yunit)
+{
+    const acbb_sweep_view *v = &a->swv;
+    long fi = find_field(v->key[0] ? v->key : a->sw.key);
+    char xh[32], yh[32];
+    snprintf(xh, sizeof xh, "[%s]", fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
+    snprintf(yh, sizeof yh, "[%s]", yunit);
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, " %10.10s %13.13s", xh, yh);
+    int rows = r.h - 1, n = (int)v->total;
+    if (a->sw.top > n - rows) a->sw.top = n - rows;
+    if (a->sw.top < 0) a->sw.top = 0;
+    for (int k = 0; k < rows && a->sw.top + k < n; k++) {
+        const acbb_whatif_point *p = &v->pts[a->sw.top + k];
+        int yy = r.y + 1 + k;
+        if (!p->have)
+            acbb_put(a, yy, r.x, r.w, ACBB_ROLE_DIM, " %10s %13s", "...", v->job.phase == ACBB_JOB_RUNNING ? "running" : "-");
+        else if (!p->ok)
+            acbb_put(a, yy, r.x, r.w, ACBB_ROLE_ERROR, " %10.6g %13s", p->x, "failed");
+        else if (m < 0 || !isfinite(p->y[m]))
+            acbb_put(a, yy, r.x, r.w, ACBB_ROLE_DIM, " %10.6g %13s", p->x, "-");
+        else
+            acbb_put(a, yy, r.x, r.w, ACBB_ROLE_NORMAL, " %10.6g %13.6g", p->x, p->y[m]);
+    }
+}
+
+/* The first failed point's reason, under the chart's title when room. */
+static const char *first_failure(const acbb_sweep_view *v)
+{
+    for (size_t i = 0; i < v->total && i < ACBB_WHATIF_MAX_POINTS; i++)
+        if (v->pts[i].have && !v->pts[i].ok) return v->pts[i].why;
+    return NULL;
+}
+
+static void draw(acbb_app *a)
+{
+    acbb_rect b = a->lay.body;
+    draw_heading(a, b);
+    const char *path, *label;
+    int m = recorded(a, &path, &label);
+    char unit[16];
+    acbb_metric_unit(path, unit, sizeof unit);
+    const char *why = first_failure(&a->swv);
+    int top = b.y + 2 + (why != NULL);
+    if (why) acbb_put(a, b.y + 2, b.x, b.w, ACBB_ROLE_ERROR, "failed point: %s", why);
+    acbb_rect chart = { top, b.x, b.y + b.h - top, b.w - TABLE_W - 1 };
+    acbb_rect table = { top, b.x + b.w - TABLE_W, chart.h, TABLE_W };
+    draw_chart(a, chart, m, label, unit);
+    draw_table(a, table, m, unit);
+}
+
+/* ---- keys ---- */
+
+static int cancel(acbb_app *a)
+{
+    if (!acbb_job_cancel(acbb_sweepjob_job(a->sweep))) return 0;
+    acbb_app_msg(a, ACBB_ROLE_WARN, "cancelling the sweep ...");
+    return 1;
+}
+
+static int on_key(acbb_app *a, int ch)
+{
+    int page = a->lay.body.h - 4 > 1 ? a->lay.body.h - 4 : 1;
+    if (acbb_scroll_key(ch, page, (int)a->swv.total, &a->sw.top)) return 1;
+    switch (ch) {
+    case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
+    case 'x':
+        if (!cancel(a)) acbb_app_msg(a, ACBB_ROLE_WARN, "no sweep running (r starts one)");
+        return 1;
+    case 27: return cancel(a); /* otherwise Esc clears the message as everywhere */
+    case 's': {
+        char name[128] = "";
+        if (!a->sw.key[0]) acbb_scene_key_name(a->ed.cursor, name, sizeof name);
+        acbb_app_ask(a, "sweep key (Tab completes): ", a->sw.key[0] ? a->sw.key : name, key_answer,
+                     acbb_scene_key_name);
+        return 1;
+    }
+    case 'e':
+        acbb_app_ask(a, "range lo:hi:n or v1,v2,...: ", a->sw.range, range_answer, NULL);
+        return 1;
+    case '<': case '>': case 'h': case 'l': case KEY_LEFT: case KEY_RIGHT: {
+        int dir = ch == '>' || ch == 'l' || ch == KEY_RIGHT ? 1 : -1, n = acbb_whatif_metric_count(a);
+        a->sw.metric = ((a->sw.metric + dir) % n + n) % n;
+        return 1;
+    }
+    case 'c':
+        acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, a->sw.metric, NULL),
+                     metric_answer, acbb_metric_choice);
+        return 1;
+    default: return 0;
+    }
+}
+
+static const acbb_help_line help[] = {
+    { "s", "choose the key (Tab completes)" },
+    { "e", "edit the range lo:hi:n" },
+    { "< > h l", "cycle the metric" },
+    { "c", "type a metric (JSON path)" },
+    { "r  Enter", "sweep the edited scene" },
+    { "x  Esc", "cancel the sweep" },
+    { "j k PgUp/Dn", "scroll the points" },
+    { NULL, NULL },
+};
+
+const acbb_screen acbb_screen_sweep = {
+    .name = "Sweep", .key = '9', .draw = draw, .on_key = on_key, .enter = enter, .help = help,
+    .hint = "s key  e range  </> metric  c type metric  r sweep  x/Esc cancel  ? help",
+};
