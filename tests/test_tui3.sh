@@ -66,5 +66,20 @@ ok $? "no alternate screen left behind"
 grep -q 'icanon' "$TMP/stty.rec3" && ! grep -q -- '-icanon' "$TMP/stty.rec3"
 ok $? "the terminal is restored after Ctrl-\\"
 
+# 4. The preset browser shows what each teaching scene is for.
+cp -r "$ROOT/presets" "$TMP/presets"
+start "XDG_STATE_HOME='$STATE'" rec4 mine.ini
+wait_for "mine.ini"
+keys 5 o
+wait_for "Open a preset"
+ok $? "o opens the preset browser"
+keys j
+wait_for "Look at:"
+ok $? "the selected preset's 'Look at' text is shown"
+screen | grep -q "Expect: converged"
+ok $? "and the status its run ends with"
+keys Escape q
+wait_file "$TMP/rec4" 5
+
 echo "1..$n"
 [ "$failed" -eq 0 ]

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <strings.h>
 #include "screens.h"
+#include "acbb/preset_info.h"
 
 #define INFO_ROWS 4 /* help of the selected field (2 rows, 1 when a refusal takes 3) */
 
@@ -167,20 +168,40 @@ void acbb_screen_browse_begin(acbb_app *a)
     a->mode = ACBB_MODE_BROWSE;
 }
 
+/* The teaching header of the selected preset (preset_info.h): its title,
+ * what to look at, and how its run ends. */
+static void browse_info(acbb_app *a, int y, int x, int w, int rows)
+{
+    acbb_preset_info info;
+    if (rows < 2 || a->browse.sel >= a->browse.n - 1) return;
+    if (acbb_preset_info_read(a->browse.names[a->browse.sel], &info, NULL) != ACBB_OK) return;
+    int used = acbb_put_wrap(a, y, x, w, rows, ACBB_ROLE_HEADER, info.title);
+    if (info.look_at[0] && used < rows) {
+        char text[1100];
+        snprintf(text, sizeof text, "Look at: %s", info.look_at);
+        used += acbb_put_wrap(a, y + used, x, w, rows - used, ACBB_ROLE_NORMAL, text);
+    }
+    if (info.expect[0] && used < rows)
+        acbb_put(a, y + used, x, w, ACBB_ROLE_NORMAL, "Expect: %s", info.expect);
+}
+
 void acbb_screen_browse_draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
-    int w = b.w > 60 ? 60 : b.w, x = b.x + (b.w - w) / 2;
-    int h = a->browse.n + 3 < b.h ? a->browse.n + 3 : b.h;
-    for (int r = 0; r < h; r++) {
+    int w = b.w > 78 ? 78 : b.w, x = b.x + (b.w - w) / 2;
+    int list = a->browse.n + 2 < b.h / 2 ? a->browse.n + 2 : b.h / 2;
+    for (int r = 0; r < b.h; r++) { /* the overlay covers the whole body */
         acbb_role_on(a, ACBB_ROLE_NORMAL);
-        mvhline(b.y + r, x, ' ', w);
+        mvhline(b.y + r, b.x, ' ', b.w);
     }
     acbb_put(a, b.y, x, w, ACBB_ROLE_TITLE, " Open a preset: Enter open, p type a path, Esc cancel ");
-    for (int i = 0; i < a->browse.n && i + 2 < h; i++)
-        acbb_put(a, b.y + 1 + i, x + 2, w - 2, i == a->browse.sel ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL,
-                 "%s", a->browse.names[i]);
-    acbb_hrule(a, b.y + h - 1, x, w);
+    int first = a->browse.sel >= list - 1 ? a->browse.sel - (list - 2) : 0;
+    for (int i = first; i < a->browse.n && i - first + 1 < list; i++)
+        acbb_put(a, b.y + 1 + i - first, x + 2, w - 2,
+                 i == a->browse.sel ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL, "%s",
+                 a->browse.names[i]);
+    acbb_hrule(a, b.y + list, x, w);
+    browse_info(a, b.y + list + 1, x + 1, w - 2, b.h - list - 1);
 }
 
 int acbb_screen_browse_key(acbb_app *a, int ch)
