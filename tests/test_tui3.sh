@@ -66,7 +66,24 @@ ok $? "no alternate screen left behind"
 grep -q 'icanon' "$TMP/stty.rec3" && ! grep -q -- '-icanon' "$TMP/stty.rec3"
 ok $? "the terminal is restored after Ctrl-\\"
 
-# 4. The preset browser shows what each teaching scene is for.
+# 4. A second Ctrl-C at the "unsaved edits" question leaves, and keeps them.
+rm -rf "$STATE"
+start "XDG_STATE_HOME='$STATE'" rec5 mine.ini
+wait_for "mine.ini"
+keys 5
+wait_for "pitch_diameter_mm"
+goto_field operating.axial_load_N
+keys Enter C-u 640 Enter
+wait_for "mine.ini*"
+keys C-c
+wait_for "Quit anyway?"
+keys C-c
+wait_file "$TMP/rec5" 5
+f=$(recovery)
+[ -n "$f" ] && grep -q '^axial_load_N = 640$' "$f"
+ok $? "a second Ctrl-C at the unsaved-edits question keeps the edits in the recovery file"
+
+# 5. The preset browser shows what each teaching scene is for.
 cp -r "$ROOT/presets" "$TMP/presets"
 start "XDG_STATE_HOME='$STATE'" rec4 mine.ini
 wait_for "mine.ini"
