@@ -52,6 +52,8 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
     tc->s_reg = S_REG;
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
     double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    acbb_visc_law visc;
+    acbb_visc_law_init(s, o, &visc);
     int k = 0;
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi), x = c->a * xi;
@@ -63,7 +65,7 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
             P[1] += y;
             tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
             tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
-            tc->eta[k] = f->phi_f > 0.0 ? acbb_viscosity_at_pressure(s, o, tc->p[k]) : 0.0;
+            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval(&visc, tc->p[k]) : 0.0;
         }
     }
     tc->np = k;
