@@ -28,7 +28,7 @@
 #define POLISH_ITERS 60        /* direct steady iterations after the transient */
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
-#define QD_SKIP_TOL 0      /* transient steps: Level-2 skip tolerance (acbb_qd_set_skip) */
+#define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 
