@@ -76,27 +76,43 @@ void acbb_oil_at(const acbb_scene *s, double T_C, acbb_oil_state *o)
     o->beta_T = -(log(eta_p) - log(eta_m)) / (2.0 * h);
 }
 
-double acbb_viscosity_at_pressure(const acbb_scene *s, const acbb_oil_state *o, double p)
+void acbb_visc_law_init(const acbb_scene *s, const acbb_oil_state *o, acbb_visc_law *v)
 {
-    double eta0 = o->eta0, alpha = s->oil_alpha_pv;
+    v->eta0 = o->eta0;
+    v->alpha = s->oil_alpha_pv;
+    v->lnv = v->Z = 0.0;
+    v->kind = s->visc == ACBB_VISC_CONST ? ACBB_VISC_CONST : ACBB_VISC_BARUS;
+    if (s->visc == ACBB_VISC_CONST || s->visc == ACBB_VISC_BARUS)
+        return;
+    /* Roelands is undefined at or below its asymptotic viscosity
+     * (6.3e-5 Pa s); such thin fluids fall back to Barus. */
+    double lnv = log(v->eta0) + ROELANDS_LN_ETA_INF;
+    if (!(lnv > 0.0))
+        return;
+    v->kind = ACBB_VISC_ROELANDS;
+    v->lnv = lnv;
+    v->Z = v->alpha / (ROELANDS_Z_SCALE * lnv);
+}
+
+double acbb_visc_law_eval(const acbb_visc_law *v, double p)
+{
     /* Negative gauge pressure (cavitated outlet) does not thin the oil. */
     p = fmax(p, 0.0);
-    switch (s->visc) {
+    switch (v->kind) {
     case ACBB_VISC_CONST:
-        return eta0;
-    case ACBB_VISC_BARUS:
-        return eta0 * exp(alpha * p);
+        return v->eta0;
     case ACBB_VISC_ROELANDS:
-    default: {
-        double lnv = log(eta0) + ROELANDS_LN_ETA_INF;
-        /* Roelands is undefined at or below its asymptotic viscosity
-         * (6.3e-5 Pa s); such thin fluids fall back to Barus. */
-        if (!(lnv > 0.0))
-            return eta0 * exp(alpha * p);
-        double Z = alpha / (ROELANDS_Z_SCALE * lnv);
-        return eta0 * exp(lnv * (-1.0 + pow(1.0 + p / ROELANDS_PR, Z)));
+        return v->eta0 * exp(v->lnv * (-1.0 + pow(1.0 + p / ROELANDS_PR, v->Z)));
+    default:
+        return v->eta0 * exp(v->alpha * p);
     }
-    }
+}
+
+double acbb_viscosity_at_pressure(const acbb_scene *s, const acbb_oil_state *o, double p)
+{
+    acbb_visc_law v;
+    acbb_visc_law_init(s, o, &v);
+    return acbb_visc_law_eval(&v, p);
 }
 
 /* Gupta et al. 1992 inlet shear heating factor (MODEL.md 5), clamped. */

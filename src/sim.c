@@ -28,6 +28,7 @@
 #define POLISH_ITERS 60        /* direct steady iterations after the transient */
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
+#define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 
@@ -265,6 +266,7 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
         else {
             sim->work.traction_solves++;
+            acbb_qd_set_skip(sim->qd, sim->transient_pass ? QD_SKIP_TOL : 0.0);
             rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
                                 sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
         }

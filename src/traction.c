@@ -17,11 +17,13 @@ acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid)
 {
     memset(tc, 0, sizeof *tc);
     int cap = grid * grid;
-    tc->P = malloc(sizeof(double) * 6 * (size_t)cap);
+    tc->P = malloc(sizeof(double) * 8 * (size_t)cap);
     if (!tc->P) return ACBB_ENOMEM;
     tc->w = tc->P + 3 * cap;
     tc->p = tc->w + cap;
     tc->eta = tc->p + cap;
+    tc->tb = tc->eta + cap;
+    tc->tlim = tc->tb + cap;
     tc->cap = cap;
     return ACBB_OK;
 }
@@ -52,6 +54,8 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
     tc->s_reg = S_REG;
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
     double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    acbb_visc_law visc;
+    acbb_visc_law_init(s, o, &visc);
     int k = 0;
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi), x = c->a * xi;
@@ -63,11 +67,25 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
             P[1] += y;
             tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
             tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
-            tc->eta[k] = f->phi_f > 0.0 ? acbb_viscosity_at_pressure(s, o, tc->p[k]) : 0.0;
+            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval(&visc, tc->p[k]) : 0.0;
+            tc->tb[k] = tc->phi_a * s->mu_bd * tc->p[k];
+            tc->tlim[k] = s->lambda_lim * fmax(tc->p[k], 0.0);
         }
     }
     tc->np = k;
     return ACBB_OK;
+}
+
+/* acbb_tau_lubricant's Eyring branch (tau_e > 0) with its film floor and
+ * limiting stress taken from the tables: the same operations in the same
+ * order, so the same bits, without a call and three fmax per point (this
+ * is the innermost loop of Level 2). H >= 1e-9 m here, its floor. */
+static inline double eyring_capped(double tau_e, double eta, double mag, double H, double tlim)
+{
+    double tn = eta * (mag / H);
+    if (!(tlim > 0.0) || !(tn > 0.0)) return 0.0;
+    double tau = tau_e * asinh(tn / tau_e);
+    return tau < tlim ? tau : tlim;
 }
 
 void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
@@ -75,6 +93,7 @@ void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
 {
     memset(out, 0, sizeof *out);
     const double ex[3] = { 1.0, 0.0, 0.0 };
+    int eyring = s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
     for (int k = 0; k < tc->np; k++) {
         const double *P = tc->P + 3 * k;
         double vb[3], pos[3] = { P[0], P[1], P[2] + tc->rm }, vr[3];
@@ -87,9 +106,11 @@ void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
         }
         for (int d = 0; d < 3; d++) sl[d] -= sn * tc->n[d];
         double mag = sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
-        double tau = tc->phi_a * s->mu_bd * tc->p[k];
+        double tau = tc->tb[k];
         if (tc->phi_f > 0.0)
-            tau += tc->phi_f * acbb_tau_lubricant(s, tc->eta[k], mag, tc->H, tc->p[k]);
+            tau += tc->phi_f * (eyring ? eyring_capped(s->tau_eyring, tc->eta[k], mag, tc->H,
+                                                       tc->tlim[k])
+                                       : acbb_tau_lubricant(s, tc->eta[k], mag, tc->H, tc->p[k]));
         double g = -tau * tc->w[k] / sqrt(mag * mag + tc->s_reg * tc->s_reg);
         double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
         cross(P, f, m);

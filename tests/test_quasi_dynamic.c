@@ -139,6 +139,41 @@ static void test_guards(void)
     acbb_mech_free(f.m);
 }
 
+/* Transient steps may skip a ball whose inputs moved less than the skip
+ * tolerance (acbb_qd_set_skip); a larger move, or tolerance 0 as in the
+ * steady polish, solves it again. */
+static void test_skip(void)
+{
+    ball_fixture f;
+    acbb_scene_default(&f.s);
+    if (!ok(fixture_setup(&f, 15000, 1000), "15000 rpm, 1000 N")) return;
+    acbb_qd *qd;
+    acbb_qd_new(f.s.contact_grid, &qd);
+    double change, w0[4], w1[4];
+    acbb_error err = { "" };
+    acbb_ball_state *b = &f.st.ball[0];
+    acbb_qd_set_skip(qd, 3e-3);
+    acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err);
+    memcpy(w0, b->qd_w, sizeof w0);
+    b->Qi *= 1.001; /* 0.1 % < 0.3 %: kept */
+    ok(acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err)
+           == ACBB_OK && change == 0.0 && memcmp(w0, b->qd_w, sizeof w0) == 0,
+       "inner load +0.1 %% with skip 3e-3: speeds kept bit for bit");
+    acbb_oil_state hot = f.oil;
+    hot.eta0 *= 0.99; /* 1 % thinner oil: solved again */
+    ok(acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &hot, &hot, &f.mix, &f.st, &change, &err)
+           == ACBB_OK && memcmp(w0, b->qd_w, sizeof w0) != 0,
+       "inlet viscosity -1 %%: solved again");
+    memcpy(w1, b->qd_w, sizeof w1);
+    b->Qi *= 1.001;
+    acbb_qd_set_skip(qd, 0.0);
+    ok(acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &hot, &hot, &f.mix, &f.st, &change, &err)
+           == ACBB_OK && memcmp(w1, b->qd_w, sizeof w1) != 0,
+       "skip 0 (steady polish): a 0.1 %% load move is solved");
+    acbb_qd_free(qd);
+    acbb_mech_free(f.m);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -146,5 +181,6 @@ int main(void)
     test_residual(15000, 100);  /* light load: skidding regime (MODEL 11) */
     test_pure_rolling();
     test_guards();
+    test_skip();
     return done_testing();
 }

@@ -22,6 +22,16 @@ void acbb_oil_at(const acbb_scene *s, double T_C, acbb_oil_state *o);
  * returns eta0 unchanged. */
 double acbb_viscosity_at_pressure(const acbb_scene *s, const acbb_oil_state *o, double p);
 
+/* The same law with its pressure-independent terms (log eta0, the Roelands
+ * exponent) evaluated once: for the many points of one contact. Gives the
+ * bit-identical value of acbb_viscosity_at_pressure. */
+typedef struct {
+    int kind;           /* acbb_visc_model actually used (Roelands may fall back to Barus) */
+    double eta0, alpha, lnv, Z;
+} acbb_visc_law;
+void acbb_visc_law_init(const acbb_scene *s, const acbb_oil_state *o, acbb_visc_law *v);
+double acbb_visc_law_eval(const acbb_visc_law *v, double p);
+
 /* Film and load sharing of one contact. */
 typedef struct {
     double hc;          /* central film thickness (with thermal factor), m */
@@ -44,6 +54,7 @@ void acbb_film_compute(const acbb_scene *s, const acbb_oil_state *o, double u,
  * 1e-9), local pressure p (Pa) and local viscosity eta (Pa s):
  * Eyring capped by the limiting stress Lambda_L p, or Bair-Winer. >= 0. */
 double acbb_tau_lubricant(const acbb_scene *s, double eta, double du, double H, double p);
+
 
 /* Oil-air mixture used for drag and cavity convection. */
 typedef struct {

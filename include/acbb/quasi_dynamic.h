@@ -23,6 +23,12 @@ void acbb_qd_free(acbb_qd *q);
  * writing qd_w, tr_i, tr_o and traction_valid. Balls with a contact load
  * under 1 mN keep race-control speeds (no traction to drive them). The
  * largest relative change of omega_m is returned in *change. */
+/* Inside transient steps: a ball whose loads, contact angles and inlet
+ * viscosities moved less than tol (relative; radians for the angles) since
+ * its last solve keeps its speeds and tractions. 0 (the default) solves
+ * every ball at every update, as the steady polish must. */
+void acbb_qd_set_skip(acbb_qd *q, double tol);
+
 acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                            const acbb_geometry *g, double omega_i,
                            const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,

@@ -31,6 +31,8 @@ typedef struct {
     double *w;              /* np: area weights dA */
     double *p;              /* np: Hertz pressure */
     double *eta;            /* np: viscosity at that pressure */
+    double *tb;             /* np: asperity stress phi_a mu p */
+    double *tlim;           /* np: limiting lubricant stress Lambda_L p */
 } acbb_traction_contact;
 
 acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid);
