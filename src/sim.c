@@ -266,7 +266,10 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
         else {
             sim->work.traction_solves++;
-            acbb_qd_set_skip(sim->qd, sim->transient_pass ? QD_SKIP_TOL : 0.0);
+            /* Skipping pays only when many distinct balls are solved; with
+             * one (pure thrust) it would only perturb the transient path. */
+            int skip = sim->transient_pass && !sim->ms.symmetric;
+            acbb_qd_set_skip(sim->qd, skip ? QD_SKIP_TOL : 0.0);
             rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
                                 sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
         }
