@@ -57,6 +57,7 @@ static int prepared(const acbb_scene *s, const acbb_contact_in *c, const acbb_fi
     acbb_quad q;
     acbb_quad_init(&q, GRID);
     acbb_oil_state oil = { .T_C = 40, .rho = 860, .eta0 = 100.0 };
+    acbb_traction_contact_free(tc); /* a re-prepared contact (tc starts zeroed) */
     return acbb_traction_contact_init(tc, GRID) == ACBB_OK
            && acbb_traction_prepare(s, &q, c, f, &oil, tc) == ACBB_OK && tc->np == GRID * GRID;
 }
@@ -80,7 +81,7 @@ static void test_uniform_slip(void)
         acbb_contact_in c = ellipse(inner, Q, a, 0.4 * a, 0.3, 100.0);
         /* Coulomb limit (boundary friction only): |F| = mu Q. */
         acbb_film f = film_shares(1.0, 0.0);
-        acbb_traction_contact tc;
+        acbb_traction_contact tc = { 0 };
         acbb_traction tr;
         ok(prepared(&s, &c, &f, &tc), "%s: %dx%d points prepared", side[inner], GRID, GRID);
         acbb_traction_eval(&s, &tc, wb0, race, &tr);
@@ -133,7 +134,7 @@ static void test_spin_moment(void)
     const double Q = 100.0, a = 0.5e-3, w = 200.0;
     acbb_contact_in c = ellipse(0, Q, a, a, 0.3, 54e-3);
     acbb_film f = film_shares(1.0, 0.0);
-    acbb_traction_contact tc;
+    acbb_traction_contact tc = { 0 };
     ok(prepared(&s, &c, &f, &tc), "circle prepared");
     double wb[3] = { w * tc.n[0], w * tc.n[1], w * tc.n[2] };
     acbb_traction tr;
@@ -154,7 +155,7 @@ static void test_zero_and_reversal(void)
     s.oil_alpha_pv = 2e-8;
     acbb_contact_in c = ellipse(1, 150.0, 1.0e-3, 0.15e-3, 0.35, 54e-3);
     acbb_film f = film_shares(0.4, 2e-7);
-    acbb_traction_contact tc;
+    acbb_traction_contact tc = { 0 };
     ok(prepared(&s, &c, &f, &tc), "inner contact, mixed film prepared");
     const double zero[3] = { 0, 0, 0 };
     acbb_traction tr, rev;
@@ -185,7 +186,7 @@ static void test_unloaded(void)
     scene_min(&s);
     acbb_contact_in c = ellipse(0, 0.0, 0.0, 0.0, 0.3, 54e-3);
     acbb_film f = film_shares(1.0, 0.0);
-    acbb_traction_contact tc;
+    acbb_traction_contact tc = { 0 };
     acbb_quad q;
     acbb_quad_init(&q, GRID);
     acbb_oil_state oil = { .eta0 = 0.05 };
