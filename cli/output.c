@@ -361,6 +361,8 @@ static void json_ring_and_work(acbb_cli_out *o, const acbb_scene *sc, const acbb
     j_num(o, "delta_z_um", s->delta_z * CLI_UM);
     j_num(o, "tilt_y_mrad", s->tilt_y * 1e3);
     j_num(o, "stiffness_axial_N_per_um", s->stiffness_axial * 1e-6);
+    j_num(o, "stiffness_radial_N_per_um", s->stiffness_radial * 1e-6);
+    j_num(o, "stiffness_tilt_Nm_per_mrad", s->stiffness_tilt * 1e-3);
     j_close(o, '}');
     const acbb_squeeze *q = &s->squeeze;
     j_open(o, "squeeze_um", '{', false);

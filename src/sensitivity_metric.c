@@ -34,6 +34,8 @@ static const metric_row k_snap[] = {
     S("ring.delta_z_um", delta_z, UM),
     S("ring.tilt_y_mrad", tilt_y, 1e3),
     S("ring.stiffness_axial_N_per_um", stiffness_axial, 1e-6),
+    S("ring.stiffness_radial_N_per_um", stiffness_radial, 1e-6),
+    S("ring.stiffness_tilt_Nm_per_mrad", stiffness_tilt, 1e-3),
     S("squeeze_um.inner_thermal", squeeze.inner_thermal, UM),
     S("squeeze_um.inner_centrifugal", squeeze.inner_centrifugal, UM),
     S("squeeze_um.outer", squeeze.outer, UM),

@@ -11,6 +11,7 @@
 #include <assert.h>
 #include "acbb/sim.h"
 #include "acbb/measure.h"
+#include "acbb/stiffness.h"
 #include "acbb/mechanics.h"
 #include "acbb/network.h"
 #include "acbb/fidelity.h"
@@ -75,6 +76,7 @@ struct acbb_sim {
     const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
     acbb_work work;            /* per-part work counters */
     double K_axial;            /* axial stiffness at the converged state, N/m */
+    acbb_stiffness K_ring;     /* radial and tilt stiffness at the converged state */
     int fixed_axial;           /* displacement preload: dx held at fixed_dx */
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
@@ -542,6 +544,7 @@ static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
     sim->K_axial = axial_stiffness(sim);
+    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->K_ring);
     sim->state = ACBB_RUN_CONVERGED;
     snprintf(sim->msg, sizeof sim->msg, "%s", what);
 }
@@ -876,6 +879,8 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->delta_z = fin(sim->ms.dz);
     o->tilt_y = fin(sim->ms.thy);
     o->stiffness_axial = fin(sim->K_axial);
+    o->stiffness_radial = fin(sim->K_ring.radial);
+    o->stiffness_tilt = fin(sim->K_ring.tilt);
     o->work = sim->work;
     squeeze(sim, &o->squeeze);
     o->reaction_x = fin(sim->ms.Fx);

@@ -175,9 +175,38 @@ static void test_thrust_deflection(void)
              "axial deflection delta_x = A0 sin(a - a0) / cos a");
 }
 
+/* Radial and tilt stiffness (stiffness.h) against two full runs each, at
+ * the quasi-static level without heating (the same race-control ball model). */
+static void test_ring_stiffness(void)
+{
+    acbb_scene s = base(ACBB_MODEL_QUASI_STATIC);
+    s.heating = false;
+    s.radial_load = 500.0;
+    ok(run(&s, &snap_a) == ACBB_OK, "1000 N axial + 500 N radial, isothermal: converges");
+    double Kr = snap_a.stiffness_radial, Kt = snap_a.stiffness_tilt, h = 10.0;
+    s.radial_load = 500.0 + h;
+    run(&s, &snap_b);
+    double dz1 = snap_b.delta_z;
+    s.radial_load = 500.0 - h;
+    run(&s, &snap_b);
+    is_close(Kr, 2.0 * h / (dz1 - snap_b.delta_z), 0.02, 0,
+             "radial stiffness = dFz/d(delta_z) from two runs (+-10 N)");
+    s.radial_load = 500.0;
+    s.moment_load = 0.27;
+    run(&s, &snap_b);
+    double t1 = snap_b.tilt_y;
+    s.moment_load = -0.27;
+    run(&s, &snap_b);
+    is_close(Kt, 0.54 / (t1 - snap_b.tilt_y), 0.02, 0,
+             "tilt stiffness = dMy/d(theta_y) from two runs (+-0.27 N m)");
+    ok(Kr > snap_a.stiffness_axial, "a 15 deg bearing is stiffer radially (%.0f N/um) than axially "
+       "(%.0f N/um)", Kr * 1e-6, snap_a.stiffness_axial * 1e-6);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_ring_stiffness();
     test_thrust_deflection();
     test_two_force_ball();
     test_gyroscopic_quasi_dynamic();

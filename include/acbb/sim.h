@@ -87,6 +87,8 @@ typedef struct {
     double delta_x, delta_z;    /* inner-ring displacement, m */
     double tilt_y;              /* inner-ring tilt about y, rad */
     double stiffness_axial;     /* dFx/d(delta_x) at the solution, N/m (0 until converged) */
+    double stiffness_radial;    /* dFz/d(delta_z), N/m (stiffness.h; 0 until converged) */
+    double stiffness_tilt;      /* dMy/d(theta_y), N m/rad (0 until converged) */
     acbb_squeeze squeeze;
     acbb_work work;
     double reaction_x;          /* axial reaction (== load under force control), N */

@@ -1,0 +1,24 @@
+/* acbb — the ring's radial and tilting stiffness at an operating point
+ * (issue "any bearing", outputs): central differences of the quasi-static
+ * (race-control) equilibrium in radial load and in moment, at the given
+ * expansions, with the axial load (or the displacement preload) held. The
+ * axial stiffness comes from the coupled state itself (sim.c). */
+#ifndef ACBB_STIFFNESS_H
+#define ACBB_STIFFNESS_H
+
+#include "acbb/expansion.h"
+#include "acbb/scene.h"
+#include "acbb/status.h"
+
+typedef struct {
+    double radial;      /* dFz/d(delta_z), N/m */
+    double tilt;        /* dMy/d(theta_y), N m/rad */
+} acbb_stiffness;
+
+/* dx_held: the axial displacement to hold when the scene's preload is a
+ * displacement (ignored otherwise). Either value is 0 when its solves
+ * fail (a bearing with no load cannot be differenced). */
+acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, double dx_held,
+                                acbb_stiffness *out);
+
+#endif
