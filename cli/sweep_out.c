@@ -47,6 +47,8 @@ size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
     put(names, v, &n, "film_o_um", b->film_o * CLI_UM + ball);
     put(names, v, &n, "delta_x_um", s->delta_x * CLI_UM + nan_);
     put(names, v, &n, "stiffness_axial_N_um", s->stiffness_axial / CLI_UM + nan_);
+    put(names, v, &n, "stiffness_radial_N_um", s->stiffness_radial / CLI_UM + nan_);
+    put(names, v, &n, "stiffness_tilt_Nm_mrad", s->stiffness_tilt * 1e-3 + nan_);
     put(names, v, &n, "time_s", s->time + nan_);
     return n;
 }
