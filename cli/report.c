@@ -119,7 +119,8 @@ static void print_robust_text(FILE *f, const report_view *c)
 {
     char line[4600], head[16];
     snprintf(line, sizeof line, "Robustness (--sensitivity, %.1f s): each TE-WTE sign "
-             "statement at 15000 rpm, every uncertain input set to each end of its plausible "
+             "statement (and the thresholds on the relative TE effect of items 3, 9, 14) at "
+             "its load and speed, every uncertain input set to each end of its plausible "
              "range (`acbb keys`), one at a time; the changes listed turn the verdict. Physics "
              "is unchanged; this says how close each verdict is to the uncertain inputs.",
              1e-3 * c->rob_ms);
@@ -306,7 +307,8 @@ static void print_md_head(FILE *f, const report_view *c)
 static void print_robust_md(FILE *f, const report_view *c)
 {
     fputs("\n## Robustness over the plausible ranges (`--sensitivity`)\n\n"
-          "Each statement that is the sign of a TE - WTE difference, at 15000 rpm, with every "
+          "Each statement that is the sign of a TE - WTE difference, or a threshold on its "
+          "relative size (items 3, 9, 14), at its load and speed, with every "
           "uncertain input (the ASSUMED and UNSURE parameters of MODEL.md and the surroundings; "
           "`acbb keys` gives each plausible range and its source) set to each end of its "
           "range, one at a time (`acbb sensitivity`). The last column lists the single "

@@ -103,8 +103,10 @@ acbb_status acbb_sens_eval(const acbb_scene *scenes, size_t n, const acbb_sens_o
     worker(&pl); /* the calling thread works too */
     for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
     pthread_mutex_destroy(&pl.lock);
-    for (size_t i = 0; i < n; i++)
-        y[i] = per == 2 ? pl.val[2 * i] - pl.val[2 * i + 1] : pl.val[i];
+    for (size_t i = 0; i < n; i++) {
+        double te = pl.val[per * i], wte = per == 2 ? pl.val[2 * i + 1] : 0.0;
+        y[i] = per == 1 ? te : o->delta_rel ? (te - wte) / fabs(wte) : te - wte;
+    }
     if (runs) *runs += pl.done;
     free(pl.val);
     if (cancelled(o->cancel)) return ACBB_CANCELLED;

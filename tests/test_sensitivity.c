@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/sensitivity.h"
+#include "acbb/study.h"
 #include "acbb/units.h"
 #include <gsl/gsl_errno.h>
 #include "tap.h"
@@ -164,6 +165,39 @@ static void test_oat_flip(void)
        "value are not rerun", r.runs);
 }
 
+/* The relative mode (delta_rel) is (TE - WTE) / |WTE| of the same two runs,
+ * and the study's threshold conditions use it (items 3, 9, 14). */
+static void test_relative(void)
+{
+    acbb_scene sc;
+    acbb_scene_default(&sc);
+    acbb_sens_opts o = {.metric = "balls[0].Qi_N", .delta_te = 1, .jobs = 2};
+    double d, r;
+    acbb_status st = acbb_sens_eval(&sc, 1, &o, &d, NULL, 0, NULL);
+    o.delta_rel = 1;
+    if (st == ACBB_OK) st = acbb_sens_eval(&sc, 1, &o, &r, NULL, 0, NULL);
+    double want = direct_delta(&sc, NULL, NULL);
+    ok(st == ACBB_OK, "relative TE effect evaluated");
+    is_close(d, want, 1e-12, 1e-12, "absolute mode: Qi(TE) - Qi(WTE)");
+    acbb_scene w = sc;
+    w.thermal_expansion = false;
+    acbb_sim *sim = NULL;
+    static acbb_snapshot snap;
+    acbb_error err = {{0}};
+    double qw = NAN;
+    if (acbb_sim_new(&w, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK) {
+        acbb_sim_snapshot(sim, &snap);
+        qw = snap.balls[0].Qi;
+    }
+    acbb_sim_free(sim);
+    is_close(r, d / fabs(qw), 1e-9, 0, "relative mode: (TE - WTE) / |WTE| of a direct WTE run");
+    size_t n;
+    const acbb_study_sign *sg = acbb_study_signs(&n);
+    int rel = 0;
+    for (size_t k = 0; k < n; k++) rel += sg[k].rel;
+    ok(rel >= 6, "the study checks %d relative-threshold conditions (items 3, 9, 14)", rel);
+}
+
 static void test_morris(void)
 {
     acbb_scene sc;
@@ -222,6 +256,7 @@ int main(void)
 {
     gsl_set_error_handler_off();
     test_metrics();
+    test_relative();
     test_ranges();
     test_oat_flip();
     test_morris();

@@ -77,6 +77,7 @@ typedef void (*acbb_sens_progress_fn)(void *ctx, size_t done, size_t total);
 typedef struct {
     char metric[ACBB_SENS_METRIC];
     int delta_te;                /* metric(TE) - metric(WTE) */
+    int delta_rel;               /* with delta_te: (TE - WTE) / |WTE| instead */
     int oat;                     /* one-at-a-time table */
     int morris_r;                /* trajectories (0: no Morris) */
     int morris_p;                /* grid levels (even, >= 2; 0: 4) */

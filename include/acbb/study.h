@@ -192,13 +192,16 @@ void acbb_study_free(acbb_study *s);
  * and which single plausible changes would turn it (make a failing
  * condition hold, or a holding one fail). Physics is not changed: this
  * only says how close each verdict is to the uncertain inputs. Items that
- * are not a sign (thresholds, trends over loads) are not checked here. */
+ * are a trend over loads or a ratio of two quantities are not checked here. */
 typedef struct {
     int item;                    /* MODEL.md 12 item */
     const char *what;            /* "P_T(TE) - P_T(WTE) > 0 at 1000 N" */
     double load_N;
     const char *metric;          /* sensitivity.h metric, taken TE - WTE */
-    int want;                    /* +1: the statement wants > 0, -1: < 0 */
+    int want;                    /* +1: y > thr, -1: y < thr, +2: |y| > thr, -2: |y| < thr */
+    double speed_rpm;            /* operating speed of the condition */
+    int rel;                     /* y = (TE - WTE) / |WTE| instead of TE - WTE */
+    double thr;                  /* the threshold (0 for a sign) */
 } acbb_study_sign;
 
 const acbb_study_sign *acbb_study_signs(size_t *n);
