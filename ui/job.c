@@ -139,18 +139,8 @@ acbb_status acbb_job_start(acbb_job *j, const acbb_job_fns *fns, void *ctx, acbb
     j->ctx = ctx;
     atomic_store(&j->cancel, 0);
     begin(j);
-
-    /* The thread inherits this mask: terminal signals go to the UI thread. */
-    sigset_t block, old;
-    sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
-    sigaddset(&block, SIGHUP);
-    sigaddset(&block, SIGQUIT);
-    sigaddset(&block, SIGWINCH);
-    pthread_sigmask(SIG_BLOCK, &block, &old);
-    int rc = pthread_create(&j->thread, NULL, job_main, j);
-    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    /* Terminal signals go to the UI thread (blocked in this one). */
+    int rc = acbb_thread_start(&j->thread, job_main, j);
     if (rc != 0) {
         pthread_mutex_lock(&j->mu);
         j->info.phase = ACBB_JOB_FAILED;

@@ -1,4 +1,5 @@
 /* acbb TUI — wake-up pipe (see wake.h). */
+#include <signal.h>
 #include <fcntl.h>
 #include <unistd.h>
 #include "wake.h"
@@ -58,4 +59,16 @@ struct timespec acbb_wake_abstime(double at_ms)
     if (ts.tv_nsec >= 1000000000L) { ts.tv_sec++; ts.tv_nsec -= 1000000000L; }
     if (ts.tv_nsec < 0) ts.tv_nsec = 0;
     return ts;
+}
+
+int acbb_thread_start(pthread_t *t, void *(*fn)(void *), void *arg)
+{
+    sigset_t block, old;
+    sigemptyset(&block);
+    int sigs[] = { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGWINCH };
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) sigaddset(&block, sigs[i]);
+    pthread_sigmask(SIG_BLOCK, &block, &old);
+    int rc = pthread_create(t, NULL, fn, arg);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    return rc;
 }

@@ -6,6 +6,7 @@
 #ifndef ACBB_UI_WAKE_H
 #define ACBB_UI_WAKE_H
 
+#include <pthread.h>
 #include <stdatomic.h>
 #include <time.h>
 
@@ -22,5 +23,10 @@ void acbb_wake_drain(acbb_wake *w);      /* the UI thread, before reading the st
 /* The timespec of `at_ms` on acbb_now_ms's clock (CLOCK_MONOTONIC), for
  * pthread_cond_timedwait on a condition variable set to that clock. */
 struct timespec acbb_wake_abstime(double at_ms);
+
+/* Start a background thread with the terminal's signals (INT, TERM, HUP,
+ * QUIT, WINCH) blocked in it, so they reach the UI thread. pthread_create's
+ * return value. */
+int acbb_thread_start(pthread_t *t, void *(*fn)(void *), void *arg);
 
 #endif

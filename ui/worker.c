@@ -491,18 +491,8 @@ acbb_status acbb_worker_new(const acbb_scene *scene, int pace, acbb_worker **out
         free(w);
         return acbb_error_set(err, ACBB_ENOMEM, "cannot initialise the worker's lock");
     }
-
-    /* The worker inherits this mask: terminal signals go to the UI thread. */
-    sigset_t block, old;
-    sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
-    sigaddset(&block, SIGHUP);
-    sigaddset(&block, SIGQUIT);
-    sigaddset(&block, SIGWINCH);
-    pthread_sigmask(SIG_BLOCK, &block, &old);
-    int rc = pthread_create(&w->thread, NULL, worker_main, w);
-    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    /* Terminal signals go to the UI thread (blocked in this one). */
+    int rc = acbb_thread_start(&w->thread, worker_main, w);
     if (rc != 0) {
         acbb_wake_close(&w->wake);
         pthread_mutex_destroy(&w->mu);
