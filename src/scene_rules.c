@@ -340,18 +340,35 @@ static acbb_status rule_temp_limit(const acbb_scene *s, acbb_error *err)
 }
 
 /* Pure radial load on one angular-contact bearing with a free axial DOF has
- * no equilibrium (MODEL.md section 11): require F_x >= 1.25 F_r tan(alpha0). */
+ * no equilibrium (MODEL.md section 11): require F_x >= 1.25 F_r tan(alpha0).
+ * A moment is the same case: each Q sin(alpha) of the loaded side pushes
+ * the same way, and its moment arm is at most d_m/2, so the thrust must
+ * carry 2|M|/d_m too (with less, the engine's only equilibria put loaded
+ * balls at alpha < 0, on the low shoulder). The two add (conservative: the
+ * worst ball sees both); a deep-groove bearing (alpha0 = 0) has two
+ * shoulders and needs no thrust for a moment. */
 static acbb_status rule_radial_load(const acbb_scene *s, acbb_error *err)
 {
-    double need = 1.25 * s->radial_load * tan(s->contact_angle0);
+    double radial = s->radial_load * tan(s->contact_angle0);
+    double moment = s->contact_angle0 > 0.0 ? 2.0 * fabs(s->moment_load) / s->pitch_diameter : 0.0;
+    double need = 1.25 * (radial + moment);
     if (s->preload != ACBB_PRELOAD_FORCE || s->axial_load >= need) return ACBB_OK;
-    char a[40], b[40];
+    char a[40], b[40], c[40];
+    if (moment == 0.0)
+        return acbb_error_set(err, ACBB_ILL_POSED,
+                              "operating.radial_load_N = %s with axial_load_N = %s: a single "
+                              "angular-contact bearing needs axial_load_N >= %.4g N "
+                              "(1.25 Fr tan(alpha0)) or mounting.preload = displacement",
+                              show(s, "operating", "radial_load_N", a),
+                              show(s, "operating", "axial_load_N", b), need);
     return acbb_error_set(err, ACBB_ILL_POSED,
-                          "operating.radial_load_N = %s with axial_load_N = %s: a single "
-                          "angular-contact bearing needs axial_load_N >= %.4g N "
-                          "(1.25 Fr tan(alpha0)) or mounting.preload = displacement",
-                          show(s, "operating", "radial_load_N", a),
-                          show(s, "operating", "axial_load_N", b), need);
+                          "operating.moment_load_Nm = %s with axial_load_N = %s, radial_load_N = "
+                          "%s: a single angular-contact bearing needs axial_load_N >= %.4g N "
+                          "(1.25 (Fr tan(alpha0) + 2 |M| / pitch diameter)) or mounting.preload "
+                          "= displacement",
+                          show(s, "operating", "moment_load_Nm", c),
+                          show(s, "operating", "axial_load_N", b),
+                          show(s, "operating", "radial_load_N", a), need);
 }
 
 /* A displacement preload fixes the axial offset dx to what preload_N

@@ -59,13 +59,17 @@ static const hard_case cases[] = {
     { "huge axial 20 kN at 100 rpm", { "operating.axial_load_N=20000",
       "operating.inner_speed_rpm=100" }, "converged", 0, NULL },
     { "moment 5 N m with 1000 N", { "operating.moment_load_Nm=5" }, "converged", 0, NULL },
+    { "moment 20 N m with 1000 N (needs 926 N of thrust)", { "operating.moment_load_Nm=20" },
+      "converged", 0, NULL },
+    /* A moment without enough thrust: every Q sin(alpha) of the loaded side
+     * pushes the same way, as for a pure radial load (scene_rules.c). */
     { "moment 200 N m with 100 N at 15000 rpm", { "operating.moment_load_Nm=200",
-      "operating.axial_load_N=100" }, "runaway", 0, NULL },
-    /* A moment alone: every Q sin(alpha) of the loaded side pushes the same
-     * way, so Fx = 0 has no equilibrium, as for a pure radial load. */
+      "operating.axial_load_N=100" }, "ill_posed", 0, NULL },
     { "moment 50 N m, no axial load", { "operating.moment_load_Nm=50",
-      "operating.axial_load_N=0" }, "ill_posed", 0,
-      "no ill-posedness rule for a moment without thrust (engine runs it)" },
+      "operating.axial_load_N=0" }, "ill_posed", 0, NULL },
+    { "moment 20 N m, no axial load, displacement preload, 6000 rpm", {
+      "operating.moment_load_Nm=20", "operating.axial_load_N=0", "mounting.preload=displacement",
+      "operating.inner_speed_rpm=6000" }, "converged", 0, NULL },
     { "3 balls, 300 N at 6000 rpm", { "bearing.n_balls=3", "operating.axial_load_N=300",
       "operating.inner_speed_rpm=6000" }, "converged", 0, NULL },
     { "26 balls", { "bearing.n_balls=26" }, "converged", 0, NULL },

@@ -579,6 +579,21 @@ static void test_ill_posed(void)
     expect_set_ok(&s, "operating.axial_load_N", "201");
     expect_set_ok(&s, "mounting.preload", "displacement");
     expect_set_ok(&s, "operating.axial_load_N", "0");
+    /* A moment: 1.25 (600 tan 15 deg + 2 * 50 / 0.054) = 201 + 2315 = 2516 N. */
+    acbb_scene_default(&s);
+    expect_set_ok(&s, "operating.radial_load_N", "600");
+    expect_set_ok(&s, "operating.axial_load_N", "2500");
+    rc = acbb_scene_set(&s, "operating.moment_load_Nm", "-50", &e);
+    ok(rc == ACBB_ILL_POSED, "moment -50 N m with 2500 N of thrust is ACBB_ILL_POSED (got %s)",
+       acbb_status_name(rc));
+    want = "operating.moment_load_Nm = -50 with axial_load_N = 2500, radial_load_N = 600: a "
+           "single angular-contact bearing needs axial_load_N >= 2516 N (1.25 (Fr tan(alpha0) "
+           "+ 2 |M| / pitch diameter)) or mounting.preload = displacement";
+    if (!ok(strcmp(e.msg, want) == 0, "moment ill-posed message names the thrust it needs"))
+        printf("#   got \"%s\"\n", e.msg);
+    expect_set_ok(&s, "operating.moment_load_Nm", "-40"); /* needs 2053 N */
+    expect_set_ok(&s, "mounting.preload", "displacement");
+    expect_set_ok(&s, "operating.axial_load_N", "0");
 }
 
 /* Rules on a Scene built in code, not parsed. */
