@@ -18,8 +18,7 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
         acbb_inactive_effect in[8];
         size_t n = acbb_scene_inactive_effects(sc, in, 8);
         for (size_t i = 0; i < n; i++)
-            fprintf(stderr, "acbb: note: effects.%s = on has no effect here: %s\n",
-                    in[i].effect, in[i].why);
+            fprintf(stderr, "acbb: note: %s has no effect here: %s\n", in[i].key, in[i].why);
         return 0;
     }
     fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));

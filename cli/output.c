@@ -386,6 +386,7 @@ static void json_ring_and_work(acbb_cli_out *o, const acbb_scene *sc, const acbb
     for (size_t i = 0; i < n; i++) {
         j_open(o, NULL, '{', true);
         j_str(o, "effect", in[i].effect);
+        j_str(o, "key", in[i].key);
         j_str(o, "why", in[i].why);
         j_close(o, '}');
     }

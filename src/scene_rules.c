@@ -406,22 +406,46 @@ acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
+/* The end cap's keys differ from the defaults (only the 46-node network
+ * has a cap, MODEL.md 8.1). */
+static bool cap_set(const acbb_scene *s, const acbb_scene *d)
+{
+    return s->cap_od != d->cap_od || s->cap_thickness != d->cap_thickness
+        || s->cap_bc.kind != d->cap_bc.kind || s->cap_bc.h != d->cap_bc.h
+        || s->cap_bc.dT != d->cap_bc.dT;
+}
+
 /* Which switches a scene cannot feel (issue: every effect honest). Static
  * Hertz has no ball speeds, so no centrifugal force or gyroscopic moment;
  * WTE forces every expansion to zero (MODEL.md 9), the centrifugal ring
- * growth included; without heating the temperatures stay at ambient. */
+ * growth included; without heating the temperatures stay at ambient. The
+ * 7-node network has no end cap; the heat partition phi_p is a 7-node
+ * parameter (on the 46-node network the spot resistances split the
+ * contact heat, MODEL.md 8.3). */
 size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap)
 {
+    acbb_scene d;
+    acbb_scene_default(&d);
     const struct {
         bool when;
         acbb_inactive_effect e;
     } rows[] = {
         { s->model == ACBB_MODEL_STATIC && s->centrifugal,
-          { "centrifugal", "fidelity.model = static has no ball speeds" } },
+          { "centrifugal", "fidelity.model = static has no ball speeds",
+            "effects.centrifugal = on" } },
         { s->model == ACBB_MODEL_STATIC && s->gyroscopic,
-          { "gyroscopic", "fidelity.model = static has no ball speeds" } },
+          { "gyroscopic", "fidelity.model = static has no ball speeds",
+            "effects.gyroscopic = on" } },
         { !s->thermal_expansion && s->ring_centrifugal,
-          { "ring_centrifugal", "effects.thermal_expansion = off (WTE) zeroes every expansion" } },
+          { "ring_centrifugal", "effects.thermal_expansion = off (WTE) zeroes every expansion",
+            "effects.ring_centrifugal = on" } },
+        { s->heating && s->network == ACBB_NET_7 && cap_set(s, &d),
+          { "end_cap", "fidelity.network = 7 has no end cap (only the 46-node network does)",
+            "surroundings.cap_*" } },
+        { s->heating && s->network == ACBB_NET_46 && s->heat_partition != d.heat_partition,
+          { "heat_partition", "the 46-node network splits the contact heat by its spot "
+            "resistances; heat_partition applies to fidelity.network = 7 only (MODEL.md 8.3)",
+            "thermal.heat_partition" } },
     };
     size_t n = 0;
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)

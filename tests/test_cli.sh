@@ -379,6 +379,16 @@ has "$TMP/static.err" "effects.centrifugal = on has no effect here" \
     "stderr says the centrifugal switch does nothing at the static level"
 jq -e '[.effects_inactive[].effect] == ["centrifugal", "gyroscopic"]' "$TMP/static.json" >/dev/null
 t $? "JSON effects_inactive lists centrifugal and gyroscopic at the static level"
+# Inputs the scene's network does not have are said too (not only switches).
+"$ACBB" run presets/teaching-7node.ini --set surroundings.cap=convective --quiet 2>"$TMP/cap.err"
+code $? 0 "7-node run with a convective end cap exits 0"
+has "$TMP/cap.err" "surroundings.cap_* has no effect here: fidelity.network = 7 has no end cap" \
+    "stderr says the 7-node network has no end cap"
+"$ACBB" run presets/7008C.ini --set fidelity.model=static --set thermal.heat_partition=0.2 \
+    --json >"$TMP/hp.json" 2>/dev/null
+jq -e '[.effects_inactive[].key] == ["effects.centrifugal = on", "effects.gyroscopic = on",
+        "thermal.heat_partition"]' "$TMP/hp.json" >/dev/null
+t $? "JSON effects_inactive names thermal.heat_partition on the 46-node network"
 jq -e '.effects_inactive == [] and .ring.stiffness_axial_N_per_um > 0
     and (.squeeze_um.net - (.squeeze_um.inner_thermal + .squeeze_um.inner_centrifugal
          + .squeeze_um.outer + .squeeze_um.ball) | if . < 0 then -. else . end) < 1e-6

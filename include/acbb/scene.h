@@ -291,12 +291,15 @@ void acbb_scene_field_plausible(size_t i, char *buf, size_t n);
 const char *acbb_model_level_name(acbb_model_level m);
 
 /* Effect switches that are on but do nothing in this scene (at its model
- * level, or because another switch overrides them): the [effects] key and
- * why, static strings; at most `cap` of them; returns how many. A client
- * says so instead of ignoring the switch silently. */
+ * level, or because another switch overrides them), and set inputs the
+ * scene's network does not have: the name (the [effects] key, or the part),
+ * the key as the user would write it, and why; static strings; at most `cap`
+ * of them; returns how many. A client says so instead of ignoring the input
+ * silently. */
 typedef struct {
     const char *effect;
     const char *why;
+    const char *key;       /* "effects.centrifugal = on", "surroundings.cap_*" */
 } acbb_inactive_effect;
 size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap);
 
