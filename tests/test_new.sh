@@ -50,6 +50,26 @@ for row in "7000C 10 26 8" "7008C 40 68 15" "7020AC 100 150 24" "7040B 200 310 5
     fi
 done
 
+# ---- a wider cross-check of the boundary-dimension table ----
+# d x D x B from the SKF rolling bearings catalogue (PUB BU/P1 17000 EN,
+# 2018) deep-groove tables, read independently of the table in
+# src/designation.c: all five diameter series, small to large bores.
+bad=""
+for row in "6000 10 26 8" "6200 10 30 9" "6300 10 35 11" "61800 10 19 5" "61900 10 22 6" \
+           "6004 20 42 12" "6304 20 52 15" "61804 20 32 7" "61904 20 37 9" "6008 40 68 15" \
+           "6010 50 80 16" "61810 50 65 7" "61910 50 72 12" "6310 50 110 27" "6212 60 110 22" \
+           "6315 75 160 37" "6017 85 130 22" "6217 85 150 28" "6317 85 180 41" "6222 110 200 38" \
+           "6322 110 240 50" "6028 140 210 33" "6228 140 250 42" "6328 140 300 62" \
+           "61828 140 175 18" "61928 140 190 24" "6030 150 225 35" "6230 150 270 45" \
+           "6330 150 320 65" "61830 150 190 20" "61930 150 210 28" "6036 180 280 46" \
+           "6040 200 310 51" "6240 200 360 58" "7340B 200 420 80" "7220B 100 180 34"; do
+    set -- $row
+    "$ACBB" new "$1" --out - >"$TMP/dims" 2>/dev/null
+    got="$(val "$TMP/dims" bore_mm) $(val "$TMP/dims" outer_diameter_mm) $(val "$TMP/dims" width_mm)"
+    [ "$got" = "$2 $3 $4" ] || bad="$bad $1($got, catalogue $2 $3 $4)"
+done
+[ -z "$bad" ]; t $? "36 designations match the catalogue's d x D x B${bad:+:$bad}"
+
 # ---- angles and clearance ----
 [ "$(val "$TMP/7000C.ini" contact_angle_deg)" = 15 ]; t $? "7000C: contact angle 15 deg (C)"
 [ "$(val "$TMP/7020AC.ini" contact_angle_deg)" = 25 ]; t $? "7020AC: contact angle 25 deg (AC)"
