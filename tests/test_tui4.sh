@@ -55,6 +55,12 @@ ok $? "the chart has y ticks in W and the x unit N"
 keys 5
 wait_for "Enter edit"
 goto_field fidelity.model
+# A switch the edited scene cannot feel is said, as the CLI's note says it.
+keys Enter C-u
+typekeys "static"
+keys Enter
+wait_for "note: effects.centrifugal = on has no effect"
+ok $? "the editor says centrifugal does nothing at the static level"
 keys Enter C-u
 typekeys "dynamic"
 keys Enter
@@ -75,8 +81,8 @@ done_n=$(printf '%s' "$line" | sed -n 's/.*cancelled after \([0-9]*\) of 20.*/\1
 [ -n "$done_n" ] && [ "$done_n" -lt 20 ]
 ok $? "the cancelled sweep ran fewer than 20 points ($line)"
 
-# ---- the Sensitivity screen (the preset again: u undoes the edit) ----
-keys u 0
+# ---- the Sensitivity screen (the preset again: u u undoes both edits) ----
+keys u u 0
 wait_for "[0 Sensitivity]" && wait_for "r/Enter runs it on the edited scene"
 ok $? "0 opens the Sensitivity screen, idle"
 keys r

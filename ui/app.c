@@ -288,7 +288,7 @@ static void prompt_commit(acbb_app *a)
             acbb_app_msg(a, ACBB_ROLE_ERROR, "refused: %s", err.msg);
         } else {
             a->edit_error[0] = '\0';
-            acbb_app_msg(a, ACBB_ROLE_NORMAL, "edited (a: apply warm, A: apply cold, w: save)");
+            acbb_screen_editor_edited(a, "edited (a: apply warm, A: apply cold, w: save)");
         }
         break;
     case ACBB_PROMPT_SAVE_AS:

@@ -212,6 +212,10 @@ void acbb_draw_status(acbb_app *a);
 /* ---- what screens offer beyond their descriptor (screens.h) ---- */
 /* The preset browser, a modal overlay (screen_editor.c). */
 void acbb_screen_browse_begin(acbb_app *a);
+/* After an accepted edit: the usual hint, or a warning naming a switch or
+ * input that now has no effect (acbb_scene_inactive_effects), so the TUI
+ * says what the CLI's note says. */
+void acbb_screen_editor_edited(acbb_app *a, const char *hint);
 void acbb_screen_browse_draw(acbb_app *a);
 int acbb_screen_browse_key(acbb_app *a, int ch);
 /* Export every plot kind as PNG+SVG (screen_plot.c; the global g). */

@@ -91,7 +91,7 @@ static int on_key(acbb_app *a, int ch)
             acbb_app_msg(a, ACBB_ROLE_WARN, "%s", err.msg);
         } else {
             a->edit_error[0] = '\0';
-            acbb_app_msg(a, ACBB_ROLE_NORMAL, "edited (a: apply warm, A: apply cold)");
+            acbb_screen_editor_edited(a, "edited (a: apply warm, A: apply cold)");
         }
         return 1;
     default:
@@ -151,6 +151,17 @@ const acbb_screen acbb_screen_edit = {
     .click = click,
     .hint = "Enter edit  </> cycle  / find  u undo  w save  o open  a apply  ? help",
 };
+
+void acbb_screen_editor_edited(acbb_app *a, const char *hint)
+{
+    acbb_inactive_effect in[8];
+    size_t n = acbb_scene_inactive_effects(&a->ed.scene, in, 8);
+    if (n == 0)
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s", hint);
+    else
+        acbb_app_msg(a, ACBB_ROLE_WARN, "edited; note: %s has no effect here: %s", in[0].key,
+                     in[0].why);
+}
 
 /* ---- preset browser ---- */
 
