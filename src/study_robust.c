@@ -109,10 +109,16 @@ static void copy_point(acbb_study_point *p, const acbb_study_point *b)
     p->min_loss = b->min_loss;
     p->oom = b->oom;
     p->n_traj = 0;
-    if (b->n_traj && (p->traj = malloc(b->n_traj * sizeof *p->traj)) != NULL) {
-        memcpy(p->traj, b->traj, b->n_traj * sizeof *p->traj);
-        p->n_traj = p->cap_traj = b->n_traj;
+    if (!b->n_traj) return;
+    p->traj = malloc(b->n_traj * sizeof *p->traj);
+    if (!p->traj) {
+        p->ok = 0;
+        p->status = ACBB_ENOMEM;
+        snprintf(p->message, sizeof p->message, "out of memory copying the transient");
+        return;
     }
+    memcpy(p->traj, b->traj, b->n_traj * sizeof *p->traj);
+    p->n_traj = p->cap_traj = b->n_traj;
 }
 
 /* Points of end e to run go to list; the others are skipped (the zero-speed
