@@ -51,7 +51,7 @@ static void robust_text(char *buf, size_t cap, const acbb_study_robust *r)
         u += (size_t)snprintf(buf + u, cap - u, "%s %s = %s (%+.4g)", k ? "," : "",
                               r->turns[k].key, r->turns[k].value, r->turns[k].y);
     if (r->failed && u < cap)
-        snprintf(buf + u, cap - u, " [%zu point(s) without a value]", r->failed);
+        snprintf(buf + u, cap - u, " [%zu end(s) without a value]", r->failed);
 }
 
 
