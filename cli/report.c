@@ -563,8 +563,8 @@ static int parse(rargs *a, int argc, char **argv)
             else if (i + 1 < argc) v = argv[++i];
             else return usage("%s needs a value", s);
             if (is_set) a->sets[a->n_sets++] = v;
-            else if (is_key && split_keys(a, v) != 0) return usage("%s: too many inputs", s);
-            else a->md = v;
+            else if (!is_key) a->md = v;
+            else if (split_keys(a, v) != 0) return usage("%s: too many inputs", s);
         } else if (strcmp(s, "--json") == 0) {
             a->json = true;
         } else if (strcmp(s, "--sensitivity") == 0) {

@@ -99,6 +99,8 @@ t $? "axial load 0: no nan/inf in any JSON text"
 # (the full run over all 25 inputs is in the slow suite: test_report_sens.sh)
 "$ACBB" report "$PRESET" --sensitivity --inputs surroundings.shaft_bore >"$TMP/sens.txt" 2>"$TMP/err"
 code $? 0 "report --sensitivity --inputs surroundings.shaft_bore runs"
+[ ! -e surroundings.shaft_bore ] && [ ! -e "$TMP/surroundings.shaft_bore" ]
+t $? "--inputs writes no file (its value is not a Markdown path)"
 sed -n '/^Robustness (--sensitivity/,/^The TE - WTE differences/p' "$TMP/sens.txt" |
     grep -E '^ {0,2}[0-9]{1,2}  (HELD|NOT HELD|NOT EVALUATED); ' | awk '{print $1}' >"$TMP/rnums.txt"
 cmp -s "$TMP/rnums.txt" "$TMP/want.txt"
