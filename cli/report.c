@@ -600,6 +600,16 @@ static int load_base(const rargs *a, acbb_scene *s)
     return 0;
 }
 
+/* "robustness: 812 of 1904 runs", at most about four times a second (the
+ * progress line's own redraw clock). */
+static void rob_progress_fn(void *ctx, size_t done, size_t total)
+{
+    acbb_cli_progress *p = ctx;
+    if (acbb_now_ms() - p->last_ms < 250.0) return;
+    p->last_ms = acbb_now_ms();
+    acbb_cli_progress_note(p, "robustness: %zu of %zu runs  (Ctrl-C stops)", done, total);
+}
+
 /* Plan, run and print; the Markdown file is opened before the runs so a
  * bad path fails fast, and replaces FILE only when complete. */
 static int report(const rargs *a, const acbb_scene *base)
@@ -625,9 +635,12 @@ static int report(const rargs *a, const acbb_scene *base)
     acbb_study_rob rob = { 0 };
     int rc = EXIT_OK;
     if (a->sensitivity) {
+        acbb_cli_progress rp;
+        acbb_cli_progress_init(&rp, stderr, 0.0);
         acbb_study_rob_opts o = { .keys = a->n_keys ? a->keys : NULL, .n_keys = (size_t)a->n_keys,
-                                  .cancel = cancel };
+                                  .cancel = cancel, .progress = rob_progress_fn, .ctx = &rp };
         acbb_status rs = acbb_study_robustness(st, &o, &rob, &err);
+        acbb_cli_progress_end(&rp);
         if (rs == ACBB_OK) v.rob = &rob;
         else fprintf(stderr, "acbb: report: --sensitivity: %s\n",
                      err.msg[0] ? err.msg : acbb_status_name(rs));

@@ -90,7 +90,19 @@ typedef struct {
     size_t n;
     atomic_size_t next;
     const atomic_int *cancel;
+    acbb_study_progress_fn progress; /* may be NULL; called under `lock` */
+    void *ctx;
+    size_t done;
+    pthread_mutex_t lock;
 } pool;
+
+static void count_done(pool *pl)
+{
+    if (!pl->progress) return;
+    pthread_mutex_lock(&pl->lock);
+    pl->progress(pl->ctx, ++pl->done, pl->n);
+    pthread_mutex_unlock(&pl->lock);
+}
 
 static void *pool_worker(void *arg)
 {
@@ -105,6 +117,7 @@ static void *pool_worker(void *arg)
             continue;
         }
         run_point(p, pl->cancel);
+        count_done(pl);
     }
 }
 
@@ -117,16 +130,18 @@ static size_t n_jobs(int jobs)
 /* One pool over any list of points (the study's own, or every perturbed
  * study's at once: study_robust.c). */
 void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
-                         const atomic_int *cancel)
+                         const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
-    pool pl = { .pts = pts, .n = n, .cancel = cancel };
+    pool pl = { .pts = pts, .n = n, .cancel = cancel, .progress = progress, .ctx = ctx };
     atomic_init(&pl.next, 0);
+    pthread_mutex_init(&pl.lock, NULL);
     pthread_t tid[MAX_JOBS];
     size_t extra = n_jobs(jobs) - 1, started = 0;
     for (; started < extra && started + 1 < n; started++)
         if (pthread_create(&tid[started], NULL, pool_worker, &pl) != 0) break;
     pool_worker(&pl); /* the calling thread works too */
     for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
+    pthread_mutex_destroy(&pl.lock);
 }
 
 static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int *cancel)
@@ -140,7 +155,7 @@ static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int 
         return;
     }
     for (size_t i = 0; i < n; i++) list[i] = &pts[i];
-    acbb_study_run_list(list, n, jobs, cancel);
+    acbb_study_run_list(list, n, jobs, cancel, NULL, NULL);
     free(list);
 }
 

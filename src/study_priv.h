@@ -63,9 +63,10 @@ struct acbb_study {
 /* The run set of `base` (nothing runs yet); ACBB_ENOMEM. */
 acbb_status acbb_study_plan_runs(acbb_study_runs *r, const acbb_scene *base);
 void acbb_study_free_runs(acbb_study_runs *r);
-/* Run the listed points on one pool of `jobs` threads. */
+/* Run the listed points on one pool of `jobs` threads; `progress` (may be
+ * NULL) after each finished point, under a lock. */
 void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
-                         const atomic_int *cancel);
+                         const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx);
 
 /* The sign conditions from a run set (study_sens.c): the scene's value
  * into o (o->sign set), then one end at a time. */

@@ -254,6 +254,9 @@ typedef struct {
     acbb_study_flip *flips;      /* owned by the result; item turns first */
 } acbb_study_item_rob;
 
+/* Called from the pool's threads, one at a time, after each run. */
+typedef void (*acbb_study_progress_fn)(void *ctx, size_t done, size_t total);
+
 typedef struct {
     const char *const *keys;     /* only these inputs ("section.key"); NULL: all */
     size_t n_keys;
@@ -261,6 +264,8 @@ typedef struct {
     const atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
     const acbb_study_row *rows;  /* the check table (NULL: acbb_study_table) */
     size_t n_rows;
+    acbb_study_progress_fn progress; /* may be NULL */
+    void *ctx;
 } acbb_study_rob_opts;
 
 typedef struct {
