@@ -242,6 +242,35 @@ static void test_table(const acbb_scene *s, acbb_study *base, const acbb_study_r
     ok(conv == 1, "a convective shaft bore turns it (TE - WTE > 0 there)");
 }
 
+/* Progress: called once per run, the count reaching the total. */
+typedef struct {
+    size_t calls, last_done, total;
+    int monotone;
+} progress_log;
+
+static void on_progress(void *ctx, size_t done, size_t total)
+{
+    progress_log *l = ctx;
+    l->monotone &= done == l->last_done + 1;
+    l->calls++;
+    l->last_done = done;
+    l->total = total;
+}
+
+/* Cancelled before it starts: ACBB_CANCELLED, an empty result. */
+static void test_cancel(const acbb_study *base)
+{
+    static const char *const keys[] = { "lubricant.drag_coefficient" };
+    atomic_int stop;
+    atomic_init(&stop, 1);
+    acbb_study_rob_opts o = { .keys = keys, .n_keys = 1, .cancel = &stop };
+    acbb_study_rob r;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_study_robustness(base, &o, &r, &err);
+    ok(st == ACBB_CANCELLED && r.n_items == 0 && r.items == NULL && r.signs == NULL,
+       "a set cancel flag: ACBB_CANCELLED (%s), nothing returned", err.msg);
+}
+
 int main(void)
 {
     acbb_scene s = preset();
@@ -259,17 +288,22 @@ int main(void)
     rows[n] = (acbb_study_row){ FAKE_ITEM, 0, fake_item, "fake: eps > 0.008" };
     static const char *const keys[] = { "materials.ring_expansion_ppm_K",
                                         "lubricant.hysteresis_loss", "surroundings.shaft_bore" };
-    acbb_study_rob_opts o = { .keys = keys, .n_keys = 3, .rows = rows, .n_rows = n + 1 };
+    progress_log pl = { .monotone = 1 };
+    acbb_study_rob_opts o = { .keys = keys, .n_keys = 3, .rows = rows, .n_rows = n + 1,
+                              .progress = on_progress, .ctx = &pl };
     acbb_study_rob r;
     acbb_error err = { { 0 } };
     acbb_status st = acbb_study_robustness(base, &o, &r, &err);
     ok(st == ACBB_OK, "robustness over 3 inputs runs (%s)", err.msg);
+    ok(pl.calls == r.n_runs && pl.last_done == r.n_runs && pl.total == r.n_runs && pl.monotone,
+       "progress: %zu calls counting 1..%zu of %zu runs", pl.calls, pl.last_done, pl.total);
     if (st == ACBB_OK) {
         test_constructed(base, &r);
         test_table(&s, base, &r, n + 1);
         acbb_study_rob_free(&r);
     }
     test_shared();
+    test_cancel(base);
     acbb_study_free(base);
     return done_testing();
 }
