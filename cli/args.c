@@ -57,8 +57,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_DELTA] = { "delta", "thermal_expansion",
                         "the metric's difference TE - WTE (two runs per point)" },
     [CLI_OPT_SENSITIVITY] = { "sensitivity", NULL,
-                              "also test each TE-WTE sign statement against the plausible "
-                              "ranges of the uncertain inputs (about 1300 more runs)" },
+                              "also re-judge every statement with each uncertain input at each "
+                              "end of its plausible range, one at a time (about 2000 more runs)" },
     [CLI_OPT_MORRIS] = { "morris", "R",
                          "also Morris elementary effects: R trajectories on a 4-level grid "
                          "(0..1000; 10 is usual)" },
@@ -66,6 +66,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                            "score every knob over the seed's 48 operating points, steady and "
                            "transient path" },
     [CLI_OPT_POINTS] = { "points", "N", "with --envelope: N of the 48 points, evenly spread" },
+    [CLI_OPT_INPUTS] = { "inputs", "K1,...",
+                         "with --sensitivity: vary only these uncertain inputs (default all; "
+                         "`acbb keys` marks them plausible)" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

@@ -101,7 +101,7 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "report", NULL, "PRESET",
       "the seed's conclusions (MODEL.md 12): held or not",
       "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n",
-      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY), 1, 1, 0, cmd_report },
+      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS), 1, 1, 0, cmd_report },
     { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
       "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
       "never over an existing file) with the ISO 15 bore, outside diameter and width;\n"
@@ -251,6 +251,7 @@ static int cmd_report(const acbb_cli_args *a)
     if (a->val[CLI_OPT_JSON]) argv[argc++] = "--json";
     if (a->val[CLI_OPT_MD]) argv[argc++] = "--md", argv[argc++] = a->val[CLI_OPT_MD];
     if (a->val[CLI_OPT_SENSITIVITY]) argv[argc++] = "--sensitivity";
+    if (a->val[CLI_OPT_INPUTS]) argv[argc++] = "--inputs", argv[argc++] = a->val[CLI_OPT_INPUTS];
     int rc = acbb_cli_report(argc, (char **)argv);
     free(argv);
     return rc;

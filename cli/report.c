@@ -24,9 +24,7 @@ typedef struct {
     acbb_model_level model;      /* the preset's level */
     const acbb_study *st;
     const acbb_study_runs *runs;
-    const acbb_study_robust *rob;  /* --sensitivity: one per acbb_study_signs row, else NULL */
-    size_t n_rob;
-    double rob_ms;
+    const acbb_study_rob *rob;   /* --sensitivity, else NULL */
 } report_view;
 
 /* ---- robustness (--sensitivity) ---- */
@@ -53,7 +51,7 @@ static void robust_text(char *buf, size_t cap, const acbb_study_robust *r)
         u += (size_t)snprintf(buf + u, cap - u, "%s %s = %s (%+.4g)", k ? "," : "",
                               r->turns[k].key, r->turns[k].value, r->turns[k].y);
     if (r->failed && u < cap)
-        snprintf(buf + u, cap - u, " [%zu point(s) without a value]", r->failed);
+        snprintf(buf + u, cap - u, " [%zu end(s) without a value]", r->failed);
 }
 
 
@@ -115,24 +113,94 @@ static void print_items_text(FILE *f, const report_view *c)
     }
 }
 
+/* The item's verdict and whether a single plausible change turns it. */
+static void item_rob_head(char *buf, size_t cap, const acbb_study_rob *r,
+                          const acbb_study_item_rob *ir)
+{
+    static const char *const none[] = { "survives every plausible single change",
+                                        "no single plausible change makes it hold",
+                                        "no single plausible change makes it evaluable" };
+    static const char *const some[] = { "fails with", "holds with", "changes with" };
+    const char *v = acbb_verdict_name(ir->verdict);
+    if (!ir->varied)
+        snprintf(buf, cap, "%s; model-independent sanity item, not varied", v);
+    else if (ir->n_turns == 0)
+        snprintf(buf, cap, "%s; %s (%zu ends of %zu inputs)", v, none[ir->verdict], r->n_ends,
+                 r->n_inputs);
+    else
+        snprintf(buf, cap, "%s; %s %zu of %zu single changes:", v, some[ir->verdict],
+                 ir->n_turns, r->n_ends);
+}
+
+/* "key = end -> VERDICT (id: the check's numbers there; ...)" */
+static void flip_text(char *buf, size_t cap, const acbb_study_flip *f)
+{
+    size_t u = (size_t)snprintf(buf, cap, "%s = %s -> %s", f->key, f->value,
+                                acbb_verdict_name(f->verdict));
+    for (int k = 0; k < f->n_checks && u < cap; k++)
+        u += (size_t)snprintf(buf + u, cap - u, "%s%s %s: %s", k ? "; " : " (", f->checks[k].id,
+                              k_vmark[f->checks[k].verdict], f->checks[k].text);
+    if (f->n_checks && u < cap) snprintf(buf + u, cap - u, ")");
+}
+
+/* "key = end (1b ok, 1c NO), ..." over the flips that leave the item's verdict. */
+static void partial_text(char *buf, size_t cap, const acbb_study_item_rob *ir)
+{
+    size_t u = (size_t)snprintf(buf, cap, "checks changed without turning the item:");
+    for (size_t j = ir->n_turns; j < ir->n_flips && u < cap; j++) {
+        const acbb_study_flip *f = &ir->flips[j];
+        u += (size_t)snprintf(buf + u, cap - u, "%s %s = %s (", j > ir->n_turns ? "," : "",
+                              f->key, f->value);
+        for (int k = 0; k < f->n_checks && u < cap; k++)
+            u += (size_t)snprintf(buf + u, cap - u, "%s%s %s", k ? ", " : "", f->checks[k].id,
+                                  k_vmark[f->checks[k].verdict]);
+        if (u < cap) u += (size_t)snprintf(buf + u, cap - u, ")");
+    }
+}
+
+#define FLIP_TEXT (ACBB_STUDY_MAX_CHECKS * (ACBB_STUDY_TEXT + 16) + 256)
+
 static void print_robust_text(FILE *f, const report_view *c)
 {
+    const acbb_study_rob *r = c->rob;
     char line[4600], head[16];
-    snprintf(line, sizeof line, "Robustness (--sensitivity, %.1f s): each TE-WTE sign "
-             "statement (and the thresholds on the relative TE effect of items 3, 9, 14) at "
-             "its load and speed, every uncertain input set to each end of its plausible "
-             "range (`acbb keys`), one at a time; the changes listed turn the verdict. Physics "
-             "is unchanged; this says how close each verdict is to the uncertain inputs.",
-             1e-3 * c->rob_ms);
+    snprintf(line, sizeof line, "Robustness (--sensitivity, %.1f s): the study re-run with "
+             "every uncertain input set to each end of its plausible range (`acbb keys`), one "
+             "at a time: %zu inputs, %zu ends (%zu at the scene's value), %zu runs, %zu points "
+             "shared, %zu failed. Per item: its verdict, then the single changes that turn "
+             "it, with the numbers of the checks that change there, and the changes that "
+             "turn some checks only. Physics is unchanged; this says "
+             "how close each verdict is to the uncertain inputs.", 1e-3 * r->wall_ms,
+             r->n_inputs, r->n_ends, r->n_same, r->n_runs, r->n_shared, r->n_failed);
     wrap(f, "", 0, line);
-    for (size_t k = 0; k < c->n_rob; k++) {
-        const acbb_study_robust *r = &c->rob[k];
-        char t[4000];
-        robust_text(t, sizeof t, r);
-        snprintf(head, sizeof head, "%2d  ", r->sign->item);
-        snprintf(line, sizeof line, "%s: %s", r->sign->what, t);
+    char *t = malloc(FLIP_TEXT);
+    if (!t) return;
+    for (size_t k = 0; k < r->n_items; k++) {
+        const acbb_study_item_rob *ir = &r->items[k];
+        item_rob_head(line, sizeof line, r, ir);
+        snprintf(head, sizeof head, "%3d  ", ir->num);
+        wrap(f, head, 5, line);
+        for (size_t j = 0; j < ir->n_turns; j++) {
+            flip_text(t, FLIP_TEXT, &ir->flips[j]);
+            wrap(f, "     - ", 7, t);
+        }
+        if (ir->n_flips > ir->n_turns) {
+            partial_text(t, FLIP_TEXT, ir);
+            wrap(f, "     ", 5, t);
+        }
+    }
+    fputc('\n', f);
+    wrap(f, "", 0, "The TE - WTE differences behind the sign statements (items 1, 5, 8, 10-13, "
+                   "15, 16) and the thresholds on the relative TE effect (items 3, 9, 14), at "
+                   "their point of the sweeps, from the same runs:");
+    for (size_t k = 0; k < r->n_signs; k++) {
+        const acbb_study_robust *s = &r->signs[k];
+        robust_text(t, FLIP_TEXT, s);
+        snprintf(head, sizeof head, "%2d  ", s->sign->item);
+        snprintf(line, sizeof line, "%s: %s", s->sign->what, t);
         wrap(f, head, 4, line);
     }
+    free(t);
 }
 
 static void print_text(FILE *f, const report_view *c)
@@ -192,36 +260,44 @@ static void json_num(FILE *f, double v)
     else fputs("null", f);
 }
 
+static void json_check(FILE *f, const acbb_study_check *ch)
+{
+    fputs("{\"id\": ", f);
+    json_str(f, ch->id);
+    fputs(", \"verdict\": ", f);
+    json_str(f, acbb_verdict_name(ch->verdict));
+    fprintf(f, ", \"info\": %s, \"text\": ", ch->info ? "true" : "false");
+    json_str(f, ch->text);
+    fputc('}', f);
+}
+
 static void print_json_checks(FILE *f, const acbb_study_item *it)
 {
     for (int k = 0; k < it->n_checks; k++) {
-        fprintf(f, "%s\n     {\"id\": ", k ? "," : "");
-        json_str(f, it->checks[k].id);
-        fputs(", \"verdict\": ", f);
-        json_str(f, acbb_verdict_name(it->checks[k].verdict));
-        fprintf(f, ", \"info\": %s, \"text\": ", it->checks[k].info ? "true" : "false");
-        json_str(f, it->checks[k].text);
-        fputc('}', f);
+        fputs(k ? ",\n     " : "\n     ", f);
+        json_check(f, &it->checks[k]);
     }
 }
 
-/* --sensitivity: the item's sign conditions and what turns them. */
-static void print_json_robust(FILE *f, const report_view *c, int item)
+/* --sensitivity: the sign conditions of item `item` and what turns them. */
+static void print_json_conditions(FILE *f, const acbb_study_rob *rob, int item)
 {
     bool first = true;
-    for (size_t k = 0; c->rob && k < c->n_rob; k++) {
-        const acbb_study_robust *r = &c->rob[k];
+    fputs(", \"conditions\": [", f);
+    for (size_t k = 0; k < rob->n_signs; k++) {
+        const acbb_study_robust *r = &rob->signs[k];
         if (r->sign->item != item) continue;
-        fputs(first ? ",\n   \"robustness\": [" : ", ", f);
+        fputs(first ? "" : ", ", f);
         first = false;
         fputs("{\"condition\": ", f);
         json_str(f, r->sign->what);
         fputs(", \"metric\": ", f);
         json_str(f, r->sign->metric);
-        fprintf(f, ", \"load_N\": %g, \"value\": ", r->sign->load_N);
+        fprintf(f, ", \"load_N\": %g, \"speed_rpm\": %g, \"value\": ", r->sign->load_N,
+                r->sign->speed_rpm);
         json_num(f, r->ok ? r->y : NAN);
-        fprintf(f, ", \"holds\": %s, \"inputs\": %zu, \"turned_by\": [",
-                r->holds ? "true" : "false", r->n_inputs);
+        fprintf(f, ", \"holds\": %s, \"failed\": %zu, \"turned_by\": [",
+                r->holds ? "true" : "false", r->failed);
         for (size_t t = 0; t < r->n_turns; t++) {
             fputs(t ? ", {\"key\": " : "{\"key\": ", f);
             json_str(f, r->turns[t].key);
@@ -233,7 +309,35 @@ static void print_json_robust(FILE *f, const report_view *c, int item)
         }
         fputs("]}", f);
     }
-    if (!first) fputc(']', f);
+    fputc(']', f);
+}
+
+/* --sensitivity: the item's verdict under every single change that turns it. */
+static void print_json_robust(FILE *f, const report_view *c, size_t i)
+{
+    if (!c->rob || i >= c->rob->n_items) return;
+    const acbb_study_item_rob *ir = &c->rob->items[i];
+    fprintf(f, ",\n   \"robustness\": {\"varied\": %s, \"inputs\": %zu, \"ends\": %zu, "
+            "\"turned\": %s, \"changes\": [", ir->varied ? "true" : "false",
+            c->rob->n_inputs, c->rob->n_ends, ir->n_turns ? "true" : "false");
+    for (size_t j = 0; j < ir->n_flips; j++) {
+        const acbb_study_flip *fl = &ir->flips[j];
+        fputs(j ? ",\n     {\"key\": " : "\n     {\"key\": ", f);
+        json_str(f, fl->key);
+        fputs(", \"value\": ", f);
+        json_str(f, fl->value);
+        fprintf(f, ", \"turns_item\": %s, \"verdict\": ", fl->turns_item ? "true" : "false");
+        json_str(f, acbb_verdict_name(fl->verdict));
+        fputs(", \"checks\": [", f);
+        for (int k = 0; k < fl->n_checks; k++) {
+            fputs(k ? ", " : "", f);
+            json_check(f, &fl->checks[k]);
+        }
+        fputs("]}", f);
+    }
+    fputc(']', f);
+    print_json_conditions(f, c->rob, ir->num);
+    fputc('}', f);
 }
 
 static void print_json(FILE *f, const report_view *c)
@@ -266,7 +370,7 @@ static void print_json(FILE *f, const report_view *c)
             json_num(f, it->values[k].v);
         }
         fputs("}}", f);
-        print_json_robust(f, c, it->num);
+        print_json_robust(f, c, i);
         fprintf(f, "}%s\n", i + 1 < n ? "," : "");
     }
     fputs("]\n", f);
@@ -306,31 +410,62 @@ static void print_md_head(FILE *f, const report_view *c)
 
 static void print_robust_md(FILE *f, const report_view *c)
 {
-    fputs("\n## Robustness over the plausible ranges (`--sensitivity`)\n\n"
-          "Each statement that is the sign of a TE - WTE difference, or a threshold on its "
-          "relative size (items 3, 9, 14), at its load and speed, with every "
-          "uncertain input (the ASSUMED and UNSURE parameters of MODEL.md and the surroundings; "
-          "`acbb keys` gives each plausible range and its source) set to each end of its "
-          "range, one at a time (`acbb sensitivity`). The last column lists the single "
-          "plausible changes that turn the condition, with the difference there: for a "
-          "condition that does not hold, what would make it hold; for one that holds, what "
-          "would break it. Nothing in the physics is changed to make a statement hold.\n\n"
+    const acbb_study_rob *r = c->rob;
+    char *t = malloc(FLIP_TEXT);
+    if (!t) return;
+    fprintf(f, "\n## Robustness over the plausible ranges (`--sensitivity`)\n\n"
+            "The whole study re-run with every uncertain input (the ASSUMED and UNSURE "
+            "parameters of MODEL.md and the surroundings; `acbb keys` gives each plausible range "
+            "and its source) set to each end of its range, one at a time, and every check "
+            "evaluated there: %zu inputs, %zu ends (%zu equal to the scene's value), %zu runs in "
+            "one pool, %zu points shared with the base runs (the input provably has no effect "
+            "there), %zu failed; %.1f s. For an item that does not hold: the single plausible "
+            "changes that would make it hold; for one that holds: those that would break it; "
+            "each with the numbers of the checks that change. Nothing in the physics is changed "
+            "to make a statement hold.\n\n| # | verdict | single plausible changes that turn "
+            "it |\n|---|---|---|\n", r->n_inputs, r->n_ends, r->n_same, r->n_runs, r->n_shared,
+            r->n_failed, 1e-3 * r->wall_ms);
+    for (size_t k = 0; k < r->n_items; k++) {
+        const acbb_study_item_rob *ir = &r->items[k];
+        fprintf(f, "| %d | %s | ", ir->num, acbb_verdict_name(ir->verdict));
+        item_rob_head(t, FLIP_TEXT, r, ir);
+        md_text(f, strchr(t, ';') + 2);
+        for (size_t j = 0; j < ir->n_turns; j++) {
+            fprintf(f, "%s", j ? ", " : " ");
+            md_text(f, ir->flips[j].key);
+            fprintf(f, " = %s -> %s", ir->flips[j].value, acbb_verdict_name(ir->flips[j].verdict));
+        }
+        fputs(" |\n", f);
+    }
+    fputs("\n### The numbers under each change\n\nEvery single change that turns an item "
+          "(**bold**) or some of its checks only, with those checks as evaluated there.\n\n", f);
+    for (size_t k = 0; k < r->n_items; k++)
+        for (size_t j = 0; j < r->items[k].n_flips; j++) {
+            const acbb_study_flip *fl = &r->items[k].flips[j];
+            flip_text(t, FLIP_TEXT, fl);
+            fprintf(f, fl->turns_item ? "- **item %d**: " : "- item %d: ", r->items[k].num);
+            md_text(f, t);
+            fputc('\n', f);
+        }
+    fputs("\n### TE - WTE at the points of the sign statements\n\n"
+          "The differences behind the sign statements and the thresholds on the relative TE "
+          "effect (items 3, 9, 14), read from the same runs.\n\n"
           "| # | condition | at the scene's values | single plausible changes that turn it |\n"
           "|---|---|---|---|\n", f);
-    for (size_t k = 0; k < c->n_rob; k++) {
-        const acbb_study_robust *r = &c->rob[k];
-        char t[4000];
-        robust_text(t, sizeof t, r);
+    for (size_t k = 0; k < r->n_signs; k++) {
+        const acbb_study_robust *s = &r->signs[k];
+        robust_text(t, FLIP_TEXT, s);
         char *colon = strstr(t, "; ");   /* value and verdict | the changes */
         if (colon) *colon = '\0';
-        fprintf(f, "| %d | ", r->sign->item);
-        md_text(f, r->sign->what);
+        fprintf(f, "| %d | ", s->sign->item);
+        md_text(f, s->sign->what);
         fputs(" | ", f);
         md_text(f, t);
         fputs(" | ", f);
         md_text(f, colon ? colon + 2 : "");
         fputs(" |\n", f);
     }
+    free(t);
 }
 
 static void print_md(FILE *f, const report_view *c)
@@ -379,14 +514,31 @@ static void print_md(FILE *f, const report_view *c)
 
 static const char k_usage[] =
     "usage: acbb report PRESET [--set section.key=value]... [--json] [--md FILE] "
-    "[--sensitivity]\n";
+    "[--sensitivity] [--inputs K1,...]\n";
 
 typedef struct {
     const char *preset, *md;
-    const char **sets;
-    int n_sets;
+    const char **sets;           /* --set edits */
+    int n_sets, n_keys;
+    const char *keys[ACBB_SENS_MAX]; /* --inputs, split at the commas into buf */
+    char buf[ACBB_SENS_MAX * 64];
     bool json, sensitivity;
 } rargs;
+
+/* --inputs K1,K2,...: implies --sensitivity. */
+static int split_keys(rargs *a, const char *v)
+{
+    size_t n = strlen(v);
+    if (n >= sizeof a->buf) return -1;
+    memcpy(a->buf, v, n + 1);
+    a->n_keys = 0;
+    a->sensitivity = true;
+    for (char *k = strtok(a->buf, ","); k; k = strtok(NULL, ",")) {
+        if (a->n_keys == ACBB_SENS_MAX) return -1;
+        a->keys[a->n_keys++] = k;
+    }
+    return 0;
+}
 
 static int usage(const char *fmt, const char *what)
 {
@@ -397,20 +549,22 @@ static int usage(const char *fmt, const char *what)
     return EXIT_BADINPUT;
 }
 
-/* By hand, as in src/cli.c: four options, no user text reaches a shell. */
+/* By hand, as in src/cli.c: five options, no user text reaches a shell. */
 static int parse(rargs *a, int argc, char **argv)
 {
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i], *v = NULL;
         bool is_set = strncmp(s, "--set", 5) == 0 && (s[5] == '\0' || s[5] == '=');
         bool is_md = strncmp(s, "--md", 4) == 0 && (s[4] == '\0' || s[4] == '=');
-        if (is_set || is_md) {
-            const char *eq = s + (is_set ? 5 : 4);
+        bool is_key = strncmp(s, "--inputs", 8) == 0 && (s[8] == '\0' || s[8] == '=');
+        if (is_set || is_md || is_key) {
+            const char *eq = s + (is_set ? 5 : is_md ? 4 : 8);
             if (*eq == '=') v = eq + 1;
             else if (i + 1 < argc) v = argv[++i];
             else return usage("%s needs a value", s);
             if (is_set) a->sets[a->n_sets++] = v;
-            else a->md = v;
+            else if (!is_key) a->md = v;
+            else if (split_keys(a, v) != 0) return usage("%s: too many inputs", s);
         } else if (strcmp(s, "--json") == 0) {
             a->json = true;
         } else if (strcmp(s, "--sensitivity") == 0) {
@@ -446,6 +600,16 @@ static int load_base(const rargs *a, acbb_scene *s)
     return 0;
 }
 
+/* "robustness: 812 of 1904 runs", at most about four times a second (the
+ * progress line's own redraw clock). */
+static void rob_progress_fn(void *ctx, size_t done, size_t total)
+{
+    acbb_cli_progress *p = ctx;
+    if (acbb_now_ms() - p->last_ms < 250.0) return;
+    p->last_ms = acbb_now_ms();
+    acbb_cli_progress_note(p, "robustness: %zu of %zu runs  (Ctrl-C stops)", done, total);
+}
+
 /* Plan, run and print; the Markdown file is opened before the runs so a
  * bad path fails fast, and replaces FILE only when complete. */
 static int report(const rargs *a, const acbb_scene *base)
@@ -467,21 +631,30 @@ static int report(const rargs *a, const acbb_scene *base)
     const atomic_int *cancel = acbb_cli_interrupt_begin();
     acbb_study_run(st, 0, cancel);
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
-                      NULL, 0, 0 };
-    size_t n_signs;
-    acbb_study_signs(&n_signs);
-    acbb_study_robust *rob = a->sensitivity ? calloc(n_signs, sizeof *rob) : NULL;
+                      NULL };
+    acbb_study_rob rob = { 0 };
+    int rc = EXIT_OK;
     if (a->sensitivity) {
-        double t0 = acbb_now_ms();
-        acbb_status rs = rob ? acbb_study_robustness(base, 0, cancel, rob, &err) : ACBB_ENOMEM;
-        if (rs == ACBB_OK) v.rob = rob, v.n_rob = n_signs, v.rob_ms = acbb_now_ms() - t0;
+        acbb_cli_progress rp;
+        acbb_cli_progress_init(&rp, stderr, 0.0);
+        acbb_study_rob_opts o = { .keys = a->n_keys ? a->keys : NULL, .n_keys = (size_t)a->n_keys,
+                                  .cancel = cancel, .progress = rob_progress_fn, .ctx = &rp };
+        acbb_status rs = acbb_study_robustness(st, &o, &rob, &err);
+        acbb_cli_progress_end(&rp);
+        if (rs == ACBB_OK) v.rob = &rob;
         else fprintf(stderr, "acbb: report: --sensitivity: %s\n",
                      err.msg[0] ? err.msg : acbb_status_name(rs));
+        if (rs == ACBB_EINVAL) rc = EXIT_BADINPUT;
     }
     acbb_cli_interrupt_end();
+    if (rc == EXIT_BADINPUT) {
+        acbb_study_free(st);
+        if (md) acbb_out_abort(md);
+        return rc;
+    }
     if (a->json) print_json(stdout, &v);
     else print_text(stdout, &v);
-    int rc = acbb_study_n_failed(st) ? EXIT_SOLVER : EXIT_OK;
+    rc = acbb_study_n_failed(st) ? EXIT_SOLVER : EXIT_OK;
     if (fflush(stdout) != 0 || ferror(stdout)) rc = EXIT_INTERNAL;
     if (md) {
         print_md(mf, &v);
@@ -491,7 +664,7 @@ static int report(const rargs *a, const acbb_scene *base)
         }
     }
     acbb_study_free(st);
-    free(rob);
+    acbb_study_rob_free(&rob);
     return rc;
 }
 

@@ -6,6 +6,7 @@
  * to the executable (src/cli.c dispatches `report` here).
  *
  *   acbb report PRESET [--set section.key=value]... [--json] [--md FILE]
+ *               [--sensitivity] [--inputs K1,...]
  *
  * Runs (in parallel over the CPUs): the load sweep 50..1000 N at
  * 15000 rpm and the speed sweeps 2000..16000 rpm at 100 N and 1000 N, each
@@ -21,7 +22,12 @@
  * prints instead a JSON array of {item, statement, verdict, level,
  * seed_conclusions, evidence: {checks, values}}. --md FILE also writes the
  * report as Markdown (through acbb_out_*: nothing is replaced unless
- * complete).
+ * complete). --sensitivity adds the robustness of every verdict over the
+ * plausible ranges (acbb_study_robustness: per item, the single changes
+ * that turn it, with the numbers; the TE - WTE sign conditions per input
+ * end), to the text, the JSON (each item's "robustness") and the Markdown;
+ * --inputs K1,... (implies --sensitivity) varies only those inputs, and an
+ * input without a plausible range is bad input (exit 2).
  *
  * Exit status: 0 the report ran (whatever the verdicts: NOT HELD is a
  * finding, not an error); 2 bad input (preset, --set, options, --md path);

@@ -23,12 +23,6 @@ const double acbb_study_loads[ACBB_STUDY_NPTS] = { 50, 100, 150, 200, 400, 600, 
 const double acbb_study_speeds[ACBB_STUDY_NPTS] = { 2000, 4000, 6000, 8000,
                                                     10000, 12000, 14000, 16000 };
 
-struct acbb_study {
-    acbb_scene base;
-    acbb_study_runs runs;
-    size_t n_items;
-    acbb_study_item *items;
-};
 
 /* ---- one run ---- */
 
@@ -92,11 +86,23 @@ static void run_point(acbb_study_point *p, const atomic_int *cancel)
 }
 
 typedef struct {
-    acbb_study_point *pts;
+    acbb_study_point *const *pts;
     size_t n;
     atomic_size_t next;
     const atomic_int *cancel;
+    acbb_study_progress_fn progress; /* may be NULL; called under `lock` */
+    void *ctx;
+    size_t done;
+    pthread_mutex_t lock;
 } pool;
+
+static void count_done(pool *pl)
+{
+    if (!pl->progress) return;
+    pthread_mutex_lock(&pl->lock);
+    pl->progress(pl->ctx, ++pl->done, pl->n);
+    pthread_mutex_unlock(&pl->lock);
+}
 
 static void *pool_worker(void *arg)
 {
@@ -104,13 +110,14 @@ static void *pool_worker(void *arg)
     for (;;) {
         size_t i = atomic_fetch_add(&pl->next, 1);
         if (i >= pl->n) return NULL;
-        acbb_study_point *p = &pl->pts[i];
+        acbb_study_point *p = pl->pts[i];
         if (pl->cancel && atomic_load(pl->cancel) && !p->skip) {
             p->status = ACBB_CANCELLED;
             snprintf(p->message, sizeof p->message, "cancelled before it started");
             continue;
         }
         run_point(p, pl->cancel);
+        count_done(pl);
     }
 }
 
@@ -120,16 +127,36 @@ static size_t n_jobs(int jobs)
     return n < 1 ? 1 : n > MAX_JOBS ? MAX_JOBS : (size_t)n;
 }
 
-static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int *cancel)
+/* One pool over any list of points (the study's own, or every perturbed
+ * study's at once: study_robust.c). */
+void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
+                         const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
-    pool pl = { .pts = pts, .n = n, .cancel = cancel };
+    pool pl = { .pts = pts, .n = n, .cancel = cancel, .progress = progress, .ctx = ctx };
     atomic_init(&pl.next, 0);
+    pthread_mutex_init(&pl.lock, NULL);
     pthread_t tid[MAX_JOBS];
     size_t extra = n_jobs(jobs) - 1, started = 0;
-    for (; started < extra; started++)
+    for (; started < extra && started + 1 < n; started++)
         if (pthread_create(&tid[started], NULL, pool_worker, &pl) != 0) break;
     pool_worker(&pl); /* the calling thread works too */
     for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
+    pthread_mutex_destroy(&pl.lock);
+}
+
+static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int *cancel)
+{
+    acbb_study_point **list = malloc((n ? n : 1) * sizeof *list);
+    if (!list) {
+        for (size_t i = 0; i < n; i++) {
+            pts[i].status = ACBB_ENOMEM;
+            snprintf(pts[i].message, sizeof pts[i].message, "out of memory");
+        }
+        return;
+    }
+    for (size_t i = 0; i < n; i++) list[i] = &pts[i];
+    acbb_study_run_list(list, n, jobs, cancel, NULL, NULL);
+    free(list);
 }
 
 /* ---- planning ---- */
@@ -185,7 +212,7 @@ static size_t fill_level(acbb_study_point *pts, acbb_study_point *blk[ACBB_STUDY
     return i;
 }
 
-static acbb_status plan_runs(acbb_study_runs *r, const acbb_scene *base)
+acbb_status acbb_study_plan_runs(acbb_study_runs *r, const acbb_scene *base)
 {
     int l2_own = base->model != ACBB_MODEL_QUASI_DYNAMIC;
     size_t per_level = ACBB_STUDY_NSWEEPS * 2 * ACBB_STUDY_NPTS;
@@ -214,7 +241,7 @@ acbb_status acbb_study_plan(const acbb_scene *base, acbb_study **out, acbb_error
     acbb_study_table(&n_rows);
     acbb_study *s = calloc(1, sizeof *s);
     if (s) s->items = calloc(n_rows, sizeof *s->items);
-    if (!s || !s->items || plan_runs(&s->runs, base) != ACBB_OK) {
+    if (!s || !s->items || acbb_study_plan_runs(&s->runs, base) != ACBB_OK) {
         acbb_study_free(s);
         if (err) snprintf(err->msg, sizeof err->msg, "study: out of memory");
         *out = NULL;
@@ -280,11 +307,20 @@ void acbb_study_counts(const acbb_study *s, int counts[3])
     for (size_t i = 0; i < s->n_items; i++) counts[s->items[i].verdict]++;
 }
 
+const acbb_scene *acbb_study_scene(const acbb_study *s) { return &s->base; }
+
+void acbb_study_free_runs(acbb_study_runs *r)
+{
+    for (size_t i = 0; r->all && i < r->n; i++) free(r->all[i].traj);
+    free(r->all);
+    r->all = NULL;
+    r->n = 0;
+}
+
 void acbb_study_free(acbb_study *s)
 {
     if (!s) return;
-    for (size_t i = 0; s->runs.all && i < s->runs.n; i++) free(s->runs.all[i].traj);
-    free(s->runs.all);
+    acbb_study_free_runs(&s->runs);
     free(s->items);
     free(s);
 }

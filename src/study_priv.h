@@ -51,6 +51,29 @@ static inline const acbb_study_point *P(const acbb_study_runs *r, int lv, int bl
     return &r->sweep[lv][blk][2 * k + m];
 }
 
+/* ---- the study object and its run set (study.c) ---- */
+
+struct acbb_study {
+    acbb_scene base;
+    acbb_study_runs runs;
+    size_t n_items;
+    acbb_study_item *items;
+};
+
+/* The run set of `base` (nothing runs yet); ACBB_ENOMEM. */
+acbb_status acbb_study_plan_runs(acbb_study_runs *r, const acbb_scene *base);
+void acbb_study_free_runs(acbb_study_runs *r);
+/* Run the listed points on one pool of `jobs` threads; `progress` (may be
+ * NULL) after each finished point, under a lock. */
+void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
+                         const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx);
+
+/* The sign conditions from a run set (study_sens.c): the scene's value
+ * into o (o->sign set), then one end at a time. */
+void acbb_study_sign_base(const acbb_study_runs *r, acbb_study_robust *o);
+void acbb_study_sign_end(const acbb_study_runs *r, const char *key, const char *value,
+                         acbb_study_robust *o);
+
 /* ---- evidence text ---- */
 
 typedef struct {

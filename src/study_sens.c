@@ -1,5 +1,6 @@
 /* acbb — the seed study's sign statements against the plausible ranges
- * (study.h, "robustness"): one one-at-a-time sensitivity per condition.
+ * (study.h, "robustness"): each a TE - WTE difference at one point of the
+ * study's sweeps, read from the same runs as the items (study_robust.c).
  * MODEL.md 13: the heavy-load TE/WTE signs rest on a sub-micron balance,
  * so a verdict is reported together with the single plausible changes that
  * would turn it. */
@@ -8,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/study.h"
-#include "acbb/units.h"
+#include "study_priv.h"
 
 /* Statements of MODEL.md 12 that are the sign of a TE - WTE difference, or
  * a threshold on its relative size, at one load and speed. Item 5's "final >
@@ -60,48 +61,56 @@ static int holds(double y, const acbb_study_sign *c)
     }
 }
 
-static void add_turn(acbb_study_robust *o, const acbb_sens_row *w, const char *end, double y)
+/* The point of the study's sweeps at the condition's load and speed (at
+ * 15000 rpm: the load sweep; else the speed sweep at 100 N or 1000 N), TE
+ * member; NULL if the condition is not on the sweeps. */
+static const acbb_study_point *sign_point(const acbb_study_runs *r, const acbb_study_sign *c)
 {
+    int blk = c->speed_rpm == 15000.0 ? ACBB_STUDY_LOAD
+              : c->load_N == 100.0    ? ACBB_STUDY_S100
+              : c->load_N == 1000.0   ? ACBB_STUDY_S1000 : -1;
+    const double *x = blk == ACBB_STUDY_LOAD ? acbb_study_loads : acbb_study_speeds;
+    double want = blk == ACBB_STUDY_LOAD ? c->load_N : c->speed_rpm;
+    for (int k = 0; blk >= 0 && k < ACBB_STUDY_NPTS; k++)
+        if (x[k] == want) return &r->sweep[ACBB_STUDY_BASE][blk][2 * k + ACBB_STUDY_TE];
+    return NULL;
+}
+
+/* TE - WTE (or its relative size) of the condition's metric from the
+ * runs; 0 when a run failed or the number is undefined. */
+static int sign_value(const acbb_study_runs *r, const acbb_study_sign *c, double *y)
+{
+    const acbb_study_point *te = sign_point(r, c);
+    double a, b;
+    if (!te || !te[0].ok || !te[1].ok) return 0;
+    if (acbb_metric_value(&te[0].last, c->metric, &a, NULL) != ACBB_OK ||
+        acbb_metric_value(&te[1].last, c->metric, &b, NULL) != ACBB_OK)
+        return 0;
+    *y = c->rel ? (a - b) / fabs(b) : a - b;
+    return isfinite(*y);
+}
+
+void acbb_study_sign_base(const acbb_study_runs *r, acbb_study_robust *o)
+{
+    o->ok = sign_value(r, o->sign, &o->y);
+    o->holds = o->ok && holds(o->y, o->sign);
+    if (!o->ok) o->y = 0.0;
+}
+
+/* The end (key = value) with runs r: a turn if the condition's verdict
+ * differs from the scene's; an end without a value counts as failed. */
+void acbb_study_sign_end(const acbb_study_runs *r, const char *key, const char *value,
+                         acbb_study_robust *o)
+{
+    double y;
+    if (!o->ok) return;
+    if (!sign_value(r, o->sign, &y)) {
+        o->failed++;
+        return;
+    }
+    if (holds(y, o->sign) == o->holds || o->n_turns >= 2 * ACBB_SENS_MAX) return;
     acbb_study_turn *t = &o->turns[o->n_turns++];
-    snprintf(t->key, sizeof t->key, "%s", w->in.key);
-    snprintf(t->value, sizeof t->value, "%s", end);
+    snprintf(t->key, sizeof t->key, "%s", key);
+    snprintf(t->value, sizeof t->value, "%s", value);
     t->y = y;
-}
-
-/* The single changes whose end turns the condition, largest effect first. */
-static void collect(const acbb_sens_result *r, acbb_study_robust *o)
-{
-    o->ok = r->ok0;
-    o->y = r->y0;
-    o->holds = r->ok0 && holds(r->y0, o->sign);
-    o->n_inputs = r->n;
-    o->failed = r->failed;
-    o->n_turns = 0;
-    for (size_t i = 0; r->ok0 && i < r->n; i++) {
-        const acbb_sens_row *w = &r->rows[i];
-        if (w->ok_lo && holds(w->y_lo, o->sign) != o->holds) add_turn(o, w, w->in.lo, w->y_lo);
-        if (w->ok_hi && holds(w->y_hi, o->sign) != o->holds) add_turn(o, w, w->in.hi, w->y_hi);
-    }
-}
-
-acbb_status acbb_study_robustness(const acbb_scene *base, int jobs, const atomic_int *cancel,
-                                  acbb_study_robust *out, acbb_error *err)
-{
-    static const size_t n = sizeof k_signs / sizeof k_signs[0];
-    acbb_sens_result *r = malloc(sizeof *r);
-    if (!r) return ACBB_ENOMEM;
-    acbb_status st = ACBB_OK;
-    for (size_t k = 0; k < n && st == ACBB_OK; k++) {
-        acbb_scene sc = *base;
-        sc.axial_load = k_signs[k].load_N;
-        sc.inner_speed = k_signs[k].speed_rpm * ACBB_RPM;
-        acbb_sens_opts o = {.delta_te = 1, .delta_rel = k_signs[k].rel, .oat = 1, .jobs = jobs,
-                            .cancel = cancel};
-        snprintf(o.metric, sizeof o.metric, "%s", k_signs[k].metric);
-        out[k].sign = &k_signs[k];
-        st = acbb_sensitivity_run(&sc, &o, r, err);
-        if (st == ACBB_OK) collect(r, &out[k]);
-    }
-    free(r);
-    return st;
 }

@@ -95,6 +95,50 @@ jq -e '[.. | strings | gsub("-> inf "; " ") | select(test("(^|[^a-z_])-?(nan|inf
     "$TMP/zero.json" >/dev/null 2>&1
 t $? "axial load 0: no nan/inf in any JSON text"
 
+# ---- --sensitivity (robustness) on one input: surroundings.shaft_bore ----
+# (the full run over all 25 inputs is in the slow suite: test_report_sens.sh)
+"$ACBB" report "$PRESET" --sensitivity --inputs surroundings.shaft_bore >"$TMP/sens.txt" 2>"$TMP/err"
+code $? 0 "report --sensitivity --inputs surroundings.shaft_bore runs"
+[ ! -e surroundings.shaft_bore ] && [ ! -e "$TMP/surroundings.shaft_bore" ]
+t $? "--inputs writes no file (its value is not a Markdown path)"
+sed -n '/^Robustness (--sensitivity/,/^The TE - WTE differences/p' "$TMP/sens.txt" |
+    grep -E '^ {0,2}[0-9]{1,2}  (HELD|NOT HELD|NOT EVALUATED); ' | awk '{print $1}' >"$TMP/rnums.txt"
+cmp -s "$TMP/rnums.txt" "$TMP/want.txt"
+t $? "the robustness block lists items 1..18 once each, in order, with a verdict"
+grep -q -E '^ 18  HELD; model-independent sanity item, not varied' "$TMP/sens.txt"
+t $? "item 18 is not varied"
+tr '\n' ' ' <"$TMP/sens.txt" | tr -s ' ' |
+    grep -q -E 'one at a time: 1 inputs, 1 ends \(1 at the scene.s value\), 52 runs'
+t $? "one input, one end (fixed is the scene's own), 52 runs (every point but the zero-speed one)"
+tr '\n' ' ' <"$TMP/sens.txt" | tr -s ' ' | grep -q -F 'surroundings.shaft_bore = convective (1b ok)'
+t $? "item 1: a convective shaft bore turns check 1b (TE > WTE at the large loads)"
+awk 'length > 80 { bad = 1 } END { exit bad }' "$TMP/sens.txt"
+t $? "the robustness text fits 80 columns"
+
+"$ACBB" report "$PRESET" --sensitivity --inputs surroundings.shaft_bore --json >"$TMP/sens.json" 2>"$TMP/err"
+code $? 0 "report --sensitivity --json runs"
+jq -e 'all(.[]; .robustness.inputs == 1 and .robustness.ends == 1 and (.robustness.varied == (.item != 18)))' \
+    "$TMP/sens.json" >/dev/null 2>&1
+t $? "JSON: every item has its robustness (1 input, 1 end), item 18 not varied"
+jq -e '.[4].robustness.changes | map(select(.key == "surroundings.shaft_bore" and .value == "convective")) | .[0].checks | map(.id) | (index("5a") != null and index("5d") != null)' \
+    "$TMP/sens.json" >/dev/null 2>&1
+t $? "JSON: item 5's checks 5a (contact loads rise) and 5d (final > WTE at large loads) change with a convective bore"
+# The known number: P_T(TE) - P_T(WTE) at 15000 rpm, 1000 N with a convective bore, as `acbb run` gives it.
+for M in on off; do
+    "$ACBB" run "$PRESET" --set operating.inner_speed_rpm=15000 --set operating.axial_load_N=1000 \
+        --set surroundings.shaft_bore=convective --set effects.thermal_expansion=$M --json 2>/dev/null |
+        jq -r '.losses_W.total' >"$TMP/pt_$M"
+done
+want=$(awk -v a="$(cat "$TMP/pt_on")" -v b="$(cat "$TMP/pt_off")" 'BEGIN { printf "%.4g", a - b }')
+got=$(jq -r '.[0].robustness.conditions[0].turned_by[] | select(.key == "surroundings.shaft_bore") | .at' "$TMP/sens.json")
+got=$(printf '%.4g' "$got" 2>/dev/null)
+[ -n "$want" ] && [ "$want" = "$got" ]
+t $? "item 1, P_T(TE) - P_T(WTE) at 1000 N with a convective bore: report $got W = acbb run $want W"
+"$ACBB" report "$PRESET" --inputs materials.ball_E_GPa >/dev/null 2>"$TMP/err"
+code $? 2 "--inputs with a key that has no plausible range exits 2"
+grep -q 'materials.ball_E_GPa is not an uncertain input' "$TMP/err"
+t $? "... and says why"
+
 # ---- bad input ----
 "$ACBB" report "$PRESET" --set operating.axial_load_N=abc >/dev/null 2>"$TMP/err"
 code $? 2 "bad --set value exits 2"

@@ -20,18 +20,7 @@
 #include "acbb/study.h"
 #include "acbb/units.h"
 
-#define PRESET "presets/7008C.ini"
-
-static acbb_scene preset(void)
-{
-    acbb_scene s;
-    acbb_error err = { { 0 } };
-    if (acbb_scene_load(PRESET, &s, &err) != ACBB_OK) {
-        printf("Bail out! cannot load %s: %s\n", PRESET, err.msg);
-        exit(1);
-    }
-    return s;
-}
+#include "test_study_preset.h"
 
 /* ---- 1. the check table on constructed results ---- */
 

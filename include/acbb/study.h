@@ -185,14 +185,27 @@ void acbb_study_free(acbb_study *s);
 
 /* ---- robustness over the plausible ranges (sensitivity.h) ----
  *
- * The items whose statement is the sign of a TE - WTE difference, each as a
- * sign condition at one load (15000 rpm, the scene otherwise). For each,
- * the one-at-a-time sensitivity (acbb_sensitivity_run, delta_te) over
- * every uncertain input: whether the condition holds at the scene's values
- * and which single plausible changes would turn it (make a failing
- * condition hold, or a holding one fail). Physics is not changed: this
- * only says how close each verdict is to the uncertain inputs. Items that
- * are a trend over loads or a ratio of two quantities are not checked here. */
+ * MODEL.md 13: several verdicts rest on sub-micron balances, so each is
+ * reported with the single plausible changes that would turn it. For every
+ * uncertain input (acbb_sens_inputs: the schema's plausible ranges, `acbb
+ * keys`) and each end of its range, the study's own run set is run on the
+ * scene with that one change and the whole check table is evaluated there;
+ * an item is "turned" by an end where its verdict differs from the
+ * verdict at the scene's values. Physics is not changed: this only says how
+ * close each verdict is to the uncertain inputs. Item 18 (sanity) is
+ * model-independent and is not varied.
+ *
+ * Sharing (no run is repeated): every perturbed point runs in ONE pool; an
+ * end equal to the scene's value is the scene itself (no runs); a point on
+ * which the input provably has no effect is taken from the base study
+ * instead of run again (study_robust.c lists these cases, each tested
+ * bit-for-bit in tests/test_study_sens.c: the expansion coefficients in a
+ * WTE run, a surroundings film coefficient on a fixed face, phi_p in the
+ * 46-node network); the zero-speed run only serves item 18. */
+
+/* The sign statements of MODEL.md 12 (the sign of a TE - WTE difference, or
+ * a threshold on its relative size, at one load and speed of the study's
+ * sweeps): the difference itself per input end, read from the same runs. */
 typedef struct {
     int item;                    /* MODEL.md 12 item */
     const char *what;            /* "P_T(TE) - P_T(WTE) > 0 at 1000 N" */
@@ -216,16 +229,66 @@ typedef struct {
     const acbb_study_sign *sign;
     int ok;                      /* the scene's run gave a value */
     double y;                    /* the difference at the scene's values */
-    int holds;                   /* sign(y) == want */
-    size_t n_inputs, failed;     /* inputs varied; points without a value */
+    int holds;                   /* the condition holds at y */
+    size_t n_inputs, failed;     /* inputs varied; ends without a value */
     size_t n_turns;
     acbb_study_turn turns[2 * ACBB_SENS_MAX];
 } acbb_study_robust;
 
-/* Run every sign condition (out holds acbb_study_signs' count). `progress`
- * may be NULL. Returns ACBB_OK, ACBB_ENOMEM, ACBB_EINVAL (a scene edit)
- * or ACBB_CANCELLED. */
-acbb_status acbb_study_robustness(const acbb_scene *base, int jobs, const atomic_int *cancel,
-                                  acbb_study_robust *out, acbb_error *err);
+/* One end that turns an item (or leaves it NOT EVALUATED: a run failed),
+ * or only some of its checks (turns_item 0: the item's verdict stays). */
+typedef struct {
+    char key[64], value[64];     /* the input and the end: "surroundings.cap", "convective" */
+    int turns_item;              /* the item's verdict differs from the scene's */
+    acbb_verdict verdict;        /* the item's verdict with that one change */
+    int n_checks;                /* its checks whose verdict differs from the scene's */
+    acbb_study_check checks[ACBB_STUDY_MAX_CHECKS]; /* as evaluated there (the numbers) */
+} acbb_study_flip;
+
+typedef struct {
+    int num;                     /* MODEL.md 12 item */
+    acbb_verdict verdict;        /* at the scene's values */
+    int varied;                  /* 0: item 18, not varied */
+    size_t n_turns;              /* flips with turns_item */
+    size_t n_flips;              /* ends that change any check's verdict */
+    acbb_study_flip *flips;      /* owned by the result; item turns first */
+} acbb_study_item_rob;
+
+/* Called from the pool's threads, one at a time, after each run. */
+typedef void (*acbb_study_progress_fn)(void *ctx, size_t done, size_t total);
+
+typedef struct {
+    const char *const *keys;     /* only these inputs ("section.key"); NULL: all */
+    size_t n_keys;
+    int jobs;                    /* threads (0: one per CPU, at most 16) */
+    const atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
+    const acbb_study_row *rows;  /* the check table (NULL: acbb_study_table) */
+    size_t n_rows;
+    acbb_study_progress_fn progress; /* may be NULL */
+    void *ctx;
+} acbb_study_rob_opts;
+
+typedef struct {
+    size_t n_inputs, n_ends;     /* inputs varied; ends with a scene of their own */
+    size_t n_same;               /* ends equal to the scene's value (nothing to run) */
+    size_t n_runs, n_shared;     /* Sims run; points taken from the base study */
+    size_t n_failed;             /* perturbed runs that did not reach steady state */
+    size_t n_items;
+    acbb_study_item_rob *items;  /* one per row, in table order */
+    size_t n_signs;
+    acbb_study_robust *signs;    /* one per acbb_study_signs row */
+    double wall_ms;
+} acbb_study_rob;
+
+/* Robustness of `base`'s verdicts; `base` must have run (acbb_study_run:
+ * its runs are the reference and are not repeated). Errors: ACBB_EINVAL
+ * (an unknown key in o->keys, a scene edit), ACBB_ENOMEM, ACBB_CANCELLED;
+ * `out` is then empty. Free with acbb_study_rob_free. */
+acbb_status acbb_study_robustness(const acbb_study *base, const acbb_study_rob_opts *o,
+                                  acbb_study_rob *out, acbb_error *err);
+void acbb_study_rob_free(acbb_study_rob *r);
+
+/* The scene `s` was planned from. */
+const acbb_scene *acbb_study_scene(const acbb_study *s);
 
 #endif
