@@ -10,12 +10,14 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "args.h"
+#include "common.h"
 #include "commands.h"
 #include "exit.h"
 #include "presets.h"
 #include "tui.h"
 #include "report.h"
 #include "new.h"
+#include "output.h"
 #include "sweep.h"
 
 #ifndef ACBB_VERSION
@@ -29,6 +31,7 @@ static int cmd_help(const acbb_cli_args *a);
 static int cmd_version(const acbb_cli_args *a);
 static int cmd_tui(const acbb_cli_args *a);
 static int cmd_report(const acbb_cli_args *a);
+static int cmd_metrics(const acbb_cli_args *a);
 
 const acbb_cli_command acbb_cli_commands[] = {
     { "tui", NULL, "[PRESET]", "the terminal workbench (also `acbb` alone)",
@@ -111,6 +114,10 @@ const acbb_cli_command acbb_cli_commands[] = {
       NULL, 0, 0, 1, -1, acbb_cli_cmd_presets },
     { "keys", NULL, "", "every scene key with unit, range and help", NULL, 0, 0, 0, -1,
       acbb_cli_cmd_keys },
+    { "metrics", NULL, "", "every result a --metric can name, with unit and label",
+      "The paths of `acbb run --json` (balls[i]: any ball index), as `acbb sensitivity\n"
+      "--metric` and the TUI's Sweep and Sensitivity screens take them.\n",
+      0, 0, 0, -1, cmd_metrics },
     { "help", NULL, "[COMMAND]", "this overview, or one command's usage", NULL, 0, 0, 2, -1,
       cmd_help },
     { "version", NULL, "", "print the version (also --version)", NULL, 0, 0, 0, -1,
@@ -208,6 +215,13 @@ static int cmd_help(const acbb_cli_args *a)
         found = true;
     }
     return found ? 0 : unknown_command(a->pos[0]);
+}
+
+static int cmd_metrics(const acbb_cli_args *a)
+{
+    (void)a;
+    acbb_cli_list_metrics(stdout);
+    return acbb_cli_stdout_check(0);
 }
 
 static int cmd_version(const acbb_cli_args *a)

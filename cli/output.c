@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/outputs.h"
 #include "acbb/units.h"
 #include "output.h"
 
@@ -160,6 +161,64 @@ static void c_num(acbb_cli_out *o, double v, bool last)
     if (isfinite(v)) fprintf(o->f, "%.10g", v);
     else o->nonfinite++;
     fputc(last ? '\n' : ',', o->f);
+}
+
+/* ---- columns of the output table (outputs.h) ---- */
+
+typedef struct {
+    acbb_output e;
+    int ball;                    /* -1 for a bearing entry */
+} out_col;
+
+#define COL_MAX 64
+
+/* The entries of a static column list: paths of the output table, or
+ * "SECTION.*" for every per-loss entry of a bearing SECTION (a new loss
+ * kind becomes a column by itself). A path the table lacks is a bug. */
+static size_t cols(const char *const *spec, size_t n, out_col *c)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++) {
+        size_t len = strlen(spec[i]);
+        acbb_output e;
+        long k;
+        if (len > 2 && strcmp(spec[i] + len - 2, ".*") == 0) {
+            for (size_t j = 0; acbb_output_get(j, &e) && m < COL_MAX; j++)
+                if (e.loss >= 0 && e.row->scope == ACBB_OUT_BEARING &&
+                    strncmp(e.row->section, spec[i], len - 2) == 0)
+                    c[m++] = (out_col){ e, -1 };
+            continue;
+        }
+        if (m >= COL_MAX || acbb_output_find(spec[i], &e, &k, NULL) != ACBB_OK) abort();
+        c[m++] = (out_col){ e, (int)k };
+    }
+    return m;
+}
+
+static double col_value(const out_col *c, const acbb_snapshot *s)
+{
+    return acbb_output_value(&c->e, s, c->ball);
+}
+
+/* The table's entries of `section` (NULL: the keys directly in a ball) as
+ * JSON numbers, in table order: bearing entries when k < 0, else ball k's. */
+static void j_rows(acbb_cli_out *o, const acbb_snapshot *s, const char *section, int k)
+{
+    acbb_output e;
+    for (size_t i = 0; acbb_output_get(i, &e); i++) {
+        const char *sec = e.row->section;
+        if ((e.row->scope == ACBB_OUT_BALL) != (k >= 0)) continue;
+        if (sec && section ? strcmp(sec, section) != 0 : sec != section) continue;
+        j_num(o, e.key, acbb_output_value(&e, s, k));
+    }
+}
+
+/* A bearing section of the table as a JSON object. */
+static void j_section(acbb_cli_out *o, const acbb_snapshot *s, const char *section)
+{
+    j_open(o, section, '{', false);
+    j_rows(o, s, section, -1);
+    j_close(o, '}');
 }
 
 /* ---- acbb run ---- */
@@ -320,34 +379,12 @@ static void json_scene(acbb_cli_out *o, const acbb_scene *sc)
     j_close(o, '}');
 }
 
-static void json_ball(acbb_cli_out *o, const acbb_ball_view *b)
+static void json_ball(acbb_cli_out *o, const acbb_snapshot *s, int k)
 {
     j_open(o, NULL, '{', true);
-    j_num(o, "psi_deg", acbb_rad_to_deg(b->psi));
-    j_num(o, "Qi_N", b->Qi);
-    j_num(o, "Qo_N", b->Qo);
-    j_num(o, "alpha_i_deg", acbb_rad_to_deg(b->alpha_i));
-    j_num(o, "alpha_o_deg", acbb_rad_to_deg(b->alpha_o));
-    j_num(o, "slide_i_mps", b->slide_i);
-    j_num(o, "slide_o_mps", b->slide_o);
-    j_num(o, "spin_i_radps", b->spin_i);
-    j_num(o, "spin_o_radps", b->spin_o);
-    j_num(o, "film_i_um", b->film_i * CLI_UM);
-    j_num(o, "film_o_um", b->film_o * CLI_UM);
-    j_num(o, "pmax_i_GPa", b->pmax_i * 1e-9);
-    j_num(o, "pmax_o_GPa", b->pmax_o * 1e-9);
-    j_num(o, "a_i_mm", b->a_i * 1e3);
-    j_num(o, "b_i_mm", b->b_i * 1e3);
-    j_num(o, "a_o_mm", b->a_o * 1e3);
-    j_num(o, "b_o_mm", b->b_o * 1e3);
-    j_num(o, "hmin_i_um", b->hmin_i * CLI_UM);
-    j_num(o, "hmin_o_um", b->hmin_o * CLI_UM);
-    j_num(o, "omega_m_radps", b->omega_m);
+    j_rows(o, s, NULL, k);
     j_open(o, "losses_W", '{', true);
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-        if (acbb_loss_table[l].point || acbb_loss_table[l].contact)
-            j_num(o, acbb_loss_table[l].name, b->loss_kind[l]);
-    j_num(o, "total", b->loss);
+    j_rows(o, s, "losses_W", k);
     j_close(o, '}');
     j_close(o, '}');
 }
@@ -356,22 +393,8 @@ static void json_ball(acbb_cli_out *o, const acbb_ball_view *b)
  * 13), the work each part did, and the effects the scene cannot feel. */
 static void json_ring_and_work(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
 {
-    j_open(o, "ring", '{', false);
-    j_num(o, "delta_x_um", s->delta_x * CLI_UM);
-    j_num(o, "delta_z_um", s->delta_z * CLI_UM);
-    j_num(o, "tilt_y_mrad", s->tilt_y * 1e3);
-    j_num(o, "stiffness_axial_N_per_um", s->stiffness_axial * 1e-6);
-    j_num(o, "stiffness_radial_N_per_um", s->stiffness_radial * 1e-6);
-    j_num(o, "stiffness_tilt_Nm_per_mrad", s->stiffness_tilt * 1e-3);
-    j_close(o, '}');
-    const acbb_squeeze *q = &s->squeeze;
-    j_open(o, "squeeze_um", '{', false);
-    j_num(o, "inner_thermal", q->inner_thermal * CLI_UM);
-    j_num(o, "inner_centrifugal", q->inner_centrifugal * CLI_UM);
-    j_num(o, "outer", q->outer * CLI_UM);
-    j_num(o, "ball", q->ball * CLI_UM);
-    j_num(o, "net", q->net * CLI_UM);
-    j_close(o, '}');
+    j_section(o, s, "ring");
+    j_section(o, s, "squeeze_um");
     const acbb_work *w = &s->work;
     j_open(o, "work", '{', false);
     j_long(o, "mechanics_solves", w->mechanics_solves);
@@ -402,42 +425,24 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapsho
     j_num(o, "time_s", s->time);
     j_num(o, "wall_ms", s->wall_ms);
 
-    j_open(o, "losses_W", '{', false);
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-        j_num(o, acbb_loss_table[l].name, s->losses.P[l]);
-    j_num(o, "total", s->losses.total);
-    j_close(o, '}');
+    j_section(o, s, "losses_W");
 
     j_open(o, "temperature_C", '{', false);
-    j_num(o, "outer_ring", s->T_outer_ring);
-    j_num(o, "inner_ring", s->T_inner_ring);
-    j_num(o, "ball", s->T_ball);
-    j_num(o, "housing", s->T_housing);
-    j_num(o, "shaft", s->T_shaft);
-    j_num(o, "cavity", s->T_cavity);
+    j_rows(o, s, "temperature_C", -1);
     j_open(o, "nodes", '[', true);
     for (int i = 0; i < s->n_nodes && i < ACBB_MAX_NODES; i++) j_num(o, NULL, s->T[i]);
     j_close(o, ']');
     j_close(o, '}');
 
-    j_open(o, "expansion_um", '{', false);
-    j_num(o, "ball", s->exp_ball * CLI_UM);
-    j_num(o, "inner_ring", (s->exp_inner + s->exp_inner_cen) * CLI_UM);
-    j_num(o, "outer_ring", s->exp_outer * CLI_UM);
-    j_num(o, "inner_thermal", s->exp_inner * CLI_UM);
-    j_num(o, "inner_centrifugal", s->exp_inner_cen * CLI_UM);
-    j_close(o, '}');
+    j_section(o, s, "expansion_um");
 
     json_ring_and_work(o, sc, s);
 
     j_open(o, "balls", '[', false);
-    for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) json_ball(o, &s->balls[k]);
+    for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) json_ball(o, s, k);
     j_close(o, ']');
 
-    j_open(o, "energy_W", '{', false);
-    j_num(o, "in", s->heat_in);
-    j_num(o, "out", s->heat_out);
-    j_close(o, '}');
+    j_section(o, s, "energy_W");
 
     json_scene(o, sc);
     j_close(o, '}');
@@ -454,78 +459,95 @@ void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
     j_close(o, '}');
 }
 
-void acbb_cli_csv_header(acbb_cli_out *o)
+/* The run CSV's table columns: those before residual_K_s, then those after
+ * (ball 0 for the contacts). exp_inner_um is thermal + centrifugal, as
+ * expansion_um.inner_ring in the JSON (MODEL.md 12.4). */
+static const char *const csv_head[] = {
+    "temperature_C.outer_ring", "temperature_C.inner_ring", "temperature_C.ball", "losses_W.*",
+    "losses_W.total", "balls[0].Qi_N", "balls[0].Qo_N", "balls[0].alpha_i_deg",
+    "balls[0].alpha_o_deg", "expansion_um.ball", "expansion_um.inner_ring",
+    "expansion_um.outer_ring",
+};
+static const char *const csv_tail[] = {
+    "ring.delta_x_um", "ring.delta_z_um", "ring.tilt_y_mrad", "balls[0].film_i_um",
+    "balls[0].film_o_um", "balls[0].hmin_i_um", "balls[0].hmin_o_um",
+    "squeeze_um.inner_thermal", "squeeze_um.inner_centrifugal", "squeeze_um.outer",
+    "squeeze_um.ball", "squeeze_um.net",
+};
+#define NSPEC(a) (sizeof a / sizeof a[0])
+
+/* The flat names of columns c[0..n), each followed by `sep`. */
+static void csv_names(acbb_cli_out *o, const out_col *c, size_t n, const char *sep)
 {
-    fputs("iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,", o->f);
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) fprintf(o->f, "P_%s_W,", acbb_loss_table[l].name);
-    fputs("P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,"
-          "exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,"
-          "hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,"
-          "squeeze_outer_um,squeeze_ball_um,squeeze_net_um\n", o->f);
+    for (size_t i = 0; i < n; i++) {
+        char name[64];
+        acbb_output_flat(&c[i].e, name, sizeof name);
+        fprintf(o->f, "%s%s", name, i + 1 < n ? "," : sep);
+    }
 }
 
-/* exp_inner_um is thermal + centrifugal, as expansion_um.inner_ring in the
- * JSON (the seed compares theta_i + theta_icen with theta_o, MODEL.md 12.4). */
+void acbb_cli_csv_header(acbb_cli_out *o)
+{
+    out_col c[COL_MAX];
+    fputs("iteration,time_s,dt_s,", o->f);
+    csv_names(o, c, cols(csv_head, NSPEC(csv_head), c), ",residual_K_s,");
+    csv_names(o, c, cols(csv_tail, NSPEC(csv_tail), c), "\n");
+}
+
 void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
 {
-    const acbb_ball_view *b = s->n_balls > 0 ? &s->balls[0] : NULL;
+    out_col c[COL_MAX];
     fprintf(o->f, "%ld,", s->iteration);
     c_num(o, s->time, false);
     c_num(o, s->dt, false);
-    c_num(o, s->T_outer_ring, false);
-    c_num(o, s->T_inner_ring, false);
-    c_num(o, s->T_ball, false);
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) c_num(o, s->losses.P[l], false);
-    c_num(o, s->losses.total, false);
-    c_num(o, b ? b->Qi : NAN, false);
-    c_num(o, b ? b->Qo : NAN, false);
-    c_num(o, b ? acbb_rad_to_deg(b->alpha_i) : NAN, false);
-    c_num(o, b ? acbb_rad_to_deg(b->alpha_o) : NAN, false);
-    c_num(o, s->exp_ball * CLI_UM, false);
-    c_num(o, (s->exp_inner + s->exp_inner_cen) * CLI_UM, false);
-    c_num(o, s->exp_outer * CLI_UM, false);
+    size_t n = cols(csv_head, NSPEC(csv_head), c);
+    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), false);
     c_num(o, s->residual, false);
-    const acbb_squeeze *q = &s->squeeze;
-    const double tail[] = { s->delta_x * CLI_UM, s->delta_z * CLI_UM, s->tilt_y * 1e3,
-                            b ? b->film_i * CLI_UM : NAN, b ? b->film_o * CLI_UM : NAN,
-                            b ? b->hmin_i * CLI_UM : NAN, b ? b->hmin_o * CLI_UM : NAN,
-                            q->inner_thermal * CLI_UM, q->inner_centrifugal * CLI_UM,
-                            q->outer * CLI_UM, q->ball * CLI_UM, q->net * CLI_UM };
-    size_t n = sizeof tail / sizeof tail[0];
-    for (size_t i = 0; i < n; i++) c_num(o, tail[i], i + 1 == n);
+    n = cols(csv_tail, NSPEC(csv_tail), c);
+    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n);
+}
+
+void acbb_cli_list_metrics(FILE *f)
+{
+    acbb_output e;
+    fprintf(f, "%-32s %-9s %s\n", "metric", "unit", "what");
+    for (size_t i = 0; acbb_output_get(i, &e); i++) {
+        char path[64];
+        acbb_output_path(&e, "i", path, sizeof path);
+        fprintf(f, "%-32s %-9s %s\n", path, e.unit, e.label);
+    }
 }
 
 /* ---- acbb sweep ---- */
 
-/* The numbers a sweep reports for one point (ball 0 for the contacts). */
+/* The numbers a sweep reports for one point (ball 0 for the contacts):
+ * the columns of sweep_spec, in the order of this enum. */
 enum { SW_T, SW_LOSS0, SW_TOTAL = SW_LOSS0 + ACBB_LOSS_KINDS,
        SW_QI, SW_QO, SW_AI, SW_AO, SW_N };
-static const char *const sweep_fixed[] = { "P_total_W", "Qi_N", "Qo_N", "alpha_i_deg",
-                                           "alpha_o_deg" };
+static const char *const sweep_spec[] = {
+    "temperature_C.outer_ring", "losses_W.*", "losses_W.total", "balls[0].Qi_N",
+    "balls[0].Qo_N", "balls[0].alpha_i_deg", "balls[0].alpha_o_deg",
+};
 
-/* Column k's key: T, one per loss of the table, then the fixed ones. */
+static void sweep_cols(out_col c[COL_MAX])
+{
+    if (cols(sweep_spec, NSPEC(sweep_spec), c) != SW_N) abort(); /* enum and list differ: a bug */
+}
+
+/* Column k's key, the table's flat name ("T_outer_ring_C", "P_spin_W"). */
 static const char *sweep_key(int k, char *buf, size_t cap)
 {
-    if (k == SW_T) return "T_outer_ring_C";
-    if (k < SW_TOTAL) {
-        snprintf(buf, cap, "P_%s_W", acbb_loss_table[k - SW_LOSS0].name);
-        return buf;
-    }
-    return sweep_fixed[k - SW_TOTAL];
+    out_col c[COL_MAX];
+    sweep_cols(c);
+    acbb_output_flat(&c[k].e, buf, cap);
+    return buf;
 }
 
 static void sweep_values(const acbb_cli_point *p, double v[SW_N])
 {
-    const acbb_snapshot *s = &p->snap;
-    const acbb_ball_view *b = &s->balls[0];
-    bool has_ball = s->n_balls > 0;
-    v[SW_T] = s->T_outer_ring;
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) v[SW_LOSS0 + l] = s->losses.P[l];
-    v[SW_TOTAL] = s->losses.total;
-    v[SW_QI] = has_ball ? b->Qi : NAN;
-    v[SW_QO] = has_ball ? b->Qo : NAN;
-    v[SW_AI] = has_ball ? acbb_rad_to_deg(b->alpha_i) : NAN;
-    v[SW_AO] = has_ball ? acbb_rad_to_deg(b->alpha_o) : NAN;
+    out_col c[COL_MAX];
+    sweep_cols(c);
+    for (int k = 0; k < SW_N; k++) v[k] = col_value(&c[k], &p->snap);
 }
 
 static void sweep_failures(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)

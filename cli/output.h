@@ -61,6 +61,9 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
 void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
                           const char *status, const char *message);
 
+/* `acbb metrics`: every output table entry (outputs.h) as "path unit label". */
+void acbb_cli_list_metrics(FILE *f);
+
 /* `acbb run --csv`: one row per coupled step. */
 void acbb_cli_csv_header(acbb_cli_out *o);
 void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *snap);

@@ -1,6 +1,7 @@
 /* acbb TUI — metric menu, units and completion (see picker.h). */
 #include <stdio.h>
 #include <string.h>
+#include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/sensitivity.h"
 #include "picker.h"
@@ -16,34 +17,12 @@ const acbb_metric_item acbb_metric_menu[] = {
 };
 const int acbb_metric_menu_n = (int)(sizeof acbb_metric_menu / sizeof acbb_metric_menu[0]);
 
-/* The units the run's JSON writes at the end of a name (cli output). */
-static int is_unit(const char *s, size_t len)
-{
-    static const char *const units[] = { "W", "C", "N", "deg", "um", "mrad", "mps", "radps", "s" };
-    for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
-        if (strlen(units[i]) == len && strncmp(s, units[i], len) == 0) return 1;
-    return 0;
-}
-
+/* The output table's unit (outputs.h): the one the run's JSON converts to. */
 void acbb_metric_unit(const char *path, char *buf, size_t n)
 {
-    buf[0] = '\0';
-    const char *per = strstr(path, "_per_");
-    if (per) { /* "..._N_per_um": N/um */
-        const char *num = per;
-        while (num > path && num[-1] != '_' && num[-1] != '.') num--;
-        snprintf(buf, n, "%.*s/%s", (int)(per - num), num, per + 5);
-        return;
-    }
-    /* The last name part "..._UNIT" before a '.' or the end. */
-    for (const char *p = path; *p;) {
-        const char *end = strchr(p, '.');
-        if (!end) end = p + strlen(p);
-        const char *u = end;
-        while (u > p && u[-1] != '_') u--;
-        if (u > p && is_unit(u, (size_t)(end - u))) snprintf(buf, n, "%.*s", (int)(end - u), u);
-        p = *end ? end + 1 : end;
-    }
+    acbb_output o;
+    long k;
+    snprintf(buf, n, "%s", acbb_output_find(path, &o, &k, NULL) == ACBB_OK ? o.unit : "");
 }
 
 int acbb_scene_key_name(size_t i, char *buf, size_t n)

@@ -1,6 +1,6 @@
 /* acbb TUI — picking what the what-if screens vary and measure (no curses
  * here): the short menu of metrics both screens cycle through, a metric's
- * unit from its JSON path, and Tab completion of a typed scene key or
+ * unit (the output table's), and Tab completion of a typed scene key or
  * metric path. */
 #ifndef ACBB_UI_PICKER_H
 #define ACBB_UI_PICKER_H
@@ -17,9 +17,9 @@ typedef struct {
 extern const acbb_metric_item acbb_metric_menu[];
 extern const int acbb_metric_menu_n;
 
-/* The unit of a metric path from its JSON names ("losses_W.total": "W",
- * "balls[0].alpha_i_deg": "deg", "ring.stiffness_axial_N_per_um": "N/um");
- * "" when none is named. */
+/* The display unit of a metric path, from the output table (outputs.h:
+ * "losses_W.total": "W", "balls[0].slide_i_mps": "m/s",
+ * "ring.stiffness_axial_N_per_um": "N/um"); "" for an unknown path. */
 void acbb_metric_unit(const char *path, char *buf, size_t n);
 
 /* Name i of the scene keys ("section.key"), as acbb_metric_name does for
