@@ -53,7 +53,7 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_MAX_POINTS] = { "max-points", "N", "run at most N of the remaining points, then stop" },
     [CLI_OPT_METRIC] = { "metric", "M",
                          "a scalar of the run's JSON: losses_W.total, temperature_C.outer_ring, "
-                         "balls[0].Qi_N, squeeze_um.net, ..." },
+                         "balls[0].Qi_N, squeeze_um.net, ... (`acbb metrics` lists them)" },
     [CLI_OPT_DELTA] = { "delta", "thermal_expansion",
                         "the metric's difference TE - WTE (two runs per point)" },
     [CLI_OPT_SENSITIVITY] = { "sensitivity", NULL,

@@ -1,11 +1,13 @@
 /* Tests of the TUI's what-if pieces without a terminal: the metric units
- * and Tab completion (ui/picker.c), the sweep job (ui/whatif.c on ui/job.c):
- * each point equals a direct run of the edited scene, a failed point is
- * recorded and not counted as done-and-ok, a cancel stops a long sweep;
+ * (the output table's, for every entry) and Tab completion (ui/picker.c),
+ * the sweep job (ui/whatif.c on ui/job.c): each point equals a direct run
+ * of the edited scene, a failed point is recorded and not counted as
+ * done-and-ok, a cancel stops a long sweep;
  * and the sensitivity job equals acbb_sensitivity_run called directly. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/outputs.h"
 #include "acbb/sim.h"
 #include "picker.h"
 #include "tap.h"
@@ -17,12 +19,27 @@ static void test_units(void)
         { "losses_W.total", "W" }, { "temperature_C.outer_ring", "C" }, { "balls[0].Qi_N", "N" },
         { "balls[2].alpha_i_deg", "deg" }, { "ring.stiffness_axial_N_per_um", "N/um" },
         { "ring.delta_x_um", "um" }, { "squeeze_um.net", "um" }, { "energy_W.in", "W" },
+        { "balls[1].slide_i_mps", "m/s" }, { "ring.stiffness_tilt_Nm_per_mrad", "N m/mrad" },
+        { "no_such.metric_W", "" },
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char u[16];
         acbb_metric_unit(cases[i][0], u, sizeof u);
         ok(strcmp(u, cases[i][1]) == 0, "unit of %s: '%s' (want %s)", cases[i][0], u, cases[i][1]);
     }
+    /* The TUI shows the output table's unit for every entry (outputs.h). */
+    acbb_output e;
+    size_t n = 0, differ = 0;
+    for (; acbb_output_get(n, &e); n++) {
+        char path[96], u[16];
+        acbb_output_path(&e, "2", path, sizeof path);
+        acbb_metric_unit(path, u, sizeof u);
+        if (strcmp(u, e.unit) != 0 || !u[0]) {
+            differ++;
+            printf("# %s: TUI '%s', table '%s'\n", path, u, e.unit);
+        }
+    }
+    ok(n > 50 && differ == 0, "the TUI's unit is the table's for all %zu entries", n);
     for (int i = 0; i < acbb_metric_menu_n; i++)
         ok(acbb_metric_check(acbb_metric_menu[i].path, NULL) == ACBB_OK, "menu metric %s is a metric",
            acbb_metric_menu[i].path);

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# `acbb metrics`: the output table's listing (outputs.h). Every line is
+# "PATH UNIT LABEL"; known rows carry their units; an unknown --metric
+# points at the listing. (test_outputs checks every path against the JSON.)
+# $1 = the acbb binary.
+. "$(dirname "$0")/tap.sh"
+ACBB=$1
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+"$ACBB" metrics >"$TMP/out" 2>"$TMP/err"
+code $? 0 "acbb metrics runs"
+grep -E -q '^ring\.stiffness_axial_N_per_um +N/um +axial stiffness$' "$TMP/out"
+t $? "ring.stiffness_axial_N_per_um is listed in N/um"
+grep -E -q '^ring\.stiffness_tilt_Nm_per_mrad +N m/mrad ' "$TMP/out"
+t $? "the tilt stiffness is in N m/mrad (a unit with a blank)"
+grep -E -q '^balls\[i\]\.slide_i_mps +m/s ' "$TMP/out"
+t $? "balls[i].slide_i_mps is in m/s"
+grep -E -q '^losses_W\.spin +W +spinning$' "$TMP/out"
+t $? "a loss of the loss table is listed with its label"
+# Every line after the heading: a path, a unit, a label.
+bad=$(tail -n +2 "$TMP/out" | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_]+)+$/ || NF < 3' | wc -l)
+rows=$(tail -n +2 "$TMP/out" | wc -l)
+[ "$bad" -eq 0 ] && [ "$rows" -gt 50 ]
+t $? "$rows rows, each a path with a unit and a label ($bad malformed)"
+"$ACBB" help metrics >"$TMP/help" 2>&1
+has "$TMP/help" "--metric" "acbb help metrics says what the names are for"
+"$ACBB" help >"$TMP/help" 2>&1
+has "$TMP/help" "metrics" "the overview lists the command"
+"$ACBB" metrics extra >/dev/null 2>"$TMP/err"
+code $? 2 "acbb metrics takes no arguments"
+# An unknown metric points the user at the listing.
+"$ACBB" sensitivity presets/7008C.ini --metric ring.nope >/dev/null 2>"$TMP/err"
+code $? 2 "an unknown metric is bad input"
+has "$TMP/err" "acbb metrics" "its message names acbb metrics"
+tap_done
