@@ -165,17 +165,10 @@ static void c_num(acbb_cli_out *o, double v, bool last)
 
 /* ---- columns of the output table (outputs.h) ---- */
 
-typedef struct {
-    acbb_output e;
-    int ball;                    /* -1 for a bearing entry */
-} out_col;
-
-#define COL_MAX 64
-
 /* The entries of a static column list: paths of the output table, or
  * "SECTION.*" for every per-loss entry of a bearing SECTION (a new loss
  * kind becomes a column by itself). A path the table lacks is a bug. */
-static size_t cols(const char *const *spec, size_t n, out_col *c)
+static size_t resolve(const char *const *spec, size_t n, acbb_cli_col *c)
 {
     size_t m = 0;
     for (size_t i = 0; i < n; i++) {
@@ -183,19 +176,36 @@ static size_t cols(const char *const *spec, size_t n, out_col *c)
         acbb_output e;
         long k;
         if (len > 2 && strcmp(spec[i] + len - 2, ".*") == 0) {
-            for (size_t j = 0; acbb_output_get(j, &e) && m < COL_MAX; j++)
+            for (size_t j = 0; acbb_output_get(j, &e) && m < ACBB_CLI_COLS; j++)
                 if (e.loss >= 0 && e.row->scope == ACBB_OUT_BEARING &&
                     strncmp(e.row->section, spec[i], len - 2) == 0)
-                    c[m++] = (out_col){ e, -1 };
+                    c[m++] = (acbb_cli_col){ e, -1 };
             continue;
         }
-        if (m >= COL_MAX || acbb_output_find(spec[i], &e, &k, NULL) != ACBB_OK) abort();
-        c[m++] = (out_col){ e, (int)k };
+        if (m >= ACBB_CLI_COLS || acbb_output_find(spec[i], &e, &k, NULL) != ACBB_OK) abort();
+        c[m++] = (acbb_cli_col){ e, (int)k };
     }
     return m;
 }
 
-static double col_value(const out_col *c, const acbb_snapshot *s)
+/* The columns of `spec`, resolved once per writer (a CSV row per step). */
+#define COLS(o, spec, n) cols(o, spec, sizeof spec / sizeof spec[0], n)
+static const acbb_cli_col *cols(acbb_cli_out *o, const char *const *spec, size_t nspec,
+                                size_t *n)
+{
+    acbb_cli_colset *set = NULL;
+    for (int i = 0; i < ACBB_CLI_COLSETS && !set; i++)
+        if (o->cols[i].spec == spec || !o->cols[i].spec) set = &o->cols[i];
+    if (!set) abort(); /* more lists than ACBB_CLI_COLSETS: a bug */
+    if (!set->spec) {
+        set->n = resolve(spec, nspec, set->c);
+        set->spec = spec;
+    }
+    *n = set->n;
+    return set->c;
+}
+
+static double col_value(const acbb_cli_col *c, const acbb_snapshot *s)
 {
     return acbb_output_value(&c->e, s, c->ball);
 }
@@ -474,10 +484,9 @@ static const char *const csv_tail[] = {
     "squeeze_um.inner_thermal", "squeeze_um.inner_centrifugal", "squeeze_um.outer",
     "squeeze_um.ball", "squeeze_um.net",
 };
-#define NSPEC(a) (sizeof a / sizeof a[0])
 
 /* The flat names of columns c[0..n), each followed by `sep`. */
-static void csv_names(acbb_cli_out *o, const out_col *c, size_t n, const char *sep)
+static void csv_names(acbb_cli_out *o, const acbb_cli_col *c, size_t n, const char *sep)
 {
     for (size_t i = 0; i < n; i++) {
         char name[64];
@@ -488,22 +497,24 @@ static void csv_names(acbb_cli_out *o, const out_col *c, size_t n, const char *s
 
 void acbb_cli_csv_header(acbb_cli_out *o)
 {
-    out_col c[COL_MAX];
+    size_t n;
     fputs("iteration,time_s,dt_s,", o->f);
-    csv_names(o, c, cols(csv_head, NSPEC(csv_head), c), ",residual_K_s,");
-    csv_names(o, c, cols(csv_tail, NSPEC(csv_tail), c), "\n");
+    const acbb_cli_col *c = COLS(o, csv_head, &n);
+    csv_names(o, c, n, ",residual_K_s,");
+    c = COLS(o, csv_tail, &n);
+    csv_names(o, c, n, "\n");
 }
 
 void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
 {
-    out_col c[COL_MAX];
+    size_t n;
     fprintf(o->f, "%ld,", s->iteration);
     c_num(o, s->time, false);
     c_num(o, s->dt, false);
-    size_t n = cols(csv_head, NSPEC(csv_head), c);
+    const acbb_cli_col *c = COLS(o, csv_head, &n);
     for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), false);
     c_num(o, s->residual, false);
-    n = cols(csv_tail, NSPEC(csv_tail), c);
+    c = COLS(o, csv_tail, &n);
     for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n);
 }
 
@@ -529,24 +540,24 @@ static const char *const sweep_spec[] = {
     "balls[0].Qo_N", "balls[0].alpha_i_deg", "balls[0].alpha_o_deg",
 };
 
-static void sweep_cols(out_col c[COL_MAX])
+static const acbb_cli_col *sweep_cols(acbb_cli_out *o)
 {
-    if (cols(sweep_spec, NSPEC(sweep_spec), c) != SW_N) abort(); /* enum and list differ: a bug */
+    size_t n;
+    const acbb_cli_col *c = COLS(o, sweep_spec, &n);
+    if (n != SW_N) abort(); /* enum and list differ: a bug */
+    return c;
 }
 
 /* Column k's key, the table's flat name ("T_outer_ring_C", "P_spin_W"). */
-static const char *sweep_key(int k, char *buf, size_t cap)
+static const char *sweep_key(acbb_cli_out *o, int k, char *buf, size_t cap)
 {
-    out_col c[COL_MAX];
-    sweep_cols(c);
-    acbb_output_flat(&c[k].e, buf, cap);
+    acbb_output_flat(&sweep_cols(o)[k].e, buf, cap);
     return buf;
 }
 
-static void sweep_values(const acbb_cli_point *p, double v[SW_N])
+static void sweep_values(acbb_cli_out *o, const acbb_cli_point *p, double v[SW_N])
 {
-    out_col c[COL_MAX];
-    sweep_cols(c);
+    const acbb_cli_col *c = sweep_cols(o);
     for (int k = 0; k < SW_N; k++) v[k] = col_value(&c[k], &p->snap);
 }
 
@@ -575,7 +586,7 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
             continue;
         }
         double v[SW_N];
-        sweep_values(p, v);
+        sweep_values(o, p, v);
         fprintf(f, "%6ld", p->snap.iteration);
         cell(o, 9, 2, 'f', v[SW_T]);
         cell(o, 9, 2, 'f', v[SW_QI]);
@@ -599,7 +610,7 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
             continue;
         }
         double v[SW_N];
-        sweep_values(p, v);
+        sweep_values(o, p, v);
         for (int l = 0; l < ACBB_LOSS_KINDS; l++)
             if (on[l]) cell(o, 9, 4, 'g', v[SW_LOSS0 + l]);
         cell(o, 9, 4, 'g', v[SW_TOTAL]);
@@ -629,10 +640,10 @@ void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
         j_long(o, "iterations", p->have_snap ? p->snap.iteration : 0);
         j_num(o, "wall_ms", p->wall_ms);
         double v[SW_N];
-        if (p->have_snap) sweep_values(p, v);
+        if (p->have_snap) sweep_values(o, p, v);
         for (int k = 0; k < SW_N; k++) {
             char buf[48];
-            const char *key = sweep_key(k, buf, sizeof buf);
+            const char *key = sweep_key(o, k, buf, sizeof buf);
             if (p->have_snap) j_num(o, key, v[k]);
             else j_null(o, key);
         }
@@ -646,7 +657,7 @@ void acbb_cli_sweep_csv(acbb_cli_out *o, const char *param,
 {
     fprintf(o->f, "%s,status,iterations,wall_ms", param);
     char buf[48];
-    for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s", sweep_key(k, buf, sizeof buf));
+    for (int k = 0; k < SW_N; k++) fprintf(o->f, ",%s", sweep_key(o, k, buf, sizeof buf));
     fputc('\n', o->f);
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
@@ -654,7 +665,7 @@ void acbb_cli_sweep_csv(acbb_cli_out *o, const char *param,
                 p->have_snap ? p->snap.iteration : 0L);
         c_num(o, p->wall_ms, false);
         double v[SW_N];
-        if (p->have_snap) sweep_values(p, v);
+        if (p->have_snap) sweep_values(o, p, v);
         for (int k = 0; k < SW_N; k++) {
             if (p->have_snap) c_num(o, v[k], k == SW_N - 1);
             else fputs(k == SW_N - 1 ? "\n" : ",", o->f);
@@ -734,7 +745,7 @@ static void study_csv_point(acbb_cli_out *o, const acbb_cli_point *p)
     fprintf(o->f, ",%s,%ld", acbb_cli_point_status(p),
             p->have_snap ? p->snap.iteration : 0L);
     double v[SW_N];
-    if (p->have_snap) sweep_values(p, v);
+    if (p->have_snap) sweep_values(o, p, v);
     for (int k = 0; k < SW_N; k++) {
         fputc(',', o->f);
         if (p->have_snap && isfinite(v[k])) fprintf(o->f, "%.10g", v[k]);
@@ -751,7 +762,7 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
         fprintf(o->f, ",%s_status,%s_iterations", mode[m], mode[m]);
         for (int k = 0; k < SW_N; k++) {
             char buf[48];
-            fprintf(o->f, ",%s_%s", mode[m], sweep_key(k, buf, sizeof buf));
+            fprintf(o->f, ",%s_%s", mode[m], sweep_key(o, k, buf, sizeof buf));
         }
     }
     fputs(",dP_total_W\n", o->f);

@@ -11,10 +11,26 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
 #define ACBB_CLI_JSON_DEPTH 8
+#define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
+#define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
+
+/* A flat output's column: an entry of the output table and its ball. */
+typedef struct {
+    acbb_output e;
+    int ball;                            /* -1 for a bearing entry */
+} acbb_cli_col;
+
+/* A column list resolved against the output table, kept for the next row. */
+typedef struct {
+    const char *const *spec;             /* the static list it came from (NULL: free) */
+    size_t n;
+    acbb_cli_col c[ACBB_CLI_COLS];
+} acbb_cli_colset;
 
 typedef struct {
     FILE *f;
@@ -22,6 +38,7 @@ typedef struct {
     int depth;                           /* JSON nesting depth */
     bool first[ACBB_CLI_JSON_DEPTH];     /* no element written yet at depth */
     bool inline_[ACBB_CLI_JSON_DEPTH];   /* container printed on one line */
+    acbb_cli_colset cols[ACBB_CLI_COLSETS];
 } acbb_cli_out;
 
 /* One run of a sweep or study: the scene it ran and what came out. */
