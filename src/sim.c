@@ -20,6 +20,7 @@
 #include "acbb/expansion.h"
 #include "acbb/quasi_dynamic.h"
 #include "acbb/dynamic.h"
+#include "sim_priv.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -799,49 +800,7 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
     return ACBB_OK;
 }
 
-/* ---- snapshot ---- */
-
-static double fin(double v) { return isfinite(v) ? v : 0.0; }
-
-static void ball_view(const acbb_sim *sim, int j, acbb_ball_view *v)
-{
-    const acbb_ball_state *b = &sim->ms.ball[j];
-    const ball_loss *bl = &sim->bl[j];
-    v->psi = b->psi;
-    v->Qi = b->Qi; v->Qo = b->Qo;
-    v->alpha_i = b->alpha_i; v->alpha_o = b->alpha_o;
-    v->slide_i = bl->in.slide; v->slide_o = bl->out.slide;
-    v->spin_i = b->kin.spin_i; v->spin_o = b->kin.spin_o;
-    v->film_i = bl->in.film.hc; v->film_o = bl->out.film.hc;
-    v->pmax_i = b->ct_i.pmax; v->pmax_o = b->ct_o.pmax;
-    v->a_i = b->ct_i.a; v->b_i = b->ct_i.b; v->a_o = b->ct_o.a; v->b_o = b->ct_o.b;
-    v->omega_m = b->kin.omega_m;
-    v->omega_x = b->kin.wx; v->omega_y = b->kin.wy; v->omega_z = b->kin.wz;
-    v->hmin_i = bl->in.film.hmin; v->hmin_o = bl->out.film.hmin;
-    v->loss = 0.0;
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
-        v->loss_kind[l] = fin(bl->in.P[l] + bl->out.P[l]);
-        v->loss += bl->in.P[l] + bl->out.P[l];
-    }
-    /* Last guard only: evaluate() already ended the run on a non-finite value. */
-    double *f[] = { &v->psi, &v->Qi, &v->Qo, &v->alpha_i, &v->alpha_o, &v->slide_i,
-                    &v->slide_o, &v->spin_i, &v->spin_o, &v->film_i, &v->film_o, &v->pmax_i,
-                    &v->pmax_o, &v->a_i, &v->b_i, &v->a_o, &v->b_o, &v->omega_m, &v->omega_x,
-                    &v->omega_y, &v->omega_z, &v->loss, &v->hmin_i, &v->hmin_o };
-    for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) *f[k] = fin(*f[k]);
-}
-
-/* MODEL.md 13: S = theta_i + theta_icen - theta_o + 2 theta_ba cos(alpha). */
-static void squeeze(const acbb_sim *sim, acbb_squeeze *q)
-{
-    const acbb_ball_state *b = &sim->ms.ball[0];
-    double alpha = 0.5 * (b->alpha_i + b->alpha_o);
-    q->inner_thermal = fin(sim->exp.inner);
-    q->inner_centrifugal = fin(sim->exp.inner_cen);
-    q->outer = fin(-sim->exp.outer);
-    q->ball = fin(2.0 * sim->exp.ball * cos(alpha));
-    q->net = q->inner_thermal + q->inner_centrifugal + q->outer + q->ball;
-}
+/* ---- snapshot (the per-ball and squeeze views: sim_snapshot.c) ---- */
 
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
 {
@@ -853,47 +812,41 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->iteration = sim->iter;
     o->time = sim->time;
     o->dt = sim->dt;
-    o->residual = fin(sim->residual);
+    o->residual = acbb_snap_fin(sim->residual);
     o->wall_ms = sim->wall_ms;
     o->n_nodes = nw->n;
     o->node_names = nw->names;
-    for (int i = 0; i < nw->n; i++) o->T[i] = fin(sim->T[i]);
+    for (int i = 0; i < nw->n; i++) o->T[i] = acbb_snap_fin(sim->T[i]);
     acbb_part_temps pt;
     acbb_network_part_temps(nw, sim->T, &pt);
-    o->T_outer_ring = fin(sim->T[nw->node_outer_ring]);
-    o->T_inner_ring = fin(pt.inner_ring);
-    o->T_ball = fin(pt.ball);
-    o->T_housing = fin(pt.housing);
-    o->T_shaft = fin(pt.shaft);
-    o->T_cavity = fin(sim->T[nw->node_cavity]);
+    o->T_outer_ring = acbb_snap_fin(sim->T[nw->node_outer_ring]);
+    o->T_inner_ring = acbb_snap_fin(pt.inner_ring);
+    o->T_ball = acbb_snap_fin(pt.ball);
+    o->T_housing = acbb_snap_fin(pt.housing);
+    o->T_shaft = acbb_snap_fin(pt.shaft);
+    o->T_cavity = acbb_snap_fin(sim->T[nw->node_cavity]);
     const acbb_losses *L = &sim->loss;
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) o->losses.P[l] = fin(L->P[l]);
-    o->losses.total = fin(L->total);
-    o->losses.inner = fin(L->inner);
-    o->losses.outer = fin(L->outer);
-    o->exp_ball = fin(sim->exp.ball);
-    o->exp_inner = fin(sim->exp.inner);
-    o->exp_inner_cen = fin(sim->exp.inner_cen);
-    o->exp_outer = fin(sim->exp.outer);
-    o->delta_x = fin(sim->ms.dx);
-    o->delta_z = fin(sim->ms.dz);
-    o->tilt_y = fin(sim->ms.thy);
-    o->stiffness_axial = fin(sim->K_axial);
-    o->stiffness_radial = fin(sim->K_ring.radial);
-    o->stiffness_tilt = fin(sim->K_ring.tilt);
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) o->losses.P[l] = acbb_snap_fin(L->P[l]);
+    o->losses.total = acbb_snap_fin(L->total);
+    o->losses.inner = acbb_snap_fin(L->inner);
+    o->losses.outer = acbb_snap_fin(L->outer);
+    o->exp_ball = acbb_snap_fin(sim->exp.ball);
+    o->exp_inner = acbb_snap_fin(sim->exp.inner);
+    o->exp_inner_cen = acbb_snap_fin(sim->exp.inner_cen);
+    o->exp_outer = acbb_snap_fin(sim->exp.outer);
+    o->delta_x = acbb_snap_fin(sim->ms.dx);
+    o->delta_z = acbb_snap_fin(sim->ms.dz);
+    o->tilt_y = acbb_snap_fin(sim->ms.thy);
+    o->stiffness_axial = acbb_snap_fin(sim->K_axial);
+    o->stiffness_radial = acbb_snap_fin(sim->K_ring.radial);
+    o->stiffness_tilt = acbb_snap_fin(sim->K_ring.tilt);
     o->work = sim->work;
-    squeeze(sim, &o->squeeze);
-    o->reaction_x = fin(sim->ms.Fx);
-    o->heat_in = fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
+    acbb_snap_squeeze(&sim->exp, &sim->ms.ball[0], &o->squeeze);
+    o->reaction_x = acbb_snap_fin(sim->ms.Fx);
+    o->heat_in = acbb_snap_fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
                      + sim->heat.cavity + sim->heat.cage);
-    o->heat_out = fin(sim->heat_out);
+    o->heat_out = acbb_snap_fin(sim->heat_out);
     o->n_balls = sim->ms.n;
-    for (int j = 0; j < sim->ms.n; j++) ball_view(sim, j, &o->balls[j]);
-}
-
-const char *acbb_run_status_name(const acbb_snapshot *snap)
-{
-    if (snap->state == ACBB_RUN_CONVERGED) return "converged";
-    if (snap->state == ACBB_RUN_RUNNING) return "running";
-    return acbb_status_name(snap->status);
+    for (int j = 0; j < sim->ms.n; j++)
+        acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
 }
