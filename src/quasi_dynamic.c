@@ -17,7 +17,6 @@
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
 #define RES_TOL 1e-10
-#define NIN 6              /* inputs of a ball's solve compared by moved() */
 
 struct acbb_qd {
     acbb_traction_contact ci, co;
@@ -26,8 +25,8 @@ struct acbb_qd {
      * Broyden steps of the next update; J_ok[j] = 0: none yet. */
     double J[ACBB_MAX_BALLS][16];
     int J_ok[ACBB_MAX_BALLS];
-    /* Inputs of each ball's last solve (see moved()); in_ok[j] = 0: none. */
-    double in[ACBB_MAX_BALLS][NIN];
+    /* Inputs of each ball's last solve (acbb_ball_inputs); in_ok[j] = 0: none. */
+    double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
     int in_ok[ACBB_MAX_BALLS];
     double skip_tol;    /* 0: every update solves every ball */
 };
@@ -231,30 +230,6 @@ void acbb_qd_set_skip(acbb_qd *q, double tol)
     q->skip_tol = tol > 0.0 ? tol : 0.0;
 }
 
-/* The inputs of ball j's Level-2 solve that change between thermal steps:
- * both loads, both contact angles and both inlet viscosities (MODEL.md
- * section 4; the speed and the geometry are fixed within a run but for the
- * small thermal expansion, which acts through the loads and angles). */
-static void inputs(const acbb_ball_state *b, const acbb_oil_state *oil_i,
-                   const acbb_oil_state *oil_o, double in[NIN])
-{
-    in[0] = b->Qi; in[1] = b->Qo; in[2] = b->alpha_i; in[3] = b->alpha_o;
-    in[4] = oil_i->eta0; in[5] = oil_o->eta0;
-}
-
-/* Largest move of the inputs since ball j's last solve: relative for the
- * loads and viscosities, in radians for the angles. */
-static double moved(const acbb_qd *q, int j, const double in[NIN])
-{
-    const double *o = q->in[j];
-    double d = 0.0;
-    for (int k = 0; k < NIN; k++) {
-        double scale = (k == 2 || k == 3) ? 1.0 : fmax(fabs(o[k]), 1e-300);
-        d = fmax(d, fabs(in[k] - o[k]) / scale);
-    }
-    return d;
-}
-
 acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                            const acbb_geometry *g, double omega_i,
                            const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
@@ -274,14 +249,16 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         /* Inside a transient step a ball whose inputs barely moved keeps
          * its speeds and tractions (the tractions scale with the load in
          * the ring equilibrium); the steady polish solves every ball. */
-        double in[NIN];
-        inputs(b, oil_i, oil_o, in);
-        if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid && moved(q, j, in) < q->skip_tol)
+        double in[ACBB_BALL_INPUTS];
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, in);
+        if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
+            && acbb_ball_moved(q->in[j], in) < q->skip_tol)
             continue;
         double wm0 = b->kin.omega_m;
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j);
         q->in_ok[j] = rc == ACBB_OK;
-        memcpy(q->in[j], in, sizeof in);
+        /* Recorded after the solve: its speeds are the reference. */
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
                                   "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);

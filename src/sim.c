@@ -31,11 +31,14 @@
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
+#define LOSS_SKIP_TOL 3e-3     /* transient steps: a ball's loss quadrature kept below this move */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 
 typedef struct {
     acbb_contact_loss in, out;
+    double ref[ACBB_BALL_INPUTS]; /* the ball's inputs when in, out were computed */
+    int ref_ok;
 } ball_loss;
 
 /* Everything a step changes, kept so a failed or rejected step can put the
@@ -151,30 +154,52 @@ static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix, double 
     }
 }
 
+/* The losses of ball b's two contacts into bl. Inside a transient step
+ * (skip) a ball whose inputs (acbb_ball_inputs: loads, angles, inlet
+ * viscosities, speeds) moved less than LOSS_SKIP_TOL since its losses were
+ * computed keeps them: the transient path moves by a fraction of that
+ * tolerance (BENCHMARKS.md, "Speed beyond the axial case", round 3) and the
+ * steady polish recomputes every ball (MODEL.md section 9). */
+static acbb_status ball_losses(acbb_sim *sim, const acbb_ball_state *b,
+                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                               int skip, ball_loss *bl)
+{
+    double ref[ACBB_BALL_INPUTS];
+    acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, sim->s.inner_speed, ref);
+    if (skip && bl->ref_ok && acbb_ball_moved(bl->ref, ref) < LOSS_SKIP_TOL)
+        return ACBB_OK;
+    acbb_contact_in ci, co;
+    contact_input(sim, b, 1, &ci);
+    contact_input(sim, b, 0, &co);
+    acbb_status rc = acbb_contact_losses(&sim->s, &sim->quad, &ci, oil_i, &bl->in);
+    if (rc == ACBB_OK)
+        rc = acbb_contact_losses(&sim->s, &sim->quad, &co, oil_o, &bl->out);
+    bl->ref_ok = rc == ACBB_OK;
+    memcpy(bl->ref, ref, sizeof ref);
+    sim->work.loss_quadratures += bl->in.integrated + bl->out.integrated;
+    return rc;
+}
+
 /* Every loss of the table at the current mechanics; fills sim->loss and heat. */
 static acbb_status losses(acbb_sim *sim)
 {
-    const acbb_scene *s = &sim->s;
     acbb_oil_state oil_i, oil_o;
     acbb_mixture mix;
     lubricant(sim, &oil_i, &oil_o, &mix);
     int nb = acbb_mech_distinct(&sim->ms);
+    /* As the Level-2 skip (mechanics()): transient steps of non-symmetric
+     * scenes only, so pure thrust and the steady polish compute every ball. */
+    int skip = sim->transient_pass && !sim->ms.symmetric;
     acbb_losses L = { 0 };
     acbb_heat_sources H = { 0 };
     double wm_sum = 0.0;
     for (int j = 0; j < nb; j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
         double w = acbb_mech_weight(&sim->ms, j);
-        acbb_contact_in ci, co;
-        contact_input(sim, b, 1, &ci);
-        contact_input(sim, b, 0, &co);
         ball_loss *bl = &sim->bl[j];
-        acbb_status rc = acbb_contact_losses(s, &sim->quad, &ci, &oil_i, &bl->in);
-        if (rc == ACBB_OK)
-            rc = acbb_contact_losses(s, &sim->quad, &co, &oil_o, &bl->out);
+        acbb_status rc = ball_losses(sim, b, &oil_i, &oil_o, skip, bl);
         if (rc != ACBB_OK)
             return rc;
-        sim->work.loss_quadratures += bl->in.integrated + bl->out.integrated;
         for (int l = 0; l < ACBB_LOSS_KINDS; l++)
             L.P[l] += w * (bl->in.P[l] + bl->out.P[l]);
         route_contact(&bl->in, w, &H.inner_contact, &H.ball);
