@@ -29,6 +29,7 @@ struct acbb_mech {
     acbb_hertz_mode hertz;
     acbb_geom_mode geom;
     double tol;
+    double hertz_tol;           /* rad: constants kept below this angle move (0: 1e-11) */
     double mu;                  /* friction available for the gyroscopic moment */
     double Fx, Fz, My;          /* applied loads on the IR */
     int fix_axial;
@@ -613,17 +614,22 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
 
 /* ---- Hertz constants at the operating angles ---- */
 
-static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st)
+/* *refreshed: how many balls got new constants. */
+static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st, int *refreshed)
 {
     const acbb_geometry *g = &m->g;
     int nb = acbb_mech_distinct(st);
+    /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad leaves
+     * the constants unchanged to round-off; in transient steps
+     * (acbb_mech_set_transient) hertz_tol keeps them a little longer. */
+    double tol = fmax(m->hertz_tol, 1e-11);
+    *refreshed = 0;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
-        /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad
-         * leaves the constants unchanged to round-off. */
-        if (b->hc_i.Kc > 0.0 && fabs(b->alpha_i - b->hc_alpha_i) < 1e-11
-            && fabs(b->alpha_o - b->hc_alpha_o) < 1e-11)
+        if (b->hc_i.Kc > 0.0 && fabs(b->alpha_i - b->hc_alpha_i) < tol
+            && fabs(b->alpha_o - b->hc_alpha_o) < tol)
             continue;
+        ++*refreshed;
         b->hc_alpha_i = b->alpha_i;
         b->hc_alpha_o = b->alpha_o;
         double Rx, Ry;
@@ -681,7 +687,11 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
      * solve with refreshed constants until the angles stop moving. */
     for (int pass = 0; pass < 8; pass++) {
         double ai = w->ball[0].alpha_i, ao = w->ball[0].alpha_o;
-        if ((rc = refresh_hertz(m, w)) != ACBB_OK) break;
+        int refreshed;
+        if ((rc = refresh_hertz(m, w, &refreshed)) != ACBB_OK) break;
+        /* Transient mode: no constant changed, so a further pass would
+         * solve the same equations again. */
+        if (pass > 0 && refreshed == 0 && m->hertz_tol > 0.0) break;
         if ((rc = solve_ring(m, w)) != ACBB_OK) break;
         if (fabs(w->ball[0].alpha_i - ai) < 1e-11 && fabs(w->ball[0].alpha_o - ao) < 1e-11)
             break;
@@ -778,6 +788,11 @@ void acbb_mech_free(acbb_mech *m)
 
 const acbb_geometry *acbb_mech_geometry(const acbb_mech *m) { return &m->g; }
 
+void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
+{
+    m->hertz_tol = angle_tol > 0.0 ? angle_tol : 0.0;
+}
+
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
 {
     m->fix_axial = fixed;
@@ -800,7 +815,8 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
         b->alpha_i = b->alpha_o = g->alpha0;
         b->control = rc0 == ACBB_RACE_INNER ? ACBB_CONTROL_INNER : ACBB_CONTROL_OUTER;
     }
-    acbb_status rc = refresh_hertz(m, st);
+    int refreshed;
+    acbb_status rc = refresh_hertz(m, st, &refreshed);
     if (rc != ACBB_OK)
         return acbb_error_set(err, rc, "mechanics: Hertz constants failed");
     /* Static thrust guess [HK-EC]: K_n from both contacts, closed-form angle. */

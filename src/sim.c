@@ -31,6 +31,7 @@
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
+#define HERTZ_SKIP_TOL 1e-3    /* rad, transient steps: Hertz constants kept (Kc moves < 6e-5) */
 #define LOSS_SKIP_TOL 3e-3     /* transient steps: a ball's loss quadrature kept below this move */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
@@ -266,6 +267,10 @@ static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
 static acbb_status mech_solve(acbb_sim *sim, acbb_error *err)
 {
     sim->work.mechanics_solves++;
+    /* As the Level-2 and loss skips: transient steps of non-symmetric
+     * scenes only (pure thrust stays as it was, bit for bit). */
+    int skip = sim->transient_pass && !sim->ms.symmetric;
+    acbb_mech_set_transient(sim->mech, skip ? HERTZ_SKIP_TOL : 0.0);
     return acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
 }
 

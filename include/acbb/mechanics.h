@@ -130,6 +130,14 @@ double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB
 /* Copy a state (header and the n balls in use). */
 void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
 
+/* Inside transient thermal steps: each ball keeps its Hertz constants
+ * while its contact angles moved less than angle_tol (rad) since they were
+ * computed (Kc moves ~0.06 per rad, MODEL.md section 3), and a solve ends
+ * when no constant changed. 0 (the default) refreshes them whenever an
+ * angle moved 1e-11 rad, as the set-up, the steady polish and every
+ * independent solve (stiffness) must. */
+void acbb_mech_set_transient(acbb_mech *m, double angle_tol);
+
 /* Fix the axial displacement (displacement-controlled preload) or free it. */
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);
 
