@@ -374,8 +374,8 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, doubl
     }
     if (rc != ACBB_OK)
         return rc;
-    double r[2];
-    ball_polar(&c, z, a, r);
+    /* ball_newton's last evaluation was at the accepted (z, a), so b holds
+     * that state already (no re-evaluation: same bits, one fewer call). */
     b->loaded = b->Qi > LOADED_N || b->Qo > LOADED_N;
     return ACBB_OK;
 }
