@@ -135,6 +135,10 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
     double ab = c->a * c->b, sum[ACBB_LOSS_KINDS] = { 0 }, sumPV = 0, sumP = 0;
     acbb_loss_point pt = { .s = s, .c = c, .film = fl, .oil = oil,
                            .seed = s->loss_form == ACBB_LOSS_SEED };
+    /* The pressure-viscosity law's per-oil part once per contact
+     * (acbb_viscosity_at_pressure is init + eval: the same bits). */
+    acbb_visc_law visc;
+    acbb_visc_law_init(s, oil, &visc);
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
@@ -144,7 +148,7 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
             pt.p = c->pmax * sq * sqrt(1.0 - t * t);
             pt.y = c->b * sq * t;
-            pt.eta = fluid ? acbb_viscosity_at_pressure(s, oil, pt.p) : 0.0;
+            pt.eta = fluid ? acbb_visc_law_eval(&visc, pt.p) : 0.0;
             pt.tauV = fluid ? acbb_tau_lubricant(s, pt.eta, pt.V, fl->hc, pt.p) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
