@@ -1,7 +1,8 @@
 /* acbb — pieces of the mechanics API that need no solver state: the
  * closed-form static thrust angle (an independent reference for the tests
  * and the initial guess), the loss/traction view of one contact and the
- * inputs that decide whether a ball's results can be kept (mechanics.h). Kept apart from the equilibrium solver in mechanics.c. */
+ * inputs that decide whether a ball's results can be kept (mechanics.h).
+ * Kept apart from the equilibrium solver in mechanics.c. */
 #include <math.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -75,14 +76,17 @@ void acbb_ball_inputs(const acbb_ball_state *b, double eta0_i, double eta0_o, do
     }
 }
 
-double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB_BALL_INPUTS])
+const double acbb_ball_loss_weights[ACBB_BALL_INPUTS] = { 1, 1, 3, 3, 1, 1, 100, 100, 100, 100 };
+
+double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB_BALL_INPUTS],
+                       const double *weight)
 {
     double d = 0.0;
     for (int k = 0; k < ACBB_BALL_INPUTS; k++) {
         /* Angles (2, 3) in radians and the scaled speeds (6..9) absolute. */
         int absolute = k == 2 || k == 3 || k >= 6;
         double scale = absolute ? 1.0 : fmax(fabs(from[k]), 1e-300);
-        d = fmax(d, fabs(to[k] - from[k]) / scale);
+        d = fmax(d, (weight ? weight[k] : 1.0) * fabs(to[k] - from[k]) / scale);
     }
     return d;
 }

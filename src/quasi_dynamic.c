@@ -315,7 +315,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         double in[ACBB_BALL_INPUTS];
         acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, in);
         if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
-            && acbb_ball_moved(q->in[j], in) < q->skip_tol)
+            && acbb_ball_moved(q->in[j], in, NULL) < q->skip_tol)
             continue;
         double wm0 = b->kin.omega_m;
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j);

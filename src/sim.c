@@ -169,7 +169,7 @@ static acbb_status ball_losses(acbb_sim *sim, const acbb_ball_state *b,
 {
     double ref[ACBB_BALL_INPUTS];
     acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, sim->s.inner_speed, ref);
-    if (tol > 0.0 && bl->ref_ok && acbb_ball_moved(bl->ref, ref) < tol)
+    if (tol > 0.0 && bl->ref_ok && acbb_ball_moved(bl->ref, ref, acbb_ball_loss_weights) < tol)
         return ACBB_OK;
     acbb_contact_in ci, co;
     contact_input(sim, b, 1, &ci);

@@ -105,12 +105,11 @@ static inline double point_tau(const acbb_scene *s, const acbb_traction_contact 
                                double mag)
 {
     double tau = tc->tb[k];
-    if (tc->phi_f > 0.0)
-        tau += tc->phi_f * (eyring_law(s) ? acbb_eyring_capped(s->tau_eyring, tc->eta[k], mag, tc->H,
-                                                          tc->tlim[k])
-                                          : acbb_tau_lubricant(s, tc->eta[k], mag, tc->H,
-                                                               tc->p[k]));
-    return tau;
+    if (!(tc->phi_f > 0.0)) return tau;
+    double eta = tc->eta[k];
+    return tau + tc->phi_f * (eyring_law(s)
+                                  ? acbb_eyring_capped(s->tau_eyring, eta, mag, tc->H, tc->tlim[k])
+                                  : acbb_tau_lubricant(s, eta, mag, tc->H, tc->p[k]));
 }
 
 void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,

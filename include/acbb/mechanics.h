@@ -122,10 +122,18 @@ void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
 void acbb_ball_inputs(const acbb_ball_state *b, double eta0_i, double eta0_o, double omega_i,
                       double in[ACBB_BALL_INPUTS]);
 
-/* Largest move from inputs `from` to `to`: relative for the loads and
- * viscosities, in radians for the angles, in units of omega_i for the
- * speeds. */
-double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB_BALL_INPUTS]);
+/* Largest weighted move from inputs `from` to `to`: relative for the loads
+ * and viscosities, in radians for the angles, in units of omega_i for the
+ * speeds, each times weight[k] (NULL: all 1, as the Level-2 skip). */
+double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB_BALL_INPUTS],
+                       const double *weight);
+
+/* The weights for a ball's contact losses (MODEL.md section 6): the slip of
+ * a nearly rolling contact is a small difference of ball and race surface
+ * speeds, so its losses move ~100 times faster with the ball speeds and ~3
+ * times faster with the contact angles than with the loads (measured in
+ * tests/test_losses.c). */
+extern const double acbb_ball_loss_weights[ACBB_BALL_INPUTS];
 
 /* Copy a state (header and the n balls in use). */
 void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
