@@ -33,6 +33,7 @@
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
 #define HERTZ_SKIP_TOL 1e-3    /* rad, transient steps: Hertz constants kept (Kc moves < 6e-5) */
 #define LOSS_SKIP_TOL 3e-4     /* transient steps: a ball's loss quadrature kept below this move */
+#define POLISH_SKIP_TOL 1e-9   /* steady polish: the same reuse, below mech_tol (1e-8) */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 
@@ -73,6 +74,7 @@ struct acbb_sim {
     double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_rate;
     int growth_count;
     int transient_pass;        /* 1 while evaluating inside a transient step */
+    int polishing;             /* 1 while evaluating inside the steady polish */
     long iter;
     int quiet;
     acbb_run_state state;
@@ -183,6 +185,17 @@ static acbb_status ball_losses(acbb_sim *sim, const acbb_ball_state *b,
     return rc;
 }
 
+/* Tolerance of the per-ball reuse of Level-2 speeds and losses: `transient`
+ * in transient steps of non-symmetric scenes, POLISH_SKIP_TOL in the steady
+ * polish (a ball whose inputs moved less than the equilibrium resolves
+ * keeps its results; MODEL.md section 9), 0 for pure thrust (one ball,
+ * nothing to gain; its results stay bit for bit) and the set-up. */
+static double skip_tol(const acbb_sim *sim, double transient)
+{
+    if (sim->ms.symmetric) return 0.0;
+    return sim->transient_pass ? transient : sim->polishing ? POLISH_SKIP_TOL : 0.0;
+}
+
 /* Every loss of the table at the current mechanics; fills sim->loss and heat. */
 static acbb_status losses(acbb_sim *sim)
 {
@@ -192,7 +205,7 @@ static acbb_status losses(acbb_sim *sim)
     int nb = acbb_mech_distinct(&sim->ms);
     /* As the Level-2 skip (mechanics()): transient steps of non-symmetric
      * scenes only, so pure thrust and the steady polish compute every ball. */
-    double tol = sim->transient_pass && !sim->ms.symmetric ? LOSS_SKIP_TOL : 0.0;
+    double tol = skip_tol(sim, LOSS_SKIP_TOL);
     acbb_losses L = { 0 };
     acbb_heat_sources H = { 0 };
     double wm_sum = 0.0;
@@ -303,8 +316,7 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
             sim->work.traction_solves++;
             /* Skipping pays only when many distinct balls are solved; with
              * one (pure thrust) it would only perturb the transient path. */
-            int skip = sim->transient_pass && !sim->ms.symmetric;
-            acbb_qd_set_skip(sim->qd, skip ? QD_SKIP_TOL : 0.0);
+            acbb_qd_set_skip(sim->qd, skip_tol(sim, QD_SKIP_TOL));
             rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
                                 sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
         }
@@ -479,7 +491,9 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
         if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
         save(sim, sim->keep);
         memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
+        sim->polishing = 1;
         rc = evaluate(sim, err);
+        sim->polishing = 0;
         if (rc != ACBB_OK) {
             restore(sim, sim->keep); /* the last evaluated iterate stays */
             return rc;
