@@ -10,9 +10,7 @@ static double sum_abs(int n, const double *f)
     return s;
 }
 
-/* Solve J d = -f by Gaussian elimination with partial pivoting; 0 if
- * singular or not finite. */
-static int newton_step(int n, const double *J, const double *f, double *d)
+int acbb_newton_step(int n, const double *J, const double *f, double *d)
 {
     double a[ACBB_BROYDEN_MAX][ACBB_BROYDEN_MAX + 1];
     for (int i = 0; i < n; i++) {
@@ -51,7 +49,7 @@ int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, dou
     for (int it = 0; it < maxit; it++) {
         double r = sum_abs(n, f);
         if (r < tol) return 1;
-        if (!newton_step(n, J, f, d)) return 0;
+        if (!acbb_newton_step(n, J, f, d)) return 0;
         for (int k = 0; k < n; k++) xn[k] = x[k] + d[k];
         if (!fn(xn, ctx, fn_) || !(sum_abs(n, fn_) < r)) return 0;
         /* Good Broyden: J += (df - J d) d^T / (d . d). */

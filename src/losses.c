@@ -5,6 +5,7 @@
 #include <math.h>
 #include <gsl/gsl_integration.h>
 #include "acbb/losses.h"
+#include "acbb/traction.h"
 
 acbb_status acbb_quad_init(acbb_quad *q, int n)
 {
@@ -67,12 +68,20 @@ static double slip_point(const acbb_loss_point *q)
                    : fl->phi_a * mu * q->p * q->V;
 }
 
+/* acbb_tau_lubricant at this point for a slip speed du >= 0: the Eyring
+ * branch inline (acbb_eyring_capped, the same operations and bits). */
+static double point_tau_lub(const acbb_loss_point *q, double du)
+{
+    if (q->eyring) return acbb_eyring_capped(q->s->tau_eyring, q->eta, du, q->H, q->tlim);
+    return acbb_tau_lubricant(q->s, q->eta, du, q->film->hc, q->p);
+}
+
 static double spin_point(const acbb_loss_point *q)
 {
     const acbb_film *fl = q->film;
     double r = hypot(q->x, q->y);
     double us = fabs(q->c->spin) * r;
-    double tauS = fl->phi_f > 0.0 ? acbb_tau_lubricant(q->s, q->eta, us, fl->hc, q->p) : 0.0;
+    double tauS = fl->phi_f > 0.0 ? point_tau_lub(q, us) : 0.0;
     return (fl->phi_a * q->s->mu_bd * q->p + fl->phi_f * tauS) * r;
 }
 
@@ -135,6 +144,12 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
     double ab = c->a * c->b, sum[ACBB_LOSS_KINDS] = { 0 }, sumPV = 0, sumP = 0;
     acbb_loss_point pt = { .s = s, .c = c, .film = fl, .oil = oil,
                            .seed = s->loss_form == ACBB_LOSS_SEED };
+    /* The pressure-viscosity law's per-oil part once per contact
+     * (acbb_viscosity_at_pressure is init + eval: the same bits). */
+    acbb_visc_law visc;
+    acbb_visc_law_init(s, oil, &visc);
+    pt.eyring = s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
+    pt.H = fmax(fl->hc, 1e-9);
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
@@ -144,8 +159,9 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
             pt.p = c->pmax * sq * sqrt(1.0 - t * t);
             pt.y = c->b * sq * t;
-            pt.eta = fluid ? acbb_viscosity_at_pressure(s, oil, pt.p) : 0.0;
-            pt.tauV = fluid ? acbb_tau_lubricant(s, pt.eta, pt.V, fl->hc, pt.p) : 0.0;
+            pt.eta = fluid ? acbb_visc_law_eval(&visc, pt.p) : 0.0;
+            pt.tlim = s->lambda_lim * fmax(pt.p, 0.0);
+            pt.tauV = fluid ? point_tau_lub(&pt, pt.V) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
             for (int l = 0; l < ACBB_LOSS_KINDS; l++)

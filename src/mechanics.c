@@ -29,6 +29,7 @@ struct acbb_mech {
     acbb_hertz_mode hertz;
     acbb_geom_mode geom;
     double tol;
+    double hertz_tol;           /* rad: constants kept below this angle move (0: 1e-11) */
     double mu;                  /* friction available for the gyroscopic moment */
     double Fx, Fz, My;          /* applied loads on the IR */
     int fix_axial;
@@ -38,6 +39,8 @@ struct acbb_mech {
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     double ring_J[MAX_RING_DOF + 1][MAX_RING_DOF * MAX_RING_DOF]; /* last, per DOF count */
     int ring_J_ok[MAX_RING_DOF + 1];
+    double ball_J[ACBB_MAX_BALLS][4]; /* last ball Jacobians (chord steps, transient mode) */
+    int ball_J_ok[ACBB_MAX_BALLS];
     gsl_root_fsolver *brent;
     gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
     /* context of the solve in progress */
@@ -54,6 +57,9 @@ typedef struct {
     double A1, A2;
     acbb_thermal_offsets off;
     double L0;              /* unloaded groove-to-ball-centre length, outer */
+    double *J;              /* NULL or this ball's last Jacobian (z, a), row-major */
+    int *J_ok;
+    int chord;              /* transient mode: try chord steps with J first */
 } ball_ctx;
 
 /* Smoothed Hertz law s(d)^1.5, s(d) = (d + sqrt(d^2 + eps^2)) / 2 with
@@ -171,11 +177,38 @@ static double norm2(const double r[2]) { return r[0] * r[0] + r[1] * r[1]; }
  * difference steps and trust region do not fit the ~1e6:1 contrast between
  * the radial and the angular stiffness. Capped, backtracked steps as in
  * MODEL.md section 3 ("damped Newton"). */
+/* Transient mode: chord steps with the ball's last Jacobian (one
+ * evaluation each instead of three; between thermal steps the ball moves
+ * little). Returns 1 with b at the converged (z, a); 0 if a step does not
+ * lower |r| or three do not converge, with (z, a), r at the last accepted
+ * point and b possibly at a rejected trial. */
+static int ball_chord(const ball_ctx *c, double *z, double *a, double r[2], double tol)
+{
+    const double *J = c->J;
+    double det = J[0] * J[3] - J[1] * J[2];
+    if (det == 0.0 || !isfinite(det)) return 0;
+    for (int it = 0; it < 3; it++) {
+        double dz = -(J[3] * r[0] - J[1] * r[1]) / det;
+        double da = -(J[0] * r[1] - J[2] * r[0]) / det, rt[2];
+        if (!ball_polar(c, *z + dz, *a + da, rt) || !(norm2(rt) < norm2(r))) return 0;
+        *z += dz;
+        *a += da;
+        r[0] = rt[0];
+        r[1] = rt[1];
+        if (fabs(r[0]) <= tol && fabs(r[1]) <= tol) return 1;
+    }
+    return 0;
+}
+
 static acbb_status ball_newton(const ball_ctx *c, double *z, double *a, double tol)
 {
     const double ha = 1e-9, capa = 0.05;
     double r[2], rz[2], ra[2];
     if (!ball_polar(c, *z, *a, r)) return ACBB_NONFINITE;
+    if (c->chord && *c->J_ok && (fabs(r[0]) > tol || fabs(r[1]) > tol)) {
+        if (ball_chord(c, z, a, r, tol)) return ACBB_OK;
+        if (!ball_polar(c, *z, *a, r)) return ACBB_NONFINITE; /* b back at (z, a) */
+    }
     for (int it = 0; it < 100; it++) {
         if (fabs(r[0]) <= tol && fabs(r[1]) <= tol) return ACBB_OK;
         double hz = 1e-7 * fmax(fabs(*z), 1e-3);
@@ -183,6 +216,8 @@ static acbb_status ball_newton(const ball_ctx *c, double *z, double *a, double t
             return ACBB_NONFINITE;
         double J00 = (rz[0] - r[0]) / hz, J10 = (rz[1] - r[1]) / hz;
         double J01 = (ra[0] - r[0]) / ha, J11 = (ra[1] - r[1]) / ha;
+        c->J[0] = J00; c->J[1] = J01; c->J[2] = J10; c->J[3] = J11;
+        *c->J_ok = 1;
         double det = J00 * J11 - J01 * J10;
         if (det == 0.0 || !isfinite(det)) return ACBB_DIVERGED;
         double dz = -(J11 * r[0] - J01 * r[1]) / det;
@@ -344,9 +379,10 @@ static void ball_frame(const acbb_mech *m, const acbb_ball_state *b, double A1, 
     c->A2 = A2 + (c->off.A0 - m->g.A0) * cos(m->g.alpha0) + c->off.dA2;
 }
 
-static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, double A2)
+static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, int j, double A1, double A2)
 {
-    ball_ctx c = { .m = m, .b = b };
+    ball_ctx c = { .m = m, .b = b, .J = m->ball_J[j], .J_ok = &m->ball_J_ok[j],
+                   .chord = m->hertz_tol > 0.0 };
     ball_frame(m, b, A1, A2, &c);
 
     /* Quick exit: no speed and no inner contact possible -> frozen ball. */
@@ -373,8 +409,8 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, double A1, doubl
     }
     if (rc != ACBB_OK)
         return rc;
-    double r[2];
-    ball_polar(&c, z, a, r);
+    /* ball_newton's last evaluation was at the accepted (z, a), so b holds
+     * that state already (no re-evaluation: same bits, one fewer call). */
     b->loaded = b->Qi > LOADED_N || b->Qo > LOADED_N;
     return ACBB_OK;
 }
@@ -400,7 +436,7 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
         acbb_ball_state *b = &st->ball[j];
         double A1, A2;
         ring_offsets(m, st, b->psi, &A1, &A2);
-        acbb_status rc = ball_solve(m, b, A1, A2);
+        acbb_status rc = ball_solve(m, b, j, A1, A2);
         if (rc != ACBB_OK)
             return rc;
         double f[4];
@@ -613,17 +649,22 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
 
 /* ---- Hertz constants at the operating angles ---- */
 
-static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st)
+/* *refreshed: how many balls got new constants. */
+static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st, int *refreshed)
 {
     const acbb_geometry *g = &m->g;
     int nb = acbb_mech_distinct(st);
+    /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad leaves
+     * the constants unchanged to round-off; in transient steps
+     * (acbb_mech_set_transient) hertz_tol keeps them a little longer. */
+    double tol = fmax(m->hertz_tol, 1e-11);
+    *refreshed = 0;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
-        /* Kc varies ~1e-3 per degree: an angle change below 1e-11 rad
-         * leaves the constants unchanged to round-off. */
-        if (b->hc_i.Kc > 0.0 && fabs(b->alpha_i - b->hc_alpha_i) < 1e-11
-            && fabs(b->alpha_o - b->hc_alpha_o) < 1e-11)
+        if (b->hc_i.Kc > 0.0 && fabs(b->alpha_i - b->hc_alpha_i) < tol
+            && fabs(b->alpha_o - b->hc_alpha_o) < tol)
             continue;
+        ++*refreshed;
         b->hc_alpha_i = b->alpha_i;
         b->hc_alpha_o = b->alpha_o;
         double Rx, Ry;
@@ -681,7 +722,11 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
      * solve with refreshed constants until the angles stop moving. */
     for (int pass = 0; pass < 8; pass++) {
         double ai = w->ball[0].alpha_i, ao = w->ball[0].alpha_o;
-        if ((rc = refresh_hertz(m, w)) != ACBB_OK) break;
+        int refreshed;
+        if ((rc = refresh_hertz(m, w, &refreshed)) != ACBB_OK) break;
+        /* Transient mode: no constant changed, so a further pass would
+         * solve the same equations again. */
+        if (pass > 0 && refreshed == 0 && m->hertz_tol > 0.0) break;
         if ((rc = solve_ring(m, w)) != ACBB_OK) break;
         if (fabs(w->ball[0].alpha_i - ai) < 1e-11 && fabs(w->ball[0].alpha_o - ao) < 1e-11)
             break;
@@ -778,6 +823,11 @@ void acbb_mech_free(acbb_mech *m)
 
 const acbb_geometry *acbb_mech_geometry(const acbb_mech *m) { return &m->g; }
 
+void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
+{
+    m->hertz_tol = angle_tol > 0.0 ? angle_tol : 0.0;
+}
+
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
 {
     m->fix_axial = fixed;
@@ -800,7 +850,8 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
         b->alpha_i = b->alpha_o = g->alpha0;
         b->control = rc0 == ACBB_RACE_INNER ? ACBB_CONTROL_INNER : ACBB_CONTROL_OUTER;
     }
-    acbb_status rc = refresh_hertz(m, st);
+    int refreshed;
+    acbb_status rc = refresh_hertz(m, st, &refreshed);
     if (rc != ACBB_OK)
         return acbb_error_set(err, rc, "mechanics: Hertz constants failed");
     /* Static thrust guess [HK-EC]: K_n from both contacts, closed-form angle. */

@@ -1,7 +1,8 @@
 /* acbb — pieces of the mechanics API that need no solver state: the
  * closed-form static thrust angle (an independent reference for the tests
- * and the initial guess) and the loss/traction view of one contact
- * (mechanics.h). Kept apart from the equilibrium solver in mechanics.c. */
+ * and the initial guess), the loss/traction view of one contact and the
+ * inputs that decide whether a ball's results can be kept (mechanics.h).
+ * Kept apart from the equilibrium solver in mechanics.c. */
 #include <math.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -59,4 +60,33 @@ void acbb_mech_contact_input(const acbb_geometry *g, const acbb_ball_state *b, i
     c->pivot = b->kin.wy;
     c->u = inner ? b->kin.u_i : b->kin.u_o;
     c->omega_m = b->kin.omega_m;
+}
+
+void acbb_ball_inputs(const acbb_ball_state *b, double eta0_i, double eta0_o, double omega_i,
+                      double in[ACBB_BALL_INPUTS])
+{
+    double w = omega_i > 0.0 ? omega_i : 1.0;
+    in[0] = b->Qi; in[1] = b->Qo; in[2] = b->alpha_i; in[3] = b->alpha_o;
+    in[4] = eta0_i; in[5] = eta0_o;
+    if (b->traction_valid) {
+        for (int d = 0; d < 4; d++) in[6 + d] = b->qd_w[d] / w;
+    } else {
+        in[6] = b->kin.omega_m / w; in[7] = b->kin.wx / w;
+        in[8] = b->kin.wy / w; in[9] = b->kin.wz / w;
+    }
+}
+
+const double acbb_ball_loss_weights[ACBB_BALL_INPUTS] = { 1, 1, 3, 3, 1, 1, 100, 100, 100, 100 };
+
+double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB_BALL_INPUTS],
+                       const double *weight)
+{
+    double d = 0.0;
+    for (int k = 0; k < ACBB_BALL_INPUTS; k++) {
+        /* Angles (2, 3) in radians and the scaled speeds (6..9) absolute. */
+        int absolute = k == 2 || k == 3 || k >= 6;
+        double scale = absolute ? 1.0 : fmax(fabs(from[k]), 1e-300);
+        d = fmax(d, (weight ? weight[k] : 1.0) * fabs(to[k] - from[k]) / scale);
+    }
+    return d;
 }

@@ -17,7 +17,6 @@
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
 #define RES_TOL 1e-10
-#define NIN 6              /* inputs of a ball's solve compared by moved() */
 
 struct acbb_qd {
     acbb_traction_contact ci, co;
@@ -26,8 +25,8 @@ struct acbb_qd {
      * Broyden steps of the next update; J_ok[j] = 0: none yet. */
     double J[ACBB_MAX_BALLS][16];
     int J_ok[ACBB_MAX_BALLS];
-    /* Inputs of each ball's last solve (see moved()); in_ok[j] = 0: none. */
-    double in[ACBB_MAX_BALLS][NIN];
+    /* Inputs of each ball's last solve (acbb_ball_inputs); in_ok[j] = 0: none. */
+    double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
     int in_ok[ACBB_MAX_BALLS];
     double skip_tol;    /* 0: every update solves every ball */
 };
@@ -60,6 +59,59 @@ static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
     for (int d = 0; d < 4; d++)
         if (!isfinite(gsl_vector_get(f, d))) return GSL_EBADFUNC;
     return GSL_SUCCESS;
+}
+
+/* Residual as qd_f and its Jacobian J (row-major, scaled unknowns) from
+ * the analytic traction derivatives (acbb_traction_eval_jac) with the drag
+ * (F_v ~ omega_m^2) and gyroscopic terms differentiated by hand; c holds
+ * the tractions at x. 0 if the traction law has no analytic derivative or
+ * a value is not finite. */
+static int qd_fj(const double *x, qd_ctx *c, double f[4], double J[16])
+{
+    double wi = c->omega_i, wm = wi * x[0];
+    double wb[3] = { wi * x[1], wi * x[2], wi * x[3] };
+    double dFi[3][4], dMi[3][4], dFo[3][4], dMo[3][4];
+    if (!acbb_traction_eval_jac(c->s, c->ci, wb, wi - wm, &c->tri, dFi, dMi)
+        || !acbb_traction_eval_jac(c->s, c->co, wb, -wm, &c->tro, dFo, dMo))
+        return 0;
+    double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
+    double dFv = wm != 0.0 ? 2.0 * Fv / wm : 0.0;
+    double gy = c->s->gyroscopic ? c->J : 0.0, Ms = c->Fscale * 0.5 * c->D;
+    double Mreq[3] = { 0.0, -gy * wm * wb[2], gy * wm * wb[1] };
+    /* d Mreq / d x: row d, column k (x = (omega_m, wx, wy, wz) / omega_i). */
+    double dMr[3][4] = { { 0 }, { -gy * wi * wb[2], 0.0, 0.0, -gy * wm * wi },
+                         { gy * wi * wb[1], 0.0, gy * wm * wi, 0.0 } };
+    f[0] = (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale;
+    for (int d = 0; d < 3; d++) f[1 + d] = (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms;
+    for (int r = 0; r < 4; r++) {
+        const double *di = r ? dMi[r - 1] : dFi[1], *dd = r ? dMo[r - 1] : dFo[1];
+        double sc = r ? Ms : c->Fscale;
+        /* omega_m enters both race speeds with -1, the ball speeds as is. */
+        J[4 * r] = -wi * (di[3] + dd[3]) + (r ? -dMr[r - 1][0] : wi * dFv);
+        for (int k = 1; k < 4; k++)
+            J[4 * r + k] = wi * (di[k - 1] + dd[k - 1]) - (r ? dMr[r - 1][k] : 0.0);
+        for (int k = 0; k < 4; k++) J[4 * r + k] /= sc;
+    }
+    for (int k = 0; k < 16; k++)
+        if (!isfinite(J[k]) || (k < 4 && !isfinite(f[k]))) return 0;
+    return 1;
+}
+
+/* Newton with the analytic Jacobian from x (transient steps): 1 with x
+ * the root, c's tractions there and J its Jacobian; 0 if the law has no
+ * analytic derivative or a full step does not lower sum |f|. */
+static int newton_analytic(qd_ctx *c, double x[4], double J[16])
+{
+    double f[4], d[4], prev = INFINITY;
+    for (int it = 0; it < 8; it++) {
+        if (!qd_fj(x, c, f, J)) return 0;
+        double r = fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
+        if (r < RES_TOL) return 1;
+        if (!(r < prev) || !acbb_newton_step(4, J, f, d)) return 0;
+        for (int k = 0; k < 4; k++) x[k] += d[k];
+        prev = r;
+    }
+    return 0;
 }
 
 static int qd_df(const gsl_vector *x, void *p, gsl_matrix *J)
@@ -178,16 +230,26 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
  * root. The Jacobian is kept only from a solve at the nominal s_reg. */
 static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4])
 {
-    double J[16], f[4];
+    double J[16], f[4], xa[4];
     if (q->J_ok[j]) {
-        double xb[4];
         memcpy(J, q->J[j], sizeof J);
-        memcpy(xb, x, sizeof xb);
-        if (acbb_broyden(eval, c, 4, J, xb, f, RES_TOL, 8)) {
+        memcpy(xa, x, sizeof xa);
+        if (acbb_broyden(eval, c, 4, J, xa, f, RES_TOL, 8)) {
             memcpy(q->J[j], J, sizeof J);
-            memcpy(x, xb, sizeof xb);
+            memcpy(x, xa, sizeof xa);
             return ACBB_OK;
         }
+    }
+    /* Transient steps (skip_tol > 0, non-symmetric scenes): Newton with
+     * the analytic Jacobian before the hybrid solver (3-4 steps of about
+     * three evaluations each against ~30 evaluations; as the first choice
+     * it cost more than Broyden's ~5.7, BENCHMARKS.md round 3). */
+    memcpy(xa, x, sizeof xa);
+    if (q->skip_tol > 0.0 && newton_analytic(c, xa, J)) {
+        memcpy(q->J[j], J, sizeof J);
+        q->J_ok[j] = 1;
+        memcpy(x, xa, sizeof xa);
+        return ACBB_OK;
     }
     q->J_ok[j] = 0;
     gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, c };
@@ -231,30 +293,6 @@ void acbb_qd_set_skip(acbb_qd *q, double tol)
     q->skip_tol = tol > 0.0 ? tol : 0.0;
 }
 
-/* The inputs of ball j's Level-2 solve that change between thermal steps:
- * both loads, both contact angles and both inlet viscosities (MODEL.md
- * section 4; the speed and the geometry are fixed within a run but for the
- * small thermal expansion, which acts through the loads and angles). */
-static void inputs(const acbb_ball_state *b, const acbb_oil_state *oil_i,
-                   const acbb_oil_state *oil_o, double in[NIN])
-{
-    in[0] = b->Qi; in[1] = b->Qo; in[2] = b->alpha_i; in[3] = b->alpha_o;
-    in[4] = oil_i->eta0; in[5] = oil_o->eta0;
-}
-
-/* Largest move of the inputs since ball j's last solve: relative for the
- * loads and viscosities, in radians for the angles. */
-static double moved(const acbb_qd *q, int j, const double in[NIN])
-{
-    const double *o = q->in[j];
-    double d = 0.0;
-    for (int k = 0; k < NIN; k++) {
-        double scale = (k == 2 || k == 3) ? 1.0 : fmax(fabs(o[k]), 1e-300);
-        d = fmax(d, fabs(in[k] - o[k]) / scale);
-    }
-    return d;
-}
-
 acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                            const acbb_geometry *g, double omega_i,
                            const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
@@ -274,14 +312,16 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         /* Inside a transient step a ball whose inputs barely moved keeps
          * its speeds and tractions (the tractions scale with the load in
          * the ring equilibrium); the steady polish solves every ball. */
-        double in[NIN];
-        inputs(b, oil_i, oil_o, in);
-        if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid && moved(q, j, in) < q->skip_tol)
+        double in[ACBB_BALL_INPUTS];
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, in);
+        if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
+            && acbb_ball_moved(q->in[j], in, NULL) < q->skip_tol)
             continue;
         double wm0 = b->kin.omega_m;
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j);
         q->in_ok[j] = rc == ACBB_OK;
-        memcpy(q->in[j], in, sizeof in);
+        /* Recorded after the solve: its speeds are the reference. */
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
                                   "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);

@@ -76,47 +76,109 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
     return ACBB_OK;
 }
 
-/* acbb_tau_lubricant's Eyring branch (tau_e > 0) with its film floor and
- * limiting stress taken from the tables: the same operations in the same
- * order, so the same bits, without a call and three fmax per point (this
- * is the innermost loop of Level 2). H >= 1e-9 m here, its floor. */
-static inline double eyring_capped(double tau_e, double eta, double mag, double H, double tlim)
+/* Tangential slip sl of ball against race at point k (normal part
+ * removed) for ball angular velocity wb and race speed `race`; returns |sl|. */
+static inline double point_slip(const acbb_traction_contact *tc, int k, const double wb[3],
+                                double race, double sl[3])
 {
-    double tn = eta * (mag / H);
-    if (!(tlim > 0.0) || !(tn > 0.0)) return 0.0;
-    double tau = tau_e * asinh(tn / tau_e);
-    return tau < tlim ? tau : tlim;
+    const double ex[3] = { 1.0, 0.0, 0.0 };
+    const double *P = tc->P + 3 * k;
+    double vb[3], pos[3] = { P[0], P[1], P[2] + tc->rm }, vr[3];
+    cross(wb, P, vb);
+    cross(ex, pos, vr);
+    double sn = 0.0;
+    for (int d = 0; d < 3; d++) {
+        sl[d] = vb[d] - race * vr[d];
+        sn += sl[d] * tc->n[d];
+    }
+    for (int d = 0; d < 3; d++) sl[d] -= sn * tc->n[d];
+    return sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
+}
+
+static inline int eyring_law(const acbb_scene *s)
+{
+    return s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
+}
+
+/* Local traction magnitude at point k for slip speed mag (MODEL.md 5). */
+static inline double point_tau(const acbb_scene *s, const acbb_traction_contact *tc, int k,
+                               double mag)
+{
+    double tau = tc->tb[k];
+    if (!(tc->phi_f > 0.0)) return tau;
+    double eta = tc->eta[k];
+    return tau + tc->phi_f * (eyring_law(s)
+                                  ? acbb_eyring_capped(s->tau_eyring, eta, mag, tc->H, tc->tlim[k])
+                                  : acbb_tau_lubricant(s, eta, mag, tc->H, tc->p[k]));
 }
 
 void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
                         const double wb[3], double race, acbb_traction *out)
 {
     memset(out, 0, sizeof *out);
-    const double ex[3] = { 1.0, 0.0, 0.0 };
-    int eyring = s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
     for (int k = 0; k < tc->np; k++) {
-        const double *P = tc->P + 3 * k;
-        double vb[3], pos[3] = { P[0], P[1], P[2] + tc->rm }, vr[3];
-        cross(wb, P, vb);
-        cross(ex, pos, vr);
-        double sl[3], sn = 0.0;
-        for (int d = 0; d < 3; d++) {
-            sl[d] = vb[d] - race * vr[d];
-            sn += sl[d] * tc->n[d];
-        }
-        for (int d = 0; d < 3; d++) sl[d] -= sn * tc->n[d];
-        double mag = sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
-        double tau = tc->tb[k];
-        if (tc->phi_f > 0.0)
-            tau += tc->phi_f * (eyring ? eyring_capped(s->tau_eyring, tc->eta[k], mag, tc->H,
-                                                       tc->tlim[k])
-                                       : acbb_tau_lubricant(s, tc->eta[k], mag, tc->H, tc->p[k]));
+        double sl[3], mag = point_slip(tc, k, wb, race, sl);
+        double tau = point_tau(s, tc, k, mag);
         double g = -tau * tc->w[k] / sqrt(mag * mag + tc->s_reg * tc->s_reg);
         double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
-        cross(P, f, m);
+        cross(tc->P + 3 * k, f, m);
         for (int d = 0; d < 3; d++) {
             out->F[d] += f[d];
             out->M[d] += m[d];
         }
     }
+}
+
+/* d tau / d mag of point_tau: the Eyring branch below its cap (the
+ * asperity part phi_a mu p does not depend on the slip). */
+static inline double point_dtau(const acbb_scene *s, const acbb_traction_contact *tc, int k,
+                                double mag)
+{
+    if (!(tc->phi_f > 0.0)) return 0.0;
+    double te = s->tau_eyring, tn = tc->eta[k] * (mag / tc->H);
+    if (!(tc->tlim[k] > 0.0) || !(tn > 0.0)) return 0.0;
+    double x = tn / te;
+    if (!(te * asinh(x) < tc->tlim[k])) return 0.0;
+    return tc->phi_f * (tc->eta[k] / tc->H) / sqrt(1.0 + x * x);
+}
+
+int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
+                           const double wb[3], double race, acbb_traction *out,
+                           double dF[3][4], double dM[3][4])
+{
+    memset(out, 0, sizeof *out);
+    memset(dF, 0, sizeof(double) * 12);
+    memset(dM, 0, sizeof(double) * 12);
+    if (tc->phi_f > 0.0 && !eyring_law(s)) return 0;
+    for (int k = 0; k < tc->np; k++) {
+        const double *P = tc->P + 3 * k, *n = tc->n;
+        double sl[3], mag = point_slip(tc, k, wb, race, sl);
+        double tau = point_tau(s, tc, k, mag), R2 = mag * mag + tc->s_reg * tc->s_reg;
+        double R = sqrt(R2), g = -tau * tc->w[k] / R;
+        /* dg/dmag of g = -tau(mag) w / sqrt(mag^2 + s_reg^2). */
+        double dg = -tc->w[k] * (point_dtau(s, tc, k, mag) / R - tau * mag / (R2 * R));
+        double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
+        cross(P, f, m);
+        /* Slip derivatives: d/dwb_j = e_j x P, d/drace = -(e_x x pos),
+         * each with its normal part removed like the slip itself. */
+        double D[4][3] = { { 0.0, -P[2], P[1] }, { P[2], 0.0, -P[0] }, { -P[1], P[0], 0.0 },
+                           { 0.0, P[2] + tc->rm, -P[1] } };
+        for (int j = 0; j < 4; j++) {
+            double dn = D[j][0] * n[0] + D[j][1] * n[1] + D[j][2] * n[2], dmag = 0.0;
+            for (int d = 0; d < 3; d++) D[j][d] -= dn * n[d];
+            if (mag > 0.0) dmag = (sl[0] * D[j][0] + sl[1] * D[j][1] + sl[2] * D[j][2]) / mag;
+            double df[3], dm[3];
+            for (int d = 0; d < 3; d++) df[d] = g * D[j][d] + dg * dmag * sl[d];
+            cross(P, df, dm);
+            for (int d = 0; d < 3; d++) {
+                dF[d][j] += df[d];
+                dM[d][j] += dm[d];
+            }
+        }
+        for (int d = 0; d < 3; d++) {
+            out->F[d] += f[d];
+            out->M[d] += m[d];
+        }
+    }
+    return 1;
 }

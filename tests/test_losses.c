@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include "tap.h"
 #include "acbb/losses.h"
+#include "acbb/mechanics.h"
 
 static void scene_min(acbb_scene *s)
 {
@@ -160,6 +161,83 @@ static void test_table(void)
     ok(acbb_loss_enabled(&s, ACBB_LOSS_CAGE), "effects.loss_cage switches it on");
 }
 
+/* The loss skip of transient steps (sim.c, LOSS_SKIP_TOL = 3e-4) keeps a
+ * ball's losses while its inputs (acbb_ball_inputs: loads, angles, inlet
+ * viscosity, speeds) moved less than tol. Its premise, checked here on a
+ * lubricated contact at 15000 rpm: moving any one input by tol moves every
+ * loss of the contact by at most 3 tol of the contact's total (a kept loss
+ * is that close to the recomputed one). */
+static acbb_status contact_total(const acbb_scene *s, const acbb_quad *q, const acbb_contact_in *c,
+                                 const acbb_oil_state *o, acbb_contact_loss *out, double *tot)
+{
+    acbb_status rc = acbb_contact_losses(s, q, c, o, out);
+    *tot = 0.0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) *tot += out->P[l];
+    return rc;
+}
+
+static void test_skip_bound(void)
+{
+    const double tol = 3e-4, wi = 1570.8;
+    acbb_scene s;
+    acbb_scene_default(&s);
+    acbb_quad q;
+    acbb_quad_init(&q, s.contact_grid);
+    acbb_oil_state oil, o2;
+    acbb_oil_at(&s, 40.0, &oil);
+    acbb_contact_in c = circle(200.0, 0.4e-3, 350.0);
+    c.b = 0.15e-3;
+    c.pmax = 3 * c.Q / (2 * M_PI * c.a * c.b);
+    c.inner = 1;
+    c.roll = 6790.0; /* near rolling: V ~ 0.03 m/s at the centre */
+    c.race = 1570.8 - 670.0;
+    c.u = 22.0;
+    c.omega_m = 670.0;
+    c.pivot = 2.0;
+    acbb_contact_loss L0, L1;
+    double P0, P1, worst = 0.0;
+    acbb_status rc = contact_total(&s, &q, &c, &oil, &L0, &P0);
+    ok(rc == ACBB_OK && P0 > 0.0 && L0.film.phi_f > 0.0,
+       "lubricated inner contact: %.3g W, fluid share %.2f", P0, L0.film.phi_f);
+    for (int k = 0; k < 4; k++) {
+        acbb_contact_in m = c;
+        o2 = oil;
+        /* Each input by tol over its weight (acbb_ball_loss_weights). */
+        const double *wt = acbb_ball_loss_weights;
+        if (k == 0) { /* load: Hertz a, b ~ Q^(1/3), pmax ~ Q^(1/3) */
+            double e = tol / wt[0], g = cbrt(1.0 + e);
+            m.Q *= 1.0 + e; m.a *= g; m.b *= g; m.pmax *= g;
+        } else if (k == 1) {
+            m.alpha += tol / wt[2];
+        } else if (k == 2) {
+            o2.eta0 *= 1.0 + tol / wt[4];
+        } else { /* every speed by tol omega_i / weight */
+            double dw = tol / wt[6] * wi;
+            m.roll += dw; m.race += dw; m.spin += dw; m.pivot += dw; m.omega_m += dw;
+        }
+        contact_total(&s, &q, &m, &o2, &L1, &P1);
+        double w = 0.0;
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+            w = fmax(w, fabs(L1.P[l] - L0.P[l]) / P0);
+        worst = fmax(worst, w);
+    }
+    /* acbb_ball_moved by hand: Qi +1 % (relative), alpha_o 2e-4 rad (x3),
+     * wy 1e-5 omega_i (x100): the largest weighted move is 1e-2. */
+    double a[ACBB_BALL_INPUTS] = { 100, 120, 0.3, 0.28, 0.01, 0.012, 0.4, 0.01, 0.0, 0.9 };
+    double b[ACBB_BALL_INPUTS];
+    memcpy(b, a, sizeof b);
+    b[0] = 101.0; b[3] += 2e-4; b[8] = 1e-5;
+    is_close(acbb_ball_moved(a, b, NULL), 1e-2, 1e-12, 0,
+             "ball inputs moved (unweighted) = 1 % load");
+    is_close(acbb_ball_moved(a, b, acbb_ball_loss_weights), 1e-2, 1e-9, 0,
+             "ball inputs moved (loss weights) = max(1e-2, 3 x 2e-4, 100 x 1e-5)");
+    b[8] = 2e-4;
+    is_close(acbb_ball_moved(a, b, acbb_ball_loss_weights), 2e-2, 1e-9, 0,
+             "a ball speed move of 2e-4 omega_i weighs 2e-2 for the losses");
+    ok(worst <= 3.0 * tol, "an input moved by tol = %.0e (weighted) moves a loss by %.2e of "
+       "the contact total (<= 3 tol: a kept loss is within that of the computed)", tol, worst);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -169,5 +247,6 @@ int main(void)
     test_slip_and_rolling();
     test_slip_field();
     test_drag();
+    test_skip_bound();
     return done_testing();
 }

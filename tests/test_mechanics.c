@@ -299,6 +299,52 @@ static void test_broyden(void)
        "a step that raises the residual is refused, x kept");
 }
 
+/* Transient mode (acbb_mech_set_transient, used by the sim inside thermal
+ * steps of non-symmetric scenes): Hertz constants kept while the angles
+ * moved < 1e-3 rad, chord steps for the balls. From the same warm start
+ * after a 2 % and a 0.5 % speed change, the equilibrium balances the loads to
+ * 1e-6 and every ball load agrees with the exact solve within 1e-4 (Kc
+ * moves ~0.06 per rad: 6e-5 at the tolerance). */
+static void test_transient_mode(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    s.axial_load = 300;
+    s.radial_load = 800;
+    s.inner_speed = 10000 * RPM;
+    acbb_mech *m;
+    acbb_error err;
+    acbb_mech_state st, ex, tr;
+    acbb_mech_new(&s, &m, &err);
+    acbb_status rc = acbb_mech_init_state(m, &st, &err);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, &err);
+    ok(rc == ACBB_OK, "combined load at 10000 rpm: warm start");
+    const double f[2] = { 1.02, 1.005 }; /* angles move past / within 1e-3 rad */
+    for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
+        ex = st;
+        tr = st;
+        double w = f[k] * s.inner_speed;
+        rc = acbb_mech_solve(m, w, NULL, &ex, &err);
+        acbb_mech_set_transient(m, 1e-3);
+        acbb_status rt = rc == ACBB_OK ? acbb_mech_solve(m, w, NULL, &tr, &err) : rc;
+        acbb_mech_set_transient(m, 0.0);
+        ok(rc == ACBB_OK && rt == ACBB_OK, "exact and transient-mode solves at x%.3f speed: %s",
+           f[k], rc || rt ? err.msg : "ok");
+        is_close(tr.Fx, 300, 1e-6, 0, "transient mode: axial force balance to 1e-6");
+        is_close(tr.Fz, 800, 1e-6, 0, "transient mode: radial force balance to 1e-6");
+        double worst = 0.0, moved = 0.0;
+        for (int j = 0; j < st.n; j++) {
+            worst = fmax(worst, fabs(tr.ball[j].Qi - ex.ball[j].Qi) / ex.ball[0].Qi);
+            worst = fmax(worst, fabs(tr.ball[j].Qo - ex.ball[j].Qo) / ex.ball[0].Qo);
+            moved = fmax(moved, fabs(ex.ball[j].alpha_i - st.ball[j].alpha_i));
+        }
+        ok(worst <= 1e-4, "ball loads within %.1e of the exact solve (<= 1e-4; angles moved "
+           "%.1e rad)", worst, moved);
+    }
+    acbb_mech_free(m);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -310,5 +356,6 @@ int main(void)
     test_contact_lost();
     test_mirror();
     test_broyden();
+    test_transient_mode();
     return done_testing();
 }

@@ -20,6 +20,10 @@ typedef int (*acbb_broyden_fn)(const double *x, void *ctx, double *f);
 int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
                  double tol, int maxit);
 
+/* The Newton step: solve J d = -f (J row-major n x n, n <= 4) by Gaussian
+ * elimination with partial pivoting; 0 if J is singular or d not finite. */
+int acbb_newton_step(int n, const double *J, const double *f, double *d);
+
 /* Forward-difference Jacobian at x with f = fn(x) given, steps
  * h_j = rel |x_j| (rel where x_j = 0). Returns 0 on a failed evaluation. */
 int acbb_fd_jacobian(acbb_broyden_fn fn, void *ctx, int n, const double *x, const double *f,

@@ -70,6 +70,9 @@ typedef struct {
     double V;               /* translational slip speed, m/s */
     double eta;             /* pressure viscosity, Pa s (0 without film) */
     double tauV;            /* lubricant shear stress at V, Pa */
+    int eyring;             /* the Eyring law: stresses via acbb_eyring_capped */
+    double H;               /* film thickness floored at 1 nm (acbb_tau_lubricant's floor) */
+    double tlim;            /* limiting stress Lambda_L p, Pa */
 } acbb_loss_point;
 
 /* Whole-bearing inputs of the bearing-level losses. */

@@ -111,8 +111,40 @@ typedef struct { double A1, A2, L0_i, L0_o; } acbb_ball_frame;
 void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
                           acbb_ball_frame *f);
 
+/* What a ball's Level-2 speeds and contact losses depend on between two
+ * thermal steps (MODEL.md sections 4 and 6): both loads, both contact
+ * angles, both inlet viscosities and the four ball speeds (Level 2's when
+ * traction_valid, else race control's) as fractions of omega_i. The speed
+ * and the geometry are fixed within a run but for the small thermal
+ * expansion, which acts through the loads and angles. A solver may keep a
+ * ball's last results while these barely move (acbb_ball_moved). */
+#define ACBB_BALL_INPUTS 10
+void acbb_ball_inputs(const acbb_ball_state *b, double eta0_i, double eta0_o, double omega_i,
+                      double in[ACBB_BALL_INPUTS]);
+
+/* Largest weighted move from inputs `from` to `to`: relative for the loads
+ * and viscosities, in radians for the angles, in units of omega_i for the
+ * speeds, each times weight[k] (NULL: all 1, as the Level-2 skip). */
+double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB_BALL_INPUTS],
+                       const double *weight);
+
+/* The weights for a ball's contact losses (MODEL.md section 6): the slip of
+ * a nearly rolling contact is a small difference of ball and race surface
+ * speeds, so its losses move ~100 times faster with the ball speeds and ~3
+ * times faster with the contact angles than with the loads (measured in
+ * tests/test_losses.c). */
+extern const double acbb_ball_loss_weights[ACBB_BALL_INPUTS];
+
 /* Copy a state (header and the n balls in use). */
 void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
+
+/* Inside transient thermal steps: each ball keeps its Hertz constants
+ * while its contact angles moved less than angle_tol (rad) since they were
+ * computed (Kc moves ~0.06 per rad, MODEL.md section 3), and a solve ends
+ * when no constant changed. 0 (the default) refreshes them whenever an
+ * angle moved 1e-11 rad, as the set-up, the steady polish and every
+ * independent solve (stiffness) must. */
+void acbb_mech_set_transient(acbb_mech *m, double angle_tol);
 
 /* Fix the axial displacement (displacement-controlled preload) or free it. */
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);

@@ -13,6 +13,7 @@
 #include "acbb/losses.h"
 #include "acbb/lubrication.h"
 #include "acbb/scene.h"
+#include <math.h>
 
 typedef struct {
     double F[3];    /* force on the ball, N */
@@ -38,6 +39,19 @@ typedef struct {
 acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid);
 void acbb_traction_contact_free(acbb_traction_contact *tc);
 
+/* acbb_tau_lubricant's Eyring branch (tau_e > 0) with its film floor and
+ * limiting stress taken from the tables: the same operations in the same
+ * order, so the same bits, without a call and three fmax per point (the
+ * innermost loops of Level 2 and of the loss quadrature). H must already
+ * be floored at 1e-9 m and mag >= 0, eta > 0. */
+static inline double acbb_eyring_capped(double tau_e, double eta, double mag, double H, double tlim)
+{
+    double tn = eta * (mag / H);
+    if (!(tlim > 0.0) || !(tn > 0.0)) return 0.0;
+    double tau = tau_e * asinh(tn / tau_e);
+    return tau < tlim ? tau : tlim;
+}
+
 /* Point tables for contact c with film f and inlet oil o. */
 acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
                                   const acbb_contact_in *c, const acbb_film *f,
@@ -47,5 +61,15 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
  * angular speed relative to the orbiting frame `race` (rad/s). */
 void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
                         const double wb[3], double race, acbb_traction *out);
+
+/* The resultants as acbb_traction_eval and their derivatives with respect
+ * to u = (wb[0], wb[1], wb[2], race): dF[i][j] = dF_i/du_j, dM likewise,
+ * summed over the same points (about 1.5 evaluations of work instead of
+ * the 4 more of forward differences). Returns 0 for a traction law without
+ * an analytic derivative here (Bair-Winer, or Eyring with tau_eyring <= 0,
+ * when the film carries load); the caller then differences instead. */
+int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
+                           const double wb[3], double race, acbb_traction *out,
+                           double dF[3][4], double dM[3][4]);
 
 #endif

@@ -1,0 +1,21 @@
+/* acbb — private helpers shared by the stepper (sim.c) and its snapshot
+ * views (sim_snapshot.c); not part of the public API. */
+#ifndef ACBB_SIM_PRIV_H
+#define ACBB_SIM_PRIV_H
+
+#include "acbb/sim.h"
+#include "acbb/mechanics.h"
+#include "acbb/expansion.h"
+#include "acbb/losses.h"
+
+/* v if finite, else 0: the last guard before a value reaches a client. */
+double acbb_snap_fin(double v);
+
+/* Ball b's view with the losses of its inner and outer contact. */
+void acbb_snap_ball_view(const acbb_ball_state *b, const acbb_contact_loss *in,
+                         const acbb_contact_loss *out, acbb_ball_view *v);
+
+/* MODEL.md 13: the radial squeeze of the expansions e at ball b's angles. */
+void acbb_snap_squeeze(const acbb_expansion *e, const acbb_ball_state *b, acbb_squeeze *q);
+
+#endif
