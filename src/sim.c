@@ -32,6 +32,7 @@
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
+#define DYN_SKIP_TOL 1e-2      /* transient steps: settled balls keep speeds below this input move */
 
 typedef struct {
     acbb_contact_loss in, out;
@@ -224,12 +225,14 @@ static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
                                  double *change, acbb_error *err)
 {
     int nb = acbb_mech_distinct(&sim->ms);
+    acbb_dyn_set_skip(sim->dyn, sim->transient_pass ? DYN_SKIP_TOL : 0.0);
     for (int j = 0; j < nb; j++) {
         double window = sim->ms.ball[j].traction_valid ? DYN_WINDOW_WARM : DYN_WINDOW_COLD, c;
-        sim->work.traction_solves++;
+        long before = acbb_dyn_windows(sim->dyn);
         acbb_status rc = acbb_dyn_ball(sim->dyn, sim->mech, &sim->s, &sim->quad,
                                        sim->s.inner_speed, oi, oo, mix, &sim->ms, j, window,
                                        &c, err);
+        sim->work.traction_solves += acbb_dyn_windows(sim->dyn) - before;
         if (rc != ACBB_OK) return rc;
         *change = fmax(*change, c);
     }

@@ -6,7 +6,9 @@
  * oil-air drag. The inner ring is held at its quasi-static position; there
  * is no cage contact (free balls; adequate for pure thrust, where every
  * ball is alike). Integrated with GSL odeiv2's BDF stepper (msbdf), which
- * suits the stiff contact (~3e5 rad/s) and traction (~1e9 1/s) modes.
+ * suits the stiff contact (~3e5 rad/s) and traction (~1e9 1/s) modes; the
+ * traction point tables are prepared at the window start and held over
+ * the window (dynamic.c, start_tables).
  *
  * Its fixed point is the quasi-dynamic solution: at rest in the orbiting
  * frame the equations reduce to the Level-2 balances. The time-averaged
@@ -30,6 +32,16 @@ void acbb_dyn_free(acbb_dyn *d);
 /* Attach the caller's cancel flag (may be NULL): a window in progress ends
  * with ACBB_CANCELLED within one right-hand-side evaluation. */
 void acbb_dyn_set_cancel(acbb_dyn *d, const atomic_int *cancel);
+
+/* Inside transient steps: a ball whose last window had settled (moved
+ * omega_m by less than 1e-6 relative) and whose loads, contact angles and
+ * inlet viscosities moved less than tol (relative; radians for the angles)
+ * since that window keeps its averaged speeds and tractions. 0 (the
+ * default) integrates every call, as the steady polish must. */
+void acbb_dyn_set_skip(acbb_dyn *d, double tol);
+
+/* Windows integrated by this workspace so far (skipped balls not counted). */
+long acbb_dyn_windows(const acbb_dyn *d);
 
 /* Integrate ball j of st for `window` seconds from its current position
  * (at rest) and speeds (qd_w if traction_valid, else the race-control
