@@ -6,27 +6,29 @@
 #include <gsl/gsl_odeiv2.h>
 #include "acbb/dynamic.h"
 #include "acbb/limits.h"
+#include "dynamic_priv.h"
 
 #define NY 8          /* X1, X2 (um), V1, V2 (mm/s), wm, wx, wy, wz (/omega_i) */
 #define FD_STEP 1e-7
-#define TOL 1e-6      /* rtol = atol of the BDF stepper (scaled states; BENCHMARKS.md) */
+#define TOL 1e-4      /* rtol = atol of the BDF stepper on the scaled states (BENCHMARKS.md) */
 #define SETTLED 1e-6  /* a skipped ball's last window moved omega_m less than this */
 #define NIN 6         /* inputs of a ball's window compared by moved() */
 
 struct acbb_dyn {
-    acbb_traction_contact ci, co;
+    int grid, threads, alloc;   /* workers in use; tables allocated for `alloc` */
+    acbb_traction_contact ci[ACBB_DYN_MAX_THREADS], co[ACBB_DYN_MAX_THREADS];
+    long windows[ACBB_DYN_MAX_THREADS]; /* integrated by each worker (acbb_dyn_windows) */
     const atomic_int *cancel;   /* caller's flag, checked in every rhs call */
     double skip_tol;            /* 0: every call integrates (see acbb_dyn_set_skip) */
     /* Inputs of each ball's last window and the relative move of omega_m
      * it made; in_ok[j] = 0: none yet. */
     double in[ACBB_MAX_BALLS][NIN], last[ACBB_MAX_BALLS];
     int in_ok[ACBB_MAX_BALLS];
-    long windows;               /* integrated so far (acbb_dyn_windows) */
 };
 
 typedef struct {
-    acbb_dyn *d;
-    acbb_mech *m;
+    acbb_traction_contact *ci, *co; /* the worker's tables */
+    const atomic_int *cancel;
     const acbb_geometry *g;
     const acbb_scene *s;
     const acbb_quad *quad;
@@ -95,7 +97,7 @@ static int start_tables(dyn_ctx *c, const double y[])
         acbb_mech_contact_input(g, b, inner, wi, &ci);
         acbb_film film;
         double u = fabs(ci.u), srr = u > 1e-6 ? fmin(acbb_slip_speed(&ci, 0.0) / u, 2.0) : 0.0;
-        acbb_traction_contact *tc = inner ? &c->d->ci : &c->d->co;
+        acbb_traction_contact *tc = inner ? c->ci : c->co;
         const acbb_oil_state *oil = inner ? c->oil_i : c->oil_o;
         acbb_film_compute(c->s, oil, u, ci.Q, ci.Rx, ci.kappa, ci.E_eff, ci.pmax, srr, &film);
         if (acbb_traction_prepare(c->s, c->quad, &ci, &film, oil, tc) != ACBB_OK)
@@ -109,15 +111,15 @@ static int rhs(double t, const double y[], double dydt[], void *p)
     (void)t;
     dyn_ctx *c = p;
     /* A window can take seconds: GSL's driver stops at once on a failed rhs. */
-    if (c->d->cancel && atomic_load_explicit(c->d->cancel, memory_order_relaxed))
+    if (c->cancel && atomic_load_explicit(c->cancel, memory_order_relaxed))
         return GSL_EBADFUNC;
     const acbb_geometry *g = c->g;
     acbb_ball_state *b = &c->b;
     double wi = c->omega_i, mass = g->mass, X2 = y[1] * 1e-6, V1 = y[2] * 1e-3, V2 = y[3] * 1e-3;
     double wm = y[4] * wi, wb[3] = { y[5] * wi, y[6] * wi, y[7] * wi }, Fi, Fo;
     contacts_at(c, y, &Fi, &Fo);
-    acbb_traction_eval(c->s, &c->d->ci, wb, wi - wm, &c->tri);
-    acbb_traction_eval(c->s, &c->d->co, wb, -wm, &c->tro);
+    acbb_traction_eval(c->s, c->ci, wb, wi - wm, &c->tri);
+    acbb_traction_eval(c->s, c->co, wb, -wm, &c->tro);
     double r = g->Re_o + X2;
     double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
     /* Meridional forces: normals (inner pushes out along +n, outer in),
@@ -167,13 +169,29 @@ acbb_status acbb_dyn_new(int grid, acbb_dyn **out)
 {
     acbb_dyn *d = calloc(1, sizeof *d);
     if (!d) return ACBB_ENOMEM;
-    if (acbb_traction_contact_init(&d->ci, grid) != ACBB_OK
-        || acbb_traction_contact_init(&d->co, grid) != ACBB_OK) {
+    d->grid = grid;
+    if (acbb_dyn_set_threads(d, 1) != ACBB_OK) {
         acbb_dyn_free(d);
         return ACBB_ENOMEM;
     }
     *out = d;
     return ACBB_OK;
+}
+
+acbb_status acbb_dyn_set_threads(acbb_dyn *d, int n)
+{
+    if (n < 1 || n > ACBB_DYN_MAX_THREADS) return ACBB_EINVAL;
+    for (; d->alloc < n; d->alloc++)
+        if (acbb_traction_contact_init(&d->ci[d->alloc], d->grid) != ACBB_OK
+            || acbb_traction_contact_init(&d->co[d->alloc], d->grid) != ACBB_OK)
+            return ACBB_ENOMEM; /* a half-made worker is freed by acbb_dyn_free */
+    d->threads = n;
+    return ACBB_OK;
+}
+
+int acbb_dyn_threads(const acbb_dyn *d)
+{
+    return d->threads;
 }
 
 void acbb_dyn_set_cancel(acbb_dyn *d, const atomic_int *cancel)
@@ -219,14 +237,18 @@ static int skip_ball(const acbb_dyn *d, int j, const acbb_ball_state *b, const d
 
 long acbb_dyn_windows(const acbb_dyn *d)
 {
-    return d->windows;
+    long n = 0;
+    for (int w = 0; w < ACBB_DYN_MAX_THREADS; w++) n += d->windows[w];
+    return n;
 }
 
 void acbb_dyn_free(acbb_dyn *d)
 {
     if (!d) return;
-    acbb_traction_contact_free(&d->ci);
-    acbb_traction_contact_free(&d->co);
+    for (int w = 0; w < ACBB_DYN_MAX_THREADS; w++) {
+        acbb_traction_contact_free(&d->ci[w]);
+        acbb_traction_contact_free(&d->co[w]);
+    }
     free(d);
 }
 
@@ -236,19 +258,31 @@ acbb_status acbb_dyn_ball(acbb_dyn *d, acbb_mech *m, const acbb_scene *s,
                           const acbb_mixture *mix, acbb_mech_state *st, int j,
                           double window, double *change, acbb_error *err)
 {
+    acbb_dyn_env env = { m, s, quad, omega_i, oil_i, oil_o, mix };
+    return acbb_dyn_ball_on(d, 0, &env, st, j, window, change, err);
+}
+
+/* Ball j on worker w's tables (the skip record of ball j is only touched by
+ * the worker that has ball j). */
+acbb_status acbb_dyn_ball_on(acbb_dyn *d, int w, const acbb_dyn_env *env, acbb_mech_state *st,
+                             int j, double window, double *change, acbb_error *err)
+{
     acbb_ball_state *b = &st->ball[j];
+    double omega_i = env->omega_i;
     *change = 0.0;
     if (omega_i <= 0.0 || b->Qi < 1e-3 || b->Qo < 1e-3) {
         if (j < ACBB_MAX_BALLS) d->in_ok[j] = 0;
         return ACBB_OK;
     }
     double in[NIN];
-    inputs(b, oil_i, oil_o, in);
+    inputs(b, env->oil_i, env->oil_o, in);
     if (skip_ball(d, j, b, in)) return ACBB_OK;
-    d->windows++;
-    dyn_ctx c = { .d = d, .m = m, .g = acbb_mech_geometry(m), .s = s, .quad = quad,
-                  .oil_i = oil_i, .oil_o = oil_o, .mix = mix, .b = *b, .omega_i = omega_i };
-    acbb_mech_ball_frame(m, st, j, &c.fr);
+    d->windows[w]++;
+    dyn_ctx c = { .ci = &d->ci[w], .co = &d->co[w], .cancel = d->cancel,
+                  .g = acbb_mech_geometry(env->m), .s = env->s, .quad = env->quad,
+                  .oil_i = env->oil_i, .oil_o = env->oil_o, .mix = env->mix, .b = *b,
+                  .omega_i = omega_i };
+    acbb_mech_ball_frame(env->m, st, j, &c.fr);
     const double *w0 = b->traction_valid ? b->qd_w : NULL;
     double y[NY] = { b->X1 * 1e6, b->X2 * 1e6, 0.0, 0.0,
                      (w0 ? w0[0] : b->kin.omega_m) / omega_i, (w0 ? w0[1] : b->kin.wx) / omega_i,

@@ -24,10 +24,29 @@
 
 #define ACBB_DYN_DAMPING 0.1   /* contact damping, fraction of critical (ASSUMED) */
 
+#define ACBB_DYN_MAX_THREADS 8
+
 typedef struct acbb_dyn acbb_dyn;
+
+/* What every ball's window reads (all borrowed, read-only during a call). */
+typedef struct {
+    acbb_mech *m;
+    const acbb_scene *s;
+    const acbb_quad *quad;
+    double omega_i;                       /* inner-ring speed, rad/s */
+    const acbb_oil_state *oil_i, *oil_o;  /* inlet oil of each race */
+    const acbb_mixture *mix;              /* oil-air mixture for the drag */
+} acbb_dyn_env;
 
 acbb_status acbb_dyn_new(int grid, acbb_dyn **out);
 void acbb_dyn_free(acbb_dyn *d);
+
+/* Worker threads for acbb_dyn_balls, 1..ACBB_DYN_MAX_THREADS (default 1);
+ * ACBB_EINVAL outside that range, ACBB_ENOMEM if the tables of a new
+ * worker cannot be allocated. The results do not depend on it: every ball
+ * is integrated alone on one worker's tables. */
+acbb_status acbb_dyn_set_threads(acbb_dyn *d, int n);
+int acbb_dyn_threads(const acbb_dyn *d);
 
 /* Attach the caller's cancel flag (may be NULL): a window in progress ends
  * with ACBB_CANCELLED within one right-hand-side evaluation. */
@@ -53,5 +72,13 @@ acbb_status acbb_dyn_ball(acbb_dyn *d, acbb_mech *m, const acbb_scene *s,
                           const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
                           const acbb_mixture *mix, acbb_mech_state *st, int j,
                           double window, double *change, acbb_error *err);
+
+/* Every distinct ball of st (acbb_mech_distinct), each over `cold` s from
+ * race control or `warm` s once traction_valid, on the workspace's worker
+ * threads. *change returns the largest relative change of omega_m. On a
+ * failure the error of the lowest-numbered failing ball is returned. The
+ * caller spreads the distinct balls (acbb_mech_spread) and re-solves loads. */
+acbb_status acbb_dyn_balls(acbb_dyn *d, const acbb_dyn_env *env, acbb_mech_state *st,
+                           double cold, double warm, double *change, acbb_error *err);
 
 #endif
