@@ -79,8 +79,8 @@ static void contacts_at(dyn_ctx *c, const double y[], double *Fi, double *Fo)
  * follow the tolerance). The normal forces stay exact in every rhs; what
  * is held within a window is the traction's dependence on the instantaneous
  * load and entrainment speed, which move by < 1e-4 relative over a warm
- * window. Refreshing per accepted step instead (tried) makes the rhs jump
- * between steps and took ~10x more steps. At the fixed point (a window that
+ * window. Refreshing them per accepted step instead (tried) makes the rhs
+ * jump between steps: ~40x the CPU. At the fixed point (a window that
  * starts at its own average) the tables are exact, so the answer is the
  * same fixed point: BENCHMARKS.md gives the measured difference. */
 static int start_tables(dyn_ctx *c, const double y[])
@@ -181,10 +181,14 @@ acbb_status acbb_dyn_new(int grid, acbb_dyn **out)
 acbb_status acbb_dyn_set_threads(acbb_dyn *d, int n)
 {
     if (n < 1 || n > ACBB_DYN_MAX_THREADS) return ACBB_EINVAL;
-    for (; d->alloc < n; d->alloc++)
-        if (acbb_traction_contact_init(&d->ci[d->alloc], d->grid) != ACBB_OK
-            || acbb_traction_contact_init(&d->co[d->alloc], d->grid) != ACBB_OK)
-            return ACBB_ENOMEM; /* a half-made worker is freed by acbb_dyn_free */
+    /* A worker whose second table failed keeps its first (freed by
+     * acbb_dyn_free, or used by a later call that gets the second). */
+    for (; d->alloc < n; d->alloc++) {
+        acbb_traction_contact *ci = &d->ci[d->alloc], *co = &d->co[d->alloc];
+        if ((!ci->P && acbb_traction_contact_init(ci, d->grid) != ACBB_OK)
+            || (!co->P && acbb_traction_contact_init(co, d->grid) != ACBB_OK))
+            return ACBB_ENOMEM;
+    }
     d->threads = n;
     return ACBB_OK;
 }
