@@ -36,6 +36,8 @@
 #define POLISH_SKIP_TOL 1e-9   /* steady polish: the same reuse, below mech_tol (1e-8) */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
+#define DYN_SKIP_TOL 1e-2      /* transient steps: settled balls keep speeds below this input move */
+#define DYN_THREADS 2          /* workers over the distinct balls (the answer does not depend on it) */
 
 typedef struct {
     acbb_contact_loss in, out;
@@ -260,21 +262,20 @@ static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
 }
 
 /* Dynamic level: integrate every distinct ball over a window (longer from
- * the race-control start, short once warm) and keep its time average. */
+ * the race-control start, short once warm) and keep its time average;
+ * inside transient steps settled balls whose inputs barely moved keep
+ * theirs (acbb_dyn_set_skip), the steady polish integrates every ball. */
 static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
                                  const acbb_oil_state *oo, const acbb_mixture *mix,
                                  double *change, acbb_error *err)
 {
-    int nb = acbb_mech_distinct(&sim->ms);
-    for (int j = 0; j < nb; j++) {
-        double window = sim->ms.ball[j].traction_valid ? DYN_WINDOW_WARM : DYN_WINDOW_COLD, c;
-        sim->work.traction_solves++;
-        acbb_status rc = acbb_dyn_ball(sim->dyn, sim->mech, &sim->s, &sim->quad,
-                                       sim->s.inner_speed, oi, oo, mix, &sim->ms, j, window,
-                                       &c, err);
-        if (rc != ACBB_OK) return rc;
-        *change = fmax(*change, c);
-    }
+    acbb_dyn_env env = { sim->mech, &sim->s, &sim->quad, sim->s.inner_speed, oi, oo, mix };
+    acbb_dyn_set_skip(sim->dyn, sim->transient_pass ? DYN_SKIP_TOL : 0.0);
+    long before = acbb_dyn_windows(sim->dyn);
+    acbb_status rc = acbb_dyn_balls(sim->dyn, &env, &sim->ms, DYN_WINDOW_COLD, DYN_WINDOW_WARM,
+                                    change, err);
+    sim->work.traction_solves += acbb_dyn_windows(sim->dyn) - before;
+    if (rc != ACBB_OK) return rc;
     acbb_mech_spread(&sim->ms);
     return ACBB_OK;
 }
@@ -762,7 +763,9 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     if ((rc = acbb_mech_new(s, &sim->mech, err)) != ACBB_OK) return rc;
     if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    if (s->model == ACBB_MODEL_DYNAMIC && acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK)
+    if (s->model == ACBB_MODEL_DYNAMIC && (acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK
+                                           || acbb_dyn_set_threads(sim->dyn, DYN_THREADS)
+                                                  != ACBB_OK))
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (sim->dyn) acbb_dyn_set_cancel(sim->dyn, sim->cancel);
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)

@@ -105,6 +105,92 @@ static void test_cancel(acbb_dyn *d)
     acbb_dyn_set_cancel(d, NULL);
 }
 
+/* Several distinct balls (the symmetric state unfolded, each started a
+ * little off the Level-2 speeds by a different amount) run on 1, 2 and 3
+ * workers: every ball is integrated alone on one worker's tables, so the
+ * states must agree bit for bit, and *change is the largest ball's. */
+static int balls_on(int threads, acbb_mech_state *out, double *change)
+{
+    acbb_dyn *d;
+    if (acbb_dyn_new(GRID, &d) != ACBB_OK || acbb_dyn_set_threads(d, threads) != ACBB_OK)
+        return 0;
+    *out = f.st;
+    out->symmetric = out->mirror = 0;
+    for (int j = 0; j < out->n; j++) {
+        out->ball[j] = qd_ball;
+        out->ball[j].qd_w[0] *= 1.0 + 1e-3 * j;
+    }
+    acbb_dyn_env env = { f.m, &f.s, &f.q, f.wi, &f.oil, &f.oil, &f.mix };
+    acbb_error err = { "" };
+    acbb_status rc = acbb_dyn_balls(d, &env, out, 4 * WINDOW, WINDOW, change, &err);
+    long windows = acbb_dyn_windows(d);
+    acbb_dyn_free(d);
+    if (rc != ACBB_OK) printf("# %s\n", err.msg);
+    return rc == ACBB_OK && windows == out->n;
+}
+
+static void test_threads(void)
+{
+    static acbb_mech_state one, two, three;
+    double c1, c2, c3;
+    int n = f.st.n;
+    ok(balls_on(1, &one, &c1), "%d distinct balls on 1 worker: one window each", n);
+    ok(balls_on(2, &two, &c2), "on 2 workers");
+    ok(balls_on(3, &three, &c3), "on 3 workers");
+    ok(memcmp(one.ball, two.ball, sizeof one.ball[0] * (size_t)n) == 0
+       && memcmp(one.ball, three.ball, sizeof one.ball[0] * (size_t)n) == 0,
+       "ball states identical bit for bit with 1, 2 and 3 workers");
+    ok(c1 == c2 && c1 == c3, "*change identical (%.3e)", c1);
+    /* *change is measured from each ball's kinematics omega_m (here Level
+     * 2's, for every ball): the largest relative move over the balls. */
+    double cmax = 0.0, wm = qd_ball.kin.omega_m;
+    for (int j = 0; j < n; j++) cmax = fmax(cmax, fabs(one.ball[j].qd_w[0] - wm) / wm);
+    ok(c1 == cmax && c1 > 0.0, "*change is the largest ball's move (%.3e)", c1);
+    ok(one.ball[n - 1].qd_w[0] != one.ball[0].qd_w[0], "the balls really were distinct");
+}
+
+static void test_threads_range(acbb_dyn *d)
+{
+    ok(acbb_dyn_set_threads(d, 0) == ACBB_EINVAL, "0 workers: EINVAL");
+    ok(acbb_dyn_set_threads(d, ACBB_DYN_MAX_THREADS + 1) == ACBB_EINVAL,
+       "%d workers: EINVAL", ACBB_DYN_MAX_THREADS + 1);
+    ok(acbb_dyn_threads(d) == 1, "workspace keeps its 1 worker");
+}
+
+/* Skip (transient steps): a settled ball whose inputs did not move keeps
+ * its speeds without a window; a load moved past the tolerance, or a
+ * ball that has not settled, gets a window; tolerance 0 always integrates. */
+static void test_skip(acbb_dyn *d)
+{
+    double change;
+    acbb_error err = { "" };
+    f.st.ball[0] = qd_ball;
+    acbb_dyn_set_skip(d, 1e-2);
+    long w0 = acbb_dyn_windows(d);
+    run(d, WINDOW, &change, &err);
+    ok(acbb_dyn_windows(d) == w0 + 1 && change < 1e-6, "first call integrates (settled: %.1e)",
+       change);
+    acbb_ball_state before = f.st.ball[0];
+    ok(run(d, WINDOW, &change, &err) == ACBB_OK && acbb_dyn_windows(d) == w0 + 1
+       && change == 0.0 && memcmp(&before, &f.st.ball[0], sizeof before) == 0,
+       "same inputs, settled: skipped, ball unchanged");
+    f.st.ball[0].Qi *= 1.02;
+    run(d, WINDOW, &change, &err);
+    ok(acbb_dyn_windows(d) == w0 + 2, "inner load moved 2 %% > 1 %%: integrated");
+    f.st.ball[0] = rc_ball;
+    f.st.ball[0].traction_valid = 1;
+    memcpy(f.st.ball[0].qd_w, qd_ball.qd_w, sizeof qd_ball.qd_w);
+    f.st.ball[0].qd_w[0] *= 1.01;
+    run(d, WINDOW, &change, &err);
+    run(d, WINDOW, &change, &err);
+    ok(acbb_dyn_windows(d) == w0 + 4, "not settled (last move %.1e): integrated again", change);
+    acbb_dyn_set_skip(d, 0.0);
+    f.st.ball[0] = qd_ball;
+    run(d, WINDOW, &change, &err);
+    run(d, WINDOW, &change, &err);
+    ok(acbb_dyn_windows(d) == w0 + 6, "tolerance 0: every call integrates");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -115,7 +201,10 @@ int main(void)
     test_relaxes(d);
     test_unloaded(d);
     test_cancel(d);
+    test_threads_range(d);
+    test_skip(d);
     acbb_dyn_free(d);
+    test_threads();
     acbb_mech_free(f.m);
     return done_testing();
 }
