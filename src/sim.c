@@ -355,13 +355,6 @@ static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
 
 /* ---- checks ---- */
 
-static int contact_finite(const acbb_contact_loss *c)
-{
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-        if (!isfinite(c->P[l])) return 0;
-    return isfinite(c->slide) && isfinite(c->film.hc);
-}
-
 /* Every value a snapshot publishes, checked where it is made, so that a
  * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. */
 static int outputs_finite(const acbb_sim *sim)
@@ -373,26 +366,11 @@ static int outputs_finite(const acbb_sim *sim)
         return 0;
     for (int j = 0; j < sim->ms.n; j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
-        if (!contact_finite(&sim->bl[j].in) || !contact_finite(&sim->bl[j].out)
+        if (!acbb_snap_contact_finite(&sim->bl[j].in) || !acbb_snap_contact_finite(&sim->bl[j].out)
             || !isfinite(b->ct_i.pmax) || !isfinite(b->ct_o.pmax) || !isfinite(b->kin.spin_i)
             || !isfinite(b->kin.spin_o) || !isfinite(b->kin.wx) || !isfinite(b->kin.wz))
             return 0;
     }
-    return 1;
-}
-
-static double max_pmax(const acbb_mech_state *ms)
-{
-    double p = 0.0;
-    for (int j = 0; j < ms->n; j++)
-        p = fmax(p, fmax(ms->ball[j].ct_i.pmax, ms->ball[j].ct_o.pmax));
-    return p;
-}
-
-static int temps_finite(const double *T, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (!isfinite(T[i])) return 0;
     return 1;
 }
 
@@ -405,7 +383,7 @@ static acbb_status check_runaway(acbb_sim *sim, const double *T, double step_dt)
                      sim->nw.names[i], T[i], sim->s.temp_limit_C, sim->time);
             return fail(sim, ACBB_RUNAWAY, "thermal runaway: %s", d);
         }
-    double p = max_pmax(&sim->ms);
+    double p = acbb_snap_max_pmax(&sim->ms);
     if (p > PMAX_LIMIT) {
         snprintf(d, sizeof d, "contact pressure %.2f GPa exceeds the 4.2 GPa static limit at t = %.0f s",
                  p * 1e-9, sim->time);
@@ -547,7 +525,7 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
                                      : thermal_step(sim, Tn, dT, dTs);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
-        if (!temps_finite(Tn, sim->nw.n))
+        if (!acbb_snap_all_finite(Tn, sim->nw.n))
             return acbb_error_set(err, ACBB_NONFINITE,
                                   "non-finite temperature caught; last good state kept");
         memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);

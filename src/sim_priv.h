@@ -18,4 +18,11 @@ void acbb_snap_ball_view(const acbb_ball_state *b, const acbb_contact_loss *in,
 /* MODEL.md 13: the radial squeeze of the expansions e at ball b's angles. */
 void acbb_snap_squeeze(const acbb_expansion *e, const acbb_ball_state *b, acbb_squeeze *q);
 
+/* Checks the stepper makes before a value is published: every loss, the
+ * slide and the film of one contact finite; every entry of v[0..n) finite;
+ * the largest contact pressure of a mechanics state, Pa. */
+int acbb_snap_contact_finite(const acbb_contact_loss *c);
+int acbb_snap_all_finite(const double *v, int n);
+double acbb_snap_max_pmax(const acbb_mech_state *ms);
+
 #endif

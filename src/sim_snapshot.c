@@ -50,3 +50,27 @@ const char *acbb_run_status_name(const acbb_snapshot *snap)
     if (snap->state == ACBB_RUN_RUNNING) return "running";
     return acbb_status_name(snap->status);
 }
+
+/* ---- checks used by the stepper (sim.c) ---- */
+
+int acbb_snap_contact_finite(const acbb_contact_loss *c)
+{
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        if (!isfinite(c->P[l])) return 0;
+    return isfinite(c->slide) && isfinite(c->film.hc);
+}
+
+double acbb_snap_max_pmax(const acbb_mech_state *ms)
+{
+    double p = 0.0;
+    for (int j = 0; j < ms->n; j++)
+        p = fmax(p, fmax(ms->ball[j].ct_i.pmax, ms->ball[j].ct_o.pmax));
+    return p;
+}
+
+int acbb_snap_all_finite(const double *T, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(T[i])) return 0;
+    return 1;
+}
