@@ -62,12 +62,12 @@ static acbb_status drive(acbb_sim *sim, drive_ctx *d)
     return st;
 }
 
-static void run_point(acbb_cli_point *p, const atomic_int *cancel)
+static void run_point(acbb_cli_point *p, const atomic_int *cancel, int threads)
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
     double t0 = acbb_now_ms();
-    p->status = acbb_sim_new_ctl(&p->scene, cancel, &sim, &err);
+    p->status = acbb_sim_create(&p->scene, &(acbb_sim_opts){ cancel, threads }, &sim, &err);
     if (p->status != ACBB_OK) {
         p->have_snap = false;
         snprintf(p->message, sizeof p->message, "%s", acbb_cli_err_text(&err, p->status));
@@ -88,6 +88,7 @@ typedef struct {
     size_t n;
     atomic_size_t next;
     const atomic_int *cancel;
+    int sim_threads;    /* acbb_sim_opts.threads: 1 when points fill the cores */
 } point_pool;
 
 static void *pool_worker(void *arg)
@@ -103,7 +104,7 @@ static void *pool_worker(void *arg)
             snprintf(p->message, sizeof p->message, "cancelled before it started");
             continue;
         }
-        run_point(p, pool->cancel);
+        run_point(p, pool->cancel, pool->sim_threads);
     }
 }
 
@@ -121,6 +122,7 @@ static void run_points(acbb_cli_point *pts, size_t n, long jobs, const atomic_in
     if (extra > n) extra = n;
     pthread_t tid[64];
     if (extra > 64) extra = 64;
+    pool.sim_threads = extra > 0 ? 1 : 0;
     size_t started = 0;
     for (; started < extra; started++)
         if (pthread_create(&tid[started], NULL, pool_worker, &pool) != 0) break;

@@ -22,6 +22,7 @@ typedef struct {
     size_t done;
     char *first_fail;
     size_t fail_n;
+    int sim_threads;             /* acbb_sim_opts.threads: 1 when runs fill the cores */
     pthread_mutex_t lock;
 } sens_pool;
 
@@ -37,7 +38,8 @@ static acbb_status run_task(const sens_pool *pl, size_t t, acbb_snapshot *snap, 
     acbb_scene sc = pl->scenes[t / pl->per_scene];
     if (pl->per_scene == 2) sc.thermal_expansion = (t % 2) == 0;
     acbb_sim *sim = NULL;
-    acbb_status st = acbb_sim_new_ctl(&sc, pl->o->cancel, &sim, err);
+    acbb_status st = acbb_sim_create(&sc, &(acbb_sim_opts){ pl->o->cancel, pl->sim_threads },
+                                     &sim, err);
     if (st == ACBB_OK) {
         acbb_run_ctl ctl = {.cancel = pl->o->cancel};
         st = acbb_sim_drive(sim, &ctl);
@@ -98,6 +100,7 @@ acbb_status acbb_sens_eval(const acbb_scene *scenes, size_t n, const acbb_sens_o
     pthread_mutex_init(&pl.lock, NULL);
     pthread_t tid[SENS_MAX_JOBS];
     size_t extra = n_threads(o->jobs, pl.n_tasks) - 1, started = 0;
+    pl.sim_threads = extra > 0 ? 1 : 0;
     for (; started < extra; started++)
         if (pthread_create(&tid[started], NULL, worker, &pl) != 0) break;
     worker(&pl); /* the calling thread works too */

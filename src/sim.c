@@ -87,6 +87,7 @@ struct acbb_sim {
     double K_axial;            /* axial stiffness at the converged state, N/m */
     acbb_stiffness K_ring;     /* radial and tilt stiffness at the converged state */
     int fixed_axial;           /* displacement preload: dx held at fixed_dx */
+    int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
 };
@@ -742,7 +743,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->model == ACBB_MODEL_DYNAMIC && (acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK
-                                           || acbb_dyn_set_threads(sim->dyn, DYN_THREADS)
+                                           || acbb_dyn_set_threads(sim->dyn, sim->threads)
                                                   != ACBB_OK))
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (sim->dyn) acbb_dyn_set_cancel(sim->dyn, sim->cancel);
@@ -783,12 +784,19 @@ acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err)
 acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb_sim **out,
                              acbb_error *err)
 {
+    return acbb_sim_create(s, &(acbb_sim_opts){ .cancel = cancel }, out, err);
+}
+
+acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                            acbb_error *err)
+{
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))) {
         free(sim);
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
-    sim->cancel = cancel;
+    sim->cancel = o->cancel;
+    sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     acbb_status rc = sim_init(sim, s, NULL, err);
     if (rc != ACBB_OK) {
         acbb_sim_free(sim);
@@ -814,6 +822,7 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
     acbb_sim *fresh = calloc(1, sizeof *fresh);
     if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     fresh->cancel = sim->cancel;
+    fresh->threads = sim->threads;
     acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);

@@ -54,13 +54,13 @@ static int record_hook(void *ctx, const acbb_sim *sim)
     return 0;
 }
 
-static void run_point(acbb_study_point *p, const atomic_int *cancel)
+static void run_point(acbb_study_point *p, const atomic_int *cancel, int threads)
 {
     double t0 = acbb_now_ms();
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
     if (p->skip) return;
-    p->status = acbb_sim_new_ctl(&p->scene, cancel, &sim, &err);
+    p->status = acbb_sim_create(&p->scene, &(acbb_sim_opts){ cancel, threads }, &sim, &err);
     if (p->status != ACBB_OK) {
         snprintf(p->message, sizeof p->message, "%s",
                  err.msg[0] ? err.msg : acbb_status_name(p->status));
@@ -90,6 +90,7 @@ typedef struct {
     size_t n;
     atomic_size_t next;
     const atomic_int *cancel;
+    int sim_threads;                 /* acbb_sim_opts.threads: 1 when runs fill the cores */
     acbb_study_progress_fn progress; /* may be NULL; called under `lock` */
     void *ctx;
     size_t done;
@@ -116,7 +117,7 @@ static void *pool_worker(void *arg)
             snprintf(p->message, sizeof p->message, "cancelled before it started");
             continue;
         }
-        run_point(p, pl->cancel);
+        run_point(p, pl->cancel, pl->sim_threads);
         count_done(pl);
     }
 }
@@ -137,6 +138,7 @@ void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
     pthread_mutex_init(&pl.lock, NULL);
     pthread_t tid[MAX_JOBS];
     size_t extra = n_jobs(jobs) - 1, started = 0;
+    pl.sim_threads = extra > 0 && n > 1 ? 1 : 0;
     for (; started < extra && started + 1 < n; started++)
         if (pthread_create(&tid[started], NULL, pool_worker, &pl) != 0) break;
     pool_worker(&pl); /* the calling thread works too */

@@ -23,6 +23,7 @@ typedef struct {
     size_t n_todo;
     atomic_size_t next;
     atomic_size_t reported;
+    int sim_threads;            /* acbb_sim_opts.threads: 1 when points fill the cores */
     pthread_mutex_t lock;
 } sweep_pool;
 
@@ -42,7 +43,8 @@ static void run_one(const sweep_pool *pl, size_t index, acbb_sweep_result *r)
     r->have_snap = 0;
     r->message[0] = '\0';
     r->status = sc ? acbb_sweep_scene(pl->grid, pl->base, index, sc, &err) : ACBB_ENOMEM;
-    if (r->status == ACBB_OK) r->status = acbb_sim_new_ctl(sc, pl->o->cancel, &sim, &err);
+    if (r->status == ACBB_OK) r->status = acbb_sim_create(sc, &(acbb_sim_opts){ pl->o->cancel, pl->sim_threads },
+                                                      &sim, &err);
     if (r->status == ACBB_OK) {
         acbb_run_ctl ctl = { .cancel = pl->o->cancel };
         r->status = acbb_sim_drive(sim, &ctl);
@@ -115,6 +117,7 @@ acbb_status acbb_sweep_run(const acbb_sweep *g, const acbb_scene *base,
     pthread_mutex_init(&pl.lock, NULL);
     pthread_t tid[SWEEP_MAX_JOBS];
     size_t extra = n_threads(o->jobs, n_todo) - 1, started = 0;
+    pl.sim_threads = extra > 0 ? 1 : 0;
     for (; started < extra; started++)
         if (pthread_create(&tid[started], NULL, worker, &pl) != 0) break;
     worker(&pl); /* the calling thread works too */

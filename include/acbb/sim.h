@@ -141,6 +141,17 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl);
 acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb_sim **out,
                              acbb_error *err);
 
+/* acbb_sim_new_ctl with the options a pool of runs needs: `threads` is the
+ * number of workers the dynamic level spreads a step's distinct balls over
+ * (0: the default, 2); a pool that already keeps every core busy with runs
+ * passes 1. The answer does not depend on it. */
+typedef struct {
+    const atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
+    int threads;
+} acbb_sim_opts;
+acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                            acbb_error *err);
+
 /* Copy out what a user sees (never NaN/Inf: checked before publication). */
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *out);
 
