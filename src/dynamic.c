@@ -12,7 +12,6 @@
 #define FD_STEP 1e-7
 #define TOL 1e-4      /* rtol = atol of the BDF stepper on the scaled states (BENCHMARKS.md) */
 #define SETTLED 1e-6  /* a skipped ball's last window moved omega_m less than this */
-#define NIN 6         /* inputs of a ball's window compared by moved() */
 
 struct acbb_dyn {
     int grid, threads, alloc;   /* workers in use; tables allocated for `alloc` */
@@ -22,7 +21,7 @@ struct acbb_dyn {
     double skip_tol;            /* 0: every call integrates (see acbb_dyn_set_skip) */
     /* Inputs of each ball's last window and the relative move of omega_m
      * it made; in_ok[j] = 0: none yet. */
-    double in[ACBB_MAX_BALLS][NIN], last[ACBB_MAX_BALLS];
+    double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS], last[ACBB_MAX_BALLS];
     int in_ok[ACBB_MAX_BALLS];
 };
 
@@ -208,35 +207,19 @@ void acbb_dyn_set_skip(acbb_dyn *d, double tol)
     d->skip_tol = tol > 0.0 ? tol : 0.0;
 }
 
-/* The inputs of a window that change between thermal steps, as the
- * quasi-dynamic level's skip compares them (quasi_dynamic.c): both loads,
- * both contact angles, both inlet viscosities (MODEL.md section 4). */
-static void inputs(const acbb_ball_state *b, const acbb_oil_state *oil_i,
-                   const acbb_oil_state *oil_o, double in[NIN])
-{
-    in[0] = b->Qi; in[1] = b->Qo; in[2] = b->alpha_i; in[3] = b->alpha_o;
-    in[4] = oil_i->eta0; in[5] = oil_o->eta0;
-}
-
-/* Largest move since the last window: relative for loads and viscosities,
- * radians for the angles. */
-static double moved(const double o[NIN], const double in[NIN])
-{
-    double m = 0.0;
-    for (int k = 0; k < NIN; k++) {
-        double scale = (k == 2 || k == 3) ? 1.0 : fmax(fabs(o[k]), 1e-300);
-        m = fmax(m, fabs(in[k] - o[k]) / scale);
-    }
-    return m;
-}
+/* A window's inputs are the quasi-dynamic skip's (acbb_ball_inputs: both
+ * loads, angles and inlet viscosities, MODEL.md section 4) without the ball
+ * speeds, which are the window's own result. */
+static const double k_window_weights[ACBB_BALL_INPUTS] = { 1, 1, 1, 1, 1, 1, 0, 0, 0, 0 };
 
 /* A ball may keep its averaged speeds only if its last window had already
  * settled (moved omega_m by less than the tolerance) and its inputs have
  * not moved since: the fixed point it relaxes to is then the same. */
-static int skip_ball(const acbb_dyn *d, int j, const acbb_ball_state *b, const double in[NIN])
+static int skip_ball(const acbb_dyn *d, int j, const acbb_ball_state *b,
+                     const double in[ACBB_BALL_INPUTS])
 {
     return d->skip_tol > 0.0 && j < ACBB_MAX_BALLS && d->in_ok[j] && b->traction_valid
-        && d->last[j] < SETTLED && moved(d->in[j], in) < d->skip_tol;
+        && d->last[j] < SETTLED && acbb_ball_moved(d->in[j], in, k_window_weights) < d->skip_tol;
 }
 
 long acbb_dyn_windows(const acbb_dyn *d)
@@ -278,8 +261,8 @@ acbb_status acbb_dyn_ball_on(acbb_dyn *d, int w, const acbb_dyn_env *env, acbb_m
         if (j < ACBB_MAX_BALLS) d->in_ok[j] = 0;
         return ACBB_OK;
     }
-    double in[NIN];
-    inputs(b, env->oil_i, env->oil_o, in);
+    double in[ACBB_BALL_INPUTS];
+    acbb_ball_inputs(b, env->oil_i->eta0, env->oil_o->eta0, omega_i, in);
     if (skip_ball(d, j, b, in)) return ACBB_OK;
     d->windows[w]++;
     dyn_ctx c = { .ci = &d->ci[w], .co = &d->co[w], .cancel = d->cancel,
