@@ -43,8 +43,8 @@ static void run_one(const sweep_pool *pl, size_t index, acbb_sweep_result *r)
     r->have_snap = 0;
     r->message[0] = '\0';
     r->status = sc ? acbb_sweep_scene(pl->grid, pl->base, index, sc, &err) : ACBB_ENOMEM;
-    if (r->status == ACBB_OK) r->status = acbb_sim_create(sc, &(acbb_sim_opts){ pl->o->cancel, pl->sim_threads },
-                                                      &sim, &err);
+    acbb_sim_opts so = { pl->o->cancel, pl->sim_threads };
+    if (r->status == ACBB_OK) r->status = acbb_sim_create(sc, &so, &sim, &err);
     if (r->status == ACBB_OK) {
         acbb_run_ctl ctl = { .cancel = pl->o->cancel };
         r->status = acbb_sim_drive(sim, &ctl);
