@@ -11,7 +11,7 @@
  * Every case also: no NaN/Inf in any double of the snapshot (walked field
  * by field), and a generous 30 s bound on its wall time (reported).
  * Usage: test_hard_cases [--slow]: without it the fast cases (default
- * suite, a few seconds), with it the dynamic-level ones (`slow` suite). */
+ * suite, a few seconds), with it the dynamic-level ones (test hard_cases_dynamic). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
