@@ -8,7 +8,6 @@
  * problem is a hand-written damped Newton (see ball_newton for why). */
 #include <math.h>
 #include <stdlib.h>
-#include <stddef.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
@@ -835,14 +834,22 @@ void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
     m->centred = 0; /* an explicit choice replaces the symmetry default */
 }
 
+void acbb_mech_adopt_state(const acbb_mech *m, acbb_mech_state *st)
+{
+    int sym = !m->dof_dz && !m->dof_thy;
+    if (st->symmetric && !sym) acbb_mech_spread(st);
+    st->symmetric = sym;
+    st->mirror = !sym; /* Fy and Mz are not scene loads, dy and thz never move */
+    st->dz = m->dof_dz ? st->dz : 0.0;
+    st->thy = m->dof_thy ? st->thy : 0.0;
+}
+
 acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err)
 {
     const acbb_geometry *g = &m->g;
     memset(st, 0, sizeof *st);
     st->n = g->Z;
-    st->symmetric = !m->dof_dz && !m->dof_thy;
-    /* Fy and Mz are not scene loads, dy and thz never move: mirror images. */
-    st->mirror = !st->symmetric;
+    acbb_mech_adopt_state(m, st);
     acbb_race_control rc0 = m->race;
     for (int j = 0; j < st->n; j++) {
         acbb_ball_state *b = &st->ball[j];
@@ -876,13 +883,6 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
         b->X2 = Lo * cos(a);
     }
     return acbb_mech_solve(m, 0.0, NULL, st, err);
-}
-
-void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src)
-{
-    /* Only the balls in use: the array is sized for the largest bearing. */
-    memcpy(dst, src, offsetof(acbb_mech_state, ball));
-    memcpy(dst->ball, src->ball, sizeof src->ball[0] * (size_t)src->n);
 }
 
 void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,

@@ -570,7 +570,7 @@ static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
     sim->K_axial = axial_stiffness(sim);
-    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->K_ring);
+    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
     sim->state = ACBB_RUN_CONVERGED;
     snprintf(sim->msg, sizeof sim->msg, "%s", what);
 }

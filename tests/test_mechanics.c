@@ -6,6 +6,7 @@
 #include "tap.h"
 #include "acbb/mechanics.h"
 #include "acbb/broyden.h"
+#include "acbb/stiffness.h"
 
 #define DEG (M_PI / 180.0)
 #define RPM (M_PI / 30.0)
@@ -345,6 +346,50 @@ static void test_transient_mode(void)
     acbb_mech_free(m);
 }
 
+/* Warm starts across workspaces (acbb_mech_adopt_state, the stiffness
+ * probes): a pure-thrust state is spread over the ring for a workspace
+ * with a radial load, and the warm solve reaches the same equilibrium as
+ * the cold continuation (MODEL.md section 3: it is unique) to solver
+ * noise; so does the ring stiffness from the converged state. */
+static void test_adopt_state(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    acbb_mech *m0, *m1;
+    acbb_error err;
+    static acbb_mech_state st0, cold, warm;
+    acbb_mech_new(&s, &m0, &err);
+    acbb_status rc = acbb_mech_init_state(m0, &st0, &err);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m0, s.inner_speed * r / 4, NULL, &st0, &err);
+    ok(rc == ACBB_OK && st0.symmetric, "pure thrust at 15000 rpm: symmetric state");
+    s.radial_load = 10.0;
+    acbb_mech_new(&s, &m1, &err);
+    rc = acbb_mech_init_state(m1, &cold, &err);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m1, s.inner_speed * r / 4, NULL, &cold, &err);
+    acbb_mech_state_copy(&warm, &st0);
+    acbb_mech_adopt_state(m1, &warm);
+    ok(!warm.symmetric && warm.mirror && warm.ball[7].Qi == st0.ball[0].Qi
+       && warm.ball[7].psi == st0.ball[7].psi, "adopted by a radial-load workspace: mirror "
+       "state, ball 0 spread, azimuths kept");
+    acbb_status rw = acbb_mech_solve(m1, s.inner_speed, NULL, &warm, &err);
+    ok(rc == ACBB_OK && rw == ACBB_OK, "cold continuation and warm solve with +10 N radial");
+    ok(fabs(warm.dz - cold.dz) <= 1e-6 * fabs(cold.dz), "same radial displacement (%.4g um) "
+       "from both starts to 1e-6", cold.dz * 1e6);
+    is_close(warm.ball[0].Qi, cold.ball[0].Qi, 1e-8, 0, "same load on the ball under the load");
+    acbb_stiffness kw, kc;
+    s.radial_load = 0.0;
+    acbb_ring_stiffness(&s, NULL, 0.0, &st0, &kw);
+    acbb_ring_stiffness(&s, NULL, 0.0, NULL, &kc);
+    ok(kc.radial > 0.0 && kc.tilt > 0.0, "stiffness by continuation: %.1f N/um, %.3f N m/mrad",
+       kc.radial * 1e-6, kc.tilt * 1e-3);
+    is_close(kw.radial, kc.radial, 1e-5, 0, "radial stiffness from the converged state agrees");
+    is_close(kw.tilt, kc.tilt, 1e-5, 0, "tilt stiffness from the converged state agrees");
+    acbb_mech_free(m0);
+    acbb_mech_free(m1);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -357,5 +402,6 @@ int main(void)
     test_mirror();
     test_broyden();
     test_transient_mode();
+    test_adopt_state();
     return done_testing();
 }
