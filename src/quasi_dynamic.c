@@ -304,6 +304,14 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     return ACBB_OK;
 }
 
+/* Weights of the transient-step skip (acbb_ball_moved): the inlet
+ * viscosities count 0.3. They are common to every ball and drift on as the
+ * oil warms, so at weight 1 each such drift re-solved all balls at once;
+ * the steady polish still solves every ball, so the steady state is the
+ * same to 6e-7 and only the transient path moves (BENCHMARKS.md, round 4:
+ * within the balanced preset's stated path error, MODEL.md section 9). */
+static const double skip_weights[ACBB_BALL_INPUTS] = { 1, 1, 1, 1, 0.3, 0.3, 1, 1, 1, 1 };
+
 void acbb_qd_set_skip(acbb_qd *q, double tol)
 {
     q->skip_tol = tol > 0.0 ? tol : 0.0;
@@ -331,7 +339,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         double in[ACBB_BALL_INPUTS];
         acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, in);
         if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
-            && acbb_ball_moved(q->in[j], in, NULL) < q->skip_tol)
+            && acbb_ball_moved(q->in[j], in, skip_weights) < q->skip_tol)
             continue;
         double wm0 = b->kin.omega_m;
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,

@@ -160,10 +160,14 @@ static void test_skip(void)
            == ACBB_OK && change == 0.0 && memcmp(w0, b->qd_w, sizeof w0) == 0,
        "inner load +0.1 %% with skip 3e-3: speeds kept bit for bit");
     acbb_oil_state hot = f.oil;
-    hot.eta0 *= 0.99; /* 1 % thinner oil: solved again */
+    hot.eta0 *= 0.995; /* 0.5 % thinner oil, weighted 0.3: 0.15 % < 0.3 %, kept */
+    ok(acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &hot, &hot, &f.mix, &f.st, &change, &err)
+           == ACBB_OK && change == 0.0 && memcmp(w0, b->qd_w, sizeof w0) == 0,
+       "inlet viscosity -0.5 %% (weight 0.3): speeds kept");
+    hot.eta0 = 0.98 * f.oil.eta0; /* 2 % thinner: 0.6 % > 0.3 %, solved again */
     ok(acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &hot, &hot, &f.mix, &f.st, &change, &err)
            == ACBB_OK && memcmp(w0, b->qd_w, sizeof w0) != 0,
-       "inlet viscosity -1 %%: solved again");
+       "inlet viscosity -2 %%: solved again");
     memcpy(w1, b->qd_w, sizeof w1);
     b->Qi *= 1.001;
     acbb_qd_set_skip(qd, 0.0);
