@@ -603,7 +603,7 @@ static int ring_broyden(acbb_mech *m, int n, const double *x0)
         if (!acbb_fd_jacobian(ring_eval, m, n, x, f, GSL_SQRT_DBL_EPSILON, J)) return 0;
         m->ring_J_ok[n] = 1;
     }
-    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12)) return 1;
+    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12, 3)) return 1;
     m->ring_J_ok[n] = 0;
     return 0;
 }

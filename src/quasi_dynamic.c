@@ -230,7 +230,7 @@ static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0
     double J[16], f[4], xa[4];
     memcpy(J, q->J[from], sizeof J);
     memcpy(xa, x0, sizeof xa);
-    if (!acbb_broyden(eval, c, 4, J, xa, f, RES_TOL, 8)) return 0;
+    if (!acbb_broyden(eval, c, 4, J, xa, f, RES_TOL, 8, 0)) return 0;
     memcpy(q->J[j], J, sizeof J);
     q->J_ok[j] = 1;
     memcpy(x, xa, sizeof xa);

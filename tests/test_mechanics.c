@@ -284,6 +284,13 @@ static int circle_hyperbola(const double *x, void *ctx, double *f)
     return 1;
 }
 
+static int atan_fn(const double *x, void *ctx, double *f)
+{
+    (void)ctx;
+    f[0] = atan(x[0]);
+    return 1;
+}
+
 static void test_broyden(void)
 {
     double x[2] = { 2.0, 0.5 }, f[2], J[4];
@@ -291,13 +298,22 @@ static void test_broyden(void)
     ok(acbb_fd_jacobian(circle_hyperbola, NULL, 2, x, f, 1e-7, J)
        && fabs(J[0] - 4.0) < 1e-5 && fabs(J[1] - 1.0) < 1e-5 && fabs(J[3] - 2.0) < 1e-5,
        "forward-difference Jacobian (4, 1; 0.5, 2)");
-    ok(acbb_broyden(circle_hyperbola, NULL, 2, J, x, f, 1e-13, 30), "Broyden converges");
+    ok(acbb_broyden(circle_hyperbola, NULL, 2, J, x, f, 1e-13, 30, 0), "Broyden converges");
     double want = sqrt(2.0 + sqrt(3.0));
     is_close(x[0], want, 1e-12, 0, "x = sqrt(2 + sqrt 3)");
     is_close(x[1], 1.0 / want, 1e-12, 0, "y = 1/x");
     double y[2] = { 2.0, 0.5 }, Jbad[4] = { -4.0, -1.0, -0.5, -2.0 };
-    ok(!acbb_broyden(circle_hyperbola, NULL, 2, Jbad, y, f, 1e-13, 30) && y[0] == 2.0,
+    ok(!acbb_broyden(circle_hyperbola, NULL, 2, Jbad, y, f, 1e-13, 30, 0) && y[0] == 2.0,
        "a step that raises the residual is refused, x kept");
+    /* atan(x) from x = 3 with the exact slope 0.1: the full Newton step
+     * lands at -9.5 and the half step at -3.25, both with a larger |f|;
+     * the quarter step (-0.125) lowers it, and the root is 0. */
+    double z = 3.0, Jz = 0.1, fz;
+    ok(!acbb_broyden(atan_fn, NULL, 1, &Jz, &z, &fz, 1e-13, 30, 1) && z == 3.0,
+       "atan from 3: one halving is not enough, refused");
+    Jz = 0.1;
+    int conv = acbb_broyden(atan_fn, NULL, 1, &Jz, &z, &fz, 1e-13, 30, 2);
+    ok(conv && fabs(z) < 1e-13, "atan from 3: two halvings reach the root 0 (%.1e)", z);
 }
 
 /* Transient mode (acbb_mech_set_transient, used by the sim inside thermal
