@@ -251,14 +251,16 @@ static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const
     double J[16], f[4], xa[4];
     if (q->J_ok[j] && broyden_from(q, c, j, j, x, x))
         return ACBB_OK;
-    if (!q->J_ok[j] && xn && broyden_from(q, c, j, jn, xn, x))
+    int from_nb = !q->J_ok[j] && xn;
+    if (from_nb && broyden_from(q, c, j, jn, xn, x))
         return ACBB_OK;
-    /* Transient steps (skip_tol > 0, non-symmetric scenes): Newton with
-     * the analytic Jacobian before the hybrid solver (3-4 steps of about
-     * three evaluations each against ~30 evaluations; as the first choice
-     * it cost more than Broyden's ~5.7, BENCHMARKS.md round 3). */
-    memcpy(xa, x, sizeof xa);
-    if (q->skip_tol > 0.0 && newton_analytic(c, xa, J)) {
+    /* Transient steps (skip_tol > 0, non-symmetric scenes) and starts from
+     * a neighbour: Newton with the analytic Jacobian before the hybrid
+     * solver (3-4 steps of about three evaluations each against ~30
+     * evaluations; as the first choice it cost more than Broyden's ~5.7,
+     * BENCHMARKS.md round 3). */
+    memcpy(xa, from_nb ? xn : x, sizeof xa);
+    if ((q->skip_tol > 0.0 || from_nb) && newton_analytic(c, xa, J)) {
         memcpy(q->J[j], J, sizeof J);
         q->J_ok[j] = 1;
         memcpy(x, xa, sizeof xa);
