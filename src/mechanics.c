@@ -587,9 +587,10 @@ static int ring_eval(const double *x, void *p, double *f)
     return ring_f(&X.vector, m, &F.vector) == GSL_SUCCESS;
 }
 
-/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h);
- * the first solve builds one by forward differences with GSL's step rule.
- * Returns 1 with the trial state at the root. */
+/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h; the
+ * first solve builds one by forward differences, GSL's step rule), steps
+ * halved up to 6 times (a stiffness probe starts far from its fresh
+ * Jacobian) before GSL's hybrid takes over. 1: trial state at the root. */
 static int ring_broyden(acbb_mech *m, int n, const double *x0)
 {
     double x[MAX_RING_DOF], f[MAX_RING_DOF], *J = m->ring_J[n];
@@ -603,7 +604,7 @@ static int ring_broyden(acbb_mech *m, int n, const double *x0)
         if (!acbb_fd_jacobian(ring_eval, m, n, x, f, GSL_SQRT_DBL_EPSILON, J)) return 0;
         m->ring_J_ok[n] = 1;
     }
-    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12, 3)) return 1;
+    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12, 6)) return 1;
     m->ring_J_ok[n] = 0;
     return 0;
 }
@@ -622,9 +623,8 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
     if (!m->fix_axial) x0[k++] = st->dx / UM;
     if (m->dof_dz) x0[k++] = st->dz / UM;
     if (m->dof_thy) x0[k++] = st->thy / MRAD;
-    /* Held-displacement solves (the stiffness probes of sim.c, displacement
-     * preload) keep the hybrid path: the stiffness is a 0.3 nm central
-     * difference that would carry the different solver noise. */
+    /* Held-displacement solves (sim.c's axial stiffness, a 0.3 nm central
+     * difference; displacement preload) keep the hybrid path's noise. */
     if (!m->fix_axial && ring_broyden(m, n, x0))
         return ACBB_OK;
     m->inner_status = ACBB_OK;
