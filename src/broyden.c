@@ -42,15 +42,18 @@ int acbb_newton_step(int n, const double *J, const double *f, double *d)
 }
 
 /* x + d into xn with fn_ = f(xn), d halved up to `halvings` times until
- * sum |f| drops below r; 0 if it never does. */
+ * sum |f| drops below r (below 0.9 r when halving is allowed: a Jacobian
+ * whose steps gain less than 10 % only crawls, and the callers' fallback
+ * rebuilds it); 0 if it never does. */
 static int damped_step(acbb_broyden_fn fn, void *ctx, int n, const double *x, double *d,
                        double r, int halvings, double *xn, double *fn_)
 {
+    double goal = halvings > 0 ? 0.9 * r : r;
     for (int h = 0; h <= halvings; h++) {
         if (h > 0)
             for (int k = 0; k < n; k++) d[k] *= 0.5;
         for (int k = 0; k < n; k++) xn[k] = x[k] + d[k];
-        if (fn(xn, ctx, fn_) && sum_abs(n, fn_) < r) return 1;
+        if (fn(xn, ctx, fn_) && sum_abs(n, fn_) < goal) return 1;
     }
     return 0;
 }

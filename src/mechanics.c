@@ -587,10 +587,10 @@ static int ring_eval(const double *x, void *p, double *f)
     return ring_f(&X.vector, m, &F.vector) == GSL_SUCCESS;
 }
 
-/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h; the
- * first solve builds one by forward differences, GSL's step rule), steps
- * halved up to 6 times (a stiffness probe starts far from its fresh
- * Jacobian) before GSL's hybrid takes over. 1: trial state at the root. */
+/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h); the
+ * first solve builds one by forward steps of 1e-6 relative (the residual
+ * carries the ball solves' noise, far above round-off), steps halved up to
+ * 6 times (a stiffness probe starts far off); then GSL's hybrid. 1: at root. */
 static int ring_broyden(acbb_mech *m, int n, const double *x0)
 {
     double x[MAX_RING_DOF], f[MAX_RING_DOF], *J = m->ring_J[n];
@@ -601,7 +601,7 @@ static int ring_broyden(acbb_mech *m, int n, const double *x0)
         double r = 0.0;
         for (int i = 0; i < n; i++) r += fabs(f[i]);
         if (r < tol) return 1;
-        if (!acbb_fd_jacobian(ring_eval, m, n, x, f, GSL_SQRT_DBL_EPSILON, J)) return 0;
+        if (!acbb_fd_jacobian(ring_eval, m, n, x, f, 1e-6, J)) return 0;
         m->ring_J_ok[n] = 1;
     }
     if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12, 6)) return 1;

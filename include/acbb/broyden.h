@@ -16,8 +16,8 @@ typedef int (*acbb_broyden_fn)(const double *x, void *ctx, double *f);
  * until sum |f_i| < tol (GSL's residual test). Returns 1 on success: x is
  * the root, f its residual and the last evaluation was at x. Returns 0
  * after maxit steps, on a singular J, or as soon as a step halved
- * `halvings` times (0: the full step only) does not lower sum |f| (then x
- * and J are left at the last good point). */
+ * `halvings` times (0: the full step only) does not lower sum |f| (by 10 %
+ * when halvings > 0) (then x and J are left at the last good point). */
 int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
                  double tol, int maxit, int halvings);
 
