@@ -240,10 +240,10 @@ static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0
 /* Level 2 of ball j: Broyden from its last Jacobian if there is one (two
  * or three traction evaluations between thermal steps instead of five per
  * hybrid iteration); a ball without one (the set-up's first pass) starts
- * from its neighbour's root and Jacobian xn, Jn if given (neighbours in
- * azimuth carry similar loads, MODEL.md section 4; the root is the same to
- * RES_TOL); else or if that stalls the hybrid Newton, with continuation as
- * the last resort. On success c holds the tractions at the root. The
+ * from the root xn and the Jacobian of its neighbour jn if given
+ * (neighbours in azimuth carry similar loads, MODEL.md section 4; the root
+ * is the same to RES_TOL); else or if that stalls the hybrid Newton, with
+ * continuation as the last resort. On success c holds the tractions at the root. The
  * Jacobian is kept only from a solve at the nominal s_reg. */
 static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn,
                                 int jn)
@@ -306,12 +306,13 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     return ACBB_OK;
 }
 
-/* Weights of the transient-step skip (acbb_ball_moved): the inlet
- * viscosities count 0.3. They are common to every ball and drift on as the
- * oil warms, so at weight 1 each such drift re-solved all balls at once;
- * the steady polish still solves every ball, so the steady state is the
- * same to 6e-7 and only the transient path moves (BENCHMARKS.md, round 4:
- * within the balanced preset's stated path error, MODEL.md section 9). */
+/* Weights of the transient-step skip (acbb_ball_moved, inputs in the order
+ * of acbb_ball_inputs): the inlet viscosities count 0.3. They are common to
+ * every ball and drift on as the oil warms, so at weight 1 each such drift
+ * re-solved all balls at once; the steady polish still solves every ball,
+ * so the steady state is the same to 6e-7 and only the transient path
+ * moves (BENCHMARKS.md, round 4: within the balanced preset's stated path
+ * error, MODEL.md section 9). */
 static const double skip_weights[ACBB_BALL_INPUTS] = { 1, 1, 1, 1, 0.3, 0.3, 1, 1, 1, 1 };
 
 void acbb_qd_set_skip(acbb_qd *q, double tol)
