@@ -41,8 +41,25 @@ int acbb_newton_step(int n, const double *J, const double *f, double *d)
     return 1;
 }
 
+/* x + d into xn with fn_ = f(xn), d halved up to `halvings` times until
+ * sum |f| drops below r (below 0.9 r when halving is allowed: a Jacobian
+ * whose steps gain less than 10 % only crawls, and the callers' fallback
+ * rebuilds it); 0 if it never does. */
+static int damped_step(acbb_broyden_fn fn, void *ctx, int n, const double *x, double *d,
+                       double r, int halvings, double *xn, double *fn_)
+{
+    double goal = halvings > 0 ? 0.9 * r : r;
+    for (int h = 0; h <= halvings; h++) {
+        if (h > 0)
+            for (int k = 0; k < n; k++) d[k] *= 0.5;
+        for (int k = 0; k < n; k++) xn[k] = x[k] + d[k];
+        if (fn(xn, ctx, fn_) && sum_abs(n, fn_) < goal) return 1;
+    }
+    return 0;
+}
+
 int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
-                 double tol, int maxit)
+                 double tol, int maxit, int halvings)
 {
     double d[ACBB_BROYDEN_MAX], xn[ACBB_BROYDEN_MAX], fn_[ACBB_BROYDEN_MAX];
     if (n < 1 || n > ACBB_BROYDEN_MAX || !fn(x, ctx, f)) return 0;
@@ -50,8 +67,7 @@ int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, dou
         double r = sum_abs(n, f);
         if (r < tol) return 1;
         if (!acbb_newton_step(n, J, f, d)) return 0;
-        for (int k = 0; k < n; k++) xn[k] = x[k] + d[k];
-        if (!fn(xn, ctx, fn_) || !(sum_abs(n, fn_) < r)) return 0;
+        if (!damped_step(fn, ctx, n, x, d, r, halvings, xn, fn_)) return 0;
         /* Good Broyden: J += (df - J d) d^T / (d . d). */
         double dd = 0.0;
         for (int k = 0; k < n; k++) dd += d[k] * d[k];

@@ -8,7 +8,6 @@
  * problem is a hand-written damped Newton (see ball_newton for why). */
 #include <math.h>
 #include <stdlib.h>
-#include <stddef.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
@@ -588,9 +587,10 @@ static int ring_eval(const double *x, void *p, double *f)
     return ring_f(&X.vector, m, &F.vector) == GSL_SUCCESS;
 }
 
-/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h);
- * the first solve builds one by forward differences with GSL's step rule.
- * Returns 1 with the trial state at the root. */
+/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h); the
+ * first solve builds one by forward steps of 1e-6 relative (the residual
+ * carries the ball solves' noise, far above round-off), steps halved up to
+ * 6 times (a stiffness probe starts far off); then GSL's hybrid. 1: at root. */
 static int ring_broyden(acbb_mech *m, int n, const double *x0)
 {
     double x[MAX_RING_DOF], f[MAX_RING_DOF], *J = m->ring_J[n];
@@ -601,10 +601,10 @@ static int ring_broyden(acbb_mech *m, int n, const double *x0)
         double r = 0.0;
         for (int i = 0; i < n; i++) r += fabs(f[i]);
         if (r < tol) return 1;
-        if (!acbb_fd_jacobian(ring_eval, m, n, x, f, GSL_SQRT_DBL_EPSILON, J)) return 0;
+        if (!acbb_fd_jacobian(ring_eval, m, n, x, f, 1e-6, J)) return 0;
         m->ring_J_ok[n] = 1;
     }
-    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12)) return 1;
+    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12, 6)) return 1;
     m->ring_J_ok[n] = 0;
     return 0;
 }
@@ -623,9 +623,8 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
     if (!m->fix_axial) x0[k++] = st->dx / UM;
     if (m->dof_dz) x0[k++] = st->dz / UM;
     if (m->dof_thy) x0[k++] = st->thy / MRAD;
-    /* Held-displacement solves (the stiffness probes of sim.c, displacement
-     * preload) keep the hybrid path: the stiffness is a 0.3 nm central
-     * difference that would carry the different solver noise. */
+    /* Held-displacement solves (sim.c's axial stiffness, a 0.3 nm central
+     * difference; displacement preload) keep the hybrid path's noise. */
     if (!m->fix_axial && ring_broyden(m, n, x0))
         return ACBB_OK;
     m->inner_status = ACBB_OK;
@@ -835,14 +834,22 @@ void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
     m->centred = 0; /* an explicit choice replaces the symmetry default */
 }
 
+void acbb_mech_adopt_state(const acbb_mech *m, acbb_mech_state *st)
+{
+    int sym = !m->dof_dz && !m->dof_thy;
+    if (st->symmetric && !sym) acbb_mech_spread(st);
+    st->symmetric = sym;
+    st->mirror = !sym; /* Fy and Mz are not scene loads, dy and thz never move */
+    st->dz = m->dof_dz ? st->dz : 0.0;
+    st->thy = m->dof_thy ? st->thy : 0.0;
+}
+
 acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err)
 {
     const acbb_geometry *g = &m->g;
     memset(st, 0, sizeof *st);
     st->n = g->Z;
-    st->symmetric = !m->dof_dz && !m->dof_thy;
-    /* Fy and Mz are not scene loads, dy and thz never move: mirror images. */
-    st->mirror = !st->symmetric;
+    acbb_mech_adopt_state(m, st);
     acbb_race_control rc0 = m->race;
     for (int j = 0; j < st->n; j++) {
         acbb_ball_state *b = &st->ball[j];
@@ -876,13 +883,6 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
         b->X2 = Lo * cos(a);
     }
     return acbb_mech_solve(m, 0.0, NULL, st, err);
-}
-
-void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src)
-{
-    /* Only the balls in use: the array is sized for the largest bearing. */
-    memcpy(dst, src, offsetof(acbb_mech_state, ball));
-    memcpy(dst->ball, src->ball, sizeof src->ball[0] * (size_t)src->n);
 }
 
 void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,

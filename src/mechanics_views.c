@@ -4,6 +4,8 @@
  * inputs that decide whether a ball's results can be kept (mechanics.h).
  * Kept apart from the equilibrium solver in mechanics.c. */
 #include <math.h>
+#include <stddef.h>
+#include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include "acbb/mechanics.h"
@@ -89,4 +91,11 @@ double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB
         d = fmax(d, (weight ? weight[k] : 1.0) * fabs(to[k] - from[k]) / scale);
     }
     return d;
+}
+
+void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src)
+{
+    /* Only the balls in use: the array is sized for the largest bearing. */
+    memcpy(dst, src, offsetof(acbb_mech_state, ball));
+    memcpy(dst->ball, src->ball, sizeof src->ball[0] * (size_t)src->n);
 }

@@ -6,6 +6,7 @@
 #include "tap.h"
 #include "acbb/mechanics.h"
 #include "acbb/broyden.h"
+#include "acbb/stiffness.h"
 
 #define DEG (M_PI / 180.0)
 #define RPM (M_PI / 30.0)
@@ -283,6 +284,13 @@ static int circle_hyperbola(const double *x, void *ctx, double *f)
     return 1;
 }
 
+static int atan_fn(const double *x, void *ctx, double *f)
+{
+    (void)ctx;
+    f[0] = atan(x[0]);
+    return 1;
+}
+
 static void test_broyden(void)
 {
     double x[2] = { 2.0, 0.5 }, f[2], J[4];
@@ -290,13 +298,22 @@ static void test_broyden(void)
     ok(acbb_fd_jacobian(circle_hyperbola, NULL, 2, x, f, 1e-7, J)
        && fabs(J[0] - 4.0) < 1e-5 && fabs(J[1] - 1.0) < 1e-5 && fabs(J[3] - 2.0) < 1e-5,
        "forward-difference Jacobian (4, 1; 0.5, 2)");
-    ok(acbb_broyden(circle_hyperbola, NULL, 2, J, x, f, 1e-13, 30), "Broyden converges");
+    ok(acbb_broyden(circle_hyperbola, NULL, 2, J, x, f, 1e-13, 30, 0), "Broyden converges");
     double want = sqrt(2.0 + sqrt(3.0));
     is_close(x[0], want, 1e-12, 0, "x = sqrt(2 + sqrt 3)");
     is_close(x[1], 1.0 / want, 1e-12, 0, "y = 1/x");
     double y[2] = { 2.0, 0.5 }, Jbad[4] = { -4.0, -1.0, -0.5, -2.0 };
-    ok(!acbb_broyden(circle_hyperbola, NULL, 2, Jbad, y, f, 1e-13, 30) && y[0] == 2.0,
+    ok(!acbb_broyden(circle_hyperbola, NULL, 2, Jbad, y, f, 1e-13, 30, 0) && y[0] == 2.0,
        "a step that raises the residual is refused, x kept");
+    /* atan(x) from x = 3 with the exact slope 0.1: the full Newton step
+     * lands at -9.5 and the half step at -3.25, both with a larger |f|;
+     * the quarter step (-0.125) lowers it, and the root is 0. */
+    double z = 3.0, Jz = 0.1, fz;
+    ok(!acbb_broyden(atan_fn, NULL, 1, &Jz, &z, &fz, 1e-13, 30, 1) && z == 3.0,
+       "atan from 3: one halving is not enough, refused");
+    Jz = 0.1;
+    int conv = acbb_broyden(atan_fn, NULL, 1, &Jz, &z, &fz, 1e-13, 30, 2);
+    ok(conv && fabs(z) < 1e-13, "atan from 3: two halvings reach the root 0 (%.1e)", z);
 }
 
 /* Transient mode (acbb_mech_set_transient, used by the sim inside thermal
@@ -345,6 +362,50 @@ static void test_transient_mode(void)
     acbb_mech_free(m);
 }
 
+/* Warm starts across workspaces (acbb_mech_adopt_state, the stiffness
+ * probes): a pure-thrust state is spread over the ring for a workspace
+ * with a radial load, and the warm solve reaches the same equilibrium as
+ * the cold continuation (MODEL.md section 3: it is unique) to solver
+ * noise; so does the ring stiffness from the converged state. */
+static void test_adopt_state(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    acbb_mech *m0, *m1;
+    acbb_error err;
+    static acbb_mech_state st0, cold, warm;
+    acbb_mech_new(&s, &m0, &err);
+    acbb_status rc = acbb_mech_init_state(m0, &st0, &err);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m0, s.inner_speed * r / 4, NULL, &st0, &err);
+    ok(rc == ACBB_OK && st0.symmetric, "pure thrust at 15000 rpm: symmetric state");
+    s.radial_load = 10.0;
+    acbb_mech_new(&s, &m1, &err);
+    rc = acbb_mech_init_state(m1, &cold, &err);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m1, s.inner_speed * r / 4, NULL, &cold, &err);
+    acbb_mech_state_copy(&warm, &st0);
+    acbb_mech_adopt_state(m1, &warm);
+    ok(!warm.symmetric && warm.mirror && warm.ball[7].Qi == st0.ball[0].Qi
+       && warm.ball[7].psi == st0.ball[7].psi, "adopted by a radial-load workspace: mirror "
+       "state, ball 0 spread, azimuths kept");
+    acbb_status rw = acbb_mech_solve(m1, s.inner_speed, NULL, &warm, &err);
+    ok(rc == ACBB_OK && rw == ACBB_OK, "cold continuation and warm solve with +10 N radial");
+    ok(fabs(warm.dz - cold.dz) <= 1e-6 * fabs(cold.dz), "same radial displacement (%.4g um) "
+       "from both starts to 1e-6", cold.dz * 1e6);
+    is_close(warm.ball[0].Qi, cold.ball[0].Qi, 1e-8, 0, "same load on the ball under the load");
+    acbb_stiffness kw, kc;
+    s.radial_load = 0.0;
+    acbb_ring_stiffness(&s, NULL, 0.0, &st0, &kw);
+    acbb_ring_stiffness(&s, NULL, 0.0, NULL, &kc);
+    ok(kc.radial > 0.0 && kc.tilt > 0.0, "stiffness by continuation: %.1f N/um, %.3f N m/mrad",
+       kc.radial * 1e-6, kc.tilt * 1e-3);
+    is_close(kw.radial, kc.radial, 1e-5, 0, "radial stiffness from the converged state agrees");
+    is_close(kw.tilt, kc.tilt, 1e-5, 0, "tilt stiffness from the converged state agrees");
+    acbb_mech_free(m0);
+    acbb_mech_free(m1);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -357,5 +418,6 @@ int main(void)
     test_mirror();
     test_broyden();
     test_transient_mode();
+    test_adopt_state();
     return done_testing();
 }

@@ -15,10 +15,11 @@ typedef int (*acbb_broyden_fn)(const double *x, void *ctx, double *f);
 /* From x with Jacobian J (row-major n x n, updated in place), iterate
  * until sum |f_i| < tol (GSL's residual test). Returns 1 on success: x is
  * the root, f its residual and the last evaluation was at x. Returns 0
- * after maxit steps, on a singular J, or as soon as a full step does not
- * lower sum |f| (then x and J are left at the last good point). */
+ * after maxit steps, on a singular J, or as soon as a step halved
+ * `halvings` times (0: the full step only) does not lower sum |f| (by 10 %
+ * when halvings > 0) (then x and J are left at the last good point). */
 int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
-                 double tol, int maxit);
+                 double tol, int maxit, int halvings);
 
 /* The Newton step: solve J d = -f (J row-major n x n, n <= 4) by Gaussian
  * elimination with partial pivoting; 0 if J is singular or d not finite. */

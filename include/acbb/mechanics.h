@@ -93,6 +93,12 @@ const acbb_geometry *acbb_mech_geometry(const acbb_mech *m);
  * (MODEL.md section 3 "Initial guesses"). */
 acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err);
 
+/* Make st, e.g. a converged state of another workspace with other loads
+ * (the stiffness probes of stiffness.c), a warm start for m: m's ball
+ * symmetry (a pure-thrust state is spread over the ring) and ring
+ * freedoms (those m does not have are zeroed). */
+void acbb_mech_adopt_state(const acbb_mech *m, acbb_mech_state *st);
+
 /* Solve the equilibrium at speed omega_i with expansions e (NULL = none),
  * warm-started from and written to st. On failure st keeps its input. */
 acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,

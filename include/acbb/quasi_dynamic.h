@@ -24,8 +24,9 @@ void acbb_qd_free(acbb_qd *q);
  * under 1 mN keep race-control speeds (no traction to drive them). The
  * largest relative change of omega_m is returned in *change. */
 /* Inside transient steps: a ball whose loads, contact angles and inlet
- * viscosities moved less than tol (relative; radians for the angles) since
- * its last solve keeps its speeds and tractions. 0 (the default) solves
+ * viscosities moved less than tol (relative; radians for the angles; the
+ * viscosities weighted 0.3) since its last solve keeps its speeds and
+ * tractions. 0 (the default) solves
  * every ball at every update, as the steady polish must. */
 void acbb_qd_set_skip(acbb_qd *q, double tol);
 

@@ -7,6 +7,7 @@
 #define ACBB_STIFFNESS_H
 
 #include "acbb/expansion.h"
+#include "acbb/mechanics.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
 
@@ -16,9 +17,13 @@ typedef struct {
 } acbb_stiffness;
 
 /* dx_held: the axial displacement to hold when the scene's preload is a
- * displacement (ignored otherwise). Either value is 0 when its solves
- * fail (a bearing with no load cannot be differenced). */
+ * displacement (ignored otherwise). warm: NULL or a converged state of the
+ * scene at its speed and expansions (any ball model, e.g. the sim's), the
+ * warm start of every probe; without it (or if a warm solve fails) each
+ * probe is reached by continuation in speed from rest (4 solves). Either
+ * value is 0 when its solves fail (a bearing with no load cannot be
+ * differenced). */
 acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, double dx_held,
-                                acbb_stiffness *out);
+                                const acbb_mech_state *warm, acbb_stiffness *out);
 
 #endif
