@@ -415,6 +415,12 @@ static bool cap_set(const acbb_scene *s, const acbb_scene *d)
         || s->cap_bc.dT != d->cap_bc.dT;
 }
 
+/* The cage's elastic constants or expansion differ from the defaults. */
+static bool cage_solid_set(const acbb_scene *s, const acbb_scene *d)
+{
+    return s->cage.E != d->cage.E || s->cage.nu != d->cage.nu || s->cage.chi != d->cage.chi;
+}
+
 /* Which switches a scene cannot feel (issue: every effect honest). Static
  * Hertz has no ball speeds, so no centrifugal force or gyroscopic moment;
  * WTE forces every expansion to zero (MODEL.md 9), the centrifugal ring
@@ -446,6 +452,10 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
           { "heat_partition", "the 46-node network splits the contact heat by its spot "
             "resistances; heat_partition applies to fidelity.network = 7 only (MODEL.md 8.3)",
             "thermal.heat_partition" } },
+        { cage_solid_set(s, &d),
+          { "cage_solid", "the model has no cage mechanics or cage expansion (MODEL.md 7); "
+            "only the cage's density, specific heat and conductivity enter (the network)",
+            "the cage's E, Poisson ratio or expansion (materials.cage_*)" } },
     };
     size_t n = 0;
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)

@@ -136,8 +136,11 @@ const acbb_sfield acbb_sf_table[] = {
              "MODEL.md 10 ASSUMED 11.5 (medium-C steel 10.8-12.5)"),
     MATERIAL(housing, 143, 0.27, 7300, 510, 45.0, 10.5, 9, 12,
              "MODEL.md 10 ASSUMED 10.5 (grey iron 9-12)"),
-    MATERIAL(cage, 206, 0.254, 7830, 460, 44.0, 11.7, 10.8, 12.5,
-             "MODEL.md 10 ASSUMED 11.7 (steel 10.8-12.5)"),
+    /* The cage's E, nu and chi enter nothing (no cage mechanics, MODEL.md 7
+     * expands balls, rings, shaft and housing only): no plausible range, so
+     * sensitivity and report do not vary a dead input; a changed value is
+     * named by acbb_scene_inactive_effects. */
+    MATERIAL(cage, 206, 0.254, 7830, 460, 44.0, 11.7, 0, 0, NULL),
 
     REAL("lubricant", "oil_density_kg_m3", "kg/m^3", oil_density, 1.0, 876, OC, 0, 2000,
          "oil density at 20 C"),

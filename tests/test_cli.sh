@@ -389,6 +389,12 @@ has "$TMP/cap.err" "surroundings.cap_* has no effect here: fidelity.network = 7 
 jq -e '[.effects_inactive[].key] == ["effects.centrifugal = on", "effects.gyroscopic = on",
         "thermal.heat_partition"]' "$TMP/hp.json" >/dev/null
 t $? "JSON effects_inactive names thermal.heat_partition on the 46-node network"
+"$ACBB" check presets/7008C.ini --set materials.cage_expansion_ppm_K=20 2>"$TMP/cage.err" >/dev/null
+code $? 0 "check with a changed cage expansion exits 0"
+has "$TMP/cage.err" "(materials.cage_*) has no effect here: the model has no cage mechanics" \
+    "stderr says the cage's expansion enters nothing"
+"$ACBB" keys | grep -A3 '^materials.cage_expansion_ppm_K' | grep -q 'plausible'
+[ $? -ne 0 ]; t $? "acbb keys gives the cage's expansion no plausible range (not an uncertain input)"
 jq -e '.effects_inactive == [] and .ring.stiffness_axial_N_per_um > 0
     and (.squeeze_um.net - (.squeeze_um.inner_thermal + .squeeze_um.inner_centrifugal
          + .squeeze_um.outer + .squeeze_um.ball) | if . < 0 then -. else . end) < 1e-6

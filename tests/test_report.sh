@@ -96,7 +96,7 @@ jq -e '[.. | strings | gsub("-> inf "; " ") | select(test("(^|[^a-z_])-?(nan|inf
 t $? "axial load 0: no nan/inf in any JSON text"
 
 # ---- --sensitivity (robustness) on one input: surroundings.shaft_bore ----
-# (the full run over all 25 inputs is in the slow suite: test_report_sens.sh)
+# (the full run over all 24 inputs is in the slow suite: test_report_sens.sh)
 "$ACBB" report "$PRESET" --sensitivity --inputs surroundings.shaft_bore >"$TMP/sens.txt" 2>"$TMP/err"
 code $? 0 "report --sensitivity --inputs surroundings.shaft_bore runs"
 [ ! -e surroundings.shaft_bore ] && [ ! -e "$TMP/surroundings.shaft_bore" ]
