@@ -277,6 +277,14 @@ static void test_stable_picks(void)
                e1[i].n_ok == e2[i].n_ok;
     ok(same, "2-point envelope, 2 threads then 1: identical rows and picks (%s)", err.msg);
     ok(good && n1 == 8 && e1[0].n_points == 2, "envelope rows: 3 hertz + 5 mech_tol, 2 points");
+    /* Both points rise less than the 1 K floor (15000 rpm 50 N: 0.58 K;
+     * 10000 rpm 100 N: 0.4 K), so every path error is its gap over 1 K:
+     * the worst relative error equals the worst gap in K, digit for digit. */
+    int floored = good && n1 > 0;
+    for (size_t i = 0; floored && i < n1; i++)
+        floored = e1[i].worst_path == e1[i].worst_path_K / ACBB_ACCURACY_T_FLOOR_K;
+    ok(floored, "2-point envelope (rises < 1 K): worst path == worst path K / 1 K on every row "
+       "(hb83: %.4g, %.4g K)", n1 > 0 ? e1[0].worst_path : NAN, n1 > 0 ? e1[0].worst_path_K : NAN);
 }
 
 int main(void)
