@@ -117,7 +117,7 @@ double acbb_acc_path_gap(const acbb_acc_path *a, const acbb_acc_path *ref)
 }
 
 /* On the scale of the steady temperature error (accuracy.h,
- * ACBB_ACCURACY_T_FLOOR_K): a 5 mK wiggle on a 0.02 K rise is not 25 %. */
+ * ACBB_ACCURACY_T_FLOOR_K): a 13 mK lag on a 0.047 K rise is not 27 %. */
 double acbb_acc_path_err(const acbb_acc_path *a, const acbb_acc_path *ref)
 {
     double gap = acbb_acc_path_gap(a, ref);

@@ -85,8 +85,10 @@ typedef struct {
 
 /* Floor of the scale of every temperature error (steady rise and transient
  * path), K: error = |dT - dT_ref| / max(|rise_ref|, 1 K). Why: at the
- * seed's light, slow points the outer-ring rise is 0.02 K, and a 5 mK
- * difference between two step sequences would read as a 28 % error. A rise
+ * seed's light, slow points the outer-ring rise is a few hundredths of a
+ * kelvin (0.047 K at 2000 rpm, 100 N), and the 13 mK by which the default
+ * settings trail the reference there on the way up read as a 27 % error
+ * (BENCHMARKS.md "Accuracy over the operating range"). A rise
  * below 1 K is below what a bearing test can resolve: IEC 60584-1
  * thermocouple tolerances are +-0.5 K (type T, class 1) to +-1.5 K (type K,
  * class 1). With the floor, 1 % of a small rise means 10 mK, still 50x
