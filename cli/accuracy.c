@@ -132,12 +132,14 @@ static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t
 {
     printf("acbb bench accuracy %s (median wall time of %ld run%s per setting)\n",
            a->preset, a->repeat, a->repeat == 1 ? "" : "s");
-    puts("One [fidelity] knob at a time around the preset. R: the knob's reference\n"
-         "(finest value; model: highest level available), D: the preset's value.\n"
-         "Errors in % are |x - x_ref| / |x_ref| against the knob's reference: total\n"
-         "loss, outer-ring temperature RISE above ambient (T), and for ball 0 at its\n"
-         "inner contact the load Qi, angle alpha and sliding speed slide. work: cost in\n"
-         "work units (M instructions, from the Sim's counters: repeatable).\n");
+    printf("One [fidelity] knob at a time around the preset. R: the knob's reference\n"
+           "(finest value; model: highest level available), D: the preset's value.\n"
+           "Errors in %% are |x - x_ref| / |x_ref| against the knob's reference: total\n"
+           "loss, outer-ring temperature RISE above ambient (T; over max(rise, %g K): a\n"
+           "smaller rise is within thermocouple tolerance), and for ball 0 at its\n"
+           "inner contact the load Qi, angle alpha and sliding speed slide. work: cost in\n"
+           "work units (M instructions, from the Sim's counters: repeatable).\n\n",
+           ACBB_ACCURACY_T_FLOOR_K);
     printf("%-19s %-2s %-10s %7s %7s %6s %6s %6s %6s %6s\n", "setting", "", "status", "ms",
            "work", "loss%", "T%", "Qi%", "alpha%", "slide%");
     acbb_accuracy_knob last = ACBB_KNOB_COUNT;

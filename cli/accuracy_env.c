@@ -19,23 +19,35 @@ static void label_of(const acbb_envelope_row *r, char *buf, size_t n)
     else snprintf(buf, n, "%s=%s", dot ? dot + 1 : r->key, r->value);
 }
 
+/* The worst path difference in K ("-" without a path): %.3f, so that a
+ * few mK read as such next to the relative number; below 1 mK "%.0e" (as
+ * the percentages: a solver-tolerance difference is not printed as 0). */
+static void format_K(double k, char *buf, size_t n)
+{
+    if (!isfinite(k)) snprintf(buf, n, "-");
+    else if (k == 0.0) snprintf(buf, n, "0");
+    else if (k < 1e-3) snprintf(buf, n, "%.0e", k);
+    else snprintf(buf, n, "%.3f", k);
+}
+
 static void print_row(const acbb_envelope_row *r)
 {
-    char label[96], e[6][16], ok[16];
+    char label[96], e[6][16], ok[16], pk[16];
     label_of(r, label, sizeof label);
     const double v[6] = { r->worst_steady, r->median_steady, r->worst_loss, r->worst_T,
                           r->worst_path, r->median_path };
     for (int k = 0; k < 6; k++) acbb_accuracy_format_pct(v[k], e[k], sizeof e[k]);
+    format_K(r->worst_path_K, pk, sizeof pk);
     snprintf(ok, sizeof ok, "%d/%d", r->n_ok, r->n_points);
-    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %6s %8.1f %7.1f\n", label,
+    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %7s %6s %8.1f %7.1f\n", label,
            r->is_reference ? "R" : (r->is_default ? "D" : ""), ok, e[0], e[1], e[2], e[3], e[4],
-           e[5], r->work, r->wall_ms);
+           pk, e[5], r->work, r->wall_ms);
 }
 
 static void print_table(const acbb_envelope_row *rows, size_t n)
 {
-    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %6s %8s %7s\n", "setting", "", "ok", "worst%",
-           "med%", "wLoss%", "wT%", "wPath%", "mPath%", "work", "ms");
+    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %7s %6s %8s %7s\n", "setting", "", "ok", "worst%",
+           "med%", "wLoss%", "wT%", "wPath%", "wPathK", "mPath%", "work", "ms");
     for (size_t i = 0; i < n; i++) {
         if (i > 0 && rows[i].knob != rows[i - 1].knob) putchar('\n');
         print_row(&rows[i]);
@@ -51,24 +63,26 @@ static void print_frontier(const acbb_envelope_row *rows, size_t n)
            100.0 * ACBB_ACCURACY_FRONTIER_TOL);
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
         if (picks[k] < 0) continue;
-        char label[96], w[16], p[16];
+        char label[96], w[16], p[16], pk[16];
         label_of(&rows[picks[k]], label, sizeof label);
         acbb_accuracy_format_pct(rows[picks[k]].worst_steady, w, sizeof w);
         acbb_accuracy_format_pct(rows[picks[k]].worst_path, p, sizeof p);
-        printf("  %-12s %-22s worst %s %%, path %s %%, %.1f work units\n",
-               acbb_accuracy_knob_name((acbb_accuracy_knob)k), label, w, p, rows[picks[k]].work);
+        format_K(rows[picks[k]].worst_path_K, pk, sizeof pk);
+        printf("  %-12s %-22s worst %s %%, path %s %% (%s K), %.1f work units\n",
+               acbb_accuracy_knob_name((acbb_accuracy_knob)k), label, w, p, pk,
+               rows[picks[k]].work);
     }
 }
 
-/* The measured numbers for k_table (relative errors, %.3g; work %.4g). */
+/* The measured numbers for k_table (relative errors and K, %.3g; work %.4g). */
 static void print_c_rows(const acbb_envelope_row *rows, size_t n)
 {
     printf("\nstored frontier rows (paste the numbers into src/fidelity_presets.c):\n");
     for (size_t i = 0; i < n; i++) {
         const acbb_envelope_row *r = &rows[i];
         if (r->knob != ACBB_KNOB_COUNT) continue;
-        printf("  /* %-9s */ %.3g, %.3g, %.3g, %.3g, %.4g\n", r->value, r->worst_steady,
-               r->median_steady, r->worst_path, r->median_path, r->work);
+        printf("  /* %-9s */ %.3g, %.3g, %.3g, %.3g, %.3g, %.4g\n", r->value, r->worst_steady,
+               r->median_steady, r->worst_path, r->median_path, r->worst_path_K, r->work);
     }
 }
 
@@ -113,9 +127,11 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
            " %.1f s\n", a->preset, points, jobs, jobs == 1 ? "" : "s", 1e-3 * ms);
     printf("Per setting over the points: worst / median of max(loss, T) error %% against its\n"
            "knob's reference (ladder: against 'reference'), worst loss and T errors, the\n"
-           "transient path error (max |T(t) - T_ref(t)| / rise, outer ring; '-' = no path),\n"
-           "median work units and wall ms per point. ok: points where it and its reference\n"
-           "converged.\n\n");
+           "transient path error (max |T(t) - T_ref(t)|, outer ring) in %% and, wPathK, in K,\n"
+           "median work units and wall ms per point. Temperature errors (T, path) are over\n"
+           "max(reference rise, %g K): a smaller rise is within thermocouple tolerance.\n"
+           "'-' = no path. ok: points where it and its reference converged.\n\n",
+           ACBB_ACCURACY_T_FLOOR_K);
     print_table(rows, n);
     print_frontier(rows, n);
     print_c_rows(rows, n);

@@ -318,6 +318,14 @@ double acbb_acc_rel_err(double x, double ref)
     return fabs(x - ref) / fabs(ref);
 }
 
+/* A rise below the floor is within thermocouple tolerance (accuracy.h,
+ * ACBB_ACCURACY_T_FLOOR_K): relative to it the error would mean nothing. */
+double acbb_acc_temp_err(double dT, double dT_ref)
+{
+    if (!isfinite(dT) || !isfinite(dT_ref)) return NAN;
+    return fabs(dT - dT_ref) / fmax(fabs(dT_ref), ACBB_ACCURACY_T_FLOOR_K);
+}
+
 long acbb_accuracy_reference(const acbb_accuracy_row *rows, size_t n, acbb_accuracy_knob k)
 {
     for (size_t i = 0; i < n; i++)
@@ -345,7 +353,7 @@ static void fill_errors(acbb_accuracy_row *rows, size_t n)
             acbb_accuracy_row *r = &rows[i];
             if (r->knob != (acbb_accuracy_knob)k || r->status != ACBB_OK) continue;
             r->e_loss = acbb_acc_rel_err(r->loss, R->loss);
-            r->e_T = acbb_acc_rel_err(r->dT_outer, R->dT_outer);
+            r->e_T = acbb_acc_temp_err(r->dT_outer, R->dT_outer);
             r->e_Qi = acbb_acc_rel_err(r->Qi, R->Qi);
             r->e_alpha = acbb_acc_rel_err(r->alpha_i, R->alpha_i);
             r->e_slide = acbb_acc_rel_err(r->slide_i, R->slide_i);

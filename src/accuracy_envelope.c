@@ -23,7 +23,7 @@
 /* What one setting gave at one point. */
 typedef struct {
     int ok;                     /* it and its reference converged */
-    double e_loss, e_T, e_path, work, wall_ms;
+    double e_loss, e_T, e_path, path_K, work, wall_ms;
 } cell;
 
 typedef struct {
@@ -109,13 +109,20 @@ static double max_gap(const acbb_acc_path *a, const acbb_acc_path *b)
     return m;
 }
 
-double acbb_acc_path_err(const acbb_acc_path *a, const acbb_acc_path *ref)
+double acbb_acc_path_gap(const acbb_acc_path *a, const acbb_acc_path *ref)
 {
     if (!a || !ref || a->oom || ref->oom || a->n < 2 || ref->n < 2) return NAN;
     if (!(a->t[a->n - 1] > 0.0) || !(ref->t[ref->n - 1] > 0.0)) return NAN;
-    double rise = fabs(ref->y[ref->n - 1]);
-    if (!(rise > 0.0)) return NAN;
-    return fmax(max_gap(a, ref), max_gap(ref, a)) / rise;
+    return fmax(max_gap(a, ref), max_gap(ref, a));
+}
+
+/* On the scale of the steady temperature error (accuracy.h,
+ * ACBB_ACCURACY_T_FLOOR_K): a 13 mK lag on a 0.047 K rise is not 27 %. */
+double acbb_acc_path_err(const acbb_acc_path *a, const acbb_acc_path *ref)
+{
+    double gap = acbb_acc_path_gap(a, ref);
+    if (!isfinite(gap) || !isfinite(ref->y[ref->n - 1])) return NAN;
+    return gap / fmax(fabs(ref->y[ref->n - 1]), ACBB_ACCURACY_T_FLOOR_K);
 }
 
 /* ---- one point ---- */
@@ -125,8 +132,9 @@ static void fill_cell(cell *c, const acbb_accuracy_row *r, const acbb_accuracy_r
 {
     c->ok = r->status == ACBB_OK && ref->status == ACBB_OK;
     c->e_loss = acbb_acc_rel_err(r->loss, ref->loss);
-    c->e_T = acbb_acc_rel_err(r->dT_outer, ref->dT_outer);
+    c->e_T = acbb_acc_temp_err(r->dT_outer, ref->dT_outer);
     c->e_path = c->ok ? acbb_acc_path_err(p, pref) : NAN;
+    c->path_K = c->ok ? acbb_acc_path_gap(p, pref) : NAN;
     c->ok = c->ok && isfinite(c->e_loss) && isfinite(c->e_T);
     c->work = r->work;
     c->wall_ms = r->wall_ms;
@@ -244,6 +252,7 @@ static void aggregate(const env *E, size_t j, double *buf, acbb_envelope_row *ou
         col[3][m] = c->e_path;
         col[4][m] = c->work;
         col[5][m] = c->wall_ms;
+        col[6][m] = c->path_K;
         m++;
     }
     out->n_ok = (int)m;
@@ -254,6 +263,7 @@ static void aggregate(const env *E, size_t j, double *buf, acbb_envelope_row *ou
     worst_median(col[3], m, &out->worst_path, &out->median_path);
     worst_median(col[4], m, &unused, &out->work);
     worst_median(col[5], m, &unused, &out->wall_ms);
+    worst_median(col[6], m, &out->worst_path_K, &unused);
 }
 
 static acbb_status setup(env *E, const acbb_scene *base, const acbb_envelope_options *o,

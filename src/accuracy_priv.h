@@ -32,9 +32,18 @@ void acbb_acc_run_one(const acbb_scene *sc, const _Atomic int *cancel, acbb_accu
 /* Relative error |x - ref| / |ref|; NaN when undefined. */
 double acbb_acc_rel_err(double x, double ref);
 
-/* max |a(t) - ref(t)| / |ref final| over the union of both sample times,
- * each path held at its last value after it ends; NaN when either path has
- * no simulated time (steady mode) or the reference rise is 0. */
+/* Error of a temperature rise dT against dT_ref, K:
+ * |dT - dT_ref| / max(|dT_ref|, ACBB_ACCURACY_T_FLOOR_K); NaN if either is
+ * not finite. */
+double acbb_acc_temp_err(double dT, double dT_ref);
+
+/* max |a(t) - ref(t)| in K over the union of both sample times, each path
+ * held at its last value after it ends; NaN when either path has no
+ * simulated time (steady mode) or is empty. */
+double acbb_acc_path_gap(const acbb_acc_path *a, const acbb_acc_path *ref);
+
+/* acbb_acc_path_gap on the scale of acbb_acc_temp_err: the gap over
+ * max(|ref final|, ACBB_ACCURACY_T_FLOOR_K). */
 double acbb_acc_path_err(const acbb_acc_path *a, const acbb_acc_path *ref);
 
 #endif

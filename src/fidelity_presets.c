@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "acbb/accuracy.h"
 #include "acbb/fidelity.h"
 
 #define QS ACBB_MODEL_QUASI_STATIC
@@ -18,22 +19,24 @@
 #define N46 ACBB_NET_46
 
 /* name, preset, model, grid, hertz, mech_tol, steady_tol, mode, dt, network,
- * worst/median steady, worst/median path, work per point */
+ * worst/median steady, worst/median path (relative; temperatures over
+ * max(rise, 1 K), accuracy.h ACBB_ACCURACY_T_FLOOR_K), worst path in K,
+ * work per point */
 static const acbb_fidelity_point k_table[] = {
     { "fast", ACBB_FIDELITY_FAST, QS, 4, ACBB_HERTZ_HB83, 1e-6, 1e-3, TR, 30, N46,
-      0.265, 0.106, 0.343, 0.144, 26.21 },
+      0.253, 0.106, 0.236, 0.109, 1.12, 26.21 },
     { "qs-6", ACBB_FIDELITY_CUSTOM, QS, 6, ACBB_HERTZ_BH77, 1e-8, 1e-4, TR, 5, N46,
-      0.251, 0.123, 0.325, 0.123, 44.69 },
+      0.241, 0.122, 0.222, 0.117, 1.17, 44.69 },
     { "qd-4", ACBB_FIDELITY_CUSTOM, QD, 4, ACBB_HERTZ_BH77, 1e-8, 1e-4, TR, 5, N46,
-      0.0364, 0.017, 0.27, 0.0304, 59.78 },
+      0.0364, 0.017, 0.0452, 0.0211, 0.232, 59.78 },
     { "balanced", ACBB_FIDELITY_BALANCED, QD, 6, ACBB_HERTZ_BH77, 1e-8, 1e-4, TR, 5, N46,
-      0.0155, 0.00624, 0.269, 0.0208, 83.01 },
+      0.0155, 0.00624, 0.0252, 0.0151, 0.0561, 83.01 },
     { "qd-8", ACBB_FIDELITY_CUSTOM, QD, 8, ACBB_HERTZ_EXACT, 1e-10, 1e-5, TR, 2, N46,
-      0.00957, 0.00448, 0.0281, 0.00624, 181.6 },
+      0.00957, 0.00448, 0.00915, 0.00294, 0.0218, 181.6 },
     { "qd-12", ACBB_FIDELITY_CUSTOM, QD, 12, ACBB_HERTZ_EXACT, 1e-10, 1e-5, TR, 1, N46,
-      0.00644, 0.00202, 0.0047, 0.00194, 318.3 },
+      0.00644, 0.00202, 0.0047, 0.00188, 0.031, 318.3 },
     { "reference", ACBB_FIDELITY_REFERENCE, QD, 24, ACBB_HERTZ_EXACT, 1e-12, 1e-5, TR, 1, N46,
-      0, 0, 0, 0, 1045 },
+      0, 0, 0, 0, 0, 1045 },
 };
 
 #define TABLE_N (sizeof k_table / sizeof k_table[0])
@@ -116,9 +119,11 @@ static void resolve_target(double target, acbb_fidelity_choice *c)
         c->target_met = 1;
         snprintf(c->note, sizeof c->note,
                  "fidelity: target %g %%: chose '%s', the cheapest stored setting whose "
-                 "worst error over the envelope is %.3g %% (steady %.3g %%, path %.3g %%)",
+                 "worst error over the envelope is %.3g %% (steady %.3g %%, path %.3g %%, at most "
+                 "%.2g K; temperatures over max(rise, %g K))",
                  100.0 * target, k_table[i].name, 100.0 * acbb_fidelity_worst(&k_table[i]),
-                 100.0 * k_table[i].worst_steady, 100.0 * k_table[i].worst_path);
+                 100.0 * k_table[i].worst_steady, 100.0 * k_table[i].worst_path,
+                 k_table[i].worst_path_K, ACBB_ACCURACY_T_FLOOR_K);
         return;
     }
     c->point = by_preset(ACBB_FIDELITY_REFERENCE);
@@ -142,9 +147,10 @@ int acbb_fidelity_resolve(const acbb_scene *s, acbb_fidelity_choice *c)
     if (!c->point) return 0;
     snprintf(c->note, sizeof c->note,
              "fidelity: preset '%s': worst error over the envelope %.3g %% (steady %.3g %%, "
-             "path %.3g %%)",
+             "path %.3g %%, at most %.2g K; temperatures over max(rise, %g K))",
              c->point->name, 100.0 * acbb_fidelity_worst(c->point),
-             100.0 * c->point->worst_steady, 100.0 * c->point->worst_path);
+             100.0 * c->point->worst_steady, 100.0 * c->point->worst_path,
+             c->point->worst_path_K, ACBB_ACCURACY_T_FLOOR_K);
     add_knobs(c);
     return 1;
 }

@@ -196,6 +196,10 @@ static void check_values(const acbb_scene *s, const acbb_accuracy_row *rows, siz
     const acbb_accuracy_row *R = find(rows, n, ACBB_KNOB_CONTACT_GRID, "64");
     if (!r || !R) return;
     is_close(r->e_loss, fabs(r->loss - R->loss) / fabs(R->loss), 1e-15, 0, "grid 4: e_loss by hand");
+    /* The 7008C default point rises ~8.8 K, above the 1 K floor of the
+     * temperature scale (ACBB_ACCURACY_T_FLOOR_K): e_T is plain relative. */
+    ok(R->dT_outer > ACBB_ACCURACY_T_FLOOR_K, "grid 64: rise %.4g K above the %g K floor",
+       R->dT_outer, ACBB_ACCURACY_T_FLOOR_K);
     is_close(r->e_T, fabs(r->dT_outer - R->dT_outer) / fabs(R->dT_outer), 1e-15, 0,
              "grid 4: e_T is the error of the rise above ambient");
     is_close(r->e_Qi, fabs(r->Qi - R->Qi) / fabs(R->Qi), 1e-15, 0, "grid 4: e_Qi by hand");

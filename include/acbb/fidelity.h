@@ -7,8 +7,10 @@
  * the seed's 48 study points, against the `reference` entry): worst and
  * median relative error of the steady state (max of total loss and
  * outer-ring temperature rise) and of the transient path (max |T(t) -
- * T_ref(t)| of the outer ring over the history, over the reference rise),
- * and the median cost per point in work units (accuracy.h).
+ * T_ref(t)| of the outer ring over the history), both temperature errors
+ * over max(reference rise, ACBB_ACCURACY_T_FLOOR_K = 1 K), the worst path
+ * difference in K, and the median cost per point in work units
+ * (accuracy.h).
  *
  * Scene keys: fidelity.preset = custom | fast | balanced | reference, and
  * fidelity.target_error_pct (0 = off). When either is set, the Sim applies
@@ -37,6 +39,7 @@ typedef struct {
     /* Measured over the envelope (relative errors, not %). */
     double worst_steady, median_steady;
     double worst_path, median_path;
+    double worst_path_K;          /* the largest max |T(t) - T_ref(t)|, K */
     double work;                  /* median work units per point (accuracy.h) */
 } acbb_fidelity_point;
 
