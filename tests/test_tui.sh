@@ -197,10 +197,10 @@ ok $? "frontier line picks contact_grid=$fr, within 1 % by the CLI's numbers"
 # loaded machine before judging.
 for _ in $(seq 50); do
     marks=$(screen | sed -n '/G contact_grid/,$p' | tr -cd G | wc -c)
-    [ "$marks" -ge 4 ] && screen | grep -q '^ *1% [ -]' && screen | grep -q '^ *0 .*G' && break
+    [ "$marks" -ge 4 ] && screen | grep -q '^ *1% .*- - ' && screen | grep -q '^ *0 .*G' && break
     sleep 0.2
 done
-[ "$marks" -ge 4 ] && screen | grep -q '^ *1% [ -]' && screen | grep -q '^ *0 .*G'
+[ "$marks" -ge 4 ] && screen | grep -q '^ *1% .*- - ' && screen | grep -q '^ *0 .*G'
 ok $? "chart: legend + $((marks - 1)) G markers, the 1 % line, the reference on the zero floor"
 ! screen | LC_ALL=C grep -q '[^ -~]'
 ok $? "C locale: the accuracy screen is ASCII only"
