@@ -27,7 +27,7 @@
  * table has per setting the worst and median error over the points (steady
  * and transient path), the median work units per point, then the frontier
  * over the envelope and the ladder's numbers as C rows for
- * src/fidelity_presets.c. Exit 3 when a setting failed at some point. */
+ * src/scene/fidelity_presets.c. Exit 3 when a setting failed at some point. */
 #ifndef ACBB_CLI_ACCURACY_H
 #define ACBB_CLI_ACCURACY_H
 

@@ -1,6 +1,6 @@
 /* acbb CLI — `acbb bench accuracy --envelope` (accuracy.h): every knob
  * setting over the seed's 48 study points, the frontier over the envelope,
- * and the ladder's measured numbers as rows for src/fidelity_presets.c. */
+ * and the ladder's measured numbers as rows for src/scene/fidelity_presets.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -77,7 +77,7 @@ static void print_frontier(const acbb_envelope_row *rows, size_t n)
 /* The measured numbers for k_table (relative errors and K, %.3g; work %.4g). */
 static void print_c_rows(const acbb_envelope_row *rows, size_t n)
 {
-    printf("\nstored frontier rows (paste the numbers into src/fidelity_presets.c):\n");
+    printf("\nstored frontier rows (paste the numbers into src/scene/fidelity_presets.c):\n");
     for (size_t i = 0; i < n; i++) {
         const acbb_envelope_row *r = &rows[i];
         if (r->knob != ACBB_KNOB_COUNT) continue;

@@ -1,11 +1,23 @@
 /* acbb CLI — shared helpers (common.h). */
 #include <stdio.h>
+#include <string.h>
 #include "common.h"
 #include "exit.h"
 
 const char *acbb_cli_err_text(const acbb_error *err, acbb_status st)
 {
     return err->msg[0] ? err->msg : acbb_status_name(st);
+}
+
+/* The engine names a failed edit by its text ("key=value: why"); on the
+ * command line that edit was a --set option, so say so. */
+const char *acbb_cli_set_prefix(const char *msg, const char *const *sets, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        size_t len = strlen(sets[i]);
+        if (strncmp(msg, sets[i], len) == 0 && msg[len] == ':') return "--set ";
+    }
+    return "";
 }
 
 int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
@@ -21,7 +33,8 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
             fprintf(stderr, "acbb: note: %s has no effect here: %s\n", in[i].key, in[i].why);
         return 0;
     }
-    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+    const char *msg = acbb_cli_err_text(&err, st);
+    fprintf(stderr, "acbb: %s%s\n", acbb_cli_set_prefix(msg, a->sets, a->n_sets), msg);
     return acbb_cli_exit_for(st);
 }
 

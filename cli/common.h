@@ -11,6 +11,9 @@
 
 /* The engine's message, or the status name when it left none. */
 const char *acbb_cli_err_text(const acbb_error *err, acbb_status st);
+/* "--set " when msg names one of the --set edits (engine messages start with
+ * the edit text), else "". */
+const char *acbb_cli_set_prefix(const char *msg, const char *const *sets, size_t n);
 
 /* a->preset with a->sets applied: 0, or the exit status (message printed). */
 int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc);

@@ -90,7 +90,7 @@ static int annotate(const char *path, const acbb_designation *d, const acbb_esti
     fprintf(f, "; %s: %s ball bearing, made by `acbb new %s`.\n; d x D x B = %g x %g x %g mm: "
                "ISO 15:2017 general plan (boundary dimensions).\n; Lines \"; estimated: ...\" "
                "mark internal geometry that catalogues do not publish,\n; estimated by the rule "
-               "given (src/designation.c); overwrite any of it.\n",
+               "given (src/scene/designation.c); overwrite any of it.\n",
             d->name, d->deep_groove ? "deep-groove" : "angular-contact", d->name,
             d->bore * 1e3, d->outer_diameter * 1e3, d->width * 1e3);
     char line[512], section[64] = "";

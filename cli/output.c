@@ -270,7 +270,7 @@ static void summary_losses(acbb_cli_out *o, const acbb_scene *sc, const acbb_sna
     fprintf(f, "\n\n%-13s", "losses");
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         if (!acbb_loss_enabled(sc, (acbb_loss_kind)l)) continue;
-        fprintf(f, "%9s", acbb_loss_table[l].name);
+        fprintf(f, "%9s", acbb_loss_name((acbb_loss_kind)l));
         P[n++] = L->P[l];
     }
     fprintf(f, "%9s\n%-13s", "total", "  W");
@@ -599,7 +599,7 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
     fprintf(f, "\n%-10s", "losses W");
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         on[l] = n > 0 && acbb_loss_enabled(&pts[0].scene, (acbb_loss_kind)l);
-        if (on[l]) fprintf(f, " %8s", acbb_loss_table[l].name);
+        if (on[l]) fprintf(f, " %8s", acbb_loss_name((acbb_loss_kind)l));
     }
     fprintf(f, " %8s %8s\n", "total", "wall ms");
     for (size_t i = 0; i < n; i++) {

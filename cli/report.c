@@ -11,6 +11,7 @@
 #include "acbb/outfile.h"
 #include "acbb/scene.h"
 #include "acbb/study.h"
+#include "common.h"
 #include "progress.h"
 #include "report.h"
 
@@ -506,7 +507,7 @@ static void print_md(FILE *f, const report_view *c)
         }
     }
     if (c->rob) print_robust_md(f, c);
-    fputs("\nThresholds MODEL.md does not give are fixed in src/study_priv.h (REPORT_*) and "
+    fputs("\nThresholds MODEL.md does not give are fixed in src/batch/study_priv.h (REPORT_*) and "
           "named in each check.\n", f);
 }
 
@@ -594,7 +595,9 @@ static int load_base(const rargs *a, acbb_scene *s)
     }
     st = acbb_scene_apply_edits(s, a->sets, (size_t)a->n_sets, &err);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: report: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        const char *msg = err.msg[0] ? err.msg : acbb_status_name(st);
+        fprintf(stderr, "acbb: report: %s%s\n",
+                acbb_cli_set_prefix(msg, a->sets, (size_t)a->n_sets), msg);
         return EXIT_BADINPUT;
     }
     return 0;

@@ -66,7 +66,7 @@ static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
     o->jobs = (int)jobs;
     acbb_error err = {{0}};
     if (!rc && acbb_metric_check(o->metric, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: sensitivity: %s\n", err.msg);
+        fprintf(stderr, "acbb: sensitivity: %s; `acbb metrics` lists them\n", err.msg);
         rc = ACBB_EXIT_INPUT;
     }
     return rc;

@@ -102,7 +102,7 @@ static int build_grid(const acbb_cli_args *a, acbb_sweep *g)
                     "--param section.key and --values v1,v2,...\n");
     return ACBB_EXIT_INPUT;
 bad:
-    fprintf(stderr, "acbb: sweep: %s\n", err.msg);
+    fprintf(stderr, "acbb: sweep: --grid %s\n", err.msg);
     return ACBB_EXIT_INPUT;
 }
 

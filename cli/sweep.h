@@ -26,7 +26,7 @@
 #define ACBB_CLI_SWEEP_NAME 40
 
 /* The scalar results of a point, names and values (NAN when snap is NULL);
- * returns how many. The loss columns follow acbb_loss_table. */
+ * returns how many. The loss columns follow the loss kinds (loss_kinds.h). */
 size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
                               char names[][ACBB_CLI_SWEEP_NAME], double *v);
 

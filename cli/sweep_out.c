@@ -35,7 +35,7 @@ size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
     put(names, v, &n, "T_cavity_C", s->T_cavity + nan_);
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         char key[ACBB_CLI_SWEEP_NAME];
-        snprintf(key, sizeof key, "P_%s_W", acbb_loss_table[l].name);
+        snprintf(key, sizeof key, "P_%s_W", acbb_loss_name((acbb_loss_kind)l));
         put(names, v, &n, key, s->losses.P[l] + nan_);
     }
     put(names, v, &n, "P_total_W", s->losses.total + nan_);

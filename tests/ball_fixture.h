@@ -6,8 +6,8 @@
 #define ACBB_BALL_FIXTURE_H
 
 #include <stdio.h>
-#include "acbb/mechanics.h"
-#include "acbb/quasi_dynamic.h"
+#include "mechanics.h"
+#include "quasi_dynamic.h"
 #include "acbb/units.h"
 
 typedef struct {

@@ -22,10 +22,10 @@
 #include <gsl/gsl_errno.h>
 #include "tap.h"
 #include "acbb/designation.h"
-#include "acbb/geometry.h"
-#include "acbb/hertz.h"
-#include "acbb/lubrication.h"
-#include "acbb/mechanics.h"
+#include "geometry.h"
+#include "hertz.h"
+#include "lubrication.h"
+#include "mechanics.h"
 #include "acbb/sim.h"
 #include "acbb/units.h"
 

@@ -10,7 +10,7 @@
 #include <gsl/gsl_errno.h>
 #include "tap.h"
 #include "ball_fixture.h"
-#include "acbb/dynamic.h"
+#include "dynamic.h"
 
 #define GRID 8          /* the dynamic level's test grid, as in test_levels */
 #define WINDOW 1e-3     /* s: the warm window of the coupled stepper */

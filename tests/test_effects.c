@@ -7,8 +7,8 @@
 #include "tap.h"
 #include "acbb/sim.h"
 #include "acbb/units.h"
-#include "acbb/hertz.h"
-#include "acbb/mechanics.h"
+#include "hertz.h"
+#include "mechanics.h"
 
 static acbb_snapshot snap_a, snap_b; /* large structs off the stack */
 

@@ -1,4 +1,4 @@
-/* Tests for src/expansion.c: seed eqs (1), (3), (4), (9) and the SEED
+/* Tests for src/physics/expansion.c: seed eqs (1), (3), (4), (9) and the SEED
  * projections (MODEL.md section 7) against hand values. */
 #include <math.h>
 #include <stdio.h>
@@ -6,7 +6,7 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "acbb/expansion.h"
+#include "expansion.h"
 #include "tap.h"
 
 #define DEG (M_PI / 180.0)

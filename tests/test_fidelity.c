@@ -3,7 +3,7 @@
  * (acbb_accuracy_work_units) on the 7008C scene (MODEL.md section 10).
  *
  * Expected values are worked out here: the target picks by hand from the
- * committed table (src/fidelity_presets.c), the work units from the
+ * committed table (src/scene/fidelity_presets.c), the work units from the
  * callgrind weights written out, the path error on hand-made paths, and
  * the stability of the frontier by running the same small plan twice. */
 #include <math.h>
@@ -15,7 +15,7 @@
 #include "acbb/accuracy.h"
 #include "acbb/fidelity.h"
 #include "acbb/sim.h"
-#include "../src/accuracy_priv.h"
+#include "accuracy_priv.h"
 
 /* Hand-checked against the committed table (worst = max(steady, path),
  * temperatures over max(rise, 1 K)): fast 25.3 %, qs-6 24.1 %, qd-4 4.52 %,

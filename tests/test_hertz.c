@@ -1,4 +1,4 @@
-/* Tests for src/hertz.c against MODEL.md section 2 reference values,
+/* Tests for src/physics/hertz.c against MODEL.md section 2 reference values,
  * hand calculations and an independent AGM evaluation of K and E. */
 #include <math.h>
 #include <stdio.h>
@@ -6,7 +6,7 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "acbb/hertz.h"
+#include "hertz.h"
 #include "tap.h"
 
 /* Independent complete elliptic integrals by the arithmetic-geometric mean

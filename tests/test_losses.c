@@ -3,8 +3,8 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/losses.h"
-#include "acbb/mechanics.h"
+#include "losses.h"
+#include "mechanics.h"
 
 static void scene_min(acbb_scene *s)
 {

@@ -1,4 +1,4 @@
-/* Tests for src/lubrication.c against MODEL.md section 5 values and hand
+/* Tests for src/physics/lubrication.c against MODEL.md section 5 values and hand
  * calculations of the Walther, Roelands, Hamrock-Dowson, Gupta,
  * Zhou-Hoeprich and Eyring formulas. */
 #include <math.h>
@@ -7,7 +7,7 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "acbb/lubrication.h"
+#include "lubrication.h"
 #include "tap.h"
 
 /* The 7008C lubricant of MODEL.md section 10, built by hand. */

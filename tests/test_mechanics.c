@@ -4,9 +4,9 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/mechanics.h"
-#include "acbb/broyden.h"
-#include "acbb/stiffness.h"
+#include "mechanics.h"
+#include "broyden.h"
+#include "stiffness.h"
 
 #define DEG (M_PI / 180.0)
 #define RPM (M_PI / 30.0)

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
-#include "acbb/network.h"
+#include "network.h"
 #include "tap.h"
 
 #define RPM (2.0 * M_PI / 60.0)

@@ -53,7 +53,7 @@ done
 # ---- a wider cross-check of the boundary-dimension table ----
 # d x D x B from the SKF rolling bearings catalogue (PUB BU/P1 17000 EN,
 # 2018) deep-groove tables, read independently of the table in
-# src/designation.c: all five diameter series, small to large bores.
+# src/scene/designation.c: all five diameter series, small to large bores.
 bad=""
 for row in "6000 10 26 8" "6200 10 30 9" "6300 10 35 11" "61800 10 19 5" "61900 10 22 6" \
            "6004 20 42 12" "6304 20 52 15" "61804 20 32 7" "61904 20 37 9" "6008 40 68 15" \

@@ -815,7 +815,7 @@ static void test_apply_edits(void)
     s = before;
     const char *bad[] = { "operating.radial_load_N=0", "bearing.ball_diameter_mm=-3" };
     ok(acbb_scene_apply_edits(&s, bad, 2, &err) == ACBB_EINVAL, "a bad edit fails the batch");
-    ok(strcmp(err.msg, "--set bearing.ball_diameter_mm=-3: bearing.ball_diameter_mm = -3: "
+    ok(strcmp(err.msg, "bearing.ball_diameter_mm=-3: bearing.ball_diameter_mm = -3: "
                        "must be > 0 mm") == 0, "message names the edit: %s", err.msg);
     ok(s.radial_load == 600, "scene unchanged after a failed batch");
     const char *cross[] = { "operating.axial_load_N=50" };
@@ -823,7 +823,7 @@ static void test_apply_edits(void)
        "cross-field rules still run on the result");
     const char *noeq[] = { "operating.axial_load_N" };
     ok(acbb_scene_apply_edits(&s, noeq, 1, &err) == ACBB_EINVAL
-           && strcmp(err.msg, "--set operating.axial_load_N: expected section.key=value") == 0,
+           && strcmp(err.msg, "operating.axial_load_N: expected section.key=value") == 0,
        "an edit without '=' is refused: %s", err.msg);
 }
 

@@ -14,9 +14,9 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/geometry.h"
-#include "acbb/hertz.h"
-#include "acbb/network.h"
+#include "geometry.h"
+#include "hertz.h"
+#include "network.h"
 #include "acbb/study.h"
 #include "acbb/units.h"
 

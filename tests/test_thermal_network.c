@@ -4,7 +4,7 @@
  * caching, singular networks and input validation. */
 #include <math.h>
 #include <gsl/gsl_errno.h>
-#include "acbb/thermal_network.h"
+#include "thermal_network.h"
 #include "tap.h"
 
 /* Node 0 fixed at T0, node 1 with capacity C, edge R, heat q into node 1. */

@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/traction.h"
+#include "traction.h"
 #include "acbb/units.h"
 
 #define GRID 32

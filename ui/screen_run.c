@@ -84,9 +84,9 @@ static void losses_panel(acbb_app *a, acbb_rect r)
         double v = total ? l->total : l->P[k], vb = total ? lb->total : lb->P[k];
         char name[16];
         if (!total) {
-            const acbb_loss_desc *d = &acbb_loss_table[k];
             if (!acbb_loss_enabled(&a->ed.scene, (acbb_loss_kind)k) && v == 0.0) { row--; continue; }
-            snprintf(name, sizeof name, "%.7s %s", d->name, d->symbol);
+            snprintf(name, sizeof name, "%.7s %s", acbb_loss_name((acbb_loss_kind)k),
+                     acbb_loss_symbol((acbb_loss_kind)k));
         } else snprintf(name, sizeof name, "Total");
         acbb_role role = total ? ACBB_ROLE_HEADER : ACBB_ROLE_NORMAL;
         if (a->has_base) {

@@ -1,7 +1,7 @@
 /* acbb — a bearing from its designation: ISO 15 boundary dimensions (bore,
  * outside diameter, width) of the common ball-bearing series, and a scene
  * whose internal geometry (which catalogues do not publish) is estimated
- * by stated rules (src/designation.c says which and why).
+ * by stated rules (src/scene/designation.c says which and why).
  *
  * Supported: angular contact 70xx, 72xx, 73xx, 718xx, 719xx with suffix
  * C (15 deg), AC (25 deg) or B (40 deg); deep groove 60xx, 62xx, 63xx,

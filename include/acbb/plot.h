@@ -67,7 +67,7 @@ acbb_status acbb_plot_accuracy_file(const acbb_accuracy_row *rows, size_t n,
                                     acbb_plot_format fmt, const char *path, int width,
                                     int height, const char *title, acbb_error *err);
 
-/* ---- general x-y plot (src/plot_xy.c; the seed's figures, figures.h) ---- */
+/* ---- general x-y plot (src/io/plot_xy.c; the seed's figures, figures.h) ---- */
 
 typedef struct {
     const char *label;       /* key entry, plain text */

@@ -4,7 +4,7 @@
  * stored in degrees Celsius (only differences and the Walther law use them;
  * the Walther law converts to K itself). The preset file uses the units
  * named in each key (`ball_diameter_mm`, `inner_speed_rpm`, ...); the schema
- * table in src/scene_schema.c converts both ways.
+ * table in src/scene/scene_schema.c converts both ways.
  *
  * Ownership: an acbb_scene is a plain value (no pointers); copy it freely. */
 #ifndef ACBB_SCENE_H

@@ -15,7 +15,7 @@
 #include "acbb/scene.h"
 #include "acbb/status.h"
 #include "acbb/limits.h"
-#include "acbb/losses.h"
+#include "acbb/loss_kinds.h"
 
 /* What a user sees of one ball. Sliding speeds are the pressure-weighted
  * mean magnitude of the translational (Heathcote + gross) slip over the
@@ -58,8 +58,7 @@ typedef struct {
     long expansion_updates;     /* thermal/centrifugal expansion evaluations */
 } acbb_work;
 
-/* The losses, W, indexed by acbb_loss_kind (losses.h: acbb_loss_table
- * gives each one's name, symbol and heat node). */
+/* The losses, W, indexed by acbb_loss_kind (loss_kinds.h names them). */
 typedef struct {
     double P[ACBB_LOSS_KINDS];
     double total;

@@ -1,0 +1,272 @@
+/* acbb — the seed's figures from the study's runs (figures.h): recording
+ * the TE load-sweep trajectories, turning table rows into series, and
+ * writing each panel's data file and PNG/SVG (src/io/plot_xy.c).
+ *
+ * Panels are independent, so they are written in parallel; each panel is
+ * one gnuplot process (both formats), the cost that dominates the command
+ * (BENCHMARKS.md "Seed figures"). Nothing here prints. */
+#include <limits.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "acbb/figures.h"
+#include "acbb/measure.h"
+#include "figures_priv.h"
+
+#define MAX_JOBS 16
+
+/* ---- a small parallel for (each index once, any order) ---- */
+
+typedef struct {
+    acbb_figures_par_fn fn;
+    void *ctx;
+    size_t n;
+    atomic_size_t next;
+} par;
+
+static void *par_worker(void *arg)
+{
+    par *p = arg;
+    for (size_t i; (i = atomic_fetch_add(&p->next, 1)) < p->n;) p->fn(p->ctx, i);
+    return NULL;
+}
+
+void acbb_figures_par_for(size_t n, int jobs, acbb_figures_par_fn fn, void *ctx)
+{
+    par p = { .fn = fn, .ctx = ctx, .n = n };
+    atomic_init(&p.next, 0);
+    long want = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
+    size_t extra = want < 1 ? 0 : want > MAX_JOBS ? MAX_JOBS - 1 : (size_t)want - 1, started = 0;
+    pthread_t tid[MAX_JOBS];
+    for (; started < extra && started + 1 < n; started++)
+        if (pthread_create(&tid[started], NULL, par_worker, &p) != 0) break;
+    par_worker(&p); /* the calling thread works too */
+    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
+}
+
+/* ---- recording the TE load sweep ---- */
+
+typedef struct {
+    acbb_fig_traj *tr;
+    double ambient;
+    acbb_snapshot snap;
+} rec_ctx;
+
+static void push_step(acbb_fig_traj *tr, const acbb_snapshot *s, double ambient)
+{
+    if (tr->n == tr->cap) {
+        size_t cap = tr->cap ? 2 * tr->cap : 256;
+        acbb_fig_step *p = realloc(tr->p, cap * sizeof *p);
+        if (!p) {
+            tr->oom = 1;
+            return;
+        }
+        tr->p = p;
+        tr->cap = cap;
+    }
+    const acbb_ball_view *b = &s->balls[0];
+    const acbb_squeeze *q = &s->squeeze;
+    tr->p[tr->n++] = (acbb_fig_step){
+        .iteration = (double)s->iteration, .t = s->time,
+        .T5_rise = s->T_outer_ring - ambient,
+        .exp_in = s->exp_inner + s->exp_inner_cen, .exp_out = s->exp_outer,
+        .exp_ball = s->exp_ball, .dA1 = s->delta_x,
+        /* MODEL.md 3 (CLEAN): Delta A2 = theta_i + theta_icen - theta_o. */
+        .dA2 = q->inner_thermal + q->inner_centrifugal + q->outer,
+        .Qi = b->Qi, .Qo = b->Qo, .alpha_i = b->alpha_i, .alpha_o = b->alpha_o,
+        .wx = b->omega_x, .wy = b->omega_y, .wz = b->omega_z };
+}
+
+static int rec_hook(void *ctx, const acbb_sim *sim)
+{
+    rec_ctx *c = ctx;
+    acbb_sim_snapshot(sim, &c->snap);
+    push_step(c->tr, &c->snap, c->ambient);
+    return 0;
+}
+
+typedef struct {
+    acbb_fig_input *in;
+    const atomic_int *cancel;
+} rec_job;
+
+static void record_one(void *ctx, size_t k)
+{
+    rec_job *j = ctx;
+    acbb_fig_traj *tr = &j->in->traj[k];
+    const acbb_study_point *pt =
+        &j->in->runs->sweep[ACBB_STUDY_BASE][ACBB_STUDY_LOAD][2 * k + ACBB_STUDY_TE];
+    acbb_error err = { { 0 } };
+    rec_ctx *c = malloc(sizeof *c);
+    acbb_sim *sim = NULL;
+    tr->status = !c ? ACBB_ENOMEM : pt->skip ? pt->status
+                                  : acbb_sim_new_ctl(&pt->scene, j->cancel, &sim, &err);
+    if (tr->status == ACBB_OK) {
+        *c = (rec_ctx){ .tr = tr, .ambient = pt->scene.ambient_C };
+        acbb_run_ctl ctl = { .hook = rec_hook, .ctx = c, .cancel = j->cancel };
+        tr->status = acbb_sim_drive(sim, &ctl);
+        acbb_sim_snapshot(sim, &c->snap);
+        if (tr->status == ACBB_OK && c->snap.state != ACBB_RUN_CONVERGED)
+            tr->status = c->snap.status != ACBB_OK ? c->snap.status : ACBB_NOT_CONVERGED;
+        snprintf(tr->message, sizeof tr->message, "%s", c->snap.message);
+    } else {
+        snprintf(tr->message, sizeof tr->message, "%s",
+                 err.msg[0] ? err.msg : pt->skip ? pt->message : acbb_status_name(tr->status));
+    }
+    if (tr->oom) tr->status = ACBB_ENOMEM;
+    acbb_sim_free(sim);
+    free(c);
+}
+
+acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const atomic_int *cancel,
+                                acbb_fig_input **out, acbb_error *err)
+{
+    *out = NULL;
+    acbb_fig_input *in = calloc(1, sizeof *in);
+    if (!in) return acbb_error_set(err, ACBB_ENOMEM, "figures: out of memory");
+    in->runs = runs;
+    double t0 = acbb_now_ms();
+    rec_job j = { in, cancel };
+    acbb_figures_par_for(ACBB_STUDY_NPTS, jobs, record_one, &j);
+    in->wall_ms = acbb_now_ms() - t0;
+    *out = in;
+    if (cancel && atomic_load(cancel))
+        return acbb_error_set(err, ACBB_CANCELLED, "figures: cancelled");
+    return ACBB_OK;
+}
+
+void acbb_figures_input_free(acbb_fig_input *in)
+{
+    if (!in) return;
+    for (int k = 0; k < ACBB_STUDY_NPTS; k++) free(in->traj[k].p);
+    free(in);
+}
+
+/* ---- series ---- */
+
+static acbb_fig_series *add_series(acbb_fig_data *d, size_t cap, int color, int dash,
+                                   int points, const char *fmt, ...)
+    __attribute__((format(printf, 6, 7)));
+static acbb_fig_series *add_series(acbb_fig_data *d, size_t cap, int color, int dash,
+                                   int points, const char *fmt, ...)
+{
+    if (d->n >= ACBB_FIG_MAX_SERIES || cap == 0) return NULL;
+    acbb_fig_series *s = &d->s[d->n];
+    *s = (acbb_fig_series){ .color = color, .dash = dash, .points = points };
+    s->x = malloc(cap * sizeof *s->x);
+    s->y = malloc(cap * sizeof *s->y);
+    if (!s->x || !s->y) {
+        free(s->x);
+        free(s->y);
+        d->oom = 1;
+        return NULL;
+    }
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(s->label, sizeof s->label, fmt, ap);
+    va_end(ap);
+    d->n++;
+    return s;
+}
+
+/* Keep a point only when both coordinates are finite. */
+static void put(acbb_fig_series *s, double x, double y)
+{
+    if (isfinite(x) && isfinite(y)) {
+        s->x[s->n] = x;
+        s->y[s->n++] = y;
+    }
+}
+
+static void why(acbb_fig_data *d, const char *what, const char *status, const char *msg)
+{
+    if (!d->why[0])
+        snprintf(d->why, sizeof d->why, "%s: %s%s%s", what, status, msg[0] ? ": " : "", msg);
+}
+
+static void eval_traj(const acbb_figure_row *row, const acbb_fig_input *in, acbb_fig_data *d)
+{
+    int a = row->sel == ACBB_FIG_LARGE ? ACBB_STUDY_NLIGHT : 0;
+    int z = row->sel == ACBB_FIG_LIGHT ? ACBB_STUDY_NLIGHT : ACBB_STUDY_NPTS;
+    size_t xoff = row->kind == ACBB_FIG_TRAJ_TIME ? offsetof(acbb_fig_step, t)
+                                                   : offsetof(acbb_fig_step, iteration);
+    for (int qi = 0; qi < row->nq; qi++)
+        for (int k = a; k < z; k++) {
+            const acbb_fig_traj *tr = &in->traj[k];
+            const acbb_fig_quantity *q = &row->q[qi];
+            if (tr->status != ACBB_OK) {
+                char what[64];
+                snprintf(what, sizeof what, "TE run at %g N", acbb_study_loads[k]);
+                why(d, what, acbb_status_name(tr->status), tr->message);
+                continue;
+            }
+            acbb_fig_series *s = add_series(d, tr->n, k - a + 1, qi + 1, 0, "%s%s%g N",
+                                            row->nq > 1 ? q->label : "",
+                                            row->nq > 1 ? " at " : "", acbb_study_loads[k]);
+            for (size_t i = 0; s && i < tr->n; i++) {
+                const char *step = (const char *)&tr->p[i];
+                double x, y;
+                memcpy(&x, step + xoff, sizeof x);
+                memcpy(&y, step + q->off, sizeof y);
+                put(s, x, q->scale * y);
+            }
+        }
+}
+
+static void eval_sweep(const acbb_figure_row *row, const acbb_fig_input *in, acbb_fig_data *d)
+{
+    bool both = row->sel == ACBB_FIG_SPEED_SWEEPS;
+    int blks[2] = { both ? ACBB_STUDY_S100 : row->sel, ACBB_STUDY_S1000 };
+    int lv = row->l2 ? ACBB_STUDY_L2 : ACBB_STUDY_BASE;
+    for (int bi = 0; bi < (both ? 2 : 1); bi++)
+        for (int qi = 0; qi < row->nq; qi++)
+            for (int m = 0; m < 2; m++) {
+                const acbb_study_point *pts = in->runs->sweep[lv][blks[bi]];
+                const double *xs = blks[bi] == ACBB_STUDY_LOAD ? acbb_study_loads
+                                                                : acbb_study_speeds;
+                acbb_fig_series *s = add_series(
+                    d, ACBB_STUDY_NPTS, 1 + bi * row->nq + qi, m == ACBB_STUDY_TE ? 1 : 2, 1,
+                    "%s %s%s", row->q[qi].label, m == ACBB_STUDY_TE ? "TE" : "WTE",
+                    !both ? "" : bi ? " at 1000 N" : " at 100 N");
+                for (int k = 0; s && k < ACBB_STUDY_NPTS; k++) {
+                    const acbb_study_point *p = &pts[2 * k + m];
+                    if (!p->ok) {
+                        why(d, p->label, acbb_status_name(p->status), p->message);
+                        continue;
+                    }
+                    put(s, xs[k], row->q[qi].scale * row->q[qi].get(&p->last));
+                }
+            }
+}
+
+void acbb_figure_eval(const acbb_figure_row *row, const acbb_fig_input *in, acbb_fig_data *out)
+{
+    memset(out, 0, sizeof *out);
+    if (row->kind == ACBB_FIG_SWEEP) eval_sweep(row, in, out);
+    else eval_traj(row, in, out);
+    /* A series with fewer than two points draws nothing a reader can use. */
+    int w = 0;
+    for (int i = 0; i < out->n; i++) {
+        if (out->s[i].n >= 2) {
+            out->s[w++] = out->s[i];
+            continue;
+        }
+        free(out->s[i].x);
+        free(out->s[i].y);
+    }
+    out->n = w;
+}
+
+void acbb_fig_data_free(acbb_fig_data *d)
+{
+    for (int i = 0; i < d->n; i++) {
+        free(d->s[i].x);
+        free(d->s[i].y);
+    }
+    d->n = 0;
+}

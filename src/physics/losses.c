@@ -1,0 +1,250 @@
+/* acbb — power losses per contact, MODEL.md section 6 (seed eqs 14-18,
+ * cleaned). The integrals run over the contact ellipse mapped to the unit
+ * square: x'' = a xi, y'' = b sqrt(1-xi^2) t, dA = ab sqrt(1-xi^2) dxi dt,
+ * p = pmax sqrt(1-xi^2) sqrt(1-t^2). */
+#include <math.h>
+#include <gsl/gsl_integration.h>
+#include "losses.h"
+#include "traction.h"
+
+acbb_status acbb_quad_init(acbb_quad *q, int n)
+{
+    if (n < 1 || n > ACBB_QUAD_MAX)
+        return ACBB_EINVAL;
+    gsl_integration_glfixed_table *t = gsl_integration_glfixed_table_alloc((size_t)n);
+    if (!t)
+        return ACBB_ENOMEM;
+    q->n = n;
+    for (int i = 0; i < n; i++)
+        gsl_integration_glfixed_point(-1.0, 1.0, (size_t)i, &q->x[i], &q->w[i], t);
+    gsl_integration_glfixed_table_free(t);
+    return ACBB_OK;
+}
+
+/* Height of the deformed contact surface above the ball centre at x''
+ * (MODEL.md section 4): the pressure surface has radius R_d = 2fD/(2f+1). */
+static double surface_height(const acbb_contact_in *c, double x)
+{
+    double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0);
+    double a2 = c->a * c->a;
+    return sqrt(fmax(Rd * Rd - x * x, 0.0)) - sqrt(fmax(Rd * Rd - a2, 0.0))
+         + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+}
+
+double acbb_slip_velocity(const acbb_contact_in *c, double x)
+{
+    /* V = s h w_roll + w_race (r_m + s h cos(alpha)), s = +1 outer, -1 inner:
+     * ball surface speed minus race surface speed in the rolling direction. */
+    double sg = c->inner ? -1.0 : 1.0;
+    double h = surface_height(c, x);
+    return sg * h * c->roll + c->race * (0.5 * c->dm + sg * h * cos(c->alpha));
+}
+
+double acbb_slip_speed(const acbb_contact_in *c, double x)
+{
+    double V = acbb_slip_velocity(c, x);
+    if (c->pivot == 0.0) return fabs(V);
+    return hypot(V, c->pivot * surface_height(c, x));
+}
+
+/* ---- the formulas (MODEL.md section 6, clean form unless seed) ---- */
+
+static double shear_point(const acbb_loss_point *q)
+{
+    return q->seed ? q->tauV : q->film->phi_f * q->tauV * q->V;
+}
+
+/* Seed eq (14) multiplies a force by omega_m D; kept only as an option. */
+static double shear_finish(const acbb_contact_in *c, int seed, double sum)
+{
+    return seed ? sum * fabs(c->omega_m) * c->D : sum;
+}
+
+static double slip_point(const acbb_loss_point *q)
+{
+    const acbb_film *fl = q->film;
+    double mu = q->s->mu_bd;
+    return q->seed ? (fl->phi_a * mu * q->p + fl->phi_f * q->tauV) * q->V
+                   : fl->phi_a * mu * q->p * q->V;
+}
+
+/* acbb_tau_lubricant at this point for a slip speed du >= 0: the Eyring
+ * branch inline (acbb_eyring_capped, the same operations and bits). */
+static double point_tau_lub(const acbb_loss_point *q, double du)
+{
+    if (q->eyring) return acbb_eyring_capped(q->s->tau_eyring, q->eta, du, q->H, q->tlim);
+    return acbb_tau_lubricant(q->s, q->eta, du, q->film->hc, q->p);
+}
+
+static double spin_point(const acbb_loss_point *q)
+{
+    const acbb_film *fl = q->film;
+    double r = hypot(q->x, q->y);
+    double us = fabs(q->c->spin) * r;
+    double tauS = fl->phi_f > 0.0 ? point_tau_lub(q, us) : 0.0;
+    return (fl->phi_a * q->s->mu_bd * q->p + fl->phi_f * tauS) * r;
+}
+
+static double spin_finish(const acbb_contact_in *c, int seed, double sum)
+{
+    (void)seed;
+    return fabs(c->spin) * sum;
+}
+
+/* Johnson's hysteresis force 4 eps Q a_c / (3 pi D) [J section 9] times u. */
+static double rolling_contact(const acbb_scene *s, const acbb_contact_in *c, double u)
+{
+    double ac = s->hyst_axis == ACBB_HYST_MINOR ? c->b : c->a;
+    if (s->loss_form == ACBB_LOSS_SEED) {
+        double arm = c->dm + (c->inner ? -2.0 : 2.0) * c->delta;
+        return 2.0 * s->hysteresis * c->Q * ac * arm / (3.0 * M_PI * c->D) * fabs(c->omega_m);
+    }
+    return 4.0 * s->hysteresis * c->Q * ac / (3.0 * M_PI * c->D) * u;
+}
+
+static double drag_bearing(const acbb_bearing_in *in)
+{
+    return acbb_drag_loss(in->s, in->mix, in->omega_m);
+}
+
+static double cage_bearing(const acbb_bearing_in *in)
+{
+    return acbb_cage_loss(in->s, in->mix, in->omega_m);
+}
+
+#define FLAG(f) offsetof(acbb_scene, f)
+const acbb_loss_desc acbb_loss_table[ACBB_LOSS_KINDS] = {
+    [ACBB_LOSS_SHEAR] = { "shear", "P_L", "lubricant shear", "loss_shear", FLAG(loss_shear),
+                          ACBB_HEAT_CONTACT, .point = shear_point, .finish = shear_finish },
+    [ACBB_LOSS_SLIP] = { "slip", "P_t", "differential slip", "loss_slip", FLAG(loss_slip),
+                         ACBB_HEAT_CONTACT, .point = slip_point },
+    [ACBB_LOSS_SPIN] = { "spin", "P_s", "spinning", "loss_spin", FLAG(loss_spin),
+                         ACBB_HEAT_BALL, .point = spin_point, .finish = spin_finish },
+    [ACBB_LOSS_ROLLING] = { "rolling", "P_r", "rolling hysteresis", "loss_rolling",
+                            FLAG(loss_rolling), ACBB_HEAT_CONTACT, .contact = rolling_contact },
+    [ACBB_LOSS_DRAG] = { "drag", "P_v", "oil-air drag", "loss_drag", FLAG(loss_drag),
+                         ACBB_HEAT_CAVITY, .bearing = drag_bearing },
+    [ACBB_LOSS_CAGE] = { "cage", "P_c", "cage-land shear", "loss_cage", FLAG(loss_cage),
+                         ACBB_HEAT_CAGE, .bearing = cage_bearing },
+};
+#undef FLAG
+
+const char *acbb_loss_name(acbb_loss_kind k) { return acbb_loss_table[k].name; }
+const char *acbb_loss_symbol(acbb_loss_kind k) { return acbb_loss_table[k].symbol; }
+const char *acbb_loss_label(acbb_loss_kind k) { return acbb_loss_table[k].label; }
+
+int acbb_loss_enabled(const acbb_scene *s, acbb_loss_kind k)
+{
+    return *(const bool *)((const char *)s + acbb_loss_table[k].flag);
+}
+
+/* The integrand losses share one pass over the ellipse (pressure, slip and
+ * viscosity are computed once per point). */
+static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contact_in *c,
+                      const acbb_oil_state *oil, acbb_contact_loss *out, const int *on)
+{
+    const acbb_film *fl = &out->film;
+    int fluid = fl->phi_f > 0.0;
+    double ab = c->a * c->b, sum[ACBB_LOSS_KINDS] = { 0 }, sumPV = 0, sumP = 0;
+    acbb_loss_point pt = { .s = s, .c = c, .film = fl, .oil = oil,
+                           .seed = s->loss_form == ACBB_LOSS_SEED };
+    /* The pressure-viscosity law's per-oil part once per contact
+     * (acbb_viscosity_at_pressure is init + eval: the same bits). */
+    acbb_visc_law visc;
+    acbb_visc_law_init(s, oil, &visc);
+    pt.eyring = s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
+    pt.H = fmax(fl->hc, 1e-9);
+    for (int i = 0; i < q->n; i++) {
+        double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
+        pt.x = c->a * xi;
+        pt.V = acbb_slip_speed(c, pt.x);
+        for (int k = 0; k < q->n; k++) {
+            double t = q->x[k];
+            double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
+            pt.p = c->pmax * sq * sqrt(1.0 - t * t);
+            pt.y = c->b * sq * t;
+            pt.eta = fluid ? acbb_visc_law_eval(&visc, pt.p) : 0.0;
+            pt.tlim = s->lambda_lim * fmax(pt.p, 0.0);
+            pt.tauV = fluid ? point_tau_lub(&pt, pt.V) : 0.0;
+            sumP += pt.p * w;
+            sumPV += pt.p * pt.V * w;
+            for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+                if (on[l]) sum[l] += acbb_loss_table[l].point(&pt) * w;
+        }
+    }
+    out->slide = sumP > 0.0 ? sumPV / sumP : 0.0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        if (on[l]) out->P[l] = d->finish ? d->finish(c, pt.seed, sum[l]) : sum[l];
+    }
+}
+
+/* The pressure-weighted mean slip alone (kinematics, no loss integrand):
+ * what a scene with every contact loss switched off still reports. */
+static double mean_slide(const acbb_quad *q, const acbb_contact_in *c)
+{
+    double sumP = 0.0, sumPV = 0.0;
+    for (int i = 0; i < q->n; i++) {
+        double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
+        double V = acbb_slip_speed(c, c->a * xi);
+        for (int k = 0; k < q->n; k++) {
+            double t = q->x[k];
+            double pw = q->w[i] * q->w[k] * sq * sq * sqrt(1.0 - t * t);
+            sumP += pw;
+            sumPV += pw * V;
+        }
+    }
+    return sumP > 0.0 ? sumPV / sumP : 0.0;
+}
+
+acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
+                                const acbb_contact_in *c, const acbb_oil_state *oil,
+                                acbb_contact_loss *out)
+{
+    *out = (acbb_contact_loss){ 0 };
+    if (c->Q <= 1e-6 || c->a <= 0.0 || c->b <= 0.0) {
+        out->film.phi_a = 1.0;
+        out->film.phi_T = 1.0;
+        return ACBB_OK;
+    }
+    double u = fabs(c->u);
+    double V0 = acbb_slip_speed(c, 0.0);
+    double srr = u > 1e-6 ? fmin(fabs(V0) / u, 2.0) : 0.0;
+    acbb_film_compute(s, oil, u, c->Q, c->Rx, c->kappa, c->E_eff, c->pmax, srr, &out->film);
+    int on[ACBB_LOSS_KINDS] = { 0 };
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        on[l] = d->point && acbb_loss_enabled(s, (acbb_loss_kind)l);
+    }
+    int any = 0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) any |= on[l];
+    if (any) integrate(s, q, c, oil, out, on);
+    else out->slide = mean_slide(q, c);
+    out->integrated = any;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+        const acbb_loss_desc *d = &acbb_loss_table[l];
+        if (d->contact && acbb_loss_enabled(s, (acbb_loss_kind)l))
+            out->P[l] = d->contact(s, c, u);
+        if (!isfinite(out->P[l])) return ACBB_NONFINITE;
+    }
+    return ACBB_OK;
+}
+
+double acbb_drag_force(const acbb_scene *s, const acbb_mixture *mix, double omega_m)
+{
+    double v = omega_m * s->pitch_diameter;
+    return M_PI / 32.0 * s->drag_cd * mix->rho * s->ball_diameter * s->ball_diameter * v * v;
+}
+
+double acbb_drag_loss(const acbb_scene *s, const acbb_mixture *mix, double omega_m)
+{
+    return s->n_balls * fabs(omega_m) * acbb_drag_force(s, mix, omega_m)
+         * 0.5 * s->pitch_diameter;
+}
+
+double acbb_cage_loss(const acbb_scene *s, const acbb_mixture *mix, double omega_m)
+{
+    double rc = 0.5 * s->cage_diameter;
+    double gap = 0.5 * (s->outer_land_diameter - s->cage_diameter);
+    return 2.0 * M_PI * mix->eta * rc * rc * rc * s->cage_width * omega_m * omega_m / gap;
+}

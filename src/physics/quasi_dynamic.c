@@ -1,0 +1,361 @@
+/* acbb — Level-2 quasi-dynamic kinematics, MODEL.md section 4.
+ *
+ * Unknowns per ball, scaled by omega_i: x = (omega_m, wx, wy, wz) / omega_i.
+ * Equations (orbiting frame, free ball, no cage force):
+ *   y' force:  F_i,y + F_o,y + F_drag = 0        (drag along +y')
+ *   moments:   M_i + M_o = J omega_m (0, -wz, wy)
+ * solved by GSL's hybridsj with a finite-difference Jacobian of fixed
+ * absolute steps (GSL's own relative steps fail at wy ~ 0). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
+#include "quasi_dynamic.h"
+#include "broyden.h"
+
+#define FD_STEP 1e-7
+#define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
+#define RES_TOL 1e-10
+
+struct acbb_qd {
+    acbb_traction_contact ci, co;
+    gsl_multiroot_fdfsolver *solver;
+    /* Last Jacobian of each ball (scaled unknowns and residuals) for the
+     * Broyden steps of the next update; J_ok[j] = 0: none yet. */
+    double J[ACBB_MAX_BALLS][16];
+    int J_ok[ACBB_MAX_BALLS];
+    /* Inputs of each ball's last solve (acbb_ball_inputs); in_ok[j] = 0: none. */
+    double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
+    int in_ok[ACBB_MAX_BALLS];
+    double skip_tol;    /* 0: every update solves every ball */
+};
+
+typedef struct {
+    const acbb_scene *s;
+    const acbb_traction_contact *ci, *co;
+    double omega_i, J, D, Fscale;
+    const acbb_mixture *mix;
+    acbb_traction tri, tro;
+} qd_ctx;
+
+static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
+{
+    qd_ctx *c = p;
+    double wi = c->omega_i;
+    double wm = wi * gsl_vector_get(x, 0);
+    double wb[3] = { wi * gsl_vector_get(x, 1), wi * gsl_vector_get(x, 2),
+                     wi * gsl_vector_get(x, 3) };
+    acbb_traction_eval(c->s, c->ci, wb, wi - wm, &c->tri);
+    acbb_traction_eval(c->s, c->co, wb, -wm, &c->tro);
+    double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
+    /* The gyroscopic moment omega_m x J omega_b (MODEL.md 4), off with its switch. */
+    double gy = c->s->gyroscopic ? c->J : 0.0;
+    double Mreq[3] = { 0.0, -gy * wm * wb[2], gy * wm * wb[1] };
+    double Ms = c->Fscale * 0.5 * c->D;
+    gsl_vector_set(f, 0, (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale);
+    for (int d = 0; d < 3; d++)
+        gsl_vector_set(f, 1 + d, (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms);
+    for (int d = 0; d < 4; d++)
+        if (!isfinite(gsl_vector_get(f, d))) return GSL_EBADFUNC;
+    return GSL_SUCCESS;
+}
+
+/* Residual as qd_f and its Jacobian J (row-major, scaled unknowns) from
+ * the analytic traction derivatives (acbb_traction_eval_jac) with the drag
+ * (F_v ~ omega_m^2) and gyroscopic terms differentiated by hand; c holds
+ * the tractions at x. 0 if the traction law has no analytic derivative or
+ * a value is not finite. */
+static int qd_fj(const double *x, qd_ctx *c, double f[4], double J[16])
+{
+    double wi = c->omega_i, wm = wi * x[0];
+    double wb[3] = { wi * x[1], wi * x[2], wi * x[3] };
+    double dFi[3][4], dMi[3][4], dFo[3][4], dMo[3][4];
+    if (!acbb_traction_eval_jac(c->s, c->ci, wb, wi - wm, &c->tri, dFi, dMi)
+        || !acbb_traction_eval_jac(c->s, c->co, wb, -wm, &c->tro, dFo, dMo))
+        return 0;
+    double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
+    double dFv = wm != 0.0 ? 2.0 * Fv / wm : 0.0;
+    double gy = c->s->gyroscopic ? c->J : 0.0, Ms = c->Fscale * 0.5 * c->D;
+    double Mreq[3] = { 0.0, -gy * wm * wb[2], gy * wm * wb[1] };
+    /* d Mreq / d x: row d, column k (x = (omega_m, wx, wy, wz) / omega_i). */
+    double dMr[3][4] = { { 0 }, { -gy * wi * wb[2], 0.0, 0.0, -gy * wm * wi },
+                         { gy * wi * wb[1], 0.0, gy * wm * wi, 0.0 } };
+    f[0] = (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale;
+    for (int d = 0; d < 3; d++) f[1 + d] = (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms;
+    for (int r = 0; r < 4; r++) {
+        const double *di = r ? dMi[r - 1] : dFi[1], *dd = r ? dMo[r - 1] : dFo[1];
+        double sc = r ? Ms : c->Fscale;
+        /* omega_m enters both race speeds with -1, the ball speeds as is. */
+        J[4 * r] = -wi * (di[3] + dd[3]) + (r ? -dMr[r - 1][0] : wi * dFv);
+        for (int k = 1; k < 4; k++)
+            J[4 * r + k] = wi * (di[k - 1] + dd[k - 1]) - (r ? dMr[r - 1][k] : 0.0);
+        for (int k = 0; k < 4; k++) J[4 * r + k] /= sc;
+    }
+    for (int k = 0; k < 16; k++)
+        if (!isfinite(J[k]) || (k < 4 && !isfinite(f[k]))) return 0;
+    return 1;
+}
+
+/* Newton with the analytic Jacobian from x (transient steps): 1 with x
+ * the root, c's tractions there and J its Jacobian; 0 if the law has no
+ * analytic derivative or a full step does not lower sum |f|. */
+static int newton_analytic(qd_ctx *c, double x[4], double J[16])
+{
+    double f[4], d[4], prev = INFINITY;
+    for (int it = 0; it < 8; it++) {
+        if (!qd_fj(x, c, f, J)) return 0;
+        double r = fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
+        if (r < RES_TOL) return 1;
+        if (!(r < prev) || !acbb_newton_step(4, J, f, d)) return 0;
+        for (int k = 0; k < 4; k++) x[k] += d[k];
+        prev = r;
+    }
+    return 0;
+}
+
+static int qd_df(const gsl_vector *x, void *p, gsl_matrix *J)
+{
+    double f0[4], f1[4], xv[4];
+    gsl_vector_view F0 = gsl_vector_view_array(f0, 4), F1 = gsl_vector_view_array(f1, 4);
+    int rc = qd_f(x, p, &F0.vector);
+    if (rc != GSL_SUCCESS) return rc;
+    for (int j = 0; j < 4; j++) {
+        for (int k = 0; k < 4; k++) xv[k] = gsl_vector_get(x, k);
+        xv[j] += FD_STEP;
+        gsl_vector_view X = gsl_vector_view_array(xv, 4);
+        if ((rc = qd_f(&X.vector, p, &F1.vector)) != GSL_SUCCESS) return rc;
+        for (int i = 0; i < 4; i++) gsl_matrix_set(J, i, j, (f1[i] - f0[i]) / FD_STEP);
+    }
+    return GSL_SUCCESS;
+}
+
+static int qd_fdf(const gsl_vector *x, void *p, gsl_vector *f, gsl_matrix *J)
+{
+    int rc = qd_f(x, p, f);
+    return rc == GSL_SUCCESS ? qd_df(x, p, J) : rc;
+}
+
+acbb_status acbb_qd_new(int grid, acbb_qd **out)
+{
+    acbb_qd *q = calloc(1, sizeof *q);
+    if (!q) return ACBB_ENOMEM;
+    if (acbb_traction_contact_init(&q->ci, grid) != ACBB_OK
+        || acbb_traction_contact_init(&q->co, grid) != ACBB_OK
+        || !(q->solver = gsl_multiroot_fdfsolver_alloc(gsl_multiroot_fdfsolver_hybridsj, 4))) {
+        acbb_qd_free(q);
+        return ACBB_ENOMEM;
+    }
+    *out = q;
+    return ACBB_OK;
+}
+
+void acbb_qd_free(acbb_qd *q)
+{
+    if (!q) return;
+    acbb_traction_contact_free(&q->ci);
+    acbb_traction_contact_free(&q->co);
+    if (q->solver) gsl_multiroot_fdfsolver_free(q->solver);
+    free(q);
+}
+
+/* Film and traction tables of one contact at the ball's current speeds. */
+static acbb_status prepare(const acbb_scene *s, const acbb_quad *quad, const acbb_geometry *g,
+                           const acbb_ball_state *b, int inner, double omega_i,
+                           const acbb_oil_state *oil, acbb_traction_contact *tc)
+{
+    acbb_contact_in c;
+    acbb_film film;
+    acbb_mech_contact_input(g, b, inner, omega_i, &c);
+    double u = fabs(c.u);
+    double srr = u > 1e-6 ? fmin(acbb_slip_speed(&c, 0.0) / u, 2.0) : 0.0;
+    acbb_film_compute(s, oil, u, c.Q, c.Rx, c.kappa, c.E_eff, c.pmax, srr, &film);
+    return acbb_traction_prepare(s, quad, &c, &film, oil, tc);
+}
+
+/* Hybrid Newton from x0 to RES_TOL (accepting 1e3 x that on a stall). */
+static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const double *x0)
+{
+    double xv[4];
+    memcpy(xv, x0, sizeof xv);
+    gsl_vector_view v = gsl_vector_view_array(xv, 4);
+    if (gsl_multiroot_fdfsolver_set(q->solver, F, &v.vector) != GSL_SUCCESS)
+        return ACBB_DIVERGED;
+    int status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    for (int it = 0; status == GSL_CONTINUE && it < 100; it++) {
+        if (gsl_multiroot_fdfsolver_iterate(q->solver) != GSL_SUCCESS) break;
+        status = gsl_multiroot_test_residual(q->solver->f, RES_TOL);
+    }
+    if (status == GSL_SUCCESS
+        || gsl_multiroot_test_residual(q->solver->f, 1e3 * RES_TOL) == GSL_SUCCESS)
+        return ACBB_OK;
+    return ACBB_DIVERGED;
+}
+
+/* Residual at x (scaled, as qd_f) for acbb_broyden; 0 on a non-finite value. */
+static int eval(const double *x, void *p, double *f)
+{
+    gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
+    gsl_vector_view F = gsl_vector_view_array(f, 4);
+    return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
+}
+
+/* Continuation in the slip regularisation: the traction field is nearly
+ * discontinuous at zero slip (s_reg = 1 um/s, MODEL.md section 4); start from
+ * a smooth 1 cm/s and tighten by sqrt(10), warm-starting each solve. With
+ * boundary friction alone (no film) the stick/slip field can leave no root
+ * a Newton method resolves at 1 um/s; the solution at the tightest
+ * regularisation that converged is then kept if it is at most 0.1 mm/s
+ * (the traction saturates within 0.1 mm/s of slip instead of 1 um/s). On
+ * return the solver holds the accepted root and the tables its s_reg. */
+static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const double *x0)
+{
+    double x[4], good = 0.0;
+    memcpy(x, x0, sizeof x);
+    for (double sr = 1e-2; sr >= 0.99e-6; sr *= 0.316227766) {
+        q->ci.s_reg = q->co.s_reg = sr;
+        if (newton(q, F, x) != ACBB_OK) break;
+        for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
+        good = sr;
+    }
+    if (good <= 0.0 || good > 1.01e-4) return ACBB_DIVERGED;
+    q->ci.s_reg = q->co.s_reg = good;
+    return newton(q, F, x); /* leave the solver at the accepted root */
+}
+
+/* Broyden for ball j from x0 with the Jacobian of ball `from`: 1 with x
+ * the root and J kept as ball j's. */
+static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0, double x[4])
+{
+    double J[16], f[4], xa[4];
+    memcpy(J, q->J[from], sizeof J);
+    memcpy(xa, x0, sizeof xa);
+    if (!acbb_broyden(eval, c, 4, J, xa, f, RES_TOL, 8, 0)) return 0;
+    memcpy(q->J[j], J, sizeof J);
+    q->J_ok[j] = 1;
+    memcpy(x, xa, sizeof xa);
+    return 1;
+}
+
+/* Level 2 of ball j: Broyden from its last Jacobian if there is one (two
+ * or three traction evaluations between thermal steps instead of five per
+ * hybrid iteration); a ball without one (the set-up's first pass) starts
+ * from the root xn and the Jacobian of its neighbour jn if given
+ * (neighbours in azimuth carry similar loads, MODEL.md section 4; the root
+ * is the same to RES_TOL); else or if that stalls the hybrid Newton, with
+ * continuation as the last resort. On success c holds the tractions at the root. The
+ * Jacobian is kept only from a solve at the nominal s_reg. */
+static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn,
+                                int jn)
+{
+    double J[16], f[4], xa[4];
+    if (q->J_ok[j] && broyden_from(q, c, j, j, x, x))
+        return ACBB_OK;
+    int from_nb = !q->J_ok[j] && xn;
+    if (from_nb && broyden_from(q, c, j, jn, xn, x))
+        return ACBB_OK;
+    /* Transient steps (skip_tol > 0, non-symmetric scenes) and starts from
+     * a neighbour: Newton with the analytic Jacobian before the hybrid
+     * solver (3-4 steps of about three evaluations each against ~30
+     * evaluations; as the first choice it cost more than Broyden's ~5.7,
+     * BENCHMARKS.md round 3). */
+    memcpy(xa, from_nb ? xn : x, sizeof xa);
+    if ((q->skip_tol > 0.0 || from_nb) && newton_analytic(c, xa, J)) {
+        memcpy(q->J[j], J, sizeof J);
+        q->J_ok[j] = 1;
+        memcpy(x, xa, sizeof xa);
+        return ACBB_OK;
+    }
+    q->J_ok[j] = 0;
+    gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, c };
+    if (newton(q, &F, x) == ACBB_OK) {
+        gsl_matrix_view JM = gsl_matrix_view_array(q->J[j], 4, 4);
+        q->J_ok[j] = qd_df(q->solver->x, c, &JM.matrix) == GSL_SUCCESS;
+    } else if (continuation(q, &F, x) != ACBB_OK)
+        return ACBB_DIVERGED;
+    for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
+    return eval(x, c, f) ? ACBB_OK : ACBB_DIVERGED; /* tractions at the accepted root */
+}
+
+static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
+                              const acbb_geometry *g, double omega_i,
+                              const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                              const acbb_mixture *mix, acbb_ball_state *b, int j,
+                              const acbb_ball_state *bn, int jn)
+{
+    acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
+    if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
+    if (rc != ACBB_OK) return rc;
+    qd_ctx c = { .s = s, .ci = &q->ci, .co = &q->co, .omega_i = omega_i, .J = g->J,
+                 .D = g->D, .mix = mix };
+    c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
+    double x[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
+                    b->kin.wz / omega_i };
+    double xn[4];
+    for (int d = 0; bn && d < 4; d++) xn[d] = bn->qd_w[d] / omega_i;
+    if (solve_speeds(q, &c, j, x, bn ? xn : NULL, jn) != ACBB_OK)
+        return ACBB_DIVERGED;
+    for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * x[d];
+    memcpy(b->tr_i, c.tri.F, sizeof b->tr_i);
+    memcpy(b->tr_o, c.tro.F, sizeof b->tr_o);
+    b->tr_Qi = b->Qi;
+    b->tr_Qo = b->Qo;
+    b->traction_valid = 1;
+    acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, omega_i, b->qd_w[0],
+                               b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
+    return ACBB_OK;
+}
+
+/* Weights of the transient-step skip (acbb_ball_moved, inputs in the order
+ * of acbb_ball_inputs): the inlet viscosities count 0.3. They are common to
+ * every ball and drift on as the oil warms, so at weight 1 each such drift
+ * re-solved all balls at once; the steady polish still solves every ball,
+ * so the steady state is the same to 6e-7 and only the transient path
+ * moves (BENCHMARKS.md, round 4: within the balanced preset's stated path
+ * error, MODEL.md section 9). */
+static const double skip_weights[ACBB_BALL_INPUTS] = { 1, 1, 1, 1, 0.3, 0.3, 1, 1, 1, 1 };
+
+void acbb_qd_set_skip(acbb_qd *q, double tol)
+{
+    q->skip_tol = tol > 0.0 ? tol : 0.0;
+}
+
+acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
+                           const acbb_geometry *g, double omega_i,
+                           const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                           const acbb_mixture *mix, acbb_mech_state *st, double *change,
+                           acbb_error *err)
+{
+    *change = 0.0;
+    if (omega_i <= 0.0) return ACBB_OK;
+    int nb = acbb_mech_distinct(st), jn = -1; /* last ball solved here with a Jacobian */
+    for (int j = 0; j < nb; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
+            b->traction_valid = 0;
+            q->J_ok[j] = q->in_ok[j] = 0;
+            continue;
+        }
+        /* Inside a transient step a ball whose inputs barely moved keeps
+         * its speeds and tractions (the tractions scale with the load in
+         * the ring equilibrium); the steady polish solves every ball. */
+        double in[ACBB_BALL_INPUTS];
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, in);
+        if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
+            && acbb_ball_moved(q->in[j], in, skip_weights) < q->skip_tol)
+            continue;
+        double wm0 = b->kin.omega_m;
+        acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
+                                    jn >= 0 ? &st->ball[jn] : NULL, jn);
+        q->in_ok[j] = rc == ACBB_OK;
+        if (rc == ACBB_OK && q->J_ok[j]) jn = j;
+        /* Recorded after the solve: its speeds are the reference. */
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);
+        if (rc != ACBB_OK)
+            return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
+                                  "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);
+        *change = fmax(*change, fabs(b->kin.omega_m - wm0) / fmax(fabs(wm0), 1e-12));
+    }
+    acbb_mech_spread(st);
+    return ACBB_OK;
+}

@@ -1,0 +1,39 @@
+/* acbb — quasi-dynamic ball kinematics (MODEL.md section 4, Level 2):
+ * per ball, the orbital speed and the three components of the ball's
+ * angular velocity follow from the force balance along the orbit (traction
+ * + drag) and the moment balance (traction moments = gyroscopic moment
+ * required), with the contact loads held at the current equilibrium.
+ *
+ * Ownership: acbb_qd_new allocates a workspace (traction point tables, a
+ * GSL solver) that acbb_qd_free releases. */
+#ifndef ACBB_QUASI_DYNAMIC_H
+#define ACBB_QUASI_DYNAMIC_H
+
+#include "losses.h"
+#include "lubrication.h"
+#include "mechanics.h"
+#include "traction.h"
+
+typedef struct acbb_qd acbb_qd;
+
+acbb_status acbb_qd_new(int grid, acbb_qd **out);
+void acbb_qd_free(acbb_qd *q);
+
+/* Solve Level 2 for every distinct ball of st at inner-ring speed omega_i,
+ * writing qd_w, tr_i, tr_o and traction_valid. Balls with a contact load
+ * under 1 mN keep race-control speeds (no traction to drive them). The
+ * largest relative change of omega_m is returned in *change. */
+/* Inside transient steps: a ball whose loads, contact angles and inlet
+ * viscosities moved less than tol (relative; radians for the angles; the
+ * viscosities weighted 0.3) since its last solve keeps its speeds and
+ * tractions. 0 (the default) solves
+ * every ball at every update, as the steady polish must. */
+void acbb_qd_set_skip(acbb_qd *q, double tol);
+
+acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
+                           const acbb_geometry *g, double omega_i,
+                           const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
+                           const acbb_mixture *mix, acbb_mech_state *st, double *change,
+                           acbb_error *err);
+
+#endif

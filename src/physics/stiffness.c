@@ -1,0 +1,74 @@
+/* acbb — radial and tilting ring stiffness (stiffness.h). Each point is a
+ * mechanics solve with the radial load or moment nudged, in the
+ * race-control ball model at both ends of a difference. The equilibrium
+ * is unique, so where it starts changes it only by solver noise: from the
+ * caller's converged state (one warm solve per point, MODEL.md section 3)
+ * or, without one or if that fails, by continuation in speed from rest
+ * like the sim's set-up. */
+#include <math.h>
+#include <stdlib.h>
+#include "mechanics.h"
+#include "stiffness.h"
+
+/* A converged state as the warm start of m: speeds back to race control
+ * (the Level-2 tractions belong to the run's ball model, not this one). */
+static void warm_start(const acbb_mech *m, const acbb_mech_state *warm, acbb_mech_state *st)
+{
+    acbb_mech_state_copy(st, warm);
+    for (int j = 0; j < st->n; j++) st->ball[j].traction_valid = 0;
+    acbb_mech_adopt_state(m, st);
+}
+
+/* delta_z and theta_y of the equilibrium of scene s. */
+static acbb_status solve_point(const acbb_scene *s, const acbb_expansion *e, double dx_held,
+                               const acbb_mech_state *warm, double *dz, double *thy)
+{
+    acbb_mech *m = NULL;
+    acbb_mech_state *st = malloc(sizeof *st);
+    acbb_status rc = st ? acbb_mech_new(s, &m, NULL) : ACBB_ENOMEM;
+    if (rc == ACBB_OK && s->preload == ACBB_PRELOAD_DISPLACEMENT)
+        acbb_mech_fix_axial(m, 1, dx_held);
+    int cold = 1;
+    if (rc == ACBB_OK && warm) {
+        warm_start(m, warm, st);
+        cold = acbb_mech_solve(m, s->inner_speed, e, st, NULL) != ACBB_OK;
+    }
+    if (rc == ACBB_OK && cold) rc = acbb_mech_init_state(m, st, NULL);
+    for (int k = 1; k <= 4 && rc == ACBB_OK && cold; k++)
+        rc = acbb_mech_solve(m, s->inner_speed * k / 4.0, k == 4 ? e : NULL, st, NULL);
+    if (rc == ACBB_OK) {
+        *dz = st->dz;
+        *thy = st->thy;
+    }
+    acbb_mech_free(m);
+    free(st);
+    return rc;
+}
+
+/* Central difference of the response to a load nudged by +-h around v. */
+static double difference(acbb_scene *s, double *load, double h, const acbb_expansion *e,
+                         double dx_held, const acbb_mech_state *warm, int tilt)
+{
+    double v = *load, r[2] = { 0, 0 }, other;
+    acbb_status rc = ACBB_OK;
+    for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
+        *load = v + (k ? -h : h);
+        rc = tilt ? solve_point(s, e, dx_held, warm, &other, &r[k])
+                  : solve_point(s, e, dx_held, warm, &r[k], &other);
+    }
+    *load = v;
+    double K = 2.0 * h / (r[0] - r[1]);
+    return rc == ACBB_OK && isfinite(K) ? K : 0.0;
+}
+
+acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, double dx_held,
+                                const acbb_mech_state *warm, acbb_stiffness *out)
+{
+    acbb_scene t = *s;
+    /* A nudge of 1 % of the axial load (at least 1 N, 1 N m at the pitch
+     * radius): small against the loads, large against solver noise. */
+    double h = fmax(0.01 * fabs(s->axial_load), 1.0);
+    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, 0);
+    out->tilt = difference(&t, &t.moment_load, h * 0.5 * s->pitch_diameter, e, dx_held, warm, 1);
+    return ACBB_OK;
+}

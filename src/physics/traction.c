@@ -1,0 +1,184 @@
+/* acbb — contact traction resultants (MODEL.md sections 4-5, Level 2). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "traction.h"
+
+#define S_REG 1e-6 /* m/s, slip regularisation of MODEL.md section 4 */
+
+static void cross(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid)
+{
+    memset(tc, 0, sizeof *tc);
+    int cap = grid * grid;
+    tc->P = malloc(sizeof(double) * 8 * (size_t)cap);
+    if (!tc->P) return ACBB_ENOMEM;
+    tc->w = tc->P + 3 * cap;
+    tc->p = tc->w + cap;
+    tc->eta = tc->p + cap;
+    tc->tb = tc->eta + cap;
+    tc->tlim = tc->tb + cap;
+    tc->cap = cap;
+    return ACBB_OK;
+}
+
+void acbb_traction_contact_free(acbb_traction_contact *tc)
+{
+    free(tc->P);
+    memset(tc, 0, sizeof *tc);
+}
+
+acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
+                                  const acbb_contact_in *c, const acbb_film *f,
+                                  const acbb_oil_state *o, acbb_traction_contact *tc)
+{
+    tc->np = 0;
+    if (c->Q <= 1e-6 || c->a <= 0.0 || c->b <= 0.0) return ACBB_OK;
+    if (q->n * q->n > tc->cap) return ACBB_EINVAL;
+    double sa = sin(c->alpha), ca = cos(c->alpha);
+    /* Normals from the ball centre: outer (sin a, 0, cos a), inner the
+     * opposite; the major axis lies in the meridional plane. */
+    double sg = c->inner ? -1.0 : 1.0;
+    tc->n[0] = sg * sa; tc->n[1] = 0.0; tc->n[2] = sg * ca;
+    tc->t[0] = ca; tc->t[1] = 0.0; tc->t[2] = -sa;
+    tc->rm = 0.5 * c->dm;
+    tc->H = fmax(f->hc, 1e-9);
+    tc->phi_a = f->phi_a;
+    tc->phi_f = f->phi_f;
+    tc->s_reg = S_REG;
+    double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
+    double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    acbb_visc_law visc;
+    acbb_visc_law_init(s, o, &visc);
+    int k = 0;
+    for (int i = 0; i < q->n; i++) {
+        double xi = q->x[i], sq = sqrt(1.0 - xi * xi), x = c->a * xi;
+        double h = sqrt(fmax(Rd * Rd - x * x, 0.0)) + h0; /* deformed surface, section 4 */
+        for (int j = 0; j < q->n; j++, k++) {
+            double t = q->x[j], y = c->b * sq * t;
+            double *P = tc->P + 3 * k;
+            for (int d = 0; d < 3; d++) P[d] = h * tc->n[d] + x * tc->t[d];
+            P[1] += y;
+            tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
+            tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
+            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval(&visc, tc->p[k]) : 0.0;
+            tc->tb[k] = tc->phi_a * s->mu_bd * tc->p[k];
+            tc->tlim[k] = s->lambda_lim * fmax(tc->p[k], 0.0);
+        }
+    }
+    tc->np = k;
+    return ACBB_OK;
+}
+
+/* Tangential slip sl of ball against race at point k (normal part
+ * removed) for ball angular velocity wb and race speed `race`; returns |sl|. */
+static inline double point_slip(const acbb_traction_contact *tc, int k, const double wb[3],
+                                double race, double sl[3])
+{
+    const double ex[3] = { 1.0, 0.0, 0.0 };
+    const double *P = tc->P + 3 * k;
+    double vb[3], pos[3] = { P[0], P[1], P[2] + tc->rm }, vr[3];
+    cross(wb, P, vb);
+    cross(ex, pos, vr);
+    double sn = 0.0;
+    for (int d = 0; d < 3; d++) {
+        sl[d] = vb[d] - race * vr[d];
+        sn += sl[d] * tc->n[d];
+    }
+    for (int d = 0; d < 3; d++) sl[d] -= sn * tc->n[d];
+    return sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
+}
+
+static inline int eyring_law(const acbb_scene *s)
+{
+    return s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
+}
+
+/* Local traction magnitude at point k for slip speed mag (MODEL.md 5). */
+static inline double point_tau(const acbb_scene *s, const acbb_traction_contact *tc, int k,
+                               double mag)
+{
+    double tau = tc->tb[k];
+    if (!(tc->phi_f > 0.0)) return tau;
+    double eta = tc->eta[k];
+    return tau + tc->phi_f * (eyring_law(s)
+                                  ? acbb_eyring_capped(s->tau_eyring, eta, mag, tc->H, tc->tlim[k])
+                                  : acbb_tau_lubricant(s, eta, mag, tc->H, tc->p[k]));
+}
+
+void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
+                        const double wb[3], double race, acbb_traction *out)
+{
+    memset(out, 0, sizeof *out);
+    for (int k = 0; k < tc->np; k++) {
+        double sl[3], mag = point_slip(tc, k, wb, race, sl);
+        double tau = point_tau(s, tc, k, mag);
+        double g = -tau * tc->w[k] / sqrt(mag * mag + tc->s_reg * tc->s_reg);
+        double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
+        cross(tc->P + 3 * k, f, m);
+        for (int d = 0; d < 3; d++) {
+            out->F[d] += f[d];
+            out->M[d] += m[d];
+        }
+    }
+}
+
+/* d tau / d mag of point_tau: the Eyring branch below its cap (the
+ * asperity part phi_a mu p does not depend on the slip). */
+static inline double point_dtau(const acbb_scene *s, const acbb_traction_contact *tc, int k,
+                                double mag)
+{
+    if (!(tc->phi_f > 0.0)) return 0.0;
+    double te = s->tau_eyring, tn = tc->eta[k] * (mag / tc->H);
+    if (!(tc->tlim[k] > 0.0) || !(tn > 0.0)) return 0.0;
+    double x = tn / te;
+    if (!(te * asinh(x) < tc->tlim[k])) return 0.0;
+    return tc->phi_f * (tc->eta[k] / tc->H) / sqrt(1.0 + x * x);
+}
+
+int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
+                           const double wb[3], double race, acbb_traction *out,
+                           double dF[3][4], double dM[3][4])
+{
+    memset(out, 0, sizeof *out);
+    memset(dF, 0, sizeof(double) * 12);
+    memset(dM, 0, sizeof(double) * 12);
+    if (tc->phi_f > 0.0 && !eyring_law(s)) return 0;
+    for (int k = 0; k < tc->np; k++) {
+        const double *P = tc->P + 3 * k, *n = tc->n;
+        double sl[3], mag = point_slip(tc, k, wb, race, sl);
+        double tau = point_tau(s, tc, k, mag), R2 = mag * mag + tc->s_reg * tc->s_reg;
+        double R = sqrt(R2), g = -tau * tc->w[k] / R;
+        /* dg/dmag of g = -tau(mag) w / sqrt(mag^2 + s_reg^2). */
+        double dg = -tc->w[k] * (point_dtau(s, tc, k, mag) / R - tau * mag / (R2 * R));
+        double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
+        cross(P, f, m);
+        /* Slip derivatives: d/dwb_j = e_j x P, d/drace = -(e_x x pos),
+         * each with its normal part removed like the slip itself. */
+        double D[4][3] = { { 0.0, -P[2], P[1] }, { P[2], 0.0, -P[0] }, { -P[1], P[0], 0.0 },
+                           { 0.0, P[2] + tc->rm, -P[1] } };
+        for (int j = 0; j < 4; j++) {
+            double dn = D[j][0] * n[0] + D[j][1] * n[1] + D[j][2] * n[2], dmag = 0.0;
+            for (int d = 0; d < 3; d++) D[j][d] -= dn * n[d];
+            if (mag > 0.0) dmag = (sl[0] * D[j][0] + sl[1] * D[j][1] + sl[2] * D[j][2]) / mag;
+            double df[3], dm[3];
+            for (int d = 0; d < 3; d++) df[d] = g * D[j][d] + dg * dmag * sl[d];
+            cross(P, df, dm);
+            for (int d = 0; d < 3; d++) {
+                dF[d][j] += df[d];
+                dM[d][j] += dm[d];
+            }
+        }
+        for (int d = 0; d < 3; d++) {
+            out->F[d] += f[d];
+            out->M[d] += m[d];
+        }
+    }
+    return 1;
+}

@@ -1,0 +1,235 @@
+/* acbb — the table of a snapshot's scalar outputs (outputs.h).
+ *
+ * Rows in JSON order: the writers print a section's entries as they come.
+ * The conversions are the ones the JSON has always used (MODEL.md 0: SI
+ * inside, um / deg / N/um outside), written as SI * scale / div so that
+ * every client computes the same double. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "acbb/limits.h"
+#include "losses.h"
+#include "acbb/outputs.h"
+#include "acbb/units.h"
+
+/* Inner-ring growth: thermal + centrifugal, as the seed compares
+ * theta_i + theta_icen with theta_o (MODEL.md 12.4). */
+static double exp_inner_ring(const acbb_snapshot *s)
+{
+    return s->exp_inner + s->exp_inner_cen;
+}
+
+#define OFF_S(m) ACBB_OUT_BEARING, offsetof(acbb_snapshot, m), NULL
+#define OFF_B(m) ACBB_OUT_BALL, offsetof(acbb_ball_view, m), NULL
+#define AS_IS 1.0, 1.0
+#define TO_UM 1e6, 1.0
+#define TO_MM 1e3, 1.0
+#define TO_DEG 1.0, ACBB_DEG
+#define TO_MRAD 1e3, 1.0
+
+static const acbb_output_row k_rows[] = {
+    { "losses_W", NULL, "P_%s_W", "W", NULL, OFF_S(losses.P), AS_IS },
+    { "losses_W", "total", "P_total_W", "W", "total power loss", OFF_S(losses.total), AS_IS },
+
+    { "temperature_C", "outer_ring", "T_outer_ring_C", "C", "outer ring (seed node 5)",
+      OFF_S(T_outer_ring), AS_IS },
+    { "temperature_C", "inner_ring", "T_inner_ring_C", "C", "inner ring", OFF_S(T_inner_ring),
+      AS_IS },
+    { "temperature_C", "ball", "T_ball_C", "C", "ball", OFF_S(T_ball), AS_IS },
+    { "temperature_C", "housing", "T_housing_C", "C", "housing", OFF_S(T_housing), AS_IS },
+    { "temperature_C", "shaft", "T_shaft_C", "C", "shaft", OFF_S(T_shaft), AS_IS },
+    { "temperature_C", "cavity", "T_cavity_C", "C", "oil-air in the cavity", OFF_S(T_cavity),
+      AS_IS },
+
+    { "expansion_um", "ball", "exp_ball_um", "um", "ball radial growth", OFF_S(exp_ball), TO_UM },
+    { "expansion_um", "inner_ring", "exp_inner_um", "um",
+      "inner ring growth, thermal + centrifugal", ACBB_OUT_BEARING, 0, exp_inner_ring, TO_UM },
+    { "expansion_um", "outer_ring", "exp_outer_um", "um", "outer ring growth",
+      OFF_S(exp_outer), TO_UM },
+    { "expansion_um", "inner_thermal", "exp_inner_thermal_um", "um", "inner ring, thermal part",
+      OFF_S(exp_inner), TO_UM },
+    { "expansion_um", "inner_centrifugal", "exp_inner_centrifugal_um", "um",
+      "inner ring, centrifugal part", OFF_S(exp_inner_cen), TO_UM },
+
+    { "ring", "delta_x_um", "delta_x_um", "um", "inner ring axial displacement",
+      OFF_S(delta_x), TO_UM },
+    { "ring", "delta_z_um", "delta_z_um", "um", "inner ring radial displacement",
+      OFF_S(delta_z), TO_UM },
+    { "ring", "tilt_y_mrad", "tilt_y_mrad", "mrad", "inner ring tilt", OFF_S(tilt_y), TO_MRAD },
+    { "ring", "stiffness_axial_N_per_um", "stiffness_axial_N_um", "N/um", "axial stiffness",
+      OFF_S(stiffness_axial), 1e-6, 1.0 },
+    { "ring", "stiffness_radial_N_per_um", "stiffness_radial_N_um", "N/um", "radial stiffness",
+      OFF_S(stiffness_radial), 1e-6, 1.0 },
+    { "ring", "stiffness_tilt_Nm_per_mrad", "stiffness_tilt_Nm_mrad", "N m/mrad",
+      "tilt stiffness", OFF_S(stiffness_tilt), 1e-3, 1.0 },
+
+    /* MODEL.md 13: the squeeze decomposition. */
+    { "squeeze_um", "inner_thermal", "squeeze_inner_thermal_um", "um",
+      "squeeze from inner ring heat", OFF_S(squeeze.inner_thermal), TO_UM },
+    { "squeeze_um", "inner_centrifugal", "squeeze_inner_centrifugal_um", "um",
+      "squeeze from inner ring spin", OFF_S(squeeze.inner_centrifugal), TO_UM },
+    { "squeeze_um", "outer", "squeeze_outer_um", "um", "relief from outer ring growth",
+      OFF_S(squeeze.outer), TO_UM },
+    { "squeeze_um", "ball", "squeeze_ball_um", "um", "squeeze from ball growth",
+      OFF_S(squeeze.ball), TO_UM },
+    { "squeeze_um", "net", "squeeze_net_um", "um", "net squeeze (sum)", OFF_S(squeeze.net),
+      TO_UM },
+
+    { NULL, "psi_deg", "psi_deg", "deg", "ball azimuth", OFF_B(psi), TO_DEG },
+    { NULL, "Qi_N", "Qi_N", "N", "inner contact load", OFF_B(Qi), AS_IS },
+    { NULL, "Qo_N", "Qo_N", "N", "outer contact load", OFF_B(Qo), AS_IS },
+    { NULL, "alpha_i_deg", "alpha_i_deg", "deg", "inner contact angle", OFF_B(alpha_i), TO_DEG },
+    { NULL, "alpha_o_deg", "alpha_o_deg", "deg", "outer contact angle", OFF_B(alpha_o), TO_DEG },
+    { NULL, "slide_i_mps", "slide_i_mps", "m/s", "inner sliding speed", OFF_B(slide_i), AS_IS },
+    { NULL, "slide_o_mps", "slide_o_mps", "m/s", "outer sliding speed", OFF_B(slide_o), AS_IS },
+    { NULL, "spin_i_radps", "spin_i_radps", "rad/s", "inner spin speed", OFF_B(spin_i), AS_IS },
+    { NULL, "spin_o_radps", "spin_o_radps", "rad/s", "outer spin speed", OFF_B(spin_o), AS_IS },
+    { NULL, "film_i_um", "film_i_um", "um", "inner central film", OFF_B(film_i), TO_UM },
+    { NULL, "film_o_um", "film_o_um", "um", "outer central film", OFF_B(film_o), TO_UM },
+    { NULL, "pmax_i_GPa", "pmax_i_GPa", "GPa", "inner max Hertz pressure", OFF_B(pmax_i),
+      1e-9, 1.0 },
+    { NULL, "pmax_o_GPa", "pmax_o_GPa", "GPa", "outer max Hertz pressure", OFF_B(pmax_o),
+      1e-9, 1.0 },
+    { NULL, "a_i_mm", "a_i_mm", "mm", "inner contact semi-major axis", OFF_B(a_i), TO_MM },
+    { NULL, "b_i_mm", "b_i_mm", "mm", "inner contact semi-minor axis", OFF_B(b_i), TO_MM },
+    { NULL, "a_o_mm", "a_o_mm", "mm", "outer contact semi-major axis", OFF_B(a_o), TO_MM },
+    { NULL, "b_o_mm", "b_o_mm", "mm", "outer contact semi-minor axis", OFF_B(b_o), TO_MM },
+    { NULL, "hmin_i_um", "hmin_i_um", "um", "inner minimum film", OFF_B(hmin_i), TO_UM },
+    { NULL, "hmin_o_um", "hmin_o_um", "um", "outer minimum film", OFF_B(hmin_o), TO_UM },
+    { NULL, "omega_m_radps", "omega_m_radps", "rad/s", "orbital speed", OFF_B(omega_m), AS_IS },
+    { "losses_W", NULL, "ball_P_%s_W", "W", NULL, OFF_B(loss_kind), AS_IS },
+    { "losses_W", "total", "ball_P_total_W", "W", "this ball's contact losses", OFF_B(loss),
+      AS_IS },
+
+    { "energy_W", "in", "heat_in_W", "W", "heat sources", OFF_S(heat_in), AS_IS },
+    { "energy_W", "out", "heat_out_W", "W", "heat into the fixed-temperature nodes",
+      OFF_S(heat_out), AS_IS },
+};
+#define N_ROWS (sizeof k_rows / sizeof k_rows[0])
+
+/* The loss kinds a per-loss row lists: all for the bearing, the per-point
+ * and per-contact ones for a ball (bearing-level losses have no ball share). */
+static int row_has_loss(const acbb_output_row *r, int l)
+{
+    const acbb_loss_desc *d = &acbb_loss_table[l];
+    return r->scope == ACBB_OUT_BEARING || d->point || d->contact;
+}
+
+static void fill(acbb_output *o, const acbb_output_row *r, int loss)
+{
+    o->row = r;
+    o->loss = loss;
+    o->key = loss >= 0 ? acbb_loss_table[loss].name : r->key;
+    o->label = loss >= 0 ? acbb_loss_table[loss].label : r->label;
+    o->unit = r->unit;
+}
+
+int acbb_output_get(size_t i, acbb_output *o)
+{
+    for (size_t r = 0; r < N_ROWS; r++) {
+        if (k_rows[r].key) {
+            if (i-- == 0) return fill(o, &k_rows[r], -1), 1;
+            continue;
+        }
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+            if (row_has_loss(&k_rows[r], l) && i-- == 0) return fill(o, &k_rows[r], l), 1;
+    }
+    return 0;
+}
+
+size_t acbb_output_count(void)
+{
+    acbb_output o;
+    size_t n = 0;
+    while (acbb_output_get(n, &o)) n++;
+    return n;
+}
+
+int acbb_output_path(const acbb_output *o, const char *ball, char *buf, size_t n)
+{
+    const acbb_output_row *r = o->row;
+    char ball_part[32] = "";
+    if (r->scope == ACBB_OUT_BALL) snprintf(ball_part, sizeof ball_part, "balls[%s].", ball);
+    return snprintf(buf, n, "%s%s%s%s", ball_part, r->section ? r->section : "",
+                    r->section ? "." : "", o->key);
+}
+
+int acbb_output_flat(const acbb_output *o, char *buf, size_t n)
+{
+    const char *f = o->row->flat, *at = strstr(f, "%s");
+    if (!at) return snprintf(buf, n, "%s", f);
+    return snprintf(buf, n, "%.*s%s%s", (int)(at - f), f, o->key, at + 2);
+}
+
+static double read_double(const void *base, size_t off)
+{
+    double v;
+    memcpy(&v, (const char *)base + off, sizeof v);
+    return v;
+}
+
+double acbb_output_value(const acbb_output *o, const acbb_snapshot *s, int k)
+{
+    const acbb_output_row *r = o->row;
+    size_t off = r->off + (o->loss >= 0 ? (size_t)o->loss * sizeof(double) : 0);
+    double si;
+    if (r->scope == ACBB_OUT_BALL) {
+        if (k < 0 || k >= s->n_balls || k >= ACBB_MAX_BALLS) return NAN;
+        si = read_double(&s->balls[k], off);
+    } else {
+        si = r->get ? r->get(s) : read_double(s, off);
+    }
+    return si * r->scale / r->div;
+}
+
+/* Does "section.key" (or "key" without a section) name row r (with loss
+ * kind l for a per-loss row)? */
+static int names(const acbb_output_row *r, int l, const char *name)
+{
+    if (r->section) {
+        size_t n = strlen(r->section);
+        if (strncmp(name, r->section, n) != 0 || name[n] != '.') return 0;
+        name += n + 1;
+    }
+    return strcmp(name, l >= 0 ? acbb_loss_table[l].name : r->key) == 0;
+}
+
+/* The entry `name` names among the rows of `scope` (a row scan: the CSV
+ * writer looks its columns up at every step). */
+static int find_row(acbb_output_scope scope, const char *name, acbb_output *o)
+{
+    for (size_t i = 0; i < N_ROWS; i++) {
+        const acbb_output_row *r = &k_rows[i];
+        if (r->scope != scope) continue;
+        if (r->key && names(r, -1, name)) return fill(o, r, -1), 1;
+        for (int l = 0; !r->key && l < ACBB_LOSS_KINDS; l++)
+            if (row_has_loss(r, l) && names(r, l, name)) return fill(o, r, l), 1;
+    }
+    return 0;
+}
+
+static acbb_status unknown(const char *path, acbb_error *err)
+{
+    return acbb_error_set(err, ACBB_EINVAL,
+                          "metric '%s' is unknown (e.g. losses_W.total, "
+                          "temperature_C.outer_ring, balls[0].Qi_N)", path);
+}
+
+acbb_status acbb_output_find(const char *path, acbb_output *o, long *ball, acbb_error *err)
+{
+    acbb_output_scope scope = ACBB_OUT_BEARING;
+    const char *name = path;
+    *ball = -1;
+    if (strncmp(path, "balls[", 6) == 0) {
+        char *end;
+        *ball = strtol(path + 6, &end, 10);
+        if (end == path + 6 || end[0] != ']' || end[1] != '.') return unknown(path, err);
+        if (*ball < 0 || *ball >= ACBB_MAX_BALLS)
+            return acbb_error_set(err, ACBB_EINVAL, "metric '%s': ball index must be 0..%d",
+                                  path, ACBB_MAX_BALLS - 1);
+        scope = ACBB_OUT_BALL;
+        name = end + 2;
+    }
+    return find_row(scope, name, o) ? ACBB_OK : unknown(path, err);
+}

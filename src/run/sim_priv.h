@@ -1,0 +1,28 @@
+/* acbb — private helpers shared by the stepper (sim.c) and its snapshot
+ * views (sim_snapshot.c); not part of the public API. */
+#ifndef ACBB_SIM_PRIV_H
+#define ACBB_SIM_PRIV_H
+
+#include "acbb/sim.h"
+#include "mechanics.h"
+#include "expansion.h"
+#include "losses.h"
+
+/* v if finite, else 0: the last guard before a value reaches a client. */
+double acbb_snap_fin(double v);
+
+/* Ball b's view with the losses of its inner and outer contact. */
+void acbb_snap_ball_view(const acbb_ball_state *b, const acbb_contact_loss *in,
+                         const acbb_contact_loss *out, acbb_ball_view *v);
+
+/* MODEL.md 13: the radial squeeze of the expansions e at ball b's angles. */
+void acbb_snap_squeeze(const acbb_expansion *e, const acbb_ball_state *b, acbb_squeeze *q);
+
+/* Checks the stepper makes before a value is published: every loss, the
+ * slide and the film of one contact finite; every entry of v[0..n) finite;
+ * the largest contact pressure of a mechanics state, Pa. */
+int acbb_snap_contact_finite(const acbb_contact_loss *c);
+int acbb_snap_all_finite(const double *v, int n);
+double acbb_snap_max_pmax(const acbb_mech_state *ms);
+
+#endif
