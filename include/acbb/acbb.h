@@ -1,0 +1,27 @@
+/* acbb — the public API in one include: scenes (presets), the coupled run,
+ * its results, and the batch commands built on it. Headers beside the .c
+ * files in src/ are internal. Link with `pkg-config --libs acbb`. */
+#ifndef ACBB_ACBB_H
+#define ACBB_ACBB_H
+
+#include "acbb/status.h"
+#include "acbb/units.h"
+#include "acbb/limits.h"
+#include "acbb/scene.h"
+#include "acbb/preset_info.h"
+#include "acbb/designation.h"
+#include "acbb/fidelity.h"
+#include "acbb/loss_kinds.h"
+#include "acbb/sim.h"
+#include "acbb/history.h"
+#include "acbb/outputs.h"
+#include "acbb/measure.h"
+#include "acbb/outfile.h"
+#include "acbb/sweep.h"
+#include "acbb/sensitivity.h"
+#include "acbb/study.h"
+#include "acbb/accuracy.h"
+#include "acbb/figures.h"
+#include "acbb/plot.h"
+
+#endif
