@@ -45,7 +45,10 @@ code $? 4 "report --md onto /dev/full: exit 4, the same rule"
 "$ACBB" run "$PRESET" --csv "$TMP/no/such/dir/x.csv" --quiet 2>"$TMP/err"
 code $? 2 "csv into a missing directory: exit 2 (bad path)"
 
-# 5. Modes: a new file gets 0644 (not mkstemp's 0600), an old one keeps its own.
+# 5. Modes: a new file gets 0666 & ~umask (0644 under umask 022, not
+#    mkstemp's 0600), an old one keeps its own. tests/test_outfile.c covers
+#    other umasks and every way of naming the temp file.
+umask 022
 "$ACBB" report "$PRESET" --md new.md >/dev/null 2>"$TMP/err"
 [ "$(stat -c %a new.md)" = 644 ]
 t $? "report --md writes a new file with mode 644 (got $(stat -c %a new.md))"

@@ -4,10 +4,16 @@
  *
  * Usage: test_fuzz_replay --preset DIR... --set DIR...
  * Every file of a --preset directory is loaded as a preset, of a --set
- * directory read as `--set` edits. A file named ok-* must be accepted,
- * bad-* refused; the entry points themselves check that a refusal has a
- * message and an accepted scene has no NaN/Inf (a failure there is
- * "broken"). Other names (presets, libFuzzer finds) may go either way. */
+ * directory read as `--set` edits; every entry of a directory is replayed
+ * (counted against the directory listing, at least one). The entry points
+ * check that a refusal has a message and an accepted scene no NaN/Inf (a
+ * failure there is "broken"). Here, for every file: ok-* must be accepted,
+ * bad-* refused, other names (presets, libFuzzer finds) either; and every
+ * refusal must name what it refuses: a preset's the file (its message
+ * starts with the path loaded), an edit's the key (the name after the
+ * last dot of one of the input's keys, as a cross-field rule names the
+ * other key of the pair by its full name; of a longer name its first 64
+ * characters). */
 #include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,52 +46,100 @@ static int by_name(const struct dirent **a, const struct dirent **b)
     return strcmp((*a)->d_name, (*b)->d_name);
 }
 
-static void replay_one(const char *dir, const char *name, entry_fn fn)
+typedef struct {
+    entry_fn fn;
+    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key) */
+} entry;
+
+/* Does a refusal of `data` as edits name one of its keys (by the name
+ * after the last dot, blanks trimmed; an edit without a key names none
+ * to look for)? */
+static int names_a_key(const unsigned char *data, size_t n, const char *msg)
+{
+    char text[4096];
+    size_t len = n < sizeof text - 1 ? n : sizeof text - 1;
+    memcpy(text, data, len);
+    text[len] = '\0'; /* the entry stops at a NUL too */
+    for (char *line = text, *next; line; line = next) {
+        next = strchr(line, '\n');
+        if (next) *next++ = '\0';
+        char *eq = strchr(line, '=');
+        if (eq) *eq = '\0';
+        char *name = strrchr(line, '.');
+        name = name ? name + 1 : line;
+        while (*name == ' ' || *name == '\t') name++;
+        size_t k = strlen(name);
+        while (k > 0 && (name[k - 1] == ' ' || name[k - 1] == '\t' || name[k - 1] == '\r')) k--;
+        name[k < 64 ? k : 64] = '\0'; /* a longer name is quoted cut short */
+        if (strstr(msg, name)) return 1;
+    }
+    return 0;
+}
+
+static int names_input(const entry *e, const unsigned char *data, size_t n, const char *msg)
+{
+    if (e->preset) {
+        const char *path = acbb_fuzz_preset_path();
+        return path[0] && strncmp(msg, path, strlen(path)) == 0;
+    }
+    return names_a_key(data, n, msg);
+}
+
+static void replay_one(const char *dir, const char *name, const entry *e)
 {
     char path[4096], why[1024] = "";
     snprintf(path, sizeof path, "%s/%s", dir, name);
     size_t n = 0;
     unsigned char *data = slurp(path, &n);
     if (!ok(data != NULL, "%s: readable", path)) return;
-    acbb_fuzz_outcome o = fn(data, n, why, sizeof why);
+    acbb_fuzz_outcome o = e->fn(data, n, why, sizeof why);
+    int named = o == ACBB_FUZZ_REJECTED && why[0] && names_input(e, data, n, why);
     free(data);
     /* Keep the TAP line one line: the message may quote a CR or a long value. */
     for (char *c = why; *c; c++)
         if (*c == '\n' || *c == '\r') *c = ' ';
     why[120] = '\0';
+    int want_ok = !strncmp(name, "ok-", 3), want_bad = !strncmp(name, "bad-", 4);
     if (o == ACBB_FUZZ_BROKEN) {
         ok(0, "%s: %s", path, why);
-    } else if (!strncmp(name, "ok-", 3)) {
-        ok(o == ACBB_FUZZ_ACCEPTED, "%s: accepted, every value finite%s%s", path,
-           o ? ": refused: " : "", o ? why : "");
-    } else if (!strncmp(name, "bad-", 4)) {
-        ok(o == ACBB_FUZZ_REJECTED, "%s: refused with a message: %s", path,
-           o ? why : "(accepted)");
+    } else if (o == ACBB_FUZZ_ACCEPTED) {
+        ok(!want_bad, "%s: accepted, every value finite%s", path, want_bad ? " (want refused)" : "");
     } else {
-        ok(1, "%s: %s", path, o ? why : "accepted, every value finite");
+        ok(!want_ok && named, "%s: refused%s, the message names the %s: %s", path,
+           want_ok ? " (want accepted)" : "", e->preset ? "file" : "key", why);
     }
 }
 
-static void replay_dir(const char *dir, entry_fn fn)
+static void replay_dir(const char *dir, const entry *e)
 {
     struct dirent **list;
     int n = scandir(dir, &list, NULL, by_name);
-    if (!ok(n > 2, "%s: a corpus directory with files", dir)) return;
+    int entries = 0, replayed = 0;
     for (int i = 0; i < n; i++) {
-        if (list[i]->d_name[0] != '.') replay_one(dir, list[i]->d_name, fn);
+        const char *name = list[i]->d_name;
+        if (strcmp(name, ".") && strcmp(name, "..")) {
+            entries++;
+            replay_one(dir, name, e);
+            replayed++;
+        }
         free(list[i]);
     }
-    free(list);
+    if (n >= 0) free(list);
+    ok(n >= 0 && replayed > 0 && replayed == entries, "%s: all %d of %d entries replayed", dir,
+       replayed, entries);
 }
 
 int main(int argc, char **argv)
 {
-    entry_fn fn = acbb_fuzz_preset;
+    const entry as_preset = { acbb_fuzz_preset, 1 }, as_set = { acbb_fuzz_set, 0 };
+    const entry *e = &as_preset;
+    int dirs = 0;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--preset")) fn = acbb_fuzz_preset;
-        else if (!strcmp(argv[i], "--set")) fn = acbb_fuzz_set;
-        else replay_dir(argv[i], fn);
+        if (!strcmp(argv[i], "--preset")) e = &as_preset;
+        else if (!strcmp(argv[i], "--set")) e = &as_set;
+        else replay_dir(argv[i], e), dirs++;
     }
+    ok(dirs > 0, "%d corpus directories replayed", dirs);
     acbb_fuzz_cleanup();
     printf("1..%d\n", tap_n);
     return tap_failed != 0;

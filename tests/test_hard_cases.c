@@ -9,7 +9,10 @@
  *   invalid        the scene contradicts itself (scene rules)
  *   not_converged  the step budget ends first
  * Every case also: no NaN/Inf in any double of the snapshot (walked field
- * by field), and a generous 30 s bound on its wall time (reported).
+ * by field), and a bound on its cost that holds on any machine: the step
+ * budget, and at most WORK_BOUND work units (acbb_accuracy_work_units,
+ * millions of instructions from the deterministic work counters; the wall
+ * time is only reported, issue 16 item 6).
  * Usage: test_hard_cases [--slow]: without it the fast cases (default
  * suite, a few seconds), with it the dynamic-level ones (test hard_cases_dynamic). */
 #include <math.h>
@@ -17,12 +20,16 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
+#include "acbb/accuracy.h"
 #include "acbb/measure.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
 #define MAX_EDITS 6
-#define BOUND_MS 30000.0
+/* 30 G instructions' worth (the old bound was 30 s of wall time). Measured
+ * (2026-11): the fast cases take at most 240 units (moment 20 N m), the
+ * dynamic ones 4354 and 11376 (light-load skid). */
+#define WORK_BOUND 30000.0
 
 typedef struct {
     const char *name;
@@ -184,8 +191,12 @@ static void check_case(const hard_case *c, acbb_snapshot *snap)
         ok(pass, "%s: %s (expected %s)", c->name, got, c->expect);
     }
     if (!pass) printf("#   %s\n", msg);
-    ok(ms < BOUND_MS, "%s: %.0f ms (bound %.0f ms)", c->name, ms, BOUND_MS);
+    printf("# %s: %.0f ms wall (reported, not judged)\n", c->name, ms);
     if (!have) return;
+    double units = acbb_accuracy_work_units(&sc, &snap->work);
+    ok(snap->iteration <= sc.max_steps && units < WORK_BOUND,
+       "%s: %ld steps (budget %d), %.0f work units (bound %.0f)", c->name, snap->iteration,
+       sc.max_steps, units, WORK_BOUND);
     int nb = snapshot_nonfinite(snap, bad, sizeof bad);
     ok(nb == 0 && snap->status != ACBB_NONFINITE, "%s: every double of the snapshot finite%s",
        c->name, bad);

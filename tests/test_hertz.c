@@ -280,9 +280,10 @@ static void test_cost(void)
         sum += c.kappa;
     }
     double us = (now_s() - t0) / N * 1e6;
+    /* The cost is reported, not judged (no wall-clock threshold in
+     * `meson test`; BENCHMARKS.md "Latencies the tests report"). */
     printf("# one EXACT acbb_hertz_const_compute: %.2f us\n", us);
-    ok(sum > N * 5.8 && us < 100.0, "EXACT call cost %.2f us (< 100 us even under "
-       "sanitizers; budget 20 us in release)", us);
+    ok(sum > N * 5.8, "EXACT calls: mean kappa above 5.8 (%.2f us a call)", us);
 }
 
 int main(void)

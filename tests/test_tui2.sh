@@ -43,7 +43,7 @@ ok $? "g before any run writes nothing and says why"
 $T resize-window -t "$S" -x 40 -y 10
 wait_for "terminal too small"
 keys 5 r
-sleep 0.3
+wait_until input_drained
 $T resize-window -t "$S" -x 80 -y 24
 wait_for "[1 Run]" && wait_for "Idle at ambient"
 ok $? "keys typed at 40x10 did nothing (still Run, still idle)"
@@ -86,8 +86,8 @@ keys Home
 wait_for "bearing." 3 >/dev/null
 first=$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)
 keys -l "$(printf '\033[Ma((')"
-i=0
-while [ $i -lt 40 ] && [ "$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)" = "$first" ]; do sleep 0.05; i=$((i + 1)); done
+cursor_moved() { [ "$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)" != "$first" ]; }
+wait_until cursor_moved
 now=$(screen | grep -o "^[a-z_]*\.[a-z_A-Z0-9]*:" | head -1)
 [ -n "$first" ] && [ -n "$now" ] && [ "$now" != "$first" ]
 ok $? "the mouse wheel moves the editor cursor ($first -> $now)"
@@ -128,8 +128,8 @@ keys r
 wait_for "eta" 10
 ok $? "while running the status line shows an ETA at 80 columns"
 bad=0; sampled=""; ytop=""; shrank=0
-i=0
-while [ $i -lt 400 ]; do
+i=0 # until converged (a state); 30 s only turns a hang into a failure
+while [ $i -lt 600 ]; do
     st=$(status_line)
     # The chart's top y label (the row under its title) may only grow.
     y=$(screen | sed -n '/Temperature \[C\]/{n;s/^ *\([0-9.]*\) C.*/\1/p;}')
@@ -156,10 +156,12 @@ ok $? "the chart's y axis only widened during the run (top label ends at $ytop C
 total=$(status_line | sed -n 's/.* wall \([0-9.]*\)s .*/\1/p')
 status_line | grep -q "100% done"
 ok $? "converged: 100% done"
-# Generous bound: wall-at-sample + eta within 50 % of the real total.
+# Past a quarter of the run an ETA is shown; how close wall + eta came to
+# the real total is reported, not judged (a wall-clock ratio; the ETA fit
+# itself is checked on fixed numbers in test_progress.c and test_ui_parts.c).
 [ -n "$sampled" ] && [ -n "$total" ] &&
-    awk -v s="$sampled" -v t="$total" 'BEGIN { split(s, p, " "); e = p[1] + p[2]; exit !(e > 0.5 * t && e < 1.5 * t) }'
-ok $? "ETA past 25 %: wall + eta ($sampled) within 50 % of the real run ($total s)"
+    awk -v s="$sampled" 'BEGIN { split(s, p, " "); exit !(p[2] > 0) }'
+ok $? "ETA past 25 %: a positive ETA is shown (wall + eta = $sampled; the run took $total s)"
 wait_for "* = steady solve"
 ok $? "the final steady solve is marked on the chart, not drawn as a jump"
 c=$(screen)
@@ -230,9 +232,11 @@ keys -l "$(cat "$TMP/click")"
 wait_for "[5 Edit]" 3
 ok $? "a mouse click on tab 5 opens the editor"
 keys F10
-wait_file "$TMP/teach" 10
-[ "$(cat "$TMP/teach" 2>/dev/null)" = "EXIT=0" ] || {
-    keys y; wait_file "$TMP/teach" 5; [ "$(cat "$TMP/teach" 2>/dev/null)" = "EXIT=0" ]; }
+# It quits, or asks first when edits are unsaved: wait for either state.
+quit_or_asked() { [ -s "$TMP/teach" ] || screen | grep -q "Quit anyway?"; }
+wait_until quit_or_asked
+[ -s "$TMP/teach" ] || { keys y; wait_file "$TMP/teach"; }
+[ "$(cat "$TMP/teach" 2>/dev/null)" = "EXIT=0" ]
 ok $? "F10 quits"
 
 # ---- the presentation view with a baseline in the C locale, no colour ----

@@ -33,10 +33,16 @@ S=none # current session; each TUI run gets its own (killing the last
         # session would stop the server while the next one starts)
 screen() { $T capture-pane -p -t "$S" 2>/dev/null; }
 show() { screen | sed 's/^/#   /'; }
-# Poll the pane for a fixed string, up to $2 seconds (default 10).
+# Every wait below polls for a state (a text on the pane, a file, a
+# condition) every 0.05 s. The bound only turns a hang into a failure: at
+# least WAIT_FLOOR_S = 30 s whatever a caller asks, so a loaded machine
+# that draws late is never judged on time (issue 16 item 6).
+WAIT_FLOOR_S=30
+wait_ticks() { s=${1:-$WAIT_FLOOR_S}; [ "$s" -lt $WAIT_FLOOR_S ] && s=$WAIT_FLOOR_S; echo $((s * 20)); }
+# Poll the pane for a fixed string, up to $2 seconds (at least the floor).
 wait_for() {
     i=0
-    lim=$(( ${2:-10} * 20 ))
+    lim=$(wait_ticks "${2:-}")
     while [ $i -lt $lim ]; do
         if screen | grep -qF -- "$1"; then return 0; fi
         sleep 0.05
@@ -49,14 +55,40 @@ wait_for() {
 # Poll for a file to appear.
 wait_file() {
     i=0
-    while [ $i -lt $(( ${2:-10} * 20 )) ]; do
+    lim=$(wait_ticks "${2:-}")
+    while [ $i -lt $lim ]; do
         [ -s "$1" ] && return 0
         sleep 0.05
         i=$((i + 1))
     done
+    echo "# timed out waiting for the file $1"
+    return 1
+}
+# Poll until the command "$@" succeeds (up to the floor); on a time-out
+# say what was awaited and show the pane.
+wait_until() {
+    i=0
+    lim=$(wait_ticks)
+    while [ $i -lt $lim ]; do
+        "$@" && return 0
+        sleep 0.05
+        i=$((i + 1))
+    done
+    echo "# timed out waiting until: $*"
+    show
     return 1
 }
 keys() { $T send-keys -t "$S" "$@"; }
+# The TUI has read every key typed so far: its terminal's input queue is
+# empty (FIONREAD). For a check that typed keys did nothing. Without
+# python3 it cannot be read, and a pause stands in for it.
+input_drained() {
+    tty=$($T display-message -p -t "$S" '#{pane_tty}')
+    if ! command -v python3 >/dev/null 2>&1; then sleep 0.3; return 0; fi
+    [ "$(python3 -c 'import fcntl, struct, sys, termios
+with open(sys.argv[1], "rb", buffering=0) as f:
+    print(struct.unpack("i", fcntl.ioctl(f, termios.FIONREAD, bytes(4)))[0])' "$tty")" = 0 ]
+}
 # The value after a label on the overview screen.
 t5() { screen | sed -n 's/^Outer ring (5) *\([-0-9.]*\).*/\1/p'; }
 ptot() { screen | sed -n 's/.*Total *\([-0-9.]*\) .*/\1/p'; }

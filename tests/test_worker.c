@@ -87,6 +87,20 @@ static unsigned long post_wait(acbb_worker *w, acbb_worker_cmd c, const acbb_sce
     return seq;
 }
 
+/* Poll until the published iteration reaches k (the run may also end):
+ * a state, not a time, decides; timeout_s only turns a hang into a
+ * failure. */
+static int wait_iteration_at_least(acbb_worker *w, long k, double timeout_s)
+{
+    double end = now_s() + timeout_s;
+    do {
+        acbb_worker_read(w, &st, NULL);
+        if (st.snap.iteration >= k) return 1;
+        sleep_ms(1);
+    } while (now_s() < end);
+    return 0;
+}
+
 static long progress_over(acbb_worker *w, int ms)
 {
     acbb_worker_read(w, &st, NULL);
@@ -135,11 +149,13 @@ static void test_worker_basics(const acbb_scene *s0)
     ok(sb == 1, "worker: thread blocks SIGINT/SIGTERM/SIGHUP/SIGWINCH (%d)", sb);
 
     /* The wake-up pipe: readable after a publication, empty once drained. */
+    acbb_worker_drain_wake(w); /* the set-up's byte: the next one is RESET's */
     unsigned long seq = acbb_worker_post(w, ACBB_CMD_RESET, NULL, 0);
     acbb_worker_wait_done(w, seq, 10000);
-    sleep_ms(20); /* the worker pokes the pipe just after marking the command done */
+    /* The worker pokes the pipe just after marking the command done: wait
+     * for it (30 s only turns a hang into a failure). */
     fd_set rf;
-    struct timeval tv = { 1, 0 };
+    struct timeval tv = { 30, 0 };
     FD_ZERO(&rf);
     FD_SET(acbb_worker_wake_fd(w), &rf);
     ok(select(acbb_worker_wake_fd(w) + 1, &rf, NULL, NULL, &tv) == 1, "worker: wake fd readable after publishing");
@@ -169,24 +185,37 @@ static void test_worker_basics(const acbb_scene *s0)
            hist.p[0].iteration == 0,
        "worker: history holds steps 0..%ld (%zu points)", rs.iteration, hist.n);
 
-    /* Paced run: x50, 50 simulated seconds per wall second. Over 0.4 s
-     * the run may advance at most 50 * 0.4 s plus the step in flight. */
+    /* Paced run: x50, 50 simulated seconds per wall second. Three steps
+     * are awaited (a state); over the wall time they took the run may
+     * advance at most 50 s per second plus the step in flight. The bound
+     * is the pacing contract itself and one-sided: a slow or loaded
+     * machine only lowers the rate, a fast one cannot exceed it. */
     acbb_worker_set_pace(w, 50);
     ok(acbb_worker_pace(w) == 50, "worker: pace reads back");
     post_wait(w, ACBB_CMD_START, s0, 0);
-    sleep_ms(100);
-    acbb_worker_read(w, &st, NULL);
+    wait_iteration_at_least(w, 1, 30);
     double sim0 = st.snap.time, wall0 = now_s();
-    long adv = progress_over(w, 400);
+    long it0 = st.snap.iteration;
+    int stepped = wait_iteration_at_least(w, it0 + 3, 30);
     double sim_adv = st.snap.time - sim0, wall_adv = now_s() - wall0;
-    ok(adv >= 1 && sim_adv > 0 && sim_adv <= 50 * wall_adv + st.snap.dt,
+    ok(stepped && sim_adv > 0 && sim_adv <= 50 * wall_adv + st.snap.dt,
        "worker: paced at x50 advances %.1f simulated s in %.2f s (%ld steps, dt %.1f s)", sim_adv,
-       wall_adv, adv, st.snap.dt);
+       wall_adv, st.snap.iteration - it0, st.snap.dt);
     post_wait(w, ACBB_CMD_PAUSE, NULL, 0);
     ok(st.phase == ACBB_WORKER_PAUSED, "worker: paused");
     ok(progress_over(w, 50) == 0, "worker: paused means no progress over 50 ms");
     post_wait(w, ACBB_CMD_RESUME, NULL, 0);
-    ok(st.phase == ACBB_WORKER_RUNNING && progress_over(w, 200) > 0, "worker: resumed run progresses");
+    int resumed = st.phase == ACBB_WORKER_RUNNING;
+    ok(resumed && wait_iteration_at_least(w, st.snap.iteration + 1, 30),
+       "worker: resumed run progresses (to iteration %ld)", st.snap.iteration);
+    /* The warm apply below needs a hot run: wait for the state (0.6 K of
+     * rise), not for a time (30 s only turns a hang into a failure). */
+    double hot_end = now_s() + 30;
+    do {
+        acbb_worker_read(w, &st, NULL);
+        if (st.snap.T_outer_ring - s0->ambient_C > 0.6 || st.phase != ACBB_WORKER_RUNNING) break;
+        sleep_ms(2);
+    } while (now_s() < hot_end);
     /* Pause/resume does not restart: the run id is unchanged. */
     unsigned long run = st.run_id;
     post_wait(w, ACBB_CMD_STOP, NULL, 0);
@@ -240,12 +269,22 @@ static void test_worker_basics(const acbb_scene *s0)
        "worker: WTE has no expansion, TE has");
     ok(st.phase == ACBB_WORKER_IDLE, "worker: comparison leaves the main run alone");
 
-    /* Quitting joins promptly even from a 1 step/s wait. */
+    /* A command posted during a x1 pace wait is handled with at most the
+     * step in flight taken (the worker checks its queue before each step).
+     * Quitting (acbb_worker_free) wakes the same wait; how fast is only
+     * reported (no wall-clock threshold, issue 16 item 6). */
     acbb_worker_set_pace(w, 1);
     post_wait(w, ACBB_CMD_START, s0, 0);
+    wait_iteration_at_least(w, 1, 30);
+    long it1 = st.snap.iteration;
+    post_wait(w, ACBB_CMD_PAUSE, NULL, 0);
+    ok(st.phase == ACBB_WORKER_PAUSED && st.snap.iteration <= it1 + 1,
+       "worker: a pause during a x1 pace wait is handled at iteration %ld (posted at %ld)",
+       st.snap.iteration, it1);
+    post_wait(w, ACBB_CMD_RESUME, NULL, 0);
     double t0 = now_s();
     acbb_worker_free(w);
-    ok(now_s() - t0 < 0.5, "worker: free joins a paced worker promptly (%.3f s)", now_s() - t0);
+    printf("# worker: free joined a paced worker in %.3f s\n", now_s() - t0);
 }
 
 static int phase_after_ok(acbb_worker_cmd c, acbb_worker_phase before, acbb_worker_phase after)
@@ -327,7 +366,7 @@ static void test_worker_cycles(const acbb_scene *s0, int cycles)
        atomic_load(&ra.reads), atomic_load(&ra.violations));
     double t0 = now_s();
     acbb_worker_free(w);
-    ok(now_s() - t0 < 2.0, "cycles: free joins (%.3f s)", now_s() - t0);
+    printf("# cycles: free joined in %.3f s\n", now_s() - t0);
 }
 
 /* ---- the engine's cancel hook (include/acbb/accuracy.h) ---- */
@@ -390,26 +429,29 @@ static void test_accuracy_cancel(const acbb_scene *s0)
     ok(isnan(rows[0].e_loss) && isnan(rows[1].e_T) && full[0].e_loss > 0,
        "cancel: errors left NaN (no reference ran)");
 
-    /* Mid-run: the network knob on a 24-point grid takes a few hundred ms
-     * per setting; a cancel 30 ms in must end the call within a small part
-     * of that (one coupled step), not after the setting. */
+    /* Mid-run: the network knob on a 24-point grid, a setting of many
+     * coupled steps. A cancel a tenth of the way into the first setting
+     * (this machine's own time for it, so no absolute threshold) must cut
+     * that setting (dropped: n 0), not wait for it to end (n 1: a check
+     * only between settings would keep it). The delay is reported. */
     acbb_scene s = *s0;
     ok(acbb_scene_set(&s, "fidelity.contact_grid", "24", &err) == ACBB_OK, "scene: contact_grid 24");
     acbb_accuracy_options on = { .knobs = ACBB_ACCURACY_KNOB_BIT(ACBB_KNOB_NETWORK), .repeats = 1 };
     st = acbb_accuracy_run(&s, &on, full, ACBB_BENCH_MAX_ROWS, &nf, NULL, NULL, &err);
     double row_ms = full[0].wall_ms;
-    ok(st == ACBB_OK && nf == 2 && row_ms > 100, "network=7 at grid 24 takes %.0f ms (> 100)", row_ms);
+    ok(st == ACBB_OK && nf == 2 && full[0].iterations > 20,
+       "network=7 at grid 24: %ld coupled steps in its first setting (%.0f ms)", full[0].iterations,
+       row_ms);
     atomic_store(&flag, 0);
     on.cancel = &flag;
-    cancel_later cl = { &flag, 30, 0 };
+    cancel_later cl = { &flag, (int)(0.1 * row_ms), 0 };
     pthread_t th;
     pthread_create(&th, NULL, cancel_thread, &cl);
     st = acbb_accuracy_run(&s, &on, rows, ACBB_BENCH_MAX_ROWS, &n, NULL, NULL, &err);
     double late_ms = 1e3 * (now_s() - cl.t_set);
     pthread_join(th, NULL);
     ok(st == ACBB_CANCELLED && n == 0, "mid-run cancel: the interrupted setting is dropped (n %zu)", n);
-    ok(late_ms < 0.25 * row_ms, "mid-run cancel: returned %.1f ms after the flag (setting: %.0f ms)",
-       late_ms, row_ms);
+    printf("# mid-run cancel: returned %.1f ms after the flag (setting: %.0f ms)\n", late_ms, row_ms);
 }
 
 /* ---- the benchmark thread (bench.c) ---- */
@@ -504,7 +546,7 @@ static void test_bench(const acbb_scene *s0)
     sleep_ms(20);
     t0 = now_s();
     acbb_bench_free(b);
-    ok(now_s() - t0 < 1.0, "bench: free while running joins quickly (%.3f s)", now_s() - t0);
+    printf("# bench: free while running joined in %.3f s\n", now_s() - t0);
 }
 
 /* ---- stop and quit during a dynamic-level step ---- */
@@ -560,11 +602,13 @@ static void test_worker_cancel(const acbb_scene *s0)
     double T5 = st.snap.T_outer_ring, P = st.snap.losses.total;
     double t0 = now_s();
     unsigned long seq = acbb_worker_post(w, ACBB_CMD_STOP, NULL, 0);
-    int done = seq && acbb_worker_wait_done(w, seq, 10000);
+    int done = seq && acbb_worker_wait_done(w, seq, 600000);
     double took = now_s() - t0;
     acbb_worker_read(w, &st, &hist);
+    /* Cut, not finished, is the iteration check below (a state); the time
+     * is reported only. */
     printf("# stop mid-step: handled %.3f s after the post (a step: %.3f s)\n", took, step_s);
-    ok(done && took < 2.0, "stop mid-step: handled within 2 s (%.3f s)", took);
+    ok(done, "stop mid-step: handled");
     ok(st.phase == ACBB_WORKER_STOPPED && strcmp(acbb_run_status_name(&st.snap), "cancelled") == 0,
        "stop mid-step: phase %s, status %s (%s)", acbb_worker_phase_name(st.phase),
        acbb_run_status_name(&st.snap), st.snap.message);
@@ -586,7 +630,7 @@ static void test_worker_cancel(const acbb_scene *s0)
         took = now_s() - t0;
         printf("# quit mid-step: joined %.3f s after the request (a step: %.3f s)\n", took, step_s);
     }
-    ok(w && took < 2.0, "quit mid-step: the worker joins within 2 s (%.3f s)", took);
+    ok(w != NULL, "quit mid-step: the worker was caught mid-step and joined");
 
     /* Quit during the dynamic set-up of a START. */
     acbb_worker_new(s0, 0, &w, &err);
@@ -597,8 +641,8 @@ static void test_worker_cancel(const acbb_scene *s0)
     t0 = now_s();
     acbb_worker_free(w);
     took = now_s() - t0;
-    ok(took < 2.0, "quit during a dynamic set-up (%s): joined within 2 s (%.3f s)",
-       in_setup ? "set-up in flight" : "set-up already done", took);
+    printf("# quit during a dynamic set-up (%s): joined in %.3f s\n",
+           in_setup ? "set-up in flight" : "set-up already done", took);
 }
 
 int main(void)

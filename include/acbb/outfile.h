@@ -2,8 +2,9 @@
  * plots): nothing the user had is destroyed.
  *
  * - A regular file (or a new one) is written to a temporary file in the
- *   same directory, flushed with fsync and renamed over the target; the
- *   target's mode and owner are kept (a new file gets 0666 & ~umask).
+ *   same directory, flushed with fsync and renamed over the target.
+ * - Modes: a new file gets 0666 & ~umask (like `>` in a shell); an
+ *   existing file keeps its mode (and, where the process may, its owner).
  * - A symbolic link is followed: its final target is replaced, the link
  *   itself stays.
  * - A non-regular target (a FIFO, a device, /dev/stdout) is written
@@ -11,7 +12,11 @@
  * - An external writer (gnuplot) writes to acbb_out_fd() (its stdout);
  *   the caller checks the result before commit moves it into place.
  * - The temporary file is unnamed (O_TMPFILE) where the file system allows:
- *   a process killed mid-write leaves no stray file.
+ *   a process killed mid-write leaves no stray file. It is named at commit
+ *   through /proc/self/fd; without /proc through linkat(AT_EMPTY_PATH), or
+ *   else by copying it to a named temp. Where O_TMPFILE is missing, the
+ *   temp is named (.NAME.acbb-PID-N, created O_EXCL) from the start.
+ *   Commit and abort leave no temporary file behind.
  *
  * Ownership: acbb_out_open returns an acbb_out that exactly one of
  * acbb_out_commit / acbb_out_abort releases, and a FILE* owned by it. */

@@ -1,10 +1,15 @@
-#define _GNU_SOURCE /* O_TMPFILE, linkat through /proc (Linux) */
+#define _GNU_SOURCE /* O_TMPFILE, linkat AT_EMPTY_PATH (Linux) */
 /* acbb — atomic, non-destructive output files (outfile.h).
  *
  * The temporary file is an unnamed O_TMPFILE inode in the target's
  * directory where the file system offers it: a kill before the commit
- * leaves nothing behind. It gets a name (linkat) only at commit, just
- * before the rename. Elsewhere a hidden mkstemp name is the fallback. */
+ * leaves nothing behind. It gets a name only at commit, just before the
+ * rename: through /proc/self/fd, else linkat(AT_EMPTY_PATH) (no /proc;
+ * needs CAP_DAC_READ_SEARCH on older kernels), else its bytes are copied
+ * into a named temp (issue 16 item 5). Without O_TMPFILE a named temp
+ * (.NAME.acbb-PID-N, O_EXCL) is used from the start. Both are created
+ * with mode 0666, so the kernel applies the umask; only an existing
+ * target's mode is set explicitly. */
 #include <errno.h>
 #include <fcntl.h>
 #include <libgen.h>
@@ -13,19 +18,19 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "acbb/outfile.h"
+#include "outfile_priv.h"
 
 struct acbb_out {
     char *target;      /* resolved path (symlinks followed) */
-    char *tmp;         /* named temporary file (mkstemp fallback), else NULL */
+    char *tmp;         /* the temporary file's name once it has one, else NULL */
     int fd;            /* the temporary file, or the target when direct; -1 none */
     FILE *f;
+    unsigned flags;    /* ACBB_OUT_NO_* (outfile_priv.h) */
     int direct;        /* 1: write into the target itself (non-regular, stdout) */
     int is_stdout;
     int existed;
     struct stat st;    /* of the existing target */
 };
-
 /* Follow a symlink chain to the file it names; a dangling link's target
  * is created. Returns a malloc'd path. */
 static char *resolve(const char *path)
@@ -70,21 +75,34 @@ static int split(const char *path, char **dir, char **base)
     return -1;
 }
 
-static mode_t file_mode(const acbb_out *o)
+/* An existing target's mode and owner go to the temp file; a new file
+ * keeps the 0666 & ~umask it was created with. The owner only where we
+ * may (root replacing a user's file). */
+static void keep_mode(const acbb_out *o, int fd)
 {
-    if (o->existed) return o->st.st_mode & 07777;
-    /* The umask cannot be read without setting it; the usual 022 is assumed
-     * rather than changing process-wide state under other threads. */
-    return 0644;
+    if (!o->existed) return;
+    (void)fchmod(fd, o->st.st_mode & 07777);
+    if (fchown(fd, o->st.st_uid, o->st.st_gid) != 0) { /* not ours to keep */ }
 }
 
+/* A new named temp file beside the target (O_EXCL: never an existing
+ * one); its name goes to o->tmp. -1 with errno on failure. */
 static int named_temp(acbb_out *o, const char *dir, const char *base)
 {
-    size_t len = strlen(dir) + strlen(base) + 32;
-    o->tmp = malloc(len);
-    if (!o->tmp) return -1;
-    snprintf(o->tmp, len, "%s/.%s.acbb-XXXXXX", dir, base);
-    return mkstemp(o->tmp);
+    size_t len = strlen(dir) + strlen(base) + 48;
+    for (int attempt = 0; attempt < 100; attempt++) {
+        free(o->tmp);
+        if (!(o->tmp = malloc(len))) return -1;
+        snprintf(o->tmp, len, "%s/.%s.acbb-%ld-%d", dir, base, (long)getpid(), attempt);
+        int fd = open(o->tmp, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+        if (fd >= 0) return fd;
+        if (errno != EEXIST) break;
+    }
+    int en = errno;
+    free(o->tmp);
+    o->tmp = NULL;
+    errno = en;
+    return -1;
 }
 
 static acbb_status open_temp(acbb_out *o, acbb_error *err)
@@ -92,8 +110,9 @@ static acbb_status open_temp(acbb_out *o, acbb_error *err)
     char *dir, *base;
     if (split(o->target, &dir, &base) != 0)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    int fd = open(dir, O_TMPFILE | O_RDWR | O_CLOEXEC, file_mode(o));
-    if (fd < 0 && errno != ENOENT && errno != EACCES && errno != EROFS)
+    int fd = -1, no_tmpfile = (o->flags & ACBB_OUT_NO_TMPFILE) != 0;
+    if (!no_tmpfile) fd = open(dir, O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
+    if (fd < 0 && (no_tmpfile || (errno != ENOENT && errno != EACCES && errno != EROFS)))
         fd = named_temp(o, dir, base); /* no O_TMPFILE on this file system */
     int en = errno;
     free(dir);
@@ -101,9 +120,7 @@ static acbb_status open_temp(acbb_out *o, acbb_error *err)
     if (fd < 0)
         return acbb_error_set(err, ACBB_EIO, "cannot write %s: cannot create a temporary file "
                               "beside it: %s", o->target, strerror(en));
-    (void)fchmod(fd, file_mode(o));
-    /* Keep the owner where we may (root replacing a user's file). */
-    if (o->existed && fchown(fd, o->st.st_uid, o->st.st_gid) != 0) { /* not ours to keep */ }
+    keep_mode(o, fd);
     o->fd = fd;
     return ACBB_OK;
 }
@@ -136,12 +153,19 @@ static acbb_status open_target(acbb_out *o, const char *path, int want_stream, a
 
 acbb_status acbb_out_open(const char *path, acbb_out **out, FILE **f, acbb_error *err)
 {
+    return acbb_out_open_ex(path, 0, out, f, err);
+}
+
+acbb_status acbb_out_open_ex(const char *path, unsigned flags, acbb_out **out, FILE **f,
+                             acbb_error *err)
+{
     *out = NULL;
     if (f) *f = NULL;
     if (!path || !path[0]) return acbb_error_set(err, ACBB_EINVAL, "output path is empty");
     acbb_out *o = calloc(1, sizeof *o);
     if (!o) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     o->fd = -1;
+    o->flags = flags;
     if (strcmp(path, "-") == 0) {
         o->is_stdout = o->direct = 1;
         o->target = strdup("standard output");
@@ -180,41 +204,90 @@ static void sync_dir(const char *path)
     free(copy);
 }
 
+/* Copy everything in `from` (from its start) to `out`. */
+static int copy_fd(int from, int out)
+{
+    char buf[65536];
+    ssize_t n = 0;
+    int bad = lseek(from, 0, SEEK_SET) != 0;
+    while (!bad && (n = read(from, buf, sizeof buf)) > 0)
+        bad = write(out, buf, (size_t)n) != n;
+    return bad || n < 0 ? -1 : 0;
+}
+
 /* A non-regular target written by an external program: copy the bytes in. */
 static int copy_into(int from, const char *to)
 {
     int out = open(to, O_WRONLY | O_CLOEXEC | O_NOCTTY);
-    char buf[65536];
-    ssize_t n;
-    int bad = out < 0 || lseek(from, 0, SEEK_SET) != 0;
-    while (!bad && (n = read(from, buf, sizeof buf)) > 0)
-        bad = write(out, buf, (size_t)n) != n;
+    int bad = out < 0 || copy_fd(from, out) != 0;
     if (out >= 0 && close(out) != 0) bad = 1;
     return bad ? -1 : 0;
 }
 
-/* Give the unnamed temporary file a name beside the target and rename it
- * over the target. */
+/* Give the unnamed file `fd` the name `name`: through /proc (any user),
+ * else AT_EMPTY_PATH (ENOENT/EPERM where the kernel wants
+ * CAP_DAC_READ_SEARCH). -1 with errno; EEXIST means "try another name". */
+static int link_fd(int fd, const char *name, unsigned flags)
+{
+    int en = ENOTSUP;
+    if (!(flags & ACBB_OUT_NO_PROC)) {
+        char proc[64];
+        snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
+        if (linkat(AT_FDCWD, proc, AT_FDCWD, name, AT_SYMLINK_FOLLOW) == 0) return 0;
+        if (errno == EEXIST) return -1;
+        en = errno;
+    }
+    if (!(flags & ACBB_OUT_NO_EMPTY_PATH)) {
+        if (linkat(fd, "", AT_FDCWD, name, AT_EMPTY_PATH) == 0) return 0;
+        if (errno == EEXIST) return -1;
+        en = errno;
+    }
+    errno = en;
+    return -1;
+}
+
+/* The last resort for an unnamed temp no link can name: its bytes go to
+ * a named temp (same mode rule), flushed. */
+static int copy_to_named(acbb_out *o, int fd, const char *dir, const char *base)
+{
+    int t = named_temp(o, dir, base);
+    if (t < 0) return -1;
+    keep_mode(o, t);
+    int bad = copy_fd(fd, t) != 0 || fsync(t) != 0;
+    int en = errno;
+    if (close(t) != 0) bad = 1;
+    errno = bad ? en : 0;
+    return bad ? -1 : 0;
+}
+
+/* Name the unnamed temporary file beside the target (o->tmp). */
+static int name_temp(acbb_out *o, int fd)
+{
+    char *dir, *base;
+    if (split(o->target, &dir, &base) != 0) return -1;
+    size_t len = strlen(dir) + strlen(base) + 48;
+    int rc = -1;
+    for (int attempt = 0; attempt < 100; attempt++) {
+        free(o->tmp);
+        if (!(o->tmp = malloc(len))) break;
+        snprintf(o->tmp, len, "%s/.%s.acbb-%ld-%d", dir, base, (long)getpid(), attempt);
+        if ((rc = link_fd(fd, o->tmp, o->flags)) == 0 || errno != EEXIST) break;
+    }
+    if (rc != 0) {
+        free(o->tmp);
+        o->tmp = NULL;
+        rc = copy_to_named(o, fd, dir, base);
+    }
+    free(dir);
+    free(base);
+    return rc;
+}
+
+/* Name the temporary file if it has no name yet and rename it over the
+ * target. */
 static int link_and_rename(acbb_out *o, int fd)
 {
-    if (!o->tmp) {
-        char *dir, *base;
-        if (split(o->target, &dir, &base) != 0) return -1;
-        for (int attempt = 0; attempt < 100; attempt++) {
-            size_t len = strlen(dir) + strlen(base) + 40;
-            free(o->tmp);
-            o->tmp = malloc(len);
-            if (!o->tmp) break;
-            snprintf(o->tmp, len, "%s/.%s.acbb-%ld-%d", dir, base, (long)getpid(), attempt);
-            char proc[64];
-            snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
-            if (linkat(AT_FDCWD, proc, AT_FDCWD, o->tmp, AT_SYMLINK_FOLLOW) == 0) break;
-            if (errno != EEXIST) { free(o->tmp); o->tmp = NULL; break; }
-        }
-        free(dir);
-        free(base);
-        if (!o->tmp) return -1;
-    }
+    if (!o->tmp && name_temp(o, fd) != 0) return -1;
     return rename(o->tmp, o->target);
 }
 

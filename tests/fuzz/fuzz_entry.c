@@ -21,6 +21,8 @@ static int tmp_open(void)
     return tmp_fd >= 0 ? 0 : -1;
 }
 
+const char *acbb_fuzz_preset_path(void) { return tmp_path; }
+
 void acbb_fuzz_cleanup(void)
 {
     if (tmp_fd < 0) return;

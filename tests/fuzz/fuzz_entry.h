@@ -28,6 +28,9 @@ acbb_fuzz_outcome acbb_fuzz_preset(const uint8_t *data, size_t size, char *why, 
  * acbb_scene_apply_edits, then each one alone through acbb_scene_set. */
 acbb_fuzz_outcome acbb_fuzz_set(const uint8_t *data, size_t size, char *why, size_t n);
 
+/* The temporary file acbb_fuzz_preset loads (a refusal names it). */
+const char *acbb_fuzz_preset_path(void);
+
 /* Remove the temporary file (call once at the end). */
 void acbb_fuzz_cleanup(void);
 
