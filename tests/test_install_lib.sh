@@ -81,6 +81,20 @@ if [ "$SAN" = none ]; then
 else
     skip "the example links fully static" "sanitizer build ($SAN): no static runtime"
 fi
+# The Python module as installed finds the library of its own prefix.
+PYMOD=$(find "$D" -path '*/share/acbb/python/acbb.py' | head -n 1)
+[ -n "$PYMOD" ]
+t $? "python/acbb.py is installed (${PYMOD#"$D"})"
+if [ "$SAN" = none ] && command -v python3 >/dev/null; then
+    env -u ACBB_LIB PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
+r = acbb.run("presets/7008C.ini")
+print(r["status"], r["losses_W"]["total"])' >"$TMP/py.txt" 2>"$TMP/err"
+    [ "$(cat "$TMP/py.txt")" = "converged $(val P_total_W)" ]
+    t $? "the installed module runs 7008C with the installed library (no ACBB_LIB)"
+else
+    skip "the installed module runs 7008C" "sanitizer build or no python3"
+fi
+
 LD_LIBRARY_PATH=$LIB "$TMP/ex" presets/no-such.ini >/dev/null 2>"$TMP/err"
 code $? 2 "a missing preset exits 2"
 has "$TMP/err" "presets/no-such.ini: cannot open" "with the engine's message"
