@@ -25,10 +25,9 @@ int main(int argc, char **argv)
     if (!s) return 2;
     acbb_sim_snapshot(sim, s);
     acbb_sim_free(sim);
-    printf("status %s\n", acbb_run_status_name(s));
-    printf("T_outer_ring_C %.10g\n", s->T_outer_ring);
-    printf("P_total_W %.10g\n", s->losses.total);
-    printf("Qi_ball0_N %.10g\n", s->n_balls > 0 ? s->balls[0].Qi : 0.0);
+    printf("status %s\nT_outer_ring_C %.10g\nP_total_W %.10g\nQi_ball0_N %.10g\n",
+           acbb_run_status_name(s), s->T_outer_ring, s->losses.total,
+           s->n_balls > 0 ? s->balls[0].Qi : 0.0);
     int rc = s->state == ACBB_RUN_CONVERGED ? 0 : 1;
     free(s);
     return rc;

@@ -25,13 +25,14 @@ t $? "acbb.pc is installed (${PC#"$D"})"
 LIB=$(dirname "$(dirname "$PC")")
 [ -f "$LIB/libacbb.a" ]
 t $? "libacbb.a is installed beside it"
-[ -L "$LIB/libacbb.so" ] && [ -L "$LIB/libacbb.so.0" ] && [ -f "$(readlink -f "$LIB/libacbb.so")" ] \
-    && readelf -d "$LIB/libacbb.so" | grep -q 'SONAME.*\[libacbb\.so\.0\]'
+[ -L "$LIB/libacbb.so" ] && [ -L "$LIB/libacbb.so.0" ] \
+    && [ -f "$(readlink -f "$LIB/libacbb.so")" ] && readelf -d "$LIB/libacbb.so" | grep -q 'SONAME.*\[libacbb\.so\.0\]'
 t $? "libacbb.so is installed, a link to the file of soname libacbb.so.0"
 INC=$(find "$D" -type d -path '*/include/acbb' | head -n 1)
 diff <(cd include/acbb && ls) <(cd "$INC" && ls) >"$TMP/err"
 t $? "the installed headers are exactly include/acbb/*.h (${INC#"$D"})"
-[ -f "$INC/acbb.h" ] && [ -f "$INC/ffi.h" ] && [ -z "$(find "$D" -name hertz.h -o -name scene_internal.h)" ]
+[ -f "$INC/acbb.h" ] && [ -f "$INC/ffi.h" ] \
+    && [ -z "$(find "$D" -name hertz.h -o -name scene_internal.h)" ]
 t $? "acbb.h and ffi.h are there, no internal header (hertz.h, scene_internal.h)"
 
 # The shared library's dynamic symbols are the public API: each is named in
@@ -39,8 +40,9 @@ t $? "acbb.h and ffi.h are there, no internal header (hertz.h, scene_internal.h)
 nm -D --defined-only "$LIB/libacbb.so" | awk '$2 ~ /^[TDBR]$/ { print $3 }' | sort -u >"$TMP/syms"
 bad=""
 while read -r s; do grep -q -w -- "$s" "$INC"/*.h || bad="$bad $s"; done <"$TMP/syms"
-[ "$(wc -l <"$TMP/syms")" -gt 100 ] && [ -z "$bad" ] && grep -q -x acbb_run_preset_json "$TMP/syms"
-t $? "libacbb.so exports $(wc -l <"$TMP/syms") symbols, all in the public headers${bad:+ (not:$bad)}"
+nsyms=$(wc -l <"$TMP/syms")
+[ "$nsyms" -gt 100 ] && [ -z "$bad" ] && grep -q -x acbb_run_preset_json "$TMP/syms"
+t $? "libacbb.so exports $nsyms symbols, all named in the public headers${bad:+ (not:$bad)}"
 ! grep -q -x -e acbb_sf_parse -e acbb_sf_find "$TMP/syms"
 t $? "internals (acbb_sf_parse, acbb_sf_find) are not exported"
 
@@ -50,7 +52,8 @@ t $? "pkg-config --cflags acbb points into the DESTDIR"
 SANF=()
 [ "$SAN" != none ] && SANF=("-fsanitize=$SAN")
 # shellcheck disable=SC2046  # pkg-config's words are meant to split
-"$CC" "${SANF[@]}" examples/run_preset.c $(pkg-config --cflags --libs acbb) -o "$TMP/ex" 2>"$TMP/err"
+"$CC" "${SANF[@]}" examples/run_preset.c $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
+    2>"$TMP/err"
 code $? 0 "the example builds with pkg-config --cflags --libs acbb"
 LD_LIBRARY_PATH=$LIB ldd "$TMP/ex" | grep -q -F "libacbb.so.0 => $LIB/"
 t $? "it links libacbb.so.0 from the DESTDIR"

@@ -81,7 +81,8 @@ try:
 except acbb.AcbbError as e:
     print("nolib", str(e))
 PY
-has "$TMP/out" "raised bad_input -1 |operating.axial_load_N=-5: operating.axial_load_N = -5: must be >= 0 N|" \
+MSG="operating.axial_load_N=-5: operating.axial_load_N = -5: must be >= 0 N"
+has "$TMP/out" "raised bad_input -1 |$MSG|" \
     "a bad setting raises AcbbError with the engine's message"
 has "$TMP/out" "raised bad_input |<text>:2: operating.axial_load_N = abc: not a number|" \
     "bad preset text raises AcbbError naming <text>:line"
