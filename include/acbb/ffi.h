@@ -36,7 +36,9 @@
  *   and ACBB_ENOMEM as said above).
  * - Thread-safety: reentrant; calls on different threads are independent
  *   (the engine keeps no global mutable state). A call blocks until its
- *   run ends (milliseconds to seconds; no cancel). Nothing is printed. */
+ *   run ends (milliseconds to seconds; no cancel). Nothing is printed.
+ * - Numbers are read and written with a decimal point: the process must
+ *   leave LC_NUMERIC at "C" (the default; Python does). */
 #ifndef ACBB_FFI_H
 #define ACBB_FFI_H
 

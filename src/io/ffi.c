@@ -41,6 +41,15 @@ static acbb_status run(acbb_json *j, const acbb_scene *sc)
     return st;
 }
 
+/* Bad input, or a scene that could not be prepared: status and message. */
+static void write_refusal(acbb_json *j, acbb_status st, const acbb_error *err)
+{
+    acbb_json_open(j, NULL, '{', false);
+    acbb_json_str(j, "status", acbb_status_name(st));
+    acbb_json_str(j, "message", err->msg[0] ? err->msg : acbb_status_name(st));
+    acbb_json_close(j, '}');
+}
+
 char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
                            size_t n_settings, int *status)
 {
@@ -54,15 +63,10 @@ char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
         acbb_json_init(&j, m);
         acbb_error err = { { 0 } };
         st = prepare(preset_text, settings, n_settings, sc, &err);
-        if (st == ACBB_OK) {
-            st = run(&j, sc);
-        } else {
-            acbb_json_open(&j, NULL, '{', false);
-            acbb_json_str(&j, "status", acbb_status_name(st));
-            acbb_json_str(&j, "message", err.msg[0] ? err.msg : acbb_status_name(st));
-            acbb_json_close(&j, '}');
-        }
+        if (st == ACBB_OK) st = run(&j, sc);
+        else write_refusal(&j, st, &err);
         if (j.nonfinite && st != ACBB_ENOMEM) st = ACBB_NONFINITE;
+        /* A document cut short (no memory) is never handed out. */
         if (fclose(m) != 0 || st == ACBB_ENOMEM) {
             free(text);
             text = NULL;
