@@ -1,13 +1,12 @@
 /* acbb CLI — output writers (see output.h).
  *
- * The JSON writer is a few lines by hand rather than a library: the output
- * is write-only, flat and small, and a dependency (cJSON, jansson) would
- * buy nothing but a build requirement. Numbers use %.10g in JSON and CSV so
- * values round-trip to ~1e-10 relative; the summary table uses fixed widths
- * that keep every line within 80 columns. */
+ * JSON goes through the engine's writer (acbb/json.h). Numbers use %.10g in
+ * JSON and CSV so values round-trip to ~1e-10 relative; the summary table
+ * uses fixed widths that keep every line within 80 columns. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/json.h"
 #include "acbb/outputs.h"
 #include "acbb/units.h"
 #include "output.h"
@@ -30,105 +29,6 @@ const char *acbb_cli_point_status(const acbb_cli_point *p)
 {
     if (!p->have_snap) return acbb_status_name(p->status);
     return acbb_run_status_name(&p->snap);
-}
-
-/* ---- JSON primitives ---- */
-
-static void j_string(acbb_cli_out *o, const char *s)
-{
-    fputc('"', o->f);
-    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
-        if (*p == '"' || *p == '\\') fprintf(o->f, "\\%c", *p);
-        else if (*p == '\n') fputs("\\n", o->f);
-        else if (*p == '\t') fputs("\\t", o->f);
-        else if (*p < 0x20) fprintf(o->f, "\\u%04x", *p);
-        else fputc(*p, o->f);
-    }
-    fputc('"', o->f);
-}
-
-/* Separator, newline and indent before an element, then its key. */
-static void j_key(acbb_cli_out *o, const char *key)
-{
-    int d = o->depth;
-    if (d > 0) {
-        if (!o->first[d]) fputc(',', o->f);
-        if (o->inline_[d]) {
-            if (!o->first[d]) fputc(' ', o->f);
-        } else {
-            fprintf(o->f, "\n%*s", 2 * d, "");
-        }
-        o->first[d] = false;
-    }
-    if (key) {
-        j_string(o, key);
-        fputs(": ", o->f);
-    }
-}
-
-static void j_open(acbb_cli_out *o, const char *key, char c, bool one_line)
-{
-    j_key(o, key);
-    fputc(c, o->f);
-    if (o->depth + 1 >= ACBB_CLI_JSON_DEPTH) abort(); /* static nesting: a bug */
-    o->depth++;
-    o->first[o->depth] = true;
-    o->inline_[o->depth] = one_line || o->inline_[o->depth - 1];
-}
-
-static void j_close(acbb_cli_out *o, char c)
-{
-    int d = o->depth;
-    if (!o->inline_[d] && !o->first[d]) fprintf(o->f, "\n%*s", 2 * (d - 1), "");
-    fputc(c, o->f);
-    o->depth--;
-    if (o->depth == 0) fputc('\n', o->f);
-}
-
-static void j_num(acbb_cli_out *o, const char *key, double v)
-{
-    j_key(o, key);
-    if (isfinite(v)) {
-        fprintf(o->f, "%.10g", v);
-    } else {
-        o->nonfinite++;
-        fputs("null", o->f);
-    }
-}
-
-static void j_long(acbb_cli_out *o, const char *key, long v)
-{
-    j_key(o, key);
-    fprintf(o->f, "%ld", v);
-}
-
-static void j_str(acbb_cli_out *o, const char *key, const char *s)
-{
-    j_key(o, key);
-    j_string(o, s);
-}
-
-static void j_bool(acbb_cli_out *o, const char *key, bool b)
-{
-    j_key(o, key);
-    fputs(b ? "true" : "false", o->f);
-}
-
-static void j_null(acbb_cli_out *o, const char *key)
-{
-    j_key(o, key);
-    fputs("null", o->f);
-}
-
-/* A swept value is a JSON number when the whole text is one, else a string
- * (enum and bool parameters). The parsed value is printed, not the text:
- * strtod accepts forms JSON does not ("1.", ".5", "0x10"). */
-static void j_value_text(acbb_cli_out *o, const char *key, const char *text)
-{
-    char *end = NULL;
-    double v = strtod(text, &end);
-    if (end != text && *end == '\0' && isfinite(v)) j_num(o, key, v);
-    else j_str(o, key, text);
 }
 
 /* ---- plain-table cells: never print nan/inf, count them instead ---- */
@@ -208,27 +108,6 @@ static const acbb_cli_col *cols(acbb_cli_out *o, const char *const *spec, size_t
 static double col_value(const acbb_cli_col *c, const acbb_snapshot *s)
 {
     return acbb_output_value(&c->e, s, c->ball);
-}
-
-/* The table's entries of `section` (NULL: the keys directly in a ball) as
- * JSON numbers, in table order: bearing entries when k < 0, else ball k's. */
-static void j_rows(acbb_cli_out *o, const acbb_snapshot *s, const char *section, int k)
-{
-    acbb_output e;
-    for (size_t i = 0; acbb_output_get(i, &e); i++) {
-        const char *sec = e.row->section;
-        if ((e.row->scope == ACBB_OUT_BALL) != (k >= 0)) continue;
-        if (sec && section ? strcmp(sec, section) != 0 : sec != section) continue;
-        j_num(o, e.key, acbb_output_value(&e, s, k));
-    }
-}
-
-/* A bearing section of the table as a JSON object. */
-static void j_section(acbb_cli_out *o, const acbb_snapshot *s, const char *section)
-{
-    j_open(o, section, '{', false);
-    j_rows(o, s, section, -1);
-    j_close(o, '}');
 }
 
 /* ---- acbb run ---- */
@@ -368,105 +247,23 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
     summary_balls(o, snap);
 }
 
-static void json_scene(acbb_cli_out *o, const acbb_scene *sc)
-{
-    j_open(o, "scene", '{', false);
-    j_num(o, "inner_speed_rpm", acbb_rads_to_rpm(sc->inner_speed));
-    j_num(o, "axial_load_N", sc->axial_load);
-    j_num(o, "radial_load_N", sc->radial_load);
-    j_bool(o, "thermal_expansion", sc->thermal_expansion);
-    j_str(o, "model", acbb_model_level_name(sc->model));
-    /* Every key of the schema in preset units: the run's full input. */
-    j_open(o, "keys", '{', false);
-    for (size_t i = 0; i < acbb_scene_field_count(); i++) {
-        const acbb_field_info *fi = acbb_scene_field(i);
-        char key[96], val[128];
-        snprintf(key, sizeof key, "%s.%s", fi->section, fi->key);
-        acbb_scene_field_format(sc, i, val, sizeof val);
-        j_value_text(o, key, val);
-    }
-    j_close(o, '}');
-    j_close(o, '}');
-}
-
-static void json_ball(acbb_cli_out *o, const acbb_snapshot *s, int k)
-{
-    j_open(o, NULL, '{', true);
-    j_rows(o, s, NULL, k);
-    j_open(o, "losses_W", '{', true);
-    j_rows(o, s, "losses_W", k);
-    j_close(o, '}');
-    j_close(o, '}');
-}
-
-/* Ring displacements and stiffness, the squeeze decomposition (MODEL.md
- * 13), the work each part did, and the effects the scene cannot feel. */
-static void json_ring_and_work(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
-{
-    j_section(o, s, "ring");
-    j_section(o, s, "squeeze_um");
-    const acbb_work *w = &s->work;
-    j_open(o, "work", '{', false);
-    j_long(o, "mechanics_solves", w->mechanics_solves);
-    j_long(o, "traction_solves", w->traction_solves);
-    j_long(o, "loss_quadratures", w->loss_quadratures);
-    j_long(o, "network_solves", w->network_solves);
-    j_long(o, "expansion_updates", w->expansion_updates);
-    j_close(o, '}');
-    acbb_inactive_effect in[8];
-    size_t n = acbb_scene_inactive_effects(sc, in, 8);
-    j_open(o, "effects_inactive", '[', false);
-    for (size_t i = 0; i < n; i++) {
-        j_open(o, NULL, '{', true);
-        j_str(o, "effect", in[i].effect);
-        j_str(o, "key", in[i].key);
-        j_str(o, "why", in[i].why);
-        j_close(o, '}');
-    }
-    j_close(o, ']');
-}
-
+/* The run's JSON comes from the engine's one writer (acbb/json.h); the
+ * non-finite count joins the table's. */
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
 {
-    j_open(o, NULL, '{', false);
-    j_str(o, "status", acbb_run_status_name(s));
-    j_str(o, "message", s->message);
-    j_long(o, "iterations", s->iteration);
-    j_num(o, "time_s", s->time);
-    j_num(o, "wall_ms", s->wall_ms);
-
-    j_section(o, s, "losses_W");
-
-    j_open(o, "temperature_C", '{', false);
-    j_rows(o, s, "temperature_C", -1);
-    j_open(o, "nodes", '[', true);
-    for (int i = 0; i < s->n_nodes && i < ACBB_MAX_NODES; i++) j_num(o, NULL, s->T[i]);
-    j_close(o, ']');
-    j_close(o, '}');
-
-    j_section(o, s, "expansion_um");
-
-    json_ring_and_work(o, sc, s);
-
-    j_open(o, "balls", '[', false);
-    for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) json_ball(o, s, k);
-    j_close(o, ']');
-
-    j_section(o, s, "energy_W");
-
-    json_scene(o, sc);
-    j_close(o, '}');
+    acbb_json j;
+    acbb_json_init(&j, o->f);
+    acbb_json_write_run(&j, sc, s);
+    o->nonfinite += j.nonfinite;
 }
 
 void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
                           const char *status, const char *message)
 {
-    j_open(o, NULL, '{', false);
-    j_str(o, "status", status);
-    j_str(o, "message", message);
-    j_long(o, "iterations", 0);
-    json_scene(o, sc);
-    j_close(o, '}');
+    acbb_json j;
+    acbb_json_init(&j, o->f);
+    acbb_json_write_failed(&j, sc, status, message);
+    o->nonfinite += j.nonfinite;
 }
 
 /* The run CSV's table columns: those before residual_K_s, then those after
@@ -629,27 +426,30 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
 void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
                          const acbb_cli_point *pts, size_t n)
 {
-    j_open(o, NULL, '[', false);
+    acbb_json j;
+    acbb_json_init(&j, o->f);
+    acbb_json_open(&j, NULL, '[', false);
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
-        j_open(o, NULL, '{', true);
-        j_str(o, "param", param);
-        j_value_text(o, "value", p->value);
-        j_str(o, "status", acbb_cli_point_status(p));
-        j_str(o, "message", p->have_snap ? p->snap.message : p->message);
-        j_long(o, "iterations", p->have_snap ? p->snap.iteration : 0);
-        j_num(o, "wall_ms", p->wall_ms);
+        acbb_json_open(&j, NULL, '{', true);
+        acbb_json_str(&j, "param", param);
+        acbb_json_value_text(&j, "value", p->value);
+        acbb_json_str(&j, "status", acbb_cli_point_status(p));
+        acbb_json_str(&j, "message", p->have_snap ? p->snap.message : p->message);
+        acbb_json_long(&j, "iterations", p->have_snap ? p->snap.iteration : 0);
+        acbb_json_num(&j, "wall_ms", p->wall_ms);
         double v[SW_N];
         if (p->have_snap) sweep_values(o, p, v);
         for (int k = 0; k < SW_N; k++) {
             char buf[48];
             const char *key = sweep_key(o, k, buf, sizeof buf);
-            if (p->have_snap) j_num(o, key, v[k]);
-            else j_null(o, key);
+            if (p->have_snap) acbb_json_num(&j, key, v[k]);
+            else acbb_json_null(&j, key);
         }
-        j_close(o, '}');
+        acbb_json_close(&j, '}');
     }
-    j_close(o, ']');
+    acbb_json_close(&j, ']');
+    o->nonfinite += j.nonfinite;
 }
 
 void acbb_cli_sweep_csv(acbb_cli_out *o, const char *param,

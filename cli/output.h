@@ -15,7 +15,6 @@
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
-#define ACBB_CLI_JSON_DEPTH 8
 #define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
 #define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
 
@@ -35,9 +34,6 @@ typedef struct {
 typedef struct {
     FILE *f;
     long nonfinite;                      /* NaN/Inf values met so far */
-    int depth;                           /* JSON nesting depth */
-    bool first[ACBB_CLI_JSON_DEPTH];     /* no element written yet at depth */
-    bool inline_[ACBB_CLI_JSON_DEPTH];   /* container printed on one line */
     acbb_cli_colset cols[ACBB_CLI_COLSETS];
 } acbb_cli_out;
 

@@ -1,6 +1,7 @@
 /* acbb — the public API in one include: scenes (presets), the coupled run,
- * its results, and the batch commands built on it. Headers beside the .c
- * files in src/ are internal. Link with `pkg-config --libs acbb`. */
+ * its results, the batch commands built on it, the run as JSON and the
+ * FFI entry point (ffi.h). Headers beside the .c files in src/ are
+ * internal. Link with `pkg-config --libs acbb`. */
 #ifndef ACBB_ACBB_H
 #define ACBB_ACBB_H
 
@@ -23,5 +24,7 @@
 #include "acbb/accuracy.h"
 #include "acbb/figures.h"
 #include "acbb/plot.h"
+#include "acbb/json.h"
+#include "acbb/ffi.h"
 
 #endif

@@ -171,6 +171,10 @@ void acbb_scene_default(acbb_scene *s);
  * shown escaped (\x1b) in every message of this module. */
 acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err);
 
+/* acbb_scene_load from preset text in memory (NUL-terminated), with the
+ * same checks and messages, the source named "<text>" ("<text>:3: ..."). */
+acbb_status acbb_scene_load_text(const char *text, acbb_scene *s, acbb_error *err);
+
 /* Write the whole preset: every schema key, with its unit in the key name
  * and a comment line (help and range) above it. Written through acbb_out
  * (outfile.h): temp file beside the target, fsync, rename; the mode is

@@ -209,27 +209,53 @@ acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_e
 
 /* ---- loading ---- */
 
-acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err)
+/* Parse the open preset `f`, named `name` in messages, into `s` and check
+ * it: the one path of a file and of text (acbb_scene_load_text). */
+static acbb_status load_stream(FILE *f, const char *name, acbb_scene *s, acbb_error *err)
 {
     acbb_sf_parsed *p = calloc(1, sizeof *p);
-    if (!p) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", path);
-    acbb_status rc = ACBB_EIO;
-    FILE *f = acbb_sf_open_preset(path, err);
-    if (f) {
-        rc = acbb_sf_parse(f, path, p, err);
-        fclose(f);
-    }
+    if (!p) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", name);
+    acbb_status rc = acbb_sf_parse(f, name, p, err);
     if (rc == ACBB_OK && p->n_keys == 0) {
-        rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", path);
+        rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", name);
     } else if (rc == ACBB_OK) {
         acbb_error e;
         rc = acbb_scene_validate(&p->scene, &e);
         if (rc != ACBB_OK)
-            acbb_error_set(err, rc, "%s: %s", path, e.msg);
+            acbb_error_set(err, rc, "%s: %s", name, e.msg);
         else
             *s = p->scene;
     }
     free(p);
+    return rc;
+}
+
+acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err)
+{
+    acbb_status rc = ACBB_EIO;
+    FILE *f = acbb_sf_open_preset(path, err);
+    if (f) {
+        rc = load_stream(f, path, s, err);
+        fclose(f);
+    }
+    if (rc != ACBB_OK) acbb_sf_escape_msg(err);
+    return rc;
+}
+
+/* The text is read through a memory stream, so it meets the very checks a
+ * file does (issue 16: the FFI entry point takes preset text). */
+acbb_status acbb_scene_load_text(const char *text, acbb_scene *s, acbb_error *err)
+{
+    static const char name[] = "<text>";
+    acbb_status rc;
+    FILE *f = text && *text ? fmemopen((void *)text, strlen(text), "r") : NULL;
+    if (!text || !*text)
+        rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", name);
+    else if (!f)
+        rc = acbb_error_set(err, ACBB_ENOMEM, "%s: cannot read: %s", name, strerror(errno));
+    else
+        rc = load_stream(f, name, s, err);
+    if (f) fclose(f);
     if (rc != ACBB_OK) acbb_sf_escape_msg(err);
     return rc;
 }

@@ -1,0 +1,130 @@
+/* acbb — a run as JSON (acbb/json.h): the one writer of the document
+ * `acbb run --json` prints and acbb_run_preset_json (ffi.h) returns. Its
+ * numbers and keys come from the output table (outputs.h), so a new output
+ * row shows up here by itself. */
+#include <string.h>
+#include "acbb/json.h"
+#include "acbb/outputs.h"
+#include "acbb/units.h"
+
+/* The table's entries of `section` (NULL: the keys directly in a ball) as
+ * JSON numbers, in table order: bearing entries when k < 0, else ball k's. */
+static void rows(acbb_json *j, const acbb_snapshot *s, const char *section, int k)
+{
+    acbb_output e;
+    for (size_t i = 0; acbb_output_get(i, &e); i++) {
+        const char *sec = e.row->section;
+        if ((e.row->scope == ACBB_OUT_BALL) != (k >= 0)) continue;
+        if (sec && section ? strcmp(sec, section) != 0 : sec != section) continue;
+        acbb_json_num(j, e.key, acbb_output_value(&e, s, k));
+    }
+}
+
+/* A bearing section of the table as a JSON object. */
+static void section(acbb_json *j, const acbb_snapshot *s, const char *name)
+{
+    acbb_json_open(j, name, '{', false);
+    rows(j, s, name, -1);
+    acbb_json_close(j, '}');
+}
+
+static void scene(acbb_json *j, const acbb_scene *sc)
+{
+    acbb_json_open(j, "scene", '{', false);
+    acbb_json_num(j, "inner_speed_rpm", acbb_rads_to_rpm(sc->inner_speed));
+    acbb_json_num(j, "axial_load_N", sc->axial_load);
+    acbb_json_num(j, "radial_load_N", sc->radial_load);
+    acbb_json_bool(j, "thermal_expansion", sc->thermal_expansion);
+    acbb_json_str(j, "model", acbb_model_level_name(sc->model));
+    /* Every key of the schema in preset units: the run's full input. */
+    acbb_json_open(j, "keys", '{', false);
+    for (size_t i = 0; i < acbb_scene_field_count(); i++) {
+        const acbb_field_info *fi = acbb_scene_field(i);
+        char key[96], val[128];
+        snprintf(key, sizeof key, "%s.%s", fi->section, fi->key);
+        acbb_scene_field_format(sc, i, val, sizeof val);
+        acbb_json_value_text(j, key, val);
+    }
+    acbb_json_close(j, '}');
+    acbb_json_close(j, '}');
+}
+
+static void ball(acbb_json *j, const acbb_snapshot *s, int k)
+{
+    acbb_json_open(j, NULL, '{', true);
+    rows(j, s, NULL, k);
+    acbb_json_open(j, "losses_W", '{', true);
+    rows(j, s, "losses_W", k);
+    acbb_json_close(j, '}');
+    acbb_json_close(j, '}');
+}
+
+/* Ring displacements and stiffness, the squeeze decomposition (MODEL.md
+ * 13), the work each part did, and the effects the scene cannot feel. */
+static void ring_and_work(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
+{
+    section(j, s, "ring");
+    section(j, s, "squeeze_um");
+    const acbb_work *w = &s->work;
+    acbb_json_open(j, "work", '{', false);
+    acbb_json_long(j, "mechanics_solves", w->mechanics_solves);
+    acbb_json_long(j, "traction_solves", w->traction_solves);
+    acbb_json_long(j, "loss_quadratures", w->loss_quadratures);
+    acbb_json_long(j, "network_solves", w->network_solves);
+    acbb_json_long(j, "expansion_updates", w->expansion_updates);
+    acbb_json_close(j, '}');
+    acbb_inactive_effect in[8];
+    size_t n = acbb_scene_inactive_effects(sc, in, 8);
+    acbb_json_open(j, "effects_inactive", '[', false);
+    for (size_t i = 0; i < n; i++) {
+        acbb_json_open(j, NULL, '{', true);
+        acbb_json_str(j, "effect", in[i].effect);
+        acbb_json_str(j, "key", in[i].key);
+        acbb_json_str(j, "why", in[i].why);
+        acbb_json_close(j, '}');
+    }
+    acbb_json_close(j, ']');
+}
+
+void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
+{
+    acbb_json_open(j, NULL, '{', false);
+    acbb_json_str(j, "status", acbb_run_status_name(s));
+    acbb_json_str(j, "message", s->message);
+    acbb_json_long(j, "iterations", s->iteration);
+    acbb_json_num(j, "time_s", s->time);
+    acbb_json_num(j, "wall_ms", s->wall_ms);
+
+    section(j, s, "losses_W");
+
+    acbb_json_open(j, "temperature_C", '{', false);
+    rows(j, s, "temperature_C", -1);
+    acbb_json_open(j, "nodes", '[', true);
+    for (int i = 0; i < s->n_nodes && i < ACBB_MAX_NODES; i++) acbb_json_num(j, NULL, s->T[i]);
+    acbb_json_close(j, ']');
+    acbb_json_close(j, '}');
+
+    section(j, s, "expansion_um");
+
+    ring_and_work(j, sc, s);
+
+    acbb_json_open(j, "balls", '[', false);
+    for (int k = 0; k < s->n_balls && k < ACBB_MAX_BALLS; k++) ball(j, s, k);
+    acbb_json_close(j, ']');
+
+    section(j, s, "energy_W");
+
+    scene(j, sc);
+    acbb_json_close(j, '}');
+}
+
+void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *status,
+                            const char *message)
+{
+    acbb_json_open(j, NULL, '{', false);
+    acbb_json_str(j, "status", status);
+    acbb_json_str(j, "message", message);
+    acbb_json_long(j, "iterations", 0);
+    scene(j, sc);
+    acbb_json_close(j, '}');
+}

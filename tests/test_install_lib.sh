@@ -1,0 +1,105 @@
+#!/usr/bin/env bash
+# The engine as a library (issue 16, README "The engine as a library"):
+# `meson install --destdir` holds libacbb.so (and its soname links),
+# libacbb.a, the public headers (no internal one) and acbb.pc; the shared
+# library exports the public API only; examples/run_preset.c builds with
+# `pkg-config --cflags --libs acbb` against that DESTDIR, shared (run with
+# LD_LIBRARY_PATH) and fully static (`--static`), and prints what
+# `acbb run --json` says for 7008C.
+# $1 acbb, $2 the build directory, $3 its b_sanitize ("none", or e.g.
+# "address,undefined": the example then needs the same -fsanitize), $4 the
+# build's C compiler.
+set -u
+ACBB=$1 BUILD=$2 SAN=${3:-none} CC=${4:-cc}
+cd "$(dirname "$0")/.." || exit 1
+. tests/tap.sh
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+D=$TMP/d
+
+meson install -C "$BUILD" --destdir "$D" --no-rebuild --quiet >"$TMP/inst.log" 2>"$TMP/err"
+code $? 0 "meson install --destdir"
+PC=$(find "$D" -name acbb.pc -path '*/pkgconfig/*' | head -n 1)
+[ -n "$PC" ]
+t $? "acbb.pc is installed (${PC#"$D"})"
+LIB=$(dirname "$(dirname "$PC")")
+[ -f "$LIB/libacbb.a" ]
+t $? "libacbb.a is installed beside it"
+[ -L "$LIB/libacbb.so" ] && [ -L "$LIB/libacbb.so.0" ] \
+    && [ -f "$(readlink -f "$LIB/libacbb.so")" ] && readelf -d "$LIB/libacbb.so" | grep -q 'SONAME.*\[libacbb\.so\.0\]'
+t $? "libacbb.so is installed, a link to the file of soname libacbb.so.0"
+INC=$(find "$D" -type d -path '*/include/acbb' | head -n 1)
+diff <(cd include/acbb && ls) <(cd "$INC" && ls) >"$TMP/err"
+t $? "the installed headers are exactly include/acbb/*.h (${INC#"$D"})"
+[ -f "$INC/acbb.h" ] && [ -f "$INC/ffi.h" ] \
+    && [ -z "$(find "$D" -name hertz.h -o -name scene_internal.h)" ]
+t $? "acbb.h and ffi.h are there, no internal header (hertz.h, scene_internal.h)"
+
+# The shared library's dynamic symbols are the public API: each is named in
+# an installed header, and an internal (acbb_sf_parse) is not among them.
+nm -D --defined-only "$LIB/libacbb.so" | awk '$2 ~ /^[TDBR]$/ { print $3 }' | sort -u >"$TMP/syms"
+bad=""
+while read -r s; do grep -q -w -- "$s" "$INC"/*.h || bad="$bad $s"; done <"$TMP/syms"
+nsyms=$(wc -l <"$TMP/syms")
+[ "$nsyms" -gt 100 ] && [ -z "$bad" ] && grep -q -x acbb_run_preset_json "$TMP/syms"
+t $? "libacbb.so exports $nsyms symbols, all named in the public headers${bad:+ (not:$bad)}"
+! grep -q -x -e acbb_sf_parse -e acbb_sf_find "$TMP/syms"
+t $? "internals (acbb_sf_parse, acbb_sf_find) are not exported"
+
+export PKG_CONFIG_PATH="$(dirname "$PC")" PKG_CONFIG_SYSROOT_DIR="$D"
+pkg-config --cflags acbb | grep -q -F -- "-I$D/"
+t $? "pkg-config --cflags acbb points into the DESTDIR"
+SANF=()
+[ "$SAN" != none ] && SANF=("-fsanitize=$SAN")
+# shellcheck disable=SC2046  # pkg-config's words are meant to split
+"$CC" "${SANF[@]}" examples/run_preset.c $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
+    2>"$TMP/err"
+code $? 0 "the example builds with pkg-config --cflags --libs acbb"
+LD_LIBRARY_PATH=$LIB ldd "$TMP/ex" | grep -q -F "libacbb.so.0 => $LIB/"
+t $? "it links libacbb.so.0 from the DESTDIR"
+LD_LIBRARY_PATH=$LIB "$TMP/ex" presets/7008C.ini >"$TMP/ex.txt" 2>"$TMP/err"
+code $? 0 "the example runs 7008C to convergence (exit 0)"
+
+"$ACBB" run presets/7008C.ini --json >"$TMP/run.json" 2>"$TMP/err"
+code $? 0 "acbb run presets/7008C.ini --json"
+# The example prints %.10g, as the JSON does: the same numbers exactly.
+val() { awk -v k="$1" '$1 == k { print $2 }' "$TMP/ex.txt"; }
+jq -e --arg st "$(val status)" --argjson T "$(val T_outer_ring_C)" \
+    --argjson P "$(val P_total_W)" --argjson Q "$(val Qi_ball0_N)" \
+    '.status == $st and $st == "converged" and .temperature_C.outer_ring == $T
+     and .losses_W.total == $P and .balls[0].Qi_N == $Q' "$TMP/run.json" >/dev/null 2>&1
+t $? "status, outer-ring temperature, total loss and Qi equal the CLI's JSON"
+
+if [ "$SAN" = none ]; then
+    # shellcheck disable=SC2046
+    "$CC" -static examples/run_preset.c $(pkg-config --cflags --libs --static acbb) \
+        -o "$TMP/ex_static" 2>"$TMP/err"
+    code $? 0 "the example links fully static with pkg-config --libs --static acbb"
+    ! readelf -d "$TMP/ex_static" 2>/dev/null | grep -q NEEDED
+    t $? "the static example needs no shared library"
+    "$TMP/ex_static" presets/7008C.ini >"$TMP/exs.txt" 2>"$TMP/err"
+    code $? 0 "the static example runs 7008C (exit 0)"
+    cmp -s "$TMP/ex.txt" "$TMP/exs.txt"
+    t $? "static and shared print the same"
+else
+    skip "the example links fully static" "sanitizer build ($SAN): no static runtime"
+fi
+# The Python module as installed finds the library of its own prefix.
+PYMOD=$(find "$D" -path '*/share/acbb/python/acbb.py' | head -n 1)
+[ -n "$PYMOD" ]
+t $? "python/acbb.py is installed (${PYMOD#"$D"})"
+if [ "$SAN" = none ] && command -v python3 >/dev/null; then
+    env -u ACBB_LIB PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
+r = acbb.run("presets/7008C.ini")
+print(r["status"], r["losses_W"]["total"])' >"$TMP/py.txt" 2>"$TMP/err"
+    [ "$(cat "$TMP/py.txt")" = "converged $(val P_total_W)" ]
+    t $? "the installed module runs 7008C with the installed library (no ACBB_LIB)"
+else
+    skip "the installed module runs 7008C" "sanitizer build or no python3"
+fi
+
+LD_LIBRARY_PATH=$LIB "$TMP/ex" presets/no-such.ini >/dev/null 2>"$TMP/err"
+code $? 2 "a missing preset exits 2"
+has "$TMP/err" "presets/no-such.ini: cannot open" "with the engine's message"
+
+tap_done
