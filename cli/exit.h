@@ -3,7 +3,9 @@
  *   0  converged (or the command did its job)
  *   2  bad input: options, preset, --set edits, an ill-posed scene, an
  *      output path that cannot be written
- *   3  the solver did not reach steady state (output is still printed)
+ *   3  the solver did not reach steady state (output is still printed),
+ *      or the command was cancelled (SIGINT / SIGTERM, progress.h): what
+ *      finished is written, status `cancelled`
  *   4  internal error: non-finite output, stdout failed, out of memory,
  *      gnuplot missing or failing
  * When several apply the worst (highest) one is returned. */
@@ -16,6 +18,7 @@ typedef enum {
     ACBB_EXIT_OK = 0,
     ACBB_EXIT_INPUT = 2,
     ACBB_EXIT_SOLVER = 3,
+    ACBB_EXIT_CANCELLED = 3,
     ACBB_EXIT_INTERNAL = 4,
 } acbb_cli_exit;
 
