@@ -10,7 +10,18 @@ PRESETS=$PWD/presets
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
-now_ms() { date +%s%3N; }
+# caught PID: the process catches SIGINT and SIGTERM (its handler is in):
+# the state the signals below wait for, instead of a time.
+caught() {
+    local i m
+    for ((i = 0; i < 600; i++)); do
+        m=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null)
+        [ -n "$m" ] && (( (16#$m & 0x4002) == 0x4002 )) && return 0
+        kill -0 "$1" 2>/dev/null || return 1
+        sleep 0.1
+    done
+    return 1
+}
 
 # finite FILE NAME: valid JSON (a NaN would not parse) whose every number is finite.
 finite() {
@@ -29,19 +40,16 @@ wait_for() {
 }
 
 # 1. The case: the dynamic level of combined-load (set-up alone takes
-#    many seconds), SIGINT after 1 s.
+#    many seconds), SIGINT during the set-up. (How soon it ends is a
+#    benchmark, not a test: no clock here.)
 "$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
     >"$TMP/a.json" 2>"$TMP/err" &
 pid=$!
-sleep 1
-t0=$(now_ms)
+caught $pid
 kill -INT $pid
 wait $pid
 rc=$?
-dt=$(($(now_ms) - t0))
-code $rc 3 "dynamic combined-load, SIGINT after 1 s: exit 3"
-[ "$dt" -lt 2000 ]
-t $? "it ended ${dt} ms after the signal (bound 2000 ms)"
+code $rc 3 "dynamic combined-load, SIGINT in the set-up: exit 3"
 jqt "$TMP/a.json" '.status == "cancelled"' "JSON status is cancelled"
 finite "$TMP/a.json" "every number in that JSON is finite"
 has "$TMP/err" "cancelled" "stderr says cancelled"
@@ -73,23 +81,30 @@ else
     t 1 "the dynamic run took a step within 60 s"
 fi
 
-# 3. A second SIGINT kills at once (default action restored). The two are
-#    sent back to back; when the first already ended the run before the
-#    second arrived, the check cannot tell and is skipped.
-"$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
-    >/dev/null 2>"$TMP/err" &
-pid=$!
-sleep 0.5
-kill -INT $pid
-kill -INT $pid 2>/dev/null
-wait $pid
-rc=$?
-if [ $rc -eq 3 ]; then
-    skip "a second SIGINT ends the process at once" "the first one ended the run first"
-else
-    [ $rc -eq 130 ]
-    t $? "a second SIGINT ends the process at once (exit $rc, want 130)"
-fi
+# 3. A second signal kills at once (the first restores the default
+#    actions of both). The two are sent back to back; when the first
+#    already ended the command before the second arrived, the check cannot
+#    tell and is skipped.
+second() {   # SIG1 SIG2 WANT CMD...
+    local s1=$1 s2=$2 want=$3
+    shift 3
+    "$ACBB" "$@" >/dev/null 2>"$TMP/err" &
+    pid=$!
+    caught $pid
+    kill -"$s1" $pid
+    kill -"$s2" $pid 2>/dev/null
+    wait $pid
+    rc=$?
+    if [ $rc -eq 3 ]; then
+        skip "$1 SIG$s1 then SIG$s2 ends the process at once" "the first one ended it first"
+    else
+        [ $rc -eq "$want" ]
+        t $? "$1: SIG$s1 then SIG$s2 ends the process at once (exit $rc, want $want)"
+    fi
+}
+second INT INT 130 run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json
+second INT TERM 143 sweep "$PRESETS/7008C.ini" --grid operating.axial_load_N=50:1000:4000 \
+    --jsonl "$TMP/second.jsonl"
 
 # 4. Without a terminal (and without ACBB_PROGRESS) nothing is drawn.
 ACBB_PROGRESS= "$ACBB" run "$PRESETS/7008C.ini" --quiet 2>"$TMP/err"
