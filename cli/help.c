@@ -7,20 +7,35 @@
 #include "exit.h"
 
 /* The exit statuses (exit.h), for the overview and EXIT STATUS. */
+#define KILLED (-1)                   /* 128+N */
 static const struct {
     int code;
     const char *brief, *text;
 } k_exits[] = {
     { ACBB_EXIT_OK, "converged", "converged, or the command did its job" },
-    { ACBB_EXIT_INPUT, "bad input or ill-posed scene", "bad input: options, preset, --set edits, an ill-posed scene, an output "
-                       "path that cannot be opened; the message names what to change" },
+    { ACBB_EXIT_HANGUP, "the TUI's terminal went away",
+      "the TUI only: its terminal went away without a SIGHUP" },
+    { ACBB_EXIT_INPUT, "bad input or ill-posed scene", "bad input: options, preset, --set "
+      "edits, an ill-posed scene, an output path that cannot be opened; the message names "
+      "what to change" },
     { ACBB_EXIT_SOLVER, "solver did not reach steady state, or cancelled (SIGINT, SIGTERM)",
-      "the solver did not reach steady state (output is still printed), or "
-                        "the command was cancelled by SIGINT (Ctrl-C) or SIGTERM: status "
-                        "cancelled, what finished is written, no file claims more" },
-    { ACBB_EXIT_INTERNAL, "internal error or gnuplot failure", "internal error, gnuplot missing or failing, or an output file whose "
-                          "write failed once open (the old file is kept)" },
+      "the solver did not reach steady state (output is still printed), or the command was "
+      "cancelled by SIGINT (Ctrl-C) or SIGTERM: status cancelled, what finished is written, "
+      "no file claims more" },
+    { ACBB_EXIT_INTERNAL, "internal error or gnuplot failure", "internal error, gnuplot "
+      "missing or failing, out of memory, or an output file whose write failed once open (the "
+      "old file is kept)" },
+    { KILLED, "killed by signal N", "killed by signal N: a second SIGINT or SIGTERM while a "
+      "command is cancelling, or the TUI leaving on SIGTERM, SIGHUP or SIGQUIT (its edits are "
+      "saved for recovery first)" },
 };
+
+static const char *exit_code(char *buf, size_t n, size_t i)
+{
+    if (k_exits[i].code == KILLED) snprintf(buf, n, "128+N");
+    else snprintf(buf, n, "%d", k_exits[i].code);
+    return buf;
+}
 
 static const char k_presets[] =
     "PRESET is a file, or a name (7008C) looked up in ~/.config/acbb/presets,\n"
@@ -39,8 +54,9 @@ void acbb_cli_print_overview(FILE *f)
     }
     fprintf(f, "\n`acbb help COMMAND` or `acbb COMMAND --help` shows its options.\n%s"
                "\nexit status:\n", k_presets);
+    char code[16];
     for (size_t i = 0; i < sizeof k_exits / sizeof k_exits[0]; i++)
-        fprintf(f, "  %d  %s\n", k_exits[i].code, k_exits[i].brief);
+        fprintf(f, "  %-5s  %s\n", exit_code(code, sizeof code, i), k_exits[i].brief);
 }
 
 /* The closest command name, or NULL when none is near. */
@@ -187,13 +203,14 @@ static void man_options(FILE *f)
 
 static void man_exit(FILE *f)
 {
+    char code[16];
     fputs(".SH EXIT STATUS\n", f);
     for (size_t i = 0; i < sizeof k_exits / sizeof k_exits[0]; i++) {
-        fprintf(f, ".TP\n.B %d\n", k_exits[i].code);
+        fprintf(f, ".TP\n.B %s\n", exit_code(code, sizeof code, i));
         roff_s(f, k_exits[i].text);
         fputs(".\n", f);
     }
-    fputs(".PP\nWhen several apply the highest is returned.\n", f);
+    fputs(".PP\nWhen several of 0 to 4 apply the highest is returned.\n", f);
 }
 
 /* The prose around the tables (hand-written, roff as it stands). */
