@@ -101,7 +101,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       acbb_cli_bench_accuracy },
     { "report", NULL, "PRESET",
       "the seed's conclusions (MODEL.md 12): held or not",
-      "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n",
+      "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n"
+      "Cancelled (Ctrl-C, SIGTERM): no verdicts, no --md file, exit 3.\n",
       SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS), 1, 1, 0, acbb_cli_cmd_report },
     { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
       "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
