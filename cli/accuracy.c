@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "acbb/accuracy.h"
 #include "acbb/plot.h"
 #include "acbb/scene.h"
@@ -19,6 +18,7 @@
 #include "commands.h"
 #include "common.h"
 #include "exit.h"
+#include "progress.h"
 
 #define ACC_PLOT_W 1000
 #define ACC_PLOT_H 650
@@ -264,6 +264,18 @@ static int any_failed(const acbb_accuracy_row *rows, size_t n)
     return 0;
 }
 
+/* Cancelled: the settings that finished, without errors (an unfinished
+ * knob has no reference) or frontier; no --csv or --plot file (README
+ * "Usage"). */
+static int bench_cancelled(const acc_args *a, const acbb_accuracy_row *rows, size_t n)
+{
+    print_table(a, rows, n);
+    char kept[128];
+    snprintf(kept, sizeof kept, "%zu setting%s timed (errors need the knob's reference); no "
+             "file written", n, n == 1 ? "" : "s");
+    return acbb_cli_worst(acbb_cli_cancelled("bench accuracy", kept), acbb_cli_stdout_check(0));
+}
+
 static int run_bench(const acc_args *a, const acbb_scene *base)
 {
     acbb_accuracy_options opt = { .knobs = a->knobs, .model_levels = a->models,
@@ -272,8 +284,16 @@ static int run_bench(const acc_args *a, const acbb_scene *base)
     acbb_accuracy_row *rows = calloc(cap, sizeof *rows);
     if (!rows) return ACBB_EXIT_INTERNAL;
     acbb_error err = { { 0 } };
-    acbb_accuracy_progress tick = isatty(STDERR_FILENO) ? progress_tick : NULL;
+    acbb_accuracy_progress tick = acbb_cli_progress_wanted(stderr) ? progress_tick : NULL;
+    opt.cancel = acbb_cli_interrupt_begin();
     acbb_status st = acbb_accuracy_run(base, &opt, rows, cap, &n, tick, NULL, &err);
+    acbb_cli_interrupt_end();
+    if (st == ACBB_CANCELLED) {
+        if (tick) fputc('\n', stderr);
+        int rc = bench_cancelled(a, rows, n);
+        free(rows);
+        return rc;
+    }
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         free(rows);

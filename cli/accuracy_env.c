@@ -5,12 +5,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "acbb/accuracy.h"
 #include "acbb/fidelity.h"
 #include "accuracy.h"
 #include "common.h"
 #include "exit.h"
+#include "progress.h"
 
 static void label_of(const acbb_envelope_row *r, char *buf, size_t n)
 {
@@ -111,13 +111,22 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
     if (rc) return rc;
     acbb_envelope_options o = { .knobs = knobs, .model_levels = models, .points = (int)points,
                                 .jobs = (int)jobs, .ladder = 1 };
+    /* A cancelled envelope prints nothing: its rows would be over fewer
+     * points than they say (progress.h). */
+    o.cancel = acbb_cli_interrupt_begin();
     size_t cap = acbb_envelope_size(&o), n = 0;
     acbb_envelope_row *rows = calloc(cap, sizeof *rows);
     if (!rows) return ACBB_EXIT_INTERNAL;
     acbb_error err = { { 0 } };
     double ms = 0.0;
     acbb_status st = acbb_accuracy_envelope(base, &o, rows, cap, &n, &ms,
-                                            isatty(STDERR_FILENO) ? tick : NULL, NULL, &err);
+                                            acbb_cli_progress_wanted(stderr) ? tick : NULL, NULL,
+                                            &err);
+    acbb_cli_interrupt_end();
+    if (st == ACBB_CANCELLED) {
+        free(rows);
+        return acbb_cli_cancelled("bench accuracy", "no table written (it would be partial)");
+    }
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         free(rows);

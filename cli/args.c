@@ -69,6 +69,7 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_INPUTS] = { "inputs", "K1,...",
                          "with --sensitivity: vary only these uncertain inputs (default all; "
                          "`acbb keys` marks them plausible)" },
+    [CLI_OPT_MAN] = { "man", NULL, "print the manual page (roff) made from the command table" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

@@ -26,7 +26,7 @@ typedef enum {
     CLI_OPT_HELP, CLI_OPT_BASELINE,
     CLI_OPT_GRID, CLI_OPT_JSONL, CLI_OPT_SHARD, CLI_OPT_MAX_POINTS,
     CLI_OPT_METRIC, CLI_OPT_DELTA, CLI_OPT_MORRIS, CLI_OPT_SENSITIVITY,
-    CLI_OPT_ENVELOPE, CLI_OPT_POINTS, CLI_OPT_INPUTS,
+    CLI_OPT_ENVELOPE, CLI_OPT_POINTS, CLI_OPT_INPUTS, CLI_OPT_MAN,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
@@ -86,6 +86,14 @@ int acbb_cli_parse(const acbb_cli_command *c, int argc, char **argv, int first,
 void acbb_cli_print_synopsis(FILE *f, const acbb_cli_command *c);
 /* Synopsis, summary, details and every accepted option with its help. */
 void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c);
+
+/* help.c: the overview of every command (`acbb help`), the exit statuses,
+ * and the manual page in roff (`acbb help --man`, installed as acbb.1):
+ * all from the two tables. */
+void acbb_cli_print_overview(FILE *f);
+void acbb_cli_print_man(FILE *f, const char *version);
+int acbb_cli_unknown_command(const char *name);
+int acbb_cli_cmd_help(const acbb_cli_args *a);
 
 /* Levenshtein distance, capped: the "did you mean" measure. */
 size_t acbb_cli_distance(const char *a, size_t la, const char *b, size_t lb);

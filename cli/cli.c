@@ -371,6 +371,7 @@ static int study_table(const acbb_cli_args *a, long jobs)
     acbb_cli_study_table(&o, pts, blocks, 3);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
     if (!points_ok(pts, 2 * n_pairs)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    rc = acbb_cli_worst(rc, acbb_cli_cancelled("study", "the table shows the runs that finished"));
     free(pts);
     return rc;
 }
@@ -388,7 +389,7 @@ static int bench_points(const acbb_scene *base, const double *loads, size_t n,
             if (loads) pts[i].scene.axial_load = loads[i];
         }
         double t0 = acbb_now_ms();
-        run_points(pts, n, jobs, NULL);
+        run_points(pts, n, jobs, acbb_cli_interrupt_flag());
         times[r] = acbb_now_ms() - t0;
         if (!points_ok(pts, n)) return ACBB_EXIT_SOLVER;
     }
@@ -432,6 +433,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
         free(pts);
         return ACBB_EXIT_INTERNAL;
     }
+    acbb_cli_interrupt_begin();
     printf("acbb bench speed %s (median of %ld)\n", preset, repeat);
     printf("machine            %s, %ld CPUs online (sysconf)\n", machine, ncpu);
 
@@ -449,12 +451,15 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
         printf("8-load sweep       %10.2f ms  (%ld threads)\n",
                acbb_median(times, (size_t)repeat), ncpu);
     }
+    acbb_cli_interrupt_end();
     rc = acbb_cli_stdout_check(0);
     free(times);
     free(pts);
     return rc;
 fail:
-    rc = bench_fail(pts, STUDY_N);
+    acbb_cli_interrupt_end();
+    rc = acbb_cli_interrupted() ? acbb_cli_cancelled("bench speed", "the timings above finished")
+                                : bench_fail(pts, STUDY_N);
     free(times);
     free(pts);
     return rc;

@@ -17,6 +17,7 @@
 #include "common.h"
 #include "exit.h"
 #include "figures.h"
+#include "progress.h"
 
 #define FIG_W 900
 #define FIG_H 600
@@ -169,6 +170,19 @@ static int summary(const fig_view *v, size_t n)
     return rc;
 }
 
+/* Cancelled (SIGINT / SIGTERM, progress.h): no REPORT.md is written, and
+ * one from an earlier run goes once panels were redrawn (it would describe
+ * other figures), so nothing in DIR claims a complete set. */
+static int figures_cancelled(const fig_view *v, bool drawn)
+{
+    char path[4200], kept[160];
+    snprintf(path, sizeof path, "%s/REPORT.md", v->dir);
+    if (drawn) remove(path);
+    snprintf(kept, sizeof kept, "%s, no REPORT.md written", drawn ? "the panels were drawn"
+                                                                  : "no panel drawn");
+    return acbb_cli_cancelled("study", kept);
+}
+
 static int figures(const acbb_cli_args *a, acbb_study *st, long jobs)
 {
     size_t n;
@@ -179,16 +193,32 @@ static int figures(const acbb_cli_args *a, acbb_study *st, long jobs)
     acbb_fig_input *in = NULL;
     acbb_error err = { { 0 } };
     if (!res) return ACBB_EXIT_INTERNAL;
+    acbb_cli_progress prog;
+    acbb_cli_progress_init(&prog, stderr, 0.0);
+    const atomic_int *cancel = acbb_cli_interrupt_begin();
+    acbb_cli_progress_note(&prog, "study: running the study  (Ctrl-C stops)");
     double t0 = acbb_now_ms();
-    acbb_study_run(st, (int)jobs, NULL);
+    acbb_status ss = acbb_study_run(st, (int)jobs, cancel);
     double t1 = acbb_now_ms();
     int rc = 0;
-    if (acbb_figures_record(v.runs, (int)jobs, NULL, &in, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: study: %s\n", err.msg);
-        rc = ACBB_EXIT_INTERNAL;
+    if (ss != ACBB_CANCELLED) {
+        acbb_cli_progress_note(&prog, "study: recording the trajectories  (Ctrl-C stops)");
+        ss = acbb_figures_record(v.runs, (int)jobs, cancel, &in, &err);
+        if (ss != ACBB_OK && ss != ACBB_CANCELLED) {
+            fprintf(stderr, "acbb: study: %s\n", err.msg);
+            rc = ACBB_EXIT_INTERNAL;
+        }
     }
     double t2 = acbb_now_ms();
-    if (!rc) acbb_figures_write_all(in, v.dir, (int)jobs, FIG_W, FIG_H, res);
+    bool drawn = !rc && ss != ACBB_CANCELLED;
+    if (drawn) acbb_figures_write_all(in, v.dir, (int)jobs, FIG_W, FIG_H, res);
+    acbb_cli_progress_end(&prog);
+    acbb_cli_interrupt_end();
+    if (acbb_cli_interrupted()) {
+        acbb_figures_input_free(in);
+        free(res);
+        return figures_cancelled(&v, drawn);
+    }
     v.ms[0] = t1 - t0;
     v.ms[1] = t2 - t1;
     v.ms[2] = acbb_now_ms() - t2;

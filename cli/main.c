@@ -27,10 +27,8 @@
 #define O(x) CLI_BIT(CLI_OPT_##x)
 #define SCENE_OPTS O(SET)
 
-static int cmd_help(const acbb_cli_args *a);
 static int cmd_version(const acbb_cli_args *a);
 static int cmd_tui(const acbb_cli_args *a);
-static int cmd_report(const acbb_cli_args *a);
 static int cmd_metrics(const acbb_cli_args *a);
 
 const acbb_cli_command acbb_cli_commands[] = {
@@ -103,8 +101,9 @@ const acbb_cli_command acbb_cli_commands[] = {
       acbb_cli_bench_accuracy },
     { "report", NULL, "PRESET",
       "the seed's conclusions (MODEL.md 12): held or not",
-      "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n",
-      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS), 1, 1, 0, cmd_report },
+      "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n"
+      "Cancelled (Ctrl-C, SIGTERM): no verdicts, no --md file, exit 3.\n",
+      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS), 1, 1, 0, acbb_cli_cmd_report },
     { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
       "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
       "never over an existing file) with the ISO 15 bore, outside diameter and width;\n"
@@ -118,53 +117,13 @@ const acbb_cli_command acbb_cli_commands[] = {
       "The paths of `acbb run --json` (balls[i]: any ball index), as `acbb sensitivity\n"
       "--metric` and the TUI's Sweep and Sensitivity screens take them.\n",
       0, 0, 0, -1, cmd_metrics },
-    { "help", NULL, "[COMMAND]", "this overview, or one command's usage", NULL, 0, 0, 2, -1,
-      cmd_help },
+    { "help", NULL, "[COMMAND]", "this overview, or one command's usage",
+      "--man prints the manual page (installed as acbb.1) from this same table.\n",
+      O(MAN), 0, 2, -1, acbb_cli_cmd_help },
     { "version", NULL, "", "print the version (also --version)", NULL, 0, 0, 0, -1,
       cmd_version },
 };
 const size_t acbb_cli_n_commands = sizeof acbb_cli_commands / sizeof acbb_cli_commands[0];
-
-static void overview(FILE *f)
-{
-    fputs("usage: acbb [COMMAND [ARGS]]     (no command: the TUI on 7008C)\n\ncommands:\n", f);
-    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
-        const acbb_cli_command *c = &acbb_cli_commands[i];
-        char head[40];
-        snprintf(head, sizeof head, "%s%s%s %s", c->name, c->sub ? " " : "",
-                 c->sub ? c->sub : "", c->args);
-        fprintf(f, "  %-24s%s\n", head, c->summary);
-    }
-    fputs("\n`acbb help COMMAND` or `acbb COMMAND --help` shows its options.\n"
-          "PRESET is a file, or a name (7008C) looked up in ~/.config/acbb/presets,\n"
-          "./presets and the installed presets (`acbb presets` lists them).\n"
-          "--set edits use preset units, e.g. --set operating.axial_load_N=200.\n"
-          "\nexit status: 0 converged, 2 bad input or ill-posed scene,\n"
-          "3 solver did not reach steady state, 4 internal error or gnuplot failure\n", f);
-}
-
-/* The closest command name, or NULL when none is near. */
-static const char *near_command(const char *name)
-{
-    size_t best = 3, len = strlen(name);
-    const char *pick = NULL;
-    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
-        const char *n = acbb_cli_commands[i].name;
-        size_t d = acbb_cli_distance(name, len, n, strlen(n));
-        if (d < best || (d == best && !pick && d <= len / 3)) best = d, pick = n;
-    }
-    return pick;
-}
-
-static int unknown_command(const char *name)
-{
-    const char *near = near_command(name);
-    fprintf(stderr, "acbb: unknown command '%s'", name);
-    if (near) fprintf(stderr, "; did you mean '%s'?", near);
-    fputs("\n\n", stderr);
-    overview(stderr);
-    return ACBB_EXIT_INPUT;
-}
 
 /* The row for argv[1] (and argv[2] for a two-word command); *first is
  * where its arguments start. NULL (message printed) when there is none. */
@@ -185,7 +144,7 @@ static const acbb_cli_command *find_command(int argc, char **argv, int *first, i
         }
     }
     if (!name_known) {
-        *rc = unknown_command(argv[1]);
+        *rc = acbb_cli_unknown_command(argv[1]);
         return NULL;
     }
     fprintf(stderr, "acbb: %s: expected one of:\n", argv[1]);
@@ -197,24 +156,6 @@ static const acbb_cli_command *find_command(int argc, char **argv, int *first, i
     }
     *rc = ACBB_EXIT_INPUT;
     return NULL;
-}
-
-static int cmd_help(const acbb_cli_args *a)
-{
-    if (a->n_pos == 0) {
-        overview(stdout);
-        return 0;
-    }
-    bool found = false;
-    for (size_t i = 0; i < acbb_cli_n_commands; i++) {
-        const acbb_cli_command *c = &acbb_cli_commands[i];
-        if (strcmp(c->name, a->pos[0]) != 0) continue;
-        if (a->n_pos > 1 && (!c->sub || strcmp(c->sub, a->pos[1]) != 0)) continue;
-        if (found) fputs("\n", stdout);
-        acbb_cli_print_usage(stdout, c);
-        found = true;
-    }
-    return found ? 0 : unknown_command(a->pos[0]);
 }
 
 static int cmd_metrics(const acbb_cli_args *a)
@@ -231,44 +172,19 @@ static int cmd_version(const acbb_cli_args *a)
     return 0;
 }
 
-/* The TUI keeps its own argument loop (ui/tui.c); this hands it the parsed
- * options and the preset, resolved through the search path (presets.h).
- * Without one it opens 7008C from that path; when none is found the TUI
- * starts from its built-in default scene. */
+/* The TUI gets its options as parsed here and the preset resolved through
+ * the search path (presets.h). Without one it opens 7008C from that path;
+ * when none is found the TUI starts from its built-in default scene. */
 static int cmd_tui(const acbb_cli_args *a)
 {
     char path[CLI_PATH_MAX];
-    const char *argv[12] = { "tui" };
-    int argc = 1;
-    if (a->val[CLI_OPT_PACE]) argv[argc++] = "--pace", argv[argc++] = a->val[CLI_OPT_PACE];
-    if (a->val[CLI_OPT_PLOT_DIR])
-        argv[argc++] = "--plot-dir", argv[argc++] = a->val[CLI_OPT_PLOT_DIR];
-    if (a->val[CLI_OPT_EXIT_AFTER_STEADY]) argv[argc++] = "--exit-after-steady";
-    if (a->val[CLI_OPT_NO_MOUSE]) argv[argc++] = "--no-mouse";
     const char *want = a->n_pos ? a->pos[0] : "7008C";
-    if (acbb_cli_resolve_preset(want, path, sizeof path, false) == 0) argv[argc++] = path;
-    else if (a->n_pos) argv[argc++] = want;   /* the TUI reports it */
-    argv[argc] = NULL;
-    return acbb_tui_main(argc, (char **)argv);
-}
-
-/* `report` keeps its own parser (src/cli_report.c, being replaced); the
- * table checks the options first and resolves the preset. */
-static int cmd_report(const acbb_cli_args *a)
-{
-    const char **argv = calloc(a->n_sets * 2 + 8, sizeof *argv);
-    if (!argv) return ACBB_EXIT_INTERNAL;
-    int argc = 0;
-    argv[argc++] = "report";
-    argv[argc++] = a->preset;
-    for (size_t i = 0; i < a->n_sets; i++) argv[argc++] = "--set", argv[argc++] = a->sets[i];
-    if (a->val[CLI_OPT_JSON]) argv[argc++] = "--json";
-    if (a->val[CLI_OPT_MD]) argv[argc++] = "--md", argv[argc++] = a->val[CLI_OPT_MD];
-    if (a->val[CLI_OPT_SENSITIVITY]) argv[argc++] = "--sensitivity";
-    if (a->val[CLI_OPT_INPUTS]) argv[argc++] = "--inputs", argv[argc++] = a->val[CLI_OPT_INPUTS];
-    int rc = acbb_cli_report(argc, (char **)argv);
-    free(argv);
-    return rc;
+    acbb_tui_args t = { .pace = a->val[CLI_OPT_PACE], .plot_dir = a->val[CLI_OPT_PLOT_DIR],
+                        .no_mouse = a->val[CLI_OPT_NO_MOUSE] != NULL,
+                        .exit_after_steady = a->val[CLI_OPT_EXIT_AFTER_STEADY] != NULL };
+    if (acbb_cli_resolve_preset(want, path, sizeof path, false) == 0) t.preset = path;
+    else if (a->n_pos) t.preset = want;   /* the TUI reports it */
+    return acbb_tui_main(&t);
 }
 
 static bool is_flag(const char *s, const char *lng, const char *shrt)
@@ -286,7 +202,7 @@ int main(int argc, char **argv)
         argv = tui_alone;
     }
     if (is_flag(argv[1], "--help", "-h")) {
-        overview(stdout);
+        acbb_cli_print_overview(stdout);
         return 0;
     }
     if (is_flag(argv[1], "--version", NULL)) return cmd_version(NULL);

@@ -6,30 +6,37 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/measure.h"
+#include "exit.h"
 #include "progress.h"
 
 /* A signal handler can only reach file-scope state: the CLI's one flag
- * (the engine keeps none; it is handed the pointer). */
+ * (the engine keeps none; it is handed the pointer). It holds the signal
+ * number, so the message can name it; the engine only tests non-zero. */
 static atomic_int interrupt_flag;
 static struct sigaction old_int, old_term;
 
 static void on_interrupt(int sig)
 {
-    (void)sig;
-    atomic_store(&interrupt_flag, 1);
+    atomic_store(&interrupt_flag, sig);
+    /* The first SIGINT or SIGTERM asks the command to stop; the next one
+     * of either finds the default action and kills at once. */
+    struct sigaction dfl = { .sa_handler = SIG_DFL };
+    sigemptyset(&dfl.sa_mask);
+    sigaction(SIGINT, &dfl, NULL);
+    sigaction(SIGTERM, &dfl, NULL);
 }
 
 const atomic_int *acbb_cli_interrupt_begin(void)
 {
     atomic_store(&interrupt_flag, 0);
-    /* SA_RESETHAND: the first signal asks the run to stop, a second one
-     * finds the default action and kills at once. */
-    struct sigaction sa = { .sa_handler = on_interrupt, .sa_flags = SA_RESETHAND };
+    struct sigaction sa = { .sa_handler = on_interrupt };
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
     return &interrupt_flag;
 }
+
+const atomic_int *acbb_cli_interrupt_flag(void) { return &interrupt_flag; }
 
 void acbb_cli_interrupt_end(void)
 {
@@ -38,6 +45,33 @@ void acbb_cli_interrupt_end(void)
 }
 
 bool acbb_cli_interrupted(void) { return atomic_load(&interrupt_flag) != 0; }
+
+const char *acbb_cli_interrupt_name(void)
+{
+    int sig = atomic_load(&interrupt_flag);
+    return sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "a signal";
+}
+
+int acbb_cli_cancelled(const char *cmd, const char *kept)
+{
+    if (!acbb_cli_interrupted()) return 0;
+    fprintf(stderr, "acbb: %s: cancelled by %s%s%s\n", cmd, acbb_cli_interrupt_name(),
+            kept && *kept ? "; " : "", kept ? kept : "");
+    return ACBB_EXIT_CANCELLED;
+}
+
+void acbb_cli_cancelled_json(FILE *f, const char *cmd, const char *kept)
+{
+    fprintf(f, "{\"status\": \"cancelled\", \"command\": \"%s\", \"signal\": \"%s\", "
+            "\"message\": \"%s\"}\n", cmd, acbb_cli_interrupt_name(), kept ? kept : "");
+}
+
+bool acbb_cli_progress_wanted(FILE *f)
+{
+    const char *env = getenv("ACBB_PROGRESS");
+    if (env && *env) return strcmp(env, "0") != 0;
+    return isatty(fileno(f)) != 0;
+}
 
 /* ---- the residual's decay ---- */
 
@@ -79,9 +113,7 @@ void acbb_cli_progress_init(acbb_cli_progress *p, FILE *f, double steady_tol)
     memset(p, 0, sizeof *p);
     p->f = f;
     p->target = steady_tol;
-    const char *env = getenv("ACBB_PROGRESS");
-    if (env && *env) p->on = strcmp(env, "0") != 0;
-    else p->on = isatty(fileno(f)) != 0;
+    p->on = acbb_cli_progress_wanted(f);
     p->t0_ms = acbb_now_ms();
     p->last_ms = -1e9;
 }

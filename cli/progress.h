@@ -1,11 +1,14 @@
 /* acbb CLI — watching and stopping a long run (issue "Nothing lost,
  * nothing overwritten, nothing hangs").
  *
- * Interrupts: acbb_cli_interrupt_begin installs SIGINT/SIGTERM handlers
- * that set one flag, passed as acbb_run_ctl.cancel (sim.h) so the engine
- * ends the run with ACBB_CANCELLED and the last good state. The handlers
- * reset themselves (SA_RESETHAND): a second Ctrl-C kills at once.
- * acbb_cli_interrupt_end restores the previous handlers.
+ * Interrupts (issue 16: every long command cancels the same way):
+ * acbb_cli_interrupt_begin installs one SIGINT+SIGTERM handler that sets
+ * one flag, passed to the engine as its cancel flag (acbb_run_ctl.cancel,
+ * acbb_sweep_opts.cancel, ...), so runs end within a step as
+ * ACBB_CANCELLED. The first signal also restores the default actions: a
+ * second one (either) kills at once. acbb_cli_interrupt_end restores the
+ * previous handlers; acbb_cli_cancelled then prints "acbb: CMD: cancelled
+ * by SIGINT; <what was kept>" and returns ACBB_EXIT_CANCELLED (3).
  *
  * Progress: one line on stderr, rewritten in place (\r) at most four times a
  * second and erased at the end: step, residual vs the steady target,
@@ -23,7 +26,19 @@
 /* Install the handlers; returns the flag they set (cleared first). */
 const atomic_int *acbb_cli_interrupt_begin(void);
 void acbb_cli_interrupt_end(void);
+/* The flag itself (set or not), for a caller that did not begin. */
+const atomic_int *acbb_cli_interrupt_flag(void);
 bool acbb_cli_interrupted(void);
+/* "SIGINT" or "SIGTERM": the signal that set the flag. */
+const char *acbb_cli_interrupt_name(void);
+/* When a signal set the flag: the message on stderr (`kept`, may be NULL,
+ * says what was written) and ACBB_EXIT_CANCELLED; else 0, silent. */
+int acbb_cli_cancelled(const char *cmd, const char *kept);
+/* {"status": "cancelled", "command", "signal", "message"} on f, for the
+ * commands that print JSON. `cmd` and `kept` are plain text (no quotes). */
+void acbb_cli_cancelled_json(FILE *f, const char *cmd, const char *kept);
+/* Progress on f: it is a terminal, or ACBB_PROGRESS=1 (0 turns it off). */
+bool acbb_cli_progress_wanted(FILE *f);
 
 /* Weighted least squares of ln(residual) against wall seconds, older
  * points fading (the decay rate changes as the run settles). */

@@ -1,9 +1,9 @@
 /* acbb CLI — `acbb report`: the seed's qualitative acceptance statements
  * (MODEL.md section 12, items 1-18) and its conclusions (seed section 5),
  * each judged HELD / NOT HELD / NOT EVALUATED from runs of the engine.
- * A thin client of the engine study (include/acbb/study.h): it parses the
- * command line, plans and runs the study and formats its results. Private
- * to the executable (src/cli.c dispatches `report` here).
+ * A thin client of the engine study (include/acbb/study.h): it plans and
+ * runs the study and formats its results; its options are rows of the
+ * command table (main.c), parsed by args.c.
  *
  *   acbb report PRESET [--set section.key=value]... [--json] [--md FILE]
  *               [--sensitivity] [--inputs K1,...]
@@ -29,6 +29,10 @@
  * --inputs K1,... (implies --sensitivity) varies only those inputs, and an
  * input without a plausible range is bad input (exit 2).
  *
+ * SIGINT / SIGTERM (progress.h) stop the runs within a step: no report is
+ * printed (--json prints {"status": "cancelled", ...}), no --md file is
+ * written, exit 3.
+ *
  * Exit status: 0 the report ran (whatever the verdicts: NOT HELD is a
  * finding, not an error); 2 bad input (preset, --set, options, --md path);
  * 3 some run failed (the report is still printed; the items that needed it
@@ -37,10 +41,8 @@
 #ifndef ACBB_CLI_REPORT_CLIENT_H
 #define ACBB_CLI_REPORT_CLIENT_H
 
-/* argv[0] is "report": call as acbb_cli_report(argc - 1, argv + 1) from
- * main's argv ("acbb", "report", PRESET, ...). Passing main's argc/argv
- * unchanged also works: a "report" in argv[1] is recognised and skipped.
- * Returns the exit status. */
-int acbb_cli_report(int argc, char **argv);
+#include "args.h"
+
+int acbb_cli_cmd_report(const acbb_cli_args *a);
 
 #endif

@@ -3,24 +3,15 @@
  * does the work; this file parses, prints and writes). */
 #include <cjson/cJSON.h>
 #include <math.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "acbb/measure.h"
 #include "acbb/plot.h"
 #include "acbb/sensitivity.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"
-
-static atomic_int stop_flag;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    atomic_store(&stop_flag, 1);
-}
+#include "progress.h"
 
 typedef struct {
     int show;
@@ -257,14 +248,23 @@ int acbb_cli_cmd_sensitivity(const acbb_cli_args *a)
     if (rc) return rc;
     acbb_sens_result *r = malloc(sizeof *r);
     if (!r) return ACBB_EXIT_INTERNAL;
-    progress_state ps = {.show = isatty(STDERR_FILENO), .last = 0};
+    progress_state ps = {.show = acbb_cli_progress_wanted(stderr), .last = 0};
     o.progress = on_progress;
     o.ctx = &ps;
-    o.cancel = &stop_flag;
-    signal(SIGINT, on_signal);
+    /* SIGINT / SIGTERM stop the runs within a step (progress.h); a
+     * table of some inputs only would read as the whole answer, so a
+     * cancelled analysis prints none. */
+    o.cancel = acbb_cli_interrupt_begin();
     acbb_error err = {{0}};
     acbb_status st = acbb_sensitivity_run(&sc, &o, r, &err);
-    signal(SIGINT, SIG_DFL);
+    acbb_cli_interrupt_end();
+    if (st == ACBB_CANCELLED) {
+        if (ps.show) fputc('\n', stderr);
+        const char *kept = "no table and no file written (they would be partial)";
+        if (a->val[CLI_OPT_JSON]) acbb_cli_cancelled_json(stdout, "sensitivity", kept);
+        free(r);
+        return acbb_cli_worst(acbb_cli_cancelled("sensitivity", kept), acbb_cli_stdout_check(0));
+    }
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: sensitivity: %s\n", acbb_cli_err_text(&err, st));
         free(r);

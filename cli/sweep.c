@@ -2,25 +2,15 @@
  * (include/acbb/sweep.h), streamed as each point finishes (sweep.h), or,
  * for the 1-D `--param K --values V` form alone, the table / JSON / CSV of
  * output.h once every point is in. */
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "acbb/measure.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"
 #include "output.h"
+#include "progress.h"
 #include "sweep.h"
-
-/* Ctrl-C: stop cleanly, every finished point already in the file. */
-static atomic_int stop_flag;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    atomic_store(&stop_flag, 1);
-}
 
 typedef struct {
     FILE *f;
@@ -165,6 +155,34 @@ static int legacy_output(const acbb_cli_args *a, const acbb_cli_point *pts, size
     return rc;
 }
 
+/* The 1-D form: every point's row at the end. A point the cancel stopped
+ * (or never started) keeps the row `cancelled` set here, so the table
+ * shows the finished points and, plainly, the others. */
+static int sweep_table(const acbb_cli_args *a, sweep_run *s, const acbb_scene *base,
+                       acbb_sweep_opts *o)
+{
+    s->pts = calloc(s->total, sizeof *s->pts);
+    if (!s->pts) return ACBB_EXIT_INTERNAL;
+    for (size_t i = 0; i < s->total; i++) {
+        acbb_cli_point *p = &s->pts[i];
+        snprintf(p->value, sizeof p->value, "%s", acbb_sweep_value(s->grid, i, 0));
+        p->status = ACBB_CANCELLED;
+        snprintf(p->message, sizeof p->message, "cancelled before it finished");
+    }
+    s->t0 = acbb_now_ms();
+    acbb_status st = acbb_sweep_run(s->grid, base, o, NULL);
+    show_progress(s, 1);
+    int rc = st == ACBB_OK || st == ACBB_CANCELLED ? legacy_output(a, s->pts, s->total)
+                                                   : acbb_cli_exit_for(st);
+    char kept[96];
+    snprintf(kept, sizeof kept, "the table shows the %zu finished point%s", s->done,
+             s->done == 1 ? "" : "s");
+    rc = acbb_cli_worst(rc, acbb_cli_cancelled("sweep", kept));
+    free(s->pts);
+    s->pts = NULL;
+    return rc;
+}
+
 /* Open --jsonl / --csv for streaming; an existing file is resumed. */
 static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
                      unsigned char *count)
@@ -219,28 +237,20 @@ static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *
     /* A point is done when every output file has it. */
     for (size_t i = 0; i < s->total; i++) count[i] = n_files && count[i] >= n_files;
     o->skip = count;
-    struct sigaction sa = { .sa_handler = on_signal }, old_int, old_term;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
     if (!rc) {
         s->total = acbb_sweep_n_todo(s->grid, o);
         s->t0 = acbb_now_ms();
         acbb_status st = acbb_sweep_run(s->grid, base, o, NULL);
         show_progress(s, 1);
-        if (st == ACBB_CANCELLED) {
-            fprintf(stderr, "acbb: sweep: interrupted after %zu points; run the same command "
-                            "again to resume\n", s->done);
-            rc = ACBB_EXIT_INTERNAL;
-        } else if (st != ACBB_OK) {
-            rc = acbb_cli_exit_for(st);
-        }
+        if (st != ACBB_OK && st != ACBB_CANCELLED) rc = acbb_cli_exit_for(st);
     }
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
     rc = acbb_cli_worst(rc, close_sinks(s));
     if (s->nonfinite) rc = acbb_cli_worst(rc, acbb_cli_stdout_check(s->nonfinite));
     if (s->failed) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    char kept[160];
+    snprintf(kept, sizeof kept, "%zu finished point%s recorded; run the same command again "
+             "to resume", s->done, s->done == 1 ? "" : "s");
+    rc = acbb_cli_worst(rc, acbb_cli_cancelled("sweep", kept));
     free(count);
     return rc;
 }
@@ -251,7 +261,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     int rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs);
     if (!rc) rc = acbb_cli_count(a, CLI_OPT_MAX_POINTS, 0, 1, ACBB_SWEEP_MAX_POINTS, &max_points);
     acbb_sweep_opts o = { .jobs = (int)jobs, .max_points = (size_t)max_points,
-                          .cancel = &stop_flag, .done = on_point };
+                          .done = on_point };
     if (!rc) rc = parse_shard(a, &o);
     acbb_sweep *g = NULL;
     if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;
@@ -263,20 +273,19 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
         return rc;
     }
     sweep_run s = { .grid = g, .total = acbb_sweep_n_points(g), .base = &base,
-                    .progress = isatty(STDERR_FILENO) };
+                    .progress = acbb_cli_progress_wanted(stderr) };
     o.ctx = &s;
     bool legacy = a->n_grids == 0 && !a->val[CLI_OPT_JSONL] && !a->val[CLI_OPT_SHARD] &&
                   !a->val[CLI_OPT_MAX_POINTS];
+    /* SIGINT / SIGTERM stop the sweep within a step; what finished is
+     * kept (progress.h). */
+    o.cancel = acbb_cli_interrupt_begin();
     if (!legacy) {
         rc = sweep_stream(a, &s, &base, &o);
     } else if (!(rc = check_values(g, &base, a->val[CLI_OPT_PARAM]))) {
-        s.pts = calloc(s.total, sizeof *s.pts);
-        s.progress = 0;
-        if (!s.pts) rc = ACBB_EXIT_INTERNAL;
-        else if (acbb_sweep_run(g, &base, &o, NULL) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;
-        else rc = legacy_output(a, s.pts, s.total);
-        free(s.pts);
+        rc = sweep_table(a, &s, &base, &o);
     }
+    acbb_cli_interrupt_end();
     acbb_sweep_free(g);
     return rc;
 }

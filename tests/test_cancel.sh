@@ -10,28 +10,27 @@ PRESETS=$PWD/presets
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
-now_ms() { date +%s%3N; }
+# caught PID: PID runs acbb (exec done: before it, the forked shell of a
+# background job ignores SIGINT) and catches SIGINT and SIGTERM (SigCgt bits
+# 2 and 15): the state the signals below wait for, instead of a time (60 s
+# only turns a hang into a failure).
+caught() {
+    local i m exe
+    exe=$(readlink -f "$ACBB")
+    for ((i = 0; i < 600; i++)); do
+        m=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null)
+        [ "$(readlink "/proc/$1/exe" 2>/dev/null)" = "$exe" ] && [ -n "$m" ] &&
+            (( (16#$m & 0x4002) == 0x4002 )) && return 0
+        kill -0 "$1" 2>/dev/null || return 1
+        sleep 0.1
+    done
+    return 1
+}
 
 # finite FILE NAME: valid JSON (a NaN would not parse) whose every number is finite.
 finite() {
     jq -e '[.. | numbers | select(isinfinite or isnan)] | length == 0' "$1" >/dev/null 2>&1
     t $? "$2"
-}
-
-# wait_handler PID: until PID runs acbb (exec done: before it, the forked
-# shell of a background job ignores SIGINT) and catches SIGINT (SigCgt bit
-# 2), i.e. a signal now cancels; a state, not a time (30 s only turns a
-# hang into a failure).
-wait_handler() {
-    local i mask exe
-    exe=$(readlink -f "$ACBB")
-    for ((i = 0; i < 300; i++)); do
-        mask=$(sed -n 's/^SigCgt:[[:space:]]*//p' "/proc/$1/status" 2>/dev/null)
-        [ "$(readlink "/proc/$1/exe" 2>/dev/null)" = "$exe" ] && [ -n "$mask" ] &&
-            (( 0x$mask & 2 )) && return 0
-        sleep 0.1
-    done
-    return 1
 }
 
 # wait_for FILE PATTERN SECONDS: until the (\r-split) FILE shows a line matching PATTERN.
@@ -45,19 +44,16 @@ wait_for() {
 }
 
 # 1. The issue's case: the dynamic level of combined-load (set-up alone takes
-#    many seconds), SIGINT once its handler is installed. How soon it ends
-#    after the signal is only reported (BENCHMARKS.md "Cancel latency").
+#    many seconds), SIGINT during the set-up. (How soon it ends is a
+#    benchmark, not a test: no clock here.)
 "$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
     >"$TMP/a.json" 2>"$TMP/err" &
 pid=$!
-wait_handler $pid
-t0=$(now_ms)
+caught $pid
 kill -INT $pid
 wait $pid
 rc=$?
-dt=$(($(now_ms) - t0))
-code $rc 3 "dynamic combined-load, SIGINT during set-up: exit 3"
-echo "# it ended ${dt} ms after the signal"
+code $rc 3 "dynamic combined-load, SIGINT in the set-up: exit 3"
 jqt "$TMP/a.json" '.status == "cancelled"' "JSON status is cancelled"
 finite "$TMP/a.json" "every number in that JSON is finite"
 has "$TMP/err" "cancelled" "stderr says cancelled"
@@ -89,23 +85,30 @@ else
     t 1 "the dynamic run took a step within 60 s"
 fi
 
-# 3. A second SIGINT kills at once (default action restored). The two are
-#    sent back to back; when the first already ended the run before the
-#    second arrived, the check cannot tell and is skipped.
-"$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
-    >/dev/null 2>"$TMP/err" &
-pid=$!
-wait_handler $pid
-kill -INT $pid
-kill -INT $pid 2>/dev/null
-wait $pid
-rc=$?
-if [ $rc -eq 3 ]; then
-    skip "a second SIGINT ends the process at once" "the first one ended the run first"
-else
-    [ $rc -eq 130 ]
-    t $? "a second SIGINT ends the process at once (exit $rc, want 130)"
-fi
+# 3. A second signal kills at once (the first restores the default
+#    actions of both). The two are sent back to back; when the first
+#    already ended the command before the second arrived, the check cannot
+#    tell and is skipped.
+second() {   # SIG1 SIG2 WANT CMD...
+    local s1=$1 s2=$2 want=$3
+    shift 3
+    "$ACBB" "$@" >/dev/null 2>"$TMP/err" &
+    pid=$!
+    caught $pid
+    kill -"$s1" $pid
+    kill -"$s2" $pid 2>/dev/null
+    wait $pid
+    rc=$?
+    if [ $rc -eq 3 ]; then
+        skip "$1 SIG$s1 then SIG$s2 ends the process at once" "the first one ended it first"
+    else
+        [ $rc -eq "$want" ]
+        t $? "$1: SIG$s1 then SIG$s2 ends the process at once (exit $rc, want $want)"
+    fi
+}
+second INT INT 130 run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json
+second INT TERM 143 sweep "$PRESETS/7008C.ini" --grid operating.axial_load_N=50:1000:4000 \
+    --jsonl "$TMP/second.jsonl"
 
 # 4. Without a terminal (and without ACBB_PROGRESS) nothing is drawn.
 ACBB_PROGRESS= "$ACBB" run "$PRESETS/7008C.ini" --quiet 2>"$TMP/err"

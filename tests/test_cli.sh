@@ -270,6 +270,56 @@ t $? "help texts fit 80 columns"
 "$ACBB" help nosuch >"$TMP/out" 2>"$TMP/err"
 code $? 2 "help of an unknown command exits 2"
 
+# Help, usage and the man page come from the command table (issue 16): every
+# row of the table in cli/main.c is in `acbb help` and in `acbb help --man`
+# (what meson installs as acbb.1), every option row of cli/args.c in the
+# man page; tui and report print their usage from their rows too.
+sed -n -E 's/^    \{ "([a-z]+)", (NULL|"([a-z]+)"),.*/\1 \3/p' cli/main.c | sed 's/ $//' \
+    >"$TMP/rows.txt"
+"$ACBB" help >"$TMP/help.txt" 2>"$TMP/err"
+"$ACBB" help --man >"$TMP/acbb.1" 2>"$TMP/err"
+code $? 0 "help --man exits 0"
+missing=""
+while read -r name sub; do
+    cmd="$name${sub:+ $sub}"
+    grep -q "^  $cmd" "$TMP/help.txt" || missing="$missing help:$cmd"
+    grep -q -F "\\fBacbb $cmd\\fR" "$TMP/acbb.1" || missing="$missing man:$cmd"
+done <"$TMP/rows.txt"
+nrows=$(wc -l <"$TMP/rows.txt")
+[ "$nrows" -ge 18 ] && [ -z "$missing" ]
+t $? "every command of the table ($nrows) is in acbb help and the man page${missing:+ (missing:$missing)}"
+opts=$(sed -n -E 's/^    \[CLI_OPT_[A-Z_]+\] = \{ "([a-z-]+)".*/\1/p' cli/args.c)
+missing=""
+nopts=0
+for o in $opts; do
+    nopts=$((nopts + 1))
+    roff=$(printf '%s' "--$o" | sed 's/-/\\-/g')
+    grep -q -F "\\fB$roff\\fR" "$TMP/acbb.1" || missing="$missing --$o"
+done
+[ "$nopts" -ge 30 ] && [ -z "$missing" ]
+t $? "every option of the table ($nopts) is in the man page${missing:+ (missing:$missing)}"
+grep -q '^\.SH COMMANDS' "$TMP/acbb.1" && grep -q '^\.SH EXIT STATUS' "$TMP/acbb.1" &&
+    grep -q 'cancelled by SIGINT' "$TMP/acbb.1"
+t $? "the man page has COMMANDS and EXIT STATUS (with the cancel)"
+if command -v groff >/dev/null 2>&1; then
+    groff -man -Tutf8 -ww "$TMP/acbb.1" 2>"$TMP/groff.err" >/dev/null
+    [ ! -s "$TMP/groff.err" ]
+    t $? "groff renders the man page without a warning"
+else
+    skip "groff renders the man page without a warning" "no groff"
+fi
+for c in tui report; do
+    "$ACBB" $c --help >"$TMP/c-help.txt" 2>"$TMP/err"
+    "$ACBB" help $c >"$TMP/help-c.txt" 2>&1
+    grep -q "^usage: acbb $c " "$TMP/c-help.txt" && cmp -s "$TMP/c-help.txt" "$TMP/help-c.txt"
+    t $? "$c --help is its table row's usage, as help $c"
+done
+"$ACBB" tui --pace fast >"$TMP/out" 2>"$TMP/err"
+code $? 2 "tui --pace fast exits 2 (parsed by the table, checked by the TUI)"
+"$ACBB" report "$PRESET" --md >"$TMP/out" 2>"$TMP/err"
+code $? 2 "report --md without a value exits 2"
+has "$TMP/err" "option needs a value: --md" "the one parser says so"
+
 # ---- unknown and misplaced options ----
 "$ACBB" run "$PRESET" --josn >"$TMP/out" 2>"$TMP/err"
 code $? 2 "misspelt option --josn exits 2"
@@ -330,8 +380,9 @@ if [ -n "$BUILD" ] && command -v meson >/dev/null 2>&1; then
     PDIR=$(find "$TMP/d" -type d -path '*/share/acbb/presets' | head -n 1)
     [ -n "$PDIR" ] && [ -f "$PDIR/7008C.ini" ] && [ -f "$PDIR/teaching-7node.ini" ]
     t $? "the presets are installed (${PDIR#$TMP/d})"
-    [ -n "$(find "$TMP/d" -path '*/man1/acbb.1' -type f)" ]
-    t $? "the man page acbb(1) is installed"
+    MAN=$(find "$TMP/d" -path '*/man1/acbb.1' -type f | head -n 1)
+    [ -n "$MAN" ] && cmp -s "$MAN" "$TMP/acbb.1"
+    t $? "the man page acbb(1) is installed, as acbb help --man prints it"
     mkdir -p "$TMP/elsewhere" "$TMP/xdg-empty"
     (cd "$TMP/elsewhere" && XDG_CONFIG_HOME="$TMP/xdg-empty" "$INST" presets) \
         >"$TMP/ipresets.txt" 2>"$TMP/err"

@@ -1,9 +1,45 @@
 /* The progress line's ETA (cli/progress.c): a log-linear fit of the
  * residual over wall time. For r(t) = r0 exp(-t/tau) the time to reach the
- * target is tau ln(r(now)/target) exactly (hand calculation below). */
+ * target is tau ln(r(now)/target) exactly (hand calculation below). And the
+ * one SIGINT+SIGTERM handler (issue 16): the first signal sets the flag
+ * and leaves both at their default action, so a second one kills. */
 #include <math.h>
+#include <signal.h>
+#include <string.h>
 #include "tap.h"
 #include "../cli/progress.h"
+
+static bool is_default(int sig)
+{
+    struct sigaction sa;
+    sigaction(sig, NULL, &sa);
+    return sa.sa_handler == SIG_DFL;
+}
+
+/* Raised in-process: deterministic, unlike two kill(1)s racing the exit. */
+static void handler_tests(void)
+{
+    signal(SIGTERM, SIG_IGN);   /* what end() must restore */
+    const atomic_int *flag = acbb_cli_interrupt_begin();
+    ok(!is_default(SIGINT) && !is_default(SIGTERM) && atomic_load(flag) == 0 &&
+       acbb_cli_cancelled("x", NULL) == 0, "begin: both caught, flag clear, not cancelled");
+    raise(SIGTERM);
+    ok(atomic_load(flag) == SIGTERM && acbb_cli_interrupted() &&
+       flag == acbb_cli_interrupt_flag(), "SIGTERM sets the one flag the engine is given");
+    ok(is_default(SIGINT) && is_default(SIGTERM),
+       "after the first signal both are at their default: a second one kills");
+    ok(strcmp(acbb_cli_interrupt_name(), "SIGTERM") == 0, "the signal is named");
+    acbb_cli_interrupt_end();
+    struct sigaction sa;
+    sigaction(SIGTERM, NULL, &sa);
+    ok(sa.sa_handler == SIG_IGN && is_default(SIGINT), "end restores the previous actions");
+    ok(acbb_cli_cancelled("x", "kept") == 3, "cancelled: exit status 3");
+    acbb_cli_interrupt_begin();
+    raise(SIGINT);
+    ok(atomic_load(flag) == SIGINT && strcmp(acbb_cli_interrupt_name(), "SIGINT") == 0,
+       "begin again clears it; SIGINT sets it");
+    acbb_cli_interrupt_end();
+}
 
 int main(void)
 {
@@ -41,6 +77,8 @@ int main(void)
     double slow = 20.0 * log(exp(-10 - 9.9 / 20.0) / 1e-8);
     ok(eta > 0.8 * slow && eta < 1.25 * slow,
        "after the decay slows, the ETA follows the slow rate (%.1f s vs %.1f s)", eta, slow);
+
+    handler_tests();
     printf("1..%d\n", tap_n);
     return tap_failed != 0;
 }

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "acbb/measure.h"
+#include "../cli/exit.h"
 #include "screens.h"
 #include "recover.h"
 
@@ -466,7 +467,7 @@ static void take_state(acbb_app *a)
     if (a->exit_after_steady && a->start_cmd && a->st.cmd_done >= a->start_cmd &&
         a->st.phase == ACBB_WORKER_DONE) {
         a->quit = 1;
-        a->exit_code = a->st.snap.state == ACBB_RUN_CONVERGED ? 0 : 3;
+        a->exit_code = a->st.snap.state == ACBB_RUN_CONVERGED ? ACBB_EXIT_OK : ACBB_EXIT_SOLVER;
     }
 }
 
@@ -562,7 +563,7 @@ static void handle_signals(acbb_app *a, int *redraw)
          * caller restores the terminal. */
         acbb_recover_write(&a->ed);
         a->quit = 1;
-        a->exit_code = 128 + ev.fatal;
+        a->exit_code = ACBB_EXIT_SIGNAL(ev.fatal);
     } else if (ev.interrupt) {
         /* Ctrl-C is "quit"; a second one while asking means yes, and the
          * edits go to the recovery file rather than being lost. */
@@ -589,7 +590,7 @@ static void read_keys(acbb_app *a, int *redraw, int *spins)
     *spins = got ? 0 : *spins + 1;
     if (*spins > HANGUP_SPINS) { /* the terminal went away without SIGHUP */
         a->quit = 1;
-        a->exit_code = 1;
+        a->exit_code = ACBB_EXIT_HANGUP;
     }
     *redraw |= got;
 }
@@ -654,7 +655,7 @@ int acbb_app_run(const acbb_app_options *opt)
         free(a);
         free(preview);
         fprintf(stderr, "acbb tui: out of memory\n");
-        return 1;
+        return ACBB_EXIT_INTERNAL;
     }
     a->preview = preview;
     a->chart_by_time = 1;
@@ -668,7 +669,7 @@ int acbb_app_run(const acbb_app_options *opt)
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         free(preview);
         free(a);
-        return 2;
+        return ACBB_EXIT_INPUT;
     }
     int rc = 0;
     if (!opt->no_mouse) a->mouse = acbb_term_mouse(&a->term);
@@ -680,7 +681,7 @@ int acbb_app_run(const acbb_app_options *opt)
         acbb_sweepjob_free(a->sweep);
         acbb_sensjob_free(a->sens);
         fprintf(stderr, "acbb tui: %s\n", err.msg);
-        rc = 1;
+        rc = ACBB_EXIT_INTERNAL;
     } else {
         if (a->exit_after_steady) acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started");
         loop(a);

@@ -1,7 +1,20 @@
 /* acbb — the ncurses workbench, entry point for the acbb executable. */
 #ifndef ACBB_TUI_H
 #define ACBB_TUI_H
-/* `acbb` with no arguments and `acbb tui [PRESET]` land here; argv[0] is
- * "tui" (or the program name when started bare). Returns the exit code. */
-int acbb_tui_main(int argc, char **argv);
+
+#include <stdbool.h>
+
+/* `acbb` alone and `acbb tui [options] [PRESET]`: the options as the CLI's
+ * one parser (cli/args.c, the `tui` row of the command table) read them.
+ * Strings point into argv; NULL when absent. */
+typedef struct {
+    const char *preset;      /* resolved path, or as typed (the TUI reports it) */
+    const char *pace;        /* --pace N */
+    const char *plot_dir;    /* --plot-dir DIR */
+    bool no_mouse, exit_after_steady;
+} acbb_tui_args;
+
+/* Returns the exit status (cli/exit.h). */
+int acbb_tui_main(const acbb_tui_args *args);
+
 #endif
