@@ -89,8 +89,9 @@ const acbb_cli_command acbb_cli_commands[] = {
       SCENE_OPTS | O(KIND) | O(OUT) | O(DUMB) | O(SIZE), 1, 1, 0, acbb_cli_plot },
     { "bench", "speed", "[PRESET]",
       "wall time of one run and of the 8-load sweep",
-      "Without PRESET: 7008C. --repeat defaults to 5; 1 thread, then every CPU.\n",
-      SCENE_OPTS | O(REPEAT), 0, 1, 0, acbb_cli_cmd_bench_speed },
+      "Without PRESET: 7008C. --repeat defaults to 5; 1 thread, then --jobs\n"
+      "(default: every CPU the process may use).\n",
+      SCENE_OPTS | O(REPEAT) | O(JOBS), 0, 1, 0, acbb_cli_cmd_bench_speed },
     { "bench", "accuracy", "PRESET",
       "error vs wall time, one fidelity knob at a time",
       "--repeat defaults to 3 (1..1000). Exit 3 when a setting did not converge,\n"
