@@ -60,7 +60,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "Shards: --shard K/N on N machines, then `acbb merge`. --param/--values alone:\n"
       "one dimension, printed as a table (or --json, --csv) at the end.\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
-      O(SHARD) | O(MAX_POINTS), 1, 1, 0, acbb_cli_cmd_sweep },
+      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT), 1, 1, 0, acbb_cli_cmd_sweep },
     { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
       "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"

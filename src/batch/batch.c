@@ -182,7 +182,8 @@ acbb_status acbb_batch_run(size_t n, const acbb_batch_opts *o, acbb_batch_stats 
     if (!o || !o->scene) return ACBB_EINVAL;
     pool pl = { .n = n, .o = o };
     int workers = acbb_batch_workers(n, o->jobs);
-    pl.sim_threads = workers > 1 ? 1 : 0;
+    /* One worker on a one-CPU mask: no ball workers either (dynamic level). */
+    pl.sim_threads = workers > 1 || acbb_batch_cpus() == 1 ? 1 : 0;
     atomic_init(&pl.next, 0);
     pthread_mutex_init(&pl.lock, NULL);
     workers = n ? spawn(workers, pool_worker, &pl) : 1;
