@@ -235,7 +235,8 @@ static int wait_step_due(acbb_worker *w, double last_step, double sim_dt)
 
 /* ---- comparison (its own thread, on the batch runner) ---- */
 
-static void compare_publish(acbb_worker *w)
+/* Called with w->mu held: count the publication, unlock, wake the UI. */
+static void compare_publish_unlock(acbb_worker *w)
 {
     w->st.publications++;
     pthread_mutex_unlock(&w->mu);
@@ -261,7 +262,7 @@ static void compare_step(void *ctx, size_t v, const acbb_sim *sim)
     if (w->cmp_step[v].iteration % 16 != 0) return;
     pthread_mutex_lock(&w->mu);
     w->st.compare.snap[v] = w->cmp_step[v];
-    compare_publish(w);
+    compare_publish_unlock(w);
 }
 
 static void compare_done(void *ctx, const acbb_batch_result *r)
@@ -273,7 +274,7 @@ static void compare_done(void *ctx, const acbb_batch_result *r)
     c->ok[r->index] = r->snap != NULL;
     if (r->snap) c->snap[r->index] = *r->snap;
     else copy_text(c->message, sizeof c->message, r->message);
-    compare_publish(w);
+    compare_publish_unlock(w);
 }
 
 /* Both variants side by side (as many at once as the CPUs allow), on a
@@ -286,7 +287,7 @@ static void *compare_main(void *arg)
     acbb_batch_run(2, &o, NULL);
     pthread_mutex_lock(&w->mu);
     w->st.compare.phase = ACBB_CMP_DONE;
-    compare_publish(w);
+    compare_publish_unlock(w);
     return NULL;
 }
 
