@@ -16,7 +16,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_PLOT] = { "plot", "FILE", "draw with gnuplot to FILE.png or FILE.svg" },
     [CLI_OPT_PARAM] = { "param", "KEY", "the swept key, section.key (1-D shorthand of --grid)" },
     [CLI_OPT_VALUES] = { "values", "V1,V2,...", "the values of --param, in preset units" },
-    [CLI_OPT_JOBS] = { "jobs", "N", "parallel runs (default: the number of CPUs)" },
+    [CLI_OPT_JOBS] = { "jobs", "N", "parallel runs (default: the CPUs this process may use)" },
+    [CLI_OPT_TRANSIENT] = { "transient", NULL, "run each point's transient (default: the steady "
+                            "solve; only the transient catches a runaway)" },
     [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },
     [CLI_OPT_KIND] = { "kind", "KIND",
                        "temperature|losses|loads|angles|history-loads|all (default temperature)" },

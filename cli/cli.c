@@ -3,7 +3,6 @@
  * engine's one run loop (acbb_sim_drive, DESIGN.md "Data flow") and writes
  * the snapshot as a table, JSON or CSV (output.h). Exit statuses: exit.h. */
 #include <math.h>
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -11,11 +10,13 @@
 #include <string.h>
 #include <sys/utsname.h>
 #include <unistd.h>
+#include "acbb/batch.h"
 #include "acbb/history.h"
 #include "acbb/measure.h"
 #include "acbb/scene.h"
 #include "acbb/fidelity.h"
 #include "acbb/sim.h"
+#include "acbb/study.h"
 #include "acbb/units.h"
 #include "commands.h"
 #include "common.h"
@@ -62,72 +63,37 @@ static acbb_status drive(acbb_sim *sim, drive_ctx *d)
     return st;
 }
 
-static void run_point(acbb_cli_point *p, const atomic_int *cancel, int threads)
+/* Independent runs on the engine's batch runner (batch.h): results do not
+ * depend on the number of workers. Each point runs as its scene says
+ * (transient by default): `study` publishes the iterations to steady state
+ * and `bench speed` times the scene as given. */
+static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                               acbb_error *err)
 {
-    acbb_sim *sim = NULL;
-    acbb_error err = { { 0 } };
-    double t0 = acbb_now_ms();
-    p->status = acbb_sim_create(&p->scene, &(acbb_sim_opts){ cancel, threads }, &sim, &err);
-    if (p->status != ACBB_OK) {
-        p->have_snap = false;
-        snprintf(p->message, sizeof p->message, "%s", acbb_cli_err_text(&err, p->status));
-        p->wall_ms = acbb_now_ms() - t0;
-        return;
-    }
-    p->status = drive(sim, &(drive_ctx){ .snap = &p->snap, .cancel = cancel });
-    p->have_snap = true;
-    acbb_sim_free(sim);
-    p->wall_ms = acbb_now_ms() - t0;
+    (void)err;
+    *out = ((const acbb_cli_point *)ctx)[i].scene;
+    *mode = ACBB_BATCH_AS_SCENE;
+    return ACBB_OK;
 }
 
-/* Independent runs in parallel: each Sim is private to one thread and the
- * engine keeps no global mutable state (common rules), so the results do
- * not depend on the number of threads. */
-typedef struct {
-    acbb_cli_point *pts;
-    size_t n;
-    atomic_size_t next;
-    const atomic_int *cancel;
-    int sim_threads;    /* acbb_sim_opts.threads: 1 when points fill the cores */
-} point_pool;
-
-static void *pool_worker(void *arg)
+static void point_done(void *ctx, const acbb_batch_result *r)
 {
-    point_pool *pool = arg;
-    for (;;) {
-        size_t i = atomic_fetch_add(&pool->next, 1);
-        if (i >= pool->n) return NULL;
-        acbb_cli_point *p = &pool->pts[i];
-        if (pool->cancel && atomic_load(pool->cancel)) {
-            p->have_snap = false;
-            p->status = ACBB_CANCELLED;
-            snprintf(p->message, sizeof p->message, "cancelled before it started");
-            continue;
-        }
-        run_point(p, pool->cancel, pool->sim_threads);
-    }
+    acbb_cli_point *p = &((acbb_cli_point *)ctx)[r->index];
+    p->status = r->status;
+    p->have_snap = r->snap != NULL;
+    p->wall_ms = r->wall_ms;
+    if (r->snap) p->snap = *r->snap;
+    else snprintf(p->message, sizeof p->message, "%s", r->message);
 }
 
-static long cpu_count(void)
+/* Returns the number of workers that ran. */
+static int run_points(acbb_cli_point *pts, size_t n, long jobs, const atomic_int *cancel)
 {
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n > 0 ? n : 1;
-}
-
-static void run_points(acbb_cli_point *pts, size_t n, long jobs, const atomic_int *cancel)
-{
-    point_pool pool = { .pts = pts, .n = n, .cancel = cancel };
-    atomic_init(&pool.next, 0);
-    size_t extra = jobs > 1 ? (size_t)jobs - 1 : 0;
-    if (extra > n) extra = n;
-    pthread_t tid[64];
-    if (extra > 64) extra = 64;
-    pool.sim_threads = extra > 0 ? 1 : 0;
-    size_t started = 0;
-    for (; started < extra; started++)
-        if (pthread_create(&tid[started], NULL, pool_worker, &pool) != 0) break;
-    pool_worker(&pool); /* the main thread works too; if no thread started, alone */
-    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
+    acbb_batch_opts o = { .jobs = (int)jobs, .cancel = cancel, .scene = point_scene,
+                          .done = point_done, .ctx = pts };
+    acbb_batch_stats st = { 0 };
+    acbb_batch_run(n, &o, &st);
+    return st.workers;
 }
 
 static bool points_ok(const acbb_cli_point *pts, size_t n)
@@ -291,9 +257,11 @@ int acbb_cli_cmd_edit(const acbb_cli_args *a)
 
 /* ---- acbb study ---- */
 
-static const double study_loads[] = { 50, 100, 150, 200, 400, 600, 800, 1000 };
-static const double study_speeds[] = { 2000, 4000, 6000, 8000, 10000, 12000, 14000, 16000 };
-#define STUDY_N 8
+/* The engine study's abscissae (study.h); the load sweep runs at the
+ * scene's own speed. */
+#define STUDY_N ACBB_STUDY_NPTS
+#define study_loads acbb_study_loads
+#define study_speeds acbb_study_speeds
 
 /* Pair k of the study: TE point 2k and WTE point 2k+1, otherwise equal.
  * The scene is a plain value in SI units, so the study edits it directly. */
@@ -317,7 +285,7 @@ static int study_table(const acbb_cli_args *a, long jobs);
 int acbb_cli_cmd_study(const acbb_cli_args *args)
 {
     long jobs;
-    int rc = acbb_cli_count(args, CLI_OPT_JOBS, cpu_count(), 1, 100000, &jobs);
+    int rc = acbb_cli_count(args, CLI_OPT_JOBS, acbb_batch_cpus(), 1, 100000, &jobs);
     if (rc) return rc;
     acbb_cli_args *a = malloc(sizeof *a);
     if (!a) return ACBB_EXIT_INTERNAL;
@@ -378,9 +346,10 @@ static int study_table(const acbb_cli_args *a, long jobs)
 
 /* ---- acbb bench speed ---- */
 
-/* Wall time of `n` points run with `jobs` threads, `repeat` times. */
-static int bench_points(const acbb_scene *base, const double *loads, size_t n,
-                        long jobs, long repeat, double *times, acbb_cli_point *pts)
+/* Wall time of `n` points run with `jobs` workers, `repeat` times;
+ * *workers (may be NULL) gets how many ran. */
+static int bench_points(const acbb_scene *base, const double *loads, size_t n, long jobs,
+                        long repeat, double *times, acbb_cli_point *pts, int *workers)
 {
     for (long r = 0; r < repeat; r++) {
         for (size_t i = 0; i < n; i++) {
@@ -389,8 +358,9 @@ static int bench_points(const acbb_scene *base, const double *loads, size_t n,
             if (loads) pts[i].scene.axial_load = loads[i];
         }
         double t0 = acbb_now_ms();
-        run_points(pts, n, jobs, acbb_cli_interrupt_flag());
+        int w = run_points(pts, n, jobs, acbb_cli_interrupt_flag());
         times[r] = acbb_now_ms() - t0;
+        if (workers) *workers = w;
         if (!points_ok(pts, n)) return ACBB_EXIT_SOLVER;
     }
     return 0;
@@ -408,8 +378,9 @@ static int bench_fail(const acbb_cli_point *pts, size_t n)
 
 int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
 {
-    long repeat;
+    long repeat, jobs;
     int rc = acbb_cli_count(a, CLI_OPT_REPEAT, 5, 1, 100000, &repeat);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, acbb_batch_cpus(), 1, 100000, &jobs);
     if (rc) return rc;
     /* Without PRESET: the seed's case, through the search path. */
     acbb_cli_args with_default = *a;
@@ -423,7 +394,6 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
     acbb_scene base;
     if ((rc = acbb_cli_load_scene(&with_default, &base))) return rc;
 
-    long ncpu = cpu_count();
     struct utsname u;
     const char *machine = uname(&u) == 0 ? u.machine : "unknown";
     double *times = calloc((size_t)repeat, sizeof *times);
@@ -435,21 +405,22 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
     }
     acbb_cli_interrupt_begin();
     printf("acbb bench speed %s (median of %ld)\n", preset, repeat);
-    printf("machine            %s, %ld CPUs online (sysconf)\n", machine, ncpu);
+    printf("machine            %s, %d CPUs usable (affinity)\n", machine, acbb_batch_cpus());
 
-    if ((rc = bench_points(&base, NULL, 1, 1, repeat, times, pts))) goto fail;
+    if ((rc = bench_points(&base, NULL, 1, 1, repeat, times, pts, NULL))) goto fail;
     printf("one run            %10.2f ms  (%ld iterations, %s, model %s)\n",
            acbb_median(times, (size_t)repeat), pts[0].snap.iteration,
            acbb_cli_point_status(&pts[0]), acbb_model_level_name(base.model));
-    if ((rc = bench_points(&base, study_loads, STUDY_N, 1, repeat, times, pts)))
+    if ((rc = bench_points(&base, study_loads, STUDY_N, 1, repeat, times, pts, NULL)))
         goto fail;
     printf("8-load sweep       %10.2f ms  (1 thread; loads 50..1000 N)\n",
            acbb_median(times, (size_t)repeat));
-    if (ncpu > 1) {
-        if ((rc = bench_points(&base, study_loads, STUDY_N, ncpu, repeat, times, pts)))
+    if (jobs > 1) {
+        int w = 1;
+        if ((rc = bench_points(&base, study_loads, STUDY_N, jobs, repeat, times, pts, &w)))
             goto fail;
-        printf("8-load sweep       %10.2f ms  (%ld threads)\n",
-               acbb_median(times, (size_t)repeat), ncpu);
+        printf("8-load sweep       %10.2f ms  (%d threads)\n", acbb_median(times, (size_t)repeat),
+               w);
     }
     acbb_cli_interrupt_end();
     rc = acbb_cli_stdout_check(0);

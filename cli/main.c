@@ -58,7 +58,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "Shards: --shard K/N on N machines, then `acbb merge`. --param/--values alone:\n"
       "one dimension, printed as a table (or --json, --csv) at the end.\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
-      O(SHARD) | O(MAX_POINTS), 1, 1, 0, acbb_cli_cmd_sweep },
+      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT), 1, 1, 0, acbb_cli_cmd_sweep },
     { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
       "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
@@ -87,8 +87,9 @@ const acbb_cli_command acbb_cli_commands[] = {
       SCENE_OPTS | O(KIND) | O(OUT) | O(DUMB) | O(SIZE), 1, 1, 0, acbb_cli_plot },
     { "bench", "speed", "[PRESET]",
       "wall time of one run and of the 8-load sweep",
-      "Without PRESET: 7008C. --repeat defaults to 5; 1 thread, then every CPU.\n",
-      SCENE_OPTS | O(REPEAT), 0, 1, 0, acbb_cli_cmd_bench_speed },
+      "Without PRESET: 7008C. --repeat defaults to 5; 1 thread, then --jobs\n"
+      "(default: every CPU the process may use).\n",
+      SCENE_OPTS | O(REPEAT) | O(JOBS), 0, 1, 0, acbb_cli_cmd_bench_speed },
     { "bench", "accuracy", "PRESET",
       "error vs wall time, one fidelity knob at a time",
       "--repeat defaults to 3 (1..1000). Exit 3 when a setting did not converge,\n"

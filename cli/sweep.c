@@ -261,7 +261,8 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     int rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs);
     if (!rc) rc = acbb_cli_count(a, CLI_OPT_MAX_POINTS, 0, 1, ACBB_SWEEP_MAX_POINTS, &max_points);
     acbb_sweep_opts o = { .jobs = (int)jobs, .max_points = (size_t)max_points,
-                          .done = on_point };
+                          .done = on_point,
+                          .transient = a->val[CLI_OPT_TRANSIENT] != NULL };
     if (!rc) rc = parse_shard(a, &o);
     acbb_sweep *g = NULL;
     if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;

@@ -35,11 +35,17 @@ t $? "an item is 'turned' exactly when one of its changes turns its verdict"
 code $? 0 "acbb sensitivity of P_T TE - WTE at 15000 rpm, 1000 N runs"
 jq -r '.inputs[] | (select(.at_low > 0 and .low != .base) | "\(.key)=\(.low) \(.at_low)"),
                    (select(.at_high > 0 and .high != .base) | "\(.key)=\(.high) \(.at_high)")' \
-    "$TMP/oat.json" | awk '{ printf "%s %.4g\n", $1, $2 }' | sort >"$TMP/want.txt"
+    "$TMP/oat.json" | sort >"$TMP/want.txt"
 jq -r '.[0].robustness.conditions[0].turned_by[] | "\(.key)=\(.value) \(.at)"' "$TMP/sens.json" |
-    awk '{ printf "%s %.4g\n", $1, $2 }' | sort >"$TMP/got.txt"
-[ -s "$TMP/want.txt" ] && cmp -s "$TMP/want.txt" "$TMP/got.txt"
-t $? "condition 1 turns at the same $(wc -l <"$TMP/want.txt") ends with the same numbers as acbb sensitivity"
+    sort >"$TMP/got.txt"
+# The same ends; the numbers to 1e-5: the study's 1000 N TE point is its
+# recorded transient, `acbb sensitivity` runs the steady solve (batch.h),
+# and the two steady states differ by ~5e-9 of P_T (~3e-7 W of a 0.09 W
+# difference).
+[ -s "$TMP/want.txt" ] && [ "$(cut -d' ' -f1 "$TMP/want.txt")" = "$(cut -d' ' -f1 "$TMP/got.txt")" ] &&
+    paste -d' ' "$TMP/want.txt" "$TMP/got.txt" | awk '{ d = $2 - $4; if (d < 0) d = -d
+        if (d > 1e-5 * ($2 < 0 ? -$2 : $2)) bad = 1 } END { exit bad }'
+t $? "condition 1 turns at the same $(wc -l <"$TMP/want.txt") ends with the same numbers (1e-5) as acbb sensitivity"
 
 "$ACBB" report "$PRESET" --sensitivity >"$TMP/sens.txt" 2>"$TMP/err"
 code $? 0 "report --sensitivity (text) runs"

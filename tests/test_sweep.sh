@@ -43,14 +43,55 @@ t $? "every point converged; the loss columns sum to P_total_W"
 t $? "CSV: header (grid keys, ..., wall_ms) + 8 rows"
 
 # The same point alone, through acbb run: the sweep changes nothing else.
-"$ACBB" run "$PRESET" --set fidelity.model=quasi-static --set operating.axial_load_N=800 \
-    --set operating.inner_speed_rpm=12000 --set effects.thermal_expansion=on --json \
-    >"$TMP/run.json" 2>>"$TMP/err"
-jq -s -e --slurpfile r "$TMP/run.json" 'def abs: if . < 0 then -. else . end;
-    map(select(.index == 6))[0] | (.P_total_W - $r[0].losses_W.total | abs) <= 1e-9 * .P_total_W
-    and .iterations == $r[0].iterations' \
-    "$TMP/one.jsonl" >/dev/null 2>&1
-t $? "point 6 equals acbb run with the same --set edits"
+# A sweep point is the steady solve (include/acbb/sweep.h), so the run
+# says fidelity.thermal_mode=steady; --transient runs the scene's transient.
+point6() {
+    "$ACBB" run "$PRESET" --set fidelity.model=quasi-static --set operating.axial_load_N=800 \
+        --set operating.inner_speed_rpm=12000 --set effects.thermal_expansion=on --json "$@" \
+        >"$TMP/run.json" 2>>"$TMP/err"
+}
+# (run --json prints 10 significant digits: equal to that; the same steps)
+same6() {
+    jq -s -e --slurpfile r "$TMP/run.json" 'def abs: if . < 0 then -. else . end;
+        map(select(.index == 6))[0] | (.P_total_W - $r[0].losses_W.total | abs)
+        <= 1e-9 * .P_total_W and .iterations == $r[0].iterations' "$1" >/dev/null 2>&1
+}
+point6 --set fidelity.thermal_mode=steady
+same6 "$TMP/one.jsonl"
+t $? "point 6 equals acbb run with the same --set edits and thermal_mode=steady"
+sweep --jsonl "$TMP/tr.jsonl" --jobs 2 --transient
+point6
+same6 "$TMP/tr.jsonl"
+t $? "with --transient point 6 equals the plain acbb run (the transient)"
+
+# Where the two differ: the steady solve finds a steady branch the run from
+# ambient never reaches (include/acbb/batch.h); --transient catches it.
+RUNAWAY=presets/runaway-rigid-preload.ini
+"$ACBB" sweep "$RUNAWAY" --grid operating.axial_load_N=1000 --jsonl "$TMP/ra.jsonl" 2>>"$TMP/err"
+"$ACBB" sweep "$RUNAWAY" --grid operating.axial_load_N=1000 --jsonl "$TMP/rt.jsonl" --transient \
+    2>>"$TMP/err"
+jq -e '.status == "converged"' "$TMP/ra.jsonl" >/dev/null 2>&1 &&
+    jq -e '.status == "runaway"' "$TMP/rt.jsonl" >/dev/null 2>&1
+t $? "runaway preset: the steady solve converges, --transient ends it as runaway"
+
+# The CPUs the process may use: under taskset -c 0 the sweep starts no
+# thread (one worker, the main thread); with two CPUs and --jobs 2, one.
+if command -v strace >/dev/null 2>&1 && command -v taskset >/dev/null 2>&1 &&
+   strace -f -qq -o /dev/null true 2>/dev/null && [ "$(nproc)" -ge 2 ]; then
+    clones() {
+        strace -f -qq -e trace=clone,clone3 -o "$TMP/strace" taskset -c "$1" "$ACBB" sweep \
+            "$PRESET" --grid operating.axial_load_N=200,400,600,800 $2 \
+            --jsonl "$TMP/aff$1.jsonl" 2>>"$TMP/err"
+        grep -c CLONE_THREAD "$TMP/strace"
+    }
+    [ "$(clones 0 '')" -eq 0 ]
+    t $? "taskset -c 0: one worker, no thread started"
+    [ "$(clones 0,1 '--jobs 2')" -eq 1 ]
+    t $? "two CPUs, --jobs 2: one thread besides the main one"
+else
+    skip "strace, taskset or two CPUs missing: the worker count under taskset is not observed"
+    skip "strace, taskset or two CPUs missing"
+fi
 
 # ---- shards ----
 "$ACBB" merge "$TMP/canon.jsonl" "$TMP/one.jsonl" 2>>"$TMP/err"

@@ -262,8 +262,9 @@ static void test_worker_basics(const acbb_scene *s0)
         acbb_worker_read(w, &st, NULL);
         sleep_ms(5);
     } while (st.compare.phase != ACBB_CMP_DONE && now_s() < end);
-    ok(st.compare.phase == ACBB_CMP_DONE && st.compare.ok[0] && st.compare.ok[1],
-       "worker: TE and WTE both ran");
+    ok(st.compare.phase == ACBB_CMP_DONE && st.compare.ok[0] && st.compare.ok[1] &&
+           st.compare.done[0] && st.compare.done[1],
+       "worker: TE and WTE both ran (on the batch runner)");
     ok(st.compare.snap[0].T_outer_ring == rs.T_outer_ring, "worker: TE result equals the plain run");
     ok(st.compare.snap[1].exp_outer == 0.0 && st.compare.snap[0].exp_outer > 0.0,
        "worker: WTE has no expansion, TE has");

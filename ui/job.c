@@ -3,7 +3,7 @@
  * The same shape as worker.c (one mutex, a wake-up pipe), but simpler: the
  * thread lives for one job only, so there is no command queue. The client
  * (the UI thread) owns `thread`/`has_thread`; `fns` and `ctx` are written
- * before pthread_create and read by the thread; `info` is behind `mu`. */
+ * before the thread is created and read by it; `info` is behind `mu`. */
 #include <errno.h>
 #include <pthread.h>
 #include <signal.h>

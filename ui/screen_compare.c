@@ -78,9 +78,8 @@ static void draw(acbb_app *a)
     const char *st[2];
     char it[2][32];
     for (int k = 0; k < 2; k++) {
-        int running = c->phase == ACBB_CMP_RUNNING && c->variant == k;
-        st[k] = running ? "running" : c->ok[k] ? acbb_run_status_name(&c->snap[k])
-                : (c->phase == ACBB_CMP_DONE || k < c->variant) ? "failed" : "waiting";
+        st[k] = c->ok[k] ? acbb_run_status_name(&c->snap[k])
+                : c->done[k] || c->phase == ACBB_CMP_DONE ? "failed" : "running";
         snprintf(it[k], sizeof it[k], "%ld", c->snap[k].iteration);
     }
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER, "%-24s %12s %12s %12s", "", "TE", "WTE", "TE-WTE");

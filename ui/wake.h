@@ -25,7 +25,7 @@ void acbb_wake_drain(acbb_wake *w);      /* the UI thread, before reading the st
 struct timespec acbb_wake_abstime(double at_ms);
 
 /* Start a background thread with the terminal's signals (INT, TERM, HUP,
- * QUIT, WINCH) blocked in it, so they reach the UI thread. pthread_create's
+ * QUIT, WINCH) blocked in it, so they reach the UI thread. The thread call's
  * return value. */
 int acbb_thread_start(pthread_t *t, void *(*fn)(void *), void *arg);
 

@@ -6,8 +6,10 @@
  * a worker_ctx on the worker's own stack, so the shared part is exactly
  * what is behind the mutex.
  *
- * Every Sim (the main run and the TE/WTE variants) advances only through
- * the engine's one run loop, acbb_sim_drive. Its per-step hook publishes,
+ * The main run advances only through the engine's one run loop,
+ * acbb_sim_drive; the TE/WTE variants run on the engine's batch runner
+ * (batch.h) from a comparison thread of their own, so the worker keeps
+ * handling commands meanwhile. The main run's per-step hook publishes,
  * sleeps out the pace on the condition variable (so a command still wakes
  * it) and returns nonzero when a command is queued: the drive returns, the
  * loop below handles the command and drives again. STOP and QUIT also set
@@ -23,6 +25,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "acbb/batch.h"
 #include "acbb/measure.h"
 #include "worker.h"
 #include "wake.h"
@@ -55,6 +58,11 @@ struct acbb_worker {
     atomic_int cancel_run;     /* the main Sim's drive and set-up */
     atomic_int cancel_cmp;     /* the TE/WTE variants' */
     acbb_wake wake;            /* the UI's select() wakes on it */
+    /* The comparison's own (worker_ctx starts and joins its thread):
+     * cmp_scene is written before the thread starts, read-only after;
+     * cmp_step[v] belongs to the batch worker running variant v. */
+    acbb_scene cmp_scene;
+    acbb_snapshot cmp_step[2];
 };
 
 /* Worker-private: only the worker thread touches these. */
@@ -67,11 +75,9 @@ typedef struct {
     double seg_start, wall_acc;/* running wall time (ms), pauses excluded */
     double rate_t0, rate;      /* steps/s measurement window (t0 in ms) */
     long rate_n;
-    /* TE vs WTE comparison */
-    int cmp_active, cmp_variant;
-    acbb_sim *cmp_sim;
-    acbb_scene cmp_scene;
-    acbb_snapshot cmp_snap;    /* the running variant's latest state */
+    /* TE vs WTE comparison: its thread, started and joined here */
+    pthread_t cmp_thread;
+    int cmp_started;
 } worker_ctx;
 
 /* Copy a message, truncating to fit (strncpy warns and may not terminate). */
@@ -227,78 +233,88 @@ static int wait_step_due(acbb_worker *w, double last_step, double sim_dt)
     return cmd;
 }
 
-/* ---- comparison (worker side) ---- */
+/* ---- comparison (its own thread, on the batch runner) ---- */
 
-/* Variant v ended (ok: its snapshot is in `snap`; else `why` says why it
- * could not run): publish and move on to the next one. */
-static void compare_end_variant(acbb_worker *w, worker_ctx *c, const acbb_snapshot *snap,
-                                const char *why)
+/* Called with w->mu held: count the publication, unlock, wake the UI. */
+static void compare_publish_unlock(acbb_worker *w)
 {
-    int v = c->cmp_variant;
-    pthread_mutex_lock(&w->mu);
-    w->st.compare.ok[v] = snap != NULL;
-    if (snap) w->st.compare.snap[v] = *snap;
-    else copy_text(w->st.compare.message, sizeof w->st.compare.message, why);
-    if (v == 1) w->st.compare.phase = ACBB_CMP_DONE;
-    else w->st.compare.variant = 1;
-    publish_locked(w, c, 0);
+    w->st.publications++;
     pthread_mutex_unlock(&w->mu);
     wake_ui(w);
-    acbb_sim_free(c->cmp_sim);
-    c->cmp_sim = NULL;
-    if (++c->cmp_variant > 1) c->cmp_active = 0;
 }
 
-/* After each step of a variant: publish progress every so often; pause
- * the drive when a command is queued (comparisons run flat out). */
-static int compare_hook(void *ctx, const acbb_sim *sim)
+static acbb_status compare_scene(void *ctx, size_t v, acbb_scene *out, acbb_batch_mode *mode,
+                                 acbb_error *err)
 {
-    hook_ctx *h = ctx;
-    worker_ctx *c = h->c;
-    acbb_sim_snapshot(sim, &c->cmp_snap);
-    if (c->cmp_snap.iteration % 16 == 0) {
-        pthread_mutex_lock(&h->w->mu);
-        h->w->st.compare.snap[c->cmp_variant] = c->cmp_snap;
-        publish_locked(h->w, c, 0);
-        pthread_mutex_unlock(&h->w->mu);
-        wake_ui(h->w);
-    }
-    return wait_step_due(h->w, 0.0, 0.0);
+    (void)err;
+    *mode = ACBB_BATCH_AS_SCENE; /* what the main run of this scene shows */
+    *out = ((const acbb_worker *)ctx)->cmp_scene;
+    out->thermal_expansion = v == 0;
+    return ACBB_OK;
 }
 
-/* Drive the current variant (building its Sim first) until it ends or a
- * command is queued. */
-static void compare_drive(acbb_worker *w, worker_ctx *c)
+/* After each step of variant v, on its batch worker: progress every so
+ * often (cmp_step[v] is that worker's alone). */
+static void compare_step(void *ctx, size_t v, const acbb_sim *sim)
 {
-    if (!c->cmp_sim) {
-        acbb_error err = { { 0 } };
-        acbb_scene s = c->cmp_scene;
-        s.thermal_expansion = c->cmp_variant == 0;
-        if (acbb_sim_new_ctl(&s, &w->cancel_cmp, &c->cmp_sim, &err) != ACBB_OK) {
-            c->cmp_sim = NULL;
-            compare_end_variant(w, c, NULL, err.msg);
-            return;
-        }
-    }
-    hook_ctx h = { w, c };
-    const acbb_run_ctl ctl = { compare_hook, &h, &w->cancel_cmp };
-    acbb_sim_drive(c->cmp_sim, &ctl);
-    if (acbb_sim_state(c->cmp_sim) == ACBB_RUN_RUNNING) return; /* a command waits */
-    acbb_sim_snapshot(c->cmp_sim, &c->cmp_snap);
-    compare_end_variant(w, c, &c->cmp_snap, NULL);
+    acbb_worker *w = ctx;
+    acbb_sim_snapshot(sim, &w->cmp_step[v]);
+    if (w->cmp_step[v].iteration % 16 != 0) return;
+    pthread_mutex_lock(&w->mu);
+    w->st.compare.snap[v] = w->cmp_step[v];
+    compare_publish_unlock(w);
+}
+
+static void compare_done(void *ctx, const acbb_batch_result *r)
+{
+    acbb_worker *w = ctx;
+    acbb_compare_result *c = &w->st.compare;
+    pthread_mutex_lock(&w->mu);
+    c->done[r->index] = 1;
+    c->ok[r->index] = r->snap != NULL;
+    if (r->snap) c->snap[r->index] = *r->snap;
+    else copy_text(c->message, sizeof c->message, r->message);
+    compare_publish_unlock(w);
+}
+
+/* Both variants side by side (as many at once as the CPUs allow), on a
+ * thread of their own so the worker keeps handling commands. */
+static void *compare_main(void *arg)
+{
+    acbb_worker *w = arg;
+    acbb_batch_opts o = { .cancel = &w->cancel_cmp, .scene = compare_scene,
+                          .step = compare_step, .done = compare_done, .ctx = w };
+    acbb_batch_run(2, &o, NULL);
+    pthread_mutex_lock(&w->mu);
+    w->st.compare.phase = ACBB_CMP_DONE;
+    compare_publish_unlock(w);
+    return NULL;
+}
+
+/* End a comparison in flight (worker side). */
+static void compare_join(acbb_worker *w, worker_ctx *c)
+{
+    if (!c->cmp_started) return;
+    atomic_store(&w->cancel_cmp, 1);
+    pthread_join(c->cmp_thread, NULL);
+    c->cmp_started = 0;
 }
 
 static void compare_begin(acbb_worker *w, worker_ctx *c, const acbb_scene *s)
 {
-    acbb_sim_free(c->cmp_sim);
-    c->cmp_sim = NULL;
-    c->cmp_scene = *s;
-    c->cmp_active = 1;
-    c->cmp_variant = 0;
+    compare_join(w, c);
     rearm_cancel(w, &w->cancel_cmp, 1);
+    w->cmp_scene = *s; /* read by the comparison thread, started below */
     pthread_mutex_lock(&w->mu);
     memset(&w->st.compare, 0, sizeof w->st.compare);
     w->st.compare.phase = ACBB_CMP_RUNNING;
+    pthread_mutex_unlock(&w->mu);
+    c->cmp_started = acbb_thread_start(&c->cmp_thread, compare_main, w) == 0;
+    if (c->cmp_started) return;
+    pthread_mutex_lock(&w->mu);
+    w->st.compare.phase = ACBB_CMP_DONE;
+    copy_text(w->st.compare.message, sizeof w->st.compare.message,
+              "could not start the comparison's thread");
     pthread_mutex_unlock(&w->mu);
 }
 
@@ -417,7 +433,7 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
 static int next_action(acbb_worker *w, const worker_ctx *c, queued_cmd *out)
 {
     pthread_mutex_lock(&w->mu);
-    while (w->q_len == 0 && !c->cmp_active && c->phase != ACBB_WORKER_RUNNING)
+    while (w->q_len == 0 && c->phase != ACBB_WORKER_RUNNING)
         pthread_cond_wait(&w->cv_cmd, &w->mu);
     int got = w->q_len > 0;
     if (got) {
@@ -445,13 +461,11 @@ static void *worker_main(void *arg)
         if (next_action(w, &c, &q)) {
             handle_cmd(w, &c, &q);
             if (q.cmd == ACBB_CMD_QUIT) break;
-        } else if (c.cmp_active) {
-            compare_drive(w, &c);
         } else {
             run_drive(w, &c);
         }
     }
-    acbb_sim_free(c.cmp_sim);
+    compare_join(w, &c);
     acbb_sim_free(c.sim);
     return NULL;
 }

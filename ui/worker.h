@@ -58,7 +58,7 @@ typedef enum { ACBB_CMP_NONE, ACBB_CMP_RUNNING, ACBB_CMP_DONE } acbb_compare_pha
 /* TE vs WTE: index 0 = thermal expansion on (TE), 1 = off (WTE). */
 typedef struct {
     acbb_compare_phase phase;
-    int variant;                 /* which variant is stepping while RUNNING */
+    int done[2];                 /* variant finished (ok or not); both run at once */
     int ok[2];                   /* variant ran (its snapshot is valid) */
     acbb_snapshot snap[2];
     char message[256];           /* why a variant could not run */

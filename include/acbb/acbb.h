@@ -18,6 +18,7 @@
 #include "acbb/outputs.h"
 #include "acbb/measure.h"
 #include "acbb/outfile.h"
+#include "acbb/batch.h"
 #include "acbb/sweep.h"
 #include "acbb/sensitivity.h"
 #include "acbb/study.h"

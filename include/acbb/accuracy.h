@@ -187,7 +187,7 @@ typedef struct {
     unsigned knobs;          /* as acbb_accuracy_options; 0 = all */
     unsigned model_levels;   /* 0 = all (the dynamic level costs ~4 s a point) */
     int points;              /* 1..48; 0 = 48 */
-    int jobs;                /* threads; <= 0: 2 */
+    int jobs;                /* threads; <= 0: acbb_batch_cpus() */
     int ladder;              /* 1: also measure the fidelity ladder */
     const _Atomic int *cancel;
 } acbb_envelope_options;

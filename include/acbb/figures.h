@@ -56,8 +56,8 @@ typedef struct {
 } acbb_fig_input;
 
 /* Re-drive the TE load-sweep points of `runs` (base level) with `jobs`
- * threads (0: one per CPU) and record every step. ACBB_ENOMEM or
- * ACBB_CANCELLED; a failed run is kept in its traj's status (its panels'
+ * workers (0: acbb_batch_cpus()) and record every step of the transient.
+ * ACBB_ENOMEM or ACBB_CANCELLED; a failed run is kept in its traj's status (its panels'
  * series leave it out). `runs` must outlive the input. */
 acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const atomic_int *cancel,
                                 acbb_fig_input **out, acbb_error *err);

@@ -24,7 +24,9 @@
  * takes its first choice below 0.5, its second at or above. GSL's mt19937
  * with a fixed seed: the design, hence the result, is reproducible.
  *
- * Runs are independent Sims on `jobs` threads through acbb_sim_drive; the
+ * Runs are independent Sims on the batch runner (batch.h), each the steady
+ * solve (a metric is read at the steady state; `acbb run --set
+ * fidelity.thermal_mode=steady` bit for bit) unless `transient`; the
  * engine prints nothing. A run that fails (not converged, runaway, bad
  * combination) gives no value: its row says how many ends failed, and a
  * Morris effect that needs it is left out (n_ee counts those kept). */
@@ -82,10 +84,11 @@ typedef struct {
     int morris_r;                /* trajectories (0: no Morris) */
     int morris_p;                /* grid levels (even, >= 2; 0: 4) */
     unsigned long seed;          /* design seed (0: 1) */
-    int jobs;                    /* threads (<= 0: one per CPU) */
+    int jobs;                    /* threads (<= 0: acbb_batch_cpus()) */
     const atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
     acbb_sens_progress_fn progress; /* called from worker threads, under a lock */
     void *ctx;
+    int transient;               /* 1: each run's transient as its scene says */
 } acbb_sens_opts;
 
 typedef struct {

@@ -156,8 +156,10 @@ typedef struct acbb_study acbb_study;
  * a scene edit that fails marks its point (skip, status, message). */
 acbb_status acbb_study_plan(const acbb_scene *base, acbb_study **out, acbb_error *err);
 
-/* Run every point with `jobs` threads (0: one per CPU, at most 16), then
- * evaluate the table. `cancel` (may be NULL), when set, stops the runs:
+/* Run every point on the batch runner with `jobs` workers (0:
+ * acbb_batch_cpus(); batch.h), then evaluate the table. Points only read
+ * at their steady state take the steady solve; the recorded TE load sweep
+ * (items 4, 5) runs the scene's transient. `cancel` (may be NULL), when set, stops the runs:
  * unfinished points end ACBB_CANCELLED and the items that need them are
  * NOT EVALUATED. Returns ACBB_OK when every run reached steady state, else
  * the status of the first failed run (the results are complete either
@@ -195,7 +197,7 @@ void acbb_study_free(acbb_study *s);
  * close each verdict is to the uncertain inputs. Item 18 (sanity) is
  * model-independent and is not varied.
  *
- * Sharing (no run is repeated): every perturbed point runs in ONE pool; an
+ * Sharing (no run is repeated): every perturbed point runs in ONE batch; an
  * end equal to the scene's value is the scene itself (no runs); a point on
  * which the input provably has no effect is taken from the base study
  * instead of run again (study_robust.c lists these cases, each tested
@@ -254,13 +256,13 @@ typedef struct {
     acbb_study_flip *flips;      /* owned by the result; item turns first */
 } acbb_study_item_rob;
 
-/* Called from the pool's threads, one at a time, after each run. */
+/* Called from the batch's workers, one at a time, after each run. */
 typedef void (*acbb_study_progress_fn)(void *ctx, size_t done, size_t total);
 
 typedef struct {
     const char *const *keys;     /* only these inputs ("section.key"); NULL: all */
     size_t n_keys;
-    int jobs;                    /* threads (0: one per CPU, at most 16) */
+    int jobs;                    /* workers (0: acbb_batch_cpus()) */
     const atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
     const acbb_study_row *rows;  /* the check table (NULL: acbb_study_table) */
     size_t n_rows;

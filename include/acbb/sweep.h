@@ -8,13 +8,14 @@
  * dimension varies slowest, the last fastest, so the index names the point
  * on every machine. Shard K of N holds the points with i % N == K - 1.
  *
- * acbb_sweep_run runs points on `jobs` threads through the one run loop
- * (acbb_sim_drive). Each Sim is private to its thread and the engine has
- * no global mutable state, so a point's result does not depend on the
- * thread count or on which machine ran it. The workers share one atomic
- * counter and take the one lock only to hand a finished point to `done`
- * (the client's writer): a point costs milliseconds, the hand-off
- * microseconds.
+ * acbb_sweep_run runs the points on the batch runner (batch.h): a point's
+ * result does not depend on the thread count or on which machine ran it.
+ * Finished points go to `done` (the client's writer) one at a time. A
+ * sweep reads each point at its steady state, so a point is the steady
+ * solve (fidelity.thermal_mode = steady: `acbb run PRESET --set ... --set
+ * fidelity.thermal_mode=steady` bit for bit) unless opts.transient is set
+ * or the grid varies fidelity.thermal_mode, .preset or .target_error_pct.
+ * The transient catches a runaway the steady solve may miss (batch.h).
  *
  * Ownership: acbb_sweep_new allocates a grid that acbb_sweep_free
  * releases; value strings returned are owned by the grid. */
@@ -75,13 +76,14 @@ typedef struct {
 typedef void (*acbb_sweep_done_fn)(void *ctx, const acbb_sweep_result *r);
 
 typedef struct {
-    int jobs;                      /* threads; <= 0: one per CPU */
+    int jobs;                      /* threads; <= 0: acbb_batch_cpus() */
     size_t shard_k, shard_n;       /* shard_n <= 1: every point */
     const unsigned char *skip;     /* skip[i] != 0: point i is done already (may be NULL) */
     size_t max_points;             /* run at most this many (0: no limit) */
     const atomic_int *cancel;      /* set: stop; cancelled points are not reported */
     acbb_sweep_done_fn done;
     void *ctx;
+    int transient;                 /* 1: each point's transient as its scene says */
 } acbb_sweep_opts;
 
 /* Run the points of the shard not skipped, lowest index first. Returns

@@ -16,6 +16,7 @@
 #include "acbb/measure.h"
 #include "acbb/sim.h"
 #include "accuracy_priv.h"
+#include "cancel.h"
 
 /* One setting of the plan: the edit shown to the user (key = value) and an
  * optional second edit applied with it (the time-step rows force a transient
@@ -152,11 +153,6 @@ static void row_init(acbb_accuracy_row *r, const plan_entry *p)
     r->e_loss = r->e_T = r->e_Qi = r->e_alpha = r->e_slide = NAN;
 }
 
-static int cancelled(const _Atomic int *cancel)
-{
-    return cancel && atomic_load(cancel) != 0;
-}
-
 void acbb_acc_path_free(acbb_acc_path *p)
 {
     if (!p) return;
@@ -289,7 +285,7 @@ static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
     memset(&snap, 0, sizeof snap);
     double times[ACBB_ACCURACY_MAX_REPEATS];
     int done = 0;
-    for (; done < repeats && !cancelled(cancel); done++) {
+    for (; done < repeats && !acbb_cancelled(cancel); done++) {
         int have_snap = 0;
         st = timed_run(&sc, cancel, done == 0 ? path : NULL, &snap, &have_snap, &times[done], &e);
         if (done == 0 && have_snap) r->iterations = snap.iteration;
@@ -372,11 +368,11 @@ acbb_status acbb_acc_run_plan(const acbb_scene *base_in, const acbb_accuracy_opt
     size_t total = plan_count(o), done = 0;
     for (size_t i = 0; i < PLAN_N; i++) {
         if (!planned(o, &k_plan[i])) continue;
-        if (cancelled(o->cancel)) break;
+        if (acbb_cancelled(o->cancel)) break;
         run_entry(&base, &k_plan[i], o->repeats, o->cancel, &rows[done],
                   paths ? &paths[done] : NULL);
         /* A cancel during the row may have cut its run short: drop it. */
-        if (cancelled(o->cancel)) break;
+        if (acbb_cancelled(o->cancel)) break;
         done++;
         if (progress) progress(ctx, done, total);
     }

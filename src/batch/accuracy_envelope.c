@@ -1,7 +1,7 @@
 /* acbb — the accuracy envelope: every knob setting over the seed's 48
  * study points, steady state and transient path (include/acbb/accuracy.h).
  *
- * Workers (pthreads) take points from one atomic counter; each point runs
+ * Points run on the batch runner's parallel for (batch.h); each point runs
  * the one-knob plan and the fidelity ladder on a private Sim per run and
  * stores per-setting errors in its own slot, so the result does not depend
  * on the thread count. Aggregation (worst, median) happens once all points
@@ -13,12 +13,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/accuracy.h"
+#include "acbb/batch.h"
 #include "acbb/fidelity.h"
 #include "acbb/measure.h"
 #include "acbb/study.h"
 #include "accuracy_priv.h"
-
-#define MAX_JOBS 64
+#include "cancel.h"
 
 /* What one setting gave at one point. */
 typedef struct {
@@ -194,26 +194,24 @@ static int run_point(env *E, size_t pi, acbb_accuracy_row *rows, acbb_acc_path *
     return ok;
 }
 
-static void *worker(void *arg)
+/* One point on a batch worker; rows and paths are private to the call. */
+static void point_fn(void *ctx, size_t pi)
 {
-    env *E = arg;
+    env *E = ctx;
     acbb_accuracy_row *rows = calloc(E->n_rows, sizeof *rows);
     acbb_acc_path *paths = calloc(E->n_rows, sizeof *paths);
-    if (!rows || !paths) atomic_store(&E->oom, 1);
-    for (;;) {
-        if (!rows || !paths || (E->cancel && atomic_load(E->cancel))) break;
-        size_t pi = atomic_fetch_add(&E->next, 1);
-        if (pi >= E->n_points) break;
+    if (rows && paths) {
         int ok = run_point(E, pi, rows, paths);
         pthread_mutex_lock(&E->lock);
         if (ok && !E->proto[0].key[0]) memcpy(E->proto, rows, E->n_rows * sizeof *rows);
         size_t d = atomic_fetch_add(&E->done, 1) + 1;
         if (E->progress) E->progress(E->ctx, d, E->n_points);
         pthread_mutex_unlock(&E->lock);
+    } else {
+        atomic_store(&E->oom, 1);
     }
     free(rows);
     free(paths);
-    return NULL;
 }
 
 /* ---- aggregation ---- */
@@ -293,22 +291,6 @@ static acbb_status setup(env *E, const acbb_scene *base, const acbb_envelope_opt
     return ACBB_OK;
 }
 
-static void run_pool(env *E, int jobs)
-{
-    pthread_t th[MAX_JOBS];
-    int started = 0;
-    if (jobs <= 0) jobs = 2;
-    if (jobs > MAX_JOBS) jobs = MAX_JOBS;
-    if ((size_t)jobs > E->n_points) jobs = (int)E->n_points;
-    pthread_mutex_init(&E->lock, NULL);
-    for (int k = 1; k < jobs; k++)
-        if (pthread_create(&th[k], NULL, worker, E) == 0) started = k;
-        else break;
-    worker(E); /* the calling thread works too */
-    for (int k = 1; k <= started; k++) pthread_join(th[k], NULL);
-    pthread_mutex_destroy(&E->lock);
-}
-
 acbb_status acbb_accuracy_envelope(const acbb_scene *base, const acbb_envelope_options *o,
                                    acbb_envelope_row *rows, size_t cap, size_t *n,
                                    double *wall_ms, acbb_accuracy_progress progress, void *ctx,
@@ -329,8 +311,10 @@ acbb_status acbb_accuracy_envelope(const acbb_scene *base, const acbb_envelope_o
     if (st == ACBB_OK) {
         E.progress = progress;
         E.ctx = ctx;
-        run_pool(&E, o ? o->jobs : 0);
-        if (E.cancel && atomic_load(E.cancel))
+        pthread_mutex_init(&E.lock, NULL);
+        acbb_batch_for(E.n_points, o ? o->jobs : 0, point_fn, &E, E.cancel);
+        pthread_mutex_destroy(&E.lock);
+        if (acbb_cancelled(E.cancel))
             st = acbb_error_set(err, ACBB_CANCELLED, "accuracy envelope: cancelled");
         else if (atomic_load(&E.oom))
             st = acbb_error_set(err, ACBB_ENOMEM, "accuracy envelope: out of memory");

@@ -2,60 +2,22 @@
  * the TE load-sweep trajectories, turning table rows into series, and
  * writing each panel's data file and PNG/SVG (src/io/plot_xy.c).
  *
- * Panels are independent, so they are written in parallel; each panel is
+ * The trajectories are re-driven on the batch runner (batch.h). Panels are
+ * independent, so they are written in parallel (acbb_batch_for); each panel is
  * one gnuplot process (both formats), the cost that dominates the command
  * (BENCHMARKS.md "Seed figures"). Nothing here prints. */
 #include <limits.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
+#include "acbb/batch.h"
 #include "acbb/figures.h"
 #include "acbb/measure.h"
-#include "figures_priv.h"
-
-#define MAX_JOBS 16
-
-/* ---- a small parallel for (each index once, any order) ---- */
-
-typedef struct {
-    acbb_figures_par_fn fn;
-    void *ctx;
-    size_t n;
-    atomic_size_t next;
-} par;
-
-static void *par_worker(void *arg)
-{
-    par *p = arg;
-    for (size_t i; (i = atomic_fetch_add(&p->next, 1)) < p->n;) p->fn(p->ctx, i);
-    return NULL;
-}
-
-void acbb_figures_par_for(size_t n, int jobs, acbb_figures_par_fn fn, void *ctx)
-{
-    par p = { .fn = fn, .ctx = ctx, .n = n };
-    atomic_init(&p.next, 0);
-    long want = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
-    size_t extra = want < 1 ? 0 : want > MAX_JOBS ? MAX_JOBS - 1 : (size_t)want - 1, started = 0;
-    pthread_t tid[MAX_JOBS];
-    for (; started < extra && started + 1 < n; started++)
-        if (pthread_create(&tid[started], NULL, par_worker, &p) != 0) break;
-    par_worker(&p); /* the calling thread works too */
-    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
-}
 
 /* ---- recording the TE load sweep ---- */
-
-typedef struct {
-    acbb_fig_traj *tr;
-    double ambient;
-    acbb_snapshot snap;
-} rec_ctx;
 
 static void push_step(acbb_fig_traj *tr, const acbb_snapshot *s, double ambient)
 {
@@ -82,45 +44,39 @@ static void push_step(acbb_fig_traj *tr, const acbb_snapshot *s, double ambient)
         .wx = b->omega_x, .wy = b->omega_y, .wz = b->omega_z };
 }
 
-static int rec_hook(void *ctx, const acbb_sim *sim)
-{
-    rec_ctx *c = ctx;
-    acbb_sim_snapshot(sim, &c->snap);
-    push_step(c->tr, &c->snap, c->ambient);
-    return 0;
-}
-
 typedef struct {
     acbb_fig_input *in;
-    const atomic_int *cancel;
+    acbb_snapshot *snap;        /* one per point: the step hook's scratch */
 } rec_job;
 
-static void record_one(void *ctx, size_t k)
+static const acbb_study_point *te_point(const rec_job *j, size_t k)
+{
+    return &j->in->runs->sweep[ACBB_STUDY_BASE][ACBB_STUDY_LOAD][2 * k + ACBB_STUDY_TE];
+}
+
+/* The trajectory is the point of a figure: the scene's own transient. */
+static acbb_status rec_scene(void *ctx, size_t k, acbb_scene *out, acbb_batch_mode *mode,
+                             acbb_error *err)
+{
+    const acbb_study_point *pt = te_point(ctx, k);
+    *mode = ACBB_BATCH_AS_SCENE;
+    if (pt->skip) return acbb_error_set(err, pt->status, "%s", pt->message);
+    *out = pt->scene;
+    return ACBB_OK;
+}
+
+static void rec_step(void *ctx, size_t k, const acbb_sim *sim)
 {
     rec_job *j = ctx;
-    acbb_fig_traj *tr = &j->in->traj[k];
-    const acbb_study_point *pt =
-        &j->in->runs->sweep[ACBB_STUDY_BASE][ACBB_STUDY_LOAD][2 * k + ACBB_STUDY_TE];
-    acbb_error err = { { 0 } };
-    rec_ctx *c = malloc(sizeof *c);
-    acbb_sim *sim = NULL;
-    tr->status = !c ? ACBB_ENOMEM : pt->skip ? pt->status
-                                  : acbb_sim_new_ctl(&pt->scene, j->cancel, &sim, &err);
-    if (tr->status == ACBB_OK) {
-        *c = (rec_ctx){ .tr = tr, .ambient = pt->scene.ambient_C };
-        acbb_run_ctl ctl = { .hook = rec_hook, .ctx = c, .cancel = j->cancel };
-        tr->status = acbb_sim_drive(sim, &ctl);
-        acbb_sim_snapshot(sim, &c->snap);
-        if (tr->status == ACBB_OK && c->snap.state != ACBB_RUN_CONVERGED)
-            tr->status = c->snap.status != ACBB_OK ? c->snap.status : ACBB_NOT_CONVERGED;
-        snprintf(tr->message, sizeof tr->message, "%s", c->snap.message);
-    } else {
-        snprintf(tr->message, sizeof tr->message, "%s",
-                 err.msg[0] ? err.msg : pt->skip ? pt->message : acbb_status_name(tr->status));
-    }
-    if (tr->oom) tr->status = ACBB_ENOMEM;
-    acbb_sim_free(sim);
-    free(c);
+    acbb_sim_snapshot(sim, &j->snap[k]);
+    push_step(&j->in->traj[k], &j->snap[k], te_point(j, k)->scene.ambient_C);
+}
+
+static void rec_done(void *ctx, const acbb_batch_result *r)
+{
+    acbb_fig_traj *tr = &((rec_job *)ctx)->in->traj[r->index];
+    tr->status = tr->oom ? ACBB_ENOMEM : r->status;
+    snprintf(tr->message, sizeof tr->message, "%s", r->message);
 }
 
 acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const atomic_int *cancel,
@@ -128,15 +84,21 @@ acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const ato
 {
     *out = NULL;
     acbb_fig_input *in = calloc(1, sizeof *in);
-    if (!in) return acbb_error_set(err, ACBB_ENOMEM, "figures: out of memory");
+    rec_job j = { in, malloc(ACBB_STUDY_NPTS * sizeof *j.snap) };
+    if (!in || !j.snap) {
+        free(in);
+        free(j.snap);
+        return acbb_error_set(err, ACBB_ENOMEM, "figures: out of memory");
+    }
     in->runs = runs;
     double t0 = acbb_now_ms();
-    rec_job j = { in, cancel };
-    acbb_figures_par_for(ACBB_STUDY_NPTS, jobs, record_one, &j);
+    acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = rec_scene, .step = rec_step,
+                          .done = rec_done, .ctx = &j };
+    acbb_status st = acbb_batch_run(ACBB_STUDY_NPTS, &o, NULL);
+    free(j.snap);
     in->wall_ms = acbb_now_ms() - t0;
     *out = in;
-    if (cancel && atomic_load(cancel))
-        return acbb_error_set(err, ACBB_CANCELLED, "figures: cancelled");
+    if (st == ACBB_CANCELLED) return acbb_error_set(err, ACBB_CANCELLED, "figures: cancelled");
     return ACBB_OK;
 }
 

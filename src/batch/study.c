@@ -1,22 +1,21 @@
 /* acbb — the seed study: planning and running its runs (see study.h).
  *
  * Every point is one Sim driven by acbb_sim_drive to steady state, exactly
- * as `acbb run PRESET --set ...` drives it; the run hook copies step 0 and
- * the last step and, for the TE load sweep, the per-step trajectory the
- * transient items (4, 5) read. Points run on a pool of pthreads: each Sim is
- * private to one thread and the engine keeps no global mutable state, so
+ * as `acbb run PRESET --set ...` drives it (adding fidelity.thermal_mode =
+ * steady where only the steady state is read, see point_scene); the run
+ * hook copies step 0 and the last step and, for the TE load sweep, the
+ * per-step trajectory the transient items (4, 5) read. Points run on the batch runner (batch.h):
  * results do not depend on the number of threads. */
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
+#include "acbb/batch.h"
 #include "acbb/measure.h"
 #include "acbb/study.h"
 #include "study_priv.h"
+#include "cancel.h"
 
-#define MAX_JOBS 16
 #define BASE_RPM 15000.0
 
 const double acbb_study_loads[ACBB_STUDY_NPTS] = { 50, 100, 150, 200, 400, 600, 800, 1000 };
@@ -25,6 +24,13 @@ const double acbb_study_speeds[ACBB_STUDY_NPTS] = { 2000, 4000, 6000, 8000,
 
 
 /* ---- one run ---- */
+
+typedef struct {
+    acbb_study_point *const *pts;
+    size_t n, ran;
+    acbb_study_progress_fn progress; /* may be NULL; called under the batch's lock */
+    void *ctx;
+} study_batch;
 
 static void record(acbb_study_point *p, const acbb_snapshot *s)
 {
@@ -54,96 +60,59 @@ static int record_hook(void *ctx, const acbb_sim *sim)
     return 0;
 }
 
-static void run_point(acbb_study_point *p, const atomic_int *cancel, int threads)
+/* Only the recorded points (the TE load sweep: items 4, 5 read its
+ * trajectory) are looked at step by step; every other point is read at its
+ * steady state (item 6's step 0 is the same initial state either way; item
+ * 18d's "any step" covers the steps each run took), so it takes the steady
+ * solve (batch.h: the same answer to ~5e-9, BENCHMARKS.md "Batch runner"). */
+static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                               acbb_error *err)
 {
-    double t0 = acbb_now_ms();
-    acbb_sim *sim = NULL;
-    acbb_error err = { { 0 } };
+    const acbb_study_point *p = ((const study_batch *)ctx)->pts[i];
+    if (p->skip) return acbb_error_set(err, p->status, "%s", p->message);
+    *out = p->scene;
+    *mode = p->record ? ACBB_BATCH_AS_SCENE : ACBB_BATCH_STEADY;
+    return ACBB_OK;
+}
+
+static void point_step(void *ctx, size_t i, const acbb_sim *sim)
+{
+    record_hook(((study_batch *)ctx)->pts[i], sim);
+}
+
+static void point_done(void *ctx, const acbb_batch_result *r)
+{
+    study_batch *b = ctx;
+    acbb_study_point *p = b->pts[r->index];
     if (p->skip) return;
-    p->status = acbb_sim_create(&p->scene, &(acbb_sim_opts){ cancel, threads }, &sim, &err);
-    if (p->status != ACBB_OK) {
-        snprintf(p->message, sizeof p->message, "%s",
-                 err.msg[0] ? err.msg : acbb_status_name(p->status));
-        p->wall_ms = acbb_now_ms() - t0;
-        return;
-    }
-    acbb_run_ctl ctl = { .hook = record_hook, .ctx = p, .cancel = cancel };
-    acbb_status st = acbb_sim_drive(sim, &ctl);
-    acbb_sim_snapshot(sim, &p->last);
-    p->ok = p->last.state == ACBB_RUN_CONVERGED && !p->oom;
-    if (p->oom) {
-        p->status = ACBB_ENOMEM;
-        snprintf(p->message, sizeof p->message, "out of memory recording the transient");
-    } else if (!p->ok) {
-        p->status = st != ACBB_OK ? st : p->last.status;
-        if (p->last.state == ACBB_RUN_RUNNING)
-            snprintf(p->message, sizeof p->message, "the engine did not end the run");
-        else
+    p->wall_ms = r->wall_ms;
+    if (!r->ran || !r->snap) {
+        p->status = r->status;
+        snprintf(p->message, sizeof p->message, "%s", r->message);
+        if (!r->ran) return; /* a cancel came first: not counted as run */
+    } else {
+        p->last = *r->snap;
+        p->ok = p->last.state == ACBB_RUN_CONVERGED && !p->oom;
+        if (p->oom) {
+            p->status = ACBB_ENOMEM;
+            snprintf(p->message, sizeof p->message, "out of memory recording the transient");
+        } else if (!p->ok) {
+            p->status = r->status != ACBB_OK ? r->status : p->last.status;
             snprintf(p->message, sizeof p->message, "%s", p->last.message);
-    }
-    acbb_sim_free(sim);
-    p->wall_ms = acbb_now_ms() - t0;
-}
-
-typedef struct {
-    acbb_study_point *const *pts;
-    size_t n;
-    atomic_size_t next;
-    const atomic_int *cancel;
-    int sim_threads;                 /* acbb_sim_opts.threads: 1 when runs fill the cores */
-    acbb_study_progress_fn progress; /* may be NULL; called under `lock` */
-    void *ctx;
-    size_t done;
-    pthread_mutex_t lock;
-} pool;
-
-static void count_done(pool *pl)
-{
-    if (!pl->progress) return;
-    pthread_mutex_lock(&pl->lock);
-    pl->progress(pl->ctx, ++pl->done, pl->n);
-    pthread_mutex_unlock(&pl->lock);
-}
-
-static void *pool_worker(void *arg)
-{
-    pool *pl = arg;
-    for (;;) {
-        size_t i = atomic_fetch_add(&pl->next, 1);
-        if (i >= pl->n) return NULL;
-        acbb_study_point *p = pl->pts[i];
-        if (pl->cancel && atomic_load(pl->cancel) && !p->skip) {
-            p->status = ACBB_CANCELLED;
-            snprintf(p->message, sizeof p->message, "cancelled before it started");
-            continue;
         }
-        run_point(p, pl->cancel, pl->sim_threads);
-        count_done(pl);
     }
+    if (b->progress) b->progress(b->ctx, ++b->ran, b->n);
 }
 
-static size_t n_jobs(int jobs)
-{
-    long n = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > MAX_JOBS ? MAX_JOBS : (size_t)n;
-}
-
-/* One pool over any list of points (the study's own, or every perturbed
+/* One batch over any list of points (the study's own, or every perturbed
  * study's at once: study_robust.c). */
 void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
-    pool pl = { .pts = pts, .n = n, .cancel = cancel, .progress = progress, .ctx = ctx };
-    atomic_init(&pl.next, 0);
-    pthread_mutex_init(&pl.lock, NULL);
-    pthread_t tid[MAX_JOBS];
-    size_t extra = n_jobs(jobs) - 1, started = 0;
-    pl.sim_threads = extra > 0 && n > 1 ? 1 : 0;
-    for (; started < extra && started + 1 < n; started++)
-        if (pthread_create(&tid[started], NULL, pool_worker, &pl) != 0) break;
-    pool_worker(&pl); /* the calling thread works too */
-    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
-    pthread_mutex_destroy(&pl.lock);
+    study_batch b = { .pts = pts, .n = n, .progress = progress, .ctx = ctx };
+    acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
+                          .step = point_step, .done = point_done, .ctx = &b };
+    acbb_batch_run(n, &o, NULL);
 }
 
 static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int *cancel)
@@ -262,7 +231,7 @@ acbb_status acbb_study_run(acbb_study *s, int jobs, const atomic_int *cancel)
     run_all(s->runs.all, s->runs.n, jobs, cancel);
     s->runs.wall_ms = acbb_now_ms() - t0;
     acbb_study_evaluate(s);
-    if (cancel && atomic_load(cancel)) return ACBB_CANCELLED;
+    if (acbb_cancelled(cancel)) return ACBB_CANCELLED;
     for (size_t i = 0; i < s->runs.n; i++)
         if (!s->runs.all[i].ok) return s->runs.all[i].status != ACBB_OK ? s->runs.all[i].status
                                                                          : ACBB_NOT_CONVERGED;

@@ -10,6 +10,7 @@
 #include <string.h>
 #include "acbb/measure.h"
 #include "study_priv.h"
+#include "cancel.h"
 
 /* Item 18 (sanity: zero speed, energy balance, closed forms) holds for any
  * parameter values: MODEL.md 12 does not ask for its robustness. */
@@ -218,7 +219,7 @@ static acbb_status run_ends(const acbb_study *base, const acbb_study_rob_opts *o
     r->n_runs = st == ACBB_OK ? n : 0;
     for (size_t i = 0; i < r->n_runs; i++) r->n_failed += !list[i]->ok;
     free(list);
-    if (st == ACBB_OK && o->cancel && atomic_load(o->cancel))
+    if (st == ACBB_OK && acbb_cancelled(o->cancel))
         st = acbb_error_set(err, ACBB_CANCELLED, "cancelled");
     return st;
 }

@@ -1,82 +1,50 @@
-/* acbb — sweeps in N dimensions: the worker pool (sweep.h).
+/* acbb — sweeps in N dimensions: running the points (sweep.h) on the batch
+ * runner (batch.h).
  *
  * The points to run are listed up front (shard, skip list, max_points), so
- * the set is decided before any thread starts; workers take the next one
- * from an atomic counter. Each worker owns one result buffer (a snapshot is
- * tens of kilobytes: no per-point allocation on a shared heap beyond what
- * the Sim itself needs) and takes the lock only to hand it to `done`. */
-#include <pthread.h>
+ * the set is decided before any thread starts. A sweep reads each point at
+ * its steady state, so points take the steady solve unless the caller asks
+ * for the transient (o->transient) or the grid itself varies the thermal
+ * mode (a fidelity preset or target sets it too). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-#include "acbb/measure.h"
+#include "acbb/batch.h"
 #include "acbb/sweep.h"
-
-#define SWEEP_MAX_JOBS 256
 
 typedef struct {
     const acbb_sweep *grid;
     const acbb_scene *base;
     const acbb_sweep_opts *o;
     const size_t *todo;
-    size_t n_todo;
-    atomic_size_t next;
-    atomic_size_t reported;
-    int sim_threads;            /* acbb_sim_opts.threads: 1 when points fill the cores */
-    pthread_mutex_t lock;
-} sweep_pool;
+    acbb_batch_mode mode;
+    size_t reported;
+    acbb_sweep_result *r;       /* filled under the batch's lock for `done` */
+} sweep_batch;
 
-static int cancelled(const atomic_int *cancel)
+static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                               acbb_error *err)
 {
-    return cancel && atomic_load(cancel);
+    const sweep_batch *b = ctx;
+    *mode = b->mode;
+    return acbb_sweep_scene(b->grid, b->base, b->todo[i], out, err);
 }
 
-/* Edits, set-up and the run of one point into r. */
-static void run_one(const sweep_pool *pl, size_t index, acbb_sweep_result *r)
+static void point_done(void *ctx, const acbb_batch_result *br)
 {
-    double t0 = acbb_now_ms();
-    acbb_error err = { { 0 } };
-    acbb_scene *sc = malloc(sizeof *sc);
-    acbb_sim *sim = NULL;
-    r->index = index;
-    r->have_snap = 0;
+    sweep_batch *b = ctx;
+    /* A cancelled point is not a result: a resumed sweep runs it. */
+    if (br->status == ACBB_CANCELLED) return;
+    acbb_sweep_result *r = b->r;
+    r->index = b->todo[br->index];
+    r->status = br->status;
+    r->have_snap = br->snap != NULL;
+    r->wall_ms = br->wall_ms;
     r->message[0] = '\0';
-    r->status = sc ? acbb_sweep_scene(pl->grid, pl->base, index, sc, &err) : ACBB_ENOMEM;
-    acbb_sim_opts so = { pl->o->cancel, pl->sim_threads };
-    if (r->status == ACBB_OK) r->status = acbb_sim_create(sc, &so, &sim, &err);
-    if (r->status == ACBB_OK) {
-        acbb_run_ctl ctl = { .cancel = pl->o->cancel };
-        r->status = acbb_sim_drive(sim, &ctl);
-        acbb_sim_snapshot(sim, &r->snap);
-        r->have_snap = 1;
-    } else {
-        snprintf(r->message, sizeof r->message, "%s",
-                 err.msg[0] ? err.msg : acbb_status_name(r->status));
-    }
-    acbb_sim_free(sim);
-    free(sc);
-    r->wall_ms = acbb_now_ms() - t0;
-}
-
-static void *worker(void *arg)
-{
-    sweep_pool *pl = arg;
-    acbb_sweep_result *r = malloc(sizeof *r);
-    if (!r) return NULL;
-    while (!cancelled(pl->o->cancel)) {
-        size_t i = atomic_fetch_add(&pl->next, 1);
-        if (i >= pl->n_todo) break;
-        run_one(pl, pl->todo[i], r);
-        /* A cancelled point is not a result: a resumed sweep runs it. */
-        if (r->status == ACBB_CANCELLED) break;
-        pthread_mutex_lock(&pl->lock);
-        if (pl->o->done) pl->o->done(pl->o->ctx, r);
-        pthread_mutex_unlock(&pl->lock);
-        atomic_fetch_add(&pl->reported, 1);
-    }
-    free(r);
-    return NULL;
+    if (br->snap) r->snap = *br->snap;
+    else snprintf(r->message, sizeof r->message, "%s", br->message);
+    b->reported++;
+    if (b->o->done) b->o->done(b->o->ctx, r);
 }
 
 static size_t list_todo(const acbb_sweep *g, const acbb_sweep_opts *o, size_t *todo)
@@ -96,12 +64,16 @@ size_t acbb_sweep_n_todo(const acbb_sweep *g, const acbb_sweep_opts *o)
     return list_todo(g, o, NULL);
 }
 
-static size_t n_threads(int jobs, size_t n_todo)
+/* The grid varies the thermal mode (directly or through a fidelity choice). */
+static int grid_sets_mode(const acbb_sweep *g)
 {
-    long n = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
-    if (n < 1) n = 1;
-    if (n > SWEEP_MAX_JOBS) n = SWEEP_MAX_JOBS;
-    return (size_t)n < n_todo ? (size_t)n : n_todo ? n_todo : 1;
+    for (size_t d = 0; d < acbb_sweep_n_dims(g); d++) {
+        const char *k = acbb_sweep_key(g, d);
+        if (strcmp(k, "fidelity.thermal_mode") == 0 || strcmp(k, "fidelity.preset") == 0 ||
+            strcmp(k, "fidelity.target_error_pct") == 0)
+            return 1;
+    }
+    return 0;
 }
 
 acbb_status acbb_sweep_run(const acbb_sweep *g, const acbb_scene *base,
@@ -109,23 +81,23 @@ acbb_status acbb_sweep_run(const acbb_sweep *g, const acbb_scene *base,
 {
     size_t n_todo = list_todo(g, o, NULL);
     size_t *todo = malloc((n_todo ? n_todo : 1) * sizeof *todo);
-    if (!todo) return ACBB_ENOMEM;
+    acbb_sweep_result *r = malloc(sizeof *r);
+    if (n_run) *n_run = 0;
+    if (!todo || !r) {
+        free(todo);
+        free(r);
+        return ACBB_ENOMEM;
+    }
     list_todo(g, o, todo);
-    sweep_pool pl = { .grid = g, .base = base, .o = o, .todo = todo, .n_todo = n_todo };
-    atomic_init(&pl.next, 0);
-    atomic_init(&pl.reported, 0);
-    pthread_mutex_init(&pl.lock, NULL);
-    pthread_t tid[SWEEP_MAX_JOBS];
-    size_t extra = n_threads(o->jobs, n_todo) - 1, started = 0;
-    pl.sim_threads = extra > 0 ? 1 : 0;
-    for (; started < extra; started++)
-        if (pthread_create(&tid[started], NULL, worker, &pl) != 0) break;
-    worker(&pl); /* the calling thread works too */
-    for (size_t i = 0; i < started; i++) pthread_join(tid[i], NULL);
-    pthread_mutex_destroy(&pl.lock);
+    sweep_batch b = { .grid = g, .base = base, .o = o, .todo = todo, .r = r,
+                      .mode = o->transient || grid_sets_mode(g) ? ACBB_BATCH_AS_SCENE
+                                                                : ACBB_BATCH_STEADY };
+    acbb_batch_opts bo = { .jobs = o->jobs, .cancel = o->cancel, .scene = point_scene,
+                           .done = point_done, .ctx = &b };
+    acbb_status st = acbb_batch_run(n_todo, &bo, NULL);
     free(todo);
-    size_t reported = atomic_load(&pl.reported);
-    if (n_run) *n_run = reported;
-    if (cancelled(o->cancel) && reported < n_todo) return ACBB_CANCELLED;
-    return reported < n_todo ? ACBB_ENOMEM : ACBB_OK;
+    free(r);
+    if (n_run) *n_run = b.reported;
+    if (st == ACBB_CANCELLED && b.reported < n_todo) return ACBB_CANCELLED;
+    return b.reported < n_todo ? ACBB_ENOMEM : ACBB_OK;
 }

@@ -7,10 +7,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/batch.h"
 #include "acbb/figures.h"
 #include "acbb/outfile.h"
 #include "acbb/plot.h"
-#include "figures_priv.h"
 
 /* A label in the data file: the CSV separator becomes ';' and a double
  * quote a single one, so a plain split on ',' reads every row. */
@@ -118,7 +118,7 @@ acbb_status acbb_figures_write_all(const acbb_fig_input *in, const char *dir, in
     size_t n;
     acbb_figure_table(&n);
     write_job job = { in, dir, width, height, res };
-    acbb_figures_par_for(n, jobs, write_index, &job);
+    acbb_batch_for(n, jobs, write_index, &job, NULL);
     for (size_t i = 0; i < n; i++)
         if (res[i].status != ACBB_OK) return res[i].status;
     return ACBB_OK;

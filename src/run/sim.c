@@ -21,6 +21,7 @@
 #include "quasi_dynamic.h"
 #include "dynamic.h"
 #include "sim_priv.h"
+#include "cancel.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -91,11 +92,6 @@ struct acbb_sim {
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
 };
-
-static int cancelled(const acbb_sim *sim)
-{
-    return sim->cancel && atomic_load_explicit(sim->cancel, memory_order_relaxed);
-}
 
 static int outputs_finite(const acbb_sim *sim);
 
@@ -315,7 +311,7 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
     int passes = sim->transient_pass || many ? 1 : QD_PASSES;
     for (int pass = 0; pass < passes; pass++) {
         double change = 0.0;
-        if (cancelled(sim))
+        if (acbb_cancelled(sim->cancel))
             return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
         if (sim->dyn)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
@@ -470,7 +466,7 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
     for (int it = 0; it < POLISH_ITERS; it++) {
         /* Plain Picard here: the transient has brought the state close to
          * the fixed point, where the lagged coupling contracts strongly. */
-        if (cancelled(sim))
+        if (acbb_cancelled(sim->cancel))
             return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
         acbb_status rc = steady_step(sim, 1.0, Tn, &dT);
         if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
@@ -676,7 +672,7 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
     }
     if (call_hook(sim, ctl)) return sim->status;
     while (sim->state == ACBB_RUN_RUNNING) {
-        if (cancelled(sim))
+        if (acbb_cancelled(sim->cancel))
             return fail(sim, ACBB_CANCELLED, "%s", "cancelled; last good state kept");
         acbb_sim_step(sim);
         if (call_hook(sim, ctl)) break;

@@ -1,0 +1,361 @@
+/* Tests of the batch runner (include/acbb/batch.h): results independent of
+ * the job count bit for bit, cancel mid-batch (every point reported once,
+ * the ones not started as such), the CPU count under an affinity mask,
+ * progress counts, a failing point's status and message, and the steady
+ * solve against the transient (MODEL.md 9) to a stated tolerance. */
+#define _GNU_SOURCE /* sched_setaffinity */
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <sched.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tap.h"
+#include "acbb/batch.h"
+#include "acbb/sweep.h"
+
+#define NPTS 6
+#define MAXN 16
+
+static acbb_scene load(const char *path)
+{
+    acbb_scene s;
+    acbb_error err = { { 0 } };
+    if (acbb_scene_load(path, &s, &err) != ACBB_OK) {
+        printf("Bail out! cannot load %s: %s\n", path, err.msg);
+        exit(1);
+    }
+    return s;
+}
+
+/* What a test batch does per point, and what came back. */
+typedef struct {
+    acbb_scene base;
+    int as_is;                   /* run the base itself (no load of its own per point) */
+    int bad_index;               /* the scene callback fails here (-1: none) */
+    int cancel_at_index;         /* its step sets `cancel` at iteration 5 (-1: none) */
+    size_t cancel_after_done;    /* done sets `cancel` after this many results (0: never) */
+    atomic_int cancel;
+    int reports[MAXN];           /* done calls per index */
+    acbb_batch_result res[MAXN];
+    char msg[MAXN][128];
+    acbb_snapshot snap[MAXN];
+    int have_snap[MAXN];
+    size_t last_done, total;
+    int done_in_order;           /* r->done counted 1, 2, 3, ... */
+    pthread_t threads[MAXN];     /* the worker that reported each index */
+} batch_case;
+
+/* Point i: the base at 200 + 150 i N, quasi-static (milliseconds a run). */
+static acbb_status scene_cb(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                            acbb_error *err)
+{
+    batch_case *c = ctx;
+    (void)mode;
+    if ((int)i == c->bad_index) return acbb_error_set(err, ACBB_EINVAL, "bad point %zu", i);
+    *out = c->base;
+    if (!c->as_is) out->axial_load = 200.0 + 150.0 * (double)i;
+    return ACBB_OK;
+}
+
+static void step_cb(void *ctx, size_t i, const acbb_sim *sim)
+{
+    batch_case *c = ctx;
+    acbb_snapshot *s = malloc(sizeof *s);
+    if (!s) return;
+    acbb_sim_snapshot(sim, s);
+    if ((int)i == c->cancel_at_index && s->iteration == 5) atomic_store(&c->cancel, 1);
+    free(s);
+}
+
+static void done_cb(void *ctx, const acbb_batch_result *r)
+{
+    batch_case *c = ctx;
+    size_t i = r->index;
+    if (i >= MAXN) return;
+    c->reports[i]++;
+    c->res[i] = *r;
+    snprintf(c->msg[i], sizeof c->msg[i], "%s", r->message ? r->message : "");
+    c->have_snap[i] = r->snap != NULL;
+    if (r->snap) c->snap[i] = *r->snap;
+    c->done_in_order &= r->done == c->last_done + 1;
+    c->last_done = r->done;
+    c->total = r->total;
+    c->threads[i] = pthread_self();
+    if (c->cancel_after_done && r->done == c->cancel_after_done) atomic_store(&c->cancel, 1);
+}
+
+static void case_init(batch_case *c, const acbb_scene *base)
+{
+    memset(c, 0, sizeof *c);
+    c->base = *base;
+    c->bad_index = c->cancel_at_index = -1;
+    c->done_in_order = 1;
+    atomic_init(&c->cancel, 0);
+}
+
+static acbb_status run_case(batch_case *c, size_t n, int jobs, acbb_batch_mode mode,
+                            acbb_batch_stats *st)
+{
+    acbb_batch_opts o = { .jobs = jobs, .cancel = &c->cancel, .mode = mode, .scene = scene_cb,
+                          .step = step_cb, .done = done_cb, .ctx = c };
+    return acbb_batch_run(n, &o, st);
+}
+
+/* Bit for bit: the numbers a client reads (wall time aside). */
+static int same_snap(const acbb_snapshot *a, const acbb_snapshot *b)
+{
+    int same = a->iteration == b->iteration && a->status == b->status &&
+               a->n_nodes == b->n_nodes && a->n_balls == b->n_balls &&
+               memcmp(&a->time, &b->time, sizeof a->time) == 0 &&
+               memcmp(a->T, b->T, sizeof a->T[0] * (size_t)a->n_nodes) == 0 &&
+               memcmp(&a->losses, &b->losses, sizeof a->losses) == 0 &&
+               memcmp(&a->delta_x, &b->delta_x, sizeof a->delta_x) == 0 &&
+               memcmp(&a->stiffness_axial, &b->stiffness_axial, sizeof(double)) == 0;
+    for (int j = 0; same && j < a->n_balls; j++)
+        same = memcmp(&a->balls[j], &b->balls[j], sizeof a->balls[j]) == 0;
+    return same;
+}
+
+static void test_jobs_independent(const acbb_scene *base)
+{
+    static batch_case one, three;
+    acbb_batch_stats s1, s3;
+    case_init(&one, base);
+    case_init(&three, base);
+    acbb_status r1 = run_case(&one, NPTS, 1, ACBB_BATCH_AS_SCENE, &s1);
+    acbb_status r3 = run_case(&three, NPTS, 3, ACBB_BATCH_AS_SCENE, &s3);
+    ok(r1 == ACBB_OK && r3 == ACBB_OK && s1.ran == NPTS && s3.ran == NPTS && s1.failed == 0 &&
+           s3.failed == 0, "6 points with 1 and with 3 jobs: all ran and converged");
+    ok(s1.workers == 1 && s3.workers == 3, "workers: %d and %d (jobs 1 and 3)", s1.workers,
+       s3.workers);
+    int same = 1, distinct = 1;
+    for (int i = 0; i < NPTS; i++) {
+        same &= one.have_snap[i] && three.have_snap[i] && same_snap(&one.snap[i], &three.snap[i]);
+        if (i) distinct &= one.snap[i].losses.total != one.snap[i - 1].losses.total;
+    }
+    ok(same, "every point bit for bit the same with 1 and 3 jobs");
+    ok(distinct, "... and the points differ from each other (not vacuous)");
+    int once = 1;
+    for (int i = 0; i < NPTS; i++) once &= one.reports[i] == 1 && three.reports[i] == 1;
+    ok(once, "every index reported exactly once");
+    ok(one.done_in_order && three.done_in_order && three.last_done == NPTS &&
+           three.total == NPTS, "progress: done counts 1..%d, total %d", NPTS, NPTS);
+}
+
+/* One job: point 0 finishes, point 1's step cancels at iteration 5, points
+ * 2.. never start. */
+static void test_cancel_serial(const acbb_scene *base)
+{
+    static batch_case c;
+    acbb_batch_stats st;
+    case_init(&c, base);
+    c.cancel_at_index = 1;
+    acbb_status rc = run_case(&c, NPTS, 1, ACBB_BATCH_AS_SCENE, &st);
+    ok(rc == ACBB_CANCELLED, "cancel mid-batch: ACBB_CANCELLED (%s)", acbb_status_name(rc));
+    ok(c.res[0].status == ACBB_OK && c.res[0].ran, "point 0 finished before the cancel");
+    ok(c.res[1].ran && c.res[1].status == ACBB_CANCELLED && c.have_snap[1] &&
+           c.snap[1].iteration == 5, "point 1: cancelled mid-run at iteration %ld, last state kept",
+       c.snap[1].iteration);
+    int rest = 1;
+    for (int i = 2; i < NPTS; i++)
+        rest &= !c.res[i].ran && c.res[i].status == ACBB_CANCELLED && !c.have_snap[i] &&
+                strcmp(c.msg[i], "not run: cancelled before it started") == 0;
+    ok(rest, "points 2..5: not run, status cancelled, no snapshot, said so");
+    ok(st.ran == 2 && st.not_run == NPTS - 2 && st.ran + st.not_run == NPTS,
+       "stats: ran %zu + not run %zu = %d", st.ran, st.not_run, NPTS);
+}
+
+/* Three jobs, the cancel from `done` after the third result: whatever the
+ * timing, each index once, done + not run = n. */
+static void test_cancel_parallel(const acbb_scene *base)
+{
+    static batch_case c;
+    acbb_batch_stats st;
+    case_init(&c, base);
+    c.cancel_after_done = 3;
+    size_t n = 12;
+    acbb_status rc = run_case(&c, n, 3, ACBB_BATCH_AS_SCENE, &st);
+    int once = 1;
+    size_t not_run = 0, ran = 0;
+    for (size_t i = 0; i < n; i++) {
+        once &= c.reports[i] == 1;
+        not_run += !c.res[i].ran;
+        ran += c.res[i].ran;
+    }
+    ok(rc == ACBB_CANCELLED && once, "3 jobs, cancel after 3 results: each of 12 reported once");
+    ok(ran + not_run == n && st.ran == ran && st.not_run == not_run && not_run >= n - 3 - 3,
+       "ran %zu + not run %zu = 12 (at most 3 more were in flight)", ran, not_run);
+    ok(c.done_in_order && c.last_done == n, "progress counts every report, not-run ones too");
+}
+
+static void test_failures(const acbb_scene *base)
+{
+    static batch_case c;
+    acbb_batch_stats st;
+    case_init(&c, base);
+    c.bad_index = 1;
+    c.base.max_steps = 3;            /* every run stops after 3 steps */
+    run_case(&c, 3, 2, ACBB_BATCH_AS_SCENE, &st);
+    ok(c.res[1].ran && c.res[1].status == ACBB_EINVAL && !c.have_snap[1] &&
+           strcmp(c.msg[1], "bad point 1") == 0, "a failing scene: its status and message (%s)",
+       c.msg[1]);
+    ok(c.res[0].status == ACBB_NOT_CONVERGED && c.have_snap[0] && c.snap[0].iteration == 3 &&
+           strstr(c.msg[0], "no steady state within the limits"),
+       "a run that stops at max_steps: not_converged, its snapshot and message (%s)", c.msg[0]);
+    ok(st.failed == 3 && st.ran == 3, "stats: 3 failed of 3");
+    case_init(&c, base);
+    c.base.ball_diameter = -1.0;     /* refused by acbb_sim_create */
+    run_case(&c, 1, 1, ACBB_BATCH_AS_SCENE, &st);
+    ok(c.res[0].status == ACBB_EINVAL && !c.have_snap[0] && c.msg[0][0],
+       "a scene the engine refuses: EINVAL with the validation message (%s)", c.msg[0]);
+    ok(acbb_batch_run(1, &(acbb_batch_opts){ 0 }, NULL) == ACBB_EINVAL,
+       "no scene callback: EINVAL");
+}
+
+/* ---- the CPUs the process may use ---- */
+
+typedef struct {
+    pthread_t main;
+    int others;
+} thread_seen;
+
+static void sweep_done(void *ctx, const acbb_sweep_result *r)
+{
+    thread_seen *t = ctx;
+    (void)r;
+    t->others += !pthread_equal(pthread_self(), t->main);
+}
+
+static void test_affinity(const acbb_scene *base)
+{
+    cpu_set_t all, one;
+    if (sched_getaffinity(0, sizeof all, &all) != 0) {
+        skip("sched_getaffinity failed", "affinity");
+        return;
+    }
+    int n = CPU_COUNT(&all);
+    ok(acbb_batch_cpus() == n, "acbb_batch_cpus() = %d, the affinity mask's count", n);
+    ok(acbb_batch_workers(100, 0) == n && acbb_batch_workers(1, 0) == 1 &&
+           acbb_batch_workers(5, 3) == 3 && acbb_batch_workers(0, 4) == 1,
+       "workers: min(jobs or CPUs, points), at least 1");
+    int first = 0;
+    while (!CPU_ISSET(first, &all)) first++;
+    CPU_ZERO(&one);
+    CPU_SET(first, &one);
+    if (sched_setaffinity(0, sizeof one, &one) != 0) {
+        skip("sched_setaffinity refused", "one CPU");
+        return;
+    }
+    ok(acbb_batch_cpus() == 1, "under a one-CPU mask (taskset -c %d): 1 CPU", first);
+    acbb_sweep *g = NULL;
+    acbb_error err = { { 0 } };
+    thread_seen seen = { pthread_self(), 0 };
+    acbb_sweep_opts o = { .jobs = 0, .done = sweep_done, .ctx = &seen };
+    size_t ran = 0;
+    int built = acbb_sweep_new(&g) == ACBB_OK &&
+                acbb_sweep_add(g, "operating.axial_load_N=200,400,600,800", &err) == ACBB_OK;
+    ok(built && acbb_sweep_run(g, base, &o, &ran) == ACBB_OK && ran == 4 && seen.others == 0,
+       "a sweep with the default jobs ran its 4 points on the calling thread alone");
+    acbb_sweep_free(g);
+    sched_setaffinity(0, sizeof all, &all);
+    ok(acbb_batch_cpus() == n, "mask restored: %d CPUs again", n);
+}
+
+static void count_fn(void *ctx, size_t i)
+{
+    atomic_int *hits = ctx;
+    atomic_fetch_add(&hits[i], 1);
+}
+
+static void test_for(void)
+{
+    atomic_int hits[50];
+    for (int i = 0; i < 50; i++) atomic_init(&hits[i], 0);
+    size_t ran = acbb_batch_for(50, 3, count_fn, hits, NULL);
+    int once = 1;
+    for (int i = 0; i < 50; i++) once &= atomic_load(&hits[i]) == 1;
+    ok(ran == 50 && once, "parallel for: each of 50 indices once");
+    atomic_int stop;
+    atomic_init(&stop, 1);
+    ok(acbb_batch_for(50, 3, count_fn, hits, &stop) == 0, "parallel for: cancelled first, none run");
+}
+
+/* ---- steady solve vs transient ---- */
+
+static void modes(const char *path, double tol)
+{
+    static batch_case tr, sd;
+    acbb_scene s = load(path);
+    case_init(&tr, &s);
+    case_init(&sd, &s);
+    tr.as_is = sd.as_is = 1;
+    run_case(&tr, 1, 1, ACBB_BATCH_TRANSIENT, NULL);
+    run_case(&sd, 1, 1, ACBB_BATCH_STEADY, NULL);
+    const acbb_snapshot *a = &tr.snap[0], *b = &sd.snap[0];
+    double worst = 0.0, worst_T = 0.0;
+    /* Each loss kind on the scale of the total (a kind near zero moves by
+     * more relative to itself: 1e-7 for a 0.1 mW slip loss). */
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        worst = fmax(worst, fabs(a->losses.P[l] - b->losses.P[l]) / a->losses.total);
+    worst = fmax(worst, fabs(a->losses.total - b->losses.total) / a->losses.total);
+    worst = fmax(worst, fabs(a->balls[0].Qi - b->balls[0].Qi) / a->balls[0].Qi);
+    for (int i = 0; i < a->n_nodes; i++) worst_T = fmax(worst_T, fabs(a->T[i] - b->T[i]));
+    ok(a->state == ACBB_RUN_CONVERGED && b->state == ACBB_RUN_CONVERGED && a->time > 0 &&
+           b->time == 0 && b->iteration < a->iteration,
+       "%s: transient (%ld steps, %.0f s) and steady solve (%ld iterations) converge", path,
+       a->iteration, a->time, b->iteration);
+    ok(a->state == ACBB_RUN_CONVERGED && b->state == ACBB_RUN_CONVERGED && worst <= tol &&
+           worst_T <= 1e-6,
+       "%s: losses (of the total) and Qi to %.2g relative (need <= %g), nodes to %.2g K (<= 1e-6)",
+       path, worst, tol, worst_T);
+}
+
+static void test_modes(void)
+{
+    /* Measured: 4.7e-9 (7008C) and 1.6e-9 (combined-load), the total loss. */
+    modes("presets/7008C.ini", 1e-8);
+    modes("presets/combined-load.ini", 1e-8);
+    /* Not equivalent for a runaway scene (batch.h). */
+    static batch_case tr, sd;
+    acbb_scene s = load("presets/runaway-rigid-preload.ini");
+    case_init(&tr, &s);
+    case_init(&sd, &s);
+    tr.as_is = sd.as_is = 1;
+    run_case(&tr, 1, 1, ACBB_BATCH_TRANSIENT, NULL);
+    run_case(&sd, 1, 1, ACBB_BATCH_STEADY, NULL);
+    ok(tr.res[0].status == ACBB_RUNAWAY && sd.res[0].status == ACBB_OK,
+       "runaway preset: the transient ends runaway, the steady solve converges (%s / %s)",
+       acbb_status_name(tr.res[0].status), acbb_status_name(sd.res[0].status));
+    /* The mode wins over a fidelity preset's own thermal mode. */
+    acbb_scene p = load("presets/7008C.ini");
+    acbb_error err = { { 0 } };
+    acbb_scene_set(&p, "fidelity.preset", "fast", &err);
+    case_init(&sd, &p);
+    case_init(&tr, &p);
+    tr.as_is = sd.as_is = 1;
+    run_case(&sd, 1, 1, ACBB_BATCH_STEADY, NULL);
+    run_case(&tr, 1, 1, ACBB_BATCH_TRANSIENT, NULL);
+    ok(sd.have_snap[0] && sd.snap[0].time == 0 && tr.have_snap[0] && tr.snap[0].time > 0,
+       "fidelity.preset = fast: STEADY and TRANSIENT still decide the thermal mode");
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off(); /* statuses are checked; the default handler aborts */
+    acbb_scene base = load("presets/7008C.ini");
+    acbb_error err = { { 0 } };
+    if (acbb_scene_set(&base, "fidelity.model", "quasi-static", &err) != ACBB_OK) {
+        printf("Bail out! %s\n", err.msg);
+        return 1;
+    }
+    test_jobs_independent(&base);
+    test_cancel_serial(&base);
+    test_cancel_parallel(&base);
+    test_failures(&base);
+    test_affinity(&base);
+    test_for();
+    test_modes();
+    return done_testing();
+}
