@@ -148,6 +148,9 @@ typedef struct {
     const atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
     int threads;
 } acbb_sim_opts;
+/* The first Sim of a process turns GSL's abort-on-error handler off
+ * (gsl_set_error_handler_off, once): the engine checks GSL's statuses
+ * itself. A program that wants its own handler sets it afterwards. */
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                             acbb_error *err);
 

@@ -22,6 +22,7 @@
 #include "dynamic.h"
 #include "sim_priv.h"
 #include "cancel.h"
+#include "gsl_quiet.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -791,6 +792,7 @@ acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                             acbb_error *err)
 {
+    acbb_gsl_quiet();
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))) {
         free(sim);
