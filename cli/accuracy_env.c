@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/accuracy.h"
+#include "acbb/batch.h"
 #include "acbb/fidelity.h"
 #include "accuracy.h"
 #include "common.h"
@@ -107,7 +108,7 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
     long points = 0, jobs = 0;
     int rc = acbb_cli_count(a, CLI_OPT_POINTS, ACBB_ENVELOPE_POINTS, 1, ACBB_ENVELOPE_POINTS,
                             &points);
-    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 2, 1, 64, &jobs);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs);
     if (rc) return rc;
     acbb_envelope_options o = { .knobs = knobs, .model_levels = models, .points = (int)points,
                                 .jobs = (int)jobs, .ladder = 1 };
@@ -132,8 +133,9 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
         free(rows);
         return acbb_cli_exit_for(st);
     }
-    printf("acbb bench accuracy %s --envelope: %ld of the seed's 48 study points, %ld thread%s,"
-           " %.1f s\n", a->preset, points, jobs, jobs == 1 ? "" : "s", 1e-3 * ms);
+    int workers = acbb_batch_workers((size_t)points, (int)jobs);
+    printf("acbb bench accuracy %s --envelope: %ld of the seed's 48 study points, %d thread%s,"
+           " %.1f s\n", a->preset, points, workers, workers == 1 ? "" : "s", 1e-3 * ms);
     printf("Per setting over the points: worst / median of max(loss, T) error %% against its\n"
            "knob's reference (ladder: against 'reference'), worst loss and T errors, the\n"
            "transient path error (max |T(t) - T_ref(t)|, outer ring) in %% and, wPathK, in K,\n"

@@ -72,8 +72,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "--morris R adds Morris elementary effects over all inputs together\n"
       "(R (k+1) points, k inputs; seed 1). --plot FILE.png|svg: a tornado chart.\n"
       "Exit 3 when a run did not reach steady state (the table is still printed).\n",
-      SCENE_OPTS | O(METRIC) | O(DELTA) | O(MORRIS) | O(JOBS) | O(JSON) | O(CSV) | O(PLOT), 1, 1,
-      0, acbb_cli_cmd_sensitivity },
+      SCENE_OPTS | O(METRIC) | O(DELTA) | O(MORRIS) | O(JOBS) | O(TRANSIENT) | O(JSON) | O(CSV) |
+      O(PLOT), 1, 1, 0, acbb_cli_cmd_sensitivity },
     { "study", NULL, "PRESET", "TE vs WTE: with and without thermal expansion",
       "Loads 50..1000 N at the preset's speed, speeds 2000..16000 rpm at 100 N\n"
       "and at 1000 N. PRESET `seed` is 7008C, the seed paper's case.\n"
@@ -104,7 +104,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "the seed's conclusions (MODEL.md 12): held or not",
       "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n"
       "Cancelled (Ctrl-C, SIGTERM): no verdicts, no --md file, exit 3.\n",
-      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS), 1, 1, 0, acbb_cli_cmd_report },
+      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS) | O(JOBS), 1, 1, 0,
+      acbb_cli_cmd_report },
     { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
       "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
       "never over an existing file) with the ISO 15 bore, outside diameter and width;\n"

@@ -548,16 +548,19 @@ static void rob_progress_fn(void *ctx, size_t done, size_t total)
 static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
                    acbb_study_rob *rob, bool *have_rob)
 {
+    long jobs = 0;
+    if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs) != 0) return ACBB_EXIT_INPUT;
     acbb_cli_progress rp;
     acbb_cli_progress_init(&rp, stderr, 0.0);
     const atomic_int *cancel = acbb_cli_interrupt_begin();
     acbb_cli_progress_note(&rp, "report: running the study  (Ctrl-C stops)");
-    acbb_status ss = acbb_study_run(st, 0, cancel);
+    acbb_status ss = acbb_study_run(st, (int)jobs, cancel);
     int rc = 0;
     if (ss != ACBB_CANCELLED && (a->val[CLI_OPT_SENSITIVITY] || k->n)) {
         acbb_error err = { { 0 } };
         acbb_study_rob_opts o = { .keys = k->n ? k->keys : NULL, .n_keys = k->n,
-                                  .cancel = cancel, .progress = rob_progress_fn, .ctx = &rp };
+                                  .jobs = (int)jobs, .cancel = cancel,
+                                  .progress = rob_progress_fn, .ctx = &rp };
         acbb_status rs = acbb_study_robustness(st, &o, rob, &err);
         *have_rob = rs == ACBB_OK;
         if (rs == ACBB_CANCELLED) ss = rs;

@@ -55,6 +55,7 @@ static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
     o->morris_p = 4;
     o->seed = 1;
     o->jobs = (int)jobs;
+    o->transient = a->val[CLI_OPT_TRANSIENT] != NULL;
     acbb_error err = {{0}};
     if (!rc && acbb_metric_check(o->metric, &err) != ACBB_OK) {
         fprintf(stderr, "acbb: sensitivity: %s; `acbb metrics` lists them\n", err.msg);

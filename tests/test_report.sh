@@ -59,6 +59,13 @@ t $? "no temporary Markdown file left behind"
 # ---- JSON ----
 "$ACBB" report "$PRESET" --json >"$TMP/out.json" 2>"$TMP/err"
 code $? 0 "report --json runs"
+# --jobs changes the workers, never the verdicts or numbers.
+"$ACBB" report "$PRESET" --json --jobs 1 >"$TMP/out1.json" 2>"$TMP/err"
+code $? 0 "report --json --jobs 1 runs"
+jq -S 'del(.. | .wall_ms?)' "$TMP/out.json" >"$TMP/o2.json"
+jq -S 'del(.. | .wall_ms?)' "$TMP/out1.json" >"$TMP/o1.json"
+cmp -s "$TMP/o1.json" "$TMP/o2.json"
+t $? "report --jobs 1 gives the JSON of the default job count"
 jq -e 'type == "array" and length == 18 and ([.[].item] == [range(1; 19)])' "$TMP/out.json" >/dev/null 2>&1
 t $? "JSON parses: an array of items 1..18"
 jq -e 'all(.[]; (.statement | length) > 0 and (.verdict == "HELD" or .verdict == "NOT HELD" or .verdict == "NOT EVALUATED") and (.evidence.checks | length) > 0)' \

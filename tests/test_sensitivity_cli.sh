@@ -70,6 +70,23 @@ else
     for c in 1 2 3 4 5 6 7; do skip "tornado check $c" "gnuplot not installed"; done
 fi
 
+# ---- steady solve by default, --transient on request (issue 16) ----
+# The base value is the run's: with --transient exactly `acbb run`'s
+# (transient) outer-ring temperature, without it the steady solve's.
+sens --metric temperature_C.outer_ring --transient --json >"$TMP/tr.json"
+code $? 0 "--transient runs"
+run_T=$("$ACBB" run "$PRESET" --json 2>/dev/null | jq -r '.temperature_C.outer_ring')
+st_T=$("$ACBB" run "$PRESET" --set fidelity.thermal_mode=steady --json 2>/dev/null |
+       jq -r '.temperature_C.outer_ring')
+# `run --json` prints 10 digits (34.xxxxxxxx: +-5e-9 K); the two modes
+# differ by about 4e-8 K here, so 1e-8 K tells them apart.
+near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; exit !(d < 1e-8 && d > -1e-8) }'; }
+near "$(jq -r '.value' "$TMP/tr.json")" "$run_T" && ! near "$run_T" "$st_T"
+t $? "--transient: the base value is acbb run's transient one ($run_T C, steady $st_T C)"
+sens --metric temperature_C.outer_ring --json >"$TMP/st.json"
+near "$(jq -r '.value' "$TMP/st.json")" "$st_T"
+t $? "default: the base value is the steady solve's ($st_T C)"
+
 # ---- errors ----
 sens --metric nope >/dev/null
 code $? 2 "unknown metric refused"

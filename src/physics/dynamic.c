@@ -7,6 +7,7 @@
 #include "dynamic.h"
 #include "acbb/limits.h"
 #include "dynamic_priv.h"
+#include "cancel.h"
 
 #define NY 8          /* X1, X2 (um), V1, V2 (mm/s), wm, wx, wy, wz (/omega_i) */
 #define FD_STEP 1e-7
@@ -110,8 +111,7 @@ static int rhs(double t, const double y[], double dydt[], void *p)
     (void)t;
     dyn_ctx *c = p;
     /* A window can take seconds: GSL's driver stops at once on a failed rhs. */
-    if (c->cancel && atomic_load_explicit(c->cancel, memory_order_relaxed))
-        return GSL_EBADFUNC;
+    if (acbb_cancelled(c->cancel)) return GSL_EBADFUNC;
     const acbb_geometry *g = c->g;
     acbb_ball_state *b = &c->b;
     double wi = c->omega_i, mass = g->mass, X2 = y[1] * 1e-6, V1 = y[2] * 1e-3, V2 = y[3] * 1e-3;
@@ -297,7 +297,7 @@ acbb_status acbb_dyn_ball_on(acbb_dyn *d, int w, const acbb_dyn_env *env, acbb_m
         Qo += c.b.Qo / NS;
     }
     gsl_odeiv2_driver_free(drv);
-    if (rc == GSL_EBADFUNC && d->cancel && atomic_load(d->cancel))
+    if (rc == GSL_EBADFUNC && acbb_cancelled(d->cancel))
         return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
     if (rc != GSL_SUCCESS)
         return acbb_error_set(err, ACBB_DIVERGED, "dynamic model: integration of ball %d failed "
