@@ -103,12 +103,13 @@ t $? "scanner: finds a call, ignores comments and strings"
 
 step='(^|[^[:alnum:]_])acbb_sim_step[[:space:]]*\('
 curses='^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](ncursesw?/)?n?curses'
-print='(^|[^[:alnum:]_])(v?printf|puts|putchar|perror)[[:space:]]*\(|(^|[^[:alnum:]_])v?f(printf|puts)[[:space:]]*\([^,]*,[[:space:]]*(stdout|stderr)|(^|[^[:alnum:]_])v?fprintf[[:space:]]*\([[:space:]]*(stdout|stderr)'
+print='(^|[^[:alnum:]_])(v?printf|puts|putchar|perror)[[:space:]]*\(|(^|[^[:alnum:]_])(stdout|stderr)([^[:alnum:]_]|$)|(^|[^[:alnum:]_])v?dprintf[[:space:]]*\([[:space:]]*[12][[:space:]]*,|(^|[^[:alnum:]_])write[[:space:]]*\([[:space:]]*(1|2|STDOUT_FILENO|STDERR_FILENO)[[:space:]]*,'
 printf '%s\n' '#include <ncursesw/curses.h>' 'snprintf(b, n, "%d", 1);' 'fprintf(f, "%d", 1);' \
-    ' fprintf( stderr, "x");' 'fputs(msg, stdout);' 'puts("x");' > "$TMP/probe2.c"
+    ' fprintf( stderr, "x");' 'fputs(msg, stdout);' 'puts("x");' 'fwrite(b, 1, n, stderr);' \
+    'dprintf(2, "x");' 'write(STDERR_FILENO, b, n);' 'fputc(c, f); my_stdout_x = 1;' > "$TMP/probe2.c"
 [ "$(hits "$curses" "$TMP/probe2.c" | cut -d: -f2)" = 1 ] \
-    && [ "$(hits "$print" "$TMP/probe2.c" | cut -d: -f2 | tr '\n' ' ')" = "4 5 6 " ]
-t $? "scanner: finds ncurses includes and printing, not snprintf or fprintf to a file"
+    && [ "$(hits "$print" "$TMP/probe2.c" | cut -d: -f2 | tr '\n' ' ')" = "4 5 6 7 8 9 " ]
+t $? "scanner: finds ncurses includes and printing (printf, puts, any use of stdout/stderr, fd 1/2), not snprintf or fprintf to a file"
 
 [ ${#clients[@]} -gt 3 ] && [ ${#others[@]} -gt 10 ]
 t $? "found the client (${#clients[@]}) and engine (${#others[@]}) sources"
@@ -117,8 +118,12 @@ check "no client calls acbb_sim_step (the one run loop is acbb_sim_drive)" "$ste
     "${clients[@]}"
 check "no engine file but src/run/sim.c calls acbb_sim_step" "$step" "${others[@]}"
 check "the engine does not include ncurses" "$curses" "${engine[@]}"
-check "the engine does not print (printf, puts, fprintf/fputs to stdout or stderr)" \
-    "$print" "${engine[@]}"
+# src/io/outfile.c alone may name stdout: the atomic writer's "-" target is
+# the caller's stdout (outfile.h); it writes only what a client hands it.
+quiet=()
+for f in "${engine[@]}"; do [ "$f" = src/io/outfile.c ] || quiet+=("$f"); done
+check "the engine does not print (printf, puts, stdout/stderr, fd 1/2; outfile.c's \"-\" aside)" \
+    "$print" "${quiet[@]}"
 
 # (3) Clients include the public API and their own headers only. The
 # include lines are read as they are (a quoted name is the point here).
@@ -127,6 +132,8 @@ for f in "${clients[@]}"; do
     dir=$(dirname "$f")
     while IFS=: read -r ln name; do
         case "$name" in
+            ../cli/*|../ui/*) [ -f "$dir/$name" ] || bad_inc+="$f:$ln: $name (missing)"$'\n' ;;
+            *..*|*src/*|*include/*) bad_inc+="$f:$ln: $name (a path into the engine)"$'\n' ;;
             acbb/*) [ -f "include/$name" ] || bad_inc+="$f:$ln: $name (not public)"$'\n' ;;
             *) [ -f "$dir/$name" ] || [ -f "cli/$name" ] || [ -f "ui/$name" ] || bad_inc+="$f:$ln: $name (engine internal)"$'\n' ;;
         esac
@@ -144,15 +151,34 @@ t $(( $? == 0 )) "internals (hertz.h, mechanics.h, broyden.h) are not in include
 
 # (4) Engine messages are shown by the CLI and the TUI alike: a literal
 # that names a CLI flag (--set, --grid, --jobs ...) belongs to the CLI.
-flag='"[^"]*(^|[^[:alnum:]-])--[a-z][a-z-]+'
+flag='"([^"]*[^[:alnum:]"-])?--[a-z][a-z-]+'
 msgs() { STRIPPED="$TMP/kept" KEEP=1 hits "$flag" "$@"; }
-printf '%s\n' 'e = "use --grid k=v";  /* "--set" in a comment */' 'x = a--b;' > "$TMP/probe4.c"
-[ "$(msgs "$TMP/probe4.c" | cut -d: -f2)" = 1 ]
+printf '%s\n' 'e = "use --grid k=v";  /* "--set" in a comment */' 'x = a--b;' \
+    '    "--jobs N: workers"' 'y = "a-b--c";' > "$TMP/probe4.c"
+[ "$(msgs "$TMP/probe4.c" | cut -d: -f2 | tr '\n' ' ')" = "1 3 " ]
 t $? "scanner: finds a flag in a string, not in a comment or an expression"
 strip_all "$TMP/kept" 1 "${engine[@]}"
 found=$(msgs "${engine[@]}")
 [ -z "$found" ]
 t $? "no engine message names a CLI flag"
 [ -z "$found" ] || printf '%s\n' "$found" | sed 's/^/#   /'
+
+# (5) Layer order (README "Source tree"): an engine folder includes internal
+# headers only from folders below it: physics < scene < run < batch < io.
+rank() { case $1 in physics) echo 0 ;; scene) echo 1 ;; run) echo 2 ;; batch) echo 3 ;; io) echo 4 ;; *) echo 9 ;; esac; }
+bad_layer=""
+for f in src/*/*.[ch]; do
+    d=$(basename "$(dirname "$f")")
+    while IFS= read -r h; do
+        for hit in src/*/"$h"; do
+            [ -f "$hit" ] || continue
+            hd=$(basename "$(dirname "$hit")")
+            [ "$(rank "$hd")" -le "$(rank "$d")" ] || bad_layer+="$f: $h ($d includes $hd)"$'\n'
+        done
+    done < <(sed -n -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"([^"/]+)".*/\1/p' "$f")
+done
+[ -z "$bad_layer" ]
+t $? "src/ layers include only headers of their own or lower layers (physics < scene < run < batch < io)"
+[ -z "$bad_layer" ] || printf '%s' "$bad_layer" | sed 's/^/#   /'
 
 tap_done

@@ -4,7 +4,7 @@
 # jq. The charts are checked against the run's own numbers from
 # `acbb run --json` (the y axis must cover the final values), against the
 # PNG/SVG formats, and against exact messages and exit codes.
-# If src/cli.c does not dispatch `plot` / accept `--plot` yet, every test
+# If cli/main.c does not dispatch `plot` / accept `--plot` yet, every test
 # that needs it reports "not ok" with that reason (never a skip).
 set -u
 
@@ -41,13 +41,13 @@ not_wired() {
     done
 }
 
-# ---- is `acbb plot` wired into src/cli.c? ----
+# ---- is `acbb plot` wired into cli/main.c? ----
 "$ACBB" plot "$PRESET" --kind temperature --dumb >"$TMP/dumb.txt" 2>"$TMP/err"
 rc=$?
 plot_wired=1
 if grep -q "unknown command" "$TMP/err"; then
     plot_wired=0
-    echo "# src/cli.c does not dispatch 'plot' to acbb_cli_plot (src/cli_plot.h):"
+    echo "# cli/main.c does not dispatch 'plot' to acbb_cli_plot (cli/plot.h):"
     sed 's/^/#   /' "$TMP/err" | head -2
 fi
 
@@ -141,16 +141,16 @@ if [ "$plot_wired" -eq 1 ]; then
     has "$TMP/err" "not_converged" "stderr names the status"
     has "$TMP/m.svg" "bearing temperatures" "plot still written"
 else
-    not_wired "acbb plot: src/cli.c does not call acbb_cli_plot yet (unknown command)" 33
+    not_wired "acbb plot: cli/main.c does not call acbb_cli_plot yet (unknown command)" 33
 fi
 
 # ---- acbb run --plot FILE ----
 "$ACBB" run "$PRESET" --quiet --plot "$TMP/r.png" >/dev/null 2>"$TMP/err"
 rc=$?
 if grep -q -- "--plot" "$TMP/err" && grep -q "unknown option" "$TMP/err"; then
-    echo "# src/cli.c does not accept 'run --plot' (acbb_cli_write_plot):"
+    echo "# cli/main.c does not accept 'run --plot' (acbb_cli_write_plot):"
     sed 's/^/#   /' "$TMP/err" | head -2
-    not_wired "acbb run --plot: src/cli.c does not call acbb_cli_write_plot yet (unknown option)" 3
+    not_wired "acbb run --plot: cli/main.c does not call acbb_cli_write_plot yet (unknown option)" 3
 else
     code "$rc" 0 "run --plot r.png"
     is_png "$TMP/r.png"

@@ -587,7 +587,7 @@ static int ring_eval(const double *x, void *p, double *f)
     return ring_f(&X.vector, m, &F.vector) == GSL_SUCCESS;
 }
 
-/* Broyden from the last ring Jacobian of this DOF set (acbb/broyden.h); the
+/* Broyden from the last ring Jacobian of this DOF set (broyden.h); the
  * first solve builds one by forward steps of 1e-6 relative (the residual
  * carries the ball solves' noise, far above round-off), steps halved up to
  * 6 times (a stiffness probe starts far off); then GSL's hybrid. 1: at root. */
