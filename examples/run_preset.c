@@ -22,7 +22,10 @@ int main(int argc, char **argv)
     }
     acbb_sim_drive(sim, NULL);                 /* the run loop, to the end */
     acbb_snapshot *s = malloc(sizeof *s);      /* large: not on the stack */
-    if (!s) return 2;
+    if (!s) {
+        acbb_sim_free(sim);
+        return 2;
+    }
     acbb_sim_snapshot(sim, s);
     acbb_sim_free(sim);
     printf("status %s\nT_outer_ring_C %.10g\nP_total_W %.10g\nQi_ball0_N %.10g\n",

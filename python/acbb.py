@@ -24,6 +24,8 @@ import os
 __all__ = ["run", "load_library", "AcbbError"]
 
 SONAME = "libacbb.so.0"
+# acbb_status values the module tests (include/acbb/status.h).
+ACBB_NONFINITE = -9
 
 
 class AcbbError(Exception):
@@ -102,7 +104,8 @@ def _settings(settings):
 
 def _preset_text(preset):
     """A path (PathLike, or a string without a line break) is read; other
-    strings are preset text."""
+    strings are preset text. So a preset given as text needs a line break:
+    any real preset has several lines ([bearing], [operating], ...)."""
     if isinstance(preset, os.PathLike) or "\n" not in preset:
         with open(preset, encoding="utf-8") as f:
             return f.read()
@@ -135,7 +138,7 @@ def run(preset, settings=None, lib=None):
         raise AcbbError(result["message"], result["status"], code.value, result)
     # ACBB_NONFINITE with another status: a null in the document (a run
     # that failed as "nonfinite" is a result like any failed run).
-    if code.value == -9 and result["status"] != "nonfinite":
+    if code.value == ACBB_NONFINITE and result["status"] != "nonfinite":
         raise AcbbError("internal error: a non-finite number in the results (written as null)",
                         "nonfinite", code.value, result)
     return result

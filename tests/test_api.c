@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/ffi.h"
+#include "acbb/json.h"
 #include "acbb/scene.h"
 #include "tap.h"
 
@@ -148,6 +149,34 @@ static void test_load_text(const char *text)
        "the text meets the file's line checks (%s)", err.msg);
 }
 
+/* Misuse of the JSON writer (too deep, a close at the top) is counted, not
+ * an abort() in the caller's process; the writer stays usable. */
+static void test_json_misuse(void)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    if (!f) {
+        ok(0, "open_memstream");
+        return;
+    }
+    acbb_json j;
+    acbb_json_init(&j, f);
+    acbb_json_close(&j, '}');
+    for (int d = 0; d < ACBB_JSON_DEPTH + 2; d++) acbb_json_open(&j, NULL, '[', true);
+    long after_open = j.misuse;
+    while (j.depth > 0) acbb_json_close(&j, ']');
+    fclose(f);
+    ok(after_open == 1 + 3 && j.misuse == 4 && j.depth == 0,
+       "JSON writer: 1 close at the top and 3 opens past depth %d counted (%ld), no abort",
+       ACBB_JSON_DEPTH, j.misuse);
+    size_t opens = 0, closes = 0;
+    for (size_t i = 0; i < len; i++) opens += buf[i] == '[', closes += buf[i] == ']';
+    ok(opens == (size_t)ACBB_JSON_DEPTH - 1 && closes == opens,
+       "the text written stays balanced (%zu [ and %zu ])", opens, closes);
+    free(buf);
+}
+
 int main(int argc, char **argv)
 {
     char *text = preset_text();
@@ -159,6 +188,7 @@ int main(int argc, char **argv)
     test_threads(text);
     test_bad(text);
     test_load_text(text);
+    test_json_misuse();
     free(text);
     printf("1..%d\n", tap_n);
     return tap_failed ? 1 : 0;

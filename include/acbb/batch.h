@@ -104,7 +104,8 @@ typedef struct {
 
 /* Run points 0..n-1. Returns ACBB_CANCELLED when `cancel` was set before
  * every point had finished, else ACBB_OK (failed points are results, not
- * errors), or ACBB_EINVAL without `scene`. `stats` may be NULL. */
+ * errors), ACBB_EINVAL without `scene`, ACBB_ENOMEM when the lock cannot be
+ * made (nothing ran). `stats` may be NULL. */
 acbb_status acbb_batch_run(size_t n, const acbb_batch_opts *o, acbb_batch_stats *stats);
 
 #endif

@@ -17,11 +17,13 @@
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
-#define ACBB_JSON_DEPTH 8        /* deepest nesting; deeper is a bug (abort) */
+#define ACBB_JSON_DEPTH 8        /* deepest nesting; deeper is a bug (counted in misuse) */
 
 typedef struct {
     FILE *f;                     /* not owned */
     long nonfinite;              /* NaN/Inf numbers met (written as null) */
+    long misuse;                 /* opens past ACBB_JSON_DEPTH or closes at the top:
+                                  * a caller's bug, ignored (the text is then invalid) */
     int depth;
     bool first[ACBB_JSON_DEPTH]; /* no element written yet at this depth */
     bool inline_[ACBB_JSON_DEPTH]; /* container written on one line */

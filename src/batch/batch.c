@@ -185,7 +185,7 @@ acbb_status acbb_batch_run(size_t n, const acbb_batch_opts *o, acbb_batch_stats 
     /* One worker on a one-CPU mask: no ball workers either (dynamic level). */
     pl.sim_threads = workers > 1 || acbb_batch_cpus() == 1 ? 1 : 0;
     atomic_init(&pl.next, 0);
-    pthread_mutex_init(&pl.lock, NULL);
+    if (pthread_mutex_init(&pl.lock, NULL) != 0) return ACBB_ENOMEM;
     workers = n ? spawn(workers, pool_worker, &pl) : 1;
     pthread_mutex_destroy(&pl.lock);
     if (stats)

@@ -48,9 +48,14 @@ static void put_key(acbb_json *j, const char *key)
 
 void acbb_json_open(acbb_json *j, const char *key, char bracket, bool one_line)
 {
+    /* Nesting is static in every writer: too deep is a bug, counted (a
+     * library must not abort its caller's process). */
+    if (j->depth + 1 >= ACBB_JSON_DEPTH) {
+        j->misuse++;
+        return;
+    }
     put_key(j, key);
     fputc(bracket, j->f);
-    if (j->depth + 1 >= ACBB_JSON_DEPTH) abort(); /* static nesting: a bug */
     j->depth++;
     j->first[j->depth] = true;
     j->inline_[j->depth] = one_line || j->inline_[j->depth - 1];
@@ -59,6 +64,10 @@ void acbb_json_open(acbb_json *j, const char *key, char bracket, bool one_line)
 void acbb_json_close(acbb_json *j, char bracket)
 {
     int d = j->depth;
+    if (d <= 0) {
+        j->misuse++;
+        return;
+    }
     if (!j->inline_[d] && !j->first[d]) fprintf(j->f, "\n%*s", 2 * (d - 1), "");
     fputc(bracket, j->f);
     j->depth--;

@@ -208,11 +208,19 @@ static void sync_dir(const char *path)
 static int copy_fd(int from, int out)
 {
     char buf[65536];
-    ssize_t n = 0;
-    int bad = lseek(from, 0, SEEK_SET) != 0;
-    while (!bad && (n = read(from, buf, sizeof buf)) > 0)
-        bad = write(out, buf, (size_t)n) != n;
-    return bad || n < 0 ? -1 : 0;
+    if (lseek(from, 0, SEEK_SET) != 0) return -1;
+    for (;;) {
+        ssize_t n = read(from, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n < 0 ? -1 : 0;
+        /* A FIFO or a signal may take the bytes in parts. */
+        for (ssize_t off = 0; off < n;) {
+            ssize_t w = write(out, buf + off, (size_t)(n - off));
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0) return -1;
+            off += w;
+        }
+    }
 }
 
 /* A non-regular target written by an external program: copy the bytes in. */
