@@ -285,7 +285,7 @@ static int study_table(const acbb_cli_args *a, long jobs);
 int acbb_cli_cmd_study(const acbb_cli_args *args)
 {
     long jobs;
-    int rc = acbb_cli_count(args, CLI_OPT_JOBS, acbb_batch_cpus(), 1, 100000, &jobs);
+    int rc = acbb_cli_count(args, CLI_OPT_JOBS, acbb_batch_cpus(), 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (rc) return rc;
     acbb_cli_args *a = malloc(sizeof *a);
     if (!a) return ACBB_EXIT_INTERNAL;
@@ -380,7 +380,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
 {
     long repeat, jobs;
     int rc = acbb_cli_count(a, CLI_OPT_REPEAT, 5, 1, 100000, &repeat);
-    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, acbb_batch_cpus(), 1, 100000, &jobs);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, acbb_batch_cpus(), 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (rc) return rc;
     /* Without PRESET: the seed's case, through the search path. */
     acbb_cli_args with_default = *a;

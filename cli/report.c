@@ -549,7 +549,8 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
                    acbb_study_rob *rob, bool *have_rob)
 {
     long jobs = 0;
-    if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs) != 0) return ACBB_EXIT_INPUT;
+    if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs) != 0)
+        return ACBB_EXIT_INPUT;
     acbb_cli_progress rp;
     acbb_cli_progress_init(&rp, stderr, 0.0);
     const atomic_int *cancel = acbb_cli_interrupt_begin();
