@@ -331,6 +331,7 @@ done
 code $? 2 "tui --pace fast exits 2 (parsed by the table, checked by the TUI)"
 "$ACBB" report "$PRESET" --md >"$TMP/out" 2>"$TMP/err"
 code $? 2 "report --md without a value exits 2"
+has "$TMP/err" "option needs a value: --md" "the one parser says so"
 # A robustness that fails (here a bad --inputs key, found after the study
 # ran) prints no report and writes no --md file: without the section asked
 # for it would look complete (issue 16). Out of memory takes the same path
@@ -340,7 +341,6 @@ code $? 2 "report with a failing robustness exits 2"
 [ ! -e "$TMP/rob.md" ] && [ ! -s "$TMP/out" ]
 t $? "a failed robustness: no report on stdout, no --md file"
 has "$TMP/err" "no report printed, --md file not written" "a failed robustness says what was not written"
-has "$TMP/err" "option needs a value: --md" "the one parser says so"
 
 # ---- unknown and misplaced options ----
 "$ACBB" run "$PRESET" --josn >"$TMP/out" 2>"$TMP/err"
