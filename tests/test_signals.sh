@@ -38,6 +38,11 @@ reached() {
 cancel() {
     local sig=$1 state=$2 i pid
     shift 2
+    # Emptied here, not by the child's redirection: until the child runs,
+    # the previous command's stderr would match STATE, and a SIGINT sent
+    # before the handler is in is lost (a script's background job ignores it).
+    : >"$TMP/out"
+    : >"$TMP/err"
     "$ACBB" "$@" >"$TMP/out" 2>"$TMP/err" &
     pid=$!
     for ((i = 0; i < 1200; i++)); do
