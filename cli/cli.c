@@ -65,8 +65,7 @@ static acbb_status drive(acbb_sim *sim, drive_ctx *d)
 
 /* Independent runs on the engine's batch runner (batch.h): results do not
  * depend on the number of workers. Each point runs as its scene says
- * (transient by default): `study` publishes the iterations to steady state
- * and `bench speed` times the scene as given. */
+ * (transient by default): `bench speed` times the scene as given. */
 static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
                                acbb_error *err)
 {
