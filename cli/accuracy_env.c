@@ -108,7 +108,7 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
     long points = 0, jobs = 0;
     int rc = acbb_cli_count(a, CLI_OPT_POINTS, ACBB_ENVELOPE_POINTS, 1, ACBB_ENVELOPE_POINTS,
                             &points);
-    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (rc) return rc;
     acbb_envelope_options o = { .knobs = knobs, .model_levels = models, .points = (int)points,
                                 .jobs = (int)jobs, .ladder = 1 };

@@ -30,6 +30,11 @@ typedef enum {
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
+/* The one upper bound of --jobs for every command that takes it: a sanity
+ * limit on the number, not a thread cap (the batch runner never starts
+ * more workers than points, batch.h). */
+#define ACBB_CLI_MAX_JOBS 100000
+
 #define CLI_BIT(o) (1ull << (unsigned)(o))
 _Static_assert(CLI_OPT_COUNT <= 64, "the command table keeps options in a 64-bit mask");
 

@@ -65,8 +65,7 @@ static acbb_status drive(acbb_sim *sim, drive_ctx *d)
 
 /* Independent runs on the engine's batch runner (batch.h): results do not
  * depend on the number of workers. Each point runs as its scene says
- * (transient by default): `study` publishes the iterations to steady state
- * and `bench speed` times the scene as given. */
+ * (transient by default): `bench speed` times the scene as given. */
 static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
                                acbb_error *err)
 {
@@ -257,26 +256,9 @@ int acbb_cli_cmd_edit(const acbb_cli_args *a)
 
 /* ---- acbb study ---- */
 
-/* The engine study's abscissae (study.h); the load sweep runs at the
- * scene's own speed. */
+/* The engine's abscissae (study.h), for `bench speed`'s load sweep. */
 #define STUDY_N ACBB_STUDY_NPTS
 #define study_loads acbb_study_loads
-#define study_speeds acbb_study_speeds
-
-/* Pair k of the study: TE point 2k and WTE point 2k+1, otherwise equal.
- * The scene is a plain value in SI units, so the study edits it directly. */
-static void study_pair(acbb_cli_point *pts, size_t k, const acbb_scene *base,
-                       double speed_rpm, double load_N, double x)
-{
-    for (int m = 0; m < 2; m++) {
-        acbb_cli_point *p = &pts[2 * k + (size_t)m];
-        p->scene = *base;
-        p->scene.inner_speed = acbb_rpm_to_rads(speed_rpm);
-        p->scene.axial_load = load_N;
-        p->scene.thermal_expansion = (m == 0);
-        snprintf(p->value, sizeof p->value, "%g", x);
-    }
-}
 
 static int study_table(const acbb_cli_args *a, long jobs);
 
@@ -285,7 +267,7 @@ static int study_table(const acbb_cli_args *a, long jobs);
 int acbb_cli_cmd_study(const acbb_cli_args *args)
 {
     long jobs;
-    int rc = acbb_cli_count(args, CLI_OPT_JOBS, acbb_batch_cpus(), 1, 100000, &jobs);
+    int rc = acbb_cli_count(args, CLI_OPT_JOBS, acbb_batch_cpus(), 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (rc) return rc;
     acbb_cli_args *a = malloc(sizeof *a);
     if (!a) return ACBB_EXIT_INTERNAL;
@@ -299,48 +281,63 @@ int acbb_cli_cmd_study(const acbb_cli_args *args)
     return rc;
 }
 
+/* A run the cancel stopped mid-way is shown as not run: its numbers are
+ * those of an unfinished transient (issue 16). */
+static void study_done(void *ctx, const acbb_batch_result *r)
+{
+    point_done(ctx, r);
+    acbb_cli_point *p = &((acbb_cli_point *)ctx)[r->index];
+    if (r->status != ACBB_CANCELLED || !p->have_snap) return;
+    p->have_snap = false;
+    p->status = ACBB_CANCELLED;
+    snprintf(p->message, sizeof p->message, "cancelled before it finished");
+}
+
+/* The engine plans and runs the table (acbb_study_compare_*, study.h);
+ * here it is only formatted. */
 static int study_table(const acbb_cli_args *a, long jobs)
 {
     int rc;
     acbb_scene base;
     if ((rc = acbb_cli_load_scene(a, &base))) return rc;
-
-    double rpm = acbb_rads_to_rpm(base.inner_speed);
-    char titles[3][96];
-    snprintf(titles[0], sizeof titles[0], "load sweep at %.0f rpm", rpm);
-    snprintf(titles[1], sizeof titles[1], "speed sweep at 100 N");
-    snprintf(titles[2], sizeof titles[2], "speed sweep at 1000 N");
-    const acbb_cli_study_block blocks[3] = {
-        { "load", titles[0], "Fx N", 0, STUDY_N },
-        { "speed_100N", titles[1], "n rpm", STUDY_N, STUDY_N },
-        { "speed_1000N", titles[2], "n rpm", 2 * STUDY_N, STUDY_N },
-    };
-    size_t n_pairs = 3 * STUDY_N;
-    acbb_cli_point *pts = calloc(2 * n_pairs, sizeof *pts);
-    if (!pts) return ACBB_EXIT_INTERNAL;
-    for (size_t k = 0; k < STUDY_N; k++) {
-        study_pair(pts, k, &base, rpm, study_loads[k], study_loads[k]);
-        study_pair(pts, STUDY_N + k, &base, study_speeds[k], 100.0, study_speeds[k]);
-        study_pair(pts, 2 * STUDY_N + k, &base, study_speeds[k], 1000.0, study_speeds[k]);
+    acbb_study_compare *plan = malloc(sizeof *plan);
+    acbb_cli_point *pts = calloc(ACBB_STUDY_COMPARE_N, sizeof *pts);
+    if (!plan || !pts) {
+        free(plan);
+        free(pts);
+        return ACBB_EXIT_INTERNAL;
     }
-    run_points(pts, 2 * n_pairs, jobs, acbb_cli_interrupt_begin());
+    acbb_study_compare_plan(&base, plan);
+    acbb_cli_study_block blocks[ACBB_STUDY_NSWEEPS];
+    for (int b = 0; b < ACBB_STUDY_NSWEEPS; b++) {
+        const acbb_study_compare_block *pb = &plan->blocks[b];
+        blocks[b] = (acbb_cli_study_block){ pb->name, pb->title,
+                                            pb->sweep == ACBB_STUDY_LOAD ? "Fx N" : "n rpm",
+                                            pb->first, pb->count };
+    }
+    for (size_t i = 0; i < ACBB_STUDY_COMPARE_N; i++) {
+        pts[i].scene = plan->pts[i].scene;
+        snprintf(pts[i].value, sizeof pts[i].value, "%g", plan->pts[i].x);
+    }
+    acbb_study_compare_run(plan, (int)jobs, acbb_cli_interrupt_begin(), study_done, pts, NULL);
     acbb_cli_interrupt_end();
 
     if (a->val[CLI_OPT_CSV]) {
         acbb_cli_file csv = { 0 };
         rc = acbb_cli_file_open(&csv, a->val[CLI_OPT_CSV]);
         if (!rc) {
-            acbb_cli_study_csv(&csv.out, pts, blocks, 3);
+            acbb_cli_study_csv(&csv.out, pts, blocks, ACBB_STUDY_NSWEEPS);
             rc = acbb_cli_file_close(&csv);
         }
     }
     acbb_cli_out o;
     acbb_cli_out_init(&o, stdout);
-    acbb_cli_study_table(&o, pts, blocks, 3);
+    acbb_cli_study_table(&o, pts, blocks, ACBB_STUDY_NSWEEPS);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
-    if (!points_ok(pts, 2 * n_pairs)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    if (!points_ok(pts, ACBB_STUDY_COMPARE_N)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
     rc = acbb_cli_worst(rc, acbb_cli_cancelled("study", "the table shows the runs that finished"));
     free(pts);
+    free(plan);
     return rc;
 }
 
@@ -380,7 +377,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
 {
     long repeat, jobs;
     int rc = acbb_cli_count(a, CLI_OPT_REPEAT, 5, 1, 100000, &repeat);
-    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, acbb_batch_cpus(), 1, 100000, &jobs);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, acbb_batch_cpus(), 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (rc) return rc;
     /* Without PRESET: the seed's case, through the search path. */
     acbb_cli_args with_default = *a;

@@ -4,6 +4,7 @@
  * the man page and the parser cannot disagree (issue 16). */
 #include <string.h>
 #include "args.h"
+#include "common.h"
 #include "exit.h"
 
 /* The exit statuses (exit.h), for the overview and EXIT STATUS. */
@@ -90,11 +91,11 @@ int acbb_cli_cmd_help(const acbb_cli_args *a)
 {
     if (a->val[CLI_OPT_MAN]) {
         acbb_cli_print_man(stdout, ACBB_VERSION);
-        return 0;
+        return acbb_cli_stdout_check(0);
     }
     if (a->n_pos == 0) {
         acbb_cli_print_overview(stdout);
-        return 0;
+        return acbb_cli_stdout_check(0);
     }
     bool found = false;
     for (size_t i = 0; i < acbb_cli_n_commands; i++) {
@@ -105,7 +106,7 @@ int acbb_cli_cmd_help(const acbb_cli_args *a)
         acbb_cli_print_usage(stdout, c);
         found = true;
     }
-    return found ? 0 : acbb_cli_unknown_command(a->pos[0]);
+    return found ? acbb_cli_stdout_check(0) : acbb_cli_unknown_command(a->pos[0]);
 }
 
 /* ---- the manual page ---- */

@@ -171,7 +171,7 @@ static int cmd_version(const acbb_cli_args *a)
 {
     (void)a;
     printf("acbb %s\n", ACBB_VERSION);
-    return 0;
+    return acbb_cli_stdout_check(0);
 }
 
 /* The TUI gets its options as parsed here and the preset resolved through
@@ -205,7 +205,7 @@ int main(int argc, char **argv)
     }
     if (is_flag(argv[1], "--help", "-h")) {
         acbb_cli_print_overview(stdout);
-        return 0;
+        return acbb_cli_stdout_check(0);
     }
     if (is_flag(argv[1], "--version", NULL)) return cmd_version(NULL);
     int first = 2, rc = 0;

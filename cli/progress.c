@@ -29,7 +29,10 @@ static void on_interrupt(int sig)
 const atomic_int *acbb_cli_interrupt_begin(void)
 {
     atomic_store(&interrupt_flag, 0);
-    struct sigaction sa = { .sa_handler = on_interrupt };
+    /* SA_RESTART: the cancel travels through the flag alone; a large
+     * stdout write or a file commit under way must not fail with EINTR
+     * and turn a cancel (exit 3) into a write error (exit 4). */
+    struct sigaction sa = { .sa_handler = on_interrupt, .sa_flags = SA_RESTART };
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);

@@ -544,12 +544,21 @@ static void rob_progress_fn(void *ctx, size_t done, size_t total)
 
 /* The study and, with --sensitivity, its robustness, under the one
  * SIGINT/SIGTERM handler (progress.h). 0; -1 when a signal stopped
- * them; 2 for bad --inputs (message printed). */
+ * them; else the exit status of a failed robustness (2 for bad --inputs,
+ * 4 out of memory; message printed, and no report: it would lack the
+ * section asked for).
+ *
+ * Cancelled means the engine stopped a run (ACBB_CANCELLED), as for
+ * `sensitivity` and `bench accuracy`, the other all-or-nothing commands: a
+ * signal that arrives after the last run finished (before the handler is
+ * taken down) stopped nothing, so the complete report is printed and the
+ * exit status is the runs' own. */
 static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
                    acbb_study_rob *rob, bool *have_rob)
 {
     long jobs = 0;
-    if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 100000, &jobs) != 0) return ACBB_EXIT_INPUT;
+    if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs) != 0)
+        return ACBB_EXIT_INPUT;
     acbb_cli_progress rp;
     acbb_cli_progress_init(&rp, stderr, 0.0);
     const atomic_int *cancel = acbb_cli_interrupt_begin();
@@ -563,10 +572,14 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
                                   .progress = rob_progress_fn, .ctx = &rp };
         acbb_status rs = acbb_study_robustness(st, &o, rob, &err);
         *have_rob = rs == ACBB_OK;
-        if (rs == ACBB_CANCELLED) ss = rs;
-        else if (rs != ACBB_OK) fprintf(stderr, "acbb: report: --sensitivity: %s\n",
-                                        err.msg[0] ? err.msg : acbb_status_name(rs));
-        if (rs == ACBB_EINVAL) rc = ACBB_EXIT_INPUT;
+        if (rs == ACBB_CANCELLED) {
+            ss = rs;
+        } else if (rs != ACBB_OK) {
+            fprintf(stderr, "acbb: report: --sensitivity: %s; %s\n",
+                    err.msg[0] ? err.msg : acbb_status_name(rs), a->val[CLI_OPT_MD]
+                    ? "no report printed, --md file not written" : "no report printed");
+            rc = acbb_cli_exit_for(rs);
+        }
     }
     acbb_cli_progress_end(&rp);
     acbb_cli_interrupt_end();

@@ -50,7 +50,7 @@ static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
     o->oat = 1;
     long r = 0, jobs = 0;
     int rc = acbb_cli_count(a, CLI_OPT_MORRIS, 0, 0, ACBB_SENS_MORRIS_MAX, &r);
-    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, 256, &jobs);
+    if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs);
     o->morris_r = (int)r;
     o->morris_p = 4;
     o->seed = 1;

@@ -38,6 +38,11 @@ reached() {
 cancel() {
     local sig=$1 state=$2 i pid
     shift 2
+    # Emptied here, not by the child's redirection: until the child runs,
+    # the previous command's stderr would match STATE, and a SIGINT sent
+    # before the handler is in is lost (a script's background job ignores it).
+    : >"$TMP/out"
+    : >"$TMP/err"
     "$ACBB" "$@" >"$TMP/out" 2>"$TMP/err" &
     pid=$!
     for ((i = 0; i < 1200; i++)); do
@@ -96,12 +101,32 @@ for sig in INT TERM; do
     [ "$(grep -c ',converged,' "$TMP/p.csv")" -ge 1 ] && grep -q ',cancelled,' "$TMP/p.csv"
     t $? "sweep --param, $S: the CSV marks the unfinished points cancelled"
 
-    # study PRESET: the table shows which runs finished.
-    cancel $sig caught study "$P/7008C.ini" --set fidelity.model=dynamic
+    # study PRESET: the table shows which runs finished; a run the cancel
+    # stopped mid-way shows no numbers (they would be an unfinished
+    # transient's), in the table as in the CSV.
+    cancel $sig caught study "$P/7008C.ini" --set fidelity.model=dynamic --csv "$TMP/s.csv"
     code $rc 3 "study PRESET, $S"
     said "study PRESET, $S" study $S
     grep -q 'cancelled' "$TMP/out"
     t $? "study PRESET, $S: the table marks the cancelled runs"
+    # Per row, the table's "-" cells are the CSV's cancelled sides: three
+    # each (T, P, Qi), and dP's two when either side is.
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+             { te = $c["te_status"] == "cancelled"; wte = $c["wte_status"] == "cancelled"
+               print 3 * te + 3 * wte + 2 * (te || wte) }' "$TMP/s.csv" >"$TMP/s.want"
+    awk '/^ *[0-9]+  / { d = 0; for (i = 2; i <= 9; i++) d += $i == "-"; print d }' \
+        "$TMP/out" >"$TMP/s.got"
+    [ -s "$TMP/s.want" ] && cmp -s "$TMP/s.want" "$TMP/s.got"
+    t $? "study PRESET, $S: a cancelled run shows no numbers in the table"
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+             { for (m = 0; m < 2; m++) {
+                   s = m ? c["wte_status"] : c["te_status"]
+                   e = m ? c["dP_total_W"] : c["wte_status"]
+                   if ($s != "cancelled") continue
+                   n++
+                   for (i = s + 2; i < e; i++) if ($i != "") bad = 1 } }
+             END { exit bad || !n }' "$TMP/s.csv"
+    t $? "study PRESET, $S: the CSV's cancelled runs have empty values"
 
     # study seed --out DIR: no REPORT.md claiming a complete set.
     rm -rf "$TMP/figs"

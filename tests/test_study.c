@@ -8,7 +8,10 @@
  *    solution against the closed form of MODEL.md section 3, and backward
  *    Euler with dt -> infinity against the direct steady solve.
  * 3. The whole study: results independent of the number of threads, no
- *    NaN/Inf in any evidence (issue 11: axial load 0), cancellation. */
+ *    NaN/Inf in any evidence (issue 11: axial load 0), cancellation.
+ * 4. The TE/WTE comparison table (`acbb study PRESET`, issue 16): the plan's
+ *    count, order, pairing, speeds and loads, and its run against a Sim
+ *    driven here on the same scene. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +20,8 @@
 #include "geometry.h"
 #include "hertz.h"
 #include "network.h"
+#include "acbb/batch.h"
+#include "acbb/sim.h"
 #include "acbb/study.h"
 #include "acbb/units.h"
 
@@ -443,6 +448,133 @@ static void test_whole(void)
     acbb_study_free(c);
 }
 
+/* ---- 4. the TE/WTE comparison table ---- */
+
+/* `b` with `a`'s speed, load and thermal expansion is `a` field by field. */
+static int same_but_op(const acbb_scene *a, const acbb_scene *b)
+{
+    acbb_scene c = *b;
+    c.inner_speed = a->inner_speed;
+    c.axial_load = a->axial_load;
+    c.thermal_expansion = a->thermal_expansion;
+    return memcmp(&c, a, sizeof c) == 0;
+}
+
+static void test_compare_plan(const acbb_scene *base, const acbb_study_compare *c)
+{
+    static const char *const names[] = { "load", "speed_100N", "speed_1000N" };
+    int blocks = 1, order = 1, pairs = 1, ops = 1, rest = 1;
+    for (int b = 0; b < ACBB_STUDY_NSWEEPS; b++) {
+        const acbb_study_compare_block *k = &c->blocks[b];
+        blocks = blocks && k->sweep == b && strcmp(k->name, names[b]) == 0
+                 && k->first == (size_t)b * ACBB_STUDY_NPTS && k->count == ACBB_STUDY_NPTS;
+    }
+    ok(blocks, "compare: three blocks load, speed_100N, speed_1000N of %d pairs each",
+       ACBB_STUDY_NPTS);
+    ok(strcmp(c->blocks[0].title, "load sweep at 12345 rpm") == 0
+       && strcmp(c->blocks[1].title, "speed sweep at 100 N") == 0
+       && strcmp(c->blocks[2].title, "speed sweep at 1000 N") == 0,
+       "compare: titles name the load sweep's speed and the speed sweeps' loads (%s)",
+       c->blocks[0].title);
+    for (size_t i = 0; i < ACBB_STUDY_COMPARE_N; i++) {
+        const acbb_study_compare_point *p = &c->pts[i];
+        int b = (int)(i / (2 * ACBB_STUDY_NPTS)), k = (int)(i / 2 % ACBB_STUDY_NPTS);
+        order = order && p->sweep == b && p->k == k && p->mode == (int)(i % 2);
+        pairs = pairs && p->scene.thermal_expansion == (i % 2 == 0);
+        if (i % 2) pairs = pairs && same_but_op(&c->pts[i - 1].scene, &p->scene)
+                           && c->pts[i - 1].scene.thermal_expansion;
+        double rpm = b == ACBB_STUDY_LOAD ? 12345.0 : acbb_study_speeds[k];
+        double load = b == ACBB_STUDY_LOAD ? acbb_study_loads[k]
+                      : b == ACBB_STUDY_S100 ? 100.0 : 1000.0;
+        ops = ops && fabs(acbb_rads_to_rpm(p->scene.inner_speed) - rpm) <= 1e-9 * rpm
+              && p->scene.axial_load == load && p->x == (b == ACBB_STUDY_LOAD ? load : rpm);
+        rest = rest && same_but_op(&p->scene, base);
+    }
+    ok(ACBB_STUDY_COMPARE_N == 48, "compare: 48 points (3 sweeps x 8 x TE/WTE)");
+    ok(order, "compare: sweep by sweep, k ascending, TE then WTE");
+    ok(pairs, "compare: points 2k (TE) and 2k+1 (WTE) differ in thermal expansion only");
+    ok(ops, "compare: load sweep at the scene's 12345 rpm over acbb_study_loads, speed "
+            "sweeps over acbb_study_speeds at 100 and 1000 N");
+    ok(rest, "compare: every other key is the scene's");
+}
+
+typedef struct {
+    int seen[ACBB_STUDY_COMPARE_N];
+    acbb_status status[ACBB_STUDY_COMPARE_N];
+    int ran;
+    double total_W[ACBB_STUDY_COMPARE_N];
+    long iterations[ACBB_STUDY_COMPARE_N];
+} compare_seen;
+
+static void compare_done(void *ctx, const acbb_batch_result *r)
+{
+    compare_seen *s = ctx;
+    s->seen[r->index]++;
+    s->status[r->index] = r->status;
+    s->ran += r->ran;
+    s->total_W[r->index] = r->snap ? r->snap->losses.total : NAN;
+    s->iterations[r->index] = r->snap ? r->snap->iteration : -1;
+}
+
+/* Point `i` driven here as a plain Sim: the batch must give the same run. */
+static int same_as_sim(const acbb_study_compare *c, const compare_seen *s, size_t i)
+{
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    if (acbb_sim_new(&c->pts[i].scene, &sim, &err) != ACBB_OK) return 0;
+    acbb_run_ctl ctl = { 0 };
+    acbb_status st = acbb_sim_drive(sim, &ctl);
+    acbb_snapshot *snap = malloc(sizeof *snap);
+    int same = snap != NULL;
+    if (snap) acbb_sim_snapshot(sim, snap);
+    same = same && st == s->status[i] && snap->losses.total == s->total_W[i]
+           && snap->iteration == s->iterations[i];
+    free(snap);
+    acbb_sim_free(sim);
+    return same;
+}
+
+static void test_compare(void)
+{
+    acbb_scene base = preset();
+    base.inner_speed = acbb_rpm_to_rads(12345.0);
+    base.axial_load = 777.0;
+    base.thermal_expansion = 0;
+    acbb_study_compare *c = malloc(sizeof *c);
+    compare_seen *s = calloc(2, sizeof *s);
+    if (!c || !s) {
+        ok(0, "compare: out of memory");
+        free(c);
+        free(s);
+        return;
+    }
+    acbb_study_compare_plan(&base, c);
+    test_compare_plan(&base, c);
+
+    atomic_int cancel;
+    atomic_init(&cancel, 1);
+    acbb_status st = acbb_study_compare_run(c, 2, &cancel, compare_done, &s[0], NULL);
+    int once = 1;
+    for (size_t i = 0; i < ACBB_STUDY_COMPARE_N; i++)
+        once = once && s[0].seen[i] == 1 && s[0].status[i] == ACBB_CANCELLED;
+    ok(st == ACBB_CANCELLED && once && s[0].ran == 0,
+       "compare: cancelled first: ACBB_CANCELLED, every point reported once, none ran");
+
+    acbb_batch_stats stats = { 0 };
+    st = acbb_study_compare_run(c, 0, NULL, compare_done, &s[1], &stats);
+    int all = 1;
+    for (size_t i = 0; i < ACBB_STUDY_COMPARE_N; i++)
+        all = all && s[1].seen[i] == 1 && s[1].status[i] == ACBB_OK;
+    ok(st == ACBB_OK && all && stats.ran == ACBB_STUDY_COMPARE_N,
+       "compare: every point runs once and converges on %s", PRESET);
+    /* The transient (the scene's mode), not the steady solve: iterations > 1. */
+    ok(s[1].iterations[0] > 1 && same_as_sim(c, &s[1], 0) && same_as_sim(c, &s[1], 47),
+       "compare: the first and last points equal a Sim driven on their scene "
+       "(%ld iterations)", s[1].iterations[0]);
+    free(c);
+    free(s);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -451,5 +583,6 @@ int main(void)
     test_closed_form();
     test_be_vs_steady();
     test_whole();
+    test_compare();
     return done_testing();
 }

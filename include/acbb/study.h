@@ -27,6 +27,7 @@
 
 #include <stdatomic.h>
 #include <stddef.h>
+#include "acbb/batch.h"
 #include "acbb/scene.h"
 #include "acbb/sensitivity.h"
 #include "acbb/sim.h"
@@ -292,5 +293,52 @@ void acbb_study_rob_free(acbb_study_rob *r);
 
 /* The scene `s` was planned from. */
 const acbb_scene *acbb_study_scene(const acbb_study *s);
+
+/* ---- the TE/WTE comparison table (`acbb study PRESET`) ----
+ *
+ * The study's three sweeps on the scene as given, each point with (TE) and
+ * without (WTE) thermal expansion, otherwise equal: the load sweep
+ * (acbb_study_loads) at the scene's own speed (the check study's is 15000
+ * rpm), the speed sweeps (acbb_study_speeds) at 100 N and 1000 N. Every
+ * other key is the scene's, its fidelity included; each point runs as its
+ * scene says (by default the transient from ambient, whose iteration count
+ * a table can publish). The plan is plain data owned by the caller. */
+
+#define ACBB_STUDY_COMPARE_N (ACBB_STUDY_NSWEEPS * ACBB_STUDY_NPTS * 2)
+
+typedef struct {
+    acbb_scene scene;            /* the scene with speed, load and TE set */
+    int sweep;                   /* ACBB_STUDY_LOAD, _S100 or _S1000 */
+    int k;                       /* its index in the sweep, 0..NPTS-1 */
+    int mode;                    /* ACBB_STUDY_TE or ACBB_STUDY_WTE */
+    double x;                    /* the abscissa: load in N (load sweep), else rpm */
+} acbb_study_compare_point;
+
+/* Pairs [first, first + count) of the points: pair k is points 2k (TE) and
+ * 2k+1 (WTE). */
+typedef struct {
+    int sweep;                   /* ACBB_STUDY_LOAD, _S100 or _S1000 */
+    const char *name;            /* "load", "speed_100N", "speed_1000N" (static) */
+    char title[64];              /* "load sweep at 15000 rpm", "speed sweep at 100 N" */
+    size_t first, count;
+} acbb_study_compare_block;
+
+/* Points in table order: sweep by sweep, k ascending, TE then WTE. */
+typedef struct {
+    acbb_study_compare_point pts[ACBB_STUDY_COMPARE_N];
+    acbb_study_compare_block blocks[ACBB_STUDY_NSWEEPS];
+} acbb_study_compare;
+
+/* Fill `out` from `base` (copied into every point). Nothing runs. */
+void acbb_study_compare_plan(const acbb_scene *base, acbb_study_compare *out);
+
+/* Run every point of `c` on the batch runner (batch.h: `jobs` 0 is
+ * acbb_batch_cpus(); `cancel` may be NULL). `done` (may be NULL) gets
+ * each point's result, index = its place in c->pts; `stats` may be NULL.
+ * Returns acbb_batch_run's status (ACBB_CANCELLED when a cancel stopped
+ * the batch; failed points are results, not errors). */
+acbb_status acbb_study_compare_run(const acbb_study_compare *c, int jobs,
+                                   const atomic_int *cancel, acbb_batch_done_fn done,
+                                   void *ctx, acbb_batch_stats *stats);
 
 #endif

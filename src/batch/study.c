@@ -13,6 +13,7 @@
 #include "acbb/batch.h"
 #include "acbb/measure.h"
 #include "acbb/study.h"
+#include "acbb/units.h"
 #include "study_priv.h"
 #include "cancel.h"
 
@@ -165,6 +166,14 @@ static void init_point(acbb_study_point *p, const acbb_scene *base, double rpm, 
     }
 }
 
+/* The one grid of the study and of the comparison table: point k of
+ * sweep b, the load sweep at `load_rpm` (MODEL.md 12 "Conditions"). */
+static void grid_at(int b, int k, double load_rpm, double *rpm, double *load)
+{
+    *rpm = b == ACBB_STUDY_LOAD ? load_rpm : acbb_study_speeds[k];
+    *load = b == ACBB_STUDY_LOAD ? acbb_study_loads[k] : b == ACBB_STUDY_S100 ? 100.0 : 1000.0;
+}
+
 static size_t fill_level(acbb_study_point *pts, acbb_study_point *blk[ACBB_STUDY_NSWEEPS],
                          const acbb_scene *base, int l2)
 {
@@ -173,9 +182,8 @@ static size_t fill_level(acbb_study_point *pts, acbb_study_point *blk[ACBB_STUDY
         blk[b] = &pts[i];
         for (int k = 0; k < ACBB_STUDY_NPTS; k++)
             for (int m = 0; m < 2; m++) {
-                double rpm = b == ACBB_STUDY_LOAD ? BASE_RPM : acbb_study_speeds[k];
-                double load = b == ACBB_STUDY_LOAD ? acbb_study_loads[k]
-                              : b == ACBB_STUDY_S100 ? 100.0 : 1000.0;
+                double rpm, load;
+                grid_at(b, k, BASE_RPM, &rpm, &load);
                 init_point(&pts[i++], base, rpm, load, m == ACBB_STUDY_TE, l2,
                            !l2 && b == ACBB_STUDY_LOAD && m == ACBB_STUDY_TE);
             }
@@ -236,6 +244,77 @@ acbb_status acbb_study_run(acbb_study *s, int jobs, const atomic_int *cancel)
         if (!s->runs.all[i].ok) return s->runs.all[i].status != ACBB_OK ? s->runs.all[i].status
                                                                          : ACBB_NOT_CONVERGED;
     return ACBB_OK;
+}
+
+/* ---- the TE/WTE comparison table ---- */
+
+/* The scene is a plain value in SI units: the table edits it directly
+ * (the speed through rpm, as the table shows it). */
+void acbb_study_compare_plan(const acbb_scene *base, acbb_study_compare *out)
+{
+    static const char *const names[ACBB_STUDY_NSWEEPS] = { "load", "speed_100N",
+                                                           "speed_1000N" };
+    double base_rpm = acbb_rads_to_rpm(base->inner_speed);
+    size_t i = 0;
+    for (int b = 0; b < ACBB_STUDY_NSWEEPS; b++) {
+        acbb_study_compare_block *blk = &out->blocks[b];
+        blk->sweep = b;
+        blk->name = names[b];
+        blk->first = (size_t)b * ACBB_STUDY_NPTS;
+        blk->count = ACBB_STUDY_NPTS;
+        if (b == ACBB_STUDY_LOAD)
+            snprintf(blk->title, sizeof blk->title, "load sweep at %.0f rpm", base_rpm);
+        else
+            snprintf(blk->title, sizeof blk->title, "speed sweep at %.0f N",
+                     b == ACBB_STUDY_S100 ? 100.0 : 1000.0);
+        for (int k = 0; k < ACBB_STUDY_NPTS; k++)
+            for (int m = ACBB_STUDY_TE; m <= ACBB_STUDY_WTE; m++) {
+                acbb_study_compare_point *p = &out->pts[i++];
+                double rpm, load;
+                grid_at(b, k, base_rpm, &rpm, &load);
+                p->scene = *base;
+                p->scene.inner_speed = acbb_rpm_to_rads(rpm);
+                p->scene.axial_load = load;
+                p->scene.thermal_expansion = m == ACBB_STUDY_TE;
+                p->sweep = b;
+                p->k = k;
+                p->mode = m;
+                p->x = b == ACBB_STUDY_LOAD ? load : rpm;
+            }
+    }
+}
+
+typedef struct {
+    const acbb_study_compare *c;
+    acbb_batch_done_fn done;
+    void *ctx;
+} compare_run;
+
+/* Each point runs as its scene says: the table publishes the iterations
+ * of the transient to steady state (study.h). */
+static acbb_status compare_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                                 acbb_error *err)
+{
+    (void)err;
+    *out = ((const compare_run *)ctx)->c->pts[i].scene;
+    *mode = ACBB_BATCH_AS_SCENE;
+    return ACBB_OK;
+}
+
+static void compare_done(void *ctx, const acbb_batch_result *res)
+{
+    const compare_run *r = ctx;
+    r->done(r->ctx, res);
+}
+
+acbb_status acbb_study_compare_run(const acbb_study_compare *c, int jobs,
+                                   const atomic_int *cancel, acbb_batch_done_fn done,
+                                   void *ctx, acbb_batch_stats *stats)
+{
+    compare_run r = { c, done, ctx };
+    acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = compare_scene,
+                          .done = done ? compare_done : NULL, .ctx = &r };
+    return acbb_batch_run(ACBB_STUDY_COMPARE_N, &o, stats);
 }
 
 /* ---- results ---- */
