@@ -64,7 +64,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
       "byte. JSONL or CSV (not mixed); OUT - is stdout.\n",
       0, 2, CLI_MAX_POS, -1, acbb_cli_cmd_merge },
-    { "sensitivity", NULL, "PRESET", "which uncertain input moves a result, or flips its sign",
+    { "sensitivity", NULL, "PRESET", "which uncertain input moves a result or flips its sign",
       "e.g. acbb sensitivity 7008C --metric balls[0].Qi_N --delta thermal_expansion\n"
       "Every uncertain input (`acbb keys` shows its plausible range and source) is\n"
       "set to each end of its range, one at a time; the table is sorted by effect\n"

@@ -301,6 +301,14 @@ done <"$TMP/rows.txt"
 nrows=$(wc -l <"$TMP/rows.txt")
 [ "$nrows" -ge 18 ] && [ -z "$missing" ]
 t $? "every command of the table ($nrows) is in acbb help and the man page${missing:+ (missing:$missing)}"
+# Over SSH at 80x24: the overview and every command's help fit 80 columns.
+wide=""
+awk 'length($0) > 80' "$TMP/help.txt" | grep -q . && wide="$wide overview"
+while read -r name sub; do
+    "$ACBB" help $name $sub 2>&1 | awk 'length($0) > 80' | grep -q . && wide="$wide $name${sub:+-$sub}"
+done <"$TMP/rows.txt"
+[ -z "$wide" ]
+t $? "acbb help and every acbb help COMMAND fit 80 columns${wide:+ (not:$wide)}"
 opts=$(sed -n -E 's/^    \[CLI_OPT_[A-Z_]+\] = \{ "([a-z-]+)".*/\1/p' cli/args.c)
 missing=""
 nopts=0
