@@ -417,7 +417,7 @@ has "$TMP/err" "$TMP/xdg/acbb/presets" "the message lists the user directory sea
 # ---- a real install, used from another directory ----
 if [ -n "$BUILD" ] && command -v meson >/dev/null 2>&1; then
     # Two tests install from the same build directory (test_cli, test_install_lib):
-    # one at a time (a CI run once failed them both under the sanitizers).
+    # one at a time (both write the build's meson-logs/install-log.txt).
     flock "$BUILD/meson-private/acbb-test-install.lock" \
         meson install -C "$BUILD" --destdir "$TMP/d" --no-rebuild --quiet >"$TMP/inst.log" 2>"$TMP/err"
     code $? 0 "meson install --destdir"

@@ -18,7 +18,7 @@ trap 'rm -rf "$TMP"' EXIT
 D=$TMP/d
 
 # Two tests install from the same build directory (test_cli, test_install_lib):
-# one at a time (a CI run once failed them both under the sanitizers).
+# one at a time (both write the build's meson-logs/install-log.txt).
 flock "$BUILD/meson-private/acbb-test-install.lock" \
     meson install -C "$BUILD" --destdir "$D" --no-rebuild --quiet >"$TMP/inst.log" 2>"$TMP/err"
 code $? 0 "meson install --destdir"
