@@ -78,6 +78,10 @@ typedef struct {
      * steps of a run, so a cancel takes effect within one step (plus an
      * acbb_sim_new already under way) even in a long dynamic run. */
     const _Atomic int *cancel;
+    /* Ball workers of each run at the dynamic level (acbb_sim_opts.threads;
+     * 0: the default). The envelope, whose points already fill the cores,
+     * passes 1. The results do not depend on it. */
+    int sim_threads;
 } acbb_accuracy_options;
 
 /* The frontier's tolerance on total loss and outer-ring temperature rise. */

@@ -216,13 +216,13 @@ static acbb_status run_sim(acbb_sim *sim, const acbb_scene *sc, const _Atomic in
 /* One timed run: acbb_sim_new + acbb_sim_run + acbb_sim_free on the clock,
  * the snapshot copy off it. Returns the run's status; a run that ended
  * without converging is reported as such even if the last step said OK. */
-static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel,
+static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel, int threads,
                              acbb_acc_path *path, acbb_snapshot *snap, int *have_snap, double *ms,
                              acbb_error *err)
 {
     acbb_sim *sim = NULL;
     double t0 = acbb_now_ms();
-    acbb_status st = acbb_sim_new_ctl(sc, cancel, &sim, err);
+    acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ cancel, threads }, &sim, err);
     if (st != ACBB_OK) {
         *ms = acbb_now_ms() - t0;
         *have_snap = 0;
@@ -268,7 +268,8 @@ static acbb_status make_scene(const acbb_scene *base, const plan_entry *p, acbb_
  * results are those of the first run; later runs only add timing samples.
  * A failure ends the repeats (the same failure would recur). */
 static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
-                      const _Atomic int *cancel, acbb_accuracy_row *r, acbb_acc_path *path)
+                      const _Atomic int *cancel, int threads, acbb_accuracy_row *r,
+                      acbb_acc_path *path)
 {
     row_init(r, p);
     acbb_error e = { { 0 } };
@@ -287,7 +288,8 @@ static void run_entry(const acbb_scene *base, const plan_entry *p, int repeats,
     int done = 0;
     for (; done < repeats && !acbb_cancelled(cancel); done++) {
         int have_snap = 0;
-        st = timed_run(&sc, cancel, done == 0 ? path : NULL, &snap, &have_snap, &times[done], &e);
+        st = timed_run(&sc, cancel, threads, done == 0 ? path : NULL, &snap, &have_snap,
+                       &times[done], &e);
         if (done == 0 && have_snap) r->iterations = snap.iteration;
         if (st != ACBB_OK) {
             done++;
@@ -369,7 +371,7 @@ acbb_status acbb_acc_run_plan(const acbb_scene *base_in, const acbb_accuracy_opt
     for (size_t i = 0; i < PLAN_N; i++) {
         if (!planned(o, &k_plan[i])) continue;
         if (acbb_cancelled(o->cancel)) break;
-        run_entry(&base, &k_plan[i], o->repeats, o->cancel, &rows[done],
+        run_entry(&base, &k_plan[i], o->repeats, o->cancel, o->sim_threads, &rows[done],
                   paths ? &paths[done] : NULL);
         /* A cancel during the row may have cut its run short: drop it. */
         if (acbb_cancelled(o->cancel)) break;
@@ -407,12 +409,12 @@ acbb_status acbb_accuracy_run(const acbb_scene *base, const acbb_accuracy_option
 }
 
 /* One run of a finished scene (the envelope's ladder entries). */
-void acbb_acc_run_one(const acbb_scene *sc, const _Atomic int *cancel, acbb_accuracy_row *r,
-                      acbb_acc_path *path)
+void acbb_acc_run_one(const acbb_scene *sc, const _Atomic int *cancel, int threads,
+                      acbb_accuracy_row *r, acbb_acc_path *path)
 {
     plan_entry p = { r->knob, "", "", NULL, NULL, r->is_reference, 0, -1 };
     acbb_accuracy_row keep = *r;
-    run_entry(sc, &p, 1, cancel, r, path);
+    run_entry(sc, &p, 1, cancel, threads, r, path);
     memcpy(r->key, keep.key, sizeof r->key);
     memcpy(r->value, keep.value, sizeof r->value);
 }

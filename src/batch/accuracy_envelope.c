@@ -153,7 +153,7 @@ static void run_ladder(env *E, const acbb_scene *sc, acbb_accuracy_row *rows,
         rows[j].is_reference = lad[j].preset == ACBB_FIDELITY_REFERENCE;
         snprintf(rows[j].key, sizeof rows[j].key, "ladder");
         snprintf(rows[j].value, sizeof rows[j].value, "%s", lad[j].name);
-        acbb_acc_run_one(&s, E->cancel, &rows[j], &paths[j]);
+        acbb_acc_run_one(&s, E->cancel, E->plan.sim_threads, &rows[j], &paths[j]);
         rows[j].is_default = 0; /* run_one compared the scene with itself */
     }
 }
@@ -312,7 +312,10 @@ acbb_status acbb_accuracy_envelope(const acbb_scene *base, const acbb_envelope_o
         E.progress = progress;
         E.ctx = ctx;
         pthread_mutex_init(&E.lock, NULL);
-        acbb_batch_for(E.n_points, o ? o->jobs : 0, point_fn, &E, E.cancel);
+        int jobs = o ? o->jobs : 0;
+        /* Points fill the cores: each run keeps to its thread (batch.h). */
+        E.plan.sim_threads = acbb_batch_workers(E.n_points, jobs) > 1 ? 1 : 0;
+        acbb_batch_for(E.n_points, jobs, point_fn, &E, E.cancel);
         pthread_mutex_destroy(&E.lock);
         if (acbb_cancelled(E.cancel))
             st = acbb_error_set(err, ACBB_CANCELLED, "accuracy envelope: cancelled");

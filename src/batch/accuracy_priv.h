@@ -26,8 +26,8 @@ acbb_status acbb_acc_resolve(const acbb_accuracy_options *opt, acbb_accuracy_opt
 
 /* One run of `sc` (no repeats) recording its path; results and work in r
  * (r->knob, key, value set by the caller). */
-void acbb_acc_run_one(const acbb_scene *sc, const _Atomic int *cancel, acbb_accuracy_row *r,
-                      acbb_acc_path *path);
+void acbb_acc_run_one(const acbb_scene *sc, const _Atomic int *cancel, int threads,
+                      acbb_accuracy_row *r, acbb_acc_path *path);
 
 /* Relative error |x - ref| / |ref|; NaN when undefined. */
 double acbb_acc_rel_err(double x, double ref);
