@@ -129,7 +129,7 @@ check "the engine does not print (printf, puts, stdout/stderr, fd 1/2; outfile.c
 # include lines are read as they are (a quoted name is the point here).
 bad_inc=""
 for f in "${clients[@]}"; do
-    dir=$(dirname "$f")
+    dir=${f%/*}
     while IFS=: read -r ln name; do
         case "$name" in
             ../cli/*|../ui/*) [ -f "$dir/$name" ] || bad_inc+="$f:$ln: $name (missing)"$'\n' ;;
@@ -165,16 +165,15 @@ t $? "no engine message names a CLI flag"
 
 # (5) Layer order (README "Source tree"): an engine folder includes internal
 # headers only from folders below it: physics < scene < run < batch < io.
-rank() { case $1 in physics) echo 0 ;; scene) echo 1 ;; run) echo 2 ;; batch) echo 3 ;; io) echo 4 ;; *) echo 9 ;; esac; }
+declare -A rank=([physics]=0 [scene]=1 [run]=2 [batch]=3 [io]=4) home=()
+for f in src/*/*.h; do h=${f##*/}; d=${f%/*}; home[$h]=${d##*/}; done
 bad_layer=""
 for f in src/*/*.[ch]; do
-    d=$(basename "$(dirname "$f")")
+    d=${f%/*}; d=${d##*/}
     while IFS= read -r h; do
-        for hit in src/*/"$h"; do
-            [ -f "$hit" ] || continue
-            hd=$(basename "$(dirname "$hit")")
-            [ "$(rank "$hd")" -le "$(rank "$d")" ] || bad_layer+="$f: $h ($d includes $hd)"$'\n'
-        done
+        hd=${home[$h]:-}
+        [ -z "$hd" ] || [ "${rank[$hd]}" -le "${rank[$d]}" ] ||
+            bad_layer+="$f: $h ($d includes $hd)"$'\n'
     done < <(sed -n -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"([^"/]+)".*/\1/p' "$f")
 done
 [ -z "$bad_layer" ]
