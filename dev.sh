@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian machine:
 #   ./dev.sh            install the Debian packages, build, open the TUI on presets/7008C.ini
-#   ./dev.sh test       install, build, run every test suite (fast, slow, slurm)
+#   ./dev.sh test       install, build, run every test suite (fast, slow, slurm, install)
 #   ./dev.sh run ARGS   install, build, run `acbb ARGS` (e.g. run presets/7008C.ini --json)
 set -eu
 cd "$(dirname "$0")"
@@ -35,12 +35,14 @@ case "${1:-tui}" in
     tui) shift 2>/dev/null || true; exec ./build/acbb tui "$@" ;;
     test)
         # Every suite: the fast default (under a minute), then the slow
-        # fidelity matrix and the Slurm/GNU parallel sweep (they skip what
-        # this machine lacks). Fuzzing needs clang: see README.
+        # fidelity matrix, the Slurm/GNU parallel sweep (they skip what
+        # this machine lacks) and the library's install suite (DESTDIR,
+        # pkg-config example, Python). Fuzzing needs clang: see README.
         rc=0
         meson test -C build --print-errorlogs || rc=1
         meson test -C build --suite slow --logbase slowlog --print-errorlogs || rc=1
         meson test -C build --suite slurm --logbase slurmlog --print-errorlogs || rc=1
+        meson test -C build --suite install --logbase installlog --print-errorlogs || rc=1
         exit $rc ;;
     run) shift; exec ./build/acbb "$@" ;;
     *) echo "usage: ./dev.sh [tui [PRESET] | test | run ARGS...]" >&2; exit 2 ;;
