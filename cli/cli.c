@@ -256,10 +256,6 @@ int acbb_cli_cmd_edit(const acbb_cli_args *a)
 
 /* ---- acbb study ---- */
 
-/* The engine's abscissae (study.h), for `bench speed`'s load sweep. */
-#define STUDY_N ACBB_STUDY_NPTS
-#define study_loads acbb_study_loads
-
 static int study_table(const acbb_cli_args *a, long jobs);
 
 /* PRESET `seed` is the seed's case, 7008C, through the preset search path;
@@ -394,7 +390,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
     struct utsname u;
     const char *machine = uname(&u) == 0 ? u.machine : "unknown";
     double *times = calloc((size_t)repeat, sizeof *times);
-    acbb_cli_point *pts = calloc(STUDY_N, sizeof *pts);
+    acbb_cli_point *pts = calloc(ACBB_STUDY_NPTS, sizeof *pts);
     if (!times || !pts) {
         free(times);
         free(pts);
@@ -408,13 +404,15 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
     printf("one run            %10.2f ms  (%ld iterations, %s, model %s)\n",
            acbb_median(times, (size_t)repeat), pts[0].snap.iteration,
            acbb_cli_point_status(&pts[0]), acbb_model_level_name(base.model));
-    if ((rc = bench_points(&base, study_loads, STUDY_N, 1, repeat, times, pts, NULL)))
+    if ((rc = bench_points(&base, acbb_study_loads, ACBB_STUDY_NPTS, 1, repeat, times, pts,
+                           NULL)))
         goto fail;
     printf("8-load sweep       %10.2f ms  (1 thread; loads 50..1000 N)\n",
            acbb_median(times, (size_t)repeat));
     if (jobs > 1) {
         int w = 1;
-        if ((rc = bench_points(&base, study_loads, STUDY_N, jobs, repeat, times, pts, &w)))
+        if ((rc = bench_points(&base, acbb_study_loads, ACBB_STUDY_NPTS, jobs, repeat, times,
+                               pts, &w)))
             goto fail;
         printf("8-load sweep       %10.2f ms  (%d threads)\n", acbb_median(times, (size_t)repeat),
                w);
@@ -427,7 +425,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
 fail:
     acbb_cli_interrupt_end();
     rc = acbb_cli_interrupted() ? acbb_cli_cancelled("bench speed", "the timings above finished")
-                                : bench_fail(pts, STUDY_N);
+                                : bench_fail(pts, ACBB_STUDY_NPTS);
     free(times);
     free(pts);
     return rc;
