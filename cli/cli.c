@@ -122,15 +122,25 @@ static void run_row_cb(void *ctx, const acbb_snapshot *snap)
     if (r->hist) acbb_history_push(r->hist, snap);
 }
 
+/* A set's bearings, read before the Sim is freed (NULL for one bearing). */
+static acbb_snapshot *bearing_snaps(const acbb_sim *sim, const acbb_snapshot *snap)
+{
+    if (snap->n_bearings < 2) return NULL;
+    acbb_snapshot *b = malloc(sizeof *b * (size_t)snap->n_bearings);
+    for (int k = 0; b && k < snap->n_bearings; k++) acbb_sim_bearing_snapshot(sim, k, &b[k]);
+    return b;
+}
+
 static int run_report(const acbb_cli_args *a, const char *preset, const acbb_scene *sc,
-                      const acbb_snapshot *snap)
+                      const acbb_snapshot *snap, const acbb_snapshot *bear)
 {
     acbb_cli_out o;
     acbb_cli_out_init(&o, stdout);
     const char *base = a->val[CLI_OPT_BASELINE];
     bool json = a->val[CLI_OPT_JSON] != NULL;
     int rc = 0;
-    if (json && !base) acbb_cli_json_run(&o, sc, snap);
+    if (json && !base && bear) acbb_cli_json_run_set(&o, sc, snap, bear);
+    else if (json && !base) acbb_cli_json_run(&o, sc, snap);
     else if (!json && !a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, sc, snap);
     if (base) rc = acbb_cli_baseline(base, sc, snap, json);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
@@ -200,9 +210,11 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
                              cancel });
     acbb_cli_progress_end(&prog);
     acbb_cli_interrupt_end();
+    acbb_snapshot *bear = bearing_snaps(sim, snap);
     acbb_sim_free(sim);
     rc = csv_path ? acbb_cli_file_close(&csv) : 0;
-    rc = acbb_cli_worst(run_report(a, preset, &sc, snap), rc);
+    rc = acbb_cli_worst(run_report(a, preset, &sc, snap, bear), rc);
+    free(bear);
     if (plot && !rows.hist) rc = acbb_cli_worst(rc, ACBB_EXIT_INTERNAL);
     if (rows.hist) rc = acbb_cli_worst(rc, acbb_cli_write_plot(plot, rows.hist, snap, preset));
     free(rows.hist);

@@ -257,6 +257,15 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapsho
     o->nonfinite += j.nonfinite;
 }
 
+void acbb_cli_json_run_set(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
+                           const acbb_snapshot *bearings)
+{
+    acbb_json j;
+    acbb_json_init(&j, o->f);
+    acbb_json_write_run_set(&j, sc, s, bearings, s->n_bearings);
+    o->nonfinite += j.nonfinite;
+}
+
 void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
                           const char *status, const char *message)
 {

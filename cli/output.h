@@ -70,6 +70,9 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap);
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
                        const acbb_snapshot *snap);
+/* The same for a bearing set: bearings[0..s->n_bearings) (json.h). */
+void acbb_cli_json_run_set(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
+                           const acbb_snapshot *bearings);
 /* JSON for a run that never started (acbb_sim_new failed). */
 void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
                           const char *status, const char *message);

@@ -9,6 +9,7 @@
 #include "acbb/units.h"
 #include "acbb/limits.h"
 #include "acbb/scene.h"
+#include "acbb/set.h"
 #include "acbb/preset_info.h"
 #include "acbb/designation.h"
 #include "acbb/fidelity.h"

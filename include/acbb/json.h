@@ -53,6 +53,12 @@ void acbb_json_value_text(acbb_json *j, const char *key, const char *text);
  * (outputs.h), work counters, inactive effects, balls, and the scene with
  * every preset key. */
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s);
+/* The same for a bearing set (MODEL.md 14) with b[0..n) its bearings'
+ * snapshots (acbb_sim_bearing_snapshot): adds `bearings` (one object per
+ * bearing, bearing 0 first, with its single-bearing results) and `set`
+ * (the output table's "set" entries). n <= 1 or b NULL: acbb_json_write_run. */
+void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
+                             const acbb_snapshot *b, int n);
 /* A run that never started (acbb_sim_new failed): status, message,
  * iterations 0 and the scene. */
 void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *status,

@@ -4,5 +4,6 @@
 
 #define ACBB_MAX_BALLS 64      /* balls per bearing */
 #define ACBB_MAX_NODES 48      /* thermal network nodes */
+#define ACBB_MAX_SET 4         /* bearings in a set (MODEL.md 14) */
 
 #endif

@@ -35,6 +35,9 @@ typedef enum { ACBB_LOSS_CLEAN, ACBB_LOSS_SEED } acbb_loss_form;
 typedef enum { ACBB_HYST_MAJOR, ACBB_HYST_MINOR } acbb_hyst_axis;
 typedef enum { ACBB_NET_46, ACBB_NET_7 } acbb_network_kind;
 typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode;
+/* [set] arrangement (MODEL.md 14): single = one bearing (today's scenes). */
+typedef enum { ACBB_SET_SINGLE, ACBB_SET_DB, ACBB_SET_DF, ACBB_SET_DT, ACBB_SET_DBT,
+               ACBB_SET_QBC } acbb_set_arrangement;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 /* fidelity.preset (fidelity.h): custom = the individual knobs. */
 typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
@@ -103,6 +106,14 @@ typedef struct {
     double h_natural;            /* housing exterior convection, W/(m^2 K) */
     acbb_preload_mode preload;
     double preload_force;        /* N; displacement preload set at 20 C, 0 rpm */
+    /* [set] (MODEL.md 14): bearings on one shaft. For a set, preload =
+     * displacement is rigid (spacers), force is a spring on the floating
+     * side; preload_force is the assembly preload; axial/radial/moment
+     * loads act on the shaft at the nose. */
+    acbb_set_arrangement set_arrangement;
+    int set_n_bearings;          /* DT: tandem bearings 2..4; 0 = the arrangement's count */
+    double set_spacing;          /* centre distance of neighbours, m; 0 = adjacent (width) */
+    double set_load_offset;      /* nose x_F minus the set's centre x_0, m */
 
     /* [surroundings] (MODEL.md 8.1, 13): sizes 0 = derived from the bearing
      * (acbb_scene_surroundings); housing and cap use materials.housing */

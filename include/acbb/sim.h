@@ -67,6 +67,28 @@ typedef struct {
 
 typedef enum { ACBB_RUN_RUNNING, ACBB_RUN_CONVERGED, ACBB_RUN_FAILED } acbb_run_state;
 
+/* A bearing set's own results (MODEL.md 14; acbb/set.h). Stiffness at the
+ * nose: axial dFa/d(shaft dx), radial dFr/d(nose dz), tilt dM/d(tilt),
+ * each with the other shaft freedoms free (0 until converged). Per-bearing
+ * entries: axial load in the bearing's own frame, contact_lost = every
+ * ball of that bearing unloaded (it lifted off). */
+typedef struct {
+    double preload_N;           /* axial force through the set with no external thrust, now */
+    double preload_assembly_N;  /* mounting.preload_N */
+    double liftoff_thrust_N;    /* external thrust at which a bearing lifts off (0 until converged) */
+    double stiffness_axial;     /* N/m */
+    double stiffness_radial;    /* N/m */
+    double stiffness_tilt;      /* N m/rad */
+    double shaft_dx, shaft_dz, shaft_tilt; /* shaft displacement (m) and tilt (rad) at the centre */
+    double spacer_growth;       /* inner minus outer axial growth between the end bearings, m */
+    int orientation[ACBB_MAX_SET];
+    double axial_force[ACBB_MAX_SET];   /* N */
+    int contact_lost[ACBB_MAX_SET];
+    double T_outer_ring[ACBB_MAX_SET];  /* C */
+    double T_inner_ring[ACBB_MAX_SET];  /* C */
+    double loss_total[ACBB_MAX_SET];    /* W */
+} acbb_set_view;
+
 typedef struct {
     acbb_run_state state;
     acbb_status status;         /* ACBB_OK while running or converged; named failure otherwise */
@@ -94,6 +116,11 @@ typedef struct {
     double heat_in, heat_out;   /* W: sources vs heat into fixed nodes (energy balance) */
     int n_balls;
     acbb_ball_view balls[ACBB_MAX_BALLS];
+    /* A set (MODEL.md 14): the fields above describe bearing 0 (losses and
+     * heat of the whole set in energy), acbb_sim_bearing_snapshot gives each
+     * bearing's; n_bearings = 1 for a single bearing (set all zero). */
+    int n_bearings;
+    acbb_set_view set;
 } acbb_snapshot;
 
 typedef struct acbb_sim acbb_sim;
@@ -156,6 +183,10 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 
 /* Copy out what a user sees (never NaN/Inf: checked before publication). */
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *out);
+
+/* Bearing k's full single-bearing snapshot (k = 0 .. n_bearings - 1; for
+ * a single bearing k = 0 is acbb_sim_snapshot). ACBB_EINVAL for another k. */
+acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out);
 
 /* Restart with an edited scene, keeping the current temperatures (warm)
  * or from ambient (warm == 0). The network kind must be unchanged for a

@@ -86,7 +86,51 @@ static void ring_and_work(acbb_json *j, const acbb_scene *sc, const acbb_snapsho
     acbb_json_close(j, ']');
 }
 
+/* The table's temperatures and every node's. */
+static void temperatures(acbb_json *j, const acbb_snapshot *s)
+{
+    acbb_json_open(j, "temperature_C", '{', false);
+    rows(j, s, "temperature_C", -1);
+    acbb_json_open(j, "nodes", '[', true);
+    for (int i = 0; i < s->n_nodes && i < ACBB_MAX_NODES; i++) acbb_json_num(j, NULL, s->T[i]);
+    acbb_json_close(j, ']');
+    acbb_json_close(j, '}');
+}
+
+/* One bearing of a set: its single-bearing results (MODEL.md 14). */
+static void bearing(acbb_json *j, const acbb_snapshot *b, const acbb_set_view *v, int k)
+{
+    acbb_json_open(j, NULL, '{', false);
+    acbb_json_long(j, "index", k);
+    acbb_json_long(j, "orientation", v->orientation[k]);
+    acbb_json_num(j, "axial_force_N", v->axial_force[k]);
+    acbb_json_bool(j, "contact_lost", v->contact_lost[k] != 0);
+    section(j, b, "losses_W");
+    temperatures(j, b);
+    section(j, b, "expansion_um");
+    section(j, b, "ring");
+    section(j, b, "squeeze_um");
+    acbb_json_open(j, "balls", '[', false);
+    for (int i = 0; i < b->n_balls && i < ACBB_MAX_BALLS; i++) ball(j, b, i);
+    acbb_json_close(j, ']');
+    acbb_json_close(j, '}');
+}
+
+static void set_part(acbb_json *j, const acbb_snapshot *s, const acbb_snapshot *b, int n)
+{
+    acbb_json_open(j, "bearings", '[', false);
+    for (int k = 0; k < n; k++) bearing(j, &b[k], &s->set, k);
+    acbb_json_close(j, ']');
+    section(j, s, "set");
+}
+
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
+{
+    acbb_json_write_run_set(j, sc, s, NULL, 0);
+}
+
+void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
+                             const acbb_snapshot *b, int n)
 {
     acbb_json_open(j, NULL, '{', false);
     acbb_json_str(j, "status", acbb_run_status_name(s));
@@ -97,12 +141,7 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
 
     section(j, s, "losses_W");
 
-    acbb_json_open(j, "temperature_C", '{', false);
-    rows(j, s, "temperature_C", -1);
-    acbb_json_open(j, "nodes", '[', true);
-    for (int i = 0; i < s->n_nodes && i < ACBB_MAX_NODES; i++) acbb_json_num(j, NULL, s->T[i]);
-    acbb_json_close(j, ']');
-    acbb_json_close(j, '}');
+    temperatures(j, s);
 
     section(j, s, "expansion_um");
 
@@ -113,6 +152,7 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
     acbb_json_close(j, ']');
 
     section(j, s, "energy_W");
+    if (b && n > 1) set_part(j, s, b, n);
 
     scene(j, sc);
     acbb_json_close(j, '}');

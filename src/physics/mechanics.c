@@ -35,6 +35,8 @@ struct acbb_mech {
     double dx_fixed;
     int centred;                /* dx fixed by symmetry (deep groove, no thrust) */
     int dof_dz, dof_thy;        /* active ring DOFs besides dx */
+    int prescribed;             /* all ring DOFs held (a member of a set, MODEL.md 14) */
+    double dz_fixed, thy_fixed; /* the held radial displacement (m) and tilt (rad) */
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     double ring_J[MAX_RING_DOF + 1][MAX_RING_DOF * MAX_RING_DOF]; /* last, per DOF count */
     int ring_J_ok[MAX_RING_DOF + 1];
@@ -701,6 +703,19 @@ static int state_finite(const acbb_mech_state *st)
     return isfinite(st->dx) && isfinite(st->dz) && isfinite(st->Fx);
 }
 
+/* Held ring displacements: the ball symmetry follows them (identical
+ * balls only when the ring moves axially alone). */
+static void prescribed_state(const acbb_mech *m, acbb_mech_state *w)
+{
+    int sym = m->dz_fixed == 0.0 && m->thy_fixed == 0.0;
+    if (w->symmetric && !sym) acbb_mech_spread(w);
+    w->symmetric = sym;
+    w->mirror = !sym;
+    w->dz = m->dz_fixed;
+    w->thy = m->thy_fixed;
+    w->dy = w->thz = 0.0;
+}
+
 acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
                             acbb_mech_state *st, acbb_error *err)
 {
@@ -712,6 +727,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (e) m->e_copy = *e;
     m->e = e ? &m->e_copy : NULL;
     if (m->fix_axial) w->dx = m->dx_fixed;
+    if (m->prescribed) prescribed_state(m, w);
     for (int j = 0; j < w->n; j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
@@ -740,7 +756,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
         double floor_N = fmin(LOADED_N, 0.5 * (fabs(m->Fx) + fabs(m->Fz)) / m->g.Z);
         int any = 0;
         for (int j = 0; j < w->n; j++) any |= w->ball[j].Qi > floor_N;
-        if (!any && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || (m->fix_axial && !m->centred)))
+        if (!any && !m->prescribed && (fabs(m->Fx) > 0.0 || fabs(m->Fz) > 0.0 || (m->fix_axial && !m->centred)))
             rc = ACBB_CONTACT_LOST;
     }
     if (rc != ACBB_OK) {
@@ -897,4 +913,15 @@ void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
     f->A2 = c.A2;
     f->L0_i = m->g.lambda_i - 0.5 * m->g.D - c.off.dL_i;
     f->L0_o = m->g.lambda_o - 0.5 * m->g.D - c.off.dL_o;
+}
+
+/* ---- prescribed displacements (bearing sets, MODEL.md 14) ---- */
+
+void acbb_mech_prescribe(acbb_mech *m, double dx, double dz, double thy)
+{
+    acbb_mech_fix_axial(m, 1, dx);
+    m->prescribed = 1;
+    m->dof_dz = m->dof_thy = 0;
+    m->dz_fixed = dz;
+    m->thy_fixed = thy;
 }

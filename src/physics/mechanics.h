@@ -155,6 +155,12 @@ void acbb_mech_set_transient(acbb_mech *m, double angle_tol);
 /* Fix the axial displacement (displacement-controlled preload) or free it. */
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);
 
+/* Hold every ring DOF (a bearing of a set, MODEL.md 14): the next solves
+ * return the reactions Fx, Fz, My of the ball solutions at inner-ring
+ * displacement dx, dz (m) and tilt thy (rad). A ring whose balls all
+ * unload is not an error here (the set names it): the reactions are 0. */
+void acbb_mech_prescribe(acbb_mech *m, double dx, double dz, double thy);
+
 /* Combined inner-outer stiffness K_n and the static closed-form angle for
  * a pure thrust Fx at zero speed (independent reference used by tests and
  * for the initial guess): solves Fx = Z K_n A0^1.5 (cos a0/cos a - 1)^1.5 sin a. */

@@ -105,6 +105,28 @@ static const acbb_output_row k_rows[] = {
     { "energy_W", "in", "heat_in_W", "W", "heat sources", OFF_S(heat_in), AS_IS },
     { "energy_W", "out", "heat_out_W", "W", "heat into the fixed-temperature nodes",
       OFF_S(heat_out), AS_IS },
+
+    /* A bearing set (MODEL.md 14): 0 for a single bearing. */
+    { "set", "preload_N", "set_preload_N", "N", "set preload now (no external thrust)",
+      OFF_S(set.preload_N), AS_IS },
+    { "set", "preload_assembly_N", "set_preload_assembly_N", "N", "set preload at assembly",
+      OFF_S(set.preload_assembly_N), AS_IS },
+    { "set", "liftoff_thrust_N", "set_liftoff_thrust_N", "N",
+      "external thrust that lifts a bearing off", OFF_S(set.liftoff_thrust_N), AS_IS },
+    { "set", "stiffness_axial_N_per_um", "set_stiffness_axial_N_um", "N/um",
+      "set axial stiffness at the nose", OFF_S(set.stiffness_axial), 1e-6, 1.0 },
+    { "set", "stiffness_radial_N_per_um", "set_stiffness_radial_N_um", "N/um",
+      "set radial stiffness at the nose", OFF_S(set.stiffness_radial), 1e-6, 1.0 },
+    { "set", "stiffness_tilt_Nm_per_mrad", "set_stiffness_tilt_Nm_mrad", "N m/mrad",
+      "set tilt stiffness", OFF_S(set.stiffness_tilt), 1e-3, 1.0 },
+    { "set", "spacer_growth_um", "set_spacer_growth_um", "um",
+      "inner minus outer axial growth, end to end", OFF_S(set.spacer_growth), TO_UM },
+    { "set", "shaft_dx_um", "set_shaft_dx_um", "um", "shaft axial displacement",
+      OFF_S(set.shaft_dx), TO_UM },
+    { "set", "shaft_dz_um", "set_shaft_dz_um", "um", "shaft radial displacement at the centre",
+      OFF_S(set.shaft_dz), TO_UM },
+    { "set", "shaft_tilt_mrad", "set_shaft_tilt_mrad", "mrad", "shaft tilt",
+      OFF_S(set.shaft_tilt), TO_MRAD },
 };
 #define N_ROWS (sizeof k_rows / sizeof k_rows[0])
 

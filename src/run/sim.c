@@ -23,6 +23,7 @@
 #include "sim_priv.h"
 #include "cancel.h"
 #include "gsl_quiet.h"
+#include "sim_set.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -92,6 +93,7 @@ struct acbb_sim {
     int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
+    acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */
 };
 
 static int outputs_finite(const acbb_sim *sim);
@@ -595,10 +597,19 @@ static acbb_status isothermal(acbb_sim *sim)
     return ACBB_OK;
 }
 
+/* A set steps in sim_set.c; the run loop reads its outcome here. */
+static acbb_status set_step(acbb_sim *sim)
+{
+    acbb_status rc = acbb_set_sim_step(sim->set);
+    sim->state = acbb_set_sim_outcome(sim->set, &sim->status, &sim->iter);
+    return rc;
+}
+
 acbb_status acbb_sim_step(acbb_sim *sim)
 {
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
+    if (sim->set) return set_step(sim);
     double t0 = acbb_now_ms();
     if (!sim->s.heating) {
         acbb_status rc = isothermal(sim);
@@ -670,6 +681,7 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
     if (ctl && ctl->cancel) {
         sim->cancel = ctl->cancel;
         if (sim->dyn) acbb_dyn_set_cancel(sim->dyn, sim->cancel);
+        if (sim->set) acbb_set_sim_cancel(sim->set, sim->cancel);
     }
     if (call_hook(sim, ctl)) return sim->status;
     while (sim->state == ACBB_RUN_RUNNING) {
@@ -789,6 +801,18 @@ acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb
     return acbb_sim_create(s, &(acbb_sim_opts){ .cancel = cancel }, out, err);
 }
 
+/* A bearing set: its members and stepper live in sim_set.c. */
+static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
+{
+    sim->s = *s;
+    acbb_sim_opts o = { sim->cancel, sim->threads };
+    acbb_status rc = acbb_set_sim_new(s, &o, &sim->set, err);
+    if (rc != ACBB_OK) return rc;
+    sim->state = acbb_set_sim_outcome(sim->set, &sim->status, &sim->iter);
+    sim->reported = -1;
+    return ACBB_OK;
+}
+
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                             acbb_error *err)
 {
@@ -800,7 +824,8 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
     }
     sim->cancel = o->cancel;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
-    acbb_status rc = sim_init(sim, s, NULL, err);
+    acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
+                                                           : sim_init(sim, s, NULL, err);
     if (rc != ACBB_OK) {
         acbb_sim_free(sim);
         return rc;
@@ -812,13 +837,29 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 void acbb_sim_free(acbb_sim *sim)
 {
     if (!sim) return;
+    acbb_set_sim_free(sim->set);
     sim_release(sim);
     free(sim->keep);
     free(sim);
 }
 
+/* A set, or a change to or from one, restarts cold with a new Sim. */
+static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
+{
+    acbb_sim *fresh;
+    acbb_sim_opts o = { sim->cancel, sim->threads };
+    acbb_status rc = acbb_sim_create(s, &o, &fresh, err);
+    if (rc != ACBB_OK) return rc; /* the running sim is untouched */
+    acbb_sim old = *sim;
+    *sim = *fresh;
+    *fresh = old;
+    acbb_sim_free(fresh);
+    return ACBB_OK;
+}
+
 acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
 {
+    if (sim->set || s->set_arrangement != ACBB_SET_SINGLE) return set_restart(sim, s, err);
     double T[ACBB_MAX_NODES];
     int keep = warm && s->network == sim->s.network;
     memcpy(T, sim->T, sizeof T);
@@ -844,6 +885,15 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
 {
     const acbb_network *nw = &sim->nw;
+    if (sim->set) {
+        acbb_set_sim_snapshot(sim->set, o);
+        if (sim->status == ACBB_CANCELLED) { /* cancelled by the run loop, not the set */
+            o->state = sim->state;
+            o->status = sim->status;
+            snprintf(o->message, sizeof o->message, "%s", sim->msg);
+        }
+        return;
+    }
     memset(o, 0, sizeof *o);
     o->state = sim->state;
     o->status = sim->status;
@@ -888,4 +938,93 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
+    o->n_bearings = 1;
+}
+
+acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out)
+{
+    if (sim->set) return acbb_set_sim_bearing_snapshot(sim->set, k, out);
+    if (k != 0) return ACBB_EINVAL;
+    acbb_sim_snapshot(sim, out);
+    return ACBB_OK;
+}
+
+/* ---- a bearing of a set (sim_set.c drives it; MODEL.md 14) ---- */
+
+acbb_mech *acbb_simm_mech(acbb_sim *b) { return b->mech; }
+acbb_mech_state *acbb_simm_ms(acbb_sim *b) { return &b->ms; }
+const acbb_expansion *acbb_simm_exp(const acbb_sim *b) { return &b->exp; }
+double *acbb_simm_T(acbb_sim *b) { return b->T; }
+acbb_network *acbb_simm_network(acbb_sim *b) { return &b->nw; }
+const double *acbb_simm_q(const acbb_sim *b) { return b->q; }
+int acbb_simm_has_traction(const acbb_sim *b) { return b->qd || b->dyn; }
+double acbb_simm_loss(const acbb_sim *b) { return b->loss.total; }
+
+void acbb_simm_expand(acbb_sim *b)
+{
+    if (b->s.thermal_expansion) expansions(b);
+    else b->exp = (acbb_expansion){ 0 };
+}
+
+void acbb_simm_mode(acbb_sim *b, int transient, int polishing)
+{
+    b->transient_pass = transient;
+    b->polishing = polishing;
+}
+
+/* One Level-2 or dynamic pass over b's balls at its current mechanics
+ * (mechanics() without the equilibrium solves: the set solves those). */
+acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err)
+{
+    acbb_oil_state oi, oo;
+    acbb_mixture mix;
+    lubricant(b, &oi, &oo, &mix);
+    *change = 0.0;
+    if (b->dyn) return ball_dynamics(b, &oi, &oo, &mix, change, err);
+    b->work.traction_solves++;
+    acbb_qd_set_skip(b->qd, skip_tol(b, QD_SKIP_TOL));
+    return acbb_qd_update(b->qd, &b->s, &b->quad, acbb_mech_geometry(b->mech), b->s.inner_speed,
+                          &oi, &oo, &mix, &b->ms, change, err);
+}
+
+/* evaluate() after the mechanics: losses, network resistances, heat. */
+acbb_status acbb_simm_heat(acbb_sim *b, acbb_error *err)
+{
+    acbb_status rc = losses(b);
+    if (rc == ACBB_OK && !outputs_finite(b)) rc = ACBB_NONFINITE;
+    if (rc != ACBB_OK)
+        return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "
+                              "last good state kept");
+    if (!b->s.heating) return ACBB_OK;
+    acbb_net_inputs in;
+    network_inputs(b, &in);
+    b->work.network_solves++;
+    if ((rc = acbb_network_update(&b->nw, &b->s, &in)) != ACBB_OK)
+        return acbb_error_set(err, rc, "thermal network: update failed");
+    acbb_network_heat(&b->nw, &b->s, &b->heat, b->q);
+    return ACBB_OK;
+}
+
+void acbb_simm_save(acbb_sim *b) { save(b, b->keep); }
+void acbb_simm_restore(acbb_sim *b) { restore(b, b->keep); }
+
+/* The run's outcome and b's stiffness, for b's own snapshot. */
+void acbb_simm_publish(acbb_sim *b, const acbb_set_run *r)
+{
+    b->state = r->state;
+    b->status = r->status;
+    b->iter = r->iter;
+    b->time = r->time;
+    b->dt = r->dt;
+    b->residual = r->residual;
+    b->wall_ms = r->wall_ms;
+    snprintf(b->msg, sizeof b->msg, "%s", r->msg);
+    b->heat_out = acbb_tnet_heat_to_fixed(b->nw.net, b->T);
+}
+
+void acbb_simm_stiffness(acbb_sim *b, double *K_axial)
+{
+    b->K_axial = axial_stiffness(b);
+    acbb_ring_stiffness(&b->s, &b->exp, b->ms.dx, &b->ms, &b->K_ring);
+    *K_axial = b->K_axial;
 }

@@ -7,6 +7,7 @@
 #include "geometry.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
+#include "acbb/set.h"
 
 /* ---- cross-field validation ---- */
 
@@ -349,6 +350,7 @@ static acbb_status rule_temp_limit(const acbb_scene *s, acbb_error *err)
  * shoulders and needs no thrust for a moment. */
 static acbb_status rule_radial_load(const acbb_scene *s, acbb_error *err)
 {
+    if (s->set_arrangement != ACBB_SET_SINGLE) return ACBB_OK; /* a set carries it (rule_set) */
     double radial = s->radial_load * tan(s->contact_angle0);
     double moment = s->contact_angle0 > 0.0 ? 2.0 * fabs(s->moment_load) / s->pitch_diameter : 0.0;
     double need = 1.25 * (radial + moment);
@@ -386,6 +388,49 @@ static acbb_status rule_preload(const acbb_scene *s, acbb_error *err)
                           show(s, "mounting", "preload_N", a));
 }
 
+/* A bearing set (MODEL.md 14): at most four bearings, the count the
+ * arrangement has (DT: 2-4 in tandem), neighbours that do not overlap, and
+ * a preload or thrust that loads every bearing's balls: a tandem set
+ * carries thrust one way only, so with rigid spacers and no thrust nothing
+ * holds it; an opposed set needs a preload > 0 (by spacers or by spring). */
+static acbb_status rule_set(const acbb_scene *s, acbb_error *err)
+{
+    static const int nominal[] = { 1, 2, 2, 2, 3, 4 };
+    char a[40], b[40], c[40];
+    int n = acbb_set_layout(s, NULL, NULL);
+    const char *arr = acbb_set_arrangement_name(s->set_arrangement);
+    if (n > ACBB_MAX_SET)
+        return acbb_error_set(err, ACBB_EINVAL, "set.n_bearings = %d: a set has at most %d "
+                              "bearings (MODEL.md 14)", n, ACBB_MAX_SET);
+    int dt = s->set_arrangement == ACBB_SET_DT;
+    if (s->set_n_bearings > 0 && (dt ? n < 2 : n != nominal[s->set_arrangement]))
+        return acbb_error_set(err, ACBB_EINVAL, "set.n_bearings = %d with set.arrangement = %s: "
+                              "%s has %s%d bearings (0 = the arrangement's count)", n, arr, arr,
+                              dt ? "2 to " : "", dt ? ACBB_MAX_SET : nominal[s->set_arrangement]);
+    if (n == 1) return ACBB_OK;
+    if (s->set_spacing > 0.0 && s->set_spacing < s->width)
+        return acbb_error_set(err, ACBB_EINVAL, "set.spacing_mm = %s is shorter than "
+                              "bearing.width_mm = %s: neighbouring bearings would overlap; the "
+                              "centre distance is at least one width (0 = adjacent)",
+                              show(s, "set", "spacing_mm", a), show(s, "bearing", "width_mm", b));
+    if (dt && s->preload == ACBB_PRELOAD_DISPLACEMENT && s->axial_load == 0.0)
+        return acbb_error_set(err, ACBB_ILL_POSED, "set.arrangement = DT with mounting.preload = "
+                              "displacement and operating.axial_load_N = %s: a tandem set carries "
+                              "thrust one way only; give it an axial load or a spring "
+                              "(mounting.preload = force with preload_N > 0)",
+                              show(s, "operating", "axial_load_N", c));
+    if (!dt && s->preload_force <= 0.0)
+        return acbb_error_set(err, ACBB_EINVAL, "set.arrangement = %s with mounting.preload_N = "
+                              "%s: an opposed set needs a preload > 0 N (spacers or spring)", arr,
+                              show(s, "mounting", "preload_N", a));
+    if (dt && s->preload == ACBB_PRELOAD_FORCE && s->preload_force <= 0.0 && s->axial_load == 0.0)
+        return acbb_error_set(err, ACBB_ILL_POSED, "set.arrangement = DT with mounting.preload = "
+                              "force, preload_N = %s and operating.axial_load_N = 0: nothing loads "
+                              "the tandem set; give a spring force or an axial load",
+                              show(s, "mounting", "preload_N", a));
+    return ACBB_OK;
+}
+
 typedef acbb_status (*rule_fn)(const acbb_scene *, acbb_error *);
 
 /* Order matters: ranges first (later rules divide by them), the grooves
@@ -395,6 +440,7 @@ static const rule_fn k_rules[] = {
     rule_inner_ring, rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
     rule_preload, rule_surroundings, rule_radial_load,
+    rule_set,
 };
 
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)

@@ -28,6 +28,7 @@ _Static_assert(sizeof(acbb_loss_form) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_hyst_axis) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_network_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_preload_mode) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_set_arrangement) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_thermal_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_bc_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_fidelity_preset) == sizeof(int), "enum size");
@@ -41,6 +42,7 @@ static const char *const k_hyst[] = {"major", "minor", NULL};
 static const char *const k_visc[] = {"roelands", "barus", "const", NULL};
 static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
 static const char *const k_preload[] = {"force", "displacement", NULL};
+static const char *const k_set[] = {"single", "DB", "DF", "DT", "DBT", "QBC", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
 static const char *const k_bc[] = {"fixed", "convective", NULL};
@@ -213,6 +215,17 @@ const acbb_sfield acbb_sf_table[] = {
          "force: axial load applied (dx free); displacement: dx fixed by preload_N"),
     REAL("mounting", "preload_N", "N", preload_force, 1.0, 300, CC, 0, 1e6,
          "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
+
+    /* [set] (MODEL.md 14): a spindle set; single = today's one bearing */
+    ENUM("set", "arrangement", set_arrangement, k_set, ACBB_SET_SINGLE,
+         "bearings on the shaft: single, DB (back-to-back), DF (face-to-face), DT (tandem), "
+         "DBT (tandem pair + one, back-to-back), QBC (two tandem pairs, back-to-back)"),
+    INT("set", "n_bearings", set_n_bearings, 0, 0, 8,
+        "bearings in the set (0 = the arrangement's count; DT: 2-4 in tandem)"),
+    REAL("set", "spacing_mm", "mm", set_spacing, 1e-3, 0, CC, 0, 10000,
+         "centre distance of neighbouring bearings (0 = adjacent: one width; spacers are the rest)"),
+    REAL("set", "load_offset_mm", "mm", set_load_offset, 1e-3, 0, CC, -10000, 10000,
+         "where the external loads act: nose position minus the set's centre, along the shaft"),
 
     /* [surroundings] (MODEL.md 8.1, 13): 0 = derive from the bearing by
      * scaling the seed's 7008C rig (acbb_scene_surroundings in scene.h) */

@@ -1,0 +1,24 @@
+/* acbb — spindle bearing sets (MODEL.md section 14): where each bearing of
+ * a scene's [set] sits on the shaft and which way it carries thrust.
+ * Plain functions of a Scene; nothing is allocated. */
+#ifndef ACBB_SET_H
+#define ACBB_SET_H
+
+#include "acbb/limits.h"
+#include "acbb/scene.h"
+
+/* The bearings of s's set: orient[k] = +1 or -1, the direction of the
+ * thrust bearing k's inner ring carries (MODEL.md 14 s_k), x[k] its centre
+ * relative to the set's centre (m), bearings by increasing x. Returns the
+ * number of bearings the scene asks for (1 for a single bearing); a count
+ * above ACBB_MAX_SET is returned as it is (the validation refuses it) with
+ * only ACBB_MAX_SET entries written. Either array may be NULL. */
+int acbb_set_layout(const acbb_scene *s, int orient[ACBB_MAX_SET], double x[ACBB_MAX_SET]);
+
+/* Centre distance of neighbouring bearings, m (set.spacing_mm, 0 = one width). */
+double acbb_set_pitch(const acbb_scene *s);
+
+/* Short name of an arrangement ("single", "DB", ...). */
+const char *acbb_set_arrangement_name(acbb_set_arrangement a);
+
+#endif

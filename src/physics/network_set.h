@@ -1,0 +1,44 @@
+/* acbb — one thermal network for a bearing set (MODEL.md section 14):
+ * every bearing's own network (network.h, its surroundings included) side
+ * by side, joined between neighbours through the shaft and the housing
+ * segments between their centres and through the inner and outer spacers
+ * (ring to ring; adjacent rings through their clamped faces).
+ *
+ * The members' networks stay the place where the state-dependent
+ * resistances are computed (acbb_network_update); acbb_network_set_sync
+ * copies them into the joined network before each solve.
+ *
+ * Ownership: acbb_network_set_build fills a caller-owned struct that
+ * refers to the members (not owned, they must outlive it) and owns `net`;
+ * release it with acbb_network_set_free. */
+#ifndef ACBB_NETWORK_SET_H
+#define ACBB_NETWORK_SET_H
+
+#include "acbb/limits.h"
+#include "acbb/scene.h"
+#include "acbb/status.h"
+#include "network.h"
+#include "thermal_network.h"
+
+#define ACBB_SET_MAX_NODES (ACBB_MAX_SET * ACBB_MAX_NODES)
+
+typedef struct {
+    acbb_tnet *net;
+    int n;                                  /* nodes of the joined network */
+    int n_members;
+    acbb_network *mem[ACBB_MAX_SET];
+    int off[ACBB_MAX_SET];                  /* member k's node i is node off[k] + i */
+    int edge_off[ACBB_MAX_SET];             /* member k's edge e is edge edge_off[k] + e */
+    double T_fixed[ACBB_SET_MAX_NODES];     /* fixed nodes' temperatures, C */
+} acbb_network_set;
+
+/* Join n members (each built from the set's scene s) whose centres are
+ * `pitch` apart. */
+acbb_status acbb_network_set_build(acbb_network_set *ns, acbb_network *const *mem, int n,
+                                   const acbb_scene *s, double pitch, acbb_error *err);
+void acbb_network_set_free(acbb_network_set *ns);
+
+/* Copy every member's current edge resistances into the joined network. */
+void acbb_network_set_sync(acbb_network_set *ns);
+
+#endif

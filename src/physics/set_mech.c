@@ -1,0 +1,187 @@
+/* acbb — shaft equilibrium of a bearing set (MODEL.md section 14;
+ * set_mech.h for the frames). Newton on the active shaft unknowns with a
+ * forward-difference Jacobian kept between solves and Broyden updates
+ * (broyden.h, as the ring equilibrium of one bearing): every residual is a
+ * set of full ball solutions, so a finite-difference Jacobian per
+ * iteration would cost n+1 of them. Unknowns in um and mrad, residuals in
+ * N (moments over the pitch radius). */
+#include <math.h>
+#include <string.h>
+#include "set_mech.h"
+#include "broyden.h"
+#include "acbb/set.h"
+
+#define UM 1e-6
+#define MRAD 1e-3
+#define LOADED_N 1e-6   /* as mechanics.c: an open contact carries less */
+
+typedef struct {
+    acbb_set_mech *sm;
+    acbb_set_member *mb;
+    double omega;
+    int act[ACBB_SET_Q];          /* active unknowns, in order */
+    int n;
+    double R;                     /* moment arm for the residual scale, m */
+    acbb_status st;
+} ctx_t;
+
+void acbb_set_mech_init(acbb_set_mech *sm, const acbb_scene *s)
+{
+    memset(sm, 0, sizeof *sm);
+    sm->n = acbb_set_layout(s, sm->orient, sm->x);
+    if (sm->n > ACBB_MAX_SET) sm->n = ACBB_MAX_SET;
+    sm->x_nose = s->set_load_offset;
+    sm->spring = s->preload == ACBB_PRELOAD_FORCE;
+    sm->Fp = s->preload_force;
+    sm->Fa = s->axial_load;
+    sm->Fr = s->radial_load;
+    sm->M = s->moment_load;
+    sm->tol = s->mech_tol;
+}
+
+static int side_count(const acbb_set_mech *sm, int s)
+{
+    int c = 0;
+    for (int k = 0; k < sm->n; k++) c += sm->orient[k] == s;
+    return c;
+}
+
+void acbb_set_mech_assemble(acbb_set_mech *sm, double (*dx1)(double F, void *ctx), void *ctx)
+{
+    int np = side_count(sm, 1), nm = side_count(sm, -1);
+    for (int k = 0; k < sm->n; k++) {
+        int nk = sm->orient[k] > 0 ? np : nm;
+        /* A tandem set has no opposite side: its thrust alone loads it. */
+        sm->e[k] = nm == 0 || np == 0 ? 0.0 : dx1(sm->Fp / nk, ctx);
+    }
+}
+
+static int floating(const acbb_set_mech *sm, int k)
+{
+    return sm->spring && sm->orient[k] < 0;
+}
+
+/* External thrust: a tandem set's spring pushes like a thrust. */
+static double thrust(const acbb_set_mech *sm)
+{
+    return sm->spring && side_count(sm, -1) == 0 ? sm->Fa + sm->Fp : sm->Fa;
+}
+
+static void member_displacement(const acbb_set_mech *sm, int k, const double *q, double d[3])
+{
+    int s = sm->orient[k];
+    d[0] = s * (q[0] + sm->u[k]) + sm->e[k] + (floating(sm, k) ? q[3] : 0.0);
+    d[1] = q[1] - q[2] * sm->x[k];
+    d[2] = s * q[2];
+}
+
+static int all_unloaded(const acbb_mech_state *st)
+{
+    for (int j = 0; j < st->n; j++)
+        if (st->ball[j].Qi > LOADED_N) return 0;
+    return 1;
+}
+
+/* Every member at shaft position q; the residuals of all four equations. */
+static int evaluate(ctx_t *c, const double *q, double r[ACBB_SET_Q])
+{
+    acbb_set_mech *sm = c->sm;
+    double Fx = 0.0, Fz = 0.0, My = 0.0, Ff = 0.0;
+    for (int k = 0; k < sm->n; k++) {
+        double d[3];
+        member_displacement(sm, k, q, d);
+        acbb_set_member *b = &c->mb[k];
+        acbb_mech_prescribe(b->m, d[0], d[1], d[2]);
+        sm->solves++;
+        acbb_status rc = acbb_mech_solve(b->m, c->omega, b->e, b->st, NULL);
+        if (rc != ACBB_OK) { c->st = rc; return 0; }
+        sm->Fx[k] = b->st->Fx;
+        sm->Fz[k] = b->st->Fz;
+        sm->My[k] = b->st->My;
+        sm->lost[k] = all_unloaded(b->st);
+        Fx += sm->orient[k] * sm->Fx[k];
+        Fz += sm->Fz[k];
+        My += sm->orient[k] * sm->My[k] - sm->x[k] * sm->Fz[k];
+        if (floating(sm, k)) Ff += sm->Fx[k];
+    }
+    r[0] = thrust(sm) - Fx;
+    r[1] = sm->Fr - Fz;
+    r[2] = (sm->M - sm->x_nose * sm->Fr - My) / c->R;
+    r[3] = sm->Fp - Ff;
+    return 1;
+}
+
+static void unpack(const ctx_t *c, const double *x, double *q)
+{
+    static const double unit[ACBB_SET_Q] = { UM, UM, MRAD, UM };
+    memcpy(q, c->sm->q, sizeof c->sm->q);
+    for (int i = 0; i < c->n; i++) q[c->act[i]] = x[i] * unit[c->act[i]];
+}
+
+static int residual(const double *x, void *p, double *f)
+{
+    ctx_t *c = p;
+    double q[ACBB_SET_Q], r[ACBB_SET_Q];
+    unpack(c, x, q);
+    if (!evaluate(c, q, r)) return 0;
+    for (int i = 0; i < c->n; i++) f[i] = r[c->act[i]];
+    return 1;
+}
+
+static void activate(ctx_t *c)
+{
+    const acbb_set_mech *sm = c->sm;
+    int tandem = side_count(sm, -1) == 0 || side_count(sm, 1) == 0;
+    int spring = sm->spring && !tandem;
+    c->n = 0;
+    c->act[c->n++] = 0;
+    /* Radial and tilt stay 0 by symmetry without radial load or moment
+     * (their solution is continuous in both: it is 0 at 0). */
+    if (sm->Fr != 0.0 || sm->M != 0.0) { c->act[c->n++] = 1; c->act[c->n++] = 2; }
+    if (spring) c->act[c->n++] = 3;
+}
+
+acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double omega,
+                                acbb_error *err)
+{
+    static const double unit[ACBB_SET_Q] = { UM, UM, MRAD, UM };
+    ctx_t c = { .sm = sm, .mb = mb, .omega = omega, .st = ACBB_OK };
+    c.R = 0.5 * acbb_mech_geometry(mb[0].m)->dm;
+    activate(&c);
+    if (c.n != sm->J_n) sm->J_ok = 0;
+    sm->J_n = c.n;
+    double x[ACBB_SET_Q], f[ACBB_SET_Q];
+    double scale = fabs(thrust(sm)) + fabs(sm->Fr) + fabs(sm->M) / c.R + sm->Fp + 1.0;
+    double tol = fmax(sm->tol, 1e-12) * 10.0 * scale;
+    for (int i = 0; i < c.n; i++) x[i] = sm->q[c.act[i]] / unit[c.act[i]];
+    for (int attempt = 0; attempt < 4; attempt++) {
+        if (!residual(x, &c, f)) break;
+        double sum = 0.0;
+        for (int i = 0; i < c.n; i++) sum += fabs(f[i]);
+        if (sum < tol) {
+            unpack(&c, x, sm->q);
+            return ACBB_OK;
+        }
+        if (!sm->J_ok || attempt > 0) {
+            if (!acbb_fd_jacobian(residual, &c, c.n, x, f, 1e-4, sm->J)) break;
+            sm->J_ok = 1;
+        }
+        if (acbb_broyden(residual, &c, c.n, sm->J, x, f, tol, 30, 8)) {
+            unpack(&c, x, sm->q); /* its last evaluation was at the root */
+            return ACBB_OK;
+        }
+    }
+    sm->J_ok = 0;
+    acbb_status st = c.st != ACBB_OK ? c.st : ACBB_DIVERGED;
+    return acbb_error_set(err, st, "bearing set: shaft equilibrium %s at %.0f rpm",
+                          st == ACBB_DIVERGED ? "did not converge" : acbb_status_name(st),
+                          omega * 30.0 / M_PI);
+}
+
+double acbb_set_mech_preload(const acbb_set_mech *sm)
+{
+    double F = 0.0;
+    for (int k = 0; k < sm->n; k++)
+        if (sm->orient[k] > 0) F += sm->Fx[k];
+    return F;
+}

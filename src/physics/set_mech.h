@@ -1,0 +1,74 @@
+/* acbb — the mechanics of a bearing set (MODEL.md section 14): the shaft's
+ * rigid-body displacement that balances the external loads against every
+ * bearing's reaction, each from its own ball solution (mechanics.h in the
+ * prescribed-displacement mode) at its own expansions.
+ *
+ * Frames: global x along the shaft, bearing k at x[k] from the set's
+ * centre; bearing k's own frame (MODEL.md 3) is the global one mirrored
+ * when orient[k] = -1. Shaft unknowns q = (dx, dz, tilt about y, floating
+ * offset): bearing k sees dx_k = s_k (dx + u_k) + e_k (+ the floating
+ * offset on the spring side), dz_k = dz - tilt x_k, tilt_k = s_k tilt
+ * (a right-handed rotation about y moves a point at x by -tilt x in z, as
+ * MODEL.md 3's A1 term does at the ring). MODEL.md 14 writes the tilt with
+ * the opposite sign; only the name of the angle differs.
+ * dy and the tilt about z stay 0: the scene has no load in y and no moment
+ * about z, and the set is mirror-symmetric about the x-z plane (as the
+ * single bearing, mechanics.h).
+ *
+ * Ownership: a caller-owned plain value; the members (mechanics
+ * workspaces and states) belong to the caller. */
+#ifndef ACBB_SET_MECH_H
+#define ACBB_SET_MECH_H
+
+#include "acbb/limits.h"
+#include "acbb/scene.h"
+#include "acbb/status.h"
+#include "mechanics.h"
+#include "expansion.h"
+
+#define ACBB_SET_Q 4
+
+typedef struct {
+    acbb_mech *m;                 /* in prescribed mode (acbb_mech_prescribe) */
+    acbb_mech_state *st;          /* warm start in, solution out */
+    const acbb_expansion *e;      /* this bearing's expansions, NULL = none */
+} acbb_set_member;
+
+typedef struct {
+    int n;
+    int orient[ACBB_MAX_SET];     /* s_k */
+    double x[ACBB_MAX_SET];       /* centres from the set's centre, m */
+    double x_nose;                /* where the external loads act, m */
+    int spring;                   /* spring preload: the -1 side floats */
+    double Fp;                    /* assembly preload or spring force, N */
+    double e[ACBB_MAX_SET];       /* axial offsets built in (own frame, + squeezes), m */
+    double u[ACBB_MAX_SET];       /* thermal axial move of IR k against OR k (global), m */
+    double Fa, Fr, M;             /* external thrust, radial force (N), moment about y (N m) */
+    double tol;                   /* relative force tolerance */
+    double q[ACBB_SET_Q];         /* shaft dx, dz (m), tilt (rad), floating offset (m) */
+    double J[ACBB_SET_Q * ACBB_SET_Q];
+    int J_ok, J_n;
+    double Fx[ACBB_MAX_SET], Fz[ACBB_MAX_SET], My[ACBB_MAX_SET]; /* own-frame reactions */
+    int lost[ACBB_MAX_SET];       /* 1: every ball of bearing k unloaded */
+    long solves;                  /* member mechanics solves done */
+} acbb_set_mech;
+
+/* Layout, loads and preload mode from the scene; offsets e zero. */
+void acbb_set_mech_init(acbb_set_mech *sm, const acbb_scene *s);
+
+/* Rigid preload at assembly (MODEL.md 14): e_k = the axial displacement
+ * one bearing takes under Fp / (bearings on its side), at rest, 20 C, no
+ * expansion, so identical bearings each carry exactly their share. dx1(F)
+ * is that displacement for one bearing under thrust F (m). */
+void acbb_set_mech_assemble(acbb_set_mech *sm, double (*dx1)(double F, void *ctx), void *ctx);
+
+/* Solve the shaft equilibrium at inner-ring speed omega, warm-started from
+ * sm->q and the members' states. On failure the members keep their last
+ * trial; the caller restores them. */
+acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double omega,
+                                acbb_error *err);
+
+/* The axial force the set carries between its sides (the + side's sum). */
+double acbb_set_mech_preload(const acbb_set_mech *sm);
+
+#endif
