@@ -86,11 +86,14 @@ void acbb_network_set_free(acbb_network_set *ns)
     ns->net = NULL;
 }
 
-void acbb_network_set_sync(acbb_network_set *ns)
+void acbb_network_set_sync(acbb_network_set *ns, double rel_tol)
 {
     for (int k = 0; k < ns->n_members; k++) {
         const acbb_tnet *src = ns->mem[k]->net;
-        for (int e = 0; e < acbb_tnet_edge_count(src); e++)
-            acbb_tnet_set_resistance(ns->net, ns->edge_off[k] + e, acbb_tnet_resistance(src, e));
+        for (int e = 0; e < acbb_tnet_edge_count(src); e++) {
+            int je = ns->edge_off[k] + e;
+            double R = acbb_tnet_resistance(src, e), R0 = acbb_tnet_resistance(ns->net, je);
+            if (fabs(R - R0) > rel_tol * R0) acbb_tnet_set_resistance(ns->net, je, R);
+        }
     }
 }

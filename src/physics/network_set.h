@@ -38,7 +38,12 @@ acbb_status acbb_network_set_build(acbb_network_set *ns, acbb_network *const *me
                                    const acbb_scene *s, double pitch, acbb_error *err);
 void acbb_network_set_free(acbb_network_set *ns);
 
-/* Copy every member's current edge resistances into the joined network. */
-void acbb_network_set_sync(acbb_network_set *ns);
+/* Copy the members' current edge resistances into the joined network,
+ * each that moved more than rel_tol (relative) since it was last copied:
+ * a joined network twice the size costs 8 times as much to factorise, and
+ * the contact-spot resistances move a little every transient step
+ * (BENCHMARKS.md "Bearing sets"). 0: every change, as the steady polish
+ * needs for the reported state. */
+void acbb_network_set_sync(acbb_network_set *ns, double rel_tol);
 
 #endif

@@ -17,6 +17,8 @@
 #include "acbb/set.h"
 #include "acbb/measure.h"
 #include "cancel.h"
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include "acbb/fidelity.h"
 
 #define DT_MIN 0.05
@@ -28,6 +30,7 @@
 #define QD_PASSES 4
 #define QD_TOL 1e-9
 #define NMAX ACBB_SET_MAX_NODES
+#define SYNC_TOL 1e-2        /* transient steps: resistances lag below this move (network_set.h) */
 
 struct acbb_set_sim {
     acbb_scene s;
@@ -116,7 +119,7 @@ static void distribute(acbb_set_sim *ss)
                sizeof(double) * (size_t)acbb_simm_network(ss->b[k])->n);
 }
 
-static void gather_heat(acbb_set_sim *ss)
+static void gather_heat(acbb_set_sim *ss, double rel_tol)
 {
     ss->heat_in = ss->total = 0.0;
     for (int k = 0; k < ss->n; k++) {
@@ -125,7 +128,7 @@ static void gather_heat(acbb_set_sim *ss)
         for (int i = 0; i < nw->n; i++) ss->heat_in += acbb_simm_q(ss->b[k])[i];
         ss->total += acbb_simm_loss(ss->b[k]);
     }
-    acbb_network_set_sync(&ss->ns);
+    acbb_network_set_sync(&ss->ns, rel_tol);
 }
 
 static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb_error *err)
@@ -140,7 +143,7 @@ static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb
     for (int k = 0; k < ss->n && rc == ACBB_OK; k++) rc = acbb_simm_heat(ss->b[k], err);
     for (int k = 0; k < ss->n; k++) acbb_simm_mode(ss->b[k], 0, 0);
     if (rc != ACBB_OK) return rc;
-    gather_heat(ss);
+    gather_heat(ss, transient ? SYNC_TOL : 0.0);
     return ACBB_OK;
 }
 
@@ -201,31 +204,50 @@ static double unloading_side(acbb_set_sim *ss, double Fa, int side, int *ok)
     return F;
 }
 
-/* External thrust at which the unloading side's balls all unload, by
- * bisection on the thrust at the current temperatures (to 1e-4 of the
- * preload; the side's load falls as (Fa_lift - Fa)^1.5 near it). A rigid
+/* External thrust at which the unloading side's balls all unload, at the
+ * current temperatures: GSL's Brent on F^(2/3) - eps^(2/3) of the side's
+ * load F, which near lift-off falls as (Fa_lift - Fa)^1.5 (Hertz), so its
+ * 2/3 power is nearly linear there; to 1e-4 of the preload. A rigid
  * opposed set unloads its -1 side under +x thrust; a spring set's floating
  * side keeps the spring force, so thrust the other way unloads the +1 side
  * at the spring force. A tandem set has no opposite side: 0. */
+typedef struct { acbb_set_sim *ss; int side, dir, ok; double eps; } lift_ctx;
+
+static double lift_fn(double Fa, void *p)
+{
+    lift_ctx *c = p;
+    int ok;
+    double F = unloading_side(c->ss, Fa * c->dir, c->side, &ok);
+    c->ok &= ok;
+    return cbrt(F * F) - cbrt(c->eps * c->eps);
+}
+
 static double liftoff(acbb_set_sim *ss)
 {
     if (!has_side(&ss->sm, 1) || !has_side(&ss->sm, -1)) return 0.0;
-    int side = ss->sm.spring ? 1 : -1, dir = -side, ok;
-    double eps = 1e-6 * ss->sm.Fp, lo = ss->sm.Fa * dir, hi = fmax(lo, 0.0) + ss->sm.Fp;
-    if (unloading_side(ss, lo * dir, side, &ok) <= eps || !ok) return 0.0;
-    for (int i = 0; i < 20; i++) {
-        double F = unloading_side(ss, hi * dir, side, &ok);
-        if (!ok) return 0.0;
-        if (F <= eps) break;
+    int side = ss->sm.spring ? 1 : -1;
+    lift_ctx c = { ss, side, -side, 1, 1e-6 * ss->sm.Fp };
+    double lo = ss->sm.Fa * c.dir, hi = fmax(lo, 0.0) + ss->sm.Fp;
+    double flo = lift_fn(lo, &c), fhi = lift_fn(hi, &c);
+    if (flo <= 0.0 || !c.ok) return 0.0;
+    for (int i = 0; i < 20 && fhi > 0.0 && c.ok; i++) {
         lo = hi;
         hi *= 2.0;
+        fhi = lift_fn(hi, &c);
     }
-    while (hi - lo > 1e-4 * ss->sm.Fp) {
-        double mid = 0.5 * (lo + hi), F = unloading_side(ss, mid * dir, side, &ok);
-        if (!ok) return 0.0;
-        if (F <= eps) hi = mid; else lo = mid;
+    gsl_function F = { lift_fn, &c };
+    gsl_root_fsolver *b = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    double root = 0.0;
+    if (b && c.ok && fhi <= 0.0 && gsl_root_fsolver_set(b, &F, lo, hi) == GSL_SUCCESS) {
+        for (int it = 0; it < 60 && c.ok; it++) {
+            if (gsl_root_fsolver_iterate(b) != GSL_SUCCESS) break;
+            root = gsl_root_fsolver_root(b);
+            if (gsl_root_fsolver_x_upper(b) - gsl_root_fsolver_x_lower(b) < 1e-4 * ss->sm.Fp)
+                break;
+        }
     }
-    return 0.5 * (lo + hi);
+    if (b) gsl_root_fsolver_free(b);
+    return c.ok ? root : 0.0;
 }
 
 /* Radial and tilt stiffness at the nose: central differences of the shaft
@@ -289,7 +311,7 @@ static void restore(acbb_set_sim *ss)
     ss->sm = ss->sm_keep;
     for (int k = 0; k < ss->n; k++) acbb_simm_restore(ss->b[k]);
     distribute(ss);
-    gather_heat(ss);
+    gather_heat(ss, 0.0);
 }
 
 static double max_change(const acbb_set_sim *ss, const double *Tn, int stored)
@@ -614,6 +636,7 @@ acbb_status acbb_set_sim_bearing_snapshot(const acbb_set_sim *ss, int k, acbb_sn
 void acbb_set_sim_snapshot(const acbb_set_sim *ss, acbb_snapshot *o)
 {
     acbb_set_sim_bearing_snapshot(ss, 0, o);
+    o->work.mechanics_solves += ss->sm.solves; /* the shaft equilibrium's member solves */
     o->heat_in = acbb_snap_fin(ss->heat_in);
     o->heat_out = acbb_snap_fin(ss->heat_out);
     int lost = 0;
