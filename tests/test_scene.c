@@ -186,6 +186,7 @@ static const char *const k_expected[][2] = {
     {"mounting.h_fit_inner_W_m2K", "20000"}, {"mounting.h_face_W_m2K", "3000"},
     {"mounting.h_natural_W_m2K", "10"}, {"mounting.preload", "force"},
     {"mounting.preload_N", "300"},
+    {"mounting.tilt", "auto"},
     {"set.arrangement", "single"}, {"set.n_bearings", "0"}, {"set.spacing_mm", "0"},
     {"set.load_offset_mm", "0"},
     {"surroundings.housing_outer_diameter_mm", "0"}, {"surroundings.housing_length_mm", "0"},

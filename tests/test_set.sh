@@ -74,6 +74,27 @@ jqt "$TMP/rigid.json" '[.. | numbers | isinfinite or isnan] | any | not' "no NaN
 "$ACBB" run presets/7008C.ini --json >"$TMP/s1.json"
 jqt "$TMP/s1.json" 'has("bearings") or has("set") | not' "single bearing: no bearings or set key"
 
+# Issue 18: with mounting.tilt = free the tilt is solved at 0 N m too, so
+# moments of 0, 1e-3 and 1e-2 N m give states whose difference scales with
+# the moment (7008C, 300 N, 100 N radial; 10x the moment, 10x the move,
+# within 5 %: the response is linear at this size). The tilt stiffness is
+# reported twice, radial free and radial held (held is the stiffer).
+for M in 0 0.001 0.01; do
+    "$ACBB" run presets/7008C.ini --set operating.axial_load_N=300 --set operating.radial_load_N=100 \
+        --set mounting.tilt=free --set effects.heating=off --set operating.moment_load_Nm=$M \
+        --json >"$TMP/m$M.json"
+done
+jq -s '((.[2].ring.delta_z_um - .[0].ring.delta_z_um) / (.[1].ring.delta_z_um - .[0].ring.delta_z_um) - 10 | fabs) < 0.5
+       and ((.[2].ring.tilt_y_mrad - .[0].ring.tilt_y_mrad) / (.[1].ring.tilt_y_mrad - .[0].ring.tilt_y_mrad) - 10 | fabs) < 0.5
+       and ((.[1].ring.delta_z_um - .[0].ring.delta_z_um) | fabs) < 0.05' \
+    "$TMP/m0.json" "$TMP/m0.001.json" "$TMP/m0.01.json" | grep -qx true
+t $? "tilt free: moments 0, 1e-3, 1e-2 N m move the ring in proportion (no jump at 0)"
+jqt "$TMP/m0.json" '.ring.stiffness_tilt_held_Nm_per_mrad > 3 * .ring.stiffness_tilt_Nm_per_mrad' \
+    "tilt stiffness named by its constraint: radial held well above radial free"
+rc=$(cd . && "$ACBB" run presets/7008C.ini --set mounting.tilt=held --set operating.moment_load_Nm=1 >/dev/null 2>"$TMP/err"; echo $?)
+[ "$rc" = 2 ] && grep -q 'moment_load_Nm = 1 with mounting.tilt = held' "$TMP/err"
+t $? "a moment on a held tilt refused (exit $rc)"
+
 # Bad combinations: exit 2 with the keys and the rule.
 refuse() {
     "$ACBB" run presets/7008C.ini "$@" >/dev/null 2>"$TMP/err"

@@ -38,6 +38,8 @@ typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode
 /* [set] arrangement (MODEL.md 14): single = one bearing (today's scenes). */
 typedef enum { ACBB_SET_SINGLE, ACBB_SET_DB, ACBB_SET_DF, ACBB_SET_DT, ACBB_SET_DBT,
                ACBB_SET_QBC } acbb_set_arrangement;
+/* mounting.tilt (issue 18): auto = free only under a moment (the seed's). */
+typedef enum { ACBB_TILT_AUTO, ACBB_TILT_FREE, ACBB_TILT_HELD } acbb_tilt_mode;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 /* fidelity.preset (fidelity.h): custom = the individual knobs. */
 typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
@@ -106,6 +108,7 @@ typedef struct {
     double h_natural;            /* housing exterior convection, W/(m^2 K) */
     acbb_preload_mode preload;
     double preload_force;        /* N; displacement preload set at 20 C, 0 rpm */
+    acbb_tilt_mode tilt;         /* inner-ring tilt: auto, free or held */
     /* [set] (MODEL.md 14): bearings on one shaft. For a set, preload =
      * displacement is rigid (spacers), force is a spring on the floating
      * side; preload_force is the assembly preload; axial/radial/moment

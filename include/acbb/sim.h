@@ -110,6 +110,7 @@ typedef struct {
     double stiffness_axial;     /* dFx/d(delta_x) at the solution, N/m (0 until converged) */
     double stiffness_radial;    /* dFz/d(delta_z), N/m (stiffness.h; 0 until converged) */
     double stiffness_tilt;      /* dMy/d(theta_y), N m/rad (0 until converged) */
+    double stiffness_tilt_held; /* the same with the ring held radially, N m/rad */
     acbb_squeeze squeeze;
     acbb_work work;
     double reaction_x;          /* axial reaction (== load under force control), N */

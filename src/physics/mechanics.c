@@ -37,6 +37,8 @@ struct acbb_mech {
     int dof_dz, dof_thy;        /* active ring DOFs besides dx */
     int prescribed;             /* all ring DOFs held (a member of a set, MODEL.md 14) */
     double dz_fixed, thy_fixed; /* the held radial displacement (m) and tilt (rad) */
+    int hold_radial;            /* dz held at dz_hold, the tilt free (stiffness.h) */
+    double dz_hold;
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     double ring_J[MAX_RING_DOF + 1][MAX_RING_DOF * MAX_RING_DOF]; /* last, per DOF count */
     int ring_J_ok[MAX_RING_DOF + 1];
@@ -728,6 +730,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     m->e = e ? &m->e_copy : NULL;
     if (m->fix_axial) w->dx = m->dx_fixed;
     if (m->prescribed) prescribed_state(m, w);
+    if (m->hold_radial) w->dz = m->dz_hold;
     for (int j = 0; j < w->n; j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
@@ -797,7 +800,13 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
     m->Fz = s->radial_load;
     m->My = s->moment_load;
     m->dof_dz = s->radial_load != 0.0 || s->moment_load != 0.0;
-    m->dof_thy = s->moment_load != 0.0;
+    /* mounting.tilt (issue 18): free solves the tilt whenever the ring
+     * moves off-axis, so a moment of 0 and of 1e-3 N m are the same problem
+     * (without radial load or moment the tilt is 0 by symmetry); held keeps
+     * it 0 (a moment is refused by the rules); auto frees it only under a
+     * moment, the seed's rule, kept so the seed presets do not move. */
+    m->dof_thy = s->tilt == ACBB_TILT_FREE ? m->dof_dz
+               : s->tilt == ACBB_TILT_HELD ? 0 : s->moment_load != 0.0;
     /* Deep groove (nominal angle 0) without thrust or moment: the bearing is
      * mirror-symmetric about the groove plane, so the inner ring sits
      * axially centred (A1 = 0 in MODEL.md 3, dx = -A0 sin alpha0) and the
@@ -856,7 +865,7 @@ void acbb_mech_adopt_state(const acbb_mech *m, acbb_mech_state *st)
     if (st->symmetric && !sym) acbb_mech_spread(st);
     st->symmetric = sym;
     st->mirror = !sym; /* Fy and Mz are not scene loads, dy and thz never move */
-    st->dz = m->dof_dz ? st->dz : 0.0;
+    st->dz = m->dof_dz ? st->dz : m->hold_radial ? m->dz_hold : 0.0;
     st->thy = m->dof_thy ? st->thy : 0.0;
 }
 
@@ -924,4 +933,11 @@ void acbb_mech_prescribe(acbb_mech *m, double dx, double dz, double thy)
     m->dof_dz = m->dof_thy = 0;
     m->dz_fixed = dz;
     m->thy_fixed = thy;
+}
+
+void acbb_mech_hold_radial(acbb_mech *m, double dz)
+{
+    m->hold_radial = 1;
+    m->dz_hold = dz;
+    m->dof_dz = 0;
 }

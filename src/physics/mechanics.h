@@ -161,6 +161,10 @@ void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);
  * unload is not an error here (the set names it): the reactions are 0. */
 void acbb_mech_prescribe(acbb_mech *m, double dx, double dz, double thy);
 
+/* Hold the ring's radial displacement at dz (m), the other DOFs as the
+ * scene says: the radial-held tilt stiffness (stiffness.h). */
+void acbb_mech_hold_radial(acbb_mech *m, double dz);
+
 /* Combined inner-outer stiffness K_n and the static closed-form angle for
  * a pure thrust Fx at zero speed (independent reference used by tests and
  * for the initial guess): solves Fx = Z K_n A0^1.5 (cos a0/cos a - 1)^1.5 sin a. */

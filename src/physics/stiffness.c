@@ -21,13 +21,14 @@ static void warm_start(const acbb_mech *m, const acbb_mech_state *warm, acbb_mec
 
 /* delta_z and theta_y of the equilibrium of scene s. */
 static acbb_status solve_point(const acbb_scene *s, const acbb_expansion *e, double dx_held,
-                               const acbb_mech_state *warm, double *dz, double *thy)
+                               const acbb_mech_state *warm, int held, double *dz, double *thy)
 {
     acbb_mech *m = NULL;
     acbb_mech_state *st = malloc(sizeof *st);
     acbb_status rc = st ? acbb_mech_new(s, &m, NULL) : ACBB_ENOMEM;
     if (rc == ACBB_OK && s->preload == ACBB_PRELOAD_DISPLACEMENT)
         acbb_mech_fix_axial(m, 1, dx_held);
+    if (rc == ACBB_OK && held) acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
     int cold = 1;
     if (rc == ACBB_OK && warm) {
         warm_start(m, warm, st);
@@ -45,7 +46,8 @@ static acbb_status solve_point(const acbb_scene *s, const acbb_expansion *e, dou
     return rc;
 }
 
-/* Central difference of the response to a load nudged by +-h around v. */
+/* Central difference of the response to a load nudged by +-h around v
+ * (tilt: 1 radial free, 2 radial held at the warm state's). */
 static double difference(acbb_scene *s, double *load, double h, const acbb_expansion *e,
                          double dx_held, const acbb_mech_state *warm, int tilt)
 {
@@ -53,8 +55,8 @@ static double difference(acbb_scene *s, double *load, double h, const acbb_expan
     acbb_status rc = ACBB_OK;
     for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
         *load = v + (k ? -h : h);
-        rc = tilt ? solve_point(s, e, dx_held, warm, &other, &r[k])
-                  : solve_point(s, e, dx_held, warm, &r[k], &other);
+        rc = tilt ? solve_point(s, e, dx_held, warm, tilt == 2, &other, &r[k])
+                  : solve_point(s, e, dx_held, warm, 0, &r[k], &other);
     }
     *load = v;
     double K = 2.0 * h / (r[0] - r[1]);
@@ -70,5 +72,7 @@ acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, do
     double h = fmax(0.01 * fabs(s->axial_load), 1.0);
     out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, 0);
     out->tilt = difference(&t, &t.moment_load, h * 0.5 * s->pitch_diameter, e, dx_held, warm, 1);
+    out->tilt_held = difference(&t, &t.moment_load, h * 0.5 * s->pitch_diameter, e, dx_held,
+                                warm, 2);
     return ACBB_OK;
 }

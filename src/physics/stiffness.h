@@ -1,7 +1,9 @@
 /* acbb — the ring's radial and tilting stiffness at an operating point
  * (issue "any bearing", outputs): central differences of the quasi-static
  * (race-control) equilibrium in radial load and in moment, at the given
- * expansions, with the axial load (or the displacement preload) held. The
+ * expansions, with the axial load (or the displacement preload) held.
+ * Radial: the tilt as mounting.tilt says; tilt: radial free, and its
+ * twin with the ring held radially (issue 18: the constraint named). The
  * axial stiffness comes from the coupled state itself (sim.c). */
 #ifndef ACBB_STIFFNESS_H
 #define ACBB_STIFFNESS_H
@@ -13,7 +15,8 @@
 
 typedef struct {
     double radial;      /* dFz/d(delta_z), N/m */
-    double tilt;        /* dMy/d(theta_y), N m/rad */
+    double tilt;        /* dMy/d(theta_y), radial free, N m/rad */
+    double tilt_held;   /* dMy/d(theta_y) with the ring held radially, N m/rad */
 } acbb_stiffness;
 
 /* dx_held: the axial displacement to hold when the scene's preload is a

@@ -62,7 +62,9 @@ static const acbb_output_row k_rows[] = {
     { "ring", "stiffness_radial_N_per_um", "stiffness_radial_N_um", "N/um", "radial stiffness",
       OFF_S(stiffness_radial), 1e-6, 1.0 },
     { "ring", "stiffness_tilt_Nm_per_mrad", "stiffness_tilt_Nm_mrad", "N m/mrad",
-      "tilt stiffness", OFF_S(stiffness_tilt), 1e-3, 1.0 },
+      "tilt stiffness, radial free", OFF_S(stiffness_tilt), 1e-3, 1.0 },
+    { "ring", "stiffness_tilt_held_Nm_per_mrad", "stiffness_tilt_held_Nm_mrad", "N m/mrad",
+      "tilt stiffness, ring held radially", OFF_S(stiffness_tilt_held), 1e-3, 1.0 },
 
     /* MODEL.md 13: the squeeze decomposition. */
     { "squeeze_um", "inner_thermal", "squeeze_inner_thermal_um", "um",

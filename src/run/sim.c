@@ -929,6 +929,7 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->stiffness_axial = acbb_snap_fin(sim->K_axial);
     o->stiffness_radial = acbb_snap_fin(sim->K_ring.radial);
     o->stiffness_tilt = acbb_snap_fin(sim->K_ring.tilt);
+    o->stiffness_tilt_held = acbb_snap_fin(sim->K_ring.tilt_held);
     o->work = sim->work;
     acbb_snap_squeeze(&sim->exp, &sim->ms.ball[0], &o->squeeze);
     o->reaction_x = acbb_snap_fin(sim->ms.Fx);

@@ -431,6 +431,16 @@ static acbb_status rule_set(const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
+/* A held tilt cannot take a moment (issue 18: the constraint is named). */
+static acbb_status rule_tilt(const acbb_scene *s, acbb_error *err)
+{
+    if (s->tilt != ACBB_TILT_HELD || s->moment_load == 0.0) return ACBB_OK;
+    char a[40];
+    return acbb_error_set(err, ACBB_ILL_POSED, "operating.moment_load_Nm = %s with mounting.tilt "
+                          "= held: a held ring takes no moment; use mounting.tilt = free",
+                          show(s, "operating", "moment_load_Nm", a));
+}
+
 typedef acbb_status (*rule_fn)(const acbb_scene *, acbb_error *);
 
 /* Order matters: ranges first (later rules divide by them), the grooves
@@ -440,7 +450,7 @@ static const rule_fn k_rules[] = {
     rule_inner_ring, rule_outer_ring, rule_inner_land, rule_outer_land, rule_cage_diameter, rule_ring_width,
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
     rule_preload, rule_surroundings, rule_radial_load,
-    rule_set,
+    rule_set, rule_tilt,
 };
 
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)

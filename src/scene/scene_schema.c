@@ -29,6 +29,7 @@ _Static_assert(sizeof(acbb_hyst_axis) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_network_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_preload_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_set_arrangement) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_tilt_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_thermal_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_bc_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_fidelity_preset) == sizeof(int), "enum size");
@@ -42,6 +43,7 @@ static const char *const k_hyst[] = {"major", "minor", NULL};
 static const char *const k_visc[] = {"roelands", "barus", "const", NULL};
 static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
 static const char *const k_preload[] = {"force", "displacement", NULL};
+static const char *const k_tilt[] = {"auto", "free", "held", NULL};
 static const char *const k_set[] = {"single", "DB", "DF", "DT", "DBT", "QBC", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
@@ -215,6 +217,9 @@ const acbb_sfield acbb_sf_table[] = {
          "force: axial load applied (dx free); displacement: dx fixed by preload_N"),
     REAL("mounting", "preload_N", "N", preload_force, 1.0, 300, CC, 0, 1e6,
          "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
+    ENUM("mounting", "tilt", tilt, k_tilt, ACBB_TILT_AUTO,
+         "inner-ring tilt: free (solved whenever radial load or moment act), held (0), or "
+         "auto (free only under a moment: the seed's rule, discontinuous at 0 N m)"),
 
     /* [set] (MODEL.md 14): a spindle set; single = today's one bearing */
     ENUM("set", "arrangement", set_arrangement, k_set, ACBB_SET_SINGLE,
