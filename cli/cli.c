@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include "acbb/batch.h"
 #include "acbb/history.h"
+#include "acbb/set.h"
 #include "acbb/measure.h"
 #include "acbb/scene.h"
 #include "acbb/fidelity.h"
@@ -203,6 +204,7 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
         acbb_cli_interrupt_end();
         return rc;
     }
+    csv.out.set_n = acbb_set_layout(&sc, NULL, NULL);
     if (csv_path) acbb_cli_csv_header(&csv.out);
     run_rows rows = { csv_path ? &csv.out : NULL, plot ? malloc(sizeof *rows.hist) : NULL };
     if (rows.hist) acbb_history_init(rows.hist);

@@ -308,7 +308,12 @@ void acbb_cli_csv_header(acbb_cli_out *o)
     const acbb_cli_col *c = COLS(o, csv_head, &n);
     csv_names(o, c, n, ",residual_K_s,");
     c = COLS(o, csv_tail, &n);
-    csv_names(o, c, n, "\n");
+    csv_names(o, c, n, o->set_n > 1 ? "," : "\n");
+    if (o->set_n < 2) return;
+    /* A set (MODEL.md 14): its preload and each bearing's outer ring. */
+    fputs("set_preload_N", o->f);
+    for (int k = 0; k < o->set_n; k++) fprintf(o->f, ",T_outer_ring_C_%d", k);
+    fputc('\n', o->f);
 }
 
 void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
@@ -321,7 +326,10 @@ void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
     for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), false);
     c_num(o, s->residual, false);
     c = COLS(o, csv_tail, &n);
-    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n);
+    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n && o->set_n < 2);
+    if (o->set_n < 2) return;
+    c_num(o, s->set.preload_N, false);
+    for (int k = 0; k < o->set_n; k++) c_num(o, s->set.T_outer_ring[k], k + 1 == o->set_n);
 }
 
 void acbb_cli_list_metrics(FILE *f)

@@ -35,6 +35,7 @@ typedef struct {
     FILE *f;
     long nonfinite;                      /* NaN/Inf values met so far */
     acbb_cli_colset cols[ACBB_CLI_COLSETS];
+    int set_n;                           /* a set's bearings (run CSV columns); 0/1: one */
 } acbb_cli_out;
 
 /* One run of a sweep or study: the scene it ran and what came out. */

@@ -57,6 +57,15 @@ for a in DB DF; do
     jqt "$TMP/h$a.json" '((.energy_W.in - .energy_W.out) | abs) < 1e-9 * .energy_W.in' \
         "pair-$a-heated: heat in = heat out of the joined network to 1e-9"
 done
+# CSV: the preload and each bearing's outer ring over time, last row = JSON.
+"$ACBB" run presets/pair-DF-heated.ini --csv "$TMP/df.csv" >/dev/null
+head -n 1 "$TMP/df.csv" | grep -q ',set_preload_N,T_outer_ring_C_0,T_outer_ring_C_1$' &&
+    awk -F, -v want="$(jq '.set.preload_N' "$TMP/hDF.json")" 'END { d = $(NF-2) - want;
+        exit !(d < 1e-6 && d > -1e-6) }' "$TMP/df.csv"
+t $? "run --csv of a pair: set_preload_N and T_outer_ring_C_k columns; last row's preload = JSON"
+"$ACBB" run presets/7008C.ini --set effects.heating=off --csv "$TMP/one.csv" >/dev/null
+head -n 1 "$TMP/one.csv" | grep -qv set_preload
+t $? "run --csv of one bearing: no set columns"
 jqt "$TMP/hDB.json" '.set.spacer_growth_um > 0' "heated pair: the shaft grows axially more than the housing"
 db=$(jq '.set.preload_N' "$TMP/hDB.json")
 jqt "$TMP/hDF.json" ".set.preload_N > $db + 50" "heated alike: DF preload rises more than DB's ($db N)"
