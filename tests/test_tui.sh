@@ -171,8 +171,8 @@ within_tol() {
 start "env NO_COLOR=1 LC_ALL=C ACBB_TUI_ACCURACY_KNOBS=contact_grid" exit4
 wait_for "ready"
 keys 1 BTab
-wait_for "[0 Sensitivity]"
-ok $? "Shift-Tab from screen 1 wraps to the last tab, 0 Sensitivity"
+wait_for "[S Set]"
+ok $? "Shift-Tab from screen 1 wraps to the last tab, S Set"
 keys 6 Tab Tab
 wait_for "[8 Accuracy]"
 ok $? "Tab reaches screen 8"

@@ -261,6 +261,7 @@ static void global_key(acbb_app *a, int ch)
     case 'W': acbb_app_prompt(a, ACBB_PROMPT_SAVE_AS, "save as: ", a->ed.path); break;
     case 'o': acbb_screen_browse_begin(a); break;
     case 'g': acbb_screen_plot_export(a); break;
+    case '[': case ']': acbb_set_choose(a, a->bearing + (ch == ']' ? 1 : -1)); break;
     case 'b': acbb_screen_accuracy_start(a, 0); break;
     case 'B': acbb_screen_accuracy_start(a, 1); break;
     case 27: a->msg[0] = '\0'; break;

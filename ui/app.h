@@ -119,6 +119,7 @@ struct acbb_app {
     int search_help;               /* the / prompt searches the help */
     int help_hit;                  /* help row of the last search hit */
     int node_hit;                  /* Nodes: the node the last search found (-1: none) */
+    int bearing;                   /* a set's bearing the screens show (screen_set.c) */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
 };
 

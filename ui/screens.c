@@ -6,6 +6,7 @@
 extern const acbb_screen acbb_screen_run, acbb_screen_nodes, acbb_screen_balls,
     acbb_screen_charts, acbb_screen_edit, acbb_screen_compare, acbb_screen_plot,
     acbb_screen_accuracy, acbb_screen_sweep, acbb_screen_sensitivity;
+extern const acbb_screen acbb_screen_set;
 
 const acbb_screen *const acbb_screens[] = {
     &acbb_screen_run,
@@ -18,6 +19,7 @@ const acbb_screen *const acbb_screens[] = {
     &acbb_screen_accuracy,
     &acbb_screen_sweep,
     &acbb_screen_sensitivity,
+    &acbb_screen_set,
 };
 
 const int acbb_screen_count = (int)(sizeof acbb_screens / sizeof acbb_screens[0]);

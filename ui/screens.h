@@ -34,6 +34,9 @@ typedef struct {
 /* The Run screen (the presentation view and baseline keys show it). */
 extern const acbb_screen acbb_screen_run;
 
+/* A bearing set: show bearing k (wrapping) on every screen (screen_set.c). */
+void acbb_set_choose(acbb_app *a, int k);
+
 /* The table, in tab order (screens.c). */
 extern const acbb_screen *const acbb_screens[];
 extern const int acbb_screen_count;

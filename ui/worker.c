@@ -53,6 +53,7 @@ struct acbb_worker {
     acbb_history hist;
     acbb_scene initial;        /* read by the worker once at start-up */
     _Atomic int pace;          /* simulated s per wall s, 0 = flat out */
+    _Atomic int bearing;       /* the bearing of a set whose snapshot is published */
     /* Set by the posting thread (STOP: run; QUIT: both), cleared by the
      * worker when it begins the next run / comparison. */
     atomic_int cancel_run;     /* the main Sim's drive and set-up */
@@ -149,6 +150,13 @@ static void set_phase(worker_ctx *c, acbb_worker_phase p)
     c->phase = p;
 }
 
+/* The snapshot of the bearing the UI chose (a set's; else the run's). */
+static void take_snapshot(acbb_worker *w, const acbb_sim *sim, acbb_snapshot *s)
+{
+    int k = atomic_load(&w->bearing);
+    if (k <= 0 || acbb_sim_bearing_snapshot(sim, k, s) != ACBB_OK) acbb_sim_snapshot(sim, s);
+}
+
 /* A new run (or a reset) begins: fresh history seeded with the initial state. */
 static void begin_run(acbb_worker *w, worker_ctx *c, acbb_worker_phase p)
 {
@@ -156,7 +164,7 @@ static void begin_run(acbb_worker *w, worker_ctx *c, acbb_worker_phase p)
     c->wall_acc = 0.0;
     c->rate = 0.0;
     set_phase(c, p);
-    acbb_sim_snapshot(c->sim, &c->snap);
+    take_snapshot(w, c->sim, &c->snap);
     /* Run id, scene, snapshot and history change together, so a reader
      * never sees the new run's id with the old run's numbers. */
     pthread_mutex_lock(&w->mu);
@@ -338,7 +346,7 @@ static int run_hook(void *ctx, const acbb_sim *sim)
     worker_ctx *c = h->c;
     long before = c->snap.iteration;
     double t_before = c->snap.time, sim_dt = 0.0;
-    acbb_sim_snapshot(sim, &c->snap);
+    take_snapshot(h->w, sim, &c->snap);
     if (c->snap.iteration != before) { /* iteration 0 was published by begin_run */
         sim_dt = c->snap.time - t_before;
         double t = acbb_now_ms();
@@ -360,7 +368,7 @@ static void run_drive(acbb_worker *w, worker_ctx *c)
     double t = acbb_now_ms();
     /* A run shorter than one window still reports its rate. */
     if (c->rate == 0.0 && t > c->rate_t0) c->rate = 1e3 * (double)c->rate_n / (t - c->rate_t0);
-    acbb_sim_snapshot(c->sim, &c->snap);
+    take_snapshot(w, c->sim, &c->snap);
     set_phase(c, rc == ACBB_CANCELLED ? ACBB_WORKER_STOPPED : ACBB_WORKER_DONE);
     publish(w, c, 0);
 }
@@ -373,7 +381,7 @@ static void stop_run(acbb_worker *w, worker_ctx *c)
     atomic_store(&w->cancel_run, 1);
     const acbb_run_ctl ctl = { NULL, NULL, &w->cancel_run };
     acbb_sim_drive(c->sim, &ctl);
-    acbb_sim_snapshot(c->sim, &c->snap);
+    take_snapshot(w, c->sim, &c->snap);
     set_phase(c, ACBB_WORKER_STOPPED);
 }
 
@@ -410,6 +418,9 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
         compare_begin(w, c, s);
         break;
     case ACBB_CMD_QUIT:
+        break;
+    case ACBB_CMD_SHOW:
+        if (c->sim) take_snapshot(w, c->sim, &c->snap);
         break;
     }
 
@@ -619,4 +630,10 @@ int acbb_worker_wait_done(acbb_worker *w, unsigned long seq, int timeout_ms)
         }
     pthread_mutex_unlock(&w->mu);
     return done;
+}
+
+void acbb_worker_set_bearing(acbb_worker *w, int k)
+{
+    atomic_store(&w->bearing, k > 0 ? k : 0);
+    acbb_worker_post(w, ACBB_CMD_SHOW, NULL, 0);
 }

@@ -50,7 +50,8 @@ typedef enum {
     ACBB_CMD_RESET,   /* back to ambient with the current run's scene, IDLE */
     ACBB_CMD_APPLY,   /* restart with the given scene, warm or cold, and run */
     ACBB_CMD_COMPARE, /* run the scene with thermal expansion on and off */
-    ACBB_CMD_QUIT     /* used by acbb_worker_free */
+    ACBB_CMD_QUIT,    /* used by acbb_worker_free */
+    ACBB_CMD_SHOW     /* publish the chosen bearing's snapshot again (acbb_worker_set_bearing) */
 } acbb_worker_cmd;
 
 typedef enum { ACBB_CMP_NONE, ACBB_CMP_RUNNING, ACBB_CMP_DONE } acbb_compare_phase;
@@ -100,6 +101,9 @@ unsigned long acbb_worker_post(acbb_worker *w, acbb_worker_cmd cmd,
 /* Simulated seconds per wall second (0 = flat out): after a step of dt
  * simulated seconds the worker waits dt / pace. Takes effect at once. */
 void acbb_worker_set_pace(acbb_worker *w, int sim_s_per_s);
+/* A bearing set (MODEL.md 14): publish bearing k's snapshot from now on
+ * (acbb_sim_bearing_snapshot; 0 = the first, also for one bearing). */
+void acbb_worker_set_bearing(acbb_worker *w, int k);
 int acbb_worker_pace(const acbb_worker *w);
 
 /* Copy the published state (and the history, if `hist` is not NULL). */

@@ -20,6 +20,8 @@ typedef struct {
     double Qi, Qo;                  /* ball 0, N */
     double alpha_i, alpha_o;        /* ball 0, rad */
     double exp_inner, exp_outer, exp_ball; /* m (exp_inner includes centrifugal) */
+    double set_preload;             /* a set's preload now, N (0: one bearing) */
+    double T_outer_set[ACBB_MAX_SET]; /* each bearing's outer ring, C (a set) */
 } acbb_history_point;
 
 typedef struct {

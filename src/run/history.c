@@ -27,6 +27,8 @@ void acbb_history_point_from(const acbb_snapshot *s, acbb_history_point *p)
     p->exp_inner = s->exp_inner + s->exp_inner_cen;
     p->exp_outer = s->exp_outer;
     p->exp_ball = s->exp_ball;
+    p->set_preload = s->set.preload_N;
+    for (int k = 0; k < ACBB_MAX_SET; k++) p->T_outer_set[k] = s->set.T_outer_ring[k];
 }
 
 /* Drop every second stored point (keeping the first) and double the stride. */

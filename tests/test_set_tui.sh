@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The TUI's Set screen (issue 17 item 6): a pair's preload and bearings, the
+# bearing shown chosen with [ ] and with a click on its row; a single bearing
+# says how to make a set. $1 = the acbb binary.
+. "$(dirname "$0")/test_tui_lib.sh"
+
+cp "$ROOT/presets/pair-DB-heated.ini" "$TMP/pair.ini"
+cp "$ROOT/presets/7008C.ini" "$TMP/one.ini"
+TUI_ARGS="--pace 0" start "" set1 pair.ini
+wait_for "pair.ini"
+keys S
+wait_for "DB set of 2"
+ok $? "S opens the Set screen of a DB pair"
+screen | grep -q '^>  0  +x' && screen | grep -q '^   1  -x'
+ok $? "one row per bearing, bearing 0 chosen, thrust directions +x and -x"
+keys r
+wait_for "converged"
+screen | grep -q 'preload [0-9.]* N now, 200.0 N at assembly'
+ok $? "the preload now beside the assembly preload"
+screen | grep -q 'Set preload' && screen | grep -q 'Outer rings'
+ok $? "preload over time beside the outer-ring temperatures"
+keys ']'
+wait_for "showing bearing 1 of 2"
+ok $? "] shows bearing 1"
+screen | grep -q '^>  1  -x'
+ok $? "and marks its row"
+# A click on bearing 0's row (body row 3, screen row 4; X10 report).
+printf '\033[M %s%s' "$(printf '\\%03o' $((32 + 6)))" "$(printf '\\%03o' $((32 + 5)))" >"$TMP/click"
+keys -l "$(printf '%b' "$(cat "$TMP/click")")"
+wait_for "showing bearing 0 of 2"
+ok $? "a click on a bearing's row chooses it"
+keys q
+wait_file "$TMP/set1" 5
+
+TUI_ARGS="--pace 0" start "" set2 one.ini
+wait_for "one.ini"
+keys S
+wait_for "One bearing (set.arrangement = single)"
+ok $? "a single bearing: the Set screen says how to make a set"
+keys ']'
+wait_for "one bearing: set.arrangement = single"
+ok $? "[ ] on one bearing say so"
+keys q
+wait_file "$TMP/set2" 5
+
+echo "1..$n"
+[ "$failed" -eq 0 ]
