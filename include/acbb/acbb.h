@@ -9,6 +9,7 @@
 #include "acbb/units.h"
 #include "acbb/limits.h"
 #include "acbb/scene.h"
+#include "acbb/schedule.h"
 #include "acbb/preset_info.h"
 #include "acbb/designation.h"
 #include "acbb/fidelity.h"

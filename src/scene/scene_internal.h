@@ -72,6 +72,8 @@ typedef struct {
     int first_line[ACBB_SF_MAX];   /* line of each key, 0 = not in the file */
     int section_end[ACBB_SF_SECTIONS_MAX]; /* last line (header or key) of the
                                       section's last occurrence, 0 = absent */
+    int schedule_line[ACBB_SCHEDULE_MAX]; /* line of each [schedule] row */
+    int schedule_end;              /* last line of the last [schedule], 0 = absent */
 } acbb_sf_parsed;
 
 /* Open a preset for reading: refuses (ACBB_EIO, with the reason) anything
