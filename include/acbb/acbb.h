@@ -15,6 +15,7 @@
 #include "acbb/fidelity.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/sim.h"
+#include "acbb/branches.h"
 #include "acbb/history.h"
 #include "acbb/outputs.h"
 #include "acbb/measure.h"

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
+#include "acbb/branches.h"
 
 #define ACBB_JSON_DEPTH 8        /* deepest nesting; deeper is a bug (counted in misuse) */
 
@@ -53,6 +54,15 @@ void acbb_json_value_text(acbb_json *j, const char *key, const char *text);
  * (outputs.h), work counters, inactive effects, balls, and the scene with
  * every preset key. */
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s);
+/* acbb_json_write_run with the comparison of the two branches (branches.h)
+ * as `branches` before the scene; b NULL: none (acbb_json_write_run). */
+void acbb_json_write_run_branches(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
+                                  const acbb_branches *b);
+/* The run's `schedule` object (schedule.h: the rows, the row reached, whether
+ * it finished, the operating point there) and the `branches` object;
+ * acbb_json_write_run writes the first when the scene has rows. */
+void acbb_json_write_schedule(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s);
+void acbb_json_write_branches(acbb_json *j, const acbb_branches *b);
 /* A run that never started (acbb_sim_new failed): status, message,
  * iterations 0 and the scene. */
 void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *status,

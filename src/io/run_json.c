@@ -88,6 +88,12 @@ static void ring_and_work(acbb_json *j, const acbb_scene *sc, const acbb_snapsho
 
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
 {
+    acbb_json_write_run_branches(j, sc, s, NULL);
+}
+
+void acbb_json_write_run_branches(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
+                                  const acbb_branches *b)
+{
     acbb_json_open(j, NULL, '{', false);
     acbb_json_str(j, "status", acbb_run_status_name(s));
     acbb_json_str(j, "message", s->message);
@@ -113,6 +119,8 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
     acbb_json_close(j, ']');
 
     section(j, s, "energy_W");
+    if (sc->schedule_n > 0) acbb_json_write_schedule(j, sc, s);
+    if (b) acbb_json_write_branches(j, b);
 
     scene(j, sc);
     acbb_json_close(j, '}');

@@ -84,6 +84,10 @@ FILE *acbb_sf_open_preset(const char *path, acbb_error *err);
  * and each key's own range, not the cross-field rules, not emptiness. */
 acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_error *err);
 
+/* acbb_schedule_validate (schedule.c), also saying which row failed (0-based;
+ * -1: none), so that a file's message can name the row's line. */
+acbb_status acbb_sf_schedule_check(const acbb_scene *s, int *row, acbb_error *err);
+
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);
 

@@ -252,9 +252,15 @@ static acbb_status load_stream(FILE *f, const char *name, acbb_scene *s, acbb_er
     if (rc == ACBB_OK && p->n_keys == 0) {
         rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", name);
     } else if (rc == ACBB_OK) {
-        acbb_error e;
+        acbb_error e, es;
+        int row;
         rc = acbb_scene_validate(&p->scene, &e);
-        if (rc != ACBB_OK)
+        /* A schedule row's rule: named with the row's line. */
+        bool at_row = rc != ACBB_OK && acbb_sf_schedule_check(&p->scene, &row, &es) == rc
+                      && row >= 0 && strcmp(es.msg, e.msg) == 0;
+        if (at_row)
+            acbb_error_set(err, rc, "%s:%d: %s", name, p->schedule_line[row], e.msg);
+        else if (rc != ACBB_OK)
             acbb_error_set(err, rc, "%s: %s", name, e.msg);
         else
             *s = p->scene;

@@ -227,10 +227,20 @@ static acbb_status check_row(const acbb_scene *s, int i, acbb_error *err)
     return rc == ACBB_OK ? ACBB_OK : row_fail_code(s, i, rc, err, e.msg);
 }
 
-acbb_status acbb_schedule_validate(const acbb_scene *s, acbb_error *err)
+acbb_status acbb_sf_schedule_check(const acbb_scene *s, int *row, acbb_error *err)
 {
+    *row = -1;
     if (s->schedule_n == 0) return ACBB_OK;
     acbb_status rc = check_times(s, err);
-    for (int i = 0; i < s->schedule_n && rc == ACBB_OK; i++) rc = check_row(s, i, err);
+    if (rc != ACBB_OK) *row = s->schedule_n > 0 && s->schedule_n <= ACBB_SCHEDULE_MAX
+                                  ? s->schedule_n - 1 : -1;
+    for (int i = 0; i < s->schedule_n && rc == ACBB_OK; i++)
+        if ((rc = check_row(s, i, err)) != ACBB_OK) *row = i;
     return rc;
+}
+
+acbb_status acbb_schedule_validate(const acbb_scene *s, acbb_error *err)
+{
+    int row;
+    return acbb_sf_schedule_check(s, &row, err);
 }
