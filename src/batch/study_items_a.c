@@ -110,9 +110,13 @@ static bool need_traj(acbb_study_item *it, const char *id, const acbb_study_runs
 {
     for (int k = 0; k < NL; k++) {
         const acbb_study_point *p = P(c, LV_BASE, BLK_LOAD, k, TE);
-        if (p->n_traj > 0 && p->traj) continue;
+        if (p->n_traj > 0 && p->traj && !(p->runaway_t > 0.0)) continue;
         tbuf t = { .n = 0 };
-        tb(&t, "run %s: no transient recorded", p->label);
+        if (p->runaway_t > 0.0) /* study.c, steady_branch */
+            tb(&t, "run %s: the transient ran away at t = %.0f s (its steady values are the "
+               "steady solve's: another branch, MODEL.md 14)", p->label, p->runaway_t);
+        else
+            tb(&t, "run %s: no transient recorded", p->label);
         add_check(it, id, V_NOT_EVAL, &t);
         return false;
     }
