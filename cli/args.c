@@ -72,6 +72,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                          "with --sensitivity: vary only these uncertain inputs (default all; "
                          "`acbb keys` marks them plausible)" },
     [CLI_OPT_MAN] = { "man", NULL, "print the manual page (roff) made from the command table" },
+    [CLI_OPT_BRANCHES] = { "branches", NULL, "also solve the other branch (the steady solve "
+                           "beside the transient) and say whether they agree (automatic with a "
+                           "[schedule] or mounting.preload = displacement)" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

@@ -28,6 +28,7 @@
 #include "presets.h"
 #include "figures.h"
 #include "progress.h"
+#include "branches.h"
 
 /* ---- driving a run ---- */
 
@@ -133,16 +134,20 @@ static acbb_snapshot *bearing_snaps(const acbb_sim *sim, const acbb_snapshot *sn
 }
 
 static int run_report(const acbb_cli_args *a, const char *preset, const acbb_scene *sc,
-                      const acbb_snapshot *snap, const acbb_snapshot *bear)
+                      const acbb_snapshot *snap, const acbb_snapshot *bear,
+                      const acbb_branches *br)
 {
     acbb_cli_out o;
     acbb_cli_out_init(&o, stdout);
     const char *base = a->val[CLI_OPT_BASELINE];
     bool json = a->val[CLI_OPT_JSON] != NULL;
     int rc = 0;
-    if (json && !base && bear) acbb_cli_json_run_set(&o, sc, snap, bear);
-    else if (json && !base) acbb_cli_json_run(&o, sc, snap);
-    else if (!json && !a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, sc, snap);
+    acbb_scene shown; /* with a schedule: at its last row */
+    acbb_cli_schedule_shown(sc, &shown);
+    if (json && !base) acbb_cli_json_run_parts(&o, sc, snap, bear, br);
+    else if (!json && !a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, &shown, snap);
+    if (!json && !a->val[CLI_OPT_QUIET]) acbb_cli_print_schedule(&o, sc, snap);
+    if (!json && !a->val[CLI_OPT_QUIET] && br) acbb_cli_print_branches(&o, br);
     if (base) rc = acbb_cli_baseline(base, sc, snap, json);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
     if (snap->state != ACBB_RUN_CONVERGED) {
@@ -189,6 +194,8 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
 
     acbb_cli_progress prog;
     acbb_cli_progress_init(&prog, stderr, sc.steady_tol);
+    prog.schedule = sc.schedule_n > 0 && sc.heating && sc.thermal_mode == ACBB_THERMAL_TRANSIENT
+                    ? &sc : NULL;
     const atomic_int *cancel = acbb_cli_interrupt_begin();
     acbb_sim *sim = NULL;
     rc = start_sim(&sc, json, cancel, &prog, &sim);
@@ -210,12 +217,18 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     if (rows.hist) acbb_history_init(rows.hist);
     drive(sim, &(drive_ctx){ snap, (csv_path || rows.hist) ? run_row_cb : NULL, &rows, &prog,
                              cancel });
+    acbb_branches br_store, *br = NULL; /* the other branch (acbb/branches.h) */
+    acbb_error berr;
+    acbb_cli_progress_note(&prog, "solving the other branch (steady solve vs transient)");
+    if (!acbb_cli_interrupted() && acbb_cli_branches_wanted(a, &sc)
+        && acbb_branches_compare(&sc, snap, cancel, &br_store, &berr) == ACBB_OK)
+        br = &br_store;
     acbb_cli_progress_end(&prog);
     acbb_cli_interrupt_end();
     acbb_snapshot *bear = bearing_snaps(sim, snap);
     acbb_sim_free(sim);
     rc = csv_path ? acbb_cli_file_close(&csv) : 0;
-    rc = acbb_cli_worst(run_report(a, preset, &sc, snap, bear), rc);
+    rc = acbb_cli_worst(run_report(a, preset, &sc, snap, bear, br), rc);
     free(bear);
     if (plot && !rows.hist) rc = acbb_cli_worst(rc, ACBB_EXIT_INTERNAL);
     if (rows.hist) rc = acbb_cli_worst(rc, acbb_cli_write_plot(plot, rows.hist, snap, preset));

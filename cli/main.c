@@ -40,7 +40,8 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "run", NULL, "PRESET", "run the coupled model to thermal steady state",
       "--csv writes one row per coupled step; --plot FILE.png writes the temperature\n"
       "plot there and the other kinds next to it (FILE-losses.png, ...).\n",
-      SCENE_OPTS | O(JSON) | O(CSV) | O(QUIET) | O(PLOT) | O(BASELINE), 1, 1, 0,
+      SCENE_OPTS | O(JSON) | O(CSV) | O(QUIET) | O(PLOT) | O(BASELINE)
+      | O(BRANCHES), 1, 1, 0,
       acbb_cli_cmd_run },
     { "check", NULL, "PRESET", "validate the preset and the edits without running", NULL,
       SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_check },

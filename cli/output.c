@@ -257,12 +257,12 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapsho
     o->nonfinite += j.nonfinite;
 }
 
-void acbb_cli_json_run_set(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
-                           const acbb_snapshot *bearings)
+void acbb_cli_json_run_parts(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
+                             const acbb_snapshot *bearings, const acbb_branches *br)
 {
     acbb_json j;
     acbb_json_init(&j, o->f);
-    acbb_json_write_run_set(&j, sc, s, bearings, s->n_bearings);
+    acbb_json_write_run_parts(&j, sc, s, bearings, s->n_bearings, br);
     o->nonfinite += j.nonfinite;
 }
 

@@ -14,6 +14,7 @@
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
+#include "acbb/branches.h"
 
 #define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
 #define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
@@ -71,9 +72,10 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap);
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
                        const acbb_snapshot *snap);
-/* The same for a bearing set: bearings[0..s->n_bearings) (json.h). */
-void acbb_cli_json_run_set(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
-                           const acbb_snapshot *bearings);
+/* The same with its optional parts (acbb_json_write_run_parts): a set's
+ * bearings[0..s->n_bearings) (NULL: one bearing), the branches (NULL: none). */
+void acbb_cli_json_run_parts(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
+                             const acbb_snapshot *bearings, const acbb_branches *br);
 /* JSON for a run that never started (acbb_sim_new failed). */
 void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
                           const char *status, const char *message);

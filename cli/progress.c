@@ -6,6 +6,8 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/measure.h"
+#include "acbb/schedule.h"
+#include "acbb/units.h"
 #include "exit.h"
 #include "progress.h"
 
@@ -156,11 +158,17 @@ void acbb_cli_progress_step(acbb_cli_progress *p, const acbb_snapshot *snap)
     if (snap->iteration > 0) acbb_cli_decay_add(&p->fit, now, snap->residual);
     if (now_ms - p->last_ms < 250.0) return;   /* at most ~4 redraws a second */
     p->last_ms = now_ms;
-    char eta[32], line[160];
-    format_eta(eta, sizeof eta, acbb_cli_decay_eta(&p->fit, now, p->target));
+    char eta[32], line[200], sched[64] = "";
+    acbb_operating op = { .finished = true };
+    if (p->schedule) acbb_schedule_at(p->schedule, snap->time, &op);
+    /* The residual decays only once the schedule has ended: no ETA before. */
+    format_eta(eta, sizeof eta, op.finished ? acbb_cli_decay_eta(&p->fit, now, p->target) : -1.0);
+    if (p->schedule)
+        snprintf(sched, sizeof sched, "  row %d/%d %.0f rpm%s", op.row, op.n_rows,
+                 acbb_rads_to_rpm(op.inner_speed), op.finished ? " (done)" : "");
     int len = snprintf(line, sizeof line,
-                       "step %ld  residual %.2e / %.1e K/s  t %.0f s  %s  (Ctrl-C stops)",
-                       snap->iteration, snap->residual, p->target, snap->time, eta);
+                       "step %ld  residual %.2e / %.1e K/s  t %.0f s%s  %s  (Ctrl-C stops)",
+                       snap->iteration, snap->residual, p->target, snap->time, sched, eta);
     show_line(p, line, len < (int)sizeof line ? len : (int)sizeof line - 1);
 }
 

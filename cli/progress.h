@@ -53,6 +53,7 @@ typedef struct {
     double t0_ms, last_ms;
     double target;             /* fidelity steady_tol, K/s */
     int shown;                 /* length of the line on screen */
+    const acbb_scene *schedule; /* a transient following a [schedule] (NULL: none): its row and speed shown */
     acbb_cli_decay_fit fit;
 } acbb_cli_progress;
 

@@ -16,6 +16,33 @@
 #include "progress.h"
 #include "report.h"
 
+/* ---- mountings (issue 17 item 7; MODEL.md 14) ----
+ * Each seed conclusion is judged under the seed rig's constant force and
+ * under rigid preload of the same bearing: the study as the scene says, and
+ * again with the other mounting.preload (under displacement the study's
+ * thrust of each point is the assembly preload, study.c set_point). A DB
+ * pair (helper "sets": set.arrangement = DB) joins as a third row here. */
+enum { M_FORCE, M_RIGID, N_MOUNTINGS };
+static const struct {
+    const char *name, *json;
+} k_mountings[N_MOUNTINGS] = {
+    [M_FORCE] = { "constant force", "constant_force" },
+    [M_RIGID] = { "rigid preload", "rigid_preload" },
+};
+
+/* The scene of mounting m from the preset's scene. */
+static void mounting_scene(const acbb_scene *base, int m, acbb_scene *out)
+{
+    *out = *base;
+    out->preload = m == M_RIGID ? ACBB_PRELOAD_DISPLACEMENT : ACBB_PRELOAD_FORCE;
+    if (m == M_RIGID && !(out->preload_force > 0.0)) out->preload_force = out->axial_load;
+}
+
+static int own_mounting(const acbb_scene *base)
+{
+    return base->preload == ACBB_PRELOAD_DISPLACEMENT ? M_RIGID : M_FORCE;
+}
+
 /* What the formatters need besides the study. */
 typedef struct {
     const char *preset;
@@ -25,6 +52,7 @@ typedef struct {
     const acbb_study *st;
     const acbb_study_runs *runs;
     const acbb_study_rob *rob;   /* --sensitivity, else NULL */
+    const acbb_study *by[N_MOUNTINGS]; /* the study under each mounting (k_mountings) */
 } report_view;
 
 /* ---- robustness (--sensitivity) ---- */
@@ -203,6 +231,52 @@ static void print_robust_text(FILE *f, const report_view *c)
     free(t);
 }
 
+/* Check `id` ("5a") of study s; when the item was not evaluated as a whole
+ * (one check named by the item number), that check: it says why. */
+static const acbb_study_check *find_check(const acbb_study *s, const char *id)
+{
+    const acbb_study_check *ch = acbb_study_find_check(s, id);
+    const acbb_study_item *it = acbb_study_item_at(s, (size_t)(atoi(id) - 1));
+    return ch ? ch : it && it->n_checks > 0 ? &it->checks[0] : NULL;
+}
+
+/* "both", "constant force only", ... for conclusion i. */
+static const char *holds_under(const report_view *c, size_t i)
+{
+    bool f = acbb_study_conclusion_verdict(c->by[M_FORCE], i) == ACBB_VERDICT_HELD;
+    bool r = acbb_study_conclusion_verdict(c->by[M_RIGID], i) == ACBB_VERDICT_HELD;
+    return f && r ? "both" : f ? "constant force only" : r ? "rigid preload only" : "neither";
+}
+
+static const char k_mount_intro[] =
+    "Seed conclusions by mounting (MODEL.md 14): the same study under the seed rig's constant "
+    "force and under rigid preload of the same bearing (mounting.preload = displacement, each "
+    "point's thrust the assembly preload); where a transient runs away, the steady values are "
+    "the steady solve's and the transient checks say so. The checks' numbers under each:";
+
+static void print_mountings_text(FILE *f, const report_view *c)
+{
+    size_t nc;
+    const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
+    wrap(f, "", 0, k_mount_intro);
+    fprintf(f, "%-6s%-16s%-16s%s\n", "", k_mountings[M_FORCE].name, k_mountings[M_RIGID].name,
+            "holds under");
+    for (size_t i = 0; i < nc; i++) {
+        fprintf(f, "(%zu)   %-16s%-16s%s\n", i + 1,
+                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_FORCE], i)),
+                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_RIGID], i)),
+                holds_under(c, i));
+        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
+            for (int m = 0; m < N_MOUNTINGS; m++) {
+                const acbb_study_check *ch = find_check(c->by[m], cc[i].checks[k]);
+                char head[48];
+                snprintf(head, sizeof head, "%6s%-4s %-4s %s: ", "", cc[i].checks[k],
+                         ch ? k_vmark[ch->verdict] : "n/e", m == M_FORCE ? "force" : "rigid");
+                wrap(f, head, 12, ch ? ch->text : "not evaluated");
+            }
+    }
+}
+
 static void print_text(FILE *f, const report_view *c)
 {
     char line[4600];
@@ -234,6 +308,8 @@ static void print_text(FILE *f, const report_view *c)
     int nv[3];
     acbb_study_counts(c->st, nv);
     fprintf(f, "\n%d held, %d not held, %d not evaluated\n", nv[0], nv[1], nv[2]);
+    fputc('\n', f);
+    print_mountings_text(f, c);
     if (c->rob) {
         fputc('\n', f);
         print_robust_text(f, c);
@@ -340,6 +416,21 @@ static void print_json_robust(FILE *f, const report_view *c, size_t i)
     fputc('}', f);
 }
 
+/* The item's verdict and checks under each mounting. */
+static void print_json_mountings(FILE *f, const report_view *c, size_t i)
+{
+    fputs(",\n   \"mountings\": {", f);
+    for (int m = 0; m < N_MOUNTINGS; m++) {
+        const acbb_study_item *it = acbb_study_item_at(c->by[m], i);
+        fprintf(f, "%s\"%s\": {\"verdict\": ", m ? ",\n    " : "", k_mountings[m].json);
+        json_str(f, acbb_verdict_name(it->verdict));
+        fputs(", \"checks\": [", f);
+        print_json_checks(f, it);
+        fputs("]}", f);
+    }
+    fputc('}', f);
+}
+
 static void print_json(FILE *f, const report_view *c)
 {
     size_t n = acbb_study_n_items(c->st), nc;
@@ -370,6 +461,7 @@ static void print_json(FILE *f, const report_view *c)
             json_num(f, it->values[k].v);
         }
         fputs("}}", f);
+        print_json_mountings(f, c, i);
         print_json_robust(f, c, i);
         fprintf(f, "}%s\n", i + 1 < n ? "," : "");
     }
@@ -491,6 +583,24 @@ static void print_md(FILE *f, const report_view *c)
         concl_checks(ids, sizeof ids, &cc[i], " |", " |\n");
         fputs(ids, f);
     }
+    fputs("\n## Seed conclusions by mounting\n\n", f);
+    md_text(f, k_mount_intro);
+    fputs("\n\n| # | constant force | rigid preload | holds under |\n|---|---|---|---|\n", f);
+    for (size_t i = 0; i < nc; i++)
+        fprintf(f, "| (%zu) | %s | %s | %s |\n", i + 1,
+                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_FORCE], i)),
+                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_RIGID], i)),
+                holds_under(c, i));
+    fputc('\n', f);
+    for (size_t i = 0; i < nc; i++)
+        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
+            for (int m = 0; m < N_MOUNTINGS; m++) {
+                const acbb_study_check *ch = find_check(c->by[m], cc[i].checks[k]);
+                fprintf(f, "- (%zu) **%s %s**, %s: ", i + 1, cc[i].checks[k],
+                        ch ? acbb_verdict_name(ch->verdict) : "NOT EVALUATED", k_mountings[m].name);
+                md_text(f, ch ? ch->text : "not evaluated");
+                fputc('\n', f);
+            }
     fputs("\n## Evidence\n", f);
     for (size_t i = 0; i < n; i++) {
         const acbb_study_item *it = acbb_study_item_at(c->st, i);
@@ -554,7 +664,7 @@ static void rob_progress_fn(void *ctx, size_t done, size_t total)
  * taken down) stopped nothing, so the complete report is printed and the
  * exit status is the runs' own. */
 static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
-                   acbb_study_rob *rob, bool *have_rob)
+                   acbb_study *other, acbb_study_rob *rob, bool *have_rob)
 {
     long jobs = 0;
     if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs) != 0)
@@ -564,6 +674,11 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
     const atomic_int *cancel = acbb_cli_interrupt_begin();
     acbb_cli_progress_note(&rp, "report: running the study  (Ctrl-C stops)");
     acbb_status ss = acbb_study_run(st, (int)jobs, cancel);
+    if (ss != ACBB_CANCELLED) {
+        acbb_cli_progress_note(&rp, "report: the study under the other mounting  (Ctrl-C stops)");
+        acbb_status so = acbb_study_run(other, (int)jobs, cancel);
+        if (so == ACBB_CANCELLED) ss = so;
+    }
     int rc = 0;
     if (ss != ACBB_CANCELLED && (a->val[CLI_OPT_SENSITIVITY] || k->n)) {
         acbb_error err = { { 0 } };
@@ -608,23 +723,31 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
         fprintf(stderr, "acbb: report: --md %s\n", err.msg);
         return ACBB_EXIT_INPUT;
     }
-    acbb_study *st = NULL;
-    if (acbb_study_plan(base, &st, &err) != ACBB_OK) {
+    acbb_study *st = NULL, *other = NULL;
+    acbb_scene other_scene;
+    int own = own_mounting(base);
+    mounting_scene(base, own == M_FORCE ? M_RIGID : M_FORCE, &other_scene);
+    if (acbb_study_plan(base, &st, &err) != ACBB_OK
+        || acbb_study_plan(&other_scene, &other, &err) != ACBB_OK) {
         fputs("acbb: report: out of memory\n", stderr);
         if (md) acbb_out_abort(md);
+        acbb_study_free(st);
         return ACBB_EXIT_INTERNAL;
     }
     acbb_study_rob rob = { 0 };
     bool have_rob = false;
-    int rc = run_all(a, k, st, &rob, &have_rob);
+    int rc = run_all(a, k, st, other, &rob, &have_rob);
     if (rc != 0) {
         if (md) acbb_out_abort(md);
         acbb_study_free(st);
+        acbb_study_free(other);
         acbb_study_rob_free(&rob);
         return rc < 0 ? cancelled(a) : rc;
     }
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
-                      have_rob ? &rob : NULL };
+                      have_rob ? &rob : NULL, { NULL, NULL } };
+    v.by[own] = st;
+    v.by[own == M_FORCE ? M_RIGID : M_FORCE] = other;
     if (a->val[CLI_OPT_JSON]) print_json(stdout, &v);
     else print_text(stdout, &v);
     rc = acbb_study_n_failed(st) ? ACBB_EXIT_SOLVER : ACBB_EXIT_OK;
@@ -637,6 +760,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
         }
     }
     acbb_study_free(st);
+    acbb_study_free(other);
     acbb_study_rob_free(&rob);
     return rc;
 }

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include "acbb/schedule.h"
 #include "acbb/units.h"
 #include "screens.h"
 
@@ -154,6 +155,21 @@ static void mech_panel(acbb_app *a, acbb_rect r)
     }
 }
 
+/* A run following a [schedule] (schedule.h): the row reached and the speed
+ * there, after the state text. */
+static void schedule_text(const acbb_app *a, char *buf, size_t n)
+{
+    const acbb_scene *sc = &a->st.scene;
+    if (sc->schedule_n == 0 || a->st.phase == ACBB_WORKER_NO_SIM) return;
+    acbb_operating op;
+    if (sc->thermal_mode == ACBB_THERMAL_STEADY || !sc->heating) acbb_schedule_final(sc, &op);
+    else acbb_schedule_at(sc, a->st.snap.time, &op);
+    size_t used = strlen(buf);
+    if (used + 1 < n)
+        snprintf(buf + used, n - used, " Schedule row %d/%d, %.0f rpm%s.", op.row, op.n_rows,
+                 acbb_rads_to_rpm(op.inner_speed), op.finished ? ", done" : "");
+}
+
 /* What the run is doing, in words: never "running" when nothing runs
  * (at launch, after R, after x), and a failure's reason in full. */
 void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role)
@@ -179,6 +195,7 @@ void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role
         snprintf(buf, n, "No simulation: %s", a->st.message);
         break;
     }
+    schedule_text(a, buf, n);
 }
 
 /* The state line(s) at the top of r, the chart of the ring and ball

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
+#include "acbb/branches.h"
 
 #define ACBB_JSON_DEPTH 8        /* deepest nesting; deeper is a bug (counted in misuse) */
 
@@ -53,12 +54,18 @@ void acbb_json_value_text(acbb_json *j, const char *key, const char *text);
  * (outputs.h), work counters, inactive effects, balls, and the scene with
  * every preset key. */
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s);
-/* The same for a bearing set (MODEL.md 14) with b[0..n) its bearings'
- * snapshots (acbb_sim_bearing_snapshot): adds `bearings` (one object per
- * bearing, bearing 0 first, with its single-bearing results) and `set`
- * (the output table's "set" entries). n <= 1 or b NULL: acbb_json_write_run. */
-void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
-                             const acbb_snapshot *b, int n);
+/* The run with its optional parts: b[0..n) a bearing set's snapshots
+ * (acbb_sim_bearing_snapshot, bearing 0 first; n <= 1 or b NULL: one
+ * bearing) add `bearings` (each bearing's single-bearing results) and `set`
+ * (the output table's "set" entries, MODEL.md 14); br (branches.h; NULL:
+ * none) adds `branches`. A scene with a schedule also gets `schedule`. */
+void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
+                               const acbb_snapshot *b, int n, const acbb_branches *br);
+/* The run's `schedule` object (schedule.h: the rows, the row reached, whether
+ * it finished, the operating point there) and the `branches` object;
+ * acbb_json_write_run writes the first when the scene has rows. */
+void acbb_json_write_schedule(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s);
+void acbb_json_write_branches(acbb_json *j, const acbb_branches *b);
 /* A run that never started (acbb_sim_new failed): status, message,
  * iterations 0 and the scene. */
 void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *status,

@@ -53,6 +53,15 @@ typedef struct {
     double dT;           /* coolant temperature minus ambient_C, K */
 } acbb_face_bc;
 
+/* One row of a run-in schedule (MODEL.md 14 "Run-in schedule"; schedule.h):
+ * from time t on, the operating point moves linearly to the next row's. */
+#define ACBB_SCHEDULE_MAX 32
+typedef struct {
+    double t;                    /* s from the start of the run */
+    double inner_speed;          /* rad/s (preset: rpm) */
+    double axial_load, radial_load; /* N */
+} acbb_schedule_row;
+
 typedef struct {
     /* [bearing] geometry (MODEL.md section 1, section 10) */
     double pitch_diameter;       /* d_m, m */
@@ -135,6 +144,10 @@ typedef struct {
     double radial_load;          /* F_z, N */
     double moment_load;          /* M_y, N m */
     double ambient_C;            /* ambient = reference temperature, C */
+    /* [schedule]: 0 rows = none; else the rows set speed, axial and radial
+     * load over time (schedule.h) and the [operating] values of those are unused */
+    int schedule_n;
+    acbb_schedule_row schedule[ACBB_SCHEDULE_MAX];
 
     /* [effects]: a disabled effect is not computed at all */
     bool heating;                /* off: isothermal at ambient, no thermal network solve */

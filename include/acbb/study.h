@@ -67,6 +67,8 @@ typedef struct {
     int oom;
     double min_loss;             /* smallest loss term seen at any step, W */
     double wall_ms;
+    double runaway_t;            /* > 0: its transient ran away then (s); its steady values
+                                  * are the steady solve's (MODEL.md 14, two branches) */
 } acbb_study_point;
 
 #define ACBB_STUDY_NPTS 8        /* points per sweep */

@@ -143,6 +143,10 @@ static acbb_status set_point(acbb_scene *s, double rpm, double load, int te, int
     snprintf(v[1], sizeof v[1], "%g", load);
     acbb_status st = acbb_scene_set(s, "operating.inner_speed_rpm", v[0], err);
     if (st == ACBB_OK) st = acbb_scene_set(s, "operating.axial_load_N", v[1], err);
+    /* Rigid preload (MODEL.md 14): the sweep's thrust is the assembly preload
+     * that sets the held axial offset (the axial load itself does not act). */
+    if (st == ACBB_OK && s->preload == ACBB_PRELOAD_DISPLACEMENT && load > 0.0)
+        st = acbb_scene_set(s, "mounting.preload_N", v[1], err);
     if (st == ACBB_OK)
         st = acbb_scene_set(s, "effects.thermal_expansion", te ? "on" : "off", err);
     if (st == ACBB_OK && l2) st = acbb_scene_set(s, "fidelity.model", "quasi-dynamic", err);
@@ -233,10 +237,35 @@ acbb_status acbb_study_plan(const acbb_scene *base, acbb_study **out, acbb_error
     return ACBB_OK;
 }
 
+/* MODEL.md 14: under rigid preload a cold step start can run away where the
+ * steady solve finds a benign state (two branches). A recorded point whose
+ * transient ran away keeps that finding (runaway_t, its message) and takes
+ * its steady values from the steady solve; the transient items (4, 5) name
+ * it instead of reading it. Nothing runs away under a constant force. */
+static void steady_branch(acbb_study_runs *r, int jobs, const atomic_int *cancel)
+{
+    acbb_study_point *list[ACBB_STUDY_NPTS];
+    double t[ACBB_STUDY_NPTS];
+    size_t n = 0;
+    for (size_t i = 0; i < r->n && n < ACBB_STUDY_NPTS; i++) {
+        acbb_study_point *p = &r->all[i];
+        if (!p->record || p->ok || p->status != ACBB_RUNAWAY) continue;
+        t[n] = p->last.time;
+        p->record = 0;   /* the steady solve (point_scene) */
+        list[n++] = p;
+    }
+    acbb_study_run_list(list, n, jobs, cancel, NULL, NULL);
+    for (size_t k = 0; k < n; k++) {
+        list[k]->runaway_t = t[k];
+        list[k]->record = 1;
+    }
+}
+
 acbb_status acbb_study_run(acbb_study *s, int jobs, const atomic_int *cancel)
 {
     double t0 = acbb_now_ms();
     run_all(s->runs.all, s->runs.n, jobs, cancel);
+    if (!acbb_cancelled(cancel)) steady_branch(&s->runs, jobs, cancel);
     s->runs.wall_ms = acbb_now_ms() - t0;
     acbb_study_evaluate(s);
     if (acbb_cancelled(cancel)) return ACBB_CANCELLED;

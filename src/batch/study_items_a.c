@@ -119,6 +119,26 @@ static bool need_traj(acbb_study_item *it, const char *id, const acbb_study_runs
     return true;
 }
 
+/* A transient of the TE load sweep that ran away (rigid preload; study.c,
+ * steady_branch) is read as it ran, up to its last good state: an info
+ * check says which, and that its steady values elsewhere are the steady
+ * solve's, another branch (MODEL.md 14). */
+static void runaway_note(acbb_study_item *it, const char *id, const acbb_study_runs *c)
+{
+    tbuf t = { .n = 0 };
+    for (int k = 0; k < NL; k++) {
+        const acbb_study_point *p = P(c, LV_BASE, BLK_LOAD, k, TE);
+        if (p->runaway_t > 0.0) tb(&t, "%s%g N at t = %.0f s", t.n ? ", " : "", k_loads[k],
+                                   p->runaway_t);
+    }
+    if (!t.n) return;
+    tb(&t, ": the transient ran away there; \"final\" above is its last good state, while "
+       "its steady values in the other items are the steady solve's (another branch, "
+       "MODEL.md 14)");
+    acbb_study_check *ch = add_check(it, id, V_NOT_EVAL, &t);
+    if (ch) ch->info = 1;
+}
+
 /* Transient of the TE load-sweep point k: sign changes of
  * (theta_i + theta_icen) - theta_o, and the time of the first one. */
 static int crossings(const acbb_study_point *p, double *t_first)
@@ -187,6 +207,7 @@ void acbb_study_item4(const acbb_study_runs *c, acbb_study_item *it)
            i < 2 ? "; " : "");
     }
     add_check(it, "4d", V(ok), &t);
+    runaway_note(it, "4r", c);
 }
 
 /* Index of the largest value of f over the trajectory. */
@@ -272,6 +293,7 @@ void acbb_study_item5(const acbb_study_runs *c, acbb_study_item *it)
     add_check(it, "5d", V(n_large == NL - N_LIGHT), &tg);
     tb(&tx, "; held at %d of %d", n_dx, NL);
     add_check(it, "5e", V(n_dx == NL), &tx);
+    runaway_note(it, "5r", c);
 }
 
 /* 6b: "alpha_o strongly reduced by centrifugal force" measured against the

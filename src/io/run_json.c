@@ -126,11 +126,11 @@ static void set_part(acbb_json *j, const acbb_snapshot *s, const acbb_snapshot *
 
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
 {
-    acbb_json_write_run_set(j, sc, s, NULL, 0);
+    acbb_json_write_run_parts(j, sc, s, NULL, 0, NULL);
 }
 
-void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
-                             const acbb_snapshot *b, int n)
+void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
+                               const acbb_snapshot *b, int n, const acbb_branches *br)
 {
     acbb_json_open(j, NULL, '{', false);
     acbb_json_str(j, "status", acbb_run_status_name(s));
@@ -153,6 +153,8 @@ void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snap
 
     section(j, s, "energy_W");
     if (b && n > 1) set_part(j, s, b, n);
+    if (sc->schedule_n > 0) acbb_json_write_schedule(j, sc, s);
+    if (br) acbb_json_write_branches(j, br);
 
     scene(j, sc);
     acbb_json_close(j, '}');

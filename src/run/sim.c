@@ -24,6 +24,7 @@
 #include "cancel.h"
 #include "gsl_quiet.h"
 #include "sim_set.h"
+#include "acbb/schedule.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -94,6 +95,7 @@ struct acbb_sim {
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
     acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */
+    double bound_axial, bound_radial; /* loads sim->mech was built with (schedule) */
 };
 
 static int outputs_finite(const acbb_sim *sim);
@@ -512,9 +514,49 @@ static void restore(acbb_sim *sim, const checkpoint *k)
     sim->loss = k->loss;
     sim->heat = k->heat;
     memcpy(sim->q, k->q, sizeof k->q);
+    acbb_operating op; /* the kept state's operating point (the mechanics follow at the next evaluation) */
+    acbb_schedule_at(&sim->s, sim->time, &op);
+    if (sim->s.schedule_n > 0 && sim->s.thermal_mode == ACBB_THERMAL_TRANSIENT)
+        acbb_schedule_apply(&sim->s, &op);
     acbb_net_inputs in;
     network_inputs(sim, &in);
     acbb_network_update(&sim->nw, &sim->s, &in); /* resistances of the kept state */
+}
+
+/* Run-in schedule (MODEL.md 14; schedule.h): the operating point at time t.
+ * acbb_mech binds the loads when made, so new loads get a new workspace,
+ * warm-started from the last state, the displacement preload's dx held. */
+static acbb_status follow_schedule(acbb_sim *sim, double t, acbb_error *err)
+{
+    if (sim->s.schedule_n == 0 || sim->s.thermal_mode == ACBB_THERMAL_STEADY || !sim->s.heating)
+        return ACBB_OK;
+    acbb_operating op;
+    acbb_schedule_at(&sim->s, t, &op);
+    acbb_schedule_apply(&sim->s, &op);
+    if (op.axial_load == sim->bound_axial && op.radial_load == sim->bound_radial) return ACBB_OK;
+    acbb_mech *m;
+    acbb_status rc = acbb_mech_new(&sim->s, &m, err);
+    if (rc != ACBB_OK) return rc;
+    if (sim->s.preload == ACBB_PRELOAD_DISPLACEMENT) acbb_mech_fix_axial(m, 1, sim->ms.dx);
+    acbb_mech_adopt_state(m, &sim->ms);
+    acbb_mech_free(sim->mech);
+    sim->mech = m;
+    sim->bound_axial = op.axial_load;
+    sim->bound_radial = op.radial_load;
+    return ACBB_OK;
+}
+
+/* The transient does not step past a schedule row (a short ramp after a
+ * long hold would be jumped), nor settle before the last row. */
+static int schedule_done(acbb_sim *sim)
+{
+    if (sim->s.schedule_n == 0 || sim->s.thermal_mode == ACBB_THERMAL_STEADY) return 1;
+    acbb_operating op;
+    acbb_schedule_at(&sim->s, sim->time, &op);
+    if (op.finished) return 1;
+    double next = sim->s.schedule[op.row].t;
+    sim->dt = fmin(sim->dt, fmax(next - sim->time, DT_MIN));
+    return 0;
 }
 
 /* Thermal update to T^{k+1} and the evaluation there. A transient step whose
@@ -535,7 +577,8 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
                                   "non-finite temperature caught; last good state kept");
         memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
         sim->transient_pass = !steady_mode;
-        rc = evaluate(sim, err);
+        rc = follow_schedule(sim, sim->time + (steady_mode ? 0.0 : sim->dt), err);
+        if (rc == ACBB_OK) rc = evaluate(sim, err);
         sim->transient_pass = 0;
         if (rc != ACBB_OK) {
             restore(sim, sim->keep);
@@ -619,6 +662,7 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     acbb_error err = { "" };
     double dT = 0.0, dTs = 0.0;
     int steady_mode = sim->s.thermal_mode == ACBB_THERMAL_STEADY;
+    int scheduled = !schedule_done(sim);
     acbb_status rc = advance(sim, steady_mode, &dT, &dTs, &err);
     if (rc != ACBB_OK) {
         sim->wall_ms += acbb_now_ms() - t0;
@@ -628,6 +672,10 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     sim->iter++;
     if (!steady_mode) sim->time += sim->dt;
     sim->residual = dT / step_dt;
+    /* The growth detector of MODEL.md 9 is for a fixed operating point; while
+     * a schedule moves it the reaction grows by design (the temperature and
+     * pressure limits stay on). */
+    if (scheduled) sim->growth_count = 0;
     if ((rc = check_runaway(sim, sim->T, steady_mode ? 0.0 : step_dt)) != ACBB_OK) {
         sim->wall_ms += acbb_now_ms() - t0;
         return rc;
@@ -636,7 +684,7 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     sim->prev_total = sim->loss.total;
     int quiet = steady_mode ? dT < 1e-7 && dP < 1e-9
                             : sim->residual < sim->s.steady_tol && dP < 1e-4;
-    sim->quiet = quiet ? sim->quiet + 1 : 0;
+    sim->quiet = quiet && !scheduled ? sim->quiet + 1 : 0;
     /* Grow while the losses barely move and nodes move < 0.5 K. */
     if (!steady_mode && dP < 0.005 && dTs < 0.25 * DT_MAX_DT_K)
         sim->dt = fmin(1.5 * sim->dt, DT_MAX);
@@ -746,6 +794,12 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     /* fidelity.preset / target_error_pct override the knobs (fidelity.h). */
     acbb_fidelity_apply(&sim->s, NULL);
     s = &sim->s;
+    acbb_operating op; /* schedule.h: the first row, or the last for the steady solve */
+    if (s->thermal_mode == ACBB_THERMAL_STEADY || !s->heating) acbb_schedule_final(s, &op);
+    else acbb_schedule_at(s, 0.0, &op);
+    acbb_schedule_apply(&sim->s, &op);
+    sim->bound_axial = op.axial_load;
+    sim->bound_radial = op.radial_load;
     acbb_status rc = acbb_scene_validate(s, err);
     if (rc != ACBB_OK) return rc;
     if ((rc = check_supported(s, err)) != ACBB_OK) return rc;

@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 
 #include "acbb/outfile.h"
+#include "acbb/schedule.h"
 #include "scene_internal.h"
 
 /* A preset is a few kB; anything far larger is not one. */
@@ -97,10 +98,59 @@ static void value_span(const char *line, size_t n, size_t *vs, size_t *ve)
     *ve = e;
 }
 
+/* ---- the [schedule] rows (schedule.h): kept as they are while the rows
+ * are the same; else the new rows go where the first old row was (or after
+ * the section header, or in a new section at the end) and the other old row
+ * lines go. Comments in the section stay. ---- */
+
+static int same_schedule(const acbb_scene *a, const acbb_scene *b)
+{
+    if (a->schedule_n != b->schedule_n) return 0;
+    for (int i = 0; i < a->schedule_n; i++) {
+        char ra[160], rb[160];
+        acbb_schedule_format_row(a, i, ra, sizeof ra);
+        acbb_schedule_format_row(b, i, rb, sizeof rb);
+        if (strcmp(ra, rb) != 0) return 0;
+    }
+    return 1;
+}
+
+static void write_rows(edit_ctx *c)
+{
+    end_line(c);
+    for (int i = 0; i < c->s->schedule_n; i++) {
+        char row[160];
+        acbb_schedule_format_row(c->s, i, row, sizeof row);
+        fprintf(c->f, "row = %s%s", row, c->eol);
+    }
+}
+
+/* Old line `no` is a row line (returns 1: handled) or ends the [schedule]
+ * section of a file without rows (the new rows follow it). */
+static int emit_schedule_line(edit_ctx *c, const char *line, size_t n, int no)
+{
+    const acbb_sf_parsed *p = c->p;
+    int k = 0;
+    while (k < p->scene.schedule_n && p->schedule_line[k] != no) k++;
+    int changed = !same_schedule(&p->scene, c->s);
+    if (k < p->scene.schedule_n) {
+        if (!changed) put_text(c, line, n);
+        else if (k == 0) write_rows(c);
+        return 1;
+    }
+    if (no == p->schedule_end && p->scene.schedule_n == 0 && changed) {
+        put_text(c, line, n);
+        write_rows(c);
+        return 1;
+    }
+    return 0;
+}
+
 /* Copy old line `no` (n bytes with its line end), its value replaced if the
  * key on it changed; then the section's new keys if the section ends here. */
 static void emit_line(edit_ctx *c, const char *line, size_t n, int no)
 {
+    if (emit_schedule_line(c, line, n, no)) return;
     size_t i = 0;
     while (i < acbb_sf_n && c->p->first_line[i] != no) i++;
     if (i < acbb_sf_n && differs(&c->p->scene, c->s, i)) {
@@ -136,6 +186,11 @@ static void emit_file(edit_ctx *c, const char *buf, size_t len)
         end_line(c);
         fprintf(c->f, "%s[%s]%s", c->eol, acbb_sf_section_name(k), c->eol);
         write_new_keys(c, (int)k);
+    }
+    if (!c->p->schedule_end && c->s->schedule_n > 0) {
+        end_line(c);
+        fprintf(c->f, "%s[schedule]%s", c->eol, c->eol);
+        write_rows(c);
     }
 }
 

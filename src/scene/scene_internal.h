@@ -72,6 +72,8 @@ typedef struct {
     int first_line[ACBB_SF_MAX];   /* line of each key, 0 = not in the file */
     int section_end[ACBB_SF_SECTIONS_MAX]; /* last line (header or key) of the
                                       section's last occurrence, 0 = absent */
+    int schedule_line[ACBB_SCHEDULE_MAX]; /* line of each [schedule] row */
+    int schedule_end;              /* last line of the last [schedule], 0 = absent */
 } acbb_sf_parsed;
 
 /* Open a preset for reading: refuses (ACBB_EIO, with the reason) anything
@@ -81,6 +83,10 @@ FILE *acbb_sf_open_preset(const char *path, acbb_error *err);
 /* Parse an open preset stream (`path` names it in messages): syntax, keys
  * and each key's own range, not the cross-field rules, not emptiness. */
 acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_error *err);
+
+/* acbb_schedule_validate (schedule.c), also saying which row failed (0-based;
+ * -1: none), so that a file's message can name the row's line. */
+acbb_status acbb_sf_schedule_check(const acbb_scene *s, int *row, acbb_error *err);
 
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);

@@ -23,6 +23,7 @@
 #include <ini.h>
 
 #include "acbb/outfile.h"
+#include "acbb/schedule.h"
 #include "scene_internal.h"
 
 /* ---- opening ---- */
@@ -112,6 +113,7 @@ static bool check_header(load_ctx *c, const char *p)
     snprintf(name, sizeof name, "%.*s", (int)(close - p - 1), p + 1);
     int k = acbb_sf_section_index(name);
     if (k >= 0) c->out->section_end[k] = c->line;
+    if (strcmp(name, "schedule") == 0) c->out->schedule_end = c->line;
     return true;
 }
 
@@ -161,12 +163,43 @@ static char *read_line(char *str, int num, void *stream)
     return str;
 }
 
+/* A [schedule] line: only `row = t_s, speed_rpm, axial_N, radial_N`, each
+ * row after the one before in time, at most ACBB_SCHEDULE_MAX (schedule.h). */
+static int on_schedule_row(load_ctx *c, const char *name, const char *value)
+{
+    acbb_sf_parsed *o = c->out;
+    acbb_scene *s = &o->scene;
+    acbb_error e;
+    if (strcmp(name, "row") != 0)
+        return load_fail(c, ACBB_EINVAL, "schedule.%s: unknown key (the [schedule] section "
+                         "holds only lines row = t_s, speed_rpm, axial_N, radial_N)", name);
+    if (s->schedule_n >= ACBB_SCHEDULE_MAX)
+        return load_fail(c, ACBB_EINVAL, "schedule.row: more than %d rows", ACBB_SCHEDULE_MAX);
+    acbb_schedule_row r;
+    if (acbb_schedule_parse_row(value, &r, &e) != ACBB_OK)
+        return load_fail(c, ACBB_EINVAL, "%s", e.msg);
+    int n = s->schedule_n;
+    if (n == 0 && r.t != 0.0)
+        return load_fail(c, ACBB_EINVAL, "schedule.row = %s: the first row is the start of the "
+                         "run: its t_s must be 0", value);
+    if (n > 0 && !(r.t > s->schedule[n - 1].t))
+        return load_fail(c, ACBB_EINVAL, "schedule.row = %s: times must increase strictly (the "
+                         "row before, line %d, is at a time >= this one)", value,
+                         o->schedule_line[n - 1]);
+    s->schedule[n] = r;
+    s->schedule_n = n + 1;
+    o->schedule_line[n] = c->line;
+    o->schedule_end = c->line;
+    return 1;
+}
+
 static int on_key(void *user, const char *section, const char *name, const char *value)
 {
     load_ctx *c = user;
     if (c->err_line) return 1;
     acbb_error e;
     c->out->n_keys++;
+    if (strcmp(section, "schedule") == 0) return on_schedule_row(c, name, value);
     const acbb_sfield *f = acbb_sf_find(section, name);
     if (!f) {
         acbb_sf_unknown_key(section, name, &e);
@@ -219,9 +252,15 @@ static acbb_status load_stream(FILE *f, const char *name, acbb_scene *s, acbb_er
     if (rc == ACBB_OK && p->n_keys == 0) {
         rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", name);
     } else if (rc == ACBB_OK) {
-        acbb_error e;
+        acbb_error e, es;
+        int row;
         rc = acbb_scene_validate(&p->scene, &e);
-        if (rc != ACBB_OK)
+        /* A schedule row's rule: named with the row's line. */
+        bool at_row = rc != ACBB_OK && acbb_sf_schedule_check(&p->scene, &row, &es) == rc
+                      && row >= 0 && strcmp(es.msg, e.msg) == 0;
+        if (at_row)
+            acbb_error_set(err, rc, "%s:%d: %s", name, p->schedule_line[row], e.msg);
+        else if (rc != ACBB_OK)
             acbb_error_set(err, rc, "%s: %s", name, e.msg);
         else
             *s = p->scene;
@@ -278,6 +317,14 @@ int acbb_sf_write_preset(FILE *f, const acbb_scene *s)
         acbb_scene_field_range(i, range, sizeof range);
         acbb_scene_field_format(s, i, val, sizeof val);
         bad |= fprintf(f, "; %s [%s]\n%s = %s\n", in->help, range, in->key, val) < 0;
+    }
+    if (s->schedule_n > 0 && !bad)
+        bad |= fprintf(f, "\n[schedule]\n; run-in rows: t_s, speed_rpm, axial_N, radial_N; "
+                       "linear between rows, held after the last\n") < 0;
+    for (int i = 0; i < s->schedule_n && !bad; i++) {
+        char row[160];
+        acbb_schedule_format_row(s, i, row, sizeof row);
+        bad |= fprintf(f, "row = %s\n", row) < 0;
     }
     return bad ? -1 : 0;
 }

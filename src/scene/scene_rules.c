@@ -8,6 +8,7 @@
 #include "acbb/units.h"
 #include "scene_internal.h"
 #include "acbb/set.h"
+#include "acbb/schedule.h"
 
 /* ---- cross-field validation ---- */
 
@@ -451,6 +452,7 @@ static const rule_fn k_rules[] = {
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
     rule_preload, rule_surroundings, rule_radial_load,
     rule_set, rule_tilt,
+    acbb_schedule_validate, /* [schedule] rows, each at its operating point (schedule.c) */
 };
 
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err)
@@ -508,6 +510,10 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
           { "heat_partition", "the 46-node network splits the contact heat by its spot "
             "resistances; heat_partition applies to fidelity.network = 7 only (MODEL.md 8.3)",
             "thermal.heat_partition" } },
+        { s->schedule_n > 0,
+          { "operating point", "the [schedule] rows set the speed and the axial and radial "
+            "loads (the steady solve uses the last row)",
+            "operating.inner_speed_rpm, axial_load_N, radial_load_N" } },
         { cage_solid_set(s, &d),
           { "cage_solid", "the model has no cage mechanics or cage expansion (MODEL.md 7); "
             "only the cage's density, specific heat and conductivity enter (the network)",

@@ -1,0 +1,104 @@
+/* acbb — the steady solve and the transient compared (branches.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "acbb/branches.h"
+#include "acbb/fidelity.h"
+#include "acbb/units.h"
+
+/* One branch when the two polish to the same steady state: the transient
+ * ends with the direct steady iteration (sim.c, polish), so both meet to
+ * ~1e-8 (README "Batch runner": 5e-9 on 7008C); another branch differs by
+ * kelvins and watts. The bounds sit far from both. */
+#define AGREE_DT_K 0.01
+#define AGREE_LOSS_REL 1e-4
+static const char k_criterion[] =
+    "both converged, nodes within 0.01 K, total loss within 1e-4 relative";
+
+bool acbb_branches_wanted(const acbb_scene *s)
+{
+    return s->heating && (s->schedule_n > 0 || s->preload == ACBB_PRELOAD_DISPLACEMENT);
+}
+
+static void summarize(const acbb_snapshot *r, acbb_branch_state *b)
+{
+    memset(b, 0, sizeof *b);
+    snprintf(b->status, sizeof b->status, "%s", acbb_run_status_name(r));
+    snprintf(b->message, sizeof b->message, "%s", r->message);
+    b->iterations = r->iteration;
+    b->time_s = r->time;
+    int k = 0;
+    for (int j = 1; j < r->n_balls; j++)
+        if (r->balls[j].Qi > r->balls[k].Qi) k = j;
+    if (r->n_balls > 0) {
+        b->Qi_N = r->balls[k].Qi;
+        b->Qo_N = r->balls[k].Qo;
+        b->alpha_i_deg = acbb_rad_to_deg(r->balls[k].alpha_i);
+    }
+    b->reaction_x_N = r->reaction_x;
+    b->loss_total_W = r->losses.total;
+    b->T_outer_ring_C = r->T_outer_ring;
+    b->T_inner_ring_C = r->T_inner_ring;
+    b->T_ball_C = r->T_ball;
+}
+
+static void compare(const acbb_snapshot *st, const acbb_snapshot *tr, acbb_branches *out)
+{
+    double dT = 0.0;
+    int n = st->n_nodes == tr->n_nodes ? st->n_nodes : 0;
+    for (int i = 0; i < n; i++) dT = fmax(dT, fabs(st->T[i] - tr->T[i]));
+    double P = st->losses.total;
+    out->max_dT_K = n ? dT : 0.0;
+    out->loss_rel = P > 0.0 ? fabs(P - tr->losses.total) / P : 0.0;
+    out->agree = n && st->state == ACBB_RUN_CONVERGED && tr->state == ACBB_RUN_CONVERGED
+                 && dT <= AGREE_DT_K && out->loss_rel <= AGREE_LOSS_REL;
+}
+
+/* The scene in the other thermal mode, run to its end into `snap`. */
+static acbb_status run_other(const acbb_scene *s, const atomic_int *cancel, acbb_snapshot *snap)
+{
+    acbb_scene o = *s;
+    acbb_fidelity_apply(&o, NULL);
+    o.thermal_mode = o.thermal_mode == ACBB_THERMAL_STEADY ? ACBB_THERMAL_TRANSIENT
+                                                           : ACBB_THERMAL_STEADY;
+    acbb_sim *sim = NULL;
+    acbb_error e = { "" };
+    acbb_status rc = acbb_sim_new_ctl(&o, cancel, &sim, &e);
+    if (rc != ACBB_OK) {
+        /* Never started: its status and message, no state. */
+        memset(snap, 0, sizeof *snap);
+        snap->state = ACBB_RUN_FAILED;
+        snap->status = rc;
+        snprintf(snap->message, sizeof snap->message, "%s", e.msg);
+        return rc == ACBB_ENOMEM || rc == ACBB_CANCELLED ? rc : ACBB_OK;
+    }
+    rc = acbb_sim_drive(sim, &(acbb_run_ctl){ .cancel = cancel });
+    acbb_sim_snapshot(sim, snap);
+    acbb_sim_free(sim);
+    return rc == ACBB_CANCELLED ? rc : ACBB_OK;
+}
+
+acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
+                                  const atomic_int *cancel, acbb_branches *out,
+                                  acbb_error *err)
+{
+    acbb_snapshot *other = malloc(sizeof *other);
+    if (!other) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    acbb_status rc = run_other(s, cancel, other);
+    if (rc != ACBB_OK) {
+        free(other);
+        return acbb_error_set(err, rc, "%s", rc == ACBB_CANCELLED
+                              ? "cancelled before the second branch was solved" : "out of memory");
+    }
+    acbb_scene applied = *s;
+    acbb_fidelity_apply(&applied, NULL);
+    int run_steady = applied.thermal_mode == ACBB_THERMAL_STEADY;
+    const acbb_snapshot *st = run_steady ? run : other, *tr = run_steady ? other : run;
+    summarize(st, &out->steady);
+    summarize(tr, &out->transient);
+    compare(st, tr, out);
+    out->criterion = k_criterion;
+    free(other);
+    return ACBB_OK;
+}
