@@ -487,7 +487,7 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
 
 static void finish_energy(acbb_sim *sim)
 {
-    sim->heat_out = acbb_tnet_heat_to_fixed(sim->nw.net, sim->T);
+    sim->heat_out = sim->s.heating ? acbb_tnet_heat_to_fixed(sim->nw.net, sim->T) : 0.0;
 }
 
 static void save(acbb_sim *sim, checkpoint *k)
@@ -569,9 +569,27 @@ static double axial_stiffness(acbb_sim *sim)
     return rc == ACBB_OK && isfinite(K) ? K : 0.0;
 }
 
+/* A steady state is one whose network balances its sources (MODEL.md 12
+ * item 18): otherwise the run fails with ACBB_UNBALANCED and keeps the
+ * state it reached. Heating off solves no network: no heat flows. */
+static int unbalanced(acbb_sim *sim)
+{
+    if (!sim->s.heating) return 0;
+    double in = sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
+              + sim->heat.cavity + sim->heat.cage;
+    if (fabs(in - sim->heat_out) <= ACBB_BALANCE_TOL * fmax(fabs(in), 1e-9)) return 0;
+    char d[160];
+    snprintf(d, sizeof d, "%.6g W in, %.6g W out, tolerance %g of the heat in",
+             in, sim->heat_out, ACBB_BALANCE_TOL);
+    fail(sim, ACBB_UNBALANCED, "the network's heat balance does not close at the "
+         "steady state (%s); last state kept", d);
+    return 1;
+}
+
 static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
+    if (unbalanced(sim)) return;
     sim->K_axial = axial_stiffness(sim);
     acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
     sim->state = ACBB_RUN_CONVERGED;
@@ -882,8 +900,9 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->work = sim->work;
     acbb_snap_squeeze(&sim->exp, &sim->ms.ball[0], &o->squeeze);
     o->reaction_x = acbb_snap_fin(sim->ms.Fx);
-    o->heat_in = acbb_snap_fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
-                     + sim->heat.cavity + sim->heat.cage);
+    o->heat_in = sim->s.heating ? acbb_snap_fin(sim->heat.inner_contact + sim->heat.outer_contact
+                                                + sim->heat.ball + sim->heat.cavity + sim->heat.cage)
+                                : 0.0; /* no network: no heat flows (finish_energy) */
     o->heat_out = acbb_snap_fin(sim->heat_out);
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
