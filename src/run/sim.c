@@ -123,7 +123,7 @@ static void contact_input(const acbb_sim *sim, const acbb_ball_state *b, int inn
 
 /* Oil at the two contact inlets and the oil-air mixture of the cavity. */
 static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *oo,
-                      acbb_mixture *mix)
+                      acbb_oil_state *oc_out, acbb_mixture *mix)
 {
     double Tin_i, Tin_o;
     acbb_oil_state oc;
@@ -132,6 +132,7 @@ static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *o
     acbb_oil_at(&sim->s, Tin_o, oo);
     acbb_oil_at(&sim->s, sim->T[sim->nw.node_cavity], &oc);
     acbb_mixture_at(&sim->s, &oc, mix);
+    *oc_out = oc;
 }
 
 /* Contact heat of one contact, by where the table sends it. */
@@ -144,10 +145,11 @@ static void route_contact(const acbb_contact_loss *cl, double w, double *race, d
 }
 
 /* Whole-bearing losses (drag, cage) at the mean orbital speed. */
-static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix, double wm,
-                           acbb_losses *L, acbb_heat_sources *H)
+static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix,
+                           const acbb_oil_state *oc, double wm, acbb_losses *L,
+                           acbb_heat_sources *H)
 {
-    acbb_bearing_in in = { &sim->s, mix, wm };
+    acbb_bearing_in in = { &sim->s, mix, wm, oc };
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         const acbb_loss_desc *d = &acbb_loss_table[l];
         if (!d->bearing || !acbb_loss_enabled(&sim->s, (acbb_loss_kind)l)) continue;
@@ -199,9 +201,9 @@ static double skip_tol(const acbb_sim *sim, double transient)
 /* Every loss of the table at the current mechanics; fills sim->loss and heat. */
 static acbb_status losses(acbb_sim *sim)
 {
-    acbb_oil_state oil_i, oil_o;
+    acbb_oil_state oil_i, oil_o, oil_c;
     acbb_mixture mix;
-    lubricant(sim, &oil_i, &oil_o, &mix);
+    lubricant(sim, &oil_i, &oil_o, &oil_c, &mix);
     int nb = acbb_mech_distinct(&sim->ms);
     /* As the Level-2 skip (mechanics()): transient steps of non-symmetric
      * scenes only, so pure thrust and the steady polish compute every ball. */
@@ -223,7 +225,7 @@ static acbb_status losses(acbb_sim *sim)
         wm_sum += w * b->kin.omega_m;
     }
     for (int j = nb; j < sim->ms.n; j++) sim->bl[j] = sim->bl[acbb_mech_source(&sim->ms, j)];
-    bearing_losses(sim, &mix, wm_sum / sim->ms.n, &L, &H);
+    bearing_losses(sim, &mix, &oil_c, wm_sum / sim->ms.n, &L, &H);
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) L.total += L.P[l];
     L.inner = H.inner_contact;
     L.outer = H.outer_contact;
@@ -299,9 +301,9 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
     int warm = (sim->qd || sim->dyn) && sim->transient_pass && sim->ms.ball[0].traction_valid;
     acbb_status rc = warm ? ACBB_OK : mech_solve(sim, err);
     if (rc != ACBB_OK || (!sim->qd && !sim->dyn)) return rc;
-    acbb_oil_state oi, oo;
+    acbb_oil_state oi, oo, oc;
     acbb_mixture mix;
-    lubricant(sim, &oi, &oo, &mix);
+    lubricant(sim, &oi, &oo, &oc, &mix);
     /* One pass per transient step: the thermal steps iterate the coupling
      * anyway; the set-up converges it fully. So does the steady polish,
      * whose Picard iterations (to 1e-9 K) also carry the coupling when
@@ -751,6 +753,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     sim->s = *s;
     /* fidelity.preset / target_error_pct override the knobs (fidelity.h). */
     acbb_fidelity_apply(&sim->s, NULL);
+    acbb_lubricant_apply(&sim->s);
     s = &sim->s;
     acbb_status rc = acbb_scene_validate(s, err);
     if (rc != ACBB_OK) return rc;
