@@ -10,8 +10,8 @@
  *   Y <= 70 it tabulates L and H; that table is not reproduced here:
  *   log L and log H are interpolated linearly in log Y between the
  *   table's first row (Y = 2: L = 7.994, H = 6.394) and the formulas at
- *   Y = 70 (UNSURE: an interpolation, not the table; below Y = 2, where
- *   D2270 is not defined, the same line is extrapolated).
+ *   Y = 70 (UNSURE: an interpolation, not the table). Below Y = 2, where
+ *   D2270 is not defined, see below_range().
  * - Pressure-viscosity: Wooster's correlation for mineral oils,
  *   alpha = (0.6 + 0.965 log10 eta0[cP]) 1e-8 1/Pa (as quoted in
  *   Stachowiak & Batchelor, Engineering Tribology, ch. 2), eta0 at 40 C;
@@ -75,12 +75,33 @@ static double vi_miss(double Y, void *p)
     return acbb_viscosity_index(g->nu40, Y) - g->vi;
 }
 
+/* nu40 of the oil with nu100 = Y and viscosity index vi (D2270 solved for U) */
+static double nu40_of(double Y, double vi)
+{
+    double L, H;
+    ref_oils(Y, &L, &H);
+    if (vi <= 100.0) return L - vi / 100.0 * (L - H);
+    return H / pow(Y, log10(1.0 + 0.00715 * (vi - 100.0)));
+}
+
+static double loglog(double nu) { return log10(log10(nu + 0.7)); }
+
+/* Below D2270's range (nu100 < 2 mm^2/s: VG2-VG5 at common VIs): the
+ * Walther slope (ASTM D341) of the oil with nu100 = 2 and the same VI,
+ * carried to nu40 (an extrapolation, UNSURE). */
+static double below_range(double nu40, double vi)
+{
+    double x = log10(100.0 + 273.15) - log10(40.0 + 273.15);
+    double B = (loglog(nu40_of(Y0, vi)) - loglog(Y0)) / x;
+    return pow(10.0, pow(10.0, loglog(nu40) - B * x)) - 0.7;
+}
+
 double acbb_nu100_from_vi(double nu40, double vi)
 {
-    /* VI grows with nu100 at fixed nu40: bracket below nu40 */
+    /* VI grows with nu100 at fixed nu40: bracket in D2270's range */
     vi_goal g = { nu40, vi };
-    double lo = 0.05 * nu40, hi = 0.999 * nu40;
-    if (vi_miss(lo, &g) > 0.0) return lo;
+    double lo = Y0, hi = 0.999 * nu40;
+    if (!(hi > lo) || vi_miss(lo, &g) > 0.0) return below_range(nu40, vi);
     if (vi_miss(hi, &g) < 0.0) return hi;
     gsl_function F = { vi_miss, &g };
     gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);

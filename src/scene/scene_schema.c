@@ -201,11 +201,9 @@ const acbb_sfield acbb_sf_table[] = {
     ENUM("lubricant", "traction_model", traction, k_traction, ACBB_TRACTION_EYRING_CAP,
          "film traction law (MODEL.md section 5)"),
     ENUM("lubricant", "method", lub_method, k_lub_method, ACBB_LUB_OIL_AIR,
-         "lubrication method (MODEL.md 16): starvation factor of the EHL rolling loss, "
-         "drag and churning medium"),
+         "lubrication method (MODEL.md 16): starvation, drag and churning medium"),
     ENUM("lubricant", "grade", oil_grade, k_grade, ACBB_GRADE_CUSTOM,
-         "ISO 3448 viscosity grade: nu40 = its midpoint, nu100 from viscosity_index, alpha_pv "
-         "Wooster; oil_nu40/oil_nu100/oil_alpha_pv set to non-default values override it"),
+         "ISO 3448 viscosity grade (MODEL.md 16)"),
     REAL("lubricant", "viscosity_index", "", oil_vi, 1.0, 100, CC, 0, 400,
          "viscosity index (ASTM D2270) that gives a graded oil's nu100"),
     REAL("lubricant", "jet_speed_m_s", "m/s", jet_speed, 1.0, 10, CC, 0, 300,
