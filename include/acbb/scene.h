@@ -48,7 +48,7 @@ typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
                ACBB_FIDELITY_REFERENCE } acbb_fidelity_preset;
 /* Boundary condition of a cooled face (MODEL.md 8.1, 13 "Surroundings"). */
-typedef enum { ACBB_BC_FIXED, ACBB_BC_CONVECTIVE } acbb_bc_kind;
+typedef enum { ACBB_BC_FIXED, ACBB_BC_CONVECTIVE, ACBB_BC_DERIVED } acbb_bc_kind;
 
 typedef struct {
     acbb_bc_kind kind;   /* fixed: face at the coolant temperature; convective: film h */
@@ -276,6 +276,14 @@ typedef struct {
 } acbb_surroundings;
 
 void acbb_scene_surroundings(const acbb_scene *s, acbb_surroundings *out);
+
+/* The boundary a cooled face (s->bore_bc or s->cap_bc) has in this scene:
+ * fixed or convective as set; `derived` (the default) is [S]'s fixed face
+ * on the seed's own rig (the 7008C envelope with the rig's surroundings,
+ * [S] section 3) and convective at the face's h for every other bearing:
+ * a fixed face is an unlimited heat sink, which only the rig measured
+ * (MODEL.md 13 "Surroundings", issue 18). */
+acbb_bc_kind acbb_face_bc_kind(const acbb_scene *s, const acbb_face_bc *bc);
 
 /* ---- schema introspection (for the TUI editor and help output) ---- */
 typedef enum { ACBB_FIELD_REAL, ACBB_FIELD_INT, ACBB_FIELD_BOOL,
