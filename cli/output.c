@@ -149,7 +149,7 @@ static void summary_losses(acbb_cli_out *o, const acbb_scene *sc, const acbb_sna
     fprintf(f, "\n\n%-13s", "losses");
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         if (!acbb_loss_enabled(sc, (acbb_loss_kind)l)) continue;
-        fprintf(f, "%9s", acbb_loss_name((acbb_loss_kind)l));
+        fprintf(f, "%9.8s", acbb_loss_name((acbb_loss_kind)l)); /* 8 wide: ehl_roll */
         P[n++] = L->P[l];
     }
     fprintf(f, "%9s\n%-13s", "total", "  W");

@@ -48,7 +48,7 @@ typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
                ACBB_FIDELITY_REFERENCE } acbb_fidelity_preset;
 /* Boundary condition of a cooled face (MODEL.md 8.1, 13 "Surroundings"). */
-typedef enum { ACBB_BC_FIXED, ACBB_BC_CONVECTIVE, ACBB_BC_DERIVED } acbb_bc_kind;
+typedef enum { ACBB_BC_FIXED, ACBB_BC_DERIVED, ACBB_BC_CONVECTIVE } acbb_bc_kind;
 
 typedef struct {
     acbb_bc_kind kind;   /* fixed: face at the coolant temperature; convective: film h */

@@ -23,6 +23,8 @@ typedef enum {
 /* A converged run's network heat balance |in - out| must be within this
  * fraction of the heat in (MODEL.md 12 item 18: steady balance to 1e-6). */
 #define ACBB_BALANCE_TOL 1e-6
+/* ... or within this absolute floor, W (round-off of a network carrying no heat). */
+#define ACBB_BALANCE_FLOOR_W 1e-9
 
 /* Human-readable message buffer; the caller owns it (usually on the stack). */
 typedef struct {

@@ -579,10 +579,11 @@ static int unbalanced(acbb_sim *sim)
     if (!sim->s.heating) return 0;
     double in = sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
               + sim->heat.cavity + sim->heat.cage;
-    if (fabs(in - sim->heat_out) <= ACBB_BALANCE_TOL * fmax(fabs(in), 1e-9)) return 0;
+    if (fabs(in - sim->heat_out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W))
+        return 0;
     char d[160];
-    snprintf(d, sizeof d, "%.6g W in, %.6g W out, tolerance %g of the heat in",
-             in, sim->heat_out, ACBB_BALANCE_TOL);
+    snprintf(d, sizeof d, "%.6g W in, %.6g W out, tolerance %g of the heat in or %g W",
+             in, sim->heat_out, ACBB_BALANCE_TOL, ACBB_BALANCE_FLOOR_W);
     fail(sim, ACBB_UNBALANCED, "the network's heat balance does not close at the "
          "steady state (%s); last state kept", d);
     return 1;

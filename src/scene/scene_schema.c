@@ -45,7 +45,7 @@ static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
 static const char *const k_preload[] = {"force", "displacement", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
-static const char *const k_bc[] = {"fixed", "convective", "derived", NULL};
+static const char *const k_bc[] = {"fixed", "derived", "convective", NULL};
 static const char *const k_fid_preset[] = {"custom", "fast", "balanced", "reference", NULL};
 static const char *const k_lub_method[] = {"oil-air", "oil-jet", "oil-bath", "grease", NULL};
 static const char *const k_grade[] = {"custom", "VG2", "VG3", "VG5", "VG7", "VG10", "VG15", "VG22",
@@ -95,7 +95,7 @@ static const char *const k_grade[] = {"custom", "VG2", "VG3", "VG5", "VG7", "VG1
 #define FACE_BC(name, member, what, h_def, h_lo, h_hi, h_src) \
     ENUMP("surroundings", name, member.kind, k_bc, ACBB_BC_DERIVED, \
           what ": fixed at the coolant T, convective, or derived (fixed on the seed rig only)", \
-          ACBB_BC_FIXED, ACBB_BC_CONVECTIVE, \
+          ACBB_BC_DERIVED, ACBB_BC_CONVECTIVE, \
           "MODEL.md 13: [S] holds it at ambient; convective at the h below"), \
     REALP("surroundings", name "_h_W_m2K", "W/(m^2 K)", member.h, 1.0, h_def, OC, 0, 1e10, \
           "film coefficient of a convective " what, h_lo, h_hi, h_src), \
