@@ -139,27 +139,37 @@ static void summary_header(acbb_cli_out *o, const char *preset,
 
 static void summary_losses(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s);
 
-/* The losses switched on in the scene (the loss table's order) and the total. */
+/* The losses switched on in the scene (the loss table's order) and the total,
+ * at most LOSS_COLS columns a block so the summary keeps to 80 columns
+ * (13 + 7 x 9); the seed's five and the total are one block as before. */
+#define LOSS_COLS 7
 static void summary_losses(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
 {
     FILE *f = o->f;
     const acbb_losses *L = &s->losses;
     double P[ACBB_LOSS_KINDS + 1];
+    const char *name[ACBB_LOSS_KINDS + 1];
     int n = 0;
-    fprintf(f, "\n\n%-13s", "losses");
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         if (!acbb_loss_enabled(sc, (acbb_loss_kind)l)) continue;
-        fprintf(f, "%9s", acbb_loss_name((acbb_loss_kind)l));
+        name[n] = acbb_loss_name((acbb_loss_kind)l);
         P[n++] = L->P[l];
     }
-    fprintf(f, "%9s\n%-13s", "total", "  W");
+    name[n] = "total";
     P[n++] = L->total;
-    for (int i = 0; i < n; i++) cell(o, 9, 4, 'g', P[i]);
-    fprintf(f, "\n%-13s", "  %");
-    for (int i = 0; i < n; i++) {
-        if (L->total > 0.0) cell(o, 9, 1, 'f', 100.0 * P[i] / L->total);
-        else fprintf(f, "%9s", "-");
+    for (int b = 0; b < n; b += LOSS_COLS) {
+        int e = b + LOSS_COLS < n ? b + LOSS_COLS : n;
+        fprintf(f, b ? "\n%-13s" : "\n\n%-13s", b ? "" : "losses");
+        for (int i = b; i < e; i++) fprintf(f, "%9.8s", name[i]); /* 8 wide: ehl_roll */
+        fprintf(f, "\n%-13s", "  W");
+        for (int i = b; i < e; i++) cell(o, 9, 4, 'g', P[i]);
+        fprintf(f, "\n%-13s", "  %");
+        for (int i = b; i < e; i++) {
+            if (L->total > 0.0) cell(o, 9, 1, 'f', 100.0 * P[i] / L->total);
+            else fprintf(f, "%9s", "-");
+        }
     }
+    fprintf(f, "\n%-13s%s", "loss set", acbb_loss_set(sc)); /* MODEL.md 16: seed | extended */
 }
 
 static void summary_thermal(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)

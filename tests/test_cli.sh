@@ -76,7 +76,7 @@ jqt "$TMP/rad.json" '([.balls[].Qi_N] | max) > ([.balls[].Qi_N] | min) * 1.01' \
 code $? 0 "run --json --csv exits 0"
 [ ! -e "$TMP/run.csv.tmp" ] && [ -s "$TMP/run.csv" ]
 t $? "csv written and the .tmp renamed away"
-head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_cage_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,squeeze_outer_um,squeeze_ball_um,squeeze_net_um'
+head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_cage_W,P_ehl_rolling_W,P_churning_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,squeeze_outer_um,squeeze_ball_um,squeeze_net_um'
 t $? "csv header row"
 iters=$(jq '.iterations' "$TMP/csv.json")
 rows=$(($(wc -l <"$TMP/run.csv") - 1))
@@ -84,19 +84,19 @@ rows=$(($(wc -l <"$TMP/run.csv") - 1))
 t $? "csv rows ($rows) == iterations ($iters) + 0 or 1"
 awk -F, 'NR > 2 && $1 <= prev { bad = 1 } NR > 1 { prev = $1 } END { exit bad }' "$TMP/run.csv"
 t $? "csv iteration column strictly increasing"
-awk -F, 'NR > 1 && NF != 33 { bad = 1 } END { exit bad }' "$TMP/run.csv"
-t $? "csv rows have 33 fields"
+awk -F, 'NR > 1 && NF != 35 { bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv rows have 35 fields"
 last_T=$(tail -n 1 "$TMP/run.csv" | cut -d, -f4)
 jq -e --argjson T "$last_T" 'def abs: if . < 0 then -. else . end;
     ((.temperature_C.outer_ring - $T) | abs) <= 1e-9 * ($T | abs)' "$TMP/csv.json" >/dev/null 2>&1
 t $? "csv last-row T_outer_ring ($last_T) equals the JSON outer_ring"
-last_P=$(tail -n 1 "$TMP/run.csv" | cut -d, -f13)
+last_P=$(tail -n 1 "$TMP/run.csv" | cut -d, -f15)
 jq -e --argjson P "$last_P" 'def abs: if . < 0 then -. else . end;
     ((.losses_W.total - $P) | abs) <= 1e-9 * ($P | abs)' "$TMP/csv.json" >/dev/null 2>&1
 t $? "csv last-row P_total equals the JSON total"
-awk -F, 'NR > 1 { s = $7 + $8 + $9 + $10 + $11 + $12; d = s - $13; if (d < 0) d = -d;
-    if (d > 1e-8 * ($13 < 0 ? -$13 : $13) + 1e-12) bad = 1 } END { exit bad }' "$TMP/run.csv"
-t $? "csv: every row's total equals the sum of its six losses"
+awk -F, 'NR > 1 { s = $7 + $8 + $9 + $10 + $11 + $12 + $13 + $14; d = s - $15; if (d < 0) d = -d;
+    if (d > 1e-8 * ($15 < 0 ? -$15 : $15) + 1e-12) bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv: every row's total equals the sum of its eight losses"
 
 # ---- --set ----
 "$ACBB" run "$PRESET" --json --set operating.axial_load_N=200 >"$TMP/200.json" 2>"$TMP/err"
@@ -246,6 +246,23 @@ t $? "CSV: P_cage_W column positive in every row"
 has "$TMP/cage.txt" "cage" "text summary lists the cage loss"
 awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/cage.txt"
 t $? "text summary with six losses fits 80 columns"
+
+# The extended set (MODEL.md 16): EHL rolling resistance as one more row,
+# named in the JSON; the seed set is what the seed preset declares.
+"$ACBB" run presets/7008C.ini --set effects.loss_ehl_rolling=on --set lubricant.grade=VG68 \
+    --json >"$TMP/ext.json" 2>"$TMP/err"
+code $? 0 "run with the extended set exits 0"
+jq -e '.loss_set == "extended" and .losses_W.ehl_rolling > 0 and .losses_W.churning == 0
+    and .scene.keys["lubricant.grade"] == "VG68"' "$TMP/ext.json" >/dev/null
+t $? "JSON: loss_set extended, ehl_rolling > 0, churning 0 with oil-air"
+jq -e '.loss_set == "seed" and .losses_W.ehl_rolling == 0' "$TMP/cage.json" >/dev/null
+t $? "JSON: the seed preset declares the seed set"
+"$ACBB" run presets/7008C.ini --set effects.loss_ehl_rolling=on --set effects.loss_churning=on \
+    --set effects.loss_cage=on >"$TMP/ext.txt" 2>&1
+awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/ext.txt"
+t $? "text summary with eight losses fits 80 columns"
+grep -q 'VG2 | VG3 .* VG1500' "$TMP/keys.txt"
+t $? "keys lists the ISO VG grades"
 
 # ---- help from the command table ----
 "$ACBB" help run >"$TMP/help-run.txt" 2>"$TMP/err"

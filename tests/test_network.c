@@ -575,6 +575,40 @@ static void test_face_bcs(const acbb_scene *s0)
        Tc[5], Tf[5]);
 }
 
+/* surroundings.shaft_bore / cap = derived (the default): [S]'s fixed faces
+ * on the seed rig only; any other bearing gets the convective faces,
+ * exactly as if they were set convective (issue 18: no unlimited sink). */
+static void test_derived_faces(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    ok(s.bore_bc.kind == ACBB_BC_DERIVED && s.cap_bc.kind == ACBB_BC_DERIVED, "default: derived");
+    ok(acbb_face_bc_kind(&s, &s.bore_bc) == ACBB_BC_FIXED
+       && acbb_face_bc_kind(&s, &s.cap_bc) == ACBB_BC_FIXED, "7008C on the seed rig: fixed faces");
+    acbb_scene t = s;
+    t.housing_od = 0.121;
+    ok(acbb_face_bc_kind(&t, &t.bore_bc) == ACBB_BC_CONVECTIVE, "another housing: convective");
+    t = s;
+    t.bore = 70e-3; t.outer_diameter = 110e-3; t.width = 20e-3; t.pitch_diameter = 90e-3;
+    t.ball_diameter = 12e-3; t.n_balls = 19; t.inner_groove_radius = t.outer_groove_radius = 6.5e-3;
+    t.cage_diameter = 96e-3; t.inner_land_diameter = 80e-3; t.outer_land_diameter = 97e-3;
+    acbb_scene c = t;
+    c.bore_bc.kind = c.cap_bc.kind = ACBB_BC_CONVECTIVE;
+    acbb_network a, b;
+    acbb_error err = {{0}};
+    ok(acbb_network_build(&t, &a, &err) == ACBB_OK && acbb_network_build(&c, &b, &err) == ACBB_OK,
+       "70 x 110 x 20 bearing builds: %s", err.msg);
+    ok(acbb_tnet_resistance(a.net, find_edge(&a, 27, 28))
+           == acbb_tnet_resistance(b.net, find_edge(&b, 27, 28))
+       && acbb_tnet_resistance(a.net, find_edge(&a, 41, 38))
+              == acbb_tnet_resistance(b.net, find_edge(&b, 41, 38)),
+       "derived faces of a 70 x 110 x 20 bearing = convective faces (bore and cap films)");
+    acbb_network_free(&a);
+    acbb_network_free(&b);
+    t.bore_bc.kind = ACBB_BC_FIXED;
+    ok(acbb_face_bc_kind(&t, &t.bore_bc) == ACBB_BC_FIXED, "set fixed stays fixed at any size");
+}
+
 /* Cross-field rule: the surroundings must hold the bearing. */
 static void test_surroundings_rule(void)
 {
@@ -624,5 +658,6 @@ int main(void)
     test_scaled_networks();
     test_face_bcs(&s);
     test_surroundings_rule();
+    test_derived_faces();
     return done_testing();
 }

@@ -116,11 +116,14 @@ code $? 2 "a deep-groove series with an angle refused"
 
 # Bores 10, 40, 100 and 200 mm made by `acbb new` run to thermal steady
 # state in their derived surroundings, energy balanced (speeds kept to
-# a n*dm of about 0.6-1.2e6 mm/min, a usual limit for oil-air).
-for spec in 7000C:20000 7008C:15000 7020C:6000 7040C:3000; do
-    name=${spec%%:*}; rpm=${spec##*:}
+# a n*dm of about 0.6-1.2e6 mm/min, a usual limit for oil-air). The 7000C
+# carries 300 N: at the default 1000 N its 70 W run away in derived
+# (convective, issue 18) surroundings of about 0.3 W/K.
+for spec in 7000C:20000:300 7008C:15000:1000 7020C:6000:1000 7040C:3000:1000; do
+    name=${spec%%:*}; rest=${spec#*:}; rpm=${rest%%:*}; load=${rest##*:}
     "$ACBB" new "$name" --out "$TMP/run-$name.ini" >/dev/null 2>&1
-    "$ACBB" run "$TMP/run-$name.ini" --set operating.inner_speed_rpm="$rpm" --json \
+    "$ACBB" run "$TMP/run-$name.ini" --set operating.inner_speed_rpm="$rpm" \
+        --set operating.axial_load_N="$load" --json \
         >"$TMP/run-$name.json" 2>/dev/null
     jq -e '.status == "converged" and .energy_W.in > 0
         and ((.energy_W.in - .energy_W.out) | if . < 0 then -. else . end) < 1e-6 * .energy_W.in' \

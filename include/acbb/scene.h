@@ -31,6 +31,14 @@ typedef enum { ACBB_RACE_OUTER, ACBB_RACE_INNER, ACBB_RACE_EQUAL,
 typedef enum { ACBB_HERTZ_EXACT, ACBB_HERTZ_BH77, ACBB_HERTZ_HB83 } acbb_hertz_mode;
 typedef enum { ACBB_VISC_ROELANDS, ACBB_VISC_BARUS, ACBB_VISC_CONST } acbb_visc_model;
 typedef enum { ACBB_TRACTION_EYRING_CAP, ACBB_TRACTION_BAIR_WINER } acbb_traction_model;
+/* Lubrication method (MODEL.md 16): the seed's oil-air, oil jet, oil bath, grease. */
+typedef enum { ACBB_LUB_OIL_AIR, ACBB_LUB_OIL_JET, ACBB_LUB_OIL_BATH, ACBB_LUB_GREASE } acbb_lub_method;
+/* ISO 3448 viscosity grade (MODEL.md 16); CUSTOM: the oil_nu40/oil_nu100 keys. */
+typedef enum { ACBB_GRADE_CUSTOM, ACBB_GRADE_VG2, ACBB_GRADE_VG3, ACBB_GRADE_VG5, ACBB_GRADE_VG7,
+               ACBB_GRADE_VG10, ACBB_GRADE_VG15, ACBB_GRADE_VG22, ACBB_GRADE_VG32,
+               ACBB_GRADE_VG46, ACBB_GRADE_VG68, ACBB_GRADE_VG100, ACBB_GRADE_VG150,
+               ACBB_GRADE_VG220, ACBB_GRADE_VG320, ACBB_GRADE_VG460, ACBB_GRADE_VG680,
+               ACBB_GRADE_VG1000, ACBB_GRADE_VG1500, ACBB_GRADES } acbb_oil_grade;
 typedef enum { ACBB_LOSS_CLEAN, ACBB_LOSS_SEED } acbb_loss_form;
 typedef enum { ACBB_HYST_MAJOR, ACBB_HYST_MINOR } acbb_hyst_axis;
 typedef enum { ACBB_NET_46, ACBB_NET_7 } acbb_network_kind;
@@ -45,7 +53,7 @@ typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
                ACBB_FIDELITY_REFERENCE } acbb_fidelity_preset;
 /* Boundary condition of a cooled face (MODEL.md 8.1, 13 "Surroundings"). */
-typedef enum { ACBB_BC_FIXED, ACBB_BC_CONVECTIVE } acbb_bc_kind;
+typedef enum { ACBB_BC_FIXED, ACBB_BC_DERIVED, ACBB_BC_CONVECTIVE } acbb_bc_kind;
 
 typedef struct {
     acbb_bc_kind kind;   /* fixed: face at the coolant temperature; convective: film h */
@@ -108,6 +116,12 @@ typedef struct {
     double drag_cd;              /* sphere drag coefficient C_D */
     acbb_visc_model visc;
     acbb_traction_model traction;
+    acbb_lub_method lub_method;  /* starvation factor and drag medium (MODEL.md 16) */
+    acbb_oil_grade oil_grade;    /* ISO VG: nu40 midpoint, nu100 from oil_vi (lubricant_grade.h) */
+    double oil_vi;               /* viscosity index (ASTM D2270) of a graded oil */
+    double jet_speed;            /* oil-jet exit speed, m/s (method oil-jet) */
+    double bath_level;           /* oil level above the lowest outer-raceway point, m (oil-bath) */
+    double grease_nu40;          /* grease base-oil nu40, m^2/s; 0 = the oil's (method grease) */
 
     /* [mounting] */
     double shaft_bore;           /* hollow-shaft bore diameter d_s, m */
@@ -162,6 +176,8 @@ typedef struct {
     bool loss_rolling;           /* P_r */
     bool loss_drag;              /* P_v */
     bool loss_cage;              /* P_c cage-land shear (MODEL.md 6 iii), default off */
+    bool loss_ehl_rolling;       /* P_e EHL rolling resistance (MODEL.md 16), default off */
+    bool loss_churning;          /* P_ch oil churning / jet momentum (MODEL.md 16), default off */
 
     /* [fidelity] */
     acbb_model_level model;
@@ -189,6 +205,17 @@ typedef struct {
 
 /* Fill `s` with the 7008C defaults of MODEL.md section 10. */
 void acbb_scene_default(acbb_scene *s);
+
+/* Lubricants by grade (MODEL.md 16, src/scene/lubricant_grade.c). A graded
+ * scene (lubricant.grade, or method grease with a base-oil nu40) gets
+ * oil_nu40 (ISO 3448 midpoint), oil_nu100 (from oil_vi, ASTM D2270) and
+ * oil_alpha_pv (Wooster) written into `s`, except where those keys hold
+ * other than their defaults; a custom oil is left as given. A run applies
+ * it to its own copy (acbb_sim_new). */
+void acbb_lubricant_apply(acbb_scene *s);
+double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
+double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, both in mm^2/s */
+double acbb_nu100_from_vi(double nu40, double vi);     /* mm^2/s: VI(nu40, result) = vi */
 
 /* Load a preset: starts from acbb_scene_default, then applies every key.
  * On failure returns ACBB_EIO or ACBB_EINVAL and writes
@@ -276,6 +303,14 @@ typedef struct {
 } acbb_surroundings;
 
 void acbb_scene_surroundings(const acbb_scene *s, acbb_surroundings *out);
+
+/* The boundary a cooled face (s->bore_bc or s->cap_bc) has in this scene:
+ * fixed or convective as set; `derived` (the default) is [S]'s fixed face
+ * on the seed's own rig (the 7008C envelope with the rig's surroundings,
+ * [S] section 3) and convective at the face's h for every other bearing:
+ * a fixed face is an unlimited heat sink, which only the rig measured
+ * (MODEL.md 13 "Surroundings", issue 18). */
+acbb_bc_kind acbb_face_bc_kind(const acbb_scene *s, const acbb_face_bc *bc);
 
 /* ---- schema introspection (for the TUI editor and help output) ---- */
 typedef enum { ACBB_FIELD_REAL, ACBB_FIELD_INT, ACBB_FIELD_BOOL,

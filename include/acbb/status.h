@@ -16,8 +16,15 @@ typedef enum {
     ACBB_NOT_CONVERGED = -8, /* step or time limit reached before steady state */
     ACBB_NONFINITE = -9,     /* a NaN/Inf was caught before publication */
     ACBB_SINGULAR = -10,     /* a linear system could not be factorised */
-    ACBB_CANCELLED = -11     /* the caller asked a long computation to stop */
+    ACBB_CANCELLED = -11,    /* the caller asked a long computation to stop */
+    ACBB_UNBALANCED = -12    /* the steady heat balance did not close (ACBB_BALANCE_TOL) */
 } acbb_status;
+
+/* A converged run's network heat balance |in - out| must be within this
+ * fraction of the heat in (MODEL.md 12 item 18: steady balance to 1e-6). */
+#define ACBB_BALANCE_TOL 1e-6
+/* ... or within this absolute floor, W (round-off of a network carrying no heat). */
+#define ACBB_BALANCE_FLOOR_W 1e-9
 
 /* Human-readable message buffer; the caller owns it (usually on the stack). */
 typedef struct {

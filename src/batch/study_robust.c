@@ -37,8 +37,9 @@ static int inert(const char *key, const acbb_scene *p)
     if (strncmp(key, "materials.", 10) == 0 && n > 16 && strcmp(key + n - 16, "_expansion_ppm_K") == 0)
         return !p->thermal_expansion;
     if (strcmp(key, "surroundings.shaft_bore_h_W_m2K") == 0)
-        return p->bore_bc.kind != ACBB_BC_CONVECTIVE;
-    if (strcmp(key, "surroundings.cap_h_W_m2K") == 0) return p->cap_bc.kind != ACBB_BC_CONVECTIVE;
+        return acbb_face_bc_kind(p, &p->bore_bc) != ACBB_BC_CONVECTIVE;
+    if (strcmp(key, "surroundings.cap_h_W_m2K") == 0)
+        return acbb_face_bc_kind(p, &p->cap_bc) != ACBB_BC_CONVECTIVE;
     if (strcmp(key, "thermal.heat_partition") == 0) return p->network == ACBB_NET_46;
     return 0;
 }

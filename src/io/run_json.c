@@ -4,6 +4,7 @@
  * row shows up here by itself. */
 #include <string.h>
 #include "acbb/json.h"
+#include "acbb/loss_kinds.h"
 #include "acbb/outputs.h"
 #include "acbb/units.h"
 
@@ -140,6 +141,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
     acbb_json_num(j, "wall_ms", s->wall_ms);
 
     section(j, s, "losses_W");
+    acbb_json_str(j, "loss_set", acbb_loss_set(sc)); /* MODEL.md 16: seed | extended */
 
     temperatures(j, s);
 

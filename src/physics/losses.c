@@ -6,6 +6,8 @@
 #include <gsl/gsl_integration.h>
 #include "losses.h"
 #include "traction.h"
+#include "ehl_rolling.h"
+#include "churning.h"
 
 acbb_status acbb_quad_init(acbb_quad *q, int n)
 {
@@ -92,8 +94,11 @@ static double spin_finish(const acbb_contact_in *c, int seed, double sum)
 }
 
 /* Johnson's hysteresis force 4 eps Q a_c / (3 pi D) [J section 9] times u. */
-static double rolling_contact(const acbb_scene *s, const acbb_contact_in *c, double u)
+static double rolling_contact(const acbb_contact_form *f)
 {
+    const acbb_scene *s = f->s;
+    const acbb_contact_in *c = f->c;
+    double u = f->u;
     double ac = s->hyst_axis == ACBB_HYST_MINOR ? c->b : c->a;
     if (s->loss_form == ACBB_LOSS_SEED) {
         double arm = c->dm + (c->inner ? -2.0 : 2.0) * c->delta;
@@ -102,9 +107,32 @@ static double rolling_contact(const acbb_scene *s, const acbb_contact_in *c, dou
     return 4.0 * s->hysteresis * c->Q * ac / (3.0 * M_PI * c->D) * u;
 }
 
+/* EHL rolling resistance (ehl_rolling.c, MODEL.md 16): the isothermal
+ * force with the film's inlet-heating factor and the method's starvation
+ * factor, times the entrainment speed. No film, no force. */
+static double ehl_rolling_contact(const acbb_contact_form *f)
+{
+    const acbb_contact_in *c = f->c;
+    if (!(f->film->hc > 0.0)) return 0.0;
+    double E = c->E_eff;
+    double U = f->oil->eta0 * f->u / (E * c->Rx);
+    double G = f->s->oil_alpha_pv * E;
+    double W = c->Q / (E * c->Rx * c->Rx);
+    double F = acbb_ehl_rolling_force(E, c->Rx, c->kappa, U, G, W) * f->film->phi_T
+             * acbb_starvation_factor(f->s, f->oil->nu * 1e6);
+    return F * f->u;
+}
+
+/* The air (oil-air) drag acts on the balls outside an oil bath. */
 static double drag_bearing(const acbb_bearing_in *in)
 {
-    return acbb_drag_loss(in->s, in->mix, in->omega_m);
+    double P = acbb_drag_loss(in->s, in->mix, in->omega_m);
+    return in->s->lub_method == ACBB_LUB_OIL_BATH ? P * (1.0 - acbb_bath_immersion(in->s)) : P;
+}
+
+static double churning_bearing(const acbb_bearing_in *in)
+{
+    return in->oil ? acbb_churning_loss(in->s, in->oil, in->omega_m) : 0.0;
 }
 
 static double cage_bearing(const acbb_bearing_in *in)
@@ -126,12 +154,22 @@ const acbb_loss_desc acbb_loss_table[ACBB_LOSS_KINDS] = {
                          ACBB_HEAT_CAVITY, .bearing = drag_bearing },
     [ACBB_LOSS_CAGE] = { "cage", "P_c", "cage-land shear", "loss_cage", FLAG(loss_cage),
                          ACBB_HEAT_CAGE, .bearing = cage_bearing },
+    [ACBB_LOSS_EHL_ROLLING] = { "ehl_rolling", "P_e", "EHL rolling resistance", "loss_ehl_rolling",
+                                FLAG(loss_ehl_rolling), ACBB_HEAT_CONTACT,
+                                .contact = ehl_rolling_contact },
+    [ACBB_LOSS_CHURNING] = { "churning", "P_ch", "oil churning / jet", "loss_churning",
+                             FLAG(loss_churning), ACBB_HEAT_CAVITY, .bearing = churning_bearing },
 };
 #undef FLAG
 
 const char *acbb_loss_name(acbb_loss_kind k) { return acbb_loss_table[k].name; }
 const char *acbb_loss_symbol(acbb_loss_kind k) { return acbb_loss_table[k].symbol; }
 const char *acbb_loss_label(acbb_loss_kind k) { return acbb_loss_table[k].label; }
+
+const char *acbb_loss_set(const acbb_scene *s)
+{
+    return s->loss_ehl_rolling || s->loss_churning ? "extended" : "seed";
+}
 
 int acbb_loss_enabled(const acbb_scene *s, acbb_loss_kind k)
 {
@@ -224,7 +262,7 @@ acbb_status acbb_contact_losses(const acbb_scene *s, const acbb_quad *q,
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         const acbb_loss_desc *d = &acbb_loss_table[l];
         if (d->contact && acbb_loss_enabled(s, (acbb_loss_kind)l))
-            out->P[l] = d->contact(s, c, u);
+            out->P[l] = d->contact(&(acbb_contact_form){ s, c, oil, &out->film, u });
         if (!isfinite(out->P[l])) return ACBB_NONFINITE;
     }
     return ACBB_OK;

@@ -71,7 +71,18 @@ typedef struct {
     const acbb_scene *s;
     const acbb_mixture *mix;
     double omega_m;         /* mean orbital (cage) speed, rad/s */
+    const acbb_oil_state *oil; /* the cavity oil (churning), may be NULL: no churning */
 } acbb_bearing_in;
+
+/* What a closed form per contact sees: the scene, the contact, its inlet
+ * oil and film, the entrainment speed |u| (m/s). */
+typedef struct {
+    const acbb_scene *s;
+    const acbb_contact_in *c;
+    const acbb_oil_state *oil;
+    const acbb_film *film;
+    double u;
+} acbb_contact_form;
 
 typedef struct {
     const char *name;       /* JSON / CSV key, e.g. "shear" */
@@ -83,7 +94,7 @@ typedef struct {
     /* Exactly one formula: */
     double (*point)(const acbb_loss_point *pt);      /* integrand (W/m^2) */
     double (*finish)(const acbb_contact_in *c, int seed, double integral); /* NULL: as is */
-    double (*contact)(const acbb_scene *s, const acbb_contact_in *c, double u); /* W */
+    double (*contact)(const acbb_contact_form *f);   /* W */
     double (*bearing)(const acbb_bearing_in *in);    /* W */
 } acbb_loss_desc;
 

@@ -171,8 +171,9 @@ static acbb_status check_scene(const acbb_scene *s, acbb_error *err)
                               "> 0 and flows >= 0");
     const acbb_face_bc *bc[2] = {&s->bore_bc, &s->cap_bc};
     for (int i = 0; i < 2; i++)
-        if (!(isfinite(bc[i]->dT) && (bc[i]->kind == ACBB_BC_FIXED ||
-              (bc[i]->kind == ACBB_BC_CONVECTIVE && bc[i]->h > 0 && isfinite(bc[i]->h)))))
+        if (!(isfinite(bc[i]->dT) && (acbb_face_bc_kind(s, bc[i]) == ACBB_BC_FIXED ||
+              (acbb_face_bc_kind(s, bc[i]) == ACBB_BC_CONVECTIVE && bc[i]->h > 0
+               && isfinite(bc[i]->h)))))
             return acbb_error_set(err, ACBB_EINVAL, "network: a convective %s needs a film "
                                   "coefficient > 0 W/(m^2 K) and a finite coolant temperature",
                                   i ? "end cap" : "shaft bore");
@@ -414,9 +415,9 @@ static void set_avg(int *dst, int *n, const int *src, int count)
  * stands for the coolant, held at ambient + dT like a fixed face, and the
  * algebraic surface node between conduction and film is eliminated
  * exactly (MODEL.md 8.1 CV, 13 "Surroundings"). */
-static double r_face(const acbb_face_bc *bc, double A)
+static double r_face(const acbb_scene *s, const acbb_face_bc *bc, double A)
 {
-    return bc->kind == ACBB_BC_CONVECTIVE ? r_film(bc->h, A) : 0.0;
+    return acbb_face_bc_kind(s, bc) == ACBB_BC_CONVECTIVE ? r_film(bc->h, A) : 0.0;
 }
 
 /* Fixed nodes: ambient, the shaft bore (28, 30) and the cap's outer face
@@ -487,9 +488,9 @@ static void outer46(net_builder *b, const acbb_scene *s, const net_geom *g)
     add(b, 12, 37, r_film(s->h_face, g->A_face_o));
     add(b, 37, 41, r_ac(hT, kh, g->A_face_o));
     add(b, 39, 41, r_ac(hT, kh, g->A_cap_cav));
-    add(b, 41, 38, r_ac(hT, kh, A1) + r_face(&s->cap_bc, A1));
-    add(b, 41, 40, r_ac(hT, kh, A2) + r_face(&s->cap_bc, A2));
-    add(b, 41, 42, r_ac(hT, kh, A3) + r_face(&s->cap_bc, A3));
+    add(b, 41, 38, r_ac(hT, kh, A1) + r_face(s, &s->cap_bc, A1));
+    add(b, 41, 40, r_ac(hT, kh, A2) + r_face(s, &s->cap_bc, A2));
+    add(b, 41, 42, r_ac(hT, kh, A3) + r_face(s, &s->cap_bc, A3));
 }
 
 /* Contacts (open until the first update), ball interior, cage body, IR
@@ -518,8 +519,8 @@ static void inner46(net_builder *b, const acbb_scene *s, const net_geom *g)
     add(b, 23, 26, r_ac(qB, kr, A_ir));
     add(b, 21, 27, r_film(s->h_fit_inner, M_PI * s->bore * hB));
     add(b, 24, 29, r_film(s->h_fit_inner, M_PI * s->bore * hB));
-    add(b, 27, 28, r_rc(g->r_sb, g->r_b, ks, 0.5 * g->L_s) + r_face(&s->bore_bc, A_bore));
-    add(b, 29, 30, r_rc(g->r_sb, g->r_b, ks, 0.5 * g->L_s) + r_face(&s->bore_bc, A_bore));
+    add(b, 27, 28, r_rc(g->r_sb, g->r_b, ks, 0.5 * g->L_s) + r_face(s, &s->bore_bc, A_bore));
+    add(b, 29, 30, r_rc(g->r_sb, g->r_b, ks, 0.5 * g->L_s) + r_face(s, &s->bore_bc, A_bore));
     add(b, 27, 29, r_ac(hB, ks, A_sh));
 }
 
@@ -624,7 +625,7 @@ static void build7(net_builder *b, const acbb_scene *s, const net_geom *g)
     int sink = nw->n > 7 ? 7 : 0;
     if (sink) fix(b, sink, s->ambient_C + s->bore_bc.dT);
     add(b, 5, sink, r_rc(g->r_sb, r_smid, ks, g->L_s)
-                    + r_face(&s->bore_bc, 2 * M_PI * g->r_sb * g->L_s));
+                    + r_face(s, &s->bore_bc, 2 * M_PI * g->r_sb * g->L_s));
 
     net_fluid f;
     net_edge cv[16];

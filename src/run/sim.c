@@ -127,7 +127,7 @@ static void contact_input(const acbb_sim *sim, const acbb_ball_state *b, int inn
 
 /* Oil at the two contact inlets and the oil-air mixture of the cavity. */
 static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *oo,
-                      acbb_mixture *mix)
+                      acbb_oil_state *oc_out, acbb_mixture *mix)
 {
     double Tin_i, Tin_o;
     acbb_oil_state oc;
@@ -136,6 +136,7 @@ static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *o
     acbb_oil_at(&sim->s, Tin_o, oo);
     acbb_oil_at(&sim->s, sim->T[sim->nw.node_cavity], &oc);
     acbb_mixture_at(&sim->s, &oc, mix);
+    *oc_out = oc;
 }
 
 /* Contact heat of one contact, by where the table sends it. */
@@ -148,10 +149,11 @@ static void route_contact(const acbb_contact_loss *cl, double w, double *race, d
 }
 
 /* Whole-bearing losses (drag, cage) at the mean orbital speed. */
-static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix, double wm,
-                           acbb_losses *L, acbb_heat_sources *H)
+static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix,
+                           const acbb_oil_state *oc, double wm, acbb_losses *L,
+                           acbb_heat_sources *H)
 {
-    acbb_bearing_in in = { &sim->s, mix, wm };
+    acbb_bearing_in in = { &sim->s, mix, wm, oc };
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
         const acbb_loss_desc *d = &acbb_loss_table[l];
         if (!d->bearing || !acbb_loss_enabled(&sim->s, (acbb_loss_kind)l)) continue;
@@ -203,9 +205,9 @@ static double skip_tol(const acbb_sim *sim, double transient)
 /* Every loss of the table at the current mechanics; fills sim->loss and heat. */
 static acbb_status losses(acbb_sim *sim)
 {
-    acbb_oil_state oil_i, oil_o;
+    acbb_oil_state oil_i, oil_o, oil_c;
     acbb_mixture mix;
-    lubricant(sim, &oil_i, &oil_o, &mix);
+    lubricant(sim, &oil_i, &oil_o, &oil_c, &mix);
     int nb = acbb_mech_distinct(&sim->ms);
     /* As the Level-2 skip (mechanics()): transient steps of non-symmetric
      * scenes only, so pure thrust and the steady polish compute every ball. */
@@ -227,7 +229,7 @@ static acbb_status losses(acbb_sim *sim)
         wm_sum += w * b->kin.omega_m;
     }
     for (int j = nb; j < sim->ms.n; j++) sim->bl[j] = sim->bl[acbb_mech_source(&sim->ms, j)];
-    bearing_losses(sim, &mix, wm_sum / sim->ms.n, &L, &H);
+    bearing_losses(sim, &mix, &oil_c, wm_sum / sim->ms.n, &L, &H);
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) L.total += L.P[l];
     L.inner = H.inner_contact;
     L.outer = H.outer_contact;
@@ -303,9 +305,9 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
     int warm = (sim->qd || sim->dyn) && sim->transient_pass && sim->ms.ball[0].traction_valid;
     acbb_status rc = warm ? ACBB_OK : mech_solve(sim, err);
     if (rc != ACBB_OK || (!sim->qd && !sim->dyn)) return rc;
-    acbb_oil_state oi, oo;
+    acbb_oil_state oi, oo, oc;
     acbb_mixture mix;
-    lubricant(sim, &oi, &oo, &mix);
+    lubricant(sim, &oi, &oo, &oc, &mix);
     /* One pass per transient step: the thermal steps iterate the coupling
      * anyway; the set-up converges it fully. So does the steady polish,
      * whose Picard iterations (to 1e-9 K) also carry the coupling when
@@ -491,7 +493,7 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
 
 static void finish_energy(acbb_sim *sim)
 {
-    sim->heat_out = acbb_tnet_heat_to_fixed(sim->nw.net, sim->T);
+    sim->heat_out = sim->s.heating ? acbb_tnet_heat_to_fixed(sim->nw.net, sim->T) : 0.0;
 }
 
 static void save(acbb_sim *sim, checkpoint *k)
@@ -614,9 +616,28 @@ static double axial_stiffness(acbb_sim *sim)
     return rc == ACBB_OK && isfinite(K) ? K : 0.0;
 }
 
+/* A steady state is one whose network balances its sources (MODEL.md 12
+ * item 18): otherwise the run fails with ACBB_UNBALANCED and keeps the
+ * state it reached. Heating off solves no network: no heat flows. */
+static int unbalanced(acbb_sim *sim)
+{
+    if (!sim->s.heating) return 0;
+    double in = sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
+              + sim->heat.cavity + sim->heat.cage;
+    if (fabs(in - sim->heat_out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W))
+        return 0;
+    char d[160];
+    snprintf(d, sizeof d, "%.6g W in, %.6g W out, tolerance %g of the heat in or %g W",
+             in, sim->heat_out, ACBB_BALANCE_TOL, ACBB_BALANCE_FLOOR_W);
+    fail(sim, ACBB_UNBALANCED, "the network's heat balance does not close at the "
+         "steady state (%s); last state kept", d);
+    return 1;
+}
+
 static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
+    if (unbalanced(sim)) return;
     sim->K_axial = axial_stiffness(sim);
     acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
     sim->state = ACBB_RUN_CONVERGED;
@@ -793,6 +814,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     sim->s = *s;
     /* fidelity.preset / target_error_pct override the knobs (fidelity.h). */
     acbb_fidelity_apply(&sim->s, NULL);
+    acbb_lubricant_apply(&sim->s);
     s = &sim->s;
     acbb_operating op; /* schedule.h: the first row, or the last for the steady solve */
     if (s->thermal_mode == ACBB_THERMAL_STEADY || !s->heating) acbb_schedule_final(s, &op);
@@ -987,8 +1009,9 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->work = sim->work;
     acbb_snap_squeeze(&sim->exp, &sim->ms.ball[0], &o->squeeze);
     o->reaction_x = acbb_snap_fin(sim->ms.Fx);
-    o->heat_in = acbb_snap_fin(sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
-                     + sim->heat.cavity + sim->heat.cage);
+    o->heat_in = sim->s.heating ? acbb_snap_fin(sim->heat.inner_contact + sim->heat.outer_contact
+                                                + sim->heat.ball + sim->heat.cavity + sim->heat.cage)
+                                : 0.0; /* no network: no heat flows (finish_energy) */
     o->heat_out = acbb_snap_fin(sim->heat_out);
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)

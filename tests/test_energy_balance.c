@@ -1,0 +1,104 @@
+/* Energy balance of converged runs (MODEL.md 12 item 18): heat in equals
+ * heat into the fixed nodes within ACBB_BALANCE_TOL on the 7- and 46-node
+ * networks over a random sample of valid scenes; a state that does not
+ * balance is not `converged` (issue 18's reproduction); heating off
+ * reports no heat flow. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tap.h"
+#include "acbb/sim.h"
+
+static acbb_status run(const acbb_scene *s, acbb_snapshot *snap, acbb_error *err)
+{
+    acbb_sim *sim = NULL;
+    acbb_status rc = acbb_sim_new(s, &sim, err);
+    if (rc != ACBB_OK) return rc;
+    rc = acbb_sim_run(sim);
+    acbb_sim_snapshot(sim, snap);
+    acbb_sim_free(sim);
+    return rc;
+}
+
+static void test_issue_case(void)
+{
+    acbb_scene s;
+    acbb_error err = { "" };
+    ok(acbb_scene_load("presets/runaway-rigid-preload.ini", &s, &err) == ACBB_OK, "preset: %s",
+       err.msg);
+    const char *e[] = { "bearing.inner_groove_radius_mm=52.9824", "fidelity.network=7",
+                        "lubricant.air_density_kg_m3=0.00479549", "effects.loss_spin=off",
+                        "fidelity.model=quasi-static" };
+    ok(acbb_scene_apply_edits(&s, e, 5, &err) == ACBB_OK, "issue 18 edits: %s", err.msg);
+    acbb_snapshot snap;
+    acbb_status rc = run(&s, &snap, &err);
+    int balanced = fabs(snap.heat_in - snap.heat_out) <= ACBB_BALANCE_TOL * snap.heat_in;
+    ok(rc == ACBB_UNBALANCED ? !balanced : balanced && rc == ACBB_OK,
+       "issue 18 case: %s with %.4g W in, %.4g W out (never converged unbalanced)",
+       acbb_status_name(rc), snap.heat_in, snap.heat_out);
+    ok(snap.state != ACBB_RUN_CONVERGED || balanced, "converged implies balanced");
+}
+
+static void test_heating_off(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.heating = false;
+    s.bore_bc.dT = 10.0;
+    acbb_snapshot snap;
+    acbb_error err = { "" };
+    ok(run(&s, &snap, &err) == ACBB_OK, "heating off with a coolant offset converges");
+    ok(snap.heat_in == 0.0 && snap.heat_out == 0.0, "heating off: no heat flow (%g in, %g out)",
+       snap.heat_in, snap.heat_out);
+}
+
+/* Random valid scenes: speed, axial load, network, bore boundary, steady
+ * mode (the direct solve, as batch runs use). rand_r: reproducible. */
+static void test_random_sample(void)
+{
+    unsigned seed = 18;
+    int n_conv[2] = { 0, 0 }, n_bal[2] = { 0, 0 }, n[2] = { 0, 0 };
+    double worst[2] = { 0, 0 };
+    for (int k = 0; k < 16; k++) {
+        acbb_scene s;
+        acbb_scene_default(&s);
+        int net = k % 2;
+        s.network = net ? ACBB_NET_7 : ACBB_NET_46;
+        s.thermal_mode = ACBB_THERMAL_STEADY;
+        s.model = ACBB_MODEL_QUASI_STATIC;
+        s.inner_speed = (2000 + rand_r(&seed) % 14000) * 2 * M_PI / 60;
+        s.axial_load = 100 + rand_r(&seed) % 900;
+        if (rand_r(&seed) % 2) {
+            s.bore_bc.kind = ACBB_BC_CONVECTIVE;
+            s.bore_bc.dT = (double)(rand_r(&seed) % 20) - 5.0;
+        }
+        s.loss_ehl_rolling = rand_r(&seed) % 2;
+        acbb_snapshot snap;
+        acbb_error err = { "" };
+        acbb_status rc = run(&s, &snap, &err);
+        n[net]++;
+        if (snap.state != ACBB_RUN_CONVERGED) {
+            printf("# %s %d rpm %.0f N: %s\n", net ? "7" : "46", (int)(s.inner_speed * 60 / (2 * M_PI)),
+                   s.axial_load, acbb_status_name(rc));
+            continue;
+        }
+        n_conv[net]++;
+        double rel = fabs(snap.heat_in - snap.heat_out) / snap.heat_in;
+        worst[net] = fmax(worst[net], rel);
+        n_bal[net] += rel <= ACBB_BALANCE_TOL;
+    }
+    for (int net = 0; net < 2; net++) {
+        ok(n_conv[net] == n[net], "%s-node: %d of %d random scenes converge", net ? "7" : "46",
+           n_conv[net], n[net]);
+        ok(n_bal[net] == n_conv[net], "%s-node: all balance, worst |in - out|/in = %.2e",
+           net ? "7" : "46", worst[net]);
+    }
+}
+
+int main(void)
+{
+    test_issue_case();
+    test_heating_off();
+    test_random_sample();
+    return done_testing();
+}

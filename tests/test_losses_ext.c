@@ -1,0 +1,172 @@
+/* The losses beyond [S] (MODEL.md 16): EHL rolling resistance, the
+ * starvation factor, churning and jet momentum, and that the seed scene
+ * does not move while they are off. */
+#include <math.h>
+#include <string.h>
+#include "tap.h"
+
+/* is_close with a printf-style name */
+#define IS_CLOSE(got, want, rt, at, ...) do { char nm_[200]; \
+        snprintf(nm_, sizeof nm_, __VA_ARGS__); is_close(got, want, rt, at, nm_); } while (0)
+#include "acbb/sim.h"
+#include "losses.h"
+#include "ehl_rolling.h"
+#include "churning.h"
+
+/* Hand calculation of F_R = 2.86 E' Rx^2 kappa^0.348 G^0.022 U^0.66 W^0.47
+ * at E' = 227.5 GPa, Rx = 2.5 mm, kappa = 6, U = 1e-11, G = 4550, W = 1e-4
+ * (evaluated separately: 6.6145505e-3 N). */
+static void test_force_hand(void)
+{
+    double F = acbb_ehl_rolling_force(2.275e11, 2.5e-3, 6.0, 1e-11, 4550.0, 1e-4);
+    IS_CLOSE(F, 6.614550512507567e-3, 1e-12, 0, "EHL rolling force, hand calculation");
+    IS_CLOSE(acbb_ehl_rolling_force(2.275e11, 2.5e-3, 6.0, 0.0, 4550.0, 1e-4), 0, 0, 0,
+             "no entrainment, no force");
+}
+
+/* SKF kinematic starvation factor for a 6008 (40 x 68 mm) at 10 000 rpm,
+ * nu = 30 mm^2/s: oil-air K_rs 6e-8, K_Z 3.1 -> exp(-0.45739) = 0.632936;
+ * an angular-contact bearing in an oil bath (K_rs 3e-8, K_Z 4.4): 0.761506. */
+static void test_starvation_hand(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.bore = 40e-3;
+    s.outer_diameter = 68e-3;
+    s.inner_speed = 10000 * 2 * M_PI / 60;
+    s.contact_angle0 = 0.0;
+    IS_CLOSE(acbb_starvation_factor(&s, 30.0), 0.6329358284814076, 1e-12, 0,
+             "starvation factor, deep groove, oil-air");
+    s.contact_angle0 = 15 * M_PI / 180;
+    s.lub_method = ACBB_LUB_OIL_BATH;
+    IS_CLOSE(acbb_starvation_factor(&s, 30.0), 0.7615058773591556, 1e-12, 0,
+             "starvation factor, angular contact, oil bath");
+}
+
+/* One loaded contact of the 7008C with the film on. */
+static acbb_contact_in contact(double u)
+{
+    acbb_contact_in c = { 0 };
+    c.inner = 1;
+    c.Q = 300; c.a = 1.1e-3; c.b = 0.2e-3;
+    c.pmax = 1.5 * c.Q / (M_PI * c.a * c.b);
+    c.alpha = 0.3; c.f = 0.54; c.D = 6.35e-3; c.dm = 54e-3;
+    c.Rx = 2.6e-3; c.kappa = 5.5; c.E_eff = 2.275e11;
+    c.u = u; c.roll = u / (0.5 * c.D);
+    return c;
+}
+
+static double P_e(const acbb_scene *s, double u, double nu40, double *F, acbb_film *fl)
+{
+    acbb_scene t = *s;
+    t.oil_nu40 = nu40;
+    t.oil_nu100 = nu40 / 5.66;
+    acbb_oil_state oil;
+    acbb_oil_at(&t, 40.0, &oil);
+    acbb_quad q;
+    acbb_quad_init(&q, 6);
+    acbb_contact_in c = contact(u);
+    acbb_contact_loss L;
+    acbb_contact_losses(&t, &q, &c, &oil, &L);
+    if (fl) *fl = L.film;
+    if (F) {
+        double U = oil.eta0 * u / (c.E_eff * c.Rx), G = t.oil_alpha_pv * c.E_eff;
+        double W = c.Q / (c.E_eff * c.Rx * c.Rx);
+        *F = acbb_ehl_rolling_force(c.E_eff, c.Rx, c.kappa, U, G, W) * L.film.phi_T
+           * acbb_starvation_factor(&t, oil.nu * 1e6);
+    }
+    return L.P[ACBB_LOSS_EHL_ROLLING];
+}
+
+static void test_contact_loss(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.loss_ehl_rolling = true;
+    s.inner_speed = 0.0;      /* starvation factor 1: the force alone */
+    double F;
+    acbb_film fl;
+    double P = P_e(&s, 10.0, 30e-6, &F, &fl);
+    ok(fl.hc > 0 && fl.phi_T < 1.0, "film on, inlet heating active (phi_T %.3f)", fl.phi_T);
+    IS_CLOSE(P, F * 10.0, 1e-12, 0, "P_e = F_R phi_T phi_rs u");
+    /* Its torque F_R grows with speed and with viscosity (isothermal:
+     * no inlet heating, oil_k = 0 switches phi_T off). */
+    s.oil_k = 0.0;
+    double F1, F2, F3;
+    P_e(&s, 5.0, 30e-6, &F1, NULL);
+    P_e(&s, 20.0, 30e-6, &F2, NULL);
+    P_e(&s, 5.0, 100e-6, &F3, NULL);
+    IS_CLOSE(F2 / F1, pow(4.0, 0.66), 1e-9, 0, "F_R ~ u^0.66 (isothermal)");
+    ok(F3 > F1, "F_R grows with viscosity (%.4g > %.4g N)", F3, F1);
+    s.loss_ehl_rolling = false;
+    IS_CLOSE(P_e(&s, 10.0, 30e-6, NULL, NULL), 0, 0, 0, "switched off: 0");
+    s.loss_ehl_rolling = true;
+    s.ehl_film = false;
+    IS_CLOSE(P_e(&s, 10.0, 30e-6, NULL, NULL), 0, 0, 0, "no film: 0");
+}
+
+/* Oil bath fully over the balls: every ball churns, P = Z 1/2 C_D rho
+ * pi D^2/4 v^3; empty bath: 0. Jet: rho q v (v - v_jet). */
+static void test_churning_hand(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    acbb_oil_state oil = { .T_C = 40, .rho = 864.6, .nu = 30e-6, .eta0 = 864.6 * 30e-6 };
+    double wm = 100.0, v = wm * 0.5 * s.pitch_diameter;
+    s.lub_method = ACBB_LUB_OIL_BATH;
+    s.bath_level = s.pitch_diameter + s.ball_diameter + 1e-3;
+    IS_CLOSE(acbb_bath_immersion(&s), 1.0, 1e-12, 0, "bath over the bearing: all immersed");
+    double Re = oil.rho * v * s.ball_diameter / oil.eta0;
+    double cd = 24 / Re * (1 + 0.15 * pow(Re, 0.687)) + 0.42 / (1 + 4.25e4 * pow(Re, -1.16));
+    double want = s.n_balls * 0.5 * cd * oil.rho * M_PI / 4 * pow(s.ball_diameter, 2) * pow(v, 3);
+    IS_CLOSE(acbb_churning_loss(&s, &oil, wm), want, 1e-12, 0, "churning, full bath (Re %.0f)", Re);
+    s.bath_level = 0.5 * s.ball_diameter;  /* the lowest ball half immersed */
+    double f = acbb_bath_immersion(&s);
+    ok(f > 0.0 && f < 0.5 / s.n_balls * 2, "half the lowest ball under oil: f = %.4f", f);
+    s.bath_level = 0.0;
+    IS_CLOSE(acbb_churning_loss(&s, &oil, wm), 0, 0, 0, "empty bath: 0");
+    s.lub_method = ACBB_LUB_OIL_JET;
+    s.q_oil = 1e-5;
+    s.jet_speed = 2.0;
+    IS_CLOSE(acbb_churning_loss(&s, &oil, wm), oil.rho * 1e-5 * v * (v - 2.0), 1e-12, 0,
+             "jet: rho q v (v - v_jet)");
+    s.jet_speed = 2 * v;
+    IS_CLOSE(acbb_churning_loss(&s, &oil, wm), 0, 0, 0, "jet faster than the balls: 0");
+    s.lub_method = ACBB_LUB_OIL_AIR;
+    IS_CLOSE(acbb_churning_loss(&s, &oil, wm), 0, 0, 0, "oil-air: no churning");
+}
+
+/* The seed scene with the new losses off is today's (the 7008C JSON of
+ * the starting tree: total 54.64885431 W); with them on the set is named. */
+static void test_seed_unmoved(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    acbb_error err = { "" };
+    acbb_sim *sim = NULL;
+    acbb_snapshot snap;
+    ok(acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK, "7008C runs");
+    acbb_sim_snapshot(sim, &snap);
+    acbb_sim_free(sim);
+    IS_CLOSE(snap.losses.total, 54.64885431, 1e-9, 0, "7008C total loss as before");
+    IS_CLOSE(snap.losses.P[ACBB_LOSS_EHL_ROLLING] + snap.losses.P[ACBB_LOSS_CHURNING], 0, 0, 0,
+             "new losses off: 0 W");
+    ok(strcmp(acbb_loss_set(&s), "seed") == 0, "loss set: seed");
+    s.loss_ehl_rolling = true;
+    ok(strcmp(acbb_loss_set(&s), "extended") == 0, "loss set: extended");
+    ok(acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK, "extended runs");
+    acbb_sim_snapshot(sim, &snap);
+    acbb_sim_free(sim);
+    ok(snap.losses.P[ACBB_LOSS_EHL_ROLLING] > 0, "7008C EHL rolling loss %.3f W",
+       snap.losses.P[ACBB_LOSS_EHL_ROLLING]);
+}
+
+int main(void)
+{
+    test_force_hand();
+    test_starvation_hand();
+    test_contact_loss();
+    test_churning_hand();
+    test_seed_unmoved();
+    return done_testing();
+}
