@@ -27,5 +27,6 @@
 #include "acbb/plot.h"
 #include "acbb/json.h"
 #include "acbb/ffi.h"
+#include "acbb/life_eval.h"
 
 #endif

@@ -16,6 +16,7 @@
 #include "acbb/status.h"
 #include "acbb/limits.h"
 #include "acbb/loss_kinds.h"
+#include "acbb/life.h"
 
 /* What a user sees of one ball. Sliding speeds are the pressure-weighted
  * mean magnitude of the translational (Heathcote + gross) slip over the
@@ -94,6 +95,7 @@ typedef struct {
     double heat_in, heat_out;   /* W: sources vs heat into fixed nodes (energy balance) */
     int n_balls;
     acbb_ball_view balls[ACBB_MAX_BALLS];
+    acbb_life life;             /* rating life and static safety of this state (life_eval.h) */
 } acbb_snapshot;
 
 typedef struct acbb_sim acbb_sim;

@@ -6,6 +6,7 @@
 #include "acbb/json.h"
 #include "acbb/outputs.h"
 #include "acbb/units.h"
+#include "life_json.h"
 
 /* The table's entries of `section` (NULL: the keys directly in a ball) as
  * JSON numbers, in table order: bearing entries when k < 0, else ball k's. */
@@ -113,6 +114,7 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
     acbb_json_close(j, ']');
 
     section(j, s, "energy_W");
+    acbb_json_write_life(j, s);
 
     scene(j, sc);
     acbb_json_close(j, '}');

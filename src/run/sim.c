@@ -10,6 +10,7 @@
 #include <string.h>
 #include <assert.h>
 #include "acbb/sim.h"
+#include "acbb/life_eval.h"
 #include "acbb/measure.h"
 #include "stiffness.h"
 #include "mechanics.h"
@@ -888,4 +889,5 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
+    acbb_life_compute(&sim->s, o, &o->life);
 }
