@@ -49,7 +49,8 @@ static double cap_h(double h) { return isfinite(h) ? fmin(h, ACBB_LIFE_CAP_H) : 
 
 /* a_1, kappa and a_ISO: nu at the mean ring temperature (ISO 281 9.3.3
  * "operating temperature"), e_c C_u / P with P the reference load. */
-static void modified(const acbb_scene *s, const acbb_snapshot *sn, double n_rpm, acbb_life *L)
+static void modified(const acbb_scene *s, const acbb_snapshot *sn, double n_rpm, double L10h,
+                     acbb_life *L)
 {
     acbb_oil_state oil;
     L->T_oil_C = 0.5 * (sn->T_inner_ring + sn->T_outer_ring);
@@ -63,7 +64,7 @@ static void modified(const acbb_scene *s, const acbb_snapshot *sn, double n_rpm,
     L->a1 = acbb_iso_a1(s->life_reliability);
     double ecp = L->P_ref > 0.0 ? L->ec * L->Cu / L->P_ref : INFINITY;
     L->a_iso = acbb_iso_a_iso(L->kappa, ecp);
-    L->Lnmr_h = cap_h(L->a1 * L->a_iso * L->L10r_h);
+    L->Lnmr_h = cap_h(L->a1 * L->a_iso * L10h);
 }
 
 /* Shoulder height over the groove bottom: the [life] input, else from the
@@ -127,8 +128,9 @@ void acbb_life_compute(const acbb_scene *s, const acbb_snapshot *sn, acbb_life *
     double L10 = Z > 0 ? reference_life(s, sn) : INFINITY;
     L->L10r_Mrev = isfinite(L10) ? fmin(L10, ACBB_LIFE_CAP_H) : ACBB_LIFE_CAP_H;
     L->P_ref = isfinite(L10) && L10 > 0.0 ? L->C / cbrt(L10) : 0.0;
-    L->L10r_h = n_rpm > 0.0 ? cap_h(L10 * 1e6 / (60.0 * n_rpm)) : ACBB_LIFE_CAP_H;
-    modified(s, sn, n_rpm, L);
+    double L10h = n_rpm > 0.0 ? L10 * 1e6 / (60.0 * n_rpm) : INFINITY;
+    L->L10r_h = cap_h(L10h);
+    modified(s, sn, n_rpm, L10h, L);
     statics(s, sn, L);
 }
 
