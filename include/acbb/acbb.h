@@ -28,5 +28,6 @@
 #include "acbb/json.h"
 #include "acbb/ffi.h"
 #include "acbb/life_eval.h"
+#include "acbb/preload_map.h"
 
 #endif
