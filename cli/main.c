@@ -115,8 +115,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "e.g. acbb preload-map preload-window --speeds 4000:16000:7 --preloads 50:1500:8\n"
       "Each cell: mounting.preload = displacement set at rest by the preload, the\n"
       "transient from ambient. Below the window the balls skid (the gyroscopic\n"
-      "moment beats friction at the contacts, from the ball speeds); above it a\n"
-      "limit fails (--max-rise, --min-life, --min-s0) or the run runs away.\n"
+      "moment beats the traction of the inner contact, from the ball speeds); above\n"
+      "it a limit fails (--max-rise, --min-life, --min-s0) or the run runs away.\n"
       "--csv: speed_rpm, preload_N, status, verdict and the limits' values per cell.\n",
       SCENE_OPTS | O(SPEEDS) | O(PRELOADS) | O(MAX_RISE) | O(MIN_LIFE) | O(MIN_S0) | O(CSV) |
       O(PLOT) | O(JOBS), 1, 1, 0, acbb_cli_cmd_preload_map },
