@@ -17,6 +17,11 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_PARAM] = { "param", "KEY", "the swept key, section.key (1-D shorthand of --grid)" },
     [CLI_OPT_VALUES] = { "values", "V1,V2,...", "the values of --param, in preset units" },
     [CLI_OPT_JOBS] = { "jobs", "N", "parallel runs (default: the CPUs this process may use)" },
+    [CLI_OPT_SPEEDS] = { "speeds", "LO:HI:N", "inner-ring speeds, rpm: N evenly spaced from LO to HI" },
+    [CLI_OPT_PRELOADS] = { "preloads", "LO:HI:N", "preload forces, N: N evenly spaced from LO to HI" },
+    [CLI_OPT_MAX_RISE] = { "max-rise", "K", "upper limit: rings and ball at most K above ambient (0 = off)" },
+    [CLI_OPT_MIN_LIFE] = { "min-life", "H", "upper limit: modified rating life L_nmr at least H hours (0 = off)" },
+    [CLI_OPT_MIN_S0] = { "min-s0", "S", "upper limit: static safety s0 at least S (0 = off)" },
     [CLI_OPT_TRANSIENT] = { "transient", NULL, "run each point's transient (default: the steady "
                             "solve; only the transient catches a runaway)" },
     [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },

@@ -15,6 +15,9 @@ int acbb_cli_cmd_study(const acbb_cli_args *a);
 int acbb_cli_cmd_bench_speed(const acbb_cli_args *a);
 int acbb_cli_cmd_keys(const acbb_cli_args *a);
 
+/* preload_map.c */
+int acbb_cli_cmd_preload_map(const acbb_cli_args *a);
+
 /* sensitivity.c */
 int acbb_cli_cmd_sensitivity(const acbb_cli_args *a);
 

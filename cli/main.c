@@ -112,6 +112,15 @@ const acbb_cli_command acbb_cli_commands[] = {
       "never over an existing file) with the ISO 15 bore, outside diameter and width;\n"
       "internal geometry is estimated and marked `; estimated:` in the file.\n",
       O(OUT) | O(SERIES) | O(BORE) | O(ANGLE), 0, 1, -1, acbb_cli_cmd_new },
+    { "preload-map", NULL, "PRESET", "the preload window over speed x preload, on every core",
+      "e.g. acbb preload-map preload-window --speeds 4000:16000:7 --preloads 50:1500:8\n"
+      "Each cell: mounting.preload = displacement set at rest by the preload, the\n"
+      "transient from ambient. Below the window the balls skid (the gyroscopic\n"
+      "moment beats the traction of the inner contact, from the ball speeds); above\n"
+      "it a limit fails (--max-rise, --min-life, --min-s0) or the run runs away.\n"
+      "--csv: speed_rpm, preload_N, status, verdict and the limits' values per cell.\n",
+      SCENE_OPTS | O(SPEEDS) | O(PRELOADS) | O(MAX_RISE) | O(MIN_LIFE) | O(MIN_S0) | O(CSV) |
+      O(PLOT) | O(JOBS), 1, 1, 0, acbb_cli_cmd_preload_map },
     { "presets", NULL, "[DIR]", "the preset search path and the presets in it",
       NULL, 0, 0, 1, -1, acbb_cli_cmd_presets },
     { "keys", NULL, "", "every scene key with unit, range and help", NULL, 0, 0, 0, -1,

@@ -17,7 +17,7 @@
 #include "exit.h"
 #include "new.h"
 
-#define MAX_NOTES 16
+#define MAX_NOTES 24
 
 static int fail(const char *msg)
 {
@@ -89,8 +89,9 @@ static int annotate(const char *path, const acbb_designation *d, const acbb_esti
     }
     fprintf(f, "; %s: %s ball bearing, made by `acbb new %s`.\n; d x D x B = %g x %g x %g mm: "
                "ISO 15:2017 general plan (boundary dimensions).\n; Lines \"; estimated: ...\" "
-               "mark internal geometry that catalogues do not publish,\n; estimated by the rule "
-               "given (src/scene/designation.c); overwrite any of it.\n",
+               "mark internal geometry that catalogues do not publish\n; and the default "
+               "operating point, estimated by the rule given\n; (src/scene/designation.c); "
+               "overwrite any of it.\n",
             d->name, d->deep_groove ? "deep-groove" : "angular-contact", d->name,
             d->bore * 1e3, d->outer_diameter * 1e3, d->width * 1e3);
     char line[512], section[64] = "";

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/json.h"
+#include "acbb/life_eval.h"
 #include "acbb/outputs.h"
 #include "acbb/units.h"
 #include "output.h"
@@ -249,12 +250,41 @@ static void summary_balls(acbb_cli_out *o, const acbb_snapshot *s)
     }
 }
 
+/* MODEL.md 15: ratings, lives, static safety and the shoulders (life.h):
+ * three lines of "text number" items. */
+static void summary_life(acbb_cli_out *o, const acbb_snapshot *s)
+{
+    const acbb_life *L = &s->life;
+    char s0c[32], edc[32], tail[80];
+    acbb_life_contact_name(L->s0_ball, L->s0_race, s0c, sizeof s0c);
+    acbb_life_contact_name(L->edge_ball, L->edge_race, edc, sizeof edc);
+    snprintf(tail, sizeof tail, " deg (%s)%s\n", edc, L->edge_loaded ? ": EDGE LOADED" : "");
+    const struct { const char *pre; double v; } it[] = {
+        { "\nlife         C ", L->C * 1e-3 }, { " kN, C0 ", L->C0 * 1e-3 },
+        { L->estimated ? " kN (internals estimated)\n             L10r " : " kN\n             L10r ",
+          L->L10r_h },
+        { " h, Lnmr ", L->Lnmr_h }, { " h (a1 ", L->a1 }, { ", a_ISO ", L->a_iso },
+        { ", kappa ", L->kappa }, { ")\n             s0 ", L->s0_min },
+        { NULL, 0 }, { ", shoulder margin ", L->edge_margin_deg },
+    };
+    for (size_t i = 0; i < sizeof it / sizeof it[0]; i++) {
+        if (!it[i].pre) {
+            fprintf(o->f, " (%s)", s0c);
+            continue;
+        }
+        fputs(it[i].pre, o->f);
+        put_num(o, 1, 4, 'g', it[i].v);
+    }
+    fputs(tail, o->f);
+}
+
 void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap)
 {
     summary_header(o, preset, sc, snap);
     summary_thermal(o, sc, snap);
     summary_balls(o, snap);
+    summary_life(o, snap);
 }
 
 /* The run's JSON comes from the engine's one writer (acbb/json.h); the
@@ -299,6 +329,7 @@ static const char *const csv_tail[] = {
     "balls[0].film_o_um", "balls[0].hmin_i_um", "balls[0].hmin_o_um",
     "squeeze_um.inner_thermal", "squeeze_um.inner_centrifugal", "squeeze_um.outer",
     "squeeze_um.ball", "squeeze_um.net",
+    "life.L10r_h", "life.Lnmr_h", "life.a_iso", "life.kappa", "life.s0_min",
 };
 
 /* The flat names of columns c[0..n), each followed by `sep`. */
@@ -528,6 +559,11 @@ static void study_cells(acbb_cli_out *o, const acbb_cli_point *te,
         if (pair[m]->have_snap && s->n_balls > 0) cell(o, 8, 1, 'f', s->balls[0].Qi);
         else fprintf(o->f, "%8s", "-");
     }
+    /* What heat costs in life (MODEL.md 15): L_nmr(TE) against L_nmr(WTE). */
+    double lw = wte->snap.life.Lnmr_h;
+    if (te->have_snap && wte->have_snap && lw > 0.0)
+        cell(o, 8, 1, 'f', 100.0 * (te->snap.life.Lnmr_h - lw) / lw);
+    else fprintf(o->f, "%8s", "-");
     if (!acbb_cli_point_ok(te) || !acbb_cli_point_ok(wte)) fputs(" *", o->f);
     fputc('\n', o->f);
 }
@@ -552,13 +588,14 @@ void acbb_cli_study_table(acbb_cli_out *o, const acbb_cli_point *pts,
     FILE *f = o->f;
     fputs("TE = with thermal expansion, WTE = without; dP = P_total(TE) - "
           "P_total(WTE)\n", f);
+    fputs("dL = L_nmr(TE) / L_nmr(WTE) - 1, the modified rating life (ISO 281)\n", f);
     for (size_t i = 0; i < nb; i++) {
         const acbb_cli_study_block *b = &blocks[i];
         fprintf(f, "\n%s\n", b->title);
-        fprintf(f, "%7s %16s %18s %16s %16s\n", "", "T outer ring C",
-                "total loss W", "dP", "Qi ball 0 N");
-        fprintf(f, "%7s%8s%8s%9s%9s%9s%7s%8s%8s\n", b->x_label, "TE", "WTE",
-                "TE", "WTE", "W", "%", "TE", "WTE");
+        fprintf(f, "%7s %16s %18s %16s %16s %7s\n", "", "T outer ring C",
+                "total loss W", "dP", "Qi ball 0 N", "dL");
+        fprintf(f, "%7s%8s%8s%9s%9s%9s%7s%8s%8s%8s\n", b->x_label, "TE", "WTE",
+                "TE", "WTE", "W", "%", "TE", "WTE", "%");
         for (size_t k = b->first; k < b->first + b->count; k++) {
             fprintf(f, "%7s", pts[2 * k].value);
             study_cells(o, &pts[2 * k], &pts[2 * k + 1]);

@@ -76,7 +76,7 @@ jqt "$TMP/rad.json" '([.balls[].Qi_N] | max) > ([.balls[].Qi_N] | min) * 1.01' \
 code $? 0 "run --json --csv exits 0"
 [ ! -e "$TMP/run.csv.tmp" ] && [ -s "$TMP/run.csv" ]
 t $? "csv written and the .tmp renamed away"
-head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_cage_W,P_ehl_rolling_W,P_churning_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,squeeze_outer_um,squeeze_ball_um,squeeze_net_um'
+head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_cage_W,P_ehl_rolling_W,P_churning_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,squeeze_outer_um,squeeze_ball_um,squeeze_net_um,life_L10r_h,life_Lnmr_h,life_a_iso,life_kappa,life_s0_min'
 t $? "csv header row"
 iters=$(jq '.iterations' "$TMP/csv.json")
 rows=$(($(wc -l <"$TMP/run.csv") - 1))
@@ -84,8 +84,8 @@ rows=$(($(wc -l <"$TMP/run.csv") - 1))
 t $? "csv rows ($rows) == iterations ($iters) + 0 or 1"
 awk -F, 'NR > 2 && $1 <= prev { bad = 1 } NR > 1 { prev = $1 } END { exit bad }' "$TMP/run.csv"
 t $? "csv iteration column strictly increasing"
-awk -F, 'NR > 1 && NF != 35 { bad = 1 } END { exit bad }' "$TMP/run.csv"
-t $? "csv rows have 35 fields"
+awk -F, 'NR > 1 && NF != 40 { bad = 1 } END { exit bad }' "$TMP/run.csv"
+t $? "csv rows have 40 fields"
 last_T=$(tail -n 1 "$TMP/run.csv" | cut -d, -f4)
 jq -e --argjson T "$last_T" 'def abs: if . < 0 then -. else . end;
     ((.temperature_C.outer_ring - $T) | abs) <= 1e-9 * ($T | abs)' "$TMP/csv.json" >/dev/null 2>&1
@@ -517,7 +517,7 @@ jq -e '.effects_inactive == [] and .ring.stiffness_axial_N_per_um > 0
     and .balls[0].hmin_i_um < .balls[0].film_i_um and .work.network_solves > 0' \
     "$TMP/csv.json" >/dev/null
 t $? "JSON: ring stiffness, squeeze terms summing to net, hmin < central film, work counters"
-head -n 1 "$TMP/run.csv" | grep -q 'residual_K_s,delta_x_um,.*,squeeze_net_um$'
+head -n 1 "$TMP/run.csv" | grep -q 'residual_K_s,delta_x_um,.*,squeeze_net_um,life_L10r_h,life_Lnmr_h,life_a_iso,life_kappa,life_s0_min$'
 t $? "CSV: ring displacement, film and squeeze columns after residual_K_s"
 "$ACBB" run presets/7008C.ini --set effects.heating=off --json >"$TMP/iso.json" 2>"$TMP/err"
 code $? 0 "heating off exits 0"

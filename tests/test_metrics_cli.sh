@@ -19,7 +19,7 @@ t $? "balls[i].slide_i_mps is in m/s"
 grep -E -q '^losses_W\.spin +W +spinning$' "$TMP/out"
 t $? "a loss of the loss table is listed with its label"
 # Every line after the heading: a path, a unit, a label.
-bad=$(tail -n +2 "$TMP/out" | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_]+)+$/ || NF < 3' | wc -l)
+bad=$(tail -n +2 "$TMP/out" | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_][a-zA-Z0-9_]*)+$/ || NF < 3' | wc -l)
 rows=$(tail -n +2 "$TMP/out" | wc -l)
 [ "$bad" -eq 0 ] && [ "$rows" -gt 50 ]
 t $? "$rows rows, each a path with a unit and a label ($bad malformed)"

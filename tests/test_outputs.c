@@ -129,7 +129,8 @@ static size_t leaves(const cJSON *obj, const char *prefix, size_t *unknown)
 static void coverage(const cJSON *root, const char *name)
 {
     static const char *const sections[] = { "losses_W", "temperature_C", "expansion_um", "ring",
-                                            "squeeze_um", "energy_W", "set" };
+                                            "squeeze_um", "energy_W", "set",
+                                            "life" };
     size_t n = 0, unknown = 0, bearing = 0, per_ball = 0;
     for (size_t i = 0; i < sizeof sections / sizeof sections[0]; i++)
         n += leaves(cJSON_GetObjectItemCaseSensitive(root, sections[i]), sections[i], &unknown);

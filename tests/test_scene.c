@@ -217,6 +217,12 @@ static const char *const k_expected[][2] = {
     {"thermal.max_time_s", "36000"}, {"thermal.max_steps", "20000"},
     {"thermal.temp_limit_C", "150"}, {"thermal.contact_multiplier", "1"},
     {"thermal.heat_partition", "0.5"},
+    {"life.reliability_pct", "90"},
+    {"life.contamination_ec", "0.5"},
+    {"life.fatigue_limit_N", "0"},
+    {"life.inner_shoulder_mm", "0"},
+    {"life.outer_shoulder_mm", "0"},
+    {"life.internals_estimated", "off"},
 };
 
 static void test_key_list_and_defaults(void)

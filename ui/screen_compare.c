@@ -101,6 +101,11 @@ static void draw(acbb_app *a)
         { "  drag P_v W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_DRAG]), 1, 1 },
         { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6, 0 },
         { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6, 0 },
+        /* What heat costs in life (MODEL.md 15). */
+        { "Life L10r h", offsetof(acbb_snapshot, life.L10r_h), 1, 0 },
+        { "Life Lnmr h", offsetof(acbb_snapshot, life.Lnmr_h), 1, 0 },
+        { "  kappa", offsetof(acbb_snapshot, life.kappa), 1, 1 },
+        { "  static safety s0", offsetof(acbb_snapshot, life.s0_min), 1, 1 },
     };
     for (size_t i = 0; i < sizeof rows / sizeof rows[0] && y < b.y + b.h; i++) {
         if (rows[i].detail && b.h < ROOM_FOR_DETAIL) continue;

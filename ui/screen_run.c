@@ -198,6 +198,18 @@ void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role
     schedule_text(a, buf, n);
 }
 
+/* One line of rating life and static safety (MODEL.md 15, life.h). */
+static int life_line(acbb_app *a, int y, acbb_rect r)
+{
+    const acbb_life *L = &a->st.snap.life;
+    if (r.h < 6) return 0;
+    acbb_put(a, y, r.x, r.w, L->edge_loaded ? ACBB_ROLE_ERROR : ACBB_ROLE_NORMAL,
+             "Life%s: L10r %.4g h  Lnm %.4g h  a_ISO %.3g  kappa %.3g  s0 %.3g%s",
+             L->estimated ? " (est.)" : "", L->L10r_h, L->Lnmr_h, L->a_iso, L->kappa, L->s0_min,
+             L->edge_loaded ? "  EDGE LOADED" : "");
+    return 1;
+}
+
 /* The state line(s) at the top of r, the chart of the ring and ball
  * temperatures below. */
 static void state_and_chart(acbb_app *a, acbb_rect r)
@@ -206,6 +218,7 @@ static void state_and_chart(acbb_app *a, acbb_rect r)
     acbb_role role;
     acbb_run_state_text(a, text, sizeof text, &role);
     int used = acbb_put_wrap(a, r.y, r.x, r.w, 3, role, text);
+    used += life_line(a, r.y + used, r);
     acbb_rect c = { r.y + used, r.x, r.h - used, r.w };
     acbb_draw_temp_chart(a, c);
 }

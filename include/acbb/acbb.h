@@ -30,5 +30,7 @@
 #include "acbb/plot.h"
 #include "acbb/json.h"
 #include "acbb/ffi.h"
+#include "acbb/life_eval.h"
+#include "acbb/preload_map.h"
 
 #endif

@@ -201,6 +201,15 @@ typedef struct {
     double temp_limit_C;         /* RUNAWAY above this node temperature, C */
     double contact_multiplier;   /* c_mv on race-side spot resistances */
     double heat_partition;       /* phi_p for the 7-node network */
+
+    /* [life] rating life and static safety (MODEL.md 15, life.h) */
+    double life_reliability;     /* reliability for L_nm, % (ISO 281 Table 12) */
+    double life_ec;              /* contamination factor e_c (ISO 281 Table 13) */
+    double life_Cu;              /* fatigue load limit C_u, N; 0 = ISO 281 Annex B from C0 */
+    double life_shoulder_inner;  /* inner shoulder height above the groove bottom, m;
+                                  * 0 = from inner_land_diameter */
+    double life_shoulder_outer;  /* outer shoulder height, m; 0 = from outer_land_diameter */
+    bool life_estimated;         /* internal geometry estimated (`acbb new`), ratings too */
 } acbb_scene;
 
 /* Fill `s` with the 7008C defaults of MODEL.md section 10. */

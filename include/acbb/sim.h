@@ -16,6 +16,7 @@
 #include "acbb/status.h"
 #include "acbb/limits.h"
 #include "acbb/loss_kinds.h"
+#include "acbb/life.h"
 
 /* What a user sees of one ball. Sliding speeds are the pressure-weighted
  * mean magnitude of the translational (Heathcote + gross) slip over the
@@ -122,6 +123,7 @@ typedef struct {
      * bearing's; n_bearings = 1 for a single bearing (set all zero). */
     int n_bearings;
     acbb_set_view set;
+    acbb_life life;             /* rating life and static safety of this state (life_eval.h) */
 } acbb_snapshot;
 
 typedef struct acbb_sim acbb_sim;

@@ -7,6 +7,7 @@
 #include "acbb/loss_kinds.h"
 #include "acbb/outputs.h"
 #include "acbb/units.h"
+#include "life_json.h"
 
 /* The table's entries of `section` (NULL: the keys directly in a ball) as
  * JSON numbers, in table order: bearing entries when k < 0, else ball k's. */
@@ -154,6 +155,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
     acbb_json_close(j, ']');
 
     section(j, s, "energy_W");
+    acbb_json_write_life(j, s);
     if (b && n > 1) set_part(j, s, b, n);
     if (sc->schedule_n > 0) acbb_json_write_schedule(j, sc, s);
     if (br) acbb_json_write_branches(j, br);

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <assert.h>
 #include "acbb/sim.h"
+#include "acbb/life_eval.h"
 #include "acbb/measure.h"
 #include "stiffness.h"
 #include "mechanics.h"
@@ -1016,6 +1017,7 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
+    acbb_life_compute(&sim->s, o, &o->life);
     o->n_bearings = 1;
 }
 
@@ -1054,9 +1056,9 @@ void acbb_simm_mode(acbb_sim *b, int transient, int polishing)
  * (mechanics() without the equilibrium solves: the set solves those). */
 acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err)
 {
-    acbb_oil_state oi, oo;
+    acbb_oil_state oi, oo, oc;
     acbb_mixture mix;
-    lubricant(b, &oi, &oo, &mix);
+    lubricant(b, &oi, &oo, &oc, &mix);
     *change = 0.0;
     if (b->dyn) return ball_dynamics(b, &oi, &oo, &mix, change, err);
     b->work.traction_solves++;

@@ -14,24 +14,37 @@
  * Internal geometry is not published; the rules (each written into the
  * preset next to its key, see estimate()) are:
  * - pitch diameter d_m = (d + D) / 2;
- * - ball diameter D_w = k (D - d), k = 0.30 for deep groove (the middle of
- *   the 0.265..0.345 band of the usual design rule D_w = 0.5 (D - d) -
- *   (0.155..0.235)(D - d)), k = 0.25 for angular contact (spindle series
- *   carry smaller balls: the seed's 7008C has 6.35 / 28 = 0.227, catalogue
- *   7008 spindle bearings 7.144 / 28 = 0.255), rounded DOWN to a standard
- *   inch ball (1/32" steps from 1/4" up, 1/64" below): 7008C -> 6.35 mm;
+ * - ball diameter D_w = 0.30 (D - d), the middle of the 0.265..0.345 band of
+ *   the usual design rule D_w = 0.5 (D - d) - (0.155..0.235)(D - d), for
+ *   deep groove and angular contact alike, rounded DOWN to a standard inch
+ *   ball (1/32" steps from 1/4" up, 1/64" below). Catalogue spindle
+ *   bearings carry balls this size: NSK CAT. No. E1102e gives 7008 C
+ *   f_0 = 15.4 and C_0r = 15 900 N, which ISO 76 (f_0 at gamma = D_w cos a /
+ *   d_m; C_0 = f_0 Z D_w^2 cos a) inverts to 17 balls of 7.938 mm
+ *   (0.283 (D - d)), and 7208 C f_0 = 14.1, C_0r 25 200 N to 13 balls of
+ *   11.906 mm (0.298 (D - d)); the earlier 0.25 gave C 0.69-0.80 of the
+ *   catalogue's (issue 19; docs/ratings.md has the comparison);
  * - ball count: deep groove by the Conrad assembly angle [HK-EC ch. 1]
  *   phi = 2 (Z - 1) asin(D_w / d_m) <= 192 deg (ASSUMED limit:
  *   it gives the 9 balls of 7.938 mm of a 6205); angular
  *   contact (counterbored outer ring) by a ball fill Z D_w <= 0.8 pi d_m
- *   (ASSUMED; the seed's 7008C fills 0.79); at most ACBB_MAX_BALLS;
- * - groove curvature f_i = 0.52, f_o = 0.53 for deep groove [HK-EC ch. 2,
- *   typical values], f = 0.54 for angular contact (the seed's 7008C);
+ *   (the two NSK bearings above fill 0.80 and 0.82); at most ACBB_MAX_BALLS;
+ * - groove curvature f_i = 0.52, f_o = 0.53 for both types: the conformity
+ *   ISO 281's f_c values (Table 2) are computed for (6.1.1), so that C of an
+ *   estimated bearing is ISO 281's; wider grooves lower C (life.h);
  * - deep-groove clearance: the middle of ISO 5753-1 group N (CN) radial
  *   internal clearance for the bore;
  * - lands, cage and shaft bore in the seed 7008C's proportions (MODEL.md
  *   10): lands d_m -/+ 0.646 D_w, cage guide d_m + 0.583 D_w, cage width
- *   0.673 B, hollow-shaft bore 0.625 d. */
+ *   0.673 B, hollow-shaft bore 0.625 d; the shoulder heights (life.*) are
+ *   the lands' height over the groove bottoms, 0.177 D_w;
+ * - a default operating point the bearing can take (issue 19): the inner
+ *   ring at half the catalogue's oil-lubrication limit n d_m of its type
+ *   (NSK CAT. No. E1102e, single bearings: 7008 C 20 000 rpm on d_m 54 mm =
+ *   1.08e6, 7908 A5 15 000 rpm on 51 mm = 0.77e6, 7208 B 9 000 rpm on 60 mm
+ *   = 0.54e6; SKF General Catalogue 6205: limiting speed 18 000 rpm on
+ *   38.5 mm = 0.69e6), the load 5 % of the estimated C_0 (ISO 76): axial for
+ *   angular contact, radial for deep groove (a light load, s_0 near 20). */
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
@@ -41,6 +54,7 @@
 #include "acbb/designation.h"
 #include "acbb/limits.h"
 #include "acbb/units.h"
+#include "life.h"
 
 /* One bore: D and B (mm) for dimension series 18, 19, 10, 02, 03. */
 enum { S18, S19, S10, S02, S03, N_DIM };
@@ -237,6 +251,32 @@ static double um_grid(double m)
     return round(m * 1e6) / 1e3 * 1e-3;
 }
 
+/* Half the catalogue's oil limit n d_m (rpm mm) by type (header comment). */
+static double ndm_default(const acbb_designation *d)
+{
+    double deg = d->angle / ACBB_DEG;
+    if (d->deep_groove) return 0.5 * 0.69e6;
+    return deg < 20.0 ? 0.5 * 1.08e6 : deg < 32.5 ? 0.5 * 0.77e6 : 0.5 * 0.54e6;
+}
+
+/* The default operating point (header comment): speed on a 100 rpm grid,
+ * load 5 % of C_0 on a 10 N grid. */
+static size_t operating_point(const acbb_designation *d, acbb_scene *s, acbb_estimate *notes,
+                              size_t n, size_t cap)
+{
+    double ndm = ndm_default(d), C0 = acbb_iso_C0(s->ball_diameter, s->n_balls, d->angle,
+                                                   s->pitch_diameter);
+    double rpm = fmax(100.0, round(ndm / (s->pitch_diameter * 1e3) / 100.0) * 100.0);
+    double load = fmax(10.0, round(0.05 * C0 / 10.0) * 10.0);
+    s->inner_speed = rpm * ACBB_RPM;
+    s->axial_load = d->deep_groove ? 0.0 : load;
+    s->radial_load = d->deep_groove ? load : 0.0;
+    n = note(notes, n, cap, "operating.inner_speed_rpm",
+             "n d_m = %.3g rpm mm, half the catalogue oil limit of the type", ndm);
+    return note(notes, n, cap, d->deep_groove ? "operating.radial_load_N" : "operating.axial_load_N",
+                "5 %% of the estimated C_0 (ISO 76) = %.0f N", C0);
+}
+
 size_t acbb_designation_scene(const acbb_designation *d, acbb_scene *s, acbb_estimate *notes,
                               size_t cap)
 {
@@ -246,11 +286,11 @@ size_t acbb_designation_scene(const acbb_designation *d, acbb_scene *s, acbb_est
     s->outer_diameter = d->outer_diameter;
     s->width = d->width;
     s->contact_angle0 = d->angle;
-    double section = d->outer_diameter - d->bore, k = d->deep_groove ? 0.30 : 0.25;
+    double section = d->outer_diameter - d->bore, k = 0.30;
     s->pitch_diameter = um_grid(0.5 * (d->bore + d->outer_diameter));
     s->ball_diameter = um_grid(standard_ball(k * section));
     s->n_balls = ball_count(d, s->ball_diameter, s->pitch_diameter);
-    double fi = d->deep_groove ? 0.52 : 0.54, fo = d->deep_groove ? 0.53 : 0.54;
+    double fi = 0.52, fo = 0.53;
     double dm = s->pitch_diameter, Dw = s->ball_diameter;
     s->inner_groove_radius = um_grid(fi * Dw);
     s->outer_groove_radius = um_grid(fo * Dw);
@@ -261,14 +301,19 @@ size_t acbb_designation_scene(const acbb_designation *d, acbb_scene *s, acbb_est
     s->cage_diameter = um_grid(dm + 0.583 * Dw);
     s->cage_width = um_grid(0.673 * d->width);
     s->shaft_bore = um_grid(0.625 * d->bore);
+    s->life_shoulder_inner = um_grid(0.5 * (s->inner_land_diameter - (dm - Dw)));
+    s->life_shoulder_outer = um_grid(0.5 * (dm + Dw - s->outer_land_diameter));
+    s->life_estimated = true;
     n = note(notes, n, cap, "bearing.pitch_diameter_mm", "(d + D) / 2", 0);
     n = note(notes, n, cap, "bearing.ball_diameter_mm",
              "%.2f (D - d), rounded down to a standard inch ball", k);
     n = note(notes, n, cap, "bearing.n_balls",
              d->deep_groove ? "Conrad assembly angle 2 (Z - 1) asin(D_w / d_m) <= 192 deg"
                             : "ball fill Z D_w <= 0.8 pi d_m", 0);
-    n = note(notes, n, cap, "bearing.inner_groove_radius_mm", "f_i = %.2f ball diameters", fi);
-    n = note(notes, n, cap, "bearing.outer_groove_radius_mm", "f_o = %.2f ball diameters", fo);
+    n = note(notes, n, cap, "bearing.inner_groove_radius_mm",
+             "f_i = %.2f ball diameters (ISO 281 Table 2 basis)", fi);
+    n = note(notes, n, cap, "bearing.outer_groove_radius_mm",
+             "f_o = %.2f ball diameters (ISO 281 Table 2 basis)", fo);
     if (d->deep_groove)
         n = note(notes, n, cap, "bearing.clearance_um",
                  "middle of ISO 5753-1 group N (CN) for the bore: %.1f um", s->clearance * 1e6);
@@ -281,5 +326,11 @@ size_t acbb_designation_scene(const acbb_designation *d, acbb_scene *s, acbb_est
              0.646);
     n = note(notes, n, cap, "mounting.shaft_bore_mm", "%.3f d (seed: 25 mm in a 40 mm bore)",
              0.625);
-    return n;
+    n = note(notes, n, cap, "life.inner_shoulder_mm", "the land's height over the groove, "
+             "%.3f D_w (seed 7008C)", 0.177);
+    n = note(notes, n, cap, "life.outer_shoulder_mm", "the land's height over the groove, "
+             "%.3f D_w (seed 7008C)", 0.177);
+    n = note(notes, n, cap, "life.internals_estimated", "C and C0 come from the estimates above",
+             0);
+    return operating_point(d, s, notes, n, cap);
 }

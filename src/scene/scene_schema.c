@@ -341,6 +341,20 @@ const acbb_sfield acbb_sf_table[] = {
     REALP("thermal", "heat_partition", "", heat_partition, 1.0, 0.5, CC, 0, 1,
           "share phi_p of contact heat to the rings (7-node network)", 0.2, 0.8,
           "MODEL.md 8.3 phi_p = 0.5 (7-node network only), 0.2-0.8"),
+
+    /* [life] (MODEL.md 15) */
+    REAL("life", "reliability_pct", "%", life_reliability, 1.0, 90, CC, 90, 99.95,
+         "reliability of the modified life L_nm (ISO 281 Table 12: a_1)"),
+    REAL("life", "contamination_ec", "", life_ec, 1.0, 0.5, CC, 0, 1,
+         "contamination factor e_c; 0.5 = normal cleanliness, D_pw < 100 mm (ISO 281 Table 13)"),
+    REAL("life", "fatigue_limit_N", "N", life_Cu, 1.0, 0, CC, 0, 1e8,
+         "fatigue load limit C_u (0 = C0/22, ISO 281 Annex B)"),
+    REAL("life", "inner_shoulder_mm", "mm", life_shoulder_inner, 1e-3, 0, CC, 0, 100,
+         "inner-ring shoulder height over the groove bottom (0 = from the inner land)"),
+    REAL("life", "outer_shoulder_mm", "mm", life_shoulder_outer, 1e-3, 0, CC, 0, 100,
+         "outer-ring shoulder height over the groove bottom (0 = from the outer land)"),
+    BOOL("life", "internals_estimated", life_estimated, 0,
+         "ball set and grooves are estimates (acbb new): C and C0 are too"),
 };
 
 const size_t acbb_sf_n = sizeof acbb_sf_table / sizeof acbb_sf_table[0];

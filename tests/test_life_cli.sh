@@ -1,0 +1,71 @@
+#!/bin/sh
+# The rating life and the preload window from the command line (issue 19):
+# the JSON names others script against, `acbb metrics`, the summary, the
+# TE/WTE table's life column, and `acbb preload-map` (CSV columns, named
+# statuses, no NaN, refusals, the chart). TAP. $1 = the acbb binary; cwd =
+# repository root.
+set -u
+ACBB=${1:?usage: test_life_cli.sh path/to/acbb}
+case $ACBB in /*) ;; *) ACBB=$PWD/$ACBB ;; esac
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-life-cli.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+. "$(dirname "$0")/tap.sh"
+
+# ---- the life object (names of the issue) ----
+"$ACBB" run presets/combined-load.ini --json >"$TMP/run.json" 2>/dev/null
+code $? 0 "combined-load runs"
+jq -e '.life | (.C_N > 0) and (.C0_N > 0) and (.L10r_h > 0) and (.Lnmr_h > 0) and (.a_iso > 0)
+       and (.kappa > 0) and (.s0_min > 0) and (.edge_loaded | type == "boolean")
+       and (.estimated == false) and (.s0_contact | test("^(inner|outer) ball [0-9]+$"))' \
+    "$TMP/run.json" >/dev/null
+t $? "life: C_N C0_N L10r_h Lnmr_h a_iso kappa s0_min edge_loaded (bool), the worst contact named"
+jq -e '(.life.L10r_h - .life.L10r_Mrev * 1e6 / (60 * .scene.inner_speed_rpm)) | fabs < 1e-6 * 1e9' \
+    "$TMP/run.json" >/dev/null
+t $? "L10r_h is L10r_Mrev at the scene's speed"
+"$ACBB" metrics >"$TMP/metrics"
+grep -q '^life\.Lnmr_h  *h ' "$TMP/metrics" && grep -q '^life\.s0_min ' "$TMP/metrics"
+t $? "acbb metrics lists life.Lnmr_h (h) and life.s0_min"
+"$ACBB" run presets/combined-load.ini >"$TMP/summary" 2>/dev/null
+grep -q '^life  *C [0-9.]* kN, C0 ' "$TMP/summary" && grep -q 'L10r .* h, Lnmr ' "$TMP/summary"
+t $? "the text summary has the life lines"
+"$ACBB" run presets/combined-load.ini --set life.inner_shoulder_mm=0.3 --json 2>/dev/null |
+    jq -e '.life.edge_loaded == true and .life.edge_margin_deg < 0' >/dev/null
+t $? "a 0.3 mm inner shoulder: edge_loaded"
+"$ACBB" run presets/combined-load.ini --set life.reliability_pct=80 >/dev/null 2>"$TMP/err"
+code $? 2 "reliability 80 % refused"
+has "$TMP/err" "life.reliability_pct" "  the message names the key"
+
+# ---- preload-map ----
+"$ACBB" preload-map presets/preload-window.ini --speeds 8000:24000:3 --preloads 1:601:3 \
+    --max-rise 20 --csv "$TMP/map.csv" >"$TMP/map.txt" 2>"$TMP/err"
+code $? 0 "preload-map runs"
+head -n 1 "$TMP/map.csv" | grep -q -x 'speed_rpm,preload_N,status,verdict,skid_ratio,temp_rise_K,Lnmr_h,s0_min'
+t $? "CSV columns: speed_rpm, preload_N, status, verdict and the limits' values"
+[ "$(($(wc -l <"$TMP/map.csv") - 1))" -eq 9 ]; t $? "one row per cell (3 x 3)"
+awk -F, 'NR > 1 && ($3 !~ /^(converged|runaway|not_converged|diverged|contact_lost|nonfinite|cancelled|[a-z_]+)$/ ||
+    $4 !~ /^(ok|skid|hot|short_life|low_s0|runaway|failed)$/) { bad = 1 } END { exit bad }' "$TMP/map.csv"
+t $? "every cell has a named status and verdict"
+grep -qi 'nan\|inf' "$TMP/map.csv"; [ $? -ne 0 ]; t $? "no NaN or Inf in the CSV"
+grep -q ',runaway,runaway,' "$TMP/map.csv"; t $? "the heavy preload at speed runs away (named)"
+grep -q '^ *24000 .*none$\|^ *24000 .* [0-9.]* \.\. [0-9.]*$' "$TMP/map.txt"
+t $? "the table gives the window per speed"
+"$ACBB" preload-map presets/7008C.ini --speeds 100:50:2 --preloads 1:2:2 >/dev/null 2>"$TMP/err"
+code $? 2 "speeds high below low refused"
+has "$TMP/err" "need 0 < low <= high" "  with the reason"
+"$ACBB" preload-map presets/7008C.ini --speeds 4000:8000 --preloads 1:2:2 >/dev/null 2>"$TMP/err"
+code $? 2 "--speeds without N refused"
+has "$TMP/err" "LO:HI:N" "  the message shows the form"
+"$ACBB" preload-map presets/7008C.ini --speeds 4000:8000:2 >/dev/null 2>"$TMP/err"
+code $? 2 "--preloads missing refused"
+"$ACBB" preload-map presets/7008C.ini --speeds 4000:8000:2 --preloads 1:2:2 --plot "$TMP/x.pdf" \
+    >/dev/null 2>"$TMP/err"
+code $? 2 "--plot FILE.pdf refused"
+if command -v gnuplot >/dev/null 2>&1; then
+    "$ACBB" preload-map presets/7008C.ini --speeds 4000:8000:2 --preloads 50:100:2 \
+        --plot "$TMP/w.svg" >/dev/null 2>"$TMP/err"
+    code $? 0 "--plot FILE.svg"
+    grep -q 'preload window' "$TMP/w.svg"; t $? "  the chart is written"
+else
+    skip "--plot FILE.svg" "gnuplot not installed"
+fi
+tap_done
