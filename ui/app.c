@@ -141,11 +141,35 @@ static void change_pace(acbb_app *a, int dir)
 static void save(acbb_app *a, const char *path)
 {
     acbb_error err = { { 0 } };
-    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK) {
+    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK && a->ed.conflict) {
+        a->mode = ACBB_MODE_CONFIRM; /* changed on disk: reload / overwrite / elsewhere */
+        a->confirm.kind = ACBB_CONFIRM_CHANGED;
+    } else if (err.msg[0]) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "save failed: %s", err.msg);
     } else {
         acbb_recover_clear(&a->ed);
         acbb_app_msg(a, ACBB_ROLE_OK, "saved %s", a->ed.path);
+    }
+}
+
+/* The file changed on disk since it was read (issue 20 item 2). */
+static void changed_key(acbb_app *a, int ch)
+{
+    acbb_error err = { { 0 } };
+    if (ch == 'r' || ch == 'R') {
+        char path[sizeof a->ed.path];
+        snprintf(path, sizeof path, "%s", a->ed.path);
+        acbb_recover_clear(&a->ed);
+        open_now(a, path);
+    } else if ((ch == 'o' || ch == 'O') && acbb_editor_overwrite(&a->ed, &err) == ACBB_OK) {
+        acbb_recover_clear(&a->ed);
+        acbb_app_msg(a, ACBB_ROLE_OK, "saved %s over the changes on disk", a->ed.path);
+    } else if (ch == 'o' || ch == 'O') {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "save failed: %s", err.msg);
+    } else if (ch == 's' || ch == 'S') {
+        acbb_app_prompt(a, ACBB_PROMPT_SAVE_AS, "save as: ", a->ed.path);
+    } else {
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "not saved (the file on disk is unchanged)");
     }
 }
 
@@ -358,6 +382,8 @@ static void confirm_key(acbb_app *a, int ch)
         } else {
             acbb_app_msg(a, ACBB_ROLE_OK, "edits restored from the recovery file (u undoes, w writes them)");
         }
+    } else if (a->confirm.kind == ACBB_CONFIRM_CHANGED) {
+        changed_key(a, ch);
     } else if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
         if (ch == 'y' || ch == 'Y') {
             acbb_recover_clear(&a->ed); /* the user chose to discard them */
@@ -418,6 +444,10 @@ static void draw_message(acbb_app *a)
         if (a->confirm.kind == ACBB_CONFIRM_QUIT)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
                      "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
+                     acbb_editor_name(&a->ed));
+        else if (a->confirm.kind == ACBB_CONFIRM_CHANGED)
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s changed on disk since it was read. "
+                     "r = reload it (drop my edits), o = overwrite, s = save elsewhere, n = cancel",
                      acbb_editor_name(&a->ed));
         else if (a->confirm.kind == ACBB_CONFIRM_RECOVER)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,

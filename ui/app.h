@@ -25,7 +25,8 @@ typedef enum {
     ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN, ACBB_PROMPT_SEARCH,
     ACBB_PROMPT_CALL               /* a screen's question: prompt.commit gets the answer */
 } acbb_prompt_kind;
-typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER } acbb_confirm_kind;
+typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER,
+               ACBB_CONFIRM_CHANGED } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
 #define ACBB_PREVIEW_MAX 65536
