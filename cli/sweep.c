@@ -21,6 +21,7 @@ typedef struct {
 
 typedef struct {
     const acbb_sweep *grid;
+    acbb_cli_sweep_id id;      /* the header and the records' fingerprint */
     sweep_sink sink[2];
     size_t n_sinks;
     size_t total, done, failed;
@@ -51,7 +52,7 @@ static void on_point(void *ctx, const acbb_sweep_result *r)
     s->failed += !(r->have_snap && r->snap.state == ACBB_RUN_CONVERGED);
     for (size_t k = 0; k < s->n_sinks; k++) {
         sweep_sink *o = &s->sink[k];
-        s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, s->grid, r);
+        s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, &s->id, r);
         if (fflush(o->f) != 0 || ferror(o->f)) s->write_error = 1;
     }
     if (s->pts) {
@@ -192,7 +193,7 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
     o->fmt = fmt;
     if (strcmp(path, "-") == 0) {
         o->f = stdout;
-        if (fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(stdout, s->grid, 1);
+        acbb_cli_sweep_header(stdout, fmt, &s->id, 1);
         s->n_sinks++; /* nothing to resume */
         return 0;
     }
@@ -204,7 +205,7 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
     o->own = 1;
     s->n_sinks++;
     size_t found = 0;
-    int rc = acbb_cli_sweep_resume(o->f, path, fmt, s->grid, count, &found);
+    int rc = acbb_cli_sweep_resume(o->f, path, fmt, &s->id, count, &found);
     if (!rc && found && s->progress)
         fprintf(stderr, "sweep: %s: resuming, %zu point%s already there\n", path, found,
                 found == 1 ? "" : "s");
@@ -276,6 +277,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     sweep_run s = { .grid = g, .total = acbb_sweep_n_points(g), .base = &base,
                     .progress = acbb_cli_progress_wanted(stderr) };
     o.ctx = &s;
+    acbb_cli_sweep_id_init(&s.id, g, &base, o.transient);
     bool legacy = a->n_grids == 0 && !a->val[CLI_OPT_JSONL] && !a->val[CLI_OPT_SHARD] &&
                   !a->val[CLI_OPT_MAX_POINTS];
     /* SIGINT / SIGTERM stop the sweep within a step; what finished is
