@@ -1,6 +1,9 @@
 /* acbb CLI — shared helpers (common.h). */
+#include <limits.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "common.h"
 #include "exit.h"
 
@@ -82,6 +85,89 @@ int acbb_cli_file_close(acbb_cli_file *c)
         fprintf(stderr, "acbb: internal error: %ld non-finite values in %s\n",
                 c->out.nonfinite, c->path);
         return ACBB_EXIT_INTERNAL;
+    }
+    return 0;
+}
+
+/* ---- outputs that would overwrite an input or each other (issue 20 item 5) ---- */
+
+/* Where `path` would be written: the file it names (symlinks followed) if it
+ * exists, else its directory resolved plus its name. */
+static int where(const char *path, char *out, size_t n, struct stat *st, int *exists)
+{
+    char buf[PATH_MAX];
+    *exists = stat(path, st) == 0;
+    if (*exists && realpath(path, buf)) return snprintf(out, n, "%s", buf) >= (int)n;
+    char dir[PATH_MAX];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    const char *base = slash ? slash + 1 : path;
+    if (slash == dir) dir[1] = '\0';
+    else if (slash) *slash = '\0';
+    else snprintf(dir, sizeof dir, ".");
+    if (!realpath(dir, buf)) return snprintf(out, n, "%s", path) >= (int)n;
+    return snprintf(out, n, "%s/%s", buf, base) >= (int)n;
+}
+
+static int same_file(const char *a, const char *b)
+{
+    char ra[PATH_MAX], rb[PATH_MAX];
+    struct stat sa, sb;
+    int ea, eb;
+    if (where(a, ra, sizeof ra, &sa, &ea) || where(b, rb, sizeof rb, &sb, &eb)) return 0;
+    if (ea && eb) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    return strcmp(ra, rb) == 0;
+}
+
+typedef struct {
+    const char *path, *what;   /* "--csv", "the preset", ... */
+} named_path;
+
+static size_t collect(const acbb_cli_args *a, named_path *in, size_t *n_in, named_path *out)
+{
+    static const acbb_cli_opt outs[] = { CLI_OPT_CSV, CLI_OPT_JSONL, CLI_OPT_MD, CLI_OPT_PLOT };
+    size_t n_out = 0;
+    *n_in = 0;
+    if (a->preset) in[(*n_in)++] = (named_path){ a->preset, "the preset" };
+    if (a->val[CLI_OPT_BASELINE]) in[(*n_in)++] = (named_path){ a->val[CLI_OPT_BASELINE], "--baseline" };
+    if (strcmp(a->cmd, "merge") == 0) {
+        for (int i = 1; i < a->n_pos && *n_in < CLI_MAX_POS; i++)
+            in[(*n_in)++] = (named_path){ a->pos[i], "a merge input" };
+        if (a->n_pos > 0) out[n_out++] = (named_path){ a->pos[0], "OUT" };
+    }
+    for (size_t k = 0; k < sizeof outs / sizeof *outs; k++)
+        if (a->val[outs[k]] && a->val[outs[k]][0])
+            out[n_out++] = (named_path){ a->val[outs[k]], acbb_cli_options[outs[k]].name };
+    return n_out;
+}
+
+int acbb_cli_check_paths(const acbb_cli_args *a)
+{
+    named_path in[CLI_MAX_POS + 2], out[8];
+    size_t n_in, n_out = collect(a, in, &n_in, out), to_stdout = a->val[CLI_OPT_JSON] != NULL;
+    for (size_t i = 0; i < n_out; i++) {
+        if (strcmp(out[i].path, "-") == 0) {
+            if (++to_stdout > 1) {
+                fprintf(stderr, "acbb: %s: more than one format on stdout (--%s - with %s); "
+                        "one format per stream: write the others to files\n", a->cmd, out[i].what,
+                        a->val[CLI_OPT_JSON] ? "--json" : "another -");
+                return ACBB_EXIT_INPUT;
+            }
+            continue;
+        }
+        for (size_t j = 0; j < n_in; j++)
+            if (strcmp(in[j].path, "-") != 0 && same_file(out[i].path, in[j].path)) {
+                fprintf(stderr, "acbb: %s: %s%s %s is %s, an input of this command: not "
+                        "overwritten; write to another file\n", a->cmd, out[i].what[0] == 'O' ? "" : "--",
+                        out[i].what, out[i].path, in[j].what);
+                return ACBB_EXIT_INPUT;
+            }
+        for (size_t j = 0; j < i; j++)
+            if (strcmp(out[j].path, "-") != 0 && same_file(out[i].path, out[j].path)) {
+                fprintf(stderr, "acbb: %s: --%s and --%s name one file (%s): two formats "
+                        "cannot share it\n", a->cmd, out[j].what, out[i].what, out[i].path);
+                return ACBB_EXIT_INPUT;
+            }
     }
     return 0;
 }

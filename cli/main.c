@@ -220,6 +220,7 @@ int main(int argc, char **argv)
     }
     a->sets = sets;
     rc = acbb_cli_parse(c, argc, argv, first, a);
+    if (rc == 0) rc = acbb_cli_check_paths(a); /* an output over an input: exit 2 */
     if (rc == 0) rc = c->run(a);
     else if (rc < 0) rc = 0;     /* --help was printed */
     free(sets);

@@ -2,8 +2,11 @@
  * (include/acbb/sweep.h), streamed as each point finishes (sweep.h), or,
  * for the 1-D `--param K --values V` form alone, the table / JSON / CSV of
  * output.h once every point is in. */
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "acbb/measure.h"
 #include "commands.h"
 #include "common.h"
@@ -184,6 +187,23 @@ static int sweep_table(const acbb_cli_args *a, sweep_run *s, const acbb_scene *b
     return rc;
 }
 
+/* A FIFO or device: written from the header on, nothing to resume (reading
+ * it back would block), and no waiting for a reader that may never come. */
+static int open_special(sweep_run *s, sweep_sink *o, const char *path, acbb_cli_rec_format fmt)
+{
+    int fd = acbb_out_open_special(path);
+    if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
+        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path,
+                errno == ENXIO ? "a FIFO with no reader (start the reader first)" : strerror(errno));
+        if (fd >= 0) close(fd);
+        return ACBB_EXIT_INPUT;
+    }
+    o->own = 1;
+    s->n_sinks++;
+    acbb_cli_sweep_header(o->f, fmt, &s->id, 1);
+    return 0;
+}
+
 /* Open --jsonl / --csv for streaming; an existing file is resumed. */
 static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
                      unsigned char *count)
@@ -197,9 +217,11 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
         s->n_sinks++; /* nothing to resume */
         return 0;
     }
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) return open_special(s, o, path, fmt);
     o->f = fopen(path, "a+");
     if (!o->f) {
-        fprintf(stderr, "acbb: sweep: %s: cannot open for writing\n", path);
+        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path, strerror(errno));
         return ACBB_EXIT_INPUT;
     }
     o->own = 1;

@@ -46,6 +46,11 @@ acbb_status acbb_out_commit(acbb_out *o, acbb_error *err);
 /* Drop everything written; the target is untouched. Releases o. */
 void acbb_out_abort(acbb_out *o);
 
+/* Open an existing non-regular file (FIFO, device) for writing without
+ * waiting for a reader: -1 with errno ENXIO at once when a FIFO has none.
+ * The descriptor is blocking once open. */
+int acbb_out_open_special(const char *path);
+
 /* ---- read-modify-write without lost edits (src/io/file_lock.c) ----
  * A caller that reads a file, changes it and writes it back (`acbb edit`,
  * the TUI's save) holds acbb_file_lock around the three steps and keeps an
