@@ -72,6 +72,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                          "with --sensitivity: vary only these uncertain inputs (default all; "
                          "`acbb keys` marks them plausible)" },
     [CLI_OPT_MAN] = { "man", NULL, "print the manual page (roff) made from the command table" },
+    [CLI_OPT_MAX_WALL] = { "max-wall", "SECONDS",
+                           "bound each run's computing time (fidelity.max_wall_s): a run past "
+                           "it ends wall_limit with its last good state, exit 3" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

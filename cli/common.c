@@ -28,6 +28,12 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
     acbb_error err = { { 0 } };
     acbb_status st = acbb_scene_load(a->preset, sc, &err);
     if (st == ACBB_OK) st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
+    /* --max-wall is fidelity.max_wall_s, checked by the schema's range. */
+    if (st == ACBB_OK && a->val[CLI_OPT_MAX_WALL] &&
+        acbb_scene_set(sc, "fidelity.max_wall_s", a->val[CLI_OPT_MAX_WALL], &err) != ACBB_OK) {
+        fprintf(stderr, "acbb: --max-wall %s: %s\n", a->val[CLI_OPT_MAX_WALL], err.msg);
+        return ACBB_EXIT_INPUT;
+    }
     if (st == ACBB_OK) {
         /* A switch the scene cannot feel is said, not silently ignored. */
         acbb_inactive_effect in[8];

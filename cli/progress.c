@@ -156,11 +156,15 @@ void acbb_cli_progress_step(acbb_cli_progress *p, const acbb_snapshot *snap)
     if (snap->iteration > 0) acbb_cli_decay_add(&p->fit, now, snap->residual);
     if (now_ms - p->last_ms < 250.0) return;   /* at most ~4 redraws a second */
     p->last_ms = now_ms;
-    char eta[32], line[160];
-    format_eta(eta, sizeof eta, acbb_cli_decay_eta(&p->fit, now, p->target));
+    char eta[32], line[200];
+    double e = acbb_cli_decay_eta(&p->fit, now, p->target);
+    format_eta(eta, sizeof eta, e);
+    /* Over a minute to go (a dynamic-level run, issue 20 item 8): say how
+     * to bound it. */
     int len = snprintf(line, sizeof line,
-                       "step %ld  residual %.2e / %.1e K/s  t %.0f s  %s  (Ctrl-C stops)",
-                       snap->iteration, snap->residual, p->target, snap->time, eta);
+                       "step %ld  residual %.2e / %.1e K/s  t %.0f s  %s  (Ctrl-C stops%s)",
+                       snap->iteration, snap->residual, p->target, snap->time, eta,
+                       e > 60.0 ? "; long run: --max-wall S bounds it" : "");
     show_line(p, line, len < (int)sizeof line ? len : (int)sizeof line - 1);
 }
 

@@ -66,9 +66,12 @@ wait_for "mine.ini*"
 keys w
 wait_for "changed on disk"
 keys r
+wait_for "opened"
+keys j # the next field, radial_load_N, into view
 reloaded() { screen | grep -q "radial_load_N  *13 "; }
-wait_until reloaded && ! screen | head -1 | grep -qF "mine.ini*"
-ok $? "r reloads the file (radial_load_N 13 shown)"
+wait_until reloaded && screen | grep -q "axial_load_N  *750 " && ! screen | head -1 | grep -qF "mine.ini*"
+ok $? "r reloads the file (radial_load_N 13 shown, the unsaved 760 dropped)"
+keys k
 
 # Overwrite: the user's choice, said in the message.
 keys Enter C-u 770 Enter

@@ -16,7 +16,8 @@ typedef enum {
     ACBB_NOT_CONVERGED = -8, /* step or time limit reached before steady state */
     ACBB_NONFINITE = -9,     /* a NaN/Inf was caught before publication */
     ACBB_SINGULAR = -10,     /* a linear system could not be factorised */
-    ACBB_CANCELLED = -11     /* the caller asked a long computation to stop */
+    ACBB_CANCELLED = -11,    /* the caller asked a long computation to stop */
+    ACBB_WALL_LIMIT = -12    /* fidelity.max_wall_s of computing reached: last good state kept */
 } acbb_status;
 
 /* Human-readable message buffer; the caller owns it (usually on the stack). */
