@@ -132,7 +132,7 @@ static int run_report(const acbb_cli_args *a, const char *preset, const acbb_sce
     int rc = 0;
     if (json && !base) acbb_cli_json_run(&o, sc, snap);
     else if (!json && !a->val[CLI_OPT_QUIET]) acbb_cli_print_summary(&o, preset, sc, snap);
-    if (base) rc = acbb_cli_baseline(base, sc, snap, json);
+    if (base) rc = acbb_cli_baseline(base, sc, snap, json, a->val[CLI_OPT_QUIET] != NULL);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);

@@ -1,9 +1,11 @@
 /* acbb CLI — shared helpers (common.h). */
+#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "common.h"
 #include "exit.h"
 
@@ -147,6 +149,33 @@ static size_t collect(const acbb_cli_args *a, named_path *in, size_t *n_in, name
     return n_out;
 }
 
+/* An output that cannot be opened is bad input (2) for every flag alike,
+ * said before anything runs (README "Exit codes"): the directory must
+ * exist and be writable, an existing target writable and no directory. */
+static int cannot_write(const char *cmd, const named_path *o)
+{
+    char dir[PATH_MAX];
+    struct stat st;
+    const char *why = NULL;
+    snprintf(dir, sizeof dir, "%s", o->path);
+    char *slash = strrchr(dir, '/');
+    if (slash == dir) dir[1] = '\0';
+    else if (slash) *slash = '\0';
+    else snprintf(dir, sizeof dir, ".");
+    if (stat(o->path, &st) == 0) {
+        if (S_ISDIR(st.st_mode)) why = "it is a directory";
+        else if (access(o->path, W_OK) != 0) why = strerror(errno);
+    } else if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        why = "its directory does not exist";
+    } else if (access(dir, W_OK | X_OK) != 0) {
+        why = strerror(errno);
+    }
+    if (!why) return 0;
+    fprintf(stderr, "acbb: %s: cannot write %s%s %s: %s\n", cmd, o->what[0] == 'O' ? "" : "--",
+            o->what, o->path, why);
+    return ACBB_EXIT_INPUT;
+}
+
 int acbb_cli_check_paths(const acbb_cli_args *a)
 {
     named_path in[CLI_MAX_POS + 2], out[8];
@@ -161,6 +190,7 @@ int acbb_cli_check_paths(const acbb_cli_args *a)
             }
             continue;
         }
+        if (cannot_write(a->cmd, &out[i])) return ACBB_EXIT_INPUT;
         for (size_t j = 0; j < n_in; j++)
             if (strcmp(in[j].path, "-") != 0 && same_file(out[i].path, in[j].path)) {
                 fprintf(stderr, "acbb: %s: %s%s %s is %s, an input of this command: not "

@@ -20,6 +20,7 @@ typedef struct {
     const char *path;
     acbb_cli_rec_format fmt;
     int own;                   /* fclose it */
+    int failed;                /* a write failed (disk full) */
 } sweep_sink;
 
 typedef struct {
@@ -29,7 +30,6 @@ typedef struct {
     size_t n_sinks;
     size_t total, done, failed;
     long nonfinite;
-    int write_error;
     int progress;              /* stderr is a terminal */
     double t0, last_shown;
     acbb_cli_point *pts;       /* the 1-D form: results kept for the table */
@@ -56,7 +56,7 @@ static void on_point(void *ctx, const acbb_sweep_result *r)
     for (size_t k = 0; k < s->n_sinks; k++) {
         sweep_sink *o = &s->sink[k];
         s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, &s->id, r);
-        if (fflush(o->f) != 0 || ferror(o->f)) s->write_error = 1;
+        if (fflush(o->f) != 0 || ferror(o->f)) o->failed = 1;
     }
     if (s->pts) {
         acbb_cli_point *p = &s->pts[r->index];
@@ -234,14 +234,21 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
     return rc;
 }
 
+/* A write that fails once the file is open (disk full) is exit 4, naming
+ * the file (README "Exit codes"; issue 20 item 9). */
 static int close_sinks(sweep_run *s)
 {
-    int rc = s->write_error ? ACBB_EXIT_INPUT : 0;
+    int rc = 0;
     for (size_t k = 0; k < s->n_sinks; k++) {
-        if (s->sink[k].own && fclose(s->sink[k].f) != 0) rc = ACBB_EXIT_INPUT;
-        if (!s->sink[k].own && fflush(s->sink[k].f) != 0) rc = ACBB_EXIT_INPUT;
+        sweep_sink *o = &s->sink[k];
+        int bad = o->failed || (o->own ? fclose(o->f) != 0 : fflush(o->f) != 0);
+        if (bad) {
+            fprintf(stderr, "acbb: sweep: cannot write %s: %s; the records before the failure "
+                    "are kept\n", strcmp(o->path, "-") ? o->path : "standard output",
+                    errno ? strerror(errno) : "write error");
+            rc = ACBB_EXIT_INTERNAL;
+        }
     }
-    if (rc) fprintf(stderr, "acbb: sweep: an output file could not be written\n");
     return rc;
 }
 

@@ -580,6 +580,16 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     for (int k = 0; k < N_WAKES; k++) r->wake[k] = FD_ISSET(wake_fd(a, k), &rf);
 }
 
+/* Leaving on a signal or a second Ctrl-C: the edits go to the recovery
+ * file; when they cannot, that is said loudly on the restored terminal. */
+static void keep_edits(acbb_app *a)
+{
+    char why[sizeof a->leave_msg - 128];
+    if (acbb_recover_write(&a->ed, why, sizeof why) != 0)
+        snprintf(a->leave_msg, sizeof a->leave_msg, "acbb tui: UNSAVED EDITS OF %s ARE LOST: "
+                 "%s\n", a->ed.path[0] ? a->ed.path : "the default scene", why);
+}
+
 static void handle_signals(acbb_app *a, int *redraw)
 {
     acbb_term_events ev;
@@ -591,14 +601,14 @@ static void handle_signals(acbb_app *a, int *redraw)
     if (ev.fatal) {
         /* SIGTERM / SIGHUP / SIGQUIT: keep the edits, leave now; the
          * caller restores the terminal. */
-        acbb_recover_write(&a->ed);
+        keep_edits(a);
         a->quit = 1;
         a->exit_code = ACBB_EXIT_SIGNAL(ev.fatal);
     } else if (ev.interrupt) {
         /* Ctrl-C is "quit"; a second one while asking means yes, and the
          * edits go to the recovery file rather than being lost. */
         if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) {
-            acbb_recover_write(&a->ed);
+            keep_edits(a);
             a->quit = 1;
         }
         else {
@@ -632,7 +642,9 @@ static void loop(acbb_app *a)
     while (!a->quit) {
         double t = 1e-3 * acbb_now_ms();
         if (t - last_recover >= RECOVER_S) {
-            acbb_recover_write(&a->ed);
+            char why[sizeof a->leave_msg];
+            if (acbb_recover_write(&a->ed, why, sizeof why) != 0)
+                acbb_app_msg(a, ACBB_ROLE_WARN, "unsaved edits cannot be kept: %s", why);
             last_recover = t;
         }
         if (redraw || (stale && t - last_frame >= FRAME_S)) {
@@ -719,6 +731,7 @@ int acbb_app_run(const acbb_app_options *opt)
          * A running benchmark, sweep or sensitivity run is cancelled: it
          * stops within one step. */
         acbb_term_close(&a->term);
+        fputs(a->leave_msg, stderr);
         acbb_bench_free(a->bench);
         acbb_sweepjob_free(a->sweep);
         acbb_sensjob_free(a->sens);

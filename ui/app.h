@@ -110,6 +110,7 @@ struct acbb_app {
         unsigned long seen_run;
     } sn;
     int quit, exit_code;
+    char leave_msg[768];      /* printed once the terminal is restored (recover.c) */
     acbb_chart chart;              /* scratch raster */
     acbb_axis_memo memo[ACBB_CHART_MEMOS]; /* Run chart, then the three history charts */
     int bigview;                   /* Run screen: presentation view (v) */
