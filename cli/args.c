@@ -80,6 +80,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_BRANCHES] = { "branches", NULL, "also solve the other branch (the steady solve "
                            "beside the transient) and say whether they agree (automatic with a "
                            "[schedule] or mounting.preload = displacement)" },
+    [CLI_OPT_MAX_WALL] = { "max-wall", "SECONDS",
+                           "bound each run's computing time (fidelity.max_wall_s): a run past "
+                           "it ends wall_limit with its last good state, exit 3" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

@@ -55,8 +55,12 @@ static void add_row(cJSON *rows, const char *path, const cJSON *was, const cJSON
         double a = was->valuedouble, b = now->valuedouble;
         cJSON_AddNumberToObject(r, "baseline", a);
         cJSON_AddNumberToObject(r, "now", b);
-        cJSON_AddNumberToObject(r, "change", b - a);
-        if (a != 0.0) cJSON_AddNumberToObject(r, "change_pct", 100.0 * (b - a) / fabs(a));
+        /* No inf or nan in any output (issue 20 item 9): a change or a
+         * percentage that overflows (a baseline of 1e-320 or 1e308) is null. */
+        double d = b - a, pct = a != 0.0 ? 100.0 * d / fabs(a) : NAN;
+        if (isfinite(d)) cJSON_AddNumberToObject(r, "change", d);
+        else cJSON_AddNullToObject(r, "change");
+        if (isfinite(pct)) cJSON_AddNumberToObject(r, "change_pct", pct);
         else cJSON_AddNullToObject(r, "change_pct");
     } else {
         cJSON_AddItemToObject(r, "baseline", cJSON_Duplicate(was, 1));
@@ -84,7 +88,9 @@ static void diff(const cJSON *was, const cJSON *now, const char *path, cJSON *ro
         }
         return;
     }
-    if (cJSON_IsNumber(was) && cJSON_IsNumber(now)) {
+    if (cJSON_IsNumber(was) && !isfinite(was->valuedouble)) {
+        return; /* cJSON reads 1e999 as inf: not a value a run can have written */
+    } else if (cJSON_IsNumber(was) && cJSON_IsNumber(now)) {
         double a = was->valuedouble, b = now->valuedouble;
         if (fabs(b - a) > 1e-12 * fmax(fabs(a), fabs(b))) add_row(rows, path, was, now);
     } else if (!cJSON_Compare(was, now, 1)) {
@@ -99,8 +105,10 @@ static void print_row(const cJSON *r)
     if (strncmp(p, "scene.keys.", 11) == 0) p += 11; /* the inputs block says what it is */
     if (cJSON_IsNumber(a)) {
         const cJSON *pct = cJSON_GetObjectItem(r, "change_pct");
-        printf("  %-34.34s %12.6g %12.6g %+11.4g", p, a->valuedouble, b->valuedouble,
-               b->valuedouble - a->valuedouble);
+        const cJSON *d = cJSON_GetObjectItem(r, "change");
+        printf("  %-34.34s %12.6g %12.6g", p, a->valuedouble, b->valuedouble);
+        if (cJSON_IsNumber(d)) printf(" %+11.4g", d->valuedouble);
+        else printf(" %11s", "-");
         if (cJSON_IsNumber(pct)) printf(" %+7.2f%%\n", pct->valuedouble);
         else printf(" %8s\n", "-");
         return;
@@ -135,7 +143,7 @@ static void print_table(const cJSON *rows, const char *path)
 }
 
 int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapshot *snap,
-                      bool json)
+                      bool json, bool quiet)
 {
     char *text = slurp(path);
     if (!text) {
@@ -160,7 +168,7 @@ int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapsho
             if (out) puts(out);
             else rc = ACBB_EXIT_INTERNAL;
             free(out);
-        } else {
+        } else if (!quiet) {
             print_table(rows, path);
         }
     }

@@ -12,8 +12,9 @@
 /* Text: the run's summary is already printed; this adds a table of the
  * values that changed (baseline, now, change, %). JSON: prints this run's
  * JSON with a "vs_baseline" array added. Returns an exit status (0, 2 for
- * an unreadable baseline, 4 for an output failure). */
+ * an unreadable baseline, 4 for an output failure). `quiet` (text only):
+ * the baseline is still read and checked, nothing printed. */
 int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapshot *snap,
-                      bool json);
+                      bool json, bool quiet);
 
 #endif

@@ -41,7 +41,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "--csv writes one row per coupled step; --plot FILE.png writes the temperature\n"
       "plot there and the other kinds next to it (FILE-losses.png, ...).\n",
       SCENE_OPTS | O(JSON) | O(CSV) | O(QUIET) | O(PLOT) | O(BASELINE)
-      | O(BRANCHES), 1, 1, 0,
+      | O(BRANCHES) | O(MAX_WALL), 1, 1, 0,
       acbb_cli_cmd_run },
     { "check", NULL, "PRESET", "validate the preset and the edits without running", NULL,
       SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_check },
@@ -59,7 +59,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "Shards: --shard K/N on N machines, then `acbb merge`. --param/--values alone:\n"
       "one dimension, printed as a table (or --json, --csv) at the end.\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
-      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT), 1, 1, 0, acbb_cli_cmd_sweep },
+      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT) | O(MAX_WALL), 1, 1, 0, acbb_cli_cmd_sweep },
     { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
       "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
@@ -74,7 +74,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "(R (k+1) points, k inputs; seed 1). --plot FILE.png|svg: a tornado chart.\n"
       "Exit 3 when a run did not reach steady state (the table is still printed).\n",
       SCENE_OPTS | O(METRIC) | O(DELTA) | O(MORRIS) | O(JOBS) | O(TRANSIENT) | O(JSON) | O(CSV) |
-      O(PLOT), 1, 1, 0, acbb_cli_cmd_sensitivity },
+      O(PLOT) | O(MAX_WALL), 1, 1, 0, acbb_cli_cmd_sensitivity },
     { "study", NULL, "PRESET", "TE vs WTE: with and without thermal expansion",
       "Loads 50..1000 N at the preset's speed, speeds 2000..16000 rpm at 100 N\n"
       "and at 1000 N. PRESET `seed` is 7008C, the seed paper's case.\n"
@@ -82,7 +82,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "sweeps at 15000 rpm, TE and WTE) as DIR/figNN*.png, .svg and .csv, and\n"
       "DIR/REPORT.md linking them with the seed's captions and the verdicts of the\n"
       "statements that cite them. e.g. acbb study seed --out figs\n",
-      SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT), 1, 1, -1, acbb_cli_cmd_study },
+      SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT) | O(MAX_WALL), 1, 1, -1, acbb_cli_cmd_study },
     { "plot", NULL, "PRESET", "run the scene and plot it through gnuplot",
       "--kind all writes every kind, FILE-<kind>.png next to --out FILE.png.\n",
       SCENE_OPTS | O(KIND) | O(OUT) | O(DUMB) | O(SIZE), 1, 1, 0, acbb_cli_plot },
@@ -105,7 +105,7 @@ const acbb_cli_command acbb_cli_commands[] = {
       "the seed's conclusions (MODEL.md 12): held or not",
       "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n"
       "Cancelled (Ctrl-C, SIGTERM): no verdicts, no --md file, exit 3.\n",
-      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS) | O(JOBS), 1, 1, 0,
+      SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS) | O(JOBS) | O(MAX_WALL), 1, 1, 0,
       acbb_cli_cmd_report },
     { "new", NULL, "[DESIGNATION]", "write a preset for a bearing designation (7014C, 6205)",
       "Or --series 70 --bore 70 --angle 15. Writes DESIGNATION.ini (or --out FILE,\n"
@@ -230,6 +230,7 @@ int main(int argc, char **argv)
     }
     a->sets = sets;
     rc = acbb_cli_parse(c, argc, argv, first, a);
+    if (rc == 0) rc = acbb_cli_check_paths(a); /* an output over an input: exit 2 */
     if (rc == 0) rc = c->run(a);
     else if (rc < 0) rc = 0;     /* --help was printed */
     free(sets);

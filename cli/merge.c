@@ -1,13 +1,22 @@
 /* acbb CLI — `acbb merge OUT IN...`: sweep outputs (shards, resumed runs)
- * joined into the canonical form of sweep.h: sorted by point index, each
- * index once (the first met, in argument order), wall_ms dropped. A single
- * input gives the canonical form of one machine's sweep, so
- * `acbb merge a sweep.jsonl` and `acbb merge b s1.jsonl s2.jsonl` compare
- * byte for byte. JSONL lines are re-printed by cJSON (numbers round-trip),
- * CSV rows keep their text. */
+ * joined into the canonical form of sweep.h: the header, then the records
+ * sorted by point index, each index once (the first met, in argument
+ * order), wall_ms dropped. A single input gives the canonical form of one
+ * machine's sweep, so `acbb merge a sweep.jsonl` and `acbb merge b s1.jsonl
+ * s2.jsonl` compare byte for byte. JSONL lines are re-printed by cJSON
+ * (numbers round-trip), CSV rows keep their text.
+ *
+ * Nothing is mixed (issue 20 item 3): every input starts with the header
+ * of one and the same sweep (scene, grid, run mode, record format; a
+ * mismatch names the keys that differ), every record carries that sweep's
+ * fingerprint, a whole index in the grid's range and the grid values of
+ * that index, and only finite numbers (CSV fields checked like JSONL). A
+ * FIFO input is refused: merge reads whole files, and a FIFO without a
+ * writer would block forever (item 7). */
 #include <cjson/cJSON.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "common.h"
 #include "exit.h"
 #include "sweep.h"
@@ -20,13 +29,22 @@ typedef struct {
 typedef struct {
     merge_rec *recs;
     size_t n, cap;
-    int csv;                   /* -1 unknown yet */
-    char *header;              /* CSV: canonical header */
-    char *grid_keys;           /* JSONL: the first record's grid keys */
+    acbb_cli_rec_format fmt;
+    cJSON *header;             /* the first input's header object */
+    const char *header_path;
+    acbb_sweep *g;             /* the grid it describes */
+    char fp[17];
 } merge_set;
+
+typedef struct {
+    const char *path;
+    long lineno;
+    int has_wall;              /* CSV: the input carries wall_ms last */
+} merge_in;
 
 static int add_rec(merge_set *m, size_t index, char *text)
 {
+    if (!text) return ACBB_EXIT_INTERNAL;
     if (m->n == m->cap) {
         size_t cap = m->cap ? 2 * m->cap : 256;
         merge_rec *r = realloc(m->recs, cap * sizeof *r);
@@ -38,43 +56,18 @@ static int add_rec(merge_set *m, size_t index, char *text)
     return 0;
 }
 
-/* "k1,k2,..." of a record's grid: records of another grid are refused. */
-static char *grid_keys(const cJSON *o)
-{
-    size_t len = 1;
-    const cJSON *it;
-    cJSON_ArrayForEach(it, cJSON_GetObjectItemCaseSensitive(o, "grid")) len += strlen(it->string) + 1;
-    char *s = calloc(len, 1);
-    cJSON_ArrayForEach(it, cJSON_GetObjectItemCaseSensitive(o, "grid")) {
-        if (!s) break;
-        strcat(s, it->string);
-        strcat(s, ",");
-    }
-    return s;
-}
-
-static int jsonl_line(merge_set *m, const char *line)
+static char *jsonl_canonical(const char *line)
 {
     cJSON *o = cJSON_Parse(line);
-    const cJSON *ix = cJSON_GetObjectItemCaseSensitive(o, "index");
-    if (!cJSON_IsNumber(ix) || ix->valuedouble < 0 || !cJSON_IsObject(cJSON_GetObjectItemCaseSensitive(o, "grid"))) {
-        cJSON_Delete(o);
-        return ACBB_EXIT_INPUT;
-    }
-    char *keys = grid_keys(o);
-    int same = keys && (!m->grid_keys || strcmp(keys, m->grid_keys) == 0);
-    if (same && !m->grid_keys) m->grid_keys = keys, keys = NULL;
-    free(keys);
     cJSON_DeleteItemFromObjectCaseSensitive(o, "wall_ms");
-    char *text = same ? cJSON_PrintUnformatted(o) : NULL;
-    size_t index = (size_t)ix->valuedouble;
+    char *text = o ? cJSON_PrintUnformatted(o) : NULL;
     cJSON_Delete(o);
-    if (!text) return ACBB_EXIT_INPUT;
+    if (!text) return NULL;
     size_t len = strlen(text);
     char *rec = malloc(len + 2);
     if (rec) memcpy(rec, text, len), rec[len] = '\n', rec[len + 1] = '\0';
     cJSON_free(text);
-    return rec ? add_rec(m, index, rec) : ACBB_EXIT_INTERNAL;
+    return rec;
 }
 
 /* Text up to the last comma when the file carries wall_ms last. */
@@ -94,51 +87,108 @@ static char *csv_cut(const char *line, int has_wall)
     return s;
 }
 
-static int csv_line(merge_set *m, const char *line, long lineno, int *has_wall)
+static int refuse(const merge_in *in, const char *why)
 {
-    if (lineno == 1) {
-        size_t len = strlen(line);
-        *has_wall = len > 9 && strcmp(line + len - 9, ",wall_ms\n") == 0;
-        char *h = csv_cut(line, *has_wall);
-        if (!h || strncmp(h, "index,", 6) != 0 || (m->header && strcmp(h, m->header) != 0))
-            return free(h), ACBB_EXIT_INPUT;
-        if (!m->header) m->header = h;
-        else free(h);
+    fprintf(stderr, "acbb: merge: %s:%ld: %s\n", in->path, in->lineno, why);
+    return ACBB_EXIT_INPUT;
+}
+
+/* Line 1: the header; the first input's becomes the reference. */
+static int header_line(merge_set *m, merge_in *in, const char *line)
+{
+    acbb_cli_rec_format fmt = line[0] == '#' ? ACBB_CLI_REC_CSV : ACBB_CLI_REC_JSONL;
+    cJSON *h = acbb_cli_sweep_header_parse(line, fmt);
+    if (!h) {
+        char why[160];
+        snprintf(why, sizeof why, "no sweep header (an acbb sweep output of record format %d "
+                 "starts with one)", ACBB_SWEEP_FORMAT);
+        return refuse(in, why);
+    }
+    char diff[400];
+    int rc = 0;
+    if (!m->header) {
+        const cJSON *fp = cJSON_GetObjectItemCaseSensitive(h, "fingerprint");
+        m->g = acbb_cli_sweep_from_header(h);
+        if (!m->g) return cJSON_Delete(h), refuse(in, "the header's grid is not a grid");
+        snprintf(m->fp, sizeof m->fp, "%s", fp->valuestring);
+        m->header = h, m->header_path = in->path, m->fmt = fmt;
         return 0;
     }
-    char *end = NULL;
-    unsigned long long index = strtoull(line, &end, 10);
-    if (end == line || *end != ',') return ACBB_EXIT_INPUT;
-    char *rec = csv_cut(line, *has_wall);
-    return rec ? add_rec(m, (size_t)index, rec) : ACBB_EXIT_INTERNAL;
+    if (fmt != m->fmt) rc = refuse(in, "JSONL and CSV cannot be merged into one file");
+    else if (acbb_cli_sweep_header_diff(m->header, h, diff, sizeof diff)) {
+        fprintf(stderr, "acbb: merge: %s is another sweep than %s; differs (%s vs %s): %s\n",
+                in->path, m->header_path, m->header_path, in->path, diff);
+        rc = ACBB_EXIT_INPUT;
+    }
+    cJSON_Delete(h);
+    return rc;
+}
+
+/* CSV line 2: the column header, with or without wall_ms. */
+static int columns_line(const merge_set *m, merge_in *in, const char *line)
+{
+    for (int wall = 1; wall >= 0; wall--) {
+        char *want = NULL;
+        size_t cap = 0;
+        FILE *h = open_memstream(&want, &cap);
+        if (!h) return ACBB_EXIT_INTERNAL;
+        acbb_cli_sweep_csv_header(h, m->g, wall);
+        fclose(h);
+        int same = strcmp(line, want) == 0;
+        free(want);
+        if (same) return in->has_wall = wall, 0;
+    }
+    return refuse(in, "not the column header of this sweep");
+}
+
+static int record_line(merge_set *m, merge_in *in, const char *line)
+{
+    size_t index = 0;
+    const char *why = "";
+    if (acbb_cli_sweep_check_record(line, m->fmt, m->g, m->fp, in->has_wall, &index, &why)) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "not a record of this sweep: %s", why);
+        return refuse(in, msg);
+    }
+    return add_rec(m, index, m->fmt == ACBB_CLI_REC_CSV ? csv_cut(line, in->has_wall)
+                                                        : jsonl_canonical(line));
+}
+
+static FILE *open_input(const char *path)
+{
+    if (strcmp(path, "-") == 0) return stdin;
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        fprintf(stderr, "acbb: merge: %s: not a regular file (a FIFO or device could block "
+                "forever); copy it to a file first\n", path);
+        return NULL;
+    }
+    FILE *f = fopen(path, "r");
+    if (!f) fprintf(stderr, "acbb: merge: %s: cannot read\n", path);
+    return f;
 }
 
 static int read_input(merge_set *m, const char *path)
 {
-    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
-    if (!f) {
-        fprintf(stderr, "acbb: merge: %s: cannot read\n", path);
-        return ACBB_EXIT_INPUT;
-    }
+    FILE *f = open_input(path);
+    if (!f) return ACBB_EXIT_INPUT;
+    merge_in in = { .path = path };
     char *line = NULL;
     size_t cap = 0;
     ssize_t len;
-    long lineno = 0;
-    int rc = 0, has_wall = 0;
+    int rc = 0;
     while (!rc && (len = getline(&line, &cap, f)) > 0) {
-        lineno++;
+        in.lineno++;
         if (line[len - 1] != '\n') {
-            fprintf(stderr, "acbb: merge: %s:%ld: unfinished last record skipped\n", path, lineno);
+            fprintf(stderr, "acbb: merge: %s:%ld: unfinished last record skipped\n", path,
+                    in.lineno);
             break;
         }
-        int csv = lineno == 1 ? line[0] != '{' : m->csv;
-        if (m->csv >= 0 && csv != m->csv) rc = ACBB_EXIT_INPUT;
-        m->csv = csv;
-        if (!rc) rc = csv ? csv_line(m, line, lineno, &has_wall) : jsonl_line(m, line);
-        if (rc == ACBB_EXIT_INPUT)
-            fprintf(stderr, "acbb: merge: %s:%ld: not a record of the same sweep (acbb sweep "
-                    "--jsonl or --csv, one grid)\n", path, lineno);
+        if (in.lineno == 1) rc = header_line(m, &in, line);
+        else if (in.lineno == 2 && m->fmt == ACBB_CLI_REC_CSV) rc = columns_line(m, &in, line);
+        else rc = record_line(m, &in, line);
     }
+    if (in.lineno == 0) fprintf(stderr, "acbb: merge: %s: empty, skipped\n", path);
     free(line);
     if (f != stdin) fclose(f);
     return rc;
@@ -151,13 +201,28 @@ static int by_index(const void *a, const void *b)
     return x->seq < y->seq ? -1 : x->seq > y->seq;
 }
 
+static void write_header(FILE *f, const merge_set *m)
+{
+    cJSON *top = cJSON_CreateObject();
+    cJSON_AddItemToObject(top, "acbb_sweep", cJSON_Duplicate(m->header, 1));
+    char *text = cJSON_PrintUnformatted(top);
+    cJSON_Delete(top);
+    fprintf(f, "%s%s\n", m->fmt == ACBB_CLI_REC_CSV ? "# " : "", text ? text : "{}");
+    cJSON_free(text);
+    if (m->fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, m->g, 0);
+}
+
 static int write_merged(const char *out, merge_set *m)
 {
-    qsort(m->recs, m->n, sizeof *m->recs, by_index);
+    if (!m->header) {
+        fprintf(stderr, "acbb: merge: no sweep output among the inputs\n");
+        return ACBB_EXIT_INPUT;
+    }
+    if (m->n > 1) qsort(m->recs, m->n, sizeof *m->recs, by_index);
     acbb_cli_file file = { 0 };
     int rc = acbb_cli_file_open(&file, out);
     if (rc) return rc;
-    if (m->csv == 1 && m->header) fputs(m->header, file.out.f);
+    write_header(file.out.f, m);
     size_t kept = 0, dup = 0;
     for (size_t i = 0; i < m->n; i++) {
         if (i > 0 && m->recs[i].index == m->recs[i - 1].index) {
@@ -168,23 +233,23 @@ static int write_merged(const char *out, merge_set *m)
         kept++;
     }
     rc = acbb_cli_file_close(&file);
-    size_t top = m->n ? m->recs[m->n - 1].index + 1 : 0;
-    if (top > kept)
-        fprintf(stderr, "acbb: merge: warning: %zu of the indices 0..%zu are missing\n",
-                top - kept, top - 1);
+    size_t total = acbb_sweep_n_points(m->g);
+    if (total > kept)
+        fprintf(stderr, "acbb: merge: warning: %zu of the %zu points are missing\n",
+                total - kept, total);
     if (dup) fprintf(stderr, "acbb: merge: %zu repeated records dropped\n", dup);
     return rc;
 }
 
 int acbb_cli_cmd_merge(const acbb_cli_args *a)
 {
-    merge_set m = { .csv = -1 };
+    merge_set m = { .fmt = ACBB_CLI_REC_JSONL };
     int rc = 0;
     for (int i = 1; !rc && i < a->n_pos; i++) rc = read_input(&m, a->pos[i]);
     if (!rc) rc = write_merged(a->pos[0], &m);
     for (size_t i = 0; i < m.n; i++) free(m.recs[i].text);
     free(m.recs);
-    free(m.header);
-    free(m.grid_keys);
+    cJSON_Delete(m.header);
+    acbb_sweep_free(m.g);
     return rc;
 }

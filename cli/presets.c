@@ -28,6 +28,14 @@ static bool is_file(const char *path)
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+/* A FIFO, device or socket by that name: the loader names its kind (issue
+ * 20 item 7), rather than "no such file". */
+static bool is_special(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
 static bool is_dir(const char *path)
 {
     struct stat st;
@@ -99,7 +107,7 @@ static bool ends_with_ini(const char *s)
 
 int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report)
 {
-    if (strchr(arg, '/') || is_file(arg) || !arg[0]) {
+    if (strchr(arg, '/') || is_file(arg) || is_special(arg) || !arg[0]) {
         snprintf(out, n, "%s", arg);
         return 0;
     }

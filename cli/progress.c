@@ -162,13 +162,17 @@ void acbb_cli_progress_step(acbb_cli_progress *p, const acbb_snapshot *snap)
     acbb_operating op = { .finished = true };
     if (p->schedule) acbb_schedule_at(p->schedule, snap->time, &op);
     /* The residual decays only once the schedule has ended: no ETA before. */
-    format_eta(eta, sizeof eta, op.finished ? acbb_cli_decay_eta(&p->fit, now, p->target) : -1.0);
+    double e = op.finished ? acbb_cli_decay_eta(&p->fit, now, p->target) : -1.0;
+    format_eta(eta, sizeof eta, e);
     if (p->schedule)
         snprintf(sched, sizeof sched, "  row %d/%d %.0f rpm%s", op.row, op.n_rows,
                  acbb_rads_to_rpm(op.inner_speed), op.finished ? " (done)" : "");
+    /* Over a minute to go (a dynamic-level run, issue 20 item 8): say how
+     * to bound it. */
     int len = snprintf(line, sizeof line,
-                       "step %ld  residual %.2e / %.1e K/s  t %.0f s%s  %s  (Ctrl-C stops)",
-                       snap->iteration, snap->residual, p->target, snap->time, sched, eta);
+                       "step %ld  residual %.2e / %.1e K/s  t %.0f s%s  %s  (Ctrl-C stops%s)",
+                       snap->iteration, snap->residual, p->target, snap->time, sched, eta,
+                       e > 60.0 ? "; long run: --max-wall S bounds it" : "");
     show_line(p, line, len < (int)sizeof line ? len : (int)sizeof line - 1);
 }
 

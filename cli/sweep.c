@@ -2,8 +2,11 @@
  * (include/acbb/sweep.h), streamed as each point finishes (sweep.h), or,
  * for the 1-D `--param K --values V` form alone, the table / JSON / CSV of
  * output.h once every point is in. */
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "acbb/measure.h"
 #include "commands.h"
 #include "common.h"
@@ -17,15 +20,16 @@ typedef struct {
     const char *path;
     acbb_cli_rec_format fmt;
     int own;                   /* fclose it */
+    int failed;                /* a write failed (disk full) */
 } sweep_sink;
 
 typedef struct {
     const acbb_sweep *grid;
+    acbb_cli_sweep_id id;      /* the header and the records' fingerprint */
     sweep_sink sink[2];
     size_t n_sinks;
     size_t total, done, failed;
     long nonfinite;
-    int write_error;
     int progress;              /* stderr is a terminal */
     double t0, last_shown;
     acbb_cli_point *pts;       /* the 1-D form: results kept for the table */
@@ -51,8 +55,8 @@ static void on_point(void *ctx, const acbb_sweep_result *r)
     s->failed += !(r->have_snap && r->snap.state == ACBB_RUN_CONVERGED);
     for (size_t k = 0; k < s->n_sinks; k++) {
         sweep_sink *o = &s->sink[k];
-        s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, s->grid, r);
-        if (fflush(o->f) != 0 || ferror(o->f)) s->write_error = 1;
+        s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, &s->id, r);
+        if (fflush(o->f) != 0 || ferror(o->f)) o->failed = 1;
     }
     if (s->pts) {
         acbb_cli_point *p = &s->pts[r->index];
@@ -183,6 +187,23 @@ static int sweep_table(const acbb_cli_args *a, sweep_run *s, const acbb_scene *b
     return rc;
 }
 
+/* A FIFO or device: written from the header on, nothing to resume (reading
+ * it back would block), and no waiting for a reader that may never come. */
+static int open_special(sweep_run *s, sweep_sink *o, const char *path, acbb_cli_rec_format fmt)
+{
+    int fd = acbb_out_open_special(path);
+    if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
+        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path,
+                errno == ENXIO ? "a FIFO with no reader (start the reader first)" : strerror(errno));
+        if (fd >= 0) close(fd);
+        return ACBB_EXIT_INPUT;
+    }
+    o->own = 1;
+    s->n_sinks++;
+    acbb_cli_sweep_header(o->f, fmt, &s->id, 1);
+    return 0;
+}
+
 /* Open --jsonl / --csv for streaming; an existing file is resumed. */
 static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
                      unsigned char *count)
@@ -192,33 +213,42 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
     o->fmt = fmt;
     if (strcmp(path, "-") == 0) {
         o->f = stdout;
-        if (fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(stdout, s->grid, 1);
+        acbb_cli_sweep_header(stdout, fmt, &s->id, 1);
         s->n_sinks++; /* nothing to resume */
         return 0;
     }
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) return open_special(s, o, path, fmt);
     o->f = fopen(path, "a+");
     if (!o->f) {
-        fprintf(stderr, "acbb: sweep: %s: cannot open for writing\n", path);
+        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path, strerror(errno));
         return ACBB_EXIT_INPUT;
     }
     o->own = 1;
     s->n_sinks++;
     size_t found = 0;
-    int rc = acbb_cli_sweep_resume(o->f, path, fmt, s->grid, count, &found);
+    int rc = acbb_cli_sweep_resume(o->f, path, fmt, &s->id, count, &found);
     if (!rc && found && s->progress)
         fprintf(stderr, "sweep: %s: resuming, %zu point%s already there\n", path, found,
                 found == 1 ? "" : "s");
     return rc;
 }
 
+/* A write that fails once the file is open (disk full) is exit 4, naming
+ * the file (README "Exit codes"; issue 20 item 9). */
 static int close_sinks(sweep_run *s)
 {
-    int rc = s->write_error ? ACBB_EXIT_INPUT : 0;
+    int rc = 0;
     for (size_t k = 0; k < s->n_sinks; k++) {
-        if (s->sink[k].own && fclose(s->sink[k].f) != 0) rc = ACBB_EXIT_INPUT;
-        if (!s->sink[k].own && fflush(s->sink[k].f) != 0) rc = ACBB_EXIT_INPUT;
+        sweep_sink *o = &s->sink[k];
+        int bad = o->failed || (o->own ? fclose(o->f) != 0 : fflush(o->f) != 0);
+        if (bad) {
+            fprintf(stderr, "acbb: sweep: cannot write %s: %s; the records before the failure "
+                    "are kept\n", strcmp(o->path, "-") ? o->path : "standard output",
+                    errno ? strerror(errno) : "write error");
+            rc = ACBB_EXIT_INTERNAL;
+        }
     }
-    if (rc) fprintf(stderr, "acbb: sweep: an output file could not be written\n");
     return rc;
 }
 
@@ -276,6 +306,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     sweep_run s = { .grid = g, .total = acbb_sweep_n_points(g), .base = &base,
                     .progress = acbb_cli_progress_wanted(stderr) };
     o.ctx = &s;
+    acbb_cli_sweep_id_init(&s.id, g, &base, o.transient);
     bool legacy = a->n_grids == 0 && !a->val[CLI_OPT_JSONL] && !a->val[CLI_OPT_SHARD] &&
                   !a->val[CLI_OPT_MAX_POINTS];
     /* SIGINT / SIGTERM stop the sweep within a step; what finished is

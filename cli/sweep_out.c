@@ -53,6 +53,13 @@ size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
     return n;
 }
 
+size_t acbb_cli_sweep_n_scalars(void)
+{
+    char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
+    double v[ACBB_CLI_SWEEP_SCALARS];
+    return acbb_cli_sweep_scalars(NULL, names, v);
+}
+
 /* "200" -> the number 200; "quasi-static" -> a string (as --set reads it). */
 static cJSON *value_json(const char *text)
 {
@@ -62,7 +69,7 @@ static cJSON *value_json(const char *text)
     return cJSON_CreateString(text);
 }
 
-static cJSON *grid_json(const acbb_sweep *g, size_t index)
+cJSON *acbb_cli_sweep_grid_json(const acbb_sweep *g, size_t index)
 {
     cJSON *o = cJSON_CreateObject();
     for (size_t d = 0; o && d < acbb_sweep_n_dims(g); d++)
@@ -80,7 +87,7 @@ static const char *message_text(const acbb_sweep_result *r)
     return r->have_snap ? r->snap.message : r->message;
 }
 
-static long record_jsonl(FILE *f, const acbb_sweep *g, const acbb_sweep_result *r)
+static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_result *r)
 {
     char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
     double v[ACBB_CLI_SWEEP_SCALARS];
@@ -90,7 +97,8 @@ static long record_jsonl(FILE *f, const acbb_sweep *g, const acbb_sweep_result *
     long nonfinite = 0;
     cJSON *o = cJSON_CreateObject();
     cJSON_AddNumberToObject(o, "index", (double)r->index);
-    cJSON_AddItemToObject(o, "grid", grid_json(g, r->index));
+    cJSON_AddStringToObject(o, "fingerprint", id->fp);
+    cJSON_AddItemToObject(o, "grid", acbb_cli_sweep_grid_json(id->g, r->index));
     cJSON_AddStringToObject(o, "status", status_text(r));
     cJSON_AddStringToObject(o, "message", message_text(r));
     cJSON_AddNumberToObject(o, "iterations", r->have_snap ? (double)r->snap.iteration : 0.0);
@@ -120,23 +128,24 @@ static void csv_text(FILE *f, const char *s)
     fputc('"', f);
 }
 
-/* "index,v1,...,vn," : also what resumption compares a row against. */
-static void csv_prefix(char *buf, size_t cap, const acbb_sweep *g, size_t index)
+/* "index,fingerprint,v1,...,vn,". */
+static void csv_prefix(char *buf, size_t cap, const acbb_cli_sweep_id *id, size_t index)
 {
-    size_t len = (size_t)snprintf(buf, cap, "%zu,", index);
+    const acbb_sweep *g = id->g;
+    size_t len = (size_t)snprintf(buf, cap, "%zu,%s,", index, id->fp);
     for (size_t d = 0; d < acbb_sweep_n_dims(g) && len < cap; d++)
         len += (size_t)snprintf(buf + len, cap - len, "%s,", acbb_sweep_value(g, index, d));
 }
 
-static long record_csv(FILE *f, const acbb_sweep *g, const acbb_sweep_result *r)
+static long record_csv(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_result *r)
 {
     char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
     double v[ACBB_CLI_SWEEP_SCALARS];
     size_t n = acbb_cli_sweep_scalars(r->have_snap ? &r->snap : NULL, names, v);
     /* NAN is on purpose only for a point that never ran or has no balls. */
     int checked = r->have_snap && r->snap.n_balls > 0;
-    char prefix[ACBB_SWEEP_MAX_DIMS * (ACBB_SWEEP_VALUE + 1) + 32];
-    csv_prefix(prefix, sizeof prefix, g, r->index);
+    char prefix[ACBB_SWEEP_MAX_DIMS * (ACBB_SWEEP_VALUE + 1) + 64];
+    csv_prefix(prefix, sizeof prefix, id, r->index);
     fprintf(f, "%s%s,%ld,", prefix, status_text(r), r->have_snap ? r->snap.iteration : 0L);
     long nonfinite = 0;
     for (size_t k = 0; k < n; k++) {
@@ -149,10 +158,10 @@ static long record_csv(FILE *f, const acbb_sweep *g, const acbb_sweep_result *r)
     return nonfinite;
 }
 
-long acbb_cli_sweep_record(FILE *f, acbb_cli_rec_format fmt, const acbb_sweep *g,
+long acbb_cli_sweep_record(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
                            const acbb_sweep_result *r)
 {
-    return fmt == ACBB_CLI_REC_JSONL ? record_jsonl(f, g, r) : record_csv(f, g, r);
+    return fmt == ACBB_CLI_REC_JSONL ? record_jsonl(f, id, r) : record_csv(f, id, r);
 }
 
 void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall)
@@ -160,39 +169,11 @@ void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall)
     char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
     double v[ACBB_CLI_SWEEP_SCALARS];
     size_t n = acbb_cli_sweep_scalars(NULL, names, v);
-    fputs("index", f);
+    fputs("index,fingerprint", f);
     for (size_t d = 0; d < acbb_sweep_n_dims(g); d++) fprintf(f, ",%s", acbb_sweep_key(g, d));
     fputs(",status,iterations", f);
     for (size_t k = 0; k < n; k++) fprintf(f, ",%s", names[k]);
     fprintf(f, ",message%s\n", with_wall ? ",wall_ms" : "");
-}
-
-/* The point a complete record names, checked against the grid: 0, or 2. */
-static int parse_record(const char *line, acbb_cli_rec_format fmt, const acbb_sweep *g,
-                        size_t *index)
-{
-    if (fmt == ACBB_CLI_REC_CSV) {
-        char *end = NULL;
-        unsigned long long i = strtoull(line, &end, 10);
-        char want[ACBB_SWEEP_MAX_DIMS * (ACBB_SWEEP_VALUE + 1) + 32];
-        if (end == line || *end != ',' || i >= acbb_sweep_n_points(g)) return ACBB_EXIT_INPUT;
-        csv_prefix(want, sizeof want, g, (size_t)i);
-        *index = (size_t)i;
-        return strncmp(line, want, strlen(want)) == 0 ? 0 : ACBB_EXIT_INPUT;
-    }
-    cJSON *o = cJSON_Parse(line);
-    const cJSON *ix = cJSON_GetObjectItemCaseSensitive(o, "index");
-    int rc = ACBB_EXIT_INPUT;
-    if (cJSON_IsNumber(ix) && ix->valuedouble >= 0 &&
-        ix->valuedouble < (double)acbb_sweep_n_points(g) &&
-        ix->valuedouble == floor(ix->valuedouble)) {
-        *index = (size_t)ix->valuedouble;
-        cJSON *want = grid_json(g, *index);
-        if (cJSON_Compare(want, cJSON_GetObjectItemCaseSensitive(o, "grid"), 1)) rc = 0;
-        cJSON_Delete(want);
-    }
-    cJSON_Delete(o);
-    return rc;
 }
 
 /* Cut a record the writer did not finish (killed mid-line). */
@@ -207,41 +188,73 @@ static int cut_partial(FILE *f, const char *path, long good_end)
     return 0;
 }
 
-int acbb_cli_sweep_resume(FILE *f, const char *path, acbb_cli_rec_format fmt,
-                          const acbb_sweep *g, unsigned char *count, size_t *n_found)
+/* The first line(s) of an existing output: this sweep's header, else a
+ * message naming what differs. Returns the lines it took, or -1. */
+static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
+                         const acbb_cli_sweep_id *id, const char *line, long *lineno)
 {
-    char *line = NULL, *header = NULL;
-    size_t cap = 0, hcap = 0;
+    cJSON *got = acbb_cli_sweep_header_parse(line, fmt), *want = acbb_cli_sweep_header_of(id);
+    char diff[400];
+    int rc = -1;
+    if (!got)
+        fprintf(stderr, "acbb: sweep: %s:%ld: no sweep header (an output of record format %d "
+                "starts with one); not resuming (write to another file)\n", path, *lineno,
+                ACBB_SWEEP_FORMAT);
+    else if (acbb_cli_sweep_header_diff(got, want, diff, sizeof diff))
+        fprintf(stderr, "acbb: sweep: %s: written by another sweep; not resuming (write to "
+                "another file). Differs (file vs now): %s\n", path, diff);
+    else
+        rc = 0;
+    cJSON_Delete(got);
+    cJSON_Delete(want);
+    if (rc || fmt != ACBB_CLI_REC_CSV) return rc;
+    /* CSV: the column header follows. */
+    char *cols = NULL, *mine = NULL;
+    size_t cap = 0, mcap = 0;
+    FILE *h = open_memstream(&mine, &mcap);
+    if (h) acbb_cli_sweep_csv_header(h, id->g, 1), fclose(h);
+    ++*lineno;
+    if (getline(&cols, &cap, f) <= 0 || !mine || strcmp(cols, mine) != 0) {
+        fprintf(stderr, "acbb: sweep: %s:%ld: not this sweep's column header; not resuming "
+                "(write to another file)\n", path, *lineno);
+        rc = -1;
+    }
+    free(cols);
+    free(mine);
+    return rc;
+}
+
+int acbb_cli_sweep_resume(FILE *f, const char *path, acbb_cli_rec_format fmt,
+                          const acbb_cli_sweep_id *id, unsigned char *count, size_t *n_found)
+{
+    char *line = NULL;
+    size_t cap = 0;
     ssize_t len;
     long good_end = 0, lineno = 0;
     int rc = 0;
     *n_found = 0;
     rewind(f);
-    FILE *h = open_memstream(&header, &hcap);
-    if (h) acbb_cli_sweep_csv_header(h, g, 1);
-    if (h) fclose(h);
     while (!rc && (len = getline(&line, &cap, f)) > 0) {
         lineno++;
         if (line[len - 1] != '\n') break; /* unfinished: cut below */
         size_t index = 0;
-        if (fmt == ACBB_CLI_REC_CSV && lineno == 1) {
-            if (!header || strcmp(line, header) != 0) rc = ACBB_EXIT_INPUT;
-        } else if (parse_record(line, fmt, g, &index) == 0) {
+        const char *why = "";
+        if (lineno == 1) {
+            rc = resume_header(f, path, fmt, id, line, &lineno) ? ACBB_EXIT_INPUT : 0;
+            good_end = ftell(f) - len; /* the header's line(s) */
+        } else if (acbb_cli_sweep_check_record(line, fmt, id->g, id->fp, 1, &index, &why) == 0) {
             if (count[index] < 255) count[index]++;
             ++*n_found;
         } else {
+            fprintf(stderr, "acbb: sweep: %s:%ld: not a record of this sweep (%s); not "
+                    "resuming (write to another file)\n", path, lineno, why);
             rc = ACBB_EXIT_INPUT;
         }
-        if (rc)
-            fprintf(stderr, "acbb: sweep: %s:%ld: not a %s of this sweep's grid; not "
-                    "resuming (write to another file)\n", path, lineno,
-                    lineno == 1 && fmt == ACBB_CLI_REC_CSV ? "header" : "record");
         good_end += len;
     }
     free(line);
     if (!rc) rc = cut_partial(f, path, good_end);
     fseek(f, 0, SEEK_END); /* from reading to (appending) writing */
-    if (!rc && good_end == 0 && fmt == ACBB_CLI_REC_CSV && header) fputs(header, f);
-    free(header);
+    if (!rc && good_end == 0) acbb_cli_sweep_header(f, fmt, id, 1);
     return rc;
 }

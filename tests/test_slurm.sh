@@ -32,7 +32,7 @@ GRID=(--set fidelity.model=quasi-static --grid operating.axial_load_N=200,800
 "$ACBB" sweep "$PRESET" "${GRID[@]}" --jsonl "$TMP/one.jsonl" 2>"$TMP/err"
 code $? 0 "one-machine sweep (6 points)"
 "$ACBB" merge "$TMP/canon.jsonl" "$TMP/one.jsonl" 2>"$TMP/err"
-[ "$(wc -l <"$TMP/canon.jsonl")" -eq 6 ]
+[ "$(wc -l <"$TMP/canon.jsonl")" -eq 7 ] # the header + 6
 t $? "its canonical form has 6 records"
 
 # ---- a single-node Slurm ----
@@ -146,7 +146,7 @@ if command -v parallel >/dev/null; then
     ACBB="$ACBB" ACBB_JOBS=1 contrib/parallel/acbb-sweep-parallel.sh 2 "$TMP/par" "$PRESET" \
         "${GRID[@]}" >"$TMP/par.out" 2>"$TMP/err"
     code $? 0 "GNU parallel recipe, 2 shards"
-    [ "$(wc -l <"$TMP/par/shard-1.jsonl")" -eq 3 ] && [ "$(wc -l <"$TMP/par/shard-2.jsonl")" -eq 3 ]
+    [ "$(wc -l <"$TMP/par/shard-1.jsonl")" -eq 4 ] && [ "$(wc -l <"$TMP/par/shard-2.jsonl")" -eq 4 ]
     t $? "each shard holds 3 of the 6 points"
     cmp -s "$TMP/par/sweep.jsonl" "$TMP/canon.jsonl"
     t $? "parallel: merged shards == one-machine canonical output, byte for byte"

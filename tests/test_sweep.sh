@@ -24,9 +24,9 @@ sweep() { "$ACBB" sweep "$PRESET" $GRID "$@" 2>>"$TMP/err"; }
 # ---- one machine ----
 sweep --jsonl "$TMP/one.jsonl" --csv "$TMP/one.csv" --jobs 2
 code $? 0 "2x2x2 sweep exits 0"
-[ "$(wc -l <"$TMP/one.jsonl")" -eq 8 ]
-t $? "one JSON line per point"
-jq -s -e 'map(.index) | sort == [0,1,2,3,4,5,6,7]' "$TMP/one.jsonl" >/dev/null 2>&1
+[ "$(wc -l <"$TMP/one.jsonl")" -eq 9 ] && head -1 "$TMP/one.jsonl" | jq -e '.acbb_sweep.format == 2' >/dev/null 2>&1
+t $? "a header line, then one JSON line per point"
+jq -s -e '.[1:] | map(.index) | sort == [0,1,2,3,4,5,6,7]' "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "every index 0..7 once"
 jq -s -e 'map(select(.index == 5))[0].grid == {"operating.axial_load_N": 800,
     "operating.inner_speed_rpm": 4000, "effects.thermal_expansion": "off"}' \
@@ -35,11 +35,11 @@ t $? "point 5 = (800 N, 4000 rpm, off): row-major, last --grid fastest"
 jq -s -e 'map(select(.index == 2))[0].grid["operating.inner_speed_rpm"] == 12000' \
     "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "lo:hi:2 gives both ends (12000 rpm at index 2)"
-jq -s -e 'def abs: if . < 0 then -. else . end; all(.[]; .status == "converged" and .wall_ms >= 0 and
+jq -s -e 'def abs: if . < 0 then -. else . end; .[1:] | all(.[]; .status == "converged" and .wall_ms >= 0 and
     ((.P_shear_W + .P_slip_W + .P_spin_W + .P_rolling_W + .P_drag_W + .P_cage_W - .P_total_W)
      | abs) <= 1e-9 * .P_total_W)' "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "every point converged; the loss columns sum to P_total_W"
-[ "$(wc -l <"$TMP/one.csv")" -eq 9 ] && head -1 "$TMP/one.csv" | grep -q '^index,operating.axial_load_N,operating.inner_speed_rpm,effects.thermal_expansion,status,.*,message,wall_ms$'
+[ "$(wc -l <"$TMP/one.csv")" -eq 10 ] && sed -n 2p "$TMP/one.csv" | grep -q '^index,fingerprint,operating.axial_load_N,operating.inner_speed_rpm,effects.thermal_expansion,status,.*,message,wall_ms$'
 t $? "CSV: header (grid keys, ..., wall_ms) + 8 rows"
 
 # The same point alone, through acbb run: the sweep changes nothing else.
@@ -101,22 +101,22 @@ t $? "the canonical form has no wall_ms"
 for k in 1 2 3; do
     sweep --shard $k/3 --jsonl "$TMP/s$k.jsonl" --csv "$TMP/s$k.csv" --jobs 1
 done
-[ "$(cat "$TMP"/s?.jsonl | wc -l)" -eq 8 ] && [ "$(wc -l <"$TMP/s2.jsonl")" -eq 3 ] \
-    && jq -s -e 'map(.index) | sort == [1,4,7]' "$TMP/s2.jsonl" >/dev/null 2>&1
+[ "$(cat "$TMP"/s?.jsonl | wc -l)" -eq 11 ] && [ "$(wc -l <"$TMP/s2.jsonl")" -eq 4 ] \
+    && jq -s -e '.[1:] | map(.index) | sort == [1,4,7]' "$TMP/s2.jsonl" >/dev/null 2>&1
 t $? "shards 1/3..3/3 split the 8 points; shard 2 = indices 1, 4, 7"
 "$ACBB" merge "$TMP/merged.jsonl" "$TMP/s3.jsonl" "$TMP/s1.jsonl" "$TMP/s2.jsonl" 2>>"$TMP/err"
 cmp -s "$TMP/merged.jsonl" "$TMP/canon.jsonl"
 t $? "JSONL: merged shards == one-machine canonical output, byte for byte"
 "$ACBB" merge "$TMP/canon.csv" "$TMP/one.csv" 2>>"$TMP/err"
 "$ACBB" merge "$TMP/merged.csv" "$TMP/s2.csv" "$TMP/s3.csv" "$TMP/s1.csv" 2>>"$TMP/err"
-cmp -s "$TMP/merged.csv" "$TMP/canon.csv" && [ "$(wc -l <"$TMP/canon.csv")" -eq 9 ]
+cmp -s "$TMP/merged.csv" "$TMP/canon.csv" && [ "$(wc -l <"$TMP/canon.csv")" -eq 10 ]
 t $? "CSV: merged shards == one-machine canonical output, byte for byte"
 "$ACBB" merge "$TMP/bad" "$TMP/s1.jsonl" "$TMP/s1.csv" 2>"$TMP/err"
 code $? 2 "merge refuses JSONL mixed with CSV"
 
 # ---- interrupt and resume ----
 sweep --jsonl "$TMP/part.jsonl" --csv "$TMP/part.csv" --max-points 3 --jobs 2
-[ "$(wc -l <"$TMP/part.jsonl")" -eq 3 ]
+[ "$(wc -l <"$TMP/part.jsonl")" -eq 4 ]
 t $? "--max-points 3 stops after 3 points"
 # A record cut in the middle (killed while writing) is dropped and re-run;
 # both files end with the same point (written in the same hand-off).
@@ -125,7 +125,7 @@ for f in part.jsonl part.csv; do
 done
 sweep --jsonl "$TMP/part.jsonl" --csv "$TMP/part.csv" --jobs 2
 code $? 0 "the resumed sweep exits 0"
-[ "$(wc -l <"$TMP/part.jsonl")" -eq 8 ] && [ "$(wc -l <"$TMP/part.csv")" -eq 9 ]
+[ "$(wc -l <"$TMP/part.jsonl")" -eq 9 ] && [ "$(wc -l <"$TMP/part.csv")" -eq 10 ]
 t $? "resumed: 8 records, none twice (the cut one re-run)"
 "$ACBB" merge "$TMP/res.jsonl" "$TMP/part.jsonl" 2>>"$TMP/err"
 cmp -s "$TMP/res.jsonl" "$TMP/canon.jsonl"
@@ -141,14 +141,14 @@ t $? "... and runs nothing (file unchanged)"
 "$ACBB" sweep "$PRESET" --grid operating.axial_load_N=1,2 --jsonl "$TMP/one.jsonl" \
     >"$TMP/out" 2>"$TMP/err"
 code $? 2 "resuming into a file of another grid exits 2"
-has "$TMP/err" "not a record of this sweep's grid" "the message says why"
+has "$TMP/err" "written by another sweep" "the message says why"
 
 # ---- a failed point is recorded; the sweep goes on ----
 "$ACBB" sweep "$PRESET" --set fidelity.model=quasi-static \
     --grid operating.axial_load_N=300,-5,600 --grid thermal.max_steps=3,20000 \
     --jsonl "$TMP/fail.jsonl" >"$TMP/out" 2>"$TMP/err"
 code $? 3 "a sweep with failed points exits 3"
-jq -s -e 'length == 6 and (map(.index) | sort == [0,1,2,3,4,5])' "$TMP/fail.jsonl" >/dev/null 2>&1
+jq -s -e '.[1:] | length == 6 and (map(.index) | sort == [0,1,2,3,4,5])' "$TMP/fail.jsonl" >/dev/null 2>&1
 t $? "every point recorded, failed ones too"
 jq -s -e 'map(select(.grid["operating.axial_load_N"] == -5)) | length == 2 and
     all(.[]; .status == "bad_input" and (.message | test("must be >= 0 N")) and .P_total_W == null)' \

@@ -141,11 +141,35 @@ static void change_pace(acbb_app *a, int dir)
 static void save(acbb_app *a, const char *path)
 {
     acbb_error err = { { 0 } };
-    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK) {
+    if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK && a->ed.conflict) {
+        a->mode = ACBB_MODE_CONFIRM; /* changed on disk: reload / overwrite / elsewhere */
+        a->confirm.kind = ACBB_CONFIRM_CHANGED;
+    } else if (err.msg[0]) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "save failed: %s", err.msg);
     } else {
         acbb_recover_clear(&a->ed);
         acbb_app_msg(a, ACBB_ROLE_OK, "saved %s", a->ed.path);
+    }
+}
+
+/* The file changed on disk since it was read (issue 20 item 2). */
+static void changed_key(acbb_app *a, int ch)
+{
+    acbb_error err = { { 0 } };
+    if (ch == 'r' || ch == 'R') {
+        char path[sizeof a->ed.path];
+        snprintf(path, sizeof path, "%s", a->ed.path);
+        acbb_recover_clear(&a->ed);
+        open_now(a, path);
+    } else if ((ch == 'o' || ch == 'O') && acbb_editor_overwrite(&a->ed, &err) == ACBB_OK) {
+        acbb_recover_clear(&a->ed);
+        acbb_app_msg(a, ACBB_ROLE_OK, "saved %s over the changes on disk", a->ed.path);
+    } else if (ch == 'o' || ch == 'O') {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "save failed: %s", err.msg);
+    } else if (ch == 's' || ch == 'S') {
+        acbb_app_prompt(a, ACBB_PROMPT_SAVE_AS, "save as: ", a->ed.path);
+    } else {
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "not saved (the file on disk is unchanged)");
     }
 }
 
@@ -359,6 +383,8 @@ static void confirm_key(acbb_app *a, int ch)
         } else {
             acbb_app_msg(a, ACBB_ROLE_OK, "edits restored from the recovery file (u undoes, w writes them)");
         }
+    } else if (a->confirm.kind == ACBB_CONFIRM_CHANGED) {
+        changed_key(a, ch);
     } else if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
         if (ch == 'y' || ch == 'Y') {
             acbb_recover_clear(&a->ed); /* the user chose to discard them */
@@ -419,6 +445,10 @@ static void draw_message(acbb_app *a)
         if (a->confirm.kind == ACBB_CONFIRM_QUIT)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
                      "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
+                     acbb_editor_name(&a->ed));
+        else if (a->confirm.kind == ACBB_CONFIRM_CHANGED)
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s changed on disk since it was read. "
+                     "r = reload it (drop my edits), o = overwrite, s = save elsewhere, n = cancel",
                      acbb_editor_name(&a->ed));
         else if (a->confirm.kind == ACBB_CONFIRM_RECOVER)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
@@ -551,6 +581,16 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     for (int k = 0; k < N_WAKES; k++) r->wake[k] = FD_ISSET(wake_fd(a, k), &rf);
 }
 
+/* Leaving on a signal or a second Ctrl-C: the edits go to the recovery
+ * file; when they cannot, that is said loudly on the restored terminal. */
+static void keep_edits(acbb_app *a)
+{
+    char why[sizeof a->leave_msg - 128];
+    if (acbb_recover_write(&a->ed, why, sizeof why) != 0)
+        snprintf(a->leave_msg, sizeof a->leave_msg, "acbb tui: UNSAVED EDITS OF %s ARE LOST: "
+                 "%s\n", a->ed.path[0] ? a->ed.path : "the default scene", why);
+}
+
 static void handle_signals(acbb_app *a, int *redraw)
 {
     acbb_term_events ev;
@@ -562,14 +602,14 @@ static void handle_signals(acbb_app *a, int *redraw)
     if (ev.fatal) {
         /* SIGTERM / SIGHUP / SIGQUIT: keep the edits, leave now; the
          * caller restores the terminal. */
-        acbb_recover_write(&a->ed);
+        keep_edits(a);
         a->quit = 1;
         a->exit_code = ACBB_EXIT_SIGNAL(ev.fatal);
     } else if (ev.interrupt) {
         /* Ctrl-C is "quit"; a second one while asking means yes, and the
          * edits go to the recovery file rather than being lost. */
         if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) {
-            acbb_recover_write(&a->ed);
+            keep_edits(a);
             a->quit = 1;
         }
         else {
@@ -603,7 +643,9 @@ static void loop(acbb_app *a)
     while (!a->quit) {
         double t = 1e-3 * acbb_now_ms();
         if (t - last_recover >= RECOVER_S) {
-            acbb_recover_write(&a->ed);
+            char why[sizeof a->leave_msg];
+            if (acbb_recover_write(&a->ed, why, sizeof why) != 0)
+                acbb_app_msg(a, ACBB_ROLE_WARN, "unsaved edits cannot be kept: %s", why);
             last_recover = t;
         }
         if (redraw || (stale && t - last_frame >= FRAME_S)) {
@@ -690,6 +732,7 @@ int acbb_app_run(const acbb_app_options *opt)
          * A running benchmark, sweep or sensitivity run is cancelled: it
          * stops within one step. */
         acbb_term_close(&a->term);
+        fputs(a->leave_msg, stderr);
         acbb_bench_free(a->bench);
         acbb_sweepjob_free(a->sweep);
         acbb_sensjob_free(a->sens);

@@ -25,7 +25,8 @@ typedef enum {
     ACBB_PROMPT_VALUE, ACBB_PROMPT_SAVE_AS, ACBB_PROMPT_OPEN, ACBB_PROMPT_SEARCH,
     ACBB_PROMPT_CALL               /* a screen's question: prompt.commit gets the answer */
 } acbb_prompt_kind;
-typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER } acbb_confirm_kind;
+typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER,
+               ACBB_CONFIRM_CHANGED } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
 #define ACBB_PREVIEW_MAX 65536
@@ -109,6 +110,7 @@ struct acbb_app {
         unsigned long seen_run;
     } sn;
     int quit, exit_code;
+    char leave_msg[768];      /* printed once the terminal is restored (recover.c) */
     acbb_chart chart;              /* scratch raster */
     acbb_axis_memo memo[ACBB_CHART_MEMOS]; /* Run chart, then the three history charts */
     int bigview;                   /* Run screen: presentation view (v) */

@@ -91,6 +91,8 @@ static void progress_tail(const acbb_app *a, double *f, char *tail, size_t n)
     switch (a->st.phase) {
     case ACBB_WORKER_RUNNING:
         if (a->prog.valid && a->prog.eta_s == 0.0) snprintf(tail, n, "%2.0f%% finishing", 100 * *f);
+        else if (a->prog.valid && a->prog.eta_s > 60.0) /* issue 20 item 8: say it is long */
+            snprintf(tail, n, "%2.0f%% eta %s LONG", 100 * *f, eta);
         else snprintf(tail, n, "%2.0f%% eta %s", 100 * *f, eta);
         break;
     case ACBB_WORKER_DONE:

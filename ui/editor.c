@@ -3,6 +3,8 @@
 #include <string.h>
 #include "editor.h"
 
+#define ACBB_EDITOR_LOCK_S 5.0 /* the TUI waits this long for another save */
+
 static int scenes_differ(const acbb_scene *a, const acbb_scene *b)
 {
     /* Field by field as text: struct padding makes memcmp unreliable, and
@@ -31,10 +33,16 @@ void acbb_editor_init(acbb_editor *e)
 acbb_status acbb_editor_open(acbb_editor *e, const char *path, acbb_error *err)
 {
     acbb_scene s;
+    acbb_file_stamp stamp;
     if (strlen(path) >= sizeof e->path)
         return acbb_error_set(err, ACBB_EINVAL, "%s: path too long", path);
-    acbb_status rc = acbb_scene_load(path, &s, err);
+    /* Stamped before reading: a change in between shows as a conflict at
+     * the save (the safe side), never as nothing. */
+    acbb_status rc = acbb_file_stamp_take(path, &stamp, err);
+    if (rc == ACBB_OK) rc = acbb_scene_load(path, &s, err);
     if (rc != ACBB_OK) return rc;
+    e->stamp = stamp;
+    e->conflict = 0;
     e->scene = s;
     e->saved = s;
     e->undo_n = 0;
@@ -102,20 +110,51 @@ int acbb_editor_undo(acbb_editor *e)
     return 1;
 }
 
-acbb_status acbb_editor_save(acbb_editor *e, const char *path, acbb_error *err)
+/* Under the lock: refuse when the file is no longer what was read (only
+ * for the file this editor read: `check`), save, stamp what was written. */
+static acbb_status save_locked(acbb_editor *e, const char *p, int check, acbb_error *err)
+{
+    acbb_file_stamp now;
+    acbb_status rc = acbb_file_stamp_take(p, &now, err);
+    if (rc != ACBB_OK) return rc;
+    if (check && acbb_file_stamp_changed(&e->stamp, &now)) {
+        e->conflict = 1;
+        return acbb_error_set(err, ACBB_EIO, "%s changed on disk since it was read", p);
+    }
+    /* Only the changed lines of the user's file are rewritten (comments and
+     * order stay); a new file is written in full. */
+    rc = acbb_scene_save_edits(p, &e->scene, err);
+    if (rc == ACBB_OK) rc = acbb_file_stamp_take(p, &e->stamp, err);
+    return rc;
+}
+
+static acbb_status save_to(acbb_editor *e, const char *path, int check, acbb_error *err)
 {
     const char *p = path ? path : e->path;
     if (!p[0]) return acbb_error_set(err, ACBB_EINVAL, "no file name: use save-as");
     if (strlen(p) >= sizeof e->path)
         return acbb_error_set(err, ACBB_EINVAL, "%s: path too long", p);
-    /* Only the changed lines of the user's file are rewritten (comments and
-     * order stay); a new file is written in full. */
-    acbb_status rc = acbb_scene_save_edits(p, &e->scene, err);
+    e->conflict = 0;
+    acbb_file_lock *lock = NULL;
+    acbb_status rc = acbb_file_lock_take(p, ACBB_EDITOR_LOCK_S, &lock, err);
+    if (rc != ACBB_OK) return rc;
+    rc = save_locked(e, p, check && strcmp(p, e->path) == 0, err);
+    acbb_file_lock_release(lock);
     if (rc != ACBB_OK) return rc;
     if (p != e->path) memmove(e->path, p, strlen(p) + 1);
     e->saved = e->scene;
     e->modified = 0;
     return ACBB_OK;
+}
+
+acbb_status acbb_editor_save(acbb_editor *e, const char *path, acbb_error *err)
+{
+    return save_to(e, path, 1, err);
+}
+
+acbb_status acbb_editor_overwrite(acbb_editor *e, acbb_error *err)
+{
+    return save_to(e, NULL, 0, err);
 }
 
 const char *acbb_editor_name(const acbb_editor *e)

@@ -11,6 +11,7 @@
 
 #include <limits.h>
 #include <stddef.h>
+#include "acbb/outfile.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
 
@@ -23,6 +24,8 @@ typedef struct {
     acbb_scene undo[ACBB_EDITOR_UNDO];
     int undo_n, undo_top;     /* entries held; index of the next push */
     int modified;
+    acbb_file_stamp stamp;    /* the file as last loaded or saved (outfile.h) */
+    int conflict;             /* the last save was refused: the file changed on disk */
     size_t cursor, top;       /* selected field, first field shown */
 } acbb_editor;
 
@@ -42,8 +45,14 @@ int acbb_editor_undo(acbb_editor *e);
 /* Save to `path` (NULL: the current path) atomically through
  * acbb_scene_save_edits: in an existing preset only the lines of changed
  * keys are rewritten, comments and order stay. On success the editor's
- * path becomes `path` and the marker clears. */
+ * path becomes `path` and the marker clears. The save holds the file's
+ * lock (outfile.h); saving to the current path is refused (ACBB_EIO,
+ * e->conflict = 1) when another program changed the file since it was
+ * loaded or saved (issue 20 item 2): the caller offers reload, overwrite
+ * (acbb_editor_overwrite) or save elsewhere. */
 acbb_status acbb_editor_save(acbb_editor *e, const char *path, acbb_error *err);
+/* Save to the current path even though it changed on disk. */
+acbb_status acbb_editor_overwrite(acbb_editor *e, acbb_error *err);
 /* Base name of the path for titles ("(default)" without one). */
 const char *acbb_editor_name(const acbb_editor *e);
 

@@ -4,8 +4,10 @@
  * opening that preset again offers to restore them.
  *
  * Where: $XDG_STATE_HOME/acbb/recover/ (default ~/.local/state/...), one
- * file per preset, named after the preset's absolute path with '/' as '%'.
- * A recovery file is a full preset (acbb_scene_save). */
+ * file per preset, "<base name>-<hash of the real path>.ini"; the
+ * directory must be the user's and writable by no one else (else nothing
+ * is written or offered: recover.c). A recovery file is a full preset
+ * (acbb_scene_save). */
 #ifndef ACBB_UI_RECOVER_H
 #define ACBB_UI_RECOVER_H
 
@@ -16,8 +18,10 @@
  * too, under the name "(default)"). 0, or -1 when no path can be made. */
 int acbb_recover_path(const acbb_editor *e, char *out, size_t n);
 /* Write the edits if the editor holds unsaved ones (0: written or nothing
- * to write; -1: could not write). */
-int acbb_recover_write(const acbb_editor *e);
+ * to write; -1: could not write, `why` says why and where). Without
+ * unsaved edits (undone back to the file) an older recovery file is
+ * removed: it would be a stale offer. */
+int acbb_recover_write(const acbb_editor *e, char *why, size_t wn);
 /* Forget the recovery file (after a save, or edits the user discarded). */
 void acbb_recover_clear(const acbb_editor *e);
 /* A recovery file newer than the preset itself exists: 1 and its path. */

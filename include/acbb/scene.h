@@ -196,6 +196,7 @@ typedef struct {
     double time_step;            /* initial thermal time step, s */
     acbb_fidelity_preset fidelity_preset; /* overrides the knobs above (fidelity.h) */
     double target_error;         /* fidelity.target_error_pct as a fraction, 0 = off */
+    double max_wall_s;           /* fidelity.max_wall_s: a run's computing time bound, 0 = none */
     double max_time;             /* simulated time limit, s */
     int max_steps;               /* coupled step limit */
     double temp_limit_C;         /* RUNAWAY above this node temperature, C */

@@ -17,7 +17,8 @@ typedef enum {
     ACBB_NONFINITE = -9,     /* a NaN/Inf was caught before publication */
     ACBB_SINGULAR = -10,     /* a linear system could not be factorised */
     ACBB_CANCELLED = -11,    /* the caller asked a long computation to stop */
-    ACBB_UNBALANCED = -12    /* the steady heat balance did not close (ACBB_BALANCE_TOL) */
+    ACBB_UNBALANCED = -12,   /* the steady heat balance did not close (ACBB_BALANCE_TOL) */
+    ACBB_WALL_LIMIT = -13    /* fidelity.max_wall_s of computing reached: last good state kept */
 } acbb_status;
 
 /* A converged run's network heat balance |in - out| must be within this

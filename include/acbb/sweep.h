@@ -24,6 +24,7 @@
 
 #include <stdatomic.h>
 #include <stddef.h>
+#include <stdint.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
@@ -95,5 +96,20 @@ acbb_status acbb_sweep_run(const acbb_sweep *g, const acbb_scene *base,
 
 /* How many points acbb_sweep_run would run with these options. */
 size_t acbb_sweep_n_todo(const acbb_sweep *g, const acbb_sweep_opts *o);
+
+/* The version of the sweep's output records (the CLI's JSONL and CSV):
+ * raised whenever a record's fields change, so outputs of different
+ * versions are never merged or resumed into each other. */
+#define ACBB_SWEEP_FORMAT 2
+
+/* What makes two outputs parts of one sweep (issue 20 items 3-4): FNV-1a
+ * 64 (outfile.h) over the record format, the run mode (opts.transient),
+ * the value of every scene key of `base` that the grid does not vary (as
+ * acbb_scene_field_format writes it) and every grid key with all its
+ * values in order. Equal on every machine for the same inputs. */
+uint64_t acbb_sweep_fingerprint(const acbb_sweep *g, const acbb_scene *base, int transient);
+/* Scene key i as "section.key" into key; 0 when the grid varies it (it is
+ * then not part of the fingerprint's scene) or i is out of range. */
+int acbb_sweep_scene_key(const acbb_sweep *g, size_t i, char *key, size_t n);
 
 #endif

@@ -143,9 +143,11 @@ static acbb_status open_target(acbb_out *o, const char *path, int want_stream, a
         return acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
     o->direct = o->existed && !S_ISREG(o->st.st_mode);
     if (o->direct && want_stream) {
-        o->fd = open(o->target, O_WRONLY | O_CLOEXEC | O_NOCTTY);
+        o->fd = acbb_out_open_special(o->target);
         if (o->fd < 0)
-            return acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path, strerror(errno));
+            return acbb_error_set(err, ACBB_EIO, "cannot write %s: %s", path,
+                                  errno == ENXIO ? "a FIFO with no reader (start the reader "
+                                  "first)" : strerror(errno));
         return ACBB_OK;
     }
     return open_temp(o, err);
@@ -223,10 +225,21 @@ static int copy_fd(int from, int out)
     }
 }
 
+/* A FIFO opened for writing blocks until a reader comes, maybe forever
+ * (issue 20 item 7): opened non-blocking, it fails at once with ENXIO when
+ * none is there; then writes block again as a pipe's should. */
+int acbb_out_open_special(const char *path)
+{
+    int fd = open(path, O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    int flags = fd >= 0 ? fcntl(fd, F_GETFL) : -1;
+    if (flags >= 0) (void)fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    return fd;
+}
+
 /* A non-regular target written by an external program: copy the bytes in. */
 static int copy_into(int from, const char *to)
 {
-    int out = open(to, O_WRONLY | O_CLOEXEC | O_NOCTTY);
+    int out = acbb_out_open_special(to);
     int bad = out < 0 || copy_fd(from, out) != 0;
     if (out >= 0 && close(out) != 0) bad = 1;
     return bad ? -1 : 0;

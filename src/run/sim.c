@@ -746,6 +746,22 @@ static int call_hook(acbb_sim *sim, const acbb_run_ctl *ctl)
     return ctl->hook(ctl->ctx, sim);
 }
 
+/* fidelity.max_wall_s (issue 20 item 8): the steps' own computing time
+ * (sim->wall_ms, hooks and pauses excluded) past the bound ends the run
+ * with the last step's state. Read only when a bound is set, so without
+ * one nothing depends on timing. */
+static int wall_limit(acbb_sim *sim)
+{
+    if (sim->s.max_wall_s <= 0 || sim->state != ACBB_RUN_RUNNING ||
+        sim->wall_ms < 1e3 * sim->s.max_wall_s)
+        return 0;
+    char why[96];
+    snprintf(why, sizeof why, "%g s", sim->s.max_wall_s);
+    fail(sim, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = %s reached; last good "
+         "state kept", why);
+    return 1;
+}
+
 acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
 {
     if (ctl && ctl->cancel) {
@@ -758,6 +774,7 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
         if (acbb_cancelled(sim->cancel))
             return fail(sim, ACBB_CANCELLED, "%s", "cancelled; last good state kept");
         acbb_sim_step(sim);
+        if (wall_limit(sim)) break;
         if (call_hook(sim, ctl)) break;
     }
     return sim->status;

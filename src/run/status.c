@@ -19,6 +19,7 @@ const char *acbb_status_name(acbb_status s)
     case ACBB_SINGULAR: return "singular";
     case ACBB_CANCELLED: return "cancelled";
     case ACBB_UNBALANCED: return "unbalanced";
+    case ACBB_WALL_LIMIT: return "wall_limit";
     }
     return "unknown";
 }

@@ -6,7 +6,11 @@
  * reports as a crash. */
 #include <stdio.h>
 #include <stdlib.h>
+#ifdef ACBB_FUZZ_HEADER
+#include ACBB_FUZZ_HEADER
+#else
 #include "fuzz_entry.h"
+#endif
 
 #ifndef ACBB_FUZZ_TARGET
 #error "define ACBB_FUZZ_TARGET (acbb_fuzz_preset or acbb_fuzz_set)"

@@ -1,0 +1,19 @@
+/* acbb fuzzing — entry points into the CLI's readers of user files (issue
+ * 20 item 10): `acbb merge` inputs and the `--baseline` JSON. Same
+ * outcomes as fuzz_entry.h. Harness state (temporary files, one baseline
+ * run) lives in fuzz_cli.c, never in the engine. */
+#ifndef ACBB_FUZZ_CLI_H
+#define ACBB_FUZZ_CLI_H
+
+#include "fuzz_entry.h"
+
+/* The input as one merge input file (then, when accepted, its output merged
+ * again): exit 0 or 2 only; an accepted merge is canonical (merging its
+ * output gives the same bytes) and holds no inf/nan. */
+acbb_fuzz_outcome acbb_fuzz_merge(const uint8_t *data, size_t size, char *why, size_t n);
+
+/* The input as the --baseline file of a quasi-static 7008C run: exit 0 or 2
+ * only, no inf/nan in the text table or the JSON. */
+acbb_fuzz_outcome acbb_fuzz_baseline(const uint8_t *data, size_t size, char *why, size_t n);
+
+#endif

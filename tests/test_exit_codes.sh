@@ -1,0 +1,111 @@
+#!/bin/sh
+# Exit codes as the README says, flag by flag (issue 20 item 9), TAP, from
+# one table: 0 done, 2 bad input (an output path that cannot be opened, an
+# output over an input, two formats on one stream), 3 not converged (the
+# wall-clock bound included), 4 a write that failed once open (/dev/full).
+# Also: no inf/nan in text output, --quiet quiet, FIFOs never hang.
+# $1 = the acbb binary; cwd = repository root.
+set -u
+ACBB=${1:?usage: test_exit_codes.sh path/to/acbb}
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-exit.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+. "$(dirname "$0")/tap.sh"
+
+P=presets/7008C.ini
+Q="--set fidelity.model=quasi-static"
+G="--grid operating.axial_load_N=100,200"
+cp "$P" "$TMP/keep.ini"
+"$ACBB" run "$P" $Q --json >"$TMP/base.json" 2>/dev/null
+: >"$TMP/in.jsonl"
+"$ACBB" sweep "$P" $Q $G --jsonl "$TMP/in.jsonl" >/dev/null 2>&1
+echo "not json" >"$TMP/garbage.json"
+NX=$TMP/no/such/dir
+
+# want | arguments (word-split; no spaces inside one argument)
+while IFS='|' read -r want args; do
+    case $want in ''|'#'*) continue ;; esac
+    # shellcheck disable=SC2086
+    timeout 120 "$ACBB" $args >"$TMP/out" 2>"$TMP/err" </dev/null
+    code $? "$want" "acbb$args"
+    [ "$want" -eq 0 ] || [ -s "$TMP/err" ] || { echo "#   (no message on stderr)"; }
+done <<EOF_TABLE
+0| run $P $Q --quiet
+2| run $P --josn
+2| run $TMP/nosuch.ini
+2| run $P --set operating.axial_load_N=-1
+3| run $P $Q --set thermal.max_steps=2 --json
+3| run $P --set fidelity.model=dynamic --max-wall 0.05 --json
+2| run $P --max-wall -1
+2| run $P --max-wall soon
+2| run $P $Q --csv $NX/x.csv
+4| run $P $Q --csv /dev/full
+2| run $P $Q --plot $NX/x.png
+2| run $P $Q --baseline $TMP/nosuch.json
+2| run $P $Q --baseline $TMP/garbage.json
+2| run $TMP/keep.ini $Q --csv $TMP/keep.ini
+2| run $P $Q --csv - --json
+2| run $P $Q --baseline $TMP/base.json --csv $TMP/base.json
+0| check $P
+2| check $P --set bearing.n_balls=0
+2| edit $TMP/keep.ini
+0| edit $TMP/keep.ini --set operating.radial_load_N=5
+2| sweep $P $Q $G --jsonl $TMP/x --csv $TMP/x
+2| sweep $P $Q $G --jsonl - --json
+2| sweep $P $Q $G --jsonl $NX/x.jsonl
+2| sweep $P $Q $G --csv $NX/x.csv
+4| sweep $P $Q $G --jsonl /dev/full
+4| sweep $P $Q $G --csv /dev/full
+0| sweep $P $Q $G --jsonl $TMP/in.jsonl
+2| merge $TMP/in.jsonl $TMP/in.jsonl
+2| merge $NX/m.jsonl $TMP/in.jsonl
+4| merge /dev/full $TMP/in.jsonl
+0| merge $TMP/m.jsonl $TMP/in.jsonl
+2| study $P --csv $NX/s.csv
+2| study $P --max-wall -3
+EOF_TABLE
+
+[ "$(cmp -s "$TMP/keep.ini" "$P"; echo $?)" = 1 ] && grep -q '^axial_load_N = 1000$' "$TMP/keep.ini" &&
+    ! grep -q '^iteration,' "$TMP/keep.ini"
+t $? "the preset named as --csv is still the preset (only the edit changed it)"
+
+# --max-wall: the named status and the last good state in the JSON.
+"$ACBB" run "$P" --set fidelity.model=dynamic --max-wall 0.05 --json >"$TMP/w.json" 2>/dev/null
+jq -e '.status == "wall_limit" and .iterations >= 1 and (.losses_W.total | . > 0)' \
+    "$TMP/w.json" >/dev/null 2>&1
+t $? "--max-wall ends wall_limit with the last good state (losses, iterations)"
+"$ACBB" run "$P" $Q --set fidelity.max_wall_s=1000 --json >"$TMP/w2.json" 2>/dev/null
+jq -e --slurpfile b "$TMP/base.json" '.status == "converged" and .losses_W.total == $b[0].losses_W.total
+    and .iterations == $b[0].iterations' "$TMP/w2.json" >/dev/null 2>&1
+t $? "a bound not reached changes nothing (same losses, same steps)"
+
+# No inf / nan in text: a baseline whose change overflows.
+jq '.losses_W.total = 1e-320 | .temperature_C.outer_ring = 1e308' "$TMP/base.json" >"$TMP/odd.json"
+"$ACBB" run "$P" $Q --set operating.axial_load_N=900 --baseline "$TMP/odd.json" >"$TMP/out" 2>&1
+! grep -qiw -e inf -e nan -e '-inf%' -e 'inf%' "$TMP/out" && grep -q 'losses_W.total' "$TMP/out"
+t $? "--baseline: an overflowing change prints '-', never inf or nan"
+"$ACBB" run "$P" $Q --set operating.axial_load_N=900 --baseline "$TMP/odd.json" --json >"$TMP/out" 2>&1
+jq -e '[.vs_baseline[] | select(.path == "losses_W.total")][0].change_pct == null' "$TMP/out" >/dev/null 2>&1
+t $? "--baseline --json: the overflowing percentage is null"
+"$ACBB" run "$P" $Q --baseline "$TMP/base.json" --quiet >"$TMP/out" 2>&1
+[ ! -s "$TMP/out" ]
+t $? "--quiet with --baseline prints nothing"
+
+# FIFOs: no reader is said at once; a FIFO preset is named as one.
+if mkfifo "$TMP/fifo" 2>/dev/null; then
+    timeout 60 "$ACBB" sweep "$P" $Q $G --jsonl "$TMP/fifo" >/dev/null 2>"$TMP/err"
+    code $? 2 "sweep --jsonl FIFO without a reader exits 2 at once"
+    has "$TMP/err" "a FIFO with no reader" "... saying so"
+    timeout 60 "$ACBB" run "$P" $Q --csv "$TMP/fifo" >/dev/null 2>"$TMP/err"
+    code $? 2 "run --csv FIFO without a reader exits 2 at once"
+    cat "$TMP/fifo" >"$TMP/fifo.out" &
+    reader=$!
+    timeout 60 "$ACBB" sweep "$P" $Q $G --jsonl "$TMP/fifo" >/dev/null 2>&1
+    code $? 0 "sweep --jsonl FIFO with a reader streams into it"
+    wait $reader
+    [ "$(wc -l <"$TMP/fifo.out")" -eq 3 ]
+    t $? "... the header and both records"
+    (cd "$TMP" && timeout 60 "$ACBB" run fifo) >/dev/null 2>"$TMP/err"
+    code $? 2 "a FIFO preset is refused"
+    has "$TMP/err" "a FIFO, not a regular file" "... as a FIFO, not 'no such file'"
+fi
+tap_done
