@@ -289,6 +289,10 @@ static acbb_status rule_surroundings(const acbb_scene *s, acbb_error *err)
     acbb_scene_surroundings(s, &u);
     char a[40], b[40];
     const char *od = show(s, "bearing", "outer_diameter_mm", b);
+    if (s->housing_bc == ACBB_BC_DERIVED)
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_exterior = derived: only "
+                              "the shaft bore and the end cap derive their boundary; the housing "
+                              "exterior is convective (the seed's) or fixed");
     if (!(u.housing_od > s->outer_diameter))
         return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_outer_diameter_mm = %s "
                               "with bearing.outer_diameter_mm = %s: the housing must be larger "
