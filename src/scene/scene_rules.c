@@ -480,6 +480,13 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
           { "cage_solid", "the model has no cage mechanics or cage expansion (MODEL.md 7); "
             "only the cage's density, specific heat and conductivity enter (the network)",
             "the cage's E, Poisson ratio or expansion (materials.cage_*)" } },
+        { s->loss_churning && s->lub_method != ACBB_LUB_OIL_BATH
+              && s->lub_method != ACBB_LUB_OIL_JET,
+          { "loss_churning", "oil-air and grease put no bulk oil in the bearing: churning needs "
+            "lubricant.method = oil-bath or oil-jet (MODEL.md 16)", "effects.loss_churning = on" } },
+        { s->loss_ehl_rolling && !s->ehl_film,
+          { "loss_ehl_rolling", "effects.ehl_film = off: no film, no EHL rolling resistance",
+            "effects.loss_ehl_rolling = on" } },
     };
     size_t n = 0;
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
