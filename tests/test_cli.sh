@@ -258,7 +258,9 @@ t $? "JSON: loss_set extended, ehl_rolling > 0, churning 0 with oil-air"
 jq -e '.loss_set == "seed" and .losses_W.ehl_rolling == 0' "$TMP/cage.json" >/dev/null
 t $? "JSON: the seed preset declares the seed set"
 "$ACBB" run presets/7008C.ini --set effects.loss_ehl_rolling=on --set effects.loss_churning=on \
-    --set effects.loss_cage=on >"$TMP/ext.txt" 2>&1
+    --set effects.loss_cage=on >"$TMP/ext.txt" 2>"$TMP/ext.err"
+grep -q 'loss_churning = on has no effect here' "$TMP/ext.err"
+t $? "churning with oil-air is named as inactive"
 awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/ext.txt"
 t $? "text summary with eight losses fits 80 columns"
 grep -q 'VG2 | VG3 .* VG1500' "$TMP/keys.txt"

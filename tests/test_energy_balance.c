@@ -52,8 +52,8 @@ static void test_heating_off(void)
        snap.heat_in, snap.heat_out);
 }
 
-/* Random valid scenes: speed, axial load, network, bore boundary, steady
- * mode (the direct solve, as batch runs use). rand_r: reproducible. */
+/* Random valid scenes: speed, axial load, network, bore boundary, the EHL
+ * rolling loss; steady and transient. rand_r: reproducible. */
 static void test_random_sample(void)
 {
     unsigned seed = 18;
@@ -64,7 +64,9 @@ static void test_random_sample(void)
         acbb_scene_default(&s);
         int net = k % 2;
         s.network = net ? ACBB_NET_7 : ACBB_NET_46;
-        s.thermal_mode = ACBB_THERMAL_STEADY;
+        /* every fourth point transient (the issue's case is), the rest the
+         * direct steady solve */
+        s.thermal_mode = k % 4 == 3 ? ACBB_THERMAL_TRANSIENT : ACBB_THERMAL_STEADY;
         s.model = ACBB_MODEL_QUASI_STATIC;
         s.inner_speed = (2000 + rand_r(&seed) % 14000) * 2 * M_PI / 60;
         s.axial_load = 100 + rand_r(&seed) % 900;

@@ -161,8 +161,51 @@ static void test_seed_unmoved(void)
        snap.losses.P[ACBB_LOSS_EHL_ROLLING]);
 }
 
+/* The drag medium by method: the oil-air flow ratio (oil-air, oil-jet),
+ * air alone for grease and above an oil bath. */
+static void test_mixture_by_method(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    acbb_oil_state oil = { .T_C = 40, .rho = 864.6, .nu = 30e-6, .eta0 = 864.6 * 30e-6 };
+    acbb_mixture m;
+    acbb_mixture_at(&s, &oil, &m);
+    IS_CLOSE(m.X, s.q_oil / (s.q_oil + s.q_air), 1e-15, 0, "oil-air: X = q_oil / (q_oil + q_air)");
+    s.lub_method = ACBB_LUB_GREASE;
+    acbb_mixture_at(&s, &oil, &m);
+    ok(m.X == 0.0 && m.rho == s.air_density, "grease: air alone (X 0, rho %.4g)", m.rho);
+    s.lub_method = ACBB_LUB_OIL_BATH;
+    acbb_mixture_at(&s, &oil, &m);
+    ok(m.X == 0.0, "oil bath: air above the bath");
+}
+
+/* An oil-bath run: churning > 0 and heat to the cavity; the air drag acts
+ * on the rest of the orbit only. */
+static void test_bath_run(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.inner_speed = 3000 * 2 * M_PI / 60;
+    s.lub_method = ACBB_LUB_OIL_BATH;
+    s.bath_level = 0.5 * s.ball_diameter;
+    s.loss_churning = true;
+    s.thermal_mode = ACBB_THERMAL_STEADY;
+    acbb_sim *sim = NULL;
+    acbb_error err = { "" };
+    acbb_snapshot snap;
+    ok(acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
+       "oil-bath run converges: %s", err.msg);
+    acbb_sim_snapshot(sim, &snap);
+    acbb_sim_free(sim);
+    ok(snap.losses.P[ACBB_LOSS_CHURNING] > 0, "oil bath at half a ball: churning %.4g W",
+       snap.losses.P[ACBB_LOSS_CHURNING]);
+    IS_CLOSE(snap.heat_in, snap.heat_out, 1e-6, 0, "and the heat balances");
+}
+
 int main(void)
 {
+    test_mixture_by_method();
+    test_bath_run();
     test_force_hand();
     test_starvation_hand();
     test_contact_loss();

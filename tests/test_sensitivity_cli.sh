@@ -24,7 +24,7 @@ jqt "$TMP/q.json" '.metric == "balls[0].Qi_N" and .delta == "thermal_expansion" 
 jqt "$TMP/q.json" '(.inputs | length) >= 20 and all(.inputs[]; .source | length > 0)' \
     "every uncertain input listed with the source of its range"
 jqt "$TMP/q.json" '[.inputs[] | select(.key == "surroundings.shaft_bore")][0] |
-    .flips == true and .at_high > 0 and .low == "fixed" and .high == "convective"' \
+    .flips == true and .at_high > 0 and .low == "derived" and .high == "convective"' \
     "convective shaft bore flips the sign"
 jqt "$TMP/q.json" '. as $r | all(.inputs[]; .flips == (((.at_low // 0) * $r.value < 0) or
     ((.at_high // 0) * $r.value < 0)))' "flips follow from the end values"

@@ -30,8 +30,13 @@ static void section(acbb_json *j, const acbb_snapshot *s, const char *name)
     acbb_json_close(j, '}');
 }
 
-static void scene(acbb_json *j, const acbb_scene *sc)
+static void scene(acbb_json *j, const acbb_scene *sc0)
 {
+    /* A graded oil's viscosities as the run resolves them (MODEL.md 16),
+     * so the keys rerun to the same result; a custom oil is unchanged. */
+    acbb_scene r = *sc0;
+    acbb_lubricant_apply(&r);
+    const acbb_scene *sc = &r;
     acbb_json_open(j, "scene", '{', false);
     acbb_json_num(j, "inner_speed_rpm", acbb_rads_to_rpm(sc->inner_speed));
     acbb_json_num(j, "axial_load_N", sc->axial_load);

@@ -187,11 +187,14 @@ double acbb_tau_lubricant(const acbb_scene *s, double eta, double du, double H, 
 }
 
 /* Oil-air mixture (MODEL.md section 6 note ii): volume-fraction weighted
- * density and viscosity, mass-weighted specific heat. */
+ * density and viscosity, mass-weighted specific heat. The oil fraction is
+ * the flow ratio for oil-air and oil-jet; grease and an oil bath put no
+ * oil mist in the cavity's air (MODEL.md 16: the bath's drag is churning). */
 void acbb_mixture_at(const acbb_scene *s, const acbb_oil_state *o, acbb_mixture *m)
 {
     double q = s->q_oil + s->q_air;
-    double X = q > 0.0 ? s->q_oil / q : 0.0;
+    int mist = s->lub_method == ACBB_LUB_OIL_AIR || s->lub_method == ACBB_LUB_OIL_JET;
+    double X = mist && q > 0.0 ? s->q_oil / q : 0.0;
     double m_oil = X * o->rho, m_air = (1.0 - X) * s->air_density;
     m->X = X;
     m->rho = m_oil + m_air;

@@ -210,7 +210,9 @@ static double oil_eta(const acbb_scene *s, double T_C)
 static void fluid_at(const acbb_scene *s, double T_C, net_fluid *f)
 {
     double qt = s->q_oil + s->q_air;
-    double X = qt > 0.0 ? s->q_oil / qt : 0.0;
+    /* the cavity medium by method, as acbb_mixture_at (MODEL.md 16) */
+    int mist = s->lub_method == ACBB_LUB_OIL_AIR || s->lub_method == ACBB_LUB_OIL_JET;
+    double X = mist && qt > 0.0 ? s->q_oil / qt : 0.0;
     double rho_oil = s->oil_density * (1.0 - 6.5e-4 * (T_C - 20.0));
     double rho = X * rho_oil + (1.0 - X) * s->air_density;
     double eta = X * oil_eta(s, T_C) + (1.0 - X) * s->air_eta;

@@ -291,6 +291,10 @@ static acbb_status rule_surroundings(const acbb_scene *s, acbb_error *err)
     acbb_scene_surroundings(s, &u);
     char a[40], b[40];
     const char *od = show(s, "bearing", "outer_diameter_mm", b);
+    if (s->housing_bc == ACBB_BC_DERIVED)
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_exterior = derived: only "
+                              "the shaft bore and the end cap derive their boundary; the housing "
+                              "exterior is convective (the seed's) or fixed");
     if (!(u.housing_od > s->outer_diameter))
         return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_outer_diameter_mm = %s "
                               "with bearing.outer_diameter_mm = %s: the housing must be larger "
@@ -538,6 +542,13 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
           { "cage_solid", "the model has no cage mechanics or cage expansion (MODEL.md 7); "
             "only the cage's density, specific heat and conductivity enter (the network)",
             "the cage's E, Poisson ratio or expansion (materials.cage_*)" } },
+        { s->loss_churning && s->lub_method != ACBB_LUB_OIL_BATH
+              && s->lub_method != ACBB_LUB_OIL_JET,
+          { "loss_churning", "oil-air and grease put no bulk oil in the bearing: churning needs "
+            "lubricant.method = oil-bath or oil-jet (MODEL.md 16)", "effects.loss_churning = on" } },
+        { s->loss_ehl_rolling && !s->ehl_film,
+          { "loss_ehl_rolling", "effects.ehl_film = off: no film, no EHL rolling resistance",
+            "effects.loss_ehl_rolling = on" } },
     };
     size_t n = 0;
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
