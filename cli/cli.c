@@ -13,6 +13,7 @@
 #include "acbb/batch.h"
 #include "acbb/history.h"
 #include "acbb/set.h"
+#include "acbb/life_eval.h"
 #include "acbb/measure.h"
 #include "acbb/scene.h"
 #include "acbb/fidelity.h"
@@ -150,6 +151,13 @@ static int run_report(const acbb_cli_args *a, const char *preset, const acbb_sce
     if (!json && !a->val[CLI_OPT_QUIET] && br) acbb_cli_print_branches(&o, br);
     if (base) rc = acbb_cli_baseline(base, sc, snap, json, a->val[CLI_OPT_QUIET] != NULL);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
+    if (snap->life.edge_loaded && !a->val[CLI_OPT_QUIET]) { /* MODEL.md 15: a named warning */
+        char c[32];
+        acbb_life_contact_name(snap->life.edge_ball, snap->life.edge_race, c, sizeof c);
+        fprintf(stderr, "acbb: warning: edge loading: the contact ellipse of %s passes its "
+                "shoulder by %.2f deg (life.inner_shoulder_mm, life.outer_shoulder_mm)\n", c,
+                -snap->life.edge_margin_deg);
+    }
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);
         rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);

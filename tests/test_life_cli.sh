@@ -28,9 +28,13 @@ t $? "acbb metrics lists life.Lnmr_h (h) and life.s0_min"
 "$ACBB" run presets/combined-load.ini >"$TMP/summary" 2>/dev/null
 grep -q '^life  *C [0-9.]* kN, C0 ' "$TMP/summary" && grep -q 'L10r .* h, Lnmr ' "$TMP/summary"
 t $? "the text summary has the life lines"
-"$ACBB" run presets/combined-load.ini --set life.inner_shoulder_mm=0.3 --json 2>/dev/null |
-    jq -e '.life.edge_loaded == true and .life.edge_margin_deg < 0' >/dev/null
+"$ACBB" run presets/combined-load.ini --set life.inner_shoulder_mm=0.3 --json \
+    >"$TMP/edge.json" 2>"$TMP/err"
+jq -e '.life.edge_loaded == true and .life.edge_margin_deg < 0' "$TMP/edge.json" >/dev/null
 t $? "a 0.3 mm inner shoulder: edge_loaded"
+grep -q '^acbb: warning: edge loading: the contact ellipse of inner ball [0-9]* passes its shoulder' \
+    "$TMP/err"
+t $? "  and a named warning on stderr"
 "$ACBB" run presets/combined-load.ini --set life.reliability_pct=80 >/dev/null 2>"$TMP/err"
 code $? 2 "reliability 80 % refused"
 has "$TMP/err" "life.reliability_pct" "  the message names the key"
