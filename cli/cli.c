@@ -227,10 +227,10 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
                              cancel });
     acbb_branches br_store, *br = NULL; /* the other branch (acbb/branches.h) */
     acbb_error berr;
-    acbb_cli_progress_note(&prog, "solving the other branch (steady solve vs transient)");
-    if (!acbb_cli_interrupted() && acbb_cli_branches_wanted(a, &sc)
-        && acbb_branches_compare(&sc, snap, cancel, &br_store, &berr) == ACBB_OK)
-        br = &br_store;
+    if (!acbb_cli_interrupted() && acbb_cli_branches_wanted(a, &sc)) {
+        acbb_cli_progress_note(&prog, "solving the other branch (steady solve vs transient)");
+        if (acbb_branches_compare(&sc, snap, cancel, &br_store, &berr) == ACBB_OK) br = &br_store;
+    }
     acbb_cli_progress_end(&prog);
     acbb_cli_interrupt_end();
     acbb_snapshot *bear = bearing_snaps(sim, snap);

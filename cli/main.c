@@ -39,7 +39,10 @@ const acbb_cli_command acbb_cli_commands[] = {
       O(PACE) | O(PLOT_DIR) | O(EXIT_AFTER_STEADY) | O(NO_MOUSE), 0, 1, -1, cmd_tui },
     { "run", NULL, "PRESET", "run the coupled model to thermal steady state",
       "--csv writes one row per coupled step; --plot FILE.png writes the temperature\n"
-      "plot there and the other kinds next to it (FILE-losses.png, ...).\n",
+      "plot there and the other kinds next to it (FILE-losses.png, ...).\n"
+      "A [schedule] section (row = t_s, speed_rpm, axial_N, radial_N) makes the\n"
+      "transient follow a run-in; with it, or with mounting.preload = displacement,\n"
+      "the steady solve runs too and the output says whether both reach one branch.\n",
       SCENE_OPTS | O(JSON) | O(CSV) | O(QUIET) | O(PLOT) | O(BASELINE)
       | O(BRANCHES) | O(MAX_WALL), 1, 1, 0,
       acbb_cli_cmd_run },

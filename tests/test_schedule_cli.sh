@@ -79,6 +79,23 @@ diff <(sed -n '/^\[schedule\]/,$p' presets/run-in-ramp.ini) \
     >/dev/null
 t $? "acbb edit: the [schedule] section unchanged"
 
+# --set schedule.rows: every row at once (';' between rows); "" removes them.
+cp presets/runaway-rigid-preload.ini "$TMP/new.ini"
+"$ACBB" edit "$TMP/new.ini" --set 'schedule.rows=0, 0, 1000, 0; 600, 16000, 1000, 0' >/dev/null 2>&1
+[ "$(sed -n '/^\[schedule\]/,$p' "$TMP/new.ini")" = "$(printf '[schedule]\nrow = 0, 0, 1000, 0\nrow = 600, 16000, 1000, 0')" ]
+t $? "acbb edit --set schedule.rows writes a [schedule] section"
+"$ACBB" run "$TMP/new.ini" --json >"$TMP/new.json" 2>/dev/null
+jqt "$TMP/new.json" '.status == "converged" and .branches.agree == true' \
+    "  a 600 s ramp to 16000 rpm: converged, the steady solve's branch"
+"$ACBB" edit "$TMP/new.ini" --set 'schedule.rows=' >/dev/null 2>&1
+"$ACBB" run "$TMP/new.ini" --json >"$TMP/new0.json" 2>/dev/null
+jqt "$TMP/new0.json" '.status == "runaway" and (has("schedule") | not)' \
+    "  schedule.rows= removes the rows: the step start runs away again"
+"$ACBB" check "$TMP/new.ini" --set 'schedule.rows=0,0,1000,0;0,5,1000,0' 2>"$TMP/err" >/dev/null
+t $([ $? -eq 2 ]; echo $?) "--set schedule.rows with equal times: exit 2"
+grep -q "schedule row 2 (t = 0 s): times must increase strictly" "$TMP/err"
+t $? "  with the row and the rule"
+
 # Bad rows: exit 2, file:line, the rule.
 printf '[schedule]\nrow = 0, 0, 1000, 0\nrow = 10, 200000, 1000, 0\n' >"$TMP/bad.ini"
 "$ACBB" check "$TMP/bad.ini" 2>"$TMP/err" >/dev/null

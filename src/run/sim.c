@@ -468,6 +468,23 @@ static acbb_status steady_step(acbb_sim *sim, double relax, double *Tn, double *
 static void save(acbb_sim *sim, checkpoint *k);
 static void restore(acbb_sim *sim, const checkpoint *k);
 
+/* A transient with a [schedule] follows its rows (schedule.h); the steady
+ * solve and an isothermal run take the last row once, in sim_init. */
+static int follows_schedule(const acbb_sim *sim)
+{
+    return sim->s.schedule_n > 0 && sim->s.thermal_mode == ACBB_THERMAL_TRANSIENT
+           && sim->s.heating;
+}
+
+/* The schedule's operating point at time t into sim->s. */
+static void schedule_point(acbb_sim *sim, double t)
+{
+    if (!follows_schedule(sim)) return;
+    acbb_operating op;
+    acbb_schedule_at(&sim->s, t, &op);
+    acbb_schedule_apply(&sim->s, &op);
+}
+
 static acbb_status polish(acbb_sim *sim, acbb_error *err)
 {
     double Tn[ACBB_MAX_NODES], dT = 0.0;
@@ -517,10 +534,7 @@ static void restore(acbb_sim *sim, const checkpoint *k)
     sim->loss = k->loss;
     sim->heat = k->heat;
     memcpy(sim->q, k->q, sizeof k->q);
-    acbb_operating op; /* the kept state's operating point (the mechanics follow at the next evaluation) */
-    acbb_schedule_at(&sim->s, sim->time, &op);
-    if (sim->s.schedule_n > 0 && sim->s.thermal_mode == ACBB_THERMAL_TRANSIENT)
-        acbb_schedule_apply(&sim->s, &op);
+    schedule_point(sim, sim->time); /* the kept state's; the mechanics follow when evaluated */
     acbb_net_inputs in;
     network_inputs(sim, &in);
     acbb_network_update(&sim->nw, &sim->s, &in); /* resistances of the kept state */
@@ -531,12 +545,10 @@ static void restore(acbb_sim *sim, const checkpoint *k)
  * warm-started from the last state, the displacement preload's dx held. */
 static acbb_status follow_schedule(acbb_sim *sim, double t, acbb_error *err)
 {
-    if (sim->s.schedule_n == 0 || sim->s.thermal_mode == ACBB_THERMAL_STEADY || !sim->s.heating)
-        return ACBB_OK;
-    acbb_operating op;
-    acbb_schedule_at(&sim->s, t, &op);
-    acbb_schedule_apply(&sim->s, &op);
-    if (op.axial_load == sim->bound_axial && op.radial_load == sim->bound_radial) return ACBB_OK;
+    if (!follows_schedule(sim)) return ACBB_OK;
+    schedule_point(sim, t);
+    const acbb_scene *s = &sim->s;
+    if (s->axial_load == sim->bound_axial && s->radial_load == sim->bound_radial) return ACBB_OK;
     acbb_mech *m;
     acbb_status rc = acbb_mech_new(&sim->s, &m, err);
     if (rc != ACBB_OK) return rc;
@@ -544,8 +556,8 @@ static acbb_status follow_schedule(acbb_sim *sim, double t, acbb_error *err)
     acbb_mech_adopt_state(m, &sim->ms);
     acbb_mech_free(sim->mech);
     sim->mech = m;
-    sim->bound_axial = op.axial_load;
-    sim->bound_radial = op.radial_load;
+    sim->bound_axial = s->axial_load;
+    sim->bound_radial = s->radial_load;
     return ACBB_OK;
 }
 
@@ -553,7 +565,7 @@ static acbb_status follow_schedule(acbb_sim *sim, double t, acbb_error *err)
  * long hold would be jumped), nor settle before the last row. */
 static int schedule_done(acbb_sim *sim)
 {
-    if (sim->s.schedule_n == 0 || sim->s.thermal_mode == ACBB_THERMAL_STEADY) return 1;
+    if (!follows_schedule(sim)) return 1;
     acbb_operating op;
     acbb_schedule_at(&sim->s, sim->time, &op);
     if (op.finished) return 1;

@@ -88,6 +88,12 @@ acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_e
  * -1: none), so that a file's message can name the row's line. */
 acbb_status acbb_sf_schedule_check(const acbb_scene *s, int *row, acbb_error *err);
 
+/* `schedule.rows = t_s, speed_rpm, axial_N, radial_N; ...` (every row at
+ * once, ';' between rows; "" = no schedule) as acbb_scene_set* take it;
+ * cross_check: the scene's rules too. `s` unchanged on failure. */
+acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *value,
+                                 int cross_check, acbb_error *err);
+
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);
 

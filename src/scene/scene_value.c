@@ -213,6 +213,8 @@ static acbb_status set_one_raw(acbb_scene *s, const char *dotted_key, const char
     if (len >= sizeof section) len = sizeof section - 1;
     memcpy(section, dotted_key, len);
     section[len] = '\0';
+    if (strcmp(section, "schedule") == 0)   /* schedule.rows (schedule.c) */
+        return acbb_sf_schedule_set(s, dot + 1, value, cross_check, err);
     const acbb_sfield *f = acbb_sf_find(section, dot + 1);
     if (!f) return acbb_sf_unknown_key(section, dot + 1, err);
 

@@ -166,6 +166,34 @@ void acbb_schedule_format_row(const acbb_scene *s, int i, char *buf, size_t n)
     snprintf(buf, n, "%s, %s, %s, %s", v[0], v[1], v[2], v[3]);
 }
 
+/* ---- all rows as one value (--set schedule.rows=...) ---- */
+
+acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *value,
+                                 int cross_check, acbb_error *err)
+{
+    if (strcmp(key, "rows") != 0)
+        return acbb_error_set(err, ACBB_EINVAL, "schedule.%s: unknown key (schedule.rows = "
+                              "\"t_s, speed_rpm, axial_N, radial_N; ...\", ';' between rows)", key);
+    char *buf = strdup(value);
+    if (!buf) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    acbb_scene trial = *s;
+    trial.schedule_n = 0;
+    acbb_status rc = ACBB_OK;
+    for (char *save = NULL, *p = strtok_r(buf, ";", &save); p && rc == ACBB_OK;
+         p = strtok_r(NULL, ";", &save)) {
+        if (p[strspn(p, " \t")] == '\0') continue;   /* "" or a trailing ';' */
+        if (trial.schedule_n == ACBB_SCHEDULE_MAX)
+            rc = acbb_error_set(err, ACBB_EINVAL, "schedule.rows: more than %d rows",
+                                ACBB_SCHEDULE_MAX);
+        else
+            rc = acbb_schedule_parse_row(p, &trial.schedule[trial.schedule_n++], err);
+    }
+    free(buf);
+    if (rc == ACBB_OK && cross_check) rc = acbb_scene_validate(&trial, err);
+    if (rc == ACBB_OK) *s = trial;
+    return rc;
+}
+
 /* ---- rules ---- */
 
 static acbb_status row_fail_code(const acbb_scene *s, int i, acbb_status code, acbb_error *err,
