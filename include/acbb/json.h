@@ -56,7 +56,9 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
 /* The same for a bearing set (MODEL.md 14) with b[0..n) its bearings'
  * snapshots (acbb_sim_bearing_snapshot): adds `bearings` (one object per
  * bearing, bearing 0 first, with its single-bearing results) and `set`
- * (the output table's "set" entries). n <= 1 or b NULL: acbb_json_write_run. */
+ * (the output table's "set" entries). Without them (b NULL, or
+ * acbb_json_write_run) a set's document has `set` but no `bearings`; a
+ * single bearing's has neither. */
 void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
                              const acbb_snapshot *b, int n);
 /* A run that never started (acbb_sim_new failed): status, message,

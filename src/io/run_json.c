@@ -116,11 +116,14 @@ static void bearing(acbb_json *j, const acbb_snapshot *b, const acbb_set_view *v
     acbb_json_close(j, '}');
 }
 
+/* A set's `bearings` (when their snapshots are given) and `set`. */
 static void set_part(acbb_json *j, const acbb_snapshot *s, const acbb_snapshot *b, int n)
 {
-    acbb_json_open(j, "bearings", '[', false);
-    for (int k = 0; k < n; k++) bearing(j, &b[k], &s->set, k);
-    acbb_json_close(j, ']');
+    if (b) {
+        acbb_json_open(j, "bearings", '[', false);
+        for (int k = 0; k < n; k++) bearing(j, &b[k], &s->set, k);
+        acbb_json_close(j, ']');
+    }
     section(j, s, "set");
 }
 
@@ -152,7 +155,7 @@ void acbb_json_write_run_set(acbb_json *j, const acbb_scene *sc, const acbb_snap
     acbb_json_close(j, ']');
 
     section(j, s, "energy_W");
-    if (b && n > 1) set_part(j, s, b, n);
+    if (s->n_bearings > 1) set_part(j, s, n == s->n_bearings ? b : NULL, s->n_bearings);
 
     scene(j, sc);
     acbb_json_close(j, '}');
