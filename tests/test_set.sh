@@ -66,6 +66,19 @@ t $? "run --csv of a pair: set_preload_N and T_outer_ring_C_k columns; last row'
 "$ACBB" run presets/7008C.ini --set effects.heating=off --csv "$TMP/one.csv" >/dev/null
 head -n 1 "$TMP/one.csv" | grep -qv set_preload
 t $? "run --csv of one bearing: no set columns"
+# gnuplot: the preload and each bearing's outer ring over time.
+if command -v gnuplot >/dev/null 2>&1; then
+    "$ACBB" plot presets/pair-DF-heated.ini --kind set-temperature --dumb >"$TMP/plot.txt" 2>&1 &&
+        grep -q 'bearing 0' "$TMP/plot.txt" && grep -q 'bearing 1' "$TMP/plot.txt"
+    t $? "plot --kind set-temperature: one curve per bearing"
+    "$ACBB" plot presets/7008C.ini --set effects.heating=off --kind set-preload --dumb \
+        >/dev/null 2>"$TMP/err"
+    [ $? = 2 ] && grep -q 'needs a bearing set' "$TMP/err"
+    t $? "plot --kind set-preload of one bearing: refused, exit 2"
+else
+    skip "plot --kind set-temperature" "gnuplot is not installed"
+    skip "plot --kind set-preload of one bearing" "gnuplot is not installed"
+fi
 jqt "$TMP/hDB.json" '.set.spacer_growth_um > 0' "heated pair: the shaft grows axially more than the housing"
 db=$(jq '.set.preload_N' "$TMP/hDB.json")
 jqt "$TMP/hDF.json" ".set.preload_N > $db + 50" "heated alike: DF preload rises more than DB's ($db N)"
