@@ -151,20 +151,33 @@ static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb
 
 typedef struct { double Fa, Fr, M; } loads;
 
+/* Solve the shaft under other external loads in *w (its q the warm
+ * start), leaving the members there. */
+static acbb_status solve_loads(acbb_set_sim *ss, loads L, acbb_set_mech *w)
+{
+    w->Fa = L.Fa;
+    w->Fr = L.Fr;
+    w->M = L.M;
+    acbb_set_member mb[ACBB_MAX_SET];
+    members(ss, mb);
+    return acbb_set_mech_solve(w, mb, ss->s.inner_speed, NULL);
+}
+
+static void keep_members(acbb_set_sim *ss, int back)
+{
+    for (int k = 0; k < ss->n; k++)
+        if (back) acbb_mech_state_copy(acbb_simm_ms(ss->b[k]), ss->scratch[k]);
+        else acbb_mech_state_copy(ss->scratch[k], acbb_simm_ms(ss->b[k]));
+}
+
 /* Solve the shaft under other external loads into *out; the members and
  * the set's own solution are put back afterwards. */
 static acbb_status probe(acbb_set_sim *ss, loads L, acbb_set_mech *out)
 {
-    for (int k = 0; k < ss->n; k++) acbb_mech_state_copy(ss->scratch[k], acbb_simm_ms(ss->b[k]));
+    keep_members(ss, 0);
     *out = ss->sm;
-    out->Fa = L.Fa;
-    out->Fr = L.Fr;
-    out->M = L.M;
-    acbb_set_member mb[ACBB_MAX_SET];
-    members(ss, mb);
-    acbb_status rc = acbb_set_mech_solve(out, mb, ss->s.inner_speed, NULL);
-    for (int k = 0; k < ss->n; k++)
-        acbb_mech_state_copy(acbb_simm_ms(ss->b[k]), ss->scratch[k]);
+    acbb_status rc = solve_loads(ss, L, out);
+    keep_members(ss, 1);
     return rc;
 }
 
@@ -194,13 +207,14 @@ static int has_side(const acbb_set_mech *sm, int s)
     return 0;
 }
 
-/* Load left on the side that a thrust `dir` unloads. */
-static double unloading_side(acbb_set_sim *ss, double Fa, int side, int *ok)
+/* Load left on `side` under thrust Fa, solved in *w from its last
+ * solution (the lift-off search walks the thrust: each solve starts from
+ * the previous one, not from the run's state). */
+static double unloading_side(acbb_set_sim *ss, acbb_set_mech *w, double Fa, int side, int *ok)
 {
-    acbb_set_mech p;
-    *ok = probe(ss, (loads){ Fa, ss->sm.Fr, ss->sm.M }, &p) == ACBB_OK;
+    *ok = solve_loads(ss, (loads){ Fa, ss->sm.Fr, ss->sm.M }, w) == ACBB_OK;
     double F = 0.0;
-    for (int k = 0; k < p.n; k++) if (p.orient[k] == side) F += p.Fx[k];
+    for (int k = 0; k < w->n; k++) if (w->orient[k] == side) F += w->Fx[k];
     return F;
 }
 
@@ -211,22 +225,21 @@ static double unloading_side(acbb_set_sim *ss, double Fa, int side, int *ok)
  * opposed set unloads its -1 side under +x thrust; a spring set's floating
  * side keeps the spring force, so thrust the other way unloads the +1 side
  * at the spring force. A tandem set has no opposite side: 0. */
-typedef struct { acbb_set_sim *ss; int side, dir, ok; double eps; } lift_ctx;
+typedef struct { acbb_set_sim *ss; acbb_set_mech w; int side, dir, ok; double eps; } lift_ctx;
 
 static double lift_fn(double Fa, void *p)
 {
     lift_ctx *c = p;
     int ok;
-    double F = unloading_side(c->ss, Fa * c->dir, c->side, &ok);
+    double F = unloading_side(c->ss, &c->w, Fa * c->dir, c->side, &ok);
     c->ok &= ok;
     return cbrt(F * F) - cbrt(c->eps * c->eps);
 }
 
-static double liftoff(acbb_set_sim *ss)
+static double search_liftoff(lift_ctx *cp)
 {
-    if (!has_side(&ss->sm, 1) || !has_side(&ss->sm, -1)) return 0.0;
-    int side = ss->sm.spring ? 1 : -1;
-    lift_ctx c = { ss, side, -side, 1, 1e-6 * ss->sm.Fp };
+    lift_ctx c = *cp;
+    acbb_set_sim *ss = c.ss;
     double lo = ss->sm.Fa * c.dir, hi = fmax(lo, 0.0) + ss->sm.Fp;
     double flo = lift_fn(lo, &c), fhi = lift_fn(hi, &c);
     if (flo <= 0.0 || !c.ok) return 0.0;
@@ -247,7 +260,19 @@ static double liftoff(acbb_set_sim *ss)
         }
     }
     if (b) gsl_root_fsolver_free(b);
+    cp->ok = c.ok;
     return c.ok ? root : 0.0;
+}
+
+static double liftoff(acbb_set_sim *ss)
+{
+    if (!has_side(&ss->sm, 1) || !has_side(&ss->sm, -1)) return 0.0;
+    int side = ss->sm.spring ? 1 : -1;
+    lift_ctx c = { ss, ss->sm, side, -side, 1, 1e-6 * ss->sm.Fp };
+    keep_members(ss, 0);
+    double root = search_liftoff(&c);
+    keep_members(ss, 1);
+    return root;
 }
 
 /* Radial and tilt stiffness at the nose: central differences of the shaft
