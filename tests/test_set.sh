@@ -92,6 +92,21 @@ jqt "$TMP/spring.json" '[.bearings[].axial_force_N | (. - 300) | abs < 3e-3] | a
 jqt "$TMP/rigid.json" '.set.preload_N > 330' "rigid DB at 16 000 rpm: the preload rises"
 jqt "$TMP/rigid.json" '[.. | numbers | isinfinite or isnan] | any | not' "no NaN/Inf in a set's JSON"
 
+# A spring pair lifts its fixed side off when a thrust the other way
+# reaches the spring force (the floating side keeps it): Fp to 1e-4 Fp.
+jqt "$TMP/spring.json" '(.set.liftoff_thrust_N - 300 | fabs) < 0.03' \
+    "spring DB: lift-off thrust = the spring force"
+
+# The hard case of a rigid pair: a DF pair on a warm shaft at 12 000 rpm
+# runs away (the shaft's growth loads it, the load heats it): a named
+# status, exit 3, and no NaN in the JSON.
+"$ACBB" run presets/pair-DF-heated.ini --set operating.inner_speed_rpm=12000 \
+    --set surroundings.shaft_bore_coolant_dT_K=15 --json >"$TMP/run.json" 2>"$TMP/err"
+rc=$?
+[ $rc = 3 ] && jq -e '.status == "runaway" and (.message | test("preload grows ever faster|runaway"))' \
+    "$TMP/run.json" >/dev/null && jq -e '[.. | numbers | isinfinite or isnan] | any | not' "$TMP/run.json" >/dev/null
+t $? "rigid DF pair at 12 000 rpm on a warm shaft: runaway, exit $rc, no NaN"
+
 # A single bearing has no bearings/set keys; set.arrangement = single is the default.
 "$ACBB" run presets/7008C.ini --json >"$TMP/s1.json"
 jqt "$TMP/s1.json" 'has("bearings") or has("set") | not' "single bearing: no bearings or set key"
