@@ -79,6 +79,12 @@ else
     skip "plot --kind set-temperature" "gnuplot is not installed"
     skip "plot --kind set-preload of one bearing" "gnuplot is not installed"
 fi
+# Spacer material: aluminium spacers (23 ppm/K) on the same warm shaft grow
+# more on the warm inner side than the steel shaft's 11.5 ppm/K spacer.
+"$ACBB" run presets/pair-DB-heated.ini --set set.spacer_expansion_ppm_K=23 --json >"$TMP/alu.json"
+sg=$(jq '.set.spacer_growth_um' "$TMP/hDB.json")
+jqt "$TMP/alu.json" ".set.spacer_growth_um > $sg + 0.5" \
+    "aluminium spacers: more axial growth between the bearings ($sg um with steel)"
 jqt "$TMP/hDB.json" '.set.spacer_growth_um > 0' "heated pair: the shaft grows axially more than the housing"
 db=$(jq '.set.preload_N' "$TMP/hDB.json")
 jqt "$TMP/hDF.json" ".set.preload_N > $db + 50" "heated alike: DF preload rises more than DB's ($db N)"

@@ -53,15 +53,17 @@ static void spacer_growth(acbb_set_sim *ss)
     const acbb_scene *s = &ss->s;
     double u[ACBB_MAX_SET] = { 0 }, mean = 0.0;
     double L = acbb_set_pitch(s) - s->width, h = 0.5 * s->width;
+    double chi_in = s->set_spacer_chi > 0.0 ? s->set_spacer_chi : s->shaft.chi;
+    double chi_out = s->set_spacer_chi > 0.0 ? s->set_spacer_chi : s->housing.chi;
     acbb_part_temps p[ACBB_MAX_SET];
     for (int k = 0; k < ss->n; k++)
         acbb_network_part_temps(acbb_simm_network(ss->b[k]), acbb_simm_T(ss->b[k]), &p[k]);
     for (int k = 1; k < ss->n && s->thermal_expansion; k++) {
         const acbb_part_temps *a = &p[k - 1], *c = &p[k];
         double T0 = s->ambient_C;
-        double in = s->shaft.chi * (0.5 * (a->shaft + c->shaft) - T0) * L
+        double in = chi_in * (0.5 * (a->shaft + c->shaft) - T0) * L
                   + s->ring.chi * (a->inner_ring + c->inner_ring - 2.0 * T0) * h;
-        double out = s->housing.chi * (0.5 * (a->housing + c->housing) - T0) * L
+        double out = chi_out * (0.5 * (a->housing + c->housing) - T0) * L
                    + s->ring.chi * (a->outer_ring + c->outer_ring - 2.0 * T0) * h;
         u[k] = u[k - 1] + in - out;
     }
