@@ -26,7 +26,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                             "solve; only the transient catches a runaway)" },
     [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },
     [CLI_OPT_KIND] = { "kind", "KIND",
-                       "temperature|losses|loads|angles|history-loads|all (default temperature)" },
+                       "temperature|losses|loads|angles|history-loads|all (default temperature); "
+                       "a bearing set also set-preload|set-temperature" },
     [CLI_OPT_OUT] = { "out", "PATH", "plot: write PATH.png or .svg (default: a text chart on "
                       "stdout); new: the preset file; study: the figure directory" },
     [CLI_OPT_DUMB] = { "dumb", NULL, "a text chart on stdout (the default)" },

@@ -278,6 +278,23 @@ static void summary_life(acbb_cli_out *o, const acbb_snapshot *s)
     fputs(tail, o->f);
 }
 
+/* A bearing set (MODEL.md 14): the set's numbers, a line per bearing
+ * (the tables above are bearing 0's). */
+static void summary_set(acbb_cli_out *o, const acbb_snapshot *s)
+{
+    const acbb_set_view *v = &s->set;
+    if (s->n_bearings < 2) return;
+    fprintf(o->f, "\nset          preload %.1f N (assembly %.1f N), lift-off thrust %.0f N\n"
+            "stiffness    axial %.2f N/um, radial %.2f N/um, tilt %.2f N m/mrad at the nose\n"
+            "bearing  thrust  axial N  outer C  inner C   loss W\n",
+            v->preload_N, v->preload_assembly_N, v->liftoff_thrust_N, v->stiffness_axial * 1e-6,
+            v->stiffness_radial * 1e-6, v->stiffness_tilt * 1e-3);
+    for (int k = 0; k < s->n_bearings && k < ACBB_MAX_SET; k++)
+        fprintf(o->f, "%7d  %6s %8.1f %8.2f %8.2f %8.2f%s\n", k,
+                v->orientation[k] > 0 ? "+x" : "-x", v->axial_force[k], v->T_outer_ring[k],
+                v->T_inner_ring[k], v->loss_total[k], v->contact_lost[k] ? "  lifted off" : "");
+}
+
 void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap)
 {
@@ -285,6 +302,7 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
     summary_thermal(o, sc, snap);
     summary_balls(o, snap);
     summary_life(o, snap);
+    summary_set(o, snap);
 }
 
 /* The run's JSON comes from the engine's one writer (acbb/json.h); the

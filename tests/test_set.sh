@@ -66,6 +66,25 @@ t $? "run --csv of a pair: set_preload_N and T_outer_ring_C_k columns; last row'
 "$ACBB" run presets/7008C.ini --set effects.heating=off --csv "$TMP/one.csv" >/dev/null
 head -n 1 "$TMP/one.csv" | grep -qv set_preload
 t $? "run --csv of one bearing: no set columns"
+# gnuplot: the preload and each bearing's outer ring over time.
+if command -v gnuplot >/dev/null 2>&1; then
+    "$ACBB" plot presets/pair-DF-heated.ini --kind set-temperature --dumb >"$TMP/plot.txt" 2>&1 &&
+        grep -q 'bearing 0' "$TMP/plot.txt" && grep -q 'bearing 1' "$TMP/plot.txt"
+    t $? "plot --kind set-temperature: one curve per bearing"
+    "$ACBB" plot presets/7008C.ini --set effects.heating=off --kind set-preload --dumb \
+        >/dev/null 2>"$TMP/err"
+    [ $? = 2 ] && grep -q 'needs a bearing set' "$TMP/err"
+    t $? "plot --kind set-preload of one bearing: refused, exit 2"
+else
+    skip "plot --kind set-temperature" "gnuplot is not installed"
+    skip "plot --kind set-preload of one bearing" "gnuplot is not installed"
+fi
+# Spacer material: aluminium spacers (23 ppm/K) on the same warm shaft grow
+# more on the warm inner side than the steel shaft's 11.5 ppm/K spacer.
+"$ACBB" run presets/pair-DB-heated.ini --set set.spacer_expansion_ppm_K=23 --json >"$TMP/alu.json"
+sg=$(jq '.set.spacer_growth_um' "$TMP/hDB.json")
+jqt "$TMP/alu.json" ".set.spacer_growth_um > $sg + 0.5" \
+    "aluminium spacers: more axial growth between the bearings ($sg um with steel)"
 jqt "$TMP/hDB.json" '.set.spacer_growth_um > 0' "heated pair: the shaft grows axially more than the housing"
 db=$(jq '.set.preload_N' "$TMP/hDB.json")
 jqt "$TMP/hDF.json" ".set.preload_N > $db + 50" "heated alike: DF preload rises more than DB's ($db N)"
@@ -79,9 +98,32 @@ jqt "$TMP/spring.json" '[.bearings[].axial_force_N | (. - 300) | abs < 3e-3] | a
 jqt "$TMP/rigid.json" '.set.preload_N > 330' "rigid DB at 16 000 rpm: the preload rises"
 jqt "$TMP/rigid.json" '[.. | numbers | isinfinite or isnan] | any | not' "no NaN/Inf in a set's JSON"
 
-# A single bearing has no bearings/set keys; set.arrangement = single is the default.
+# A spring pair lifts its fixed side off when a thrust the other way
+# reaches the spring force (the floating side keeps it): Fp to 1e-4 Fp.
+jqt "$TMP/spring.json" '(.set.liftoff_thrust_N - 300 | fabs) < 0.03' \
+    "spring DB: lift-off thrust = the spring force"
+
+# The hard case of a rigid pair: a DF pair on a warm shaft at 12 000 rpm
+# runs away (the shaft's growth loads it, the load heats it): a named
+# status, exit 3, and no NaN in the JSON.
+"$ACBB" run presets/pair-DF-heated.ini --set operating.inner_speed_rpm=12000 \
+    --set surroundings.shaft_bore_coolant_dT_K=15 --json >"$TMP/run.json" 2>"$TMP/err"
+rc=$?
+[ $rc = 3 ] && jq -e '.status == "runaway" and (.message | test("preload grows ever faster|runaway"))' \
+    "$TMP/run.json" >/dev/null && jq -e '[.. | numbers | isinfinite or isnan] | any | not' "$TMP/run.json" >/dev/null
+t $? "rigid DF pair at 12 000 rpm on a warm shaft: runaway, exit $rc, no NaN"
+
+# A single bearing has no bearings/set keys; set.arrangement = single is the
+# default, and a set of one ignores the set's other keys: the same run
+# (every number but wall_ms; the scene echo differs in the keys given).
 "$ACBB" run presets/7008C.ini --json >"$TMP/s1.json"
 jqt "$TMP/s1.json" 'has("bearings") or has("set") | not' "single bearing: no bearings or set key"
+"$ACBB" run presets/7008C.ini --set set.arrangement=single --set set.spacing_mm=45 \
+    --set set.load_offset_mm=80 --json >"$TMP/s2.json"
+jq -S 'del(.wall_ms, .scene.keys)' "$TMP/s1.json" >"$TMP/s1n.json"
+jq -S 'del(.wall_ms, .scene.keys)' "$TMP/s2.json" >"$TMP/s2n.json"
+cmp -s "$TMP/s1n.json" "$TMP/s2n.json"
+t $? "a set of one (spacing and load offset given) is the single bearing's run, number for number"
 
 # Issue 18: with mounting.tilt = free the tilt is solved at 0 N m too, so
 # moments of 0, 1e-3 and 1e-2 N m give states whose difference scales with

@@ -24,6 +24,11 @@ wait_for "showing bearing 1 of 2"
 ok $? "] shows bearing 1"
 screen | grep -q '^>  1  -x'
 ok $? "and marks its row"
+keys 1
+wait_for "bearing 1 of 2"
+ok $? "the Run screen says which bearing it shows"
+keys S
+wait_for "DB set of 2"
 # A click on bearing 0's row (body row 3, screen row 4; X10 report).
 printf '\033[M %s%s' "$(printf '\\%03o' $((32 + 6)))" "$(printf '\\%03o' $((32 + 5)))" >"$TMP/click"
 keys -l "$(printf '%b' "$(cat "$TMP/click")")"

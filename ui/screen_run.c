@@ -145,8 +145,10 @@ static void mech_panel(acbb_app *a, acbb_rect r)
              (s->exp_inner + s->exp_inner_cen) * UM, s->exp_outer * UM);
     snprintf(item[5], sizeof item[5], "Fx %.0f N dx %.2f um heat %.2f/%.2f W", s->reaction_x,
              s->delta_x * UM, s->heat_in, s->heat_out);
-    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Mechanics (%d balls%s)", s->n_balls,
-             a->has_base ? ", change vs base" : ", min..max");
+    char which[40] = ""; /* a set: the bearing shown (Set screen, [ ]) */
+    if (s->n_bearings > 1) snprintf(which, sizeof which, ", bearing %d of %d", a->bearing, s->n_bearings);
+    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Mechanics (%d balls%s%s)", s->n_balls,
+             a->has_base ? ", change vs base" : ", min..max", which);
     /* A tall panel (wide layout) gets one item per row, a short one pairs. */
     int per_row = r.h - 1 >= 6 ? 1 : 2, half = r.w / 2;
     for (int k = 0, row = 1; k < 6 && row < r.h; k += per_row, row++) {

@@ -57,7 +57,8 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
 /* The run with its optional parts: b[0..n) a bearing set's snapshots
  * (acbb_sim_bearing_snapshot, bearing 0 first; n <= 1 or b NULL: one
  * bearing) add `bearings` (each bearing's single-bearing results) and `set`
- * (the output table's "set" entries, MODEL.md 14); br (branches.h; NULL:
+ * (the output table's "set" entries, MODEL.md 14; b NULL: a set's document
+ * has `set` but no `bearings`); br (branches.h; NULL:
  * none) adds `branches`. A scene with a schedule also gets `schedule`. */
 void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
                                const acbb_snapshot *b, int n, const acbb_branches *br);

@@ -26,7 +26,9 @@ typedef enum {
     ACBB_PLOT_LOSSES,        /* the five losses and the total vs time */
     ACBB_PLOT_LOADS,         /* Qi, Qo per ball vs azimuth (final state) */
     ACBB_PLOT_ANGLES,        /* alpha_i, alpha_o per ball vs azimuth (final state) */
-    ACBB_PLOT_HISTORY_LOADS  /* Qi, Qo of ball 0 vs time */
+    ACBB_PLOT_HISTORY_LOADS, /* Qi, Qo of ball 0 vs time */
+    ACBB_PLOT_SET_PRELOAD,   /* a bearing set's preload vs time (MODEL.md 14) */
+    ACBB_PLOT_SET_TEMPERATURE /* each bearing's outer ring vs time (a set) */
 } acbb_plot_kind;
 
 typedef struct {
@@ -37,7 +39,8 @@ typedef struct {
 
 /* Parse "png", "svg", "dumb" / a file name's extension; -1 if unknown. */
 int acbb_plot_format_from_name(const char *name);
-/* Parse "temperature", "losses", "loads", "angles", "history-loads"; -1 if unknown. */
+/* Parse "temperature", "losses", "loads", "angles", "history-loads",
+ * "set-preload", "set-temperature"; -1 if unknown. */
 int acbb_plot_kind_from_name(const char *name);
 const char *acbb_plot_kind_name(acbb_plot_kind k);
 

@@ -140,6 +140,8 @@ typedef struct {
     int set_n_bearings;          /* DT: tandem bearings 2..4; 0 = the arrangement's count */
     double set_spacing;          /* centre distance of neighbours, m; 0 = adjacent (width) */
     double set_load_offset;      /* nose x_F minus the set's centre x_0, m */
+    double set_spacer_chi;       /* both spacers' expansion, 1/K; 0 = inner as the shaft,
+                                  * outer as the housing (MODEL.md 14 chi_s, chi_h) */
 
     /* [surroundings] (MODEL.md 8.1, 13): sizes 0 = derived from the bearing
      * (acbb_scene_surroundings); housing and cap use materials.housing */

@@ -34,8 +34,13 @@ static acbb_status run(acbb_json *j, const acbb_scene *sc)
     }
     st = acbb_sim_drive(sim, &(acbb_run_ctl){ 0 });
     acbb_sim_snapshot(sim, snap);
+    /* A set's bearings (MODEL.md 14), read before the Sim goes. */
+    int nb = snap->n_bearings > 1 ? snap->n_bearings : 0;
+    acbb_snapshot *b = nb ? malloc(sizeof *b * (size_t)nb) : NULL;
+    for (int k = 0; b && k < nb; k++) acbb_sim_bearing_snapshot(sim, k, &b[k]);
     acbb_sim_free(sim);
-    acbb_json_write_run(j, sc, snap);
+    acbb_json_write_run_parts(j, sc, snap, b, b ? nb : 0, NULL);
+    free(b);
     if (st == ACBB_OK && snap->state != ACBB_RUN_CONVERGED) st = ACBB_NOT_CONVERGED;
     free(snap);
     return st;

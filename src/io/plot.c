@@ -85,6 +85,10 @@ static const plot_kind_spec kind_specs[] = {
       { { "inner contact alpha_i", BV(alpha_i) }, { "outer contact alpha_o", BV(alpha_o) } } },
     { "history-loads", "contact loads of ball 0", "time (s)", "load (N)", false, 1.0, false, 2,
       { { "inner contact Qi", HP(Qi) }, { "outer contact Qo", HP(Qo) } } },
+    { "set-preload", "preload of the bearing set", "time (s)", "axial force (N)", false, 1.0,
+      false, 1, { { "set preload", HP(set_preload) } } },
+    { "set-temperature", "outer ring of each bearing", "time (s)", "temperature (C)", false,
+      1.0, false, 0, { { "", 0 } } },
 };
 #define N_KINDS (sizeof kind_specs / sizeof kind_specs[0])
 
@@ -268,6 +272,22 @@ static void loss_series(plot_kind_spec *k, const acbb_history *h)
     k->s[k->n++] = (plot_series){ "total", HP(total) };
 }
 
+/* A bearing set's kinds (MODEL.md 14): one outer-ring curve per bearing. */
+static acbb_status set_series(plot_kind_spec *k, const acbb_plot_data *d, acbb_error *err)
+{
+    int n = d->snapshot ? d->snapshot->n_bearings : 0;
+    if (n < 2)
+        return acbb_error_set(err, ACBB_EINVAL, "%s plot: needs a bearing set "
+                              "(set.arrangement other than single)", k->name);
+    if (k->n > 0) return ACBB_OK;
+    for (int b = 0; b < n && b < ACBB_MAX_SET; b++) {
+        plot_series *s = &k->s[k->n++];
+        snprintf(s->label, sizeof s->label, "bearing %d", b);
+        s->off = HP(T_outer_set) + (size_t)b * sizeof(double);
+    }
+    return ACBB_OK;
+}
+
 /* Checks shared by the file and dumb paths; fills *spec. */
 static acbb_status check_data(acbb_plot_kind kind, const acbb_plot_data *d,
                               plot_kind_spec *spec, acbb_error *err)
@@ -285,6 +305,7 @@ static acbb_status check_data(acbb_plot_kind kind, const acbb_plot_data *d,
                               k->name);
     *spec = *k;
     if (k->losses) loss_series(spec, d->history);
+    if (kind >= ACBB_PLOT_SET_PRELOAD) return set_series(spec, d, err);
     return ACBB_OK;
 }
 

@@ -117,17 +117,21 @@ static void bearing(acbb_json *j, const acbb_snapshot *b, const acbb_set_view *v
     section(j, b, "expansion_um");
     section(j, b, "ring");
     section(j, b, "squeeze_um");
+    acbb_json_write_life(j, b); /* MODEL.md 15: each bearing its own life */
     acbb_json_open(j, "balls", '[', false);
     for (int i = 0; i < b->n_balls && i < ACBB_MAX_BALLS; i++) ball(j, b, i);
     acbb_json_close(j, ']');
     acbb_json_close(j, '}');
 }
 
+/* A set's `bearings` (when their snapshots are given) and `set`. */
 static void set_part(acbb_json *j, const acbb_snapshot *s, const acbb_snapshot *b, int n)
 {
-    acbb_json_open(j, "bearings", '[', false);
-    for (int k = 0; k < n; k++) bearing(j, &b[k], &s->set, k);
-    acbb_json_close(j, ']');
+    if (b) {
+        acbb_json_open(j, "bearings", '[', false);
+        for (int k = 0; k < n; k++) bearing(j, &b[k], &s->set, k);
+        acbb_json_close(j, ']');
+    }
     section(j, s, "set");
 }
 
@@ -161,7 +165,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
 
     section(j, s, "energy_W");
     acbb_json_write_life(j, s);
-    if (b && n > 1) set_part(j, s, b, n);
+    if (s->n_bearings > 1) set_part(j, s, n == s->n_bearings ? b : NULL, s->n_bearings);
     if (sc->schedule_n > 0) acbb_json_write_schedule(j, sc, s);
     if (br) acbb_json_write_branches(j, br);
 

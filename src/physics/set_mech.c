@@ -148,6 +148,12 @@ acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double o
     ctx_t c = { .sm = sm, .mb = mb, .omega = omega, .st = ACBB_OK };
     c.R = 0.5 * acbb_mech_geometry(mb[0].m)->dm;
     activate(&c);
+    /* Inactive unknowns are 0 (a probe with other loads may have left them). */
+    for (int i = 1; i < ACBB_SET_Q; i++) {
+        int on = 0;
+        for (int a = 0; a < c.n; a++) on |= c.act[a] == i;
+        if (!on) sm->q[i] = 0.0;
+    }
     if (c.n != sm->J_n) sm->J_ok = 0;
     sm->J_n = c.n;
     double x[ACBB_SET_Q], f[ACBB_SET_Q];

@@ -5,21 +5,18 @@
  * quasi-dynamic and dynamic levels alternated with each bearing's ball
  * speeds -> each bearing's losses -> one backward-Euler step of the joined
  * network. Step control, steady detection and the final direct steady
- * polish are sim.c's (same constants). */
+ * polish are sim.c's (same constants). The probes of the converged state
+ * are in sim_set_probe.c, the snapshots in sim_set_view.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "sim_set.h"
+#include "sim_set_priv.h"
 #include "sim_priv.h"
-#include "set_mech.h"
-#include "network_set.h"
 #include "acbb/set.h"
 #include "acbb/measure.h"
-#include "cancel.h"
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
 #include "acbb/fidelity.h"
+#include "cancel.h"
 
 #define DT_MIN 0.05
 #define DT_MAX 30.0
@@ -29,37 +26,21 @@
 #define POLISH_ITERS 60
 #define QD_PASSES 4
 #define QD_TOL 1e-9
-#define NMAX ACBB_SET_MAX_NODES
 #define SYNC_TOL 1e-2        /* transient steps: resistances lag below this move (network_set.h) */
-
-struct acbb_set_sim {
-    acbb_scene s;
-    int n;
-    acbb_sim *b[ACBB_MAX_SET];
-    acbb_mech_state *scratch[ACBB_MAX_SET]; /* member states kept across probes */
-    acbb_set_mech sm, sm_keep;
-    acbb_network_set ns;
-    double T[NMAX], q[NMAX], T_keep[NMAX];
-    acbb_set_run run;
-    const atomic_int *cancel;
-    double prev_total, prev_F, prev_rate, total;
-    int growth, quiet;
-    double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
-};
 
 /* ---- one evaluation at the joined temperatures T ---- */
 
-static void members(acbb_set_sim *ss, acbb_set_member *mb)
+void acbb_set_members(acbb_set_sim *ss, acbb_set_member *mb)
 {
     for (int k = 0; k < ss->n; k++)
         mb[k] = (acbb_set_member){ acbb_simm_mech(ss->b[k]), acbb_simm_ms(ss->b[k]),
                                    acbb_simm_exp(ss->b[k]) };
 }
 
-static acbb_status solve_shaft(acbb_set_sim *ss, acbb_error *err)
+acbb_status acbb_set_solve_shaft(acbb_set_sim *ss, acbb_error *err)
 {
     acbb_set_member mb[ACBB_MAX_SET];
-    members(ss, mb);
+    acbb_set_members(ss, mb);
     return acbb_set_mech_solve(&ss->sm, mb, ss->s.inner_speed, err);
 }
 
@@ -72,15 +53,17 @@ static void spacer_growth(acbb_set_sim *ss)
     const acbb_scene *s = &ss->s;
     double u[ACBB_MAX_SET] = { 0 }, mean = 0.0;
     double L = acbb_set_pitch(s) - s->width, h = 0.5 * s->width;
+    double chi_in = s->set_spacer_chi > 0.0 ? s->set_spacer_chi : s->shaft.chi;
+    double chi_out = s->set_spacer_chi > 0.0 ? s->set_spacer_chi : s->housing.chi;
     acbb_part_temps p[ACBB_MAX_SET];
     for (int k = 0; k < ss->n; k++)
         acbb_network_part_temps(acbb_simm_network(ss->b[k]), acbb_simm_T(ss->b[k]), &p[k]);
     for (int k = 1; k < ss->n && s->thermal_expansion; k++) {
         const acbb_part_temps *a = &p[k - 1], *c = &p[k];
         double T0 = s->ambient_C;
-        double in = s->shaft.chi * (0.5 * (a->shaft + c->shaft) - T0) * L
+        double in = chi_in * (0.5 * (a->shaft + c->shaft) - T0) * L
                   + s->ring.chi * (a->inner_ring + c->inner_ring - 2.0 * T0) * h;
-        double out = s->housing.chi * (0.5 * (a->housing + c->housing) - T0) * L
+        double out = chi_out * (0.5 * (a->housing + c->housing) - T0) * L
                    + s->ring.chi * (a->outer_ring + c->outer_ring - 2.0 * T0) * h;
         u[k] = u[k - 1] + in - out;
     }
@@ -96,7 +79,7 @@ static acbb_status mechanics(acbb_set_sim *ss, int transient, acbb_error *err)
 {
     int traction = acbb_simm_has_traction(ss->b[0]);
     int warm = traction && transient && acbb_simm_ms(ss->b[0])->ball[0].traction_valid;
-    acbb_status rc = warm ? ACBB_OK : solve_shaft(ss, err);
+    acbb_status rc = warm ? ACBB_OK : acbb_set_solve_shaft(ss, err);
     if (rc != ACBB_OK || !traction) return rc;
     for (int pass = 0; pass < (transient ? 1 : QD_PASSES); pass++) {
         double change = 0.0;
@@ -107,7 +90,7 @@ static acbb_status mechanics(acbb_set_sim *ss, int transient, acbb_error *err)
             if ((rc = acbb_simm_traction(ss->b[k], &ch, err)) != ACBB_OK) return rc;
             change = fmax(change, ch);
         }
-        if ((rc = solve_shaft(ss, err)) != ACBB_OK || change < QD_TOL) return rc;
+        if ((rc = acbb_set_solve_shaft(ss, err)) != ACBB_OK || change < QD_TOL) return rc;
     }
     return ACBB_OK;
 }
@@ -147,131 +130,6 @@ static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb
     return ACBB_OK;
 }
 
-/* ---- probes of the converged state: other loads, same temperatures ---- */
-
-typedef struct { double Fa, Fr, M; } loads;
-
-/* Solve the shaft under other external loads into *out; the members and
- * the set's own solution are put back afterwards. */
-static acbb_status probe(acbb_set_sim *ss, loads L, acbb_set_mech *out)
-{
-    for (int k = 0; k < ss->n; k++) acbb_mech_state_copy(ss->scratch[k], acbb_simm_ms(ss->b[k]));
-    *out = ss->sm;
-    out->Fa = L.Fa;
-    out->Fr = L.Fr;
-    out->M = L.M;
-    acbb_set_member mb[ACBB_MAX_SET];
-    members(ss, mb);
-    acbb_status rc = acbb_set_mech_solve(out, mb, ss->s.inner_speed, NULL);
-    for (int k = 0; k < ss->n; k++)
-        acbb_mech_state_copy(acbb_simm_ms(ss->b[k]), ss->scratch[k]);
-    return rc;
-}
-
-static int side_of_floating(const acbb_set_sim *ss)
-{
-    return ss->sm.spring ? -1 : 0;
-}
-
-/* The axial force through the set with no external thrust (MODEL.md 14:
- * assembly preload plus the thermally induced part). */
-static double preload_now(acbb_set_sim *ss)
-{
-    double F = 0.0;
-    if (side_of_floating(ss)) {
-        for (int k = 0; k < ss->n; k++) if (ss->sm.orient[k] < 0) F += ss->sm.Fx[k];
-        return F;
-    }
-    if (ss->sm.Fa == 0.0) return acbb_set_mech_preload(&ss->sm);
-    acbb_set_mech p;
-    if (probe(ss, (loads){ 0.0, ss->sm.Fr, ss->sm.M }, &p) != ACBB_OK) return 0.0;
-    return acbb_set_mech_preload(&p);
-}
-
-static int has_side(const acbb_set_mech *sm, int s)
-{
-    for (int k = 0; k < sm->n; k++) if (sm->orient[k] == s) return 1;
-    return 0;
-}
-
-/* Load left on the side that a thrust `dir` unloads. */
-static double unloading_side(acbb_set_sim *ss, double Fa, int side, int *ok)
-{
-    acbb_set_mech p;
-    *ok = probe(ss, (loads){ Fa, ss->sm.Fr, ss->sm.M }, &p) == ACBB_OK;
-    double F = 0.0;
-    for (int k = 0; k < p.n; k++) if (p.orient[k] == side) F += p.Fx[k];
-    return F;
-}
-
-/* External thrust at which the unloading side's balls all unload, at the
- * current temperatures: GSL's Brent on F^(2/3) - eps^(2/3) of the side's
- * load F, which near lift-off falls as (Fa_lift - Fa)^1.5 (Hertz), so its
- * 2/3 power is nearly linear there; to 1e-4 of the preload. A rigid
- * opposed set unloads its -1 side under +x thrust; a spring set's floating
- * side keeps the spring force, so thrust the other way unloads the +1 side
- * at the spring force. A tandem set has no opposite side: 0. */
-typedef struct { acbb_set_sim *ss; int side, dir, ok; double eps; } lift_ctx;
-
-static double lift_fn(double Fa, void *p)
-{
-    lift_ctx *c = p;
-    int ok;
-    double F = unloading_side(c->ss, Fa * c->dir, c->side, &ok);
-    c->ok &= ok;
-    return cbrt(F * F) - cbrt(c->eps * c->eps);
-}
-
-static double liftoff(acbb_set_sim *ss)
-{
-    if (!has_side(&ss->sm, 1) || !has_side(&ss->sm, -1)) return 0.0;
-    int side = ss->sm.spring ? 1 : -1;
-    lift_ctx c = { ss, side, -side, 1, 1e-6 * ss->sm.Fp };
-    double lo = ss->sm.Fa * c.dir, hi = fmax(lo, 0.0) + ss->sm.Fp;
-    double flo = lift_fn(lo, &c), fhi = lift_fn(hi, &c);
-    if (flo <= 0.0 || !c.ok) return 0.0;
-    for (int i = 0; i < 20 && fhi > 0.0 && c.ok; i++) {
-        lo = hi;
-        hi *= 2.0;
-        fhi = lift_fn(hi, &c);
-    }
-    gsl_function F = { lift_fn, &c };
-    gsl_root_fsolver *b = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    double root = 0.0;
-    if (b && c.ok && fhi <= 0.0 && gsl_root_fsolver_set(b, &F, lo, hi) == GSL_SUCCESS) {
-        for (int it = 0; it < 60 && c.ok; it++) {
-            if (gsl_root_fsolver_iterate(b) != GSL_SUCCESS) break;
-            root = gsl_root_fsolver_root(b);
-            if (gsl_root_fsolver_x_upper(b) - gsl_root_fsolver_x_lower(b) < 1e-4 * ss->sm.Fp)
-                break;
-        }
-    }
-    if (b) gsl_root_fsolver_free(b);
-    return c.ok ? root : 0.0;
-}
-
-/* Radial and tilt stiffness at the nose: central differences of the shaft
- * equilibrium in the radial force and the moment there. */
-static void nose_stiffness(acbb_set_sim *ss)
-{
-    double R = 0.5 * ss->s.pitch_diameter;
-    double h = fmax(1e-3 * (fabs(ss->sm.Fr) + ss->sm.Fp + fabs(ss->sm.Fa)), 1.0);
-    acbb_set_mech p[2];
-    loads base = { ss->sm.Fa, ss->sm.Fr, ss->sm.M };
-    ss->K_rad = ss->K_tilt = 0.0;
-    if (probe(ss, (loads){ base.Fa, base.Fr + h, base.M }, &p[0]) == ACBB_OK
-        && probe(ss, (loads){ base.Fa, base.Fr - h, base.M }, &p[1]) == ACBB_OK) {
-        double xn = ss->sm.x_nose;
-        double d = (p[0].q[1] - p[0].q[2] * xn) - (p[1].q[1] - p[1].q[2] * xn);
-        ss->K_rad = d != 0.0 ? 2.0 * h / d : 0.0;
-    }
-    if (probe(ss, (loads){ base.Fa, base.Fr, base.M + h * R }, &p[0]) == ACBB_OK
-        && probe(ss, (loads){ base.Fa, base.Fr, base.M - h * R }, &p[1]) == ACBB_OK) {
-        double d = p[0].q[2] - p[1].q[2];
-        ss->K_tilt = d != 0.0 ? 2.0 * h * R / d : 0.0;
-    }
-}
-
 static void converge(acbb_set_sim *ss, const char *what)
 {
     ss->K_ax = 0.0;
@@ -280,10 +138,10 @@ static void converge(acbb_set_sim *ss, const char *what)
         acbb_simm_stiffness(ss->b[k], &K);
         if (!(ss->sm.spring && ss->sm.orient[k] < 0)) ss->K_ax += K; /* a spring side floats */
     }
-    solve_shaft(ss, NULL); /* the stiffness probes moved the workspaces */
-    nose_stiffness(ss);
-    ss->liftoff = liftoff(ss);
-    ss->preload = preload_now(ss);
+    acbb_set_solve_shaft(ss, NULL); /* the stiffness probes moved the workspaces */
+    acbb_set_nose_stiffness(ss);
+    ss->liftoff = acbb_set_liftoff(ss);
+    ss->preload = acbb_set_preload_now(ss);
     ss->run.state = ACBB_RUN_CONVERGED;
     snprintf(ss->run.msg, sizeof ss->run.msg, "%s", what);
 }
@@ -344,7 +202,7 @@ static acbb_status thermal(acbb_set_sim *ss, int steady, double relax, double *T
 static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs,
                            acbb_error *err)
 {
-    double Tn[NMAX];
+    double Tn[ACBB_SET_NMAX];
     save(ss);
     for (;;) {
         acbb_status rc = thermal(ss, steady, 0.5, Tn, dT, dTs);
@@ -369,7 +227,7 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
 
 static acbb_status polish(acbb_set_sim *ss, acbb_error *err)
 {
-    double Tn[NMAX], dT, dTs;
+    double Tn[ACBB_SET_NMAX], dT, dTs;
     for (int it = 0; it < POLISH_ITERS; it++) {
         if (acbb_cancelled(ss->cancel))
             return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
@@ -426,7 +284,7 @@ static acbb_status runaway(acbb_set_sim *ss, double step_dt)
 static void publish(acbb_set_sim *ss)
 {
     ss->heat_out = acbb_tnet_heat_to_fixed(ss->ns.net, ss->T);
-    if (ss->run.state == ACBB_RUN_RUNNING) ss->preload = preload_now(ss);
+    if (ss->run.state == ACBB_RUN_RUNNING) ss->preload = acbb_set_preload_now(ss);
     for (int k = 0; k < ss->n; k++) acbb_simm_publish(ss->b[k], &ss->run);
 }
 
@@ -597,55 +455,3 @@ acbb_run_state acbb_set_sim_outcome(const acbb_set_sim *ss, acbb_status *status,
 
 void acbb_set_sim_cancel(acbb_set_sim *ss, const atomic_int *cancel) { ss->cancel = cancel; }
 
-/* ---- snapshots ---- */
-
-static void set_view(const acbb_set_sim *ss, acbb_set_view *v)
-{
-    const acbb_set_mech *sm = &ss->sm;
-    v->preload_N = acbb_snap_fin(ss->preload);
-    v->preload_assembly_N = ss->s.preload_force;
-    v->liftoff_thrust_N = acbb_snap_fin(ss->liftoff);
-    v->stiffness_axial = acbb_snap_fin(ss->K_ax);
-    v->stiffness_radial = acbb_snap_fin(ss->K_rad);
-    v->stiffness_tilt = acbb_snap_fin(ss->K_tilt);
-    v->shaft_dx = acbb_snap_fin(sm->q[0]);
-    v->shaft_dz = acbb_snap_fin(sm->q[1]);
-    v->shaft_tilt = acbb_snap_fin(sm->q[2]);
-    v->spacer_growth = acbb_snap_fin(ss->spacer);
-    for (int k = 0; k < ss->n; k++) {
-        acbb_part_temps p;
-        acbb_network_part_temps(acbb_simm_network(ss->b[k]), acbb_simm_T(ss->b[k]), &p);
-        v->orientation[k] = sm->orient[k];
-        v->axial_force[k] = acbb_snap_fin(sm->Fx[k]);
-        v->contact_lost[k] = sm->lost[k];
-        v->T_outer_ring[k] = acbb_snap_fin(acbb_simm_T(ss->b[k])[acbb_simm_network(ss->b[k])->node_outer_ring]);
-        v->T_inner_ring[k] = acbb_snap_fin(p.inner_ring);
-        v->loss_total[k] = acbb_snap_fin(acbb_simm_loss(ss->b[k]));
-    }
-}
-
-acbb_status acbb_set_sim_bearing_snapshot(const acbb_set_sim *ss, int k, acbb_snapshot *o)
-{
-    if (k < 0 || k >= ss->n) return ACBB_EINVAL;
-    acbb_sim_snapshot(ss->b[k], o);
-    o->n_bearings = ss->n;
-    set_view(ss, &o->set);
-    return ACBB_OK;
-}
-
-void acbb_set_sim_snapshot(const acbb_set_sim *ss, acbb_snapshot *o)
-{
-    acbb_set_sim_bearing_snapshot(ss, 0, o);
-    o->work.mechanics_solves += ss->sm.solves; /* the shaft equilibrium's member solves */
-    o->heat_in = acbb_snap_fin(ss->heat_in);
-    o->heat_out = acbb_snap_fin(ss->heat_out);
-    int lost = 0;
-    for (int k = 0; k < ss->n; k++) lost |= ss->sm.lost[k];
-    if (lost && o->state != ACBB_RUN_FAILED) {
-        size_t len = strlen(o->message);
-        for (int k = 0; k < ss->n && len < sizeof o->message; k++)
-            if (ss->sm.lost[k])
-                len += (size_t)snprintf(o->message + len, sizeof o->message - len,
-                                        "; bearing %d: contact_lost (lifted off)", k);
-    }
-}

@@ -249,6 +249,9 @@ const acbb_sfield acbb_sf_table[] = {
          "centre distance of neighbouring bearings (0 = adjacent: one width; spacers are the rest)"),
     REAL("set", "load_offset_mm", "mm", set_load_offset, 1e-3, 0, CC, -10000, 10000,
          "where the external loads act: nose position minus the set's centre, along the shaft"),
+    REAL("set", "spacer_expansion_ppm_K", "ppm/K", set_spacer_chi, 1e-6, 0, CC, 0, 100,
+         "spacer material: its expansion coefficient (0 = inner spacer as the shaft, outer as "
+         "the housing)"),
 
     /* [surroundings] (MODEL.md 8.1, 13): 0 = derive from the bearing by
      * scaling the seed's 7008C rig (acbb_scene_surroundings in scene.h) */

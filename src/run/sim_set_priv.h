@@ -1,0 +1,41 @@
+/* acbb — what the parts of a bearing set's stepper share (private to
+ * src/run/sim_set*.c): the stepper's state (sim_set.c), its probes of the
+ * converged state (sim_set_probe.c) and its snapshots (sim_set_view.c). */
+#ifndef ACBB_SIM_SET_PRIV_H
+#define ACBB_SIM_SET_PRIV_H
+
+#include "sim_set.h"
+#include "set_mech.h"
+#include "network_set.h"
+
+#define ACBB_SET_NMAX ACBB_SET_MAX_NODES
+
+struct acbb_set_sim {
+    acbb_scene s;
+    int n;
+    acbb_sim *b[ACBB_MAX_SET];
+    acbb_mech_state *scratch[ACBB_MAX_SET]; /* member states kept across probes */
+    acbb_set_mech sm, sm_keep;
+    acbb_network_set ns;
+    double T[ACBB_SET_NMAX], q[ACBB_SET_NMAX], T_keep[ACBB_SET_NMAX];
+    acbb_set_run run;
+    const atomic_int *cancel;
+    double prev_total, prev_F, prev_rate, total;
+    int growth, quiet;
+    double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
+};
+
+/* The members' workspaces and states as set_mech.h wants them. */
+void acbb_set_members(acbb_set_sim *ss, acbb_set_member *mb);
+/* The shaft equilibrium under the set's loads, from and into its state. */
+acbb_status acbb_set_solve_shaft(acbb_set_sim *ss, acbb_error *err);
+
+/* Probes (sim_set_probe.c): the members and the set's solution are left as
+ * they were. The preload with no external thrust, N; the lift-off thrust,
+ * N (0: none, a tandem set); the radial and tilt stiffness at the nose
+ * into ss->K_rad, ss->K_tilt. */
+double acbb_set_preload_now(acbb_set_sim *ss);
+double acbb_set_liftoff(acbb_set_sim *ss);
+void acbb_set_nose_stiffness(acbb_set_sim *ss);
+
+#endif
