@@ -143,6 +143,10 @@ static size_t collect(const acbb_cli_args *a, named_path *in, size_t *n_in, name
             in[(*n_in)++] = (named_path){ a->pos[i], "a merge input" };
         if (a->n_pos > 0) out[n_out++] = (named_path){ a->pos[0], "OUT" };
     }
+    /* plot --out is a file (study --out a directory, new --out never an
+     * existing file). */
+    if (strcmp(a->cmd, "plot") == 0 && a->val[CLI_OPT_OUT])
+        out[n_out++] = (named_path){ a->val[CLI_OPT_OUT], "out" };
     for (size_t k = 0; k < sizeof outs / sizeof *outs; k++)
         if (a->val[outs[k]] && a->val[outs[k]][0])
             out[n_out++] = (named_path){ a->val[outs[k]], acbb_cli_options[outs[k]].name };
@@ -178,7 +182,7 @@ static int cannot_write(const char *cmd, const named_path *o)
 
 int acbb_cli_check_paths(const acbb_cli_args *a)
 {
-    named_path in[CLI_MAX_POS + 2], out[8];
+    named_path in[CLI_MAX_POS + 2], out[9];
     size_t n_in, n_out = collect(a, in, &n_in, out), to_stdout = a->val[CLI_OPT_JSON] != NULL;
     for (size_t i = 0; i < n_out; i++) {
         if (strcmp(out[i].path, "-") == 0) {

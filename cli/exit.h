@@ -4,8 +4,10 @@
  *
  *   0  converged (or the command did its job)
  *   2  bad input: options, preset, --set edits, an ill-posed scene, an
- *      output path that cannot be written
- *   3  the solver did not reach steady state (output is still printed),
+ *      output path that cannot be opened, names an input or another
+ *      output, or two formats on one stream; a FIFO with no reader
+ *   3  the solver did not reach steady state (output is still printed;
+ *      the --max-wall bound, status wall_limit, included),
  *      or the command was cancelled (SIGINT / SIGTERM, progress.h): what
  *      finished is written, status `cancelled`
  *   4  internal error: non-finite output, stdout failed, out of memory,

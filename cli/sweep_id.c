@@ -193,6 +193,15 @@ static int finite_text(const char *s, size_t len, int empty_ok)
     return end == buf + len && isfinite(v) && !isalpha((unsigned char)buf[0]);
 }
 
+/* A key twice at the top: cJSON would read the first, merge keep both. */
+static int has_duplicate(const cJSON *o)
+{
+    for (const cJSON *a = o->child; a; a = a->next)
+        for (const cJSON *b = a->next; b; b = b->next)
+            if (a->string && b->string && strcmp(a->string, b->string) == 0) return 1;
+    return 0;
+}
+
 static int check_jsonl(const char *line, const acbb_sweep *g, const char *fp, size_t *index,
                        const char **why)
 {
@@ -201,6 +210,7 @@ static int check_jsonl(const char *line, const acbb_sweep *g, const char *fp, si
     const cJSON *f = cJSON_GetObjectItemCaseSensitive(o, "fingerprint");
     int rc = -1;
     if (!cJSON_IsObject(o)) *why = "not a JSON object";
+    else if (has_duplicate(o)) *why = "a key given twice";
     else if (!cJSON_IsNumber(ix) || ix->valuedouble < 0 || ix->valuedouble != floor(ix->valuedouble) ||
              ix->valuedouble >= (double)acbb_sweep_n_points(g))
         *why = "index is not a whole number in the grid's range";

@@ -43,6 +43,7 @@ done <<EOF_TABLE
 2| run $P $Q --baseline $TMP/nosuch.json
 2| run $P $Q --baseline $TMP/garbage.json
 2| run $TMP/keep.ini $Q --csv $TMP/keep.ini
+2| plot $TMP/keep.ini $Q --out $TMP/keep.ini
 2| run $P $Q --csv - --json
 2| run $P $Q --baseline $TMP/base.json --csv $TMP/base.json
 0| check $P

@@ -214,6 +214,7 @@ static const char *const k_expected[][2] = {
     {"fidelity.steady_tol_K_s", "0.0001"},
     {"fidelity.network", "46"}, {"fidelity.thermal_mode", "transient"}, {"fidelity.time_step_s", "5"},
     {"fidelity.preset", "custom"}, {"fidelity.target_error_pct", "0"},
+    {"fidelity.max_wall_s", "0"}, /* issue 20: the wall-clock bound, off */
     {"thermal.max_time_s", "36000"}, {"thermal.max_steps", "20000"},
     {"thermal.temp_limit_C", "150"}, {"thermal.contact_multiplier", "1"},
     {"thermal.heat_partition", "0.5"},

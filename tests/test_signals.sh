@@ -76,16 +76,17 @@ for sig in INT TERM; do
         --grid operating.axial_load_N=50:1000:4000 --jsonl "$TMP/s.jsonl" --csv "$TMP/s.csv"
     code $rc 3 "sweep --grid, $S"
     said "sweep --grid, $S" sweep $S
-    k=$(jq -s 'length' "$TMP/s.jsonl")
-    [ "${k:-0}" -ge 1 ] && [ "$(jq -s '[.[].index] | unique | length' "$TMP/s.jsonl")" = "$k" ] &&
-        [ "$(($(wc -l <"$TMP/s.csv") - 1))" -eq "$k" ]
+    # (after the sweep header line; the CSV has it and the column header)
+    k=$(jq -s 'map(select(has("index"))) | length' "$TMP/s.jsonl")
+    [ "${k:-0}" -ge 1 ] && [ "$(jq -s 'map(select(has("index"))) | [.[].index] | unique | length' "$TMP/s.jsonl")" = "$k" ] &&
+        [ "$(($(wc -l <"$TMP/s.csv") - 2))" -eq "$k" ]
     t $? "sweep --grid, $S: $k finished points, each once, in the JSONL and the CSV"
     jqt "$TMP/s.jsonl" '.status == "converged"' "sweep --grid, $S: every record is a finished point"
     "$ACBB" sweep "$P/7008C.ini" --grid operating.axial_load_N=50:1000:4000 \
         --jsonl "$TMP/s.jsonl" --csv "$TMP/s.csv" --max-points 2 >/dev/null 2>"$TMP/err"
     code $? 0 "sweep --grid, $S: the same command again"
     grep -q "resuming, $k points\? already there" "$TMP/err" &&
-        [ "$(jq -s '[.[].index] | unique | length' "$TMP/s.jsonl")" = $((k + 2)) ]
+        [ "$(jq -s 'map(select(has("index"))) | [.[].index] | unique | length' "$TMP/s.jsonl")" = $((k + 2)) ]
     t $? "sweep --grid, $S: the re-run resumed ($k kept, 2 more)"
 
     # sweep --param/--values: the table keeps the finished points, the rest

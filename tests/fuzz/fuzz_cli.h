@@ -8,8 +8,8 @@
 #include "fuzz_entry.h"
 
 /* The input as one merge input file (then, when accepted, its output merged
- * again): exit 0 or 2 only; an accepted merge is canonical (merging its
- * output gives the same bytes) and holds no inf/nan. */
+ * again): exit 0 or 2 only; an accepted merge is canonical (its output is
+ * accepted again, so every number is finite, and gives the same bytes). */
 acbb_fuzz_outcome acbb_fuzz_merge(const uint8_t *data, size_t size, char *why, size_t n);
 
 /* The input as the --baseline file of a quasi-static 7008C run: exit 0 or 2
