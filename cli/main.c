@@ -80,8 +80,9 @@ const acbb_cli_command acbb_cli_commands[] = {
       "--out DIR instead writes the seed's Figs. 7-19 (the study of `acbb report`:\n"
       "sweeps at 15000 rpm, TE and WTE) as DIR/figNN*.png, .svg and .csv, and\n"
       "DIR/REPORT.md linking them with the seed's captions and the verdicts of the\n"
-      "statements that cite them. e.g. acbb study seed --out figs\n",
-      SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT), 1, 1, -1, acbb_cli_cmd_study },
+      "statements that cite them. e.g. acbb study seed --out figs\n"
+      "--size WxH: the figures' size in pixels (default 900x600).\n",
+      SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT) | O(SIZE), 1, 1, -1, acbb_cli_cmd_study },
     { "plot", NULL, "PRESET", "run the scene and plot it through gnuplot",
       "--kind all writes every kind, FILE-<kind>.png next to --out FILE.png.\n",
       SCENE_OPTS | O(KIND) | O(OUT) | O(DUMB) | O(SIZE), 1, 1, 0, acbb_cli_plot },

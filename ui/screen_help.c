@@ -198,6 +198,16 @@ int acbb_screen_help_key(acbb_app *a, int ch)
         if (a->help_top > 0) a->help_top--;
         return 1;
     }
+    /* Paging keys page, as in less(1); only other keys close the help. */
+    int page = a->lay.body.h - 1 > 1 ? a->lay.body.h - 1 : 1;
+    if (ch == KEY_NPAGE || ch == ' ' || ch == KEY_END || ch == 'G') {
+        a->help_top = ch == KEY_END || ch == 'G' || a->help_top + page > top_max ? top_max : a->help_top + page;
+        return 1;
+    }
+    if (ch == KEY_PPAGE || ch == 'b' || ch == KEY_HOME || ch == 'g') {
+        a->help_top = ch == KEY_HOME || ch == 'g' || a->help_top < page ? 0 : a->help_top - page;
+        return 1;
+    }
     a->mode = ACBB_MODE_NORMAL;
     return 1;
 }
