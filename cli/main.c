@@ -19,6 +19,7 @@
 #include "new.h"
 #include "output.h"
 #include "sweep.h"
+#include "json_status.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -120,6 +121,10 @@ const acbb_cli_command acbb_cli_commands[] = {
       "The paths of `acbb run --json` (balls[i]: any ball index), as `acbb sensitivity\n"
       "--metric` and the TUI's Sweep and Sensitivity screens take them.\n",
       0, 0, 0, -1, cmd_metrics },
+    { "schema", NULL, "", "print the JSON Schema of the JSON documents acbb writes",
+      "Every JSON document starts with \"schema_version\"; with --json, bad input\n"
+      "(exit 2) is {\"status\": \"bad_input\", \"message\": ...} on stdout.\n",
+      0, 0, 0, -1, acbb_cli_cmd_schema },
     { "help", NULL, "[COMMAND]", "this overview, or one command's usage",
       "--man prints the manual page (installed as acbb.1) from this same table.\n",
       O(MAN), 0, 2, -1, acbb_cli_cmd_help },
@@ -195,6 +200,8 @@ static bool is_flag(const char *s, const char *lng, const char *shrt)
     return strcmp(s, lng) == 0 || (shrt && strcmp(s, shrt) == 0);
 }
 
+static int run_command(int argc, char **argv);
+
 int main(int argc, char **argv)
 {
     /* The default GSL handler aborts the process (common rules). */
@@ -209,6 +216,15 @@ int main(int argc, char **argv)
         return acbb_cli_stdout_check(0);
     }
     if (is_flag(argv[1], "--version", NULL)) return cmd_version(NULL);
+    acbb_cli_json_status js;
+    acbb_cli_json_status_begin(&js, argc, argv);
+    int rc = run_command(argc, argv);
+    return acbb_cli_json_status_end(&js, rc);
+}
+
+/* The command argv names, parsed and run: its exit status. */
+static int run_command(int argc, char **argv)
+{
     int first = 2, rc = 0;
     const acbb_cli_command *c = find_command(argc, argv, &first, &rc);
     if (!c) return rc;

@@ -89,6 +89,7 @@ static void ring_and_work(acbb_json *j, const acbb_scene *sc, const acbb_snapsho
 void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
 {
     acbb_json_open(j, NULL, '{', false);
+    acbb_json_long(j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     acbb_json_str(j, "status", acbb_run_status_name(s));
     acbb_json_str(j, "message", s->message);
     acbb_json_long(j, "iterations", s->iteration);
@@ -122,6 +123,7 @@ void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *stat
                             const char *message)
 {
     acbb_json_open(j, NULL, '{', false);
+    acbb_json_long(j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     acbb_json_str(j, "status", status);
     acbb_json_str(j, "message", message);
     acbb_json_long(j, "iterations", 0);
