@@ -72,6 +72,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                          "with --sensitivity: vary only these uncertain inputs (default all; "
                          "`acbb keys` marks them plausible)" },
     [CLI_OPT_MAN] = { "man", NULL, "print the manual page (roff) made from the command table" },
+    [CLI_OPT_BASH_COMPLETION] = { "bash-completion", NULL,
+                                  "print the bash completion script made from the command table" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

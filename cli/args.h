@@ -27,6 +27,7 @@ typedef enum {
     CLI_OPT_GRID, CLI_OPT_JSONL, CLI_OPT_SHARD, CLI_OPT_MAX_POINTS,
     CLI_OPT_METRIC, CLI_OPT_DELTA, CLI_OPT_MORRIS, CLI_OPT_SENSITIVITY,
     CLI_OPT_ENVELOPE, CLI_OPT_POINTS, CLI_OPT_INPUTS, CLI_OPT_MAN, CLI_OPT_TRANSIENT,
+    CLI_OPT_BASH_COMPLETION,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
@@ -97,6 +98,8 @@ void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c);
  * all from the two tables. */
 void acbb_cli_print_overview(FILE *f);
 void acbb_cli_print_man(FILE *f, const char *version);
+/* The bash completion script from the same tables (completion/bash.c). */
+void acbb_cli_print_bash_completion(FILE *f);
 int acbb_cli_unknown_command(const char *name);
 int acbb_cli_cmd_help(const acbb_cli_args *a);
 

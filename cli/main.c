@@ -121,13 +121,14 @@ const acbb_cli_command acbb_cli_commands[] = {
       "The paths of `acbb run --json` (balls[i]: any ball index), as `acbb sensitivity\n"
       "--metric` and the TUI's Sweep and Sensitivity screens take them.\n",
       0, 0, 0, -1, cmd_metrics },
-    { "schema", NULL, "", "print the JSON Schema of the JSON documents acbb writes",
+    { "schema", NULL, "", "the JSON Schema of the JSON output",
       "Every JSON document starts with \"schema_version\"; with --json, bad input\n"
       "(exit 2) is {\"status\": \"bad_input\", \"message\": ...} on stdout.\n",
       0, 0, 0, -1, acbb_cli_cmd_schema },
     { "help", NULL, "[COMMAND]", "this overview, or one command's usage",
-      "--man prints the manual page (installed as acbb.1) from this same table.\n",
-      O(MAN), 0, 2, -1, acbb_cli_cmd_help },
+      "--man prints the manual page (installed as acbb.1) from this same table,\n"
+      "--bash-completion the bash completion script (installed as completions/acbb).\n",
+      O(MAN) | O(BASH_COMPLETION), 0, 2, -1, acbb_cli_cmd_help },
     { "version", NULL, "", "print the version (also --version)", NULL, 0, 0, 0, -1,
       cmd_version },
 };
