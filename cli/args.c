@@ -122,6 +122,11 @@ static size_t wrap(FILE *f, const char *text, size_t col, size_t indent)
     return col;
 }
 
+size_t acbb_cli_wrap(FILE *f, const char *text, size_t col, size_t indent)
+{
+    return wrap(f, text, col, indent);
+}
+
 static void print_try(const acbb_cli_command *c)
 {
     fprintf(stderr, "try `acbb help %s%s%s`\n", c->name, c->sub ? " " : "",

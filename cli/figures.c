@@ -98,6 +98,26 @@ static void md_figure(FILE *f, const fig_view *v, const acbb_seed_figure *sf)
     }
 }
 
+/* The seed's seven conclusions (seed section 5) as `acbb report` judges
+ * them: the engine's mapping onto the checks and its verdicts (study.h). */
+static void md_conclusions(FILE *f, const fig_view *v)
+{
+    size_t nc;
+    const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
+    fprintf(f, "\n## Seed conclusions (seed section 5)\n\nThe seed's %zu conclusions, each judged "
+            "from the checks it maps onto, as `acbb report` judges them.\n\n"
+            "| # | verdict | conclusion | checks |\n|---|---|---|---|\n", nc);
+    for (size_t i = 0; i < nc; i++) {
+        fprintf(f, "| (%zu) | %s | ", i + 1,
+                acbb_verdict_name(acbb_study_conclusion_verdict(v->st, i)));
+        md_text(f, cc[i].text);
+        fputs(" |", f);
+        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
+            fprintf(f, " %s", cc[i].checks[k]);
+        fputs(" |\n", f);
+    }
+}
+
 static void md_report(FILE *f, const fig_view *v)
 {
     int nv[3];
@@ -114,6 +134,7 @@ static void md_report(FILE *f, const fig_view *v)
             1e-3 * v->ms[0], 1e-3 * v->ms[1], 1e-3 * v->ms[2]);
     fprintf(f, "**Statements: %d held, %d not held, %d not evaluated** (of %zu; `acbb "
             "report` gives the evidence).\n", nv[0], nv[1], nv[2], acbb_study_n_items(v->st));
+    md_conclusions(f, v);
     size_t n;
     const acbb_seed_figure *sf = acbb_seed_figure_table(&n);
     for (size_t i = 0; i < n; i++) md_figure(f, v, &sf[i]);

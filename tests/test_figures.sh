@@ -75,6 +75,17 @@ t $? "each verdict line of REPORT.md is the verdict acbb report gives ($(wc -l <
 [ "$(wc -l <"$TMP/got")" -ge 15 ]
 t $? "REPORT.md cites at least 15 of the 18 statements"
 
+# The seed's seven conclusions, with the verdicts acbb report gives (issue 21 item 11).
+grep -q "^## Seed conclusions (seed section 5)" "$OUT/REPORT.md"
+t $? "REPORT.md has the seed's conclusions"
+sed -n 's/^| (\([0-9]\)) | \(HELD\|NOT HELD\|NOT EVALUATED\) | .*/\1 \2/p' "$OUT/REPORT.md" >"$TMP/cgot"
+[ "$(wc -l <"$TMP/cgot")" -eq 7 ]
+t $? "all seven are listed ($(wc -l <"$TMP/cgot"))"
+"$ACBB" report presets/7008C.ini --md "$TMP/report.md" >/dev/null 2>&1
+sed -n 's/^| (\([0-9]\)) | \(HELD\|NOT HELD\|NOT EVALUATED\) | .*/\1 \2/p' "$TMP/report.md" >"$TMP/cwant"
+[ -s "$TMP/cwant" ] && cmp -s "$TMP/cgot" "$TMP/cwant"
+t $? "with the verdicts of acbb report --md"
+
 # ---- fit to print (issue 21 item 9), read from the SVGs ----
 grep -q "ω" "$OUT/fig08a.svg" && ! grep -q "omega_x'" "$OUT/fig08a.svg"
 t $? "fig08a: omega_x' is printed as the Greek letter with a subscript"
