@@ -79,7 +79,7 @@ static void print_value(FILE *f, int ok, double v)
 static void print_table(FILE *f, const char *preset, const acbb_sens_result *r)
 {
     char t[128];
-    fprintf(f, "sensitivity of %s, %s: %zu uncertain inputs, one at a time\n",
+    fprintf(f, "sensitivity of %s, %s:\n%zu uncertain inputs, one at a time\n",
             metric_title(r, t, sizeof t), preset, r->n);
     if (r->ok0) fprintf(f, "at the scene's values: %.6g\n\n", r->y0);
     else fprintf(f, "at the scene's values: failed (%s)\n\n", r->fail0);

@@ -105,5 +105,20 @@ ok $? "and the curves are drawn with those marks"
 keys q
 wait_file "$TMP/s2"
 
+# The Sweep screen: a default key that works, a range r would refuse is
+# refused at e already (issue 21 item 5).
+start "" s3 copy.ini
+wait_for "Idle at ambient"
+keys 9
+wait_for "Sweep operating.axial_load_N = "
+ok $? "the Sweep screen's default key is the axial load, not the pitch diameter"
+keys e C-u
+$T send-keys -t "$S" -l "100:1000:400"
+keys Enter
+wait_for "range refused: 400 points, the TUI sweeps 1..200"
+ok $? "a 400-point range is refused at e, with r's reason"
+keys q
+wait_file "$TMP/s3"
+
 echo "1..$n"
 [ "$failed" -eq 0 ]

@@ -102,6 +102,7 @@ struct acbb_app {
     struct {
         char key[ACBB_SWEEP_KEY];  /* the swept key ("" until chosen) */
         char range[96];            /* "lo:hi:n" or "v1,v2,..." */
+        int chosen;                /* the key was typed (s), not a default */
         int metric, top;           /* metric menu index; first table row shown */
         unsigned long seen_run;    /* run whose end was already announced */
     } sw;
