@@ -44,6 +44,9 @@ $T send-keys -t "$S" -l "$(printf '\033[<0;%d;1M\033[<0;%d;1m' "$c" "$c")"
 wait_for "[3 Balls]"
 ok $? "an SGR click on a tab opens it"
 
+# Balls at 80 columns: the header is whole (the bars' label was cut)
+screen | sed -n '2p' | grep -q "Qi|Qo *$\|Qi | Qo *$"
+ok $? "the Balls header fits 80 columns ($(screen | sed -n '2p' | tail -c 20))"
 # Balls: the Hertz view
 keys c
 wait_for "pi GPa" && screen | grep -q "a_i mm" && screen | grep -q "b_o mm"
@@ -51,10 +54,10 @@ ok $? "c on the Balls screen shows pmax and the semi-axes a, b"
 
 # a message, then the next key: the hints are back
 keys m
-wait_for "baseline pinned"
+wait_for "baseline pinned" && wait_for "; M clears"
 keys 1
 wait_for "$HINT"
-ok $? "the key hints return at the next key after a message"
+ok $? "the baseline message is whole at 80 columns, and the key hints return at the next key"
 
 # q during a run asks first
 keys q

@@ -192,7 +192,7 @@ static void baseline(acbb_app *a, int pin)
     } else {
         a->base = a->st.snap;
         a->has_base = 1;
-        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned at t = %.0f s: the Run screen shows changes against it (M clears)",
+        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned (t = %.0f s): Run shows changes against it; M clears",
                      a->base.time);
     }
 }

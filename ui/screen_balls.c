@@ -50,7 +50,7 @@ static void draw(acbb_app *a)
     n += snprintf(head + n, sizeof head - (size_t)n, " %7s", "spin_i");
     if (wide) n += snprintf(head + n, sizeof head - (size_t)n, " %7s", "spin_o");
     snprintf(head + n, sizeof head - (size_t)n, " %6s %6s  %s", "h_i um", "h_o um",
-             bw >= 3 ? "Qi | Qo (bars)" : "");
+             bw >= 7 ? "Qi | Qo" : bw >= 3 ? "Qi|Qo" : "");
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%s", head);
     double qmax = 1e-9;
     for (int i = 0; i < s->n_balls; i++) qmax = fmax(qmax, fmax(s->balls[i].Qi, s->balls[i].Qo));
