@@ -14,11 +14,11 @@
 
 static const acbb_help_line global_help[] = {
     { "Tab  S-Tab", "next / previous screen" },
-    { "?  F1", "this help" },
+    { "?  F1", "this help; PgDn PgUp space page it, any other key closes it" },
     { "/  n  N", "search (Edit, Nodes, help); next / previous match" },
-    { "Esc", "clear the message; cancel a prompt" },
+    { "Esc", "clear the message (the next key does too); cancel a prompt" },
     { "Ctrl-L", "redraw the whole screen" },
-    { "q  F10", "quit (asks if unsaved)" },
+    { "q  F10", "quit (asks during a run or if unsaved)" },
     { "Ctrl-C", "quit, like q" },
     { "mouse", "click a tab, a row or a key of the hint line; wheel scrolls (off: --no-mouse)" },
     { NULL, NULL },
