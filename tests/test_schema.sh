@@ -51,6 +51,16 @@ t $? "and prints the bad_input document too"
 [ ! -s "$TMP/plain" ]
 t $? "without --json nothing goes to stdout"
 
+# --baseline: a temperature's change in % of its rise above ambient, as the
+# TUI's Run screen shows it (issue 21 item 7); hand calculation from the two runs
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=500 --baseline "$TMP/runs/7008C.json" --json \
+    >"$TMP/vs.json" 2>/dev/null
+jq -e --slurpfile b "$TMP/runs/7008C.json" '
+    (.vs_baseline[] | select(.path == "temperature_C.outer_ring")) as $r
+    | ($b[0].temperature_C.outer_ring - $b[0].scene.keys["operating.ambient_C"]) as $rise
+    | ($r.change_pct - 100 * ($r.now - $r.baseline) / $rise) | fabs < 1e-9' "$TMP/vs.json" >/dev/null
+t $? "--baseline: temperature change_pct is of the rise above ambient ($(jq '.vs_baseline[] | select(.path == "temperature_C.outer_ring") | .change_pct' "$TMP/vs.json") %)"
+
 # the checker can fail: a document without status, a string for a number
 jq 'del(.status)' "$TMP/runs/7008C.json" >"$TMP/broken1.json"
 ! $CHECK "$TMP/broken1.json" 2>/dev/null
