@@ -120,6 +120,9 @@ $T send-keys -t "$S" -l "100:1000:400"
 keys Enter
 wait_for "range refused: 400 points, the TUI sweeps 1..200"
 ok $? "a 400-point range is refused at e, with r's reason"
+keys 8
+wait_for "B adds the dynamic level"
+ok $? "the Accuracy screen's how-to line is whole at 80 columns"
 keys q
 wait_file "$TMP/s3"
 
