@@ -84,6 +84,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_MAX_WALL] = { "max-wall", "SECONDS",
                            "bound each run's computing time (fidelity.max_wall_s): a run past "
                            "it ends wall_limit with its last good state, exit 3" },
+    [CLI_OPT_BASH_COMPLETION] = { "bash-completion", NULL,
+                                  "print the bash completion script made from the command table" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions
@@ -130,6 +132,11 @@ static size_t wrap(FILE *f, const char *text, size_t col, size_t indent)
         text += strspn(text, " ");
     }
     return col;
+}
+
+size_t acbb_cli_wrap(FILE *f, const char *text, size_t col, size_t indent)
+{
+    return wrap(f, text, col, indent);
 }
 
 static void print_try(const acbb_cli_command *c)

@@ -30,6 +30,7 @@ typedef enum {
     CLI_OPT_BRANCHES,
     CLI_OPT_SPEEDS, CLI_OPT_PRELOADS, CLI_OPT_MAX_RISE, CLI_OPT_MIN_LIFE, CLI_OPT_MIN_S0,
     CLI_OPT_MAX_WALL,
+    CLI_OPT_BASH_COMPLETION,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
@@ -100,6 +101,11 @@ void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c);
  * all from the two tables. */
 void acbb_cli_print_overview(FILE *f);
 void acbb_cli_print_man(FILE *f, const char *version);
+/* `text` word-wrapped to 79 columns from column `col`, continuation lines
+ * indented by `indent`; returns the column the cursor ends in. */
+size_t acbb_cli_wrap(FILE *f, const char *text, size_t col, size_t indent);
+/* The bash completion script from the same tables (completion/bash.c). */
+void acbb_cli_print_bash_completion(FILE *f);
 int acbb_cli_unknown_command(const char *name);
 int acbb_cli_cmd_help(const acbb_cli_args *a);
 

@@ -98,6 +98,27 @@ static void diff(const cJSON *was, const cJSON *now, const char *path, cJSON *ro
     }
 }
 
+/* A temperature's change in % of its rise above ambient, as the TUI's Run
+ * screen shows it (a % of a Celsius value depends on where 0 C is; issue
+ * 21 item 7). The ambient is the baseline scene's. */
+static void temperature_rises(cJSON *rows, const cJSON *was)
+{
+    const cJSON *keys = cJSON_GetObjectItem(cJSON_GetObjectItem(was, "scene"), "keys");
+    const cJSON *amb = cJSON_GetObjectItem(keys, "operating.ambient_C");
+    if (!cJSON_IsNumber(amb)) return;
+    cJSON *r;
+    cJSON_ArrayForEach(r, rows) {
+        const char *p = cJSON_GetObjectItem(r, "path")->valuestring;
+        const cJSON *a = cJSON_GetObjectItem(r, "baseline"), *b = cJSON_GetObjectItem(r, "now");
+        if (strncmp(p, "temperature_C.", 14) != 0 || !cJSON_IsNumber(a) || !cJSON_IsNumber(b)) continue;
+        double rise = a->valuedouble - amb->valuedouble;
+        cJSON *pct = fabs(rise) > 1e-12 ? cJSON_CreateNumber(100.0 * (b->valuedouble - a->valuedouble) / fabs(rise))
+                                        : cJSON_CreateNull();
+        cJSON_ReplaceItemInObject(r, "change_pct", pct);
+        cJSON_AddStringToObject(r, "change_pct_of", "rise above ambient");
+    }
+}
+
 static void print_row(const cJSON *r)
 {
     const cJSON *a = cJSON_GetObjectItem(r, "baseline"), *b = cJSON_GetObjectItem(r, "now");
@@ -130,6 +151,7 @@ static void print_table(const cJSON *rows, const char *path)
         return;
     }
     printf("  %-34s %12s %12s %11s %8s\n", "value", "baseline", "now", "change", "%");
+    printf("  (temperatures: %% of the rise above ambient, as the TUI shows it)\n");
     for (int pass = 0; pass < 2; pass++) {
         const cJSON *r;
         cJSON_ArrayForEach(r, rows) {
@@ -161,6 +183,7 @@ int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapsho
     int rc = now && rows ? ACBB_EXIT_OK : ACBB_EXIT_INTERNAL;
     if (rc == ACBB_EXIT_OK) {
         diff(was, now, "", rows);
+        temperature_rises(rows, was);
         if (json) {
             cJSON_AddItemToObject(now, "vs_baseline", rows);
             rows = NULL;

@@ -508,10 +508,19 @@ static void print_key(size_t i, const acbb_field_info *fi, const char *deflt)
 {
     char range[160], plaus[320];
     acbb_scene_field_interval(i, range, sizeof range);
-    printf("%s.%s = %s\n    %s: %s\n", fi->section, fi->key, deflt, range,
-           fi->help ? fi->help : "");
+    /* Wrapped at 80 columns, continuations under the text (issue 21 item 8). */
+    char line[800];
+    printf("%s.%s = %s\n    ", fi->section, fi->key, deflt);
+    snprintf(line, sizeof line, "%s: %s", range, fi->help ? fi->help : "");
+    acbb_cli_wrap(stdout, line, 4, 6);
+    fputc('\n', stdout);
     acbb_scene_field_plausible(i, plaus, sizeof plaus);
-    if (plaus[0]) printf("    plausible: %s\n", plaus);
+    if (plaus[0]) {
+        snprintf(line, sizeof line, "plausible: %s", plaus);
+        fputs("    ", stdout);
+        acbb_cli_wrap(stdout, line, 4, 6);
+        fputc('\n', stdout);
+    }
 }
 
 int acbb_cli_cmd_keys(const acbb_cli_args *a)

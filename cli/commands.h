@@ -26,4 +26,7 @@ int acbb_cli_plot(const acbb_cli_args *a);
 int acbb_cli_bench_accuracy(const acbb_cli_args *a);
 int acbb_cli_cmd_presets(const acbb_cli_args *a);
 
+/* schema.c */
+int acbb_cli_cmd_schema(const acbb_cli_args *a);
+
 #endif

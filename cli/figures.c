@@ -13,10 +13,12 @@
 #include "acbb/figures.h"
 #include "acbb/measure.h"
 #include "acbb/outfile.h"
+#include "acbb/plot.h"
 #include "acbb/study.h"
 #include "common.h"
 #include "exit.h"
 #include "figures.h"
+#include "plot.h"
 #include "progress.h"
 
 #define FIG_W 900
@@ -29,6 +31,7 @@ typedef struct {
     const acbb_fig_input *in;
     const acbb_figure_result *res;
     double ms[3];                /* study runs, trajectories, figures */
+    int w, h;                    /* figure size, pixels (--size) */
 } fig_view;
 
 static void md_text(FILE *f, const char *s)
@@ -95,6 +98,26 @@ static void md_figure(FILE *f, const fig_view *v, const acbb_seed_figure *sf)
     }
 }
 
+/* The seed's seven conclusions (seed section 5) as `acbb report` judges
+ * them: the engine's mapping onto the checks and its verdicts (study.h). */
+static void md_conclusions(FILE *f, const fig_view *v)
+{
+    size_t nc;
+    const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
+    fprintf(f, "\n## Seed conclusions (seed section 5)\n\nThe seed's %zu conclusions, each judged "
+            "from the checks it maps onto, as `acbb report` judges them.\n\n"
+            "| # | verdict | conclusion | checks |\n|---|---|---|---|\n", nc);
+    for (size_t i = 0; i < nc; i++) {
+        fprintf(f, "| (%zu) | %s | ", i + 1,
+                acbb_verdict_name(acbb_study_conclusion_verdict(v->st, i)));
+        md_text(f, cc[i].text);
+        fputs(" |", f);
+        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
+            fprintf(f, " %s", cc[i].checks[k]);
+        fputs(" |\n", f);
+    }
+}
+
 static void md_report(FILE *f, const fig_view *v)
 {
     int nv[3];
@@ -111,6 +134,7 @@ static void md_report(FILE *f, const fig_view *v)
             1e-3 * v->ms[0], 1e-3 * v->ms[1], 1e-3 * v->ms[2]);
     fprintf(f, "**Statements: %d held, %d not held, %d not evaluated** (of %zu; `acbb "
             "report` gives the evidence).\n", nv[0], nv[1], nv[2], acbb_study_n_items(v->st));
+    md_conclusions(f, v);
     size_t n;
     const acbb_seed_figure *sf = acbb_seed_figure_table(&n);
     for (size_t i = 0; i < n; i++) md_figure(f, v, &sf[i]);
@@ -189,10 +213,17 @@ static int figures(const acbb_cli_args *a, acbb_study *st, long jobs)
     acbb_figure_table(&n);
     acbb_figure_result *res = calloc(n, sizeof *res);
     fig_view v = { a->preset, a->val[CLI_OPT_OUT], st, acbb_study_results(st), NULL, res,
-                   { 0, 0, 0 } };
+                   { 0, 0, 0 }, FIG_W, FIG_H };
     acbb_fig_input *in = NULL;
     acbb_error err = { { 0 } };
     if (!res) return ACBB_EXIT_INTERNAL;
+    acbb_error serr = { { 0 } };
+    if (a->val[CLI_OPT_SIZE] && (acbb_cli_parse_size(a->val[CLI_OPT_SIZE], &v.w, &v.h) ||
+                                 acbb_plot_check_size(ACBB_PLOT_PNG, v.w, v.h, &serr) != ACBB_OK)) {
+        if (serr.msg[0]) fprintf(stderr, "acbb: study: --size: %s\n", serr.msg);
+        free(res);
+        return ACBB_EXIT_INPUT;
+    }
     acbb_cli_progress prog;
     acbb_cli_progress_init(&prog, stderr, 0.0);
     const atomic_int *cancel = acbb_cli_interrupt_begin();
@@ -211,7 +242,7 @@ static int figures(const acbb_cli_args *a, acbb_study *st, long jobs)
     }
     double t2 = acbb_now_ms();
     bool drawn = !rc && ss != ACBB_CANCELLED;
-    if (drawn) acbb_figures_write_all(in, v.dir, (int)jobs, FIG_W, FIG_H, res);
+    if (drawn) acbb_figures_write_all(in, v.dir, (int)jobs, v.w, v.h, res);
     acbb_cli_progress_end(&prog);
     acbb_cli_interrupt_end();
     if (acbb_cli_interrupted()) {

@@ -19,6 +19,7 @@
 #include "new.h"
 #include "output.h"
 #include "sweep.h"
+#include "json_status.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -84,8 +85,9 @@ const acbb_cli_command acbb_cli_commands[] = {
       "--out DIR instead writes the seed's Figs. 7-19 (the study of `acbb report`:\n"
       "sweeps at 15000 rpm, TE and WTE) as DIR/figNN*.png, .svg and .csv, and\n"
       "DIR/REPORT.md linking them with the seed's captions and the verdicts of the\n"
-      "statements that cite them. e.g. acbb study seed --out figs\n",
-      SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT) | O(MAX_WALL), 1, 1, -1, acbb_cli_cmd_study },
+      "statements that cite them. e.g. acbb study seed --out figs\n"
+      "--size WxH: the figures' size in pixels (default 900x600).\n",
+      SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT) | O(SIZE) | O(MAX_WALL), 1, 1, -1, acbb_cli_cmd_study },
     { "plot", NULL, "PRESET", "run the scene and plot it through gnuplot",
       "--kind all writes every kind, FILE-<kind>.png next to --out FILE.png.\n",
       SCENE_OPTS | O(KIND) | O(OUT) | O(DUMB) | O(SIZE), 1, 1, 0, acbb_cli_plot },
@@ -132,9 +134,14 @@ const acbb_cli_command acbb_cli_commands[] = {
       "The paths of `acbb run --json` (balls[i]: any ball index), as `acbb sensitivity\n"
       "--metric` and the TUI's Sweep and Sensitivity screens take them.\n",
       0, 0, 0, -1, cmd_metrics },
+    { "schema", NULL, "", "the JSON Schema of the JSON output",
+      "Every JSON document starts with \"schema_version\"; with --json, bad input\n"
+      "(exit 2) is {\"status\": \"bad_input\", \"message\": ...} on stdout.\n",
+      0, 0, 0, -1, acbb_cli_cmd_schema },
     { "help", NULL, "[COMMAND]", "this overview, or one command's usage",
-      "--man prints the manual page (installed as acbb.1) from this same table.\n",
-      O(MAN), 0, 2, -1, acbb_cli_cmd_help },
+      "--man prints the manual page (installed as acbb.1) from this same table,\n"
+      "--bash-completion the bash completion script (installed as completions/acbb).\n",
+      O(MAN) | O(BASH_COMPLETION), 0, 2, -1, acbb_cli_cmd_help },
     { "version", NULL, "", "print the version (also --version)", NULL, 0, 0, 0, -1,
       cmd_version },
 };
@@ -207,6 +214,8 @@ static bool is_flag(const char *s, const char *lng, const char *shrt)
     return strcmp(s, lng) == 0 || (shrt && strcmp(s, shrt) == 0);
 }
 
+static int run_command(int argc, char **argv);
+
 int main(int argc, char **argv)
 {
     /* The default GSL handler aborts the process (common rules). */
@@ -221,6 +230,15 @@ int main(int argc, char **argv)
         return acbb_cli_stdout_check(0);
     }
     if (is_flag(argv[1], "--version", NULL)) return cmd_version(NULL);
+    acbb_cli_json_status js;
+    acbb_cli_json_status_begin(&js, argc, argv);
+    int rc = run_command(argc, argv);
+    return acbb_cli_json_status_end(&js, rc);
+}
+
+/* The command argv names, parsed and run: its exit status. */
+static int run_command(int argc, char **argv)
+{
     int first = 2, rc = 0;
     const acbb_cli_command *c = find_command(argc, argv, &first, &rc);
     if (!c) return rc;

@@ -40,7 +40,7 @@ static int bad_usage(const char *what, const char *arg)
 }
 
 /* "WxH" with both sides whole numbers; the plot module checks the range. */
-static int parse_size(const char *text, int *w, int *h)
+int acbb_cli_parse_size(const char *text, int *w, int *h)
 {
     char *end = NULL;
     errno = 0;
@@ -53,7 +53,7 @@ static int parse_size(const char *text, int *w, int *h)
     *h = (int)y;
     return 0;
 bad:
-    fprintf(stderr, "acbb: plot: --size %s: expected WxH, e.g. 1000x600\n", text);
+    fprintf(stderr, "acbb: --size %s: expected WxH, e.g. 1000x600\n", text);
     return ACBB_EXIT_INPUT;
 }
 
@@ -210,7 +210,7 @@ static int check_plot_args(const plot_args *a, int *first, int *last, int *w, in
     *w = a->out ? PLOT_FILE_W : PLOT_DUMB_W;
     *h = a->out ? PLOT_FILE_H : PLOT_DUMB_H;
     if (!a->size) return 0;
-    if (parse_size(a->size, w, h)) return ACBB_EXIT_INPUT;
+    if (acbb_cli_parse_size(a->size, w, h)) return ACBB_EXIT_INPUT;
     acbb_error err = { { 0 } };
     int fmt = a->out ? acbb_plot_format_from_name(a->out) : ACBB_PLOT_DUMB;
     if (acbb_plot_check_size((acbb_plot_format)fmt, *w, *h, &err) != ACBB_OK) {

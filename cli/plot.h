@@ -29,6 +29,10 @@
  * pixels, or 80x25 characters for the dumb terminal. The handler itself is
  * acbb_cli_plot in commands.h. */
 
+/* Parse --size "WxH" (whole numbers): 0, or 2 with a message on stderr.
+ * The range is the plot module's to check (acbb_plot_check_size). */
+int acbb_cli_parse_size(const char *text, int *w, int *h);
+
 /* Check a `--plot FILE` argument before a run starts: 0, or 2 with a
  * message on stderr if the extension is neither .png nor .svg. */
 int acbb_cli_plot_check_path(const char *path);

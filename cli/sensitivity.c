@@ -79,27 +79,27 @@ static void print_value(FILE *f, int ok, double v)
 static void print_table(FILE *f, const char *preset, const acbb_sens_result *r)
 {
     char t[128];
-    fprintf(f, "sensitivity of %s, %s: %zu uncertain inputs, one at a time\n",
+    fprintf(f, "sensitivity of %s, %s:\n%zu uncertain inputs, one at a time\n",
             metric_title(r, t, sizeof t), preset, r->n);
     if (r->ok0) fprintf(f, "at the scene's values: %.6g\n\n", r->y0);
     else fprintf(f, "at the scene's values: failed (%s)\n\n", r->fail0);
-    fprintf(f, "%-36s %-21s %11s %11s %10s\n", "input", "plausible range", "at low", "at high",
-            "effect");
+    /* Within 80 columns (issue 21 item 8): the input and its numbers on one
+     * line, the plausible range it was moved over under it. */
+    fprintf(f, "%-33s %11s %11s %9s\n", "input / plausible range", "at low", "at high", "effect");
     for (size_t i = 0; i < r->n; i++) {
         const acbb_sens_row *w = &r->rows[i];
-        char range[48];
-        snprintf(range, sizeof range, "%s..%s", w->in.lo, w->in.hi);
-        fprintf(f, "%-36s %-21s", w->in.key, range);
+        fprintf(f, "%-33s", w->in.key);
         print_value(f, w->ok_lo, w->y_lo);
         print_value(f, w->ok_hi, w->y_hi);
-        fprintf(f, " %10.3g%s\n", w->effect, w->flips ? "  FLIPS SIGN" : "");
+        fprintf(f, " %9.3g%s\n", w->effect, w->flips ? " FLIPS SIGN" : "");
+        fprintf(f, "  %s..%s\n", w->in.lo, w->in.hi);
     }
     if (!r->morris_r) return;
     fprintf(f, "\nMorris elementary effects: r = %d trajectories on a p = %d grid, "
                "Delta = %.4g, %zu points, seed 1\n", r->morris_r, r->morris_p, r->morris_delta,
             (size_t)r->morris_r * (r->n + 1));
     fprintf(f, "(per whole plausible range; sigma large vs mu*: nonlinear or interacting)\n");
-    fprintf(f, "%-36s %11s %11s %11s %5s\n", "input", "mu*", "mu", "sigma", "n");
+    fprintf(f, "%-33s %11s %11s %11s %5s\n", "input", "mu*", "mu", "sigma", "n");
     size_t order[ACBB_SENS_MAX];
     for (size_t i = 0; i < r->n; i++) order[i] = i;
     for (size_t i = 1; i < r->n; i++)   /* by mu*, largest first (insertion sort) */
@@ -109,7 +109,7 @@ static void print_table(FILE *f, const char *preset, const acbb_sens_result *r)
         }
     for (size_t i = 0; i < r->n; i++) {
         const acbb_sens_row *w = &r->rows[order[i]];
-        fprintf(f, "%-36s %11.4g %11.4g %11.4g %5d\n", w->in.key, w->mu_star, w->mu, w->sigma,
+        fprintf(f, "%-33s %11.4g %11.4g %11.4g %5d\n", w->in.key, w->mu_star, w->mu, w->sigma,
                 w->n_ee);
     }
 }

@@ -75,6 +75,39 @@ t $? "each verdict line of REPORT.md is the verdict acbb report gives ($(wc -l <
 [ "$(wc -l <"$TMP/got")" -ge 15 ]
 t $? "REPORT.md cites at least 15 of the 18 statements"
 
+# The seed's seven conclusions, with the verdicts acbb report gives (issue 21 item 11).
+grep -q "^## Seed conclusions (seed section 5)" "$OUT/REPORT.md"
+t $? "REPORT.md has the seed's conclusions"
+sed -n 's/^| (\([0-9]\)) | \(HELD\|NOT HELD\|NOT EVALUATED\) | .*/\1 \2/p' "$OUT/REPORT.md" >"$TMP/cgot"
+[ "$(wc -l <"$TMP/cgot")" -eq 7 ]
+t $? "all seven are listed ($(wc -l <"$TMP/cgot"))"
+"$ACBB" report presets/7008C.ini --md "$TMP/report.md" >/dev/null 2>&1
+sed -n 's/^| (\([0-9]\)) | \(HELD\|NOT HELD\|NOT EVALUATED\) | .*/\1 \2/p' "$TMP/report.md" >"$TMP/cwant"
+[ -s "$TMP/cwant" ] && cmp -s "$TMP/cgot" "$TMP/cwant"
+t $? "with the verdicts of acbb report --md"
+
+# ---- fit to print (issue 21 item 9), read from the SVGs ----
+grep -q "ω" "$OUT/fig08a.svg" && ! grep -q "omega_x'" "$OUT/fig08a.svg"
+t $? "fig08a: omega_x' is printed as the Greek letter with a subscript"
+grep -q "°C" "$OUT/fig07b.svg" && ! grep -q "(C)" "$OUT/fig07b.svg"
+t $? "fig07b: the temperature axis says degrees C"
+grep -q '<tspan[^>]*dy="[0-9.]*px">T</tspan>' "$OUT/fig13a.svg" && ! grep -q "P_T" "$OUT/fig13a.svg"
+t $? "fig13a: P_T has a real subscript"
+cols=$(grep -o "stroke='rgb([^']*)'" "$OUT/fig13a.svg" | sort -u | wc -l)
+[ "$cols" -ge 2 ]
+t $? "fig13a: TE and WTE are drawn in different colours ($cols line colours)"
+grep -q "stroke-dasharray" "$OUT/fig13a.svg"
+t $? "fig13a: and WTE is dashed"
+# the size: PNG width and height from the IHDR chunk (bytes 17-24)
+"$ACBB" study seed --out "$TMP/small" --size 640x400 >/dev/null 2>"$TMP/err"
+code $? 0 "study seed --out DIR --size 640x400 runs"
+[ "$(od -An -tu1 -j16 -N8 "$TMP/small/fig13a.png" | tr -s ' ' | sed 's/^ //')" = "0 0 2 128 0 0 1 144" ]
+t $? "--size 640x400: the PNGs are 640 x 400 pixels"
+"$ACBB" study seed --out "$TMP/bad" --size 10x10 >/dev/null 2>"$TMP/err"
+code $? 2 "--size 10x10 is refused with exit 2"
+grep -q "size" "$TMP/err"
+t $? "and says why: $(head -1 "$TMP/err")"
+
 # ---- failures ----
 : >"$TMP/file"
 "$ACBB" study seed --out "$TMP/file" >/dev/null 2>"$TMP/err"

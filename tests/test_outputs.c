@@ -5,7 +5,7 @@
  * cJSON and every table entry's path is walked through that JSON as text
  * ("ring.delta_x_um", "balls[3].losses_W.spin"); the number there equals
  * acbb_metric_value of the same path on a direct run of the same preset
- * (both printed as the JSON prints, %.10g). Every plain number of the
+ * (both printed as the JSON prints, %.17g). Every plain number of the
  * table's sections in the JSON is an entry (nothing left out).
  * Hand calculations on a made-up snapshot check the conversions; the
  * table's own rules (units and labels non-empty, paths and CSV names
@@ -60,7 +60,7 @@ static const cJSON *json_path(const cJSON *root, const char *path)
 static double as_printed(double v)
 {
     char b[64];
-    snprintf(b, sizeof b, "%.10g", v);
+    snprintf(b, sizeof b, "%.17g", v);
     return strtod(b, NULL);
 }
 

@@ -144,11 +144,11 @@ static void test_png_svg(const acbb_plot_data *d)
     buf = slurp(path, &len);
     has_substr(buf, "<svg", "SVG has an <svg element");
     has_substr(buf, TITLE ": bearing temperatures", "SVG has the title");
-    has_substr(buf, "temperature (C)", "SVG y label has the unit");
+    has_substr(buf, "temperature (\u00b0C)", "SVG y label has the unit, degrees C");
     has_substr(buf, "time (s)", "SVG x label has the unit");
     has_substr(buf, "outer ring", "SVG legend names the outer ring");
     /* T_outer tends to 20 + 30 (1 - e^-4.9) = 49.78 C: autoscale ends at the 50 tic. */
-    has_substr(buf, "<text> 50</text>", "SVG y axis ends at 50 C (max 49.8 C)");
+    has_substr(buf, "> 50</tspan></text>", "SVG y axis ends at 50 C (max 49.8 C)");
     free(buf);
 
     /* Angles: 20 + 10 cos(psi) deg spans exactly 10..30 deg; in radians the
@@ -157,11 +157,12 @@ static void test_png_svg(const acbb_plot_data *d)
     st = acbb_plot_file(ACBB_PLOT_ANGLES, ACBB_PLOT_SVG, path, 800, 500, d, &err);
     ok(st == ACBB_OK, "SVG angles plot written (%s)", err.msg);
     buf = slurp(path, &len);
-    has_substr(buf, "<text> 30</text>", "angle axis in degrees: 30 deg tic");
-    has_substr(buf, "<text> 10</text>", "angle axis in degrees: 10 deg tic");
-    has_substr(buf, "angle (deg)", "angle label has the unit");
-    has_substr(buf, "ball azimuth (deg)", "azimuth label has the unit");
-    ok(buf && !strstr(buf, "<text> 0.5</text>"), "no radian-scale tic");
+    has_substr(buf, "> 30</tspan></text>", "angle axis in degrees: 30 deg tic");
+    has_substr(buf, "> 10</tspan></text>", "angle axis in degrees: 10 deg tic");
+    has_substr(buf, "angle (\u00b0)", "angle label has the unit, the degree sign");
+    has_substr(buf, "ball azimuth (\u00b0)", "azimuth label has the unit");
+    has_substr(buf, "\u03b1", "the contact angles are labelled alpha as the Greek letter");
+    ok(buf && !strstr(buf, "> 0.5</tspan></text>"), "no radian-scale tic");
     free(buf);
     ok(temp_files(dir) == 0, "no temp files left after successful writes");
 }

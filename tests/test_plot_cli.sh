@@ -88,7 +88,10 @@ if [ "$plot_wired" -eq 1 ]; then
     has "$TMP/l.svg" "<svg" "l.svg is an SVG"
     has "$TMP/l.svg" "7008C: power losses" "l.svg has the title"
     has "$TMP/l.svg" "power loss (W)" "l.svg y label has the unit"
-    has "$TMP/l.svg" "spinning P_s" "l.svg legend names the spin loss"
+    has "$TMP/l.svg" '>spinning P</tspan><tspan font-family="Arial"  font-size="9.6" dy="3.60px">s' \
+        "l.svg legend names the spin loss, P_s with a real subscript"
+    ! grep -q "P_s" "$TMP/l.svg"
+    t $? "no literal P_s in l.svg"
     if command -v xmllint >/dev/null 2>&1; then
         xmllint --noout "$TMP/l.svg" 2>/dev/null
         t $? "l.svg is well-formed XML (xmllint)"

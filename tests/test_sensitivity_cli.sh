@@ -41,6 +41,8 @@ t $? "CSV and JSON list the inputs in the same order"
 sens --metric 'balls[0].Qi_N' --delta thermal_expansion >"$TMP/table"
 code $? 0 "table form: exit 0"
 has "$TMP/table" "FLIPS SIGN" "the table marks sign flips"
+[ "$(awk 'length > 80' "$TMP/table" | wc -l)" -eq 0 ]
+t $? "every line of the table fits 80 columns (issue 21 item 8)"
 grep "surroundings.shaft_bore " "$TMP/table" | grep -q "FLIPS SIGN"
 t $? "... on the shaft-bore row"
 if grep "mounting.h_fit_outer_W_m2K" "$TMP/table" | grep -q "FLIPS"; then t 1 "outer fit keeps the sign"

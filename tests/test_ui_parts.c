@@ -13,6 +13,7 @@
 #include "bench.h"
 #include "chart.h"
 #include "editor.h"
+#include "worker.h"
 #include "layout.h"
 #include "progress.h"
 
@@ -372,8 +373,21 @@ static void test_bench_frontier(void)
     ok(rows[1].wall_ms == 50 && rows[2].wall_ms == 40, "frontier: the rows' times are left as measured");
 }
 
+/* The pace (issue 21 item 7): simulated time over the pace, with a floor
+ * per step so the runaway's 78 steps in 24 simulated s stay watchable. */
+static void test_pace(void)
+{
+    ok(fabs(acbb_worker_step_ms(100.0, 200) - 500.0) < 1e-9, "a 100 s step at x200 lasts 500 ms");
+    ok(fabs(acbb_worker_step_ms(0.3, 200) - 100.0) < 1e-9, "a 0.3 s step at x200 lasts the 100 ms floor");
+    ok(acbb_worker_step_ms(5.0, 0) == 0.0, "flat out: no wait");
+    double total = 0.0;
+    for (int i = 0; i < 78; i++) total += acbb_worker_step_ms(24.0 / 78, 200);
+    ok(total >= 7000.0, "78 steps over 24 simulated s at x200 take %.1f s (was 0.12 s)", total / 1e3);
+}
+
 int main(void)
 {
+    test_pace();
     test_bench_frontier();
     test_layout();
     test_progress();

@@ -92,6 +92,10 @@ static void open_now(acbb_app *a, const char *path)
         return;
     }
     a->edit_error[0] = '\0';
+    /* The last preset's results must not pose as this one's (issue 21 item 2):
+     * the worker goes back to ambient with the new scene, idle. */
+    acbb_app_post(a, ACBB_CMD_RESET, &a->ed.scene, 0, "reset");
+    a->has_base = 0;
     acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
     offer_recovery(a);
 }
@@ -173,8 +177,19 @@ static void changed_key(acbb_app *a, int ch)
     }
 }
 
+/* A run is going on: q must not throw it away unasked (issue 21 item 6). */
+static int run_in_progress(const acbb_app *a)
+{
+    return a->st.phase == ACBB_WORKER_RUNNING || a->st.phase == ACBB_WORKER_PAUSED;
+}
+
 static void request_quit(acbb_app *a)
 {
+    if (run_in_progress(a) && !(a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)) {
+        a->mode = ACBB_MODE_CONFIRM;
+        a->confirm.kind = ACBB_CONFIRM_QUIT_RUN;
+        return;
+    }
     if (!a->ed.modified) {
         a->quit = 1;
         return;
@@ -201,7 +216,7 @@ static void baseline(acbb_app *a, int pin)
     } else {
         a->base = a->st.snap;
         a->has_base = 1;
-        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned at t = %.0f s: the Run screen shows changes against it (M clears)",
+        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned (t = %.0f s): Run shows changes against it; M clears",
                      a->base.time);
     }
 }
@@ -385,6 +400,11 @@ static void confirm_key(acbb_app *a, int ch)
         }
     } else if (a->confirm.kind == ACBB_CONFIRM_CHANGED) {
         changed_key(a, ch);
+    } else if (a->confirm.kind == ACBB_CONFIRM_QUIT_RUN) {
+        if (ch == 'y' || ch == 'Y') {
+            a->mode = ACBB_MODE_CONFIRM; /* keeps the question while asking on */
+            request_quit(a);             /* unsaved edits are asked about next */
+        } else acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting: the run goes on");
     } else if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
         if (ch == 'y' || ch == 'Y') {
             acbb_recover_clear(&a->ed); /* the user chose to discard them */
@@ -404,7 +424,9 @@ void acbb_app_key(acbb_app *a, int ch)
     /* While the terminal is too small nothing is drawn, so no key may act
      * unseen: only quitting, redrawing and resizing. */
     if (a->lay.too_small) {
-        if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) confirm_key(a, ch);
+        if (a->mode == ACBB_MODE_CONFIRM &&
+            (a->confirm.kind == ACBB_CONFIRM_QUIT || a->confirm.kind == ACBB_CONFIRM_QUIT_RUN))
+            confirm_key(a, ch);
         else if (ch == 'q' || ch == KEY_F(10)) request_quit(a);
         else if (ch == 12) clearok(curscr, TRUE);
         return;
@@ -416,6 +438,9 @@ void acbb_app_key(acbb_app *a, int ch)
     case ACBB_MODE_BROWSE: acbb_screen_browse_key(a, ch); return;
     case ACBB_MODE_NORMAL: break;
     }
+    /* A message lasts until the next key, then the key hints are back
+     * (htop keeps its F-key bar): Esc is not needed to see them. */
+    if (ch != KEY_MOUSE && ch != KEY_RESIZE) a->msg[0] = '\0';
     if (!screen_key(a, ch)) global_key(a, ch);
 }
 
@@ -442,7 +467,9 @@ static void draw_message(acbb_app *a)
             acbb_put(a, a->lay.status.y, 0, a->lay.status.w, ACBB_ROLE_DIM, "%s", a->prompt.shown);
         }
     } else if (a->mode == ACBB_MODE_CONFIRM) {
-        if (a->confirm.kind == ACBB_CONFIRM_QUIT)
+        if (a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "A run is in progress. Quit and lose it? y = quit, n = stay");
+        else if (a->confirm.kind == ACBB_CONFIRM_QUIT)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
                      "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
                      acbb_editor_name(&a->ed));
@@ -608,7 +635,8 @@ static void handle_signals(acbb_app *a, int *redraw)
     } else if (ev.interrupt) {
         /* Ctrl-C is "quit"; a second one while asking means yes, and the
          * edits go to the recovery file rather than being lost. */
-        if (a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT) {
+        if (a->mode == ACBB_MODE_CONFIRM &&
+            (a->confirm.kind == ACBB_CONFIRM_QUIT || a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)) {
             keep_edits(a);
             a->quit = 1;
         }
@@ -620,20 +648,25 @@ static void handle_signals(acbb_app *a, int *redraw)
     }
 }
 
+/* Read every key waiting, then act on them; a mouse report that curses
+ * left as raw bytes is taken out of them first (mouse.c). */
 static void read_keys(acbb_app *a, int *redraw, int *spins)
 {
-    int ch, got = 0;
-    while ((ch = getch()) != ERR) {
-        got = 1;
-        acbb_app_key(a, ch);
-        if (a->quit) break;
+    int k[256], n = 0, ch;
+    while (n < (int)(sizeof k / sizeof k[0]) && (ch = getch()) != ERR) k[n++] = ch;
+    for (int i = 0; i < n && !a->quit;) {
+        int b, x, y, press, used = acbb_mouse_decode(k + i, n - i, &b, &x, &y, &press);
+        if (used) {
+            acbb_app_mouse_raw(a, b, x, y, press);
+            i += used;
+        } else acbb_app_key(a, k[i++]);
     }
-    *spins = got ? 0 : *spins + 1;
+    *spins = n ? 0 : *spins + 1;
     if (*spins > HANGUP_SPINS) { /* the terminal went away without SIGHUP */
         a->quit = 1;
         a->exit_code = ACBB_EXIT_HANGUP;
     }
-    *redraw |= got;
+    *redraw |= n > 0;
 }
 
 static void loop(acbb_app *a)

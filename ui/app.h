@@ -26,7 +26,7 @@ typedef enum {
     ACBB_PROMPT_CALL               /* a screen's question: prompt.commit gets the answer */
 } acbb_prompt_kind;
 typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER,
-               ACBB_CONFIRM_CHANGED } acbb_confirm_kind;
+               ACBB_CONFIRM_CHANGED, ACBB_CONFIRM_QUIT_RUN } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
 #define ACBB_PREVIEW_MAX 65536
@@ -79,6 +79,7 @@ struct acbb_app {
     int pace_idx;
     char plot_dir[PATH_MAX];
     int node_top, ball_top, help_top;
+    int balls_contact;          /* Balls screen: 1 = Hertz columns (pmax, a, b), 0 = kinematics */
     int chart_by_time;             /* charts: x = simulated time (1) or iteration (0) */
     int plot_kind;                 /* preview kind (acbb_plot_kind) */
     char *preview;                 /* gnuplot dumb text, ACBB_PREVIEW_MAX bytes */
@@ -102,6 +103,7 @@ struct acbb_app {
     struct {
         char key[ACBB_SWEEP_KEY];  /* the swept key ("" until chosen) */
         char range[96];            /* "lo:hi:n" or "v1,v2,..." */
+        int chosen;                /* the key was typed (s), not a default */
         int metric, top;           /* metric menu index; first table row shown */
         unsigned long seen_run;    /* run whose end was already announced */
     } sw;
@@ -250,6 +252,11 @@ int acbb_screen_help_search(acbb_app *a, const char *text, int dir);
 void acbb_app_key(acbb_app *a, int ch);
 /* A mouse event is waiting (KEY_MOUSE): act on it (mouse.c). */
 void acbb_app_mouse(acbb_app *a);
+/* A mouse report that arrived as keys k[0..n) (mouse.c): the keys used,
+ * 0 if k does not start with one. Pure. */
+int acbb_mouse_decode(const int *k, int n, int *button, int *x, int *y, int *press);
+/* Act on a decoded report (only presses act; nothing with --no-mouse). */
+void acbb_app_mouse_raw(acbb_app *a, int button, int x, int y, int press);
 /* The message-row hint of the current screen. */
 const char *acbb_app_hint(const acbb_app *a);
 #define ACBB_RUN_HINT "r run  space pause  x stop  +/- pace  v view  m base  g plots  ? help  q quit"

@@ -106,6 +106,12 @@ int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf)
     return c->owner[row][col];
 }
 
+const char *acbb_chart_mark(int series)
+{
+    static const char *const marks[] = { "o", "+", "x", "#" };
+    return marks[(series < 0 ? 0 : series) % 4];
+}
+
 static double nice_step(double raw)
 {
     double p = pow(10.0, floor(log10(raw))), f = raw / p;

@@ -37,6 +37,10 @@ int acbb_chart_locate(const acbb_chart *c, double x, double y, int *row, int *co
  * A nice range maps to itself, so feeding back the union of the last
  * range and the data gives an axis that only widens and never jitters. */
 void acbb_chart_nice(double lo, double hi, int ticks, double *nlo, double *nhi, double *step);
+/* The glyph that stands for series `series` where colour cannot (NO_COLOR,
+ * a monochrome terminal): "o", "+", "x", "#", cycling. Drawn in the
+ * series' cells and in its legend swatch, so curves stay apart in print. */
+const char *acbb_chart_mark(int series);
 /* Smallest and largest finite value of v[0..n) into *lo, *hi (unchanged if none). */
 void acbb_chart_extend(const double *v, size_t n, double *lo, double *hi);
 

@@ -63,8 +63,9 @@ static void title_row(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp)
         snprintf(item, sizeof item, "%s %.2f", sp->names[s], sp->ys[s][sp->n - 1]);
         int need = (int)strlen(item) + (sp->nser > 1 ? 2 : 0) + 2;
         if (col + need > r.x + r.w) break;
-        if (sp->nser > 1) { /* legend swatch */
-            acbb_put(a, r.y, col, 2, series_role[s % 3], "%s%s", a->term.g.hline, a->term.g.hline);
+        if (sp->nser > 1) { /* legend swatch: a line in colour, the series' mark without */
+            const char *sw = a->term.colour ? a->term.g.hline : acbb_chart_mark(s);
+            acbb_put(a, r.y, col, 2, series_role[s % 3], "%s%s", sw, sw);
             col += 3;
         }
         acbb_put(a, r.y, col, r.x + r.w - col, series_role[s % 3], "%s", item);
@@ -121,6 +122,8 @@ void acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_
         for (int col = 0; col < c->w; col++) {
             char g[8];
             int owner = acbb_chart_cell(c, row, col, a->term.g.utf8, g);
+            /* Without colour the dots cannot say whose they are: the mark does. */
+            if (owner >= 0 && !a->term.colour) strcpy(g, acbb_chart_mark(owner));
             acbb_role_on(a, owner >= 0 ? roles[owner % nroles] : ACBB_ROLE_NORMAL);
             addstr(g);
         }

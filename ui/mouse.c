@@ -38,27 +38,78 @@ static void click_hint(acbb_app *a, int x)
     }
 }
 
-void acbb_app_mouse(acbb_app *a)
+/* One mouse report: button 0-2 pressed, 64/65 wheel up/down (xterm's
+ * numbering); releases never get here. */
+static void mouse_at(acbb_app *a, int button, int x, int y)
 {
-    MEVENT ev;
-    if (getmouse(&ev) != OK) return;
-    if (ev.bstate & (BUTTON4_PRESSED | BUTTON5_PRESSED)) {
-        int k = ev.bstate & BUTTON4_PRESSED ? KEY_UP : KEY_DOWN;
+    if (button == 64 || button == 65) {
+        int k = button == 64 ? KEY_UP : KEY_DOWN;
         for (int i = 0; i < WHEEL_ROWS; i++) acbb_app_key(a, k);
         return;
     }
-    if (!(ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED))) return;
+    if (button != 0) return;
     if (a->mode == ACBB_MODE_HELP) { /* a click closes the help, like a key */
         a->mode = ACBB_MODE_NORMAL;
         return;
     }
-    if (ev.y == a->lay.title.y) {
+    a->msg[0] = '\0'; /* a click is a key: the hints come back (app.c) */
+    if (y == a->lay.title.y) {
         for (int i = 0; i < acbb_screen_count && i < ACBB_MAX_TABS; i++)
-            if (ev.x >= a->tab_x0[i] && ev.x < a->tab_x1[i]) acbb_screen_show(a, i);
-    } else if (ev.y == a->lay.message.y && !a->msg[0] && a->mode == ACBB_MODE_NORMAL) {
-        click_hint(a, ev.x);
-    } else if (ev.y >= a->lay.body.y && ev.y < a->lay.body.y + a->lay.body.h) {
+            if (x >= a->tab_x0[i] && x < a->tab_x1[i]) acbb_screen_show(a, i);
+    } else if (y == a->lay.message.y && a->mode == ACBB_MODE_NORMAL) {
+        click_hint(a, x);
+    } else if (y >= a->lay.body.y && y < a->lay.body.y + a->lay.body.h) {
         const acbb_screen *s = acbb_screen_current(a);
-        if (s->click && a->mode == ACBB_MODE_NORMAL) s->click(a, ev.y - a->lay.body.y, ev.x - a->lay.body.x);
+        if (s->click && a->mode == ACBB_MODE_NORMAL) s->click(a, y - a->lay.body.y, x - a->lay.body.x);
     }
+}
+
+void acbb_app_mouse(acbb_app *a)
+{
+    MEVENT ev;
+    if (getmouse(&ev) != OK) return;
+    if (ev.bstate & (BUTTON4_PRESSED | BUTTON5_PRESSED))
+        mouse_at(a, ev.bstate & BUTTON4_PRESSED ? 64 : 65, ev.x, ev.y);
+    else if (ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED))
+        mouse_at(a, 0, ev.x, ev.y);
+}
+
+/* A mouse report that curses did not decode, because the terminfo entry
+ * names the other encoding (xterm-256color's kmous is SGR "\e[<", and a
+ * terminal may still send X10 "\e[M" bytes, or the reverse): its bytes
+ * arrive as keys, and a click's " " would pause the run. Both encodings
+ * (xterm ctlseqs, "Mouse Tracking") are decoded here; returns the number
+ * of keys used (0: not a mouse report). */
+int acbb_mouse_decode(const int *k, int n, int *button, int *x, int *y, int *press)
+{
+    if (n < 3 || k[0] != 27 || k[1] != '[') return 0;
+    if (k[2] == 'M') { /* X10: ESC [ M b x y, each + 32; b & 3 == 3 is a release */
+        if (n < 6) return 0;
+        int b = k[3] - 32;
+        *button = b & ~(4 | 8 | 16 | 32);
+        *press = (b & 3) != 3 || (b & 64);
+        if ((b & 3) == 3 && !(b & 64)) *button = 3;
+        *x = k[4] - 33;
+        *y = k[5] - 33;
+        return 6;
+    }
+    if (k[2] != '<') return 0;
+    int v[3] = { 0, 0, 0 }, f = 0, i = 3; /* SGR: ESC [ < b ; x ; y M|m */
+    for (; i < n && i < 24; i++) {
+        if (k[i] >= '0' && k[i] <= '9') v[f] = v[f] * 10 + (k[i] - '0');
+        else if (k[i] == ';' && f < 2) f++;
+        else if ((k[i] == 'M' || k[i] == 'm') && f == 2) {
+            *button = v[0] & ~(4 | 8 | 16 | 32);
+            *press = k[i] == 'M';
+            *x = v[1] - 1;
+            *y = v[2] - 1;
+            return i + 1;
+        } else return 0;
+    }
+    return 0;
+}
+
+void acbb_app_mouse_raw(acbb_app *a, int button, int x, int y, int press)
+{
+    if (press && a->mouse) mouse_at(a, button, x, y);
 }

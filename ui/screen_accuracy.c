@@ -104,7 +104,7 @@ static void draw_heading(acbb_app *a)
     switch (s->phase) {
     case ACBB_BENCH_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
-                 "b runs it on the edited scene, 1 run per setting; B adds the dynamic level (slow)");
+                 "b runs it on the edited scene, one run per setting; B adds the dynamic level");
         break;
     case ACBB_BENCH_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, s->cancel_requested, s->started_s, s->done, s->total,

@@ -11,8 +11,32 @@
 #define FIXED_W 65
 #define EXTRA_W 17
 
+/* The Hertz view (MODEL.md 2): load, maximum pressure and the semi-axes
+ * of each contact ellipse, what hertz-contact's "Look at" asks for. */
+static void draw_contact(acbb_app *a)
+{
+    const acbb_snapshot *s = &a->st.snap;
+    acbb_rect b = a->lay.body;
+    const double R2D = 1.0 / ACBB_DEG, GPA = 1e-9, MM = 1e3;
+    acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%2s %5s %6s %6s %7s %7s %6s %6s %6s %6s  c: kinematics",
+             "#", "psi", "Qi N", "Qo N", "pi GPa", "po GPa", "a_i mm", "b_i mm", "a_o mm", "b_o mm");
+    for (int r = 0; r < a->lay.table_rows; r++) {
+        int i = a->ball_top + r;
+        if (i >= s->n_balls) break;
+        const acbb_ball_view *v = &s->balls[i];
+        acbb_put(a, b.y + 1 + r, b.x, b.w, ACBB_ROLE_NORMAL,
+                 "%2d %5.1f %6.1f %6.1f %7.3f %7.3f %6.3f %6.3f %6.3f %6.3f", i, v->psi * R2D, v->Qi,
+                 v->Qo, v->pmax_i * GPA, v->pmax_o * GPA, v->a_i * MM, v->b_i * MM, v->a_o * MM,
+                 v->b_o * MM);
+    }
+}
+
 static void draw(acbb_app *a)
 {
+    if (a->balls_contact) {
+        draw_contact(a);
+        return;
+    }
     const acbb_snapshot *s = &a->st.snap;
     acbb_rect b = a->lay.body;
     const double R2D = 1.0 / ACBB_DEG /* deg per rad */, UM = 1e6;
@@ -26,7 +50,7 @@ static void draw(acbb_app *a)
     n += snprintf(head + n, sizeof head - (size_t)n, " %7s", "spin_i");
     if (wide) n += snprintf(head + n, sizeof head - (size_t)n, " %7s", "spin_o");
     snprintf(head + n, sizeof head - (size_t)n, " %6s %6s  %s", "h_i um", "h_o um",
-             bw >= 3 ? "Qi | Qo (bars)" : "");
+             bw >= 7 ? "Qi | Qo" : bw >= 3 ? "Qi|Qo" : "");
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%s", head);
     double qmax = 1e-9;
     for (int i = 0; i < s->n_balls; i++) qmax = fmax(qmax, fmax(s->balls[i].Qi, s->balls[i].Qo));
@@ -52,14 +76,20 @@ static void draw(acbb_app *a)
 
 static int on_key(acbb_app *a, int ch)
 {
+    if (ch == 'c') {
+        a->balls_contact = !a->balls_contact;
+        return 1;
+    }
     return acbb_scroll_key(ch, a->lay.table_rows, a->st.snap.n_balls, &a->ball_top);
 }
 
 static const acbb_help_line help[] = {
     { "j k PgUp/Dn", "scroll the balls" },
+    { "c", "contact view: pmax and the semi-axes a, b of each ellipse / kinematics" },
     { NULL, NULL },
 };
 
 const acbb_screen acbb_screen_balls = {
     .name = "Balls", .key = '3', .draw = draw, .on_key = on_key, .help = help,
+    .hint = "c pmax/semi-axes  j/k scroll  r run  x stop  ? help  q quit",
 };

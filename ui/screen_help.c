@@ -14,11 +14,11 @@
 
 static const acbb_help_line global_help[] = {
     { "Tab  S-Tab", "next / previous screen" },
-    { "?  F1", "this help" },
+    { "?  F1", "this help; PgDn PgUp space page it, any other key closes it" },
     { "/  n  N", "search (Edit, Nodes, help); next / previous match" },
-    { "Esc", "clear the message; cancel a prompt" },
+    { "Esc", "clear the message (the next key does too); cancel a prompt" },
     { "Ctrl-L", "redraw the whole screen" },
-    { "q  F10", "quit (asks if unsaved)" },
+    { "q  F10", "quit (asks during a run or if unsaved)" },
     { "Ctrl-C", "quit, like q" },
     { "mouse", "click a tab, a row or a key of the hint line; wheel scrolls (off: --no-mouse)" },
     { NULL, NULL },
@@ -196,6 +196,16 @@ int acbb_screen_help_key(acbb_app *a, int ch)
     }
     if (ch == 'k' || ch == KEY_UP) {
         if (a->help_top > 0) a->help_top--;
+        return 1;
+    }
+    /* Paging keys page, as in less(1); only other keys close the help. */
+    int page = a->lay.body.h - 1 > 1 ? a->lay.body.h - 1 : 1;
+    if (ch == KEY_NPAGE || ch == ' ' || ch == KEY_END || ch == 'G') {
+        a->help_top = ch == KEY_END || ch == 'G' || a->help_top + page > top_max ? top_max : a->help_top + page;
+        return 1;
+    }
+    if (ch == KEY_PPAGE || ch == 'b' || ch == KEY_HOME || ch == 'g') {
+        a->help_top = ch == KEY_HOME || ch == 'g' || a->help_top < page ? 0 : a->help_top - page;
         return 1;
     }
     a->mode = ACBB_MODE_NORMAL;

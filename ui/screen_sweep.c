@@ -104,14 +104,33 @@ static int use_key(acbb_app *a, const char *key)
 
 static void key_answer(acbb_app *a, const char *text)
 {
-    if (text[0] && use_key(a, text))
+    if (text[0] && use_key(a, text) && (a->sw.chosen = 1))
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep %s over %s (e edits the range, r runs)", a->sw.key,
                      a->sw.range);
 }
 
+/* The range is checked as r will check it (whatif.c): a range r refuses
+ * is refused here, with the same reason (issue 21 item 5). */
 static void range_answer(acbb_app *a, const char *text)
 {
     if (!text[0]) return;
+    char spec[192];
+    snprintf(spec, sizeof spec, "%s=%s", a->sw.key[0] ? a->sw.key : "operating.axial_load_N", text);
+    acbb_sweep *g = NULL;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_sweep_new(&g);
+    if (st == ACBB_OK) st = acbb_sweep_add(g, spec, &err);
+    size_t n = st == ACBB_OK ? acbb_sweep_n_points(g) : 0;
+    acbb_sweep_free(g);
+    if (st != ACBB_OK) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "range refused: %s", err.msg[0] ? err.msg : "out of memory");
+        return;
+    }
+    if (n > ACBB_WHATIF_MAX_POINTS) {
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "range refused: %zu points, the TUI sweeps 1..%d "
+                     "(acbb sweep does more)", n, ACBB_WHATIF_MAX_POINTS);
+        return;
+    }
     snprintf(a->sw.range, sizeof a->sw.range, "%s", text);
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "range %s (r runs the sweep)", a->sw.range);
 }
@@ -122,14 +141,20 @@ static void metric_answer(acbb_app *a, const char *text)
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "metric %s", text);
 }
 
-/* On the way in: the editor's key under the cursor, if none is chosen yet
- * and it is a number. */
+/* On the way in, unless a key was typed: the editor's key under the
+ * cursor when the cursor was moved onto a number, else the axial load
+ * (the first key, the pitch diameter, failed most of its default range).
+ * Followed at every visit, not fixed at the first (issue 21 item 5). */
 static void enter(acbb_app *a)
 {
     char name[128];
-    if (a->sw.key[0] || !acbb_scene_key_name(a->ed.cursor, name, sizeof name)) return;
+    if (a->sw.chosen || (a->swv.job.started_s > 0 && a->swv.job.ended_s == 0)) return; /* running */
     const acbb_field_info *f = acbb_scene_field(a->ed.cursor);
-    if (f->type == ACBB_FIELD_REAL || f->type == ACBB_FIELD_INT) use_key(a, name);
+    if (a->ed.cursor > 0 && f && (f->type == ACBB_FIELD_REAL || f->type == ACBB_FIELD_INT) &&
+        acbb_scene_key_name(a->ed.cursor, name, sizeof name))
+        use_key(a, name);
+    else
+        use_key(a, "operating.axial_load_N");
 }
 
 /* ---- starting, following, cancelling ---- */
@@ -302,8 +327,12 @@ static void draw(acbb_app *a)
     char unit[16];
     acbb_metric_unit(path, unit, sizeof unit);
     const char *why = first_failure(&a->swv);
-    int top = b.y + 2 + (why != NULL);
-    if (why) acbb_put(a, b.y + 2, b.x, b.w, ACBB_ROLE_ERROR, "failed point: %s", why);
+    int top = b.y + 2 + (why != NULL ? 2 : 0);
+    if (why) { /* two rows: a reason is longer than 80 columns */
+        char line[600];
+        snprintf(line, sizeof line, "failed point: %s", why);
+        acbb_put_wrap(a, b.y + 2, b.x, b.w, 2, ACBB_ROLE_ERROR, line);
+    }
     acbb_rect chart = { top, b.x, b.y + b.h - top, b.w - TABLE_W - 1 };
     acbb_rect table = { top, b.x + b.w - TABLE_W, chart.h, TABLE_W };
     draw_chart(a, chart, m, label, unit);

@@ -218,6 +218,16 @@ typedef struct {
     worker_ctx *c;
 } hook_ctx;
 
+double acbb_worker_step_ms(double sim_dt, int pace)
+{
+    if (pace <= 0 || !(sim_dt > 0)) return 0.0;
+    /* At least ACBB_WORKER_STEP_FLOOR simulated-second-equivalents per step:
+     * a run that ends after a few simulated seconds (the runaway, 24 s in
+     * 78 steps) stays on screen long enough to watch (issue 21 item 7). */
+    double by_time = 1e3 * sim_dt / pace, floor = 1e3 * ACBB_WORKER_STEP_FLOOR / pace;
+    return by_time > floor ? by_time : floor;
+}
+
 /* Sleep until the next step is due: `sim_dt` simulated seconds (the step
  * just taken) after `last_step` (ms), at the pace in force; on the
  * condition variable so a command or a pace change wakes it at once.
@@ -232,7 +242,7 @@ static int wait_step_due(acbb_worker *w, double last_step, double sim_dt)
         if ((cmd = w->q_len > 0)) break;
         int pace = paced ? atomic_load(&w->pace) : 0;
         if (pace <= 0) break;
-        double due = last_step + 1e3 * sim_dt / pace;
+        double due = last_step + acbb_worker_step_ms(sim_dt, pace);
         if (acbb_now_ms() >= due) break;
         struct timespec ts = acbb_wake_abstime(due);
         pthread_cond_timedwait(&w->cv_cmd, &w->mu, &ts);

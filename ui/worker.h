@@ -105,6 +105,11 @@ void acbb_worker_set_pace(acbb_worker *w, int sim_s_per_s);
  * (acbb_sim_bearing_snapshot; 0 = the first, also for one bearing). */
 void acbb_worker_set_bearing(acbb_worker *w, int k);
 int acbb_worker_pace(const acbb_worker *w);
+/* Wall ms a paced step of sim_dt simulated seconds is shown for at pace
+ * `pace` (simulated s per wall s; 0: flat out, 0 ms): sim_dt / pace, but
+ * at least ACBB_WORKER_STEP_FLOOR / pace (0.1 s at x200). Pure. */
+#define ACBB_WORKER_STEP_FLOOR 20.0
+double acbb_worker_step_ms(double sim_dt, int pace);
 
 /* Copy the published state (and the history, if `hist` is not NULL). */
 void acbb_worker_read(acbb_worker *w, acbb_worker_state *st, acbb_history *hist);

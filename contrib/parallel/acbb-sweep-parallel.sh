@@ -14,6 +14,9 @@
 #   ACBB_JOBS  threads per shard (default: every CPU; set 1 when N shards
 #              share one machine)
 # A shard that fails can be re-run with the same command: it resumes.
+# Exit: 0 when every shard ran (points that did not converge, acbb's exit
+# 3, are results recorded in the files); 1 when a shard failed (the shards
+# there are still merged); the merge's status when the merge fails.
 set -u
 n=${1:?usage: acbb-sweep-parallel.sh N OUTDIR PRESET [sweep options]}
 out=${2:?usage: acbb-sweep-parallel.sh N OUTDIR PRESET [sweep options]}
@@ -24,16 +27,19 @@ jobs=${ACBB_JOBS:+--jobs $ACBB_JOBS}
 if [ -n "${SSHLOGIN:-}" ]; then
     # shellcheck disable=SC2086
     parallel --will-cite -q --sshlogin "$SSHLOGIN" --workdir . --return "$out/shard-{}.jsonl" \
-        sh -c 'mkdir -p "$1" && shift && exec "$@"' sh "$out" \
+        sh -c 'mkdir -p "$1" && shift && { "$@"; r=$?; [ "$r" -eq 3 ] && r=0; exit "$r"; }' sh "$out" \
         "$ACBB" sweep "$@" --shard "{}/$n" $jobs --jsonl "$out/shard-{}.jsonl" ::: $(seq "$n")
 else
     # shellcheck disable=SC2086
-    parallel --will-cite -q -j "$n" "$ACBB" sweep "$@" --shard "{}/$n" $jobs \
-        --jsonl "$out/shard-{}.jsonl" ::: $(seq "$n")
+    parallel --will-cite -q -j "$n" sh -c '"$@"; r=$?; [ "$r" -eq 3 ] && r=0; exit "$r"' sh \
+        "$ACBB" sweep "$@" --shard "{}/$n" $jobs --jsonl "$out/shard-{}.jsonl" ::: $(seq "$n")
 fi
 rc=$?
-# parallel's exit status counts failed shards; exit 3 (a point that did not
-# converge) is recorded in the files, so merge whatever is there.
+# parallel's exit status counts the failed shards (exit 3 is mapped to 0
+# above: non-converged points are in the files). Merge whatever is there.
 "$ACBB" merge "$out/sweep.jsonl" "$out"/shard-*.jsonl || exit $?
-[ "$rc" -eq 0 ] || echo "acbb-sweep-parallel: $rc shard(s) exited non-zero (3: points that did not converge)" >&2
+if [ "$rc" -ne 0 ]; then
+    echo "acbb-sweep-parallel: $rc shard(s) failed; re-run the same command to resume them" >&2
+    exit 1
+fi
 exit 0

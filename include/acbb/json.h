@@ -1,8 +1,8 @@
 /* acbb — the JSON writer behind every JSON document acbb writes: the run
  * (`acbb run --json`, acbb_run_preset_json in ffi.h) and the CLI's sweep
  * array. One writer, one style: two-space indent (or one line per
- * container when asked), numbers as %.10g (they round-trip to ~1e-10
- * relative), strings escaped, and a non-finite number written as null and
+ * container when asked), numbers as %.17g (they round-trip exactly: the
+ * double printed is the double computed), strings escaped, and a non-finite number written as null and
  * counted, never as nan/inf (the engine promises finite snapshots, so a
  * nonzero count is an internal error for the caller to report).
  *
@@ -17,6 +17,11 @@
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/branches.h"
+
+/* The version of the JSON documents' layout, their first key
+ * "schema_version"; docs/schema/acbb.schema.json (`acbb schema`) describes
+ * it. Bumped when a key is renamed or removed, not when one is added. */
+#define ACBB_JSON_SCHEMA_VERSION 2
 
 #define ACBB_JSON_DEPTH 8        /* deepest nesting; deeper is a bug (counted in misuse) */
 

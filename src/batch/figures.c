@@ -192,7 +192,8 @@ static void eval_sweep(const acbb_figure_row *row, const acbb_fig_input *in, acb
                 const double *xs = blks[bi] == ACBB_STUDY_LOAD ? acbb_study_loads
                                                                 : acbb_study_speeds;
                 acbb_fig_series *s = add_series(
-                    d, ACBB_STUDY_NPTS, 1 + bi * row->nq + qi, m == ACBB_STUDY_TE ? 1 : 2, 1,
+                    /* TE and WTE differ in colour, dash and marker (issue 21 item 9) */
+                    d, ACBB_STUDY_NPTS, 1 + 2 * (bi * row->nq + qi) + m, m == ACBB_STUDY_TE ? 1 : 2, 1,
                     "%s %s%s", row->q[qi].label, m == ACBB_STUDY_TE ? "TE" : "WTE",
                     !both ? "" : bi ? " at 1000 N" : " at 100 N");
                 for (int k = 0; s && k < ACBB_STUDY_NPTS; k++) {

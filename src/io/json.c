@@ -78,7 +78,7 @@ void acbb_json_num(acbb_json *j, const char *key, double v)
 {
     put_key(j, key);
     if (isfinite(v)) {
-        fprintf(j->f, "%.10g", v);
+        fprintf(j->f, "%.17g", v); /* full precision: round-trips exactly */
     } else {
         j->nonfinite++;
         fputs("null", j->f);

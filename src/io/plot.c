@@ -79,12 +79,12 @@ static const plot_kind_spec kind_specs[] = {
         { "ball", HP(T_ball) }, { "housing", HP(T_housing) } } },
     { "losses", "power losses", "time (s)", "power loss (W)", false, 1.0, true, 0, { { "", 0 } } },
     { "loads", "contact loads per ball", "ball azimuth (deg)", "load (N)", true, 1.0, false, 2,
-      { { "inner contact Qi", BV(Qi) }, { "outer contact Qo", BV(Qo) } } },
+      { { "inner contact Q_i", BV(Qi) }, { "outer contact Q_o", BV(Qo) } } },
     { "angles", "contact angles per ball", "ball azimuth (deg)", "angle (deg)", true,
       180.0 / ACBB_PI, false, 2,
       { { "inner contact alpha_i", BV(alpha_i) }, { "outer contact alpha_o", BV(alpha_o) } } },
     { "history-loads", "contact loads of ball 0", "time (s)", "load (N)", false, 1.0, false, 2,
-      { { "inner contact Qi", HP(Qi) }, { "outer contact Qo", HP(Qo) } } },
+      { { "inner contact Q_i", HP(Qi) }, { "outer contact Q_o", HP(Qo) } } },
     { "set-preload", "preload of the bearing set", "time (s)", "axial force (N)", false, 1.0,
       false, 1, { { "set preload", HP(set_preload) } } },
     { "set-temperature", "outer ring of each bearing", "time (s)", "temperature (C)", false,
@@ -228,6 +228,33 @@ static size_t datablock(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *
     return rows;
 }
 
+/* A marked-up label (plot_markup.c) as a quoted gnuplot string. */
+static void sb_label(sbuf *b, const char *plain)
+{
+    char m[256];
+    plot_markup(plain, m, sizeof m);
+    sb_quoted(b, m);
+}
+
+/* The points of the plot, for the key's corner. */
+static void kind_points(const plot_kind_spec *k, const acbb_plot_data *d, key_pts *kp)
+{
+    if (k->per_ball) {
+        const acbb_snapshot *s = d->snapshot;
+        int nb = s->n_balls < ACBB_MAX_BALLS ? s->n_balls : ACBB_MAX_BALLS;
+        for (int i = 0; i < nb; i++)
+            for (int j = 0; j < k->n; j++)
+                key_pts_add(kp, s->balls[i].psi * 180.0 / ACBB_PI,
+                            k->y_scale * field(&s->balls[i], k->s[j].off));
+        return;
+    }
+    const acbb_history *h = d->history;
+    size_t n = h->n < ACBB_HISTORY_CAP ? h->n : ACBB_HISTORY_CAP;
+    for (size_t i = 0; i < n; i++)
+        for (int j = 0; j < k->n; j++)
+            key_pts_add(kp, h->p[i].time, k->y_scale * field(&h->p[i], k->s[j].off));
+}
+
 static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d,
                             bool dumb)
 {
@@ -238,19 +265,34 @@ static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_da
              d->title && d->title[0] ? ": " : "", k->what, dumb ? ", " : "",
              dumb ? k->ylabel : "");
     sb_printf(b, "set title ");
-    sb_quoted(b, title);
-    sb_printf(b, "\nset xlabel ");
-    sb_quoted(b, k->xlabel);
+    sb_quoted(b, title); /* the user's title: plain */
+    sb_printf(b, " noenhanced\nset xlabel ");
+    if (dumb) sb_quoted(b, k->xlabel);
+    else sb_label(b, k->xlabel);
     sb_printf(b, "\nset ylabel ");
-    sb_quoted(b, k->ylabel);
+    if (dumb) sb_quoted(b, k->ylabel);
+    else sb_label(b, k->ylabel);
     sb_printf(b, "\nset grid\n");
+    if (!dumb) {
+        key_pts kp = { 0 };
+        kind_points(k, d, &kp);
+        key_corner(b, &kp, k->n);
+    }
     /* The balls are few and discrete; the history is a dense time series. */
-    const char *style = k->per_ball ? "linespoints pointtype 7" : "lines";
+    static const int pt[4] = { 7, 5, 9, 13 };
     sb_printf(b, "plot ");
     for (int i = 0; i < k->n; i++) {
-        sb_printf(b, "%s$D using 1:%d with %s linewidth 2 title ", i ? ", " : "", i + 2,
-                  style);
-        sb_quoted(b, k->s[i].label);
+        if (dumb) /* text: one character per series already */
+            sb_printf(b, "%s$D using 1:%d with %s linewidth 2 title ", i ? ", " : "", i + 2,
+                      k->per_ball ? "linespoints pointtype 7" : "lines");
+        else if (k->per_ball)
+            sb_printf(b, "%s$D using 1:%d with linespoints pointtype %d linewidth 2 "
+                         "dashtype %d title ", i ? ", " : "", i + 2, pt[i % 4], 1 + i % 2);
+        else
+            sb_printf(b, "%s$D using 1:%d with lines linewidth 2 dashtype %d title ", i ? ", " : "",
+                      i + 2, 1 + i % 5);
+        if (dumb) sb_quoted(b, k->s[i].label);
+        else sb_label(b, k->s[i].label);
     }
     sb_printf(b, "\n");
 }
@@ -557,15 +599,25 @@ acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err)
 
 void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
 {
+    /* UTF-8 labels (Greek, degree sign: plot_markup.c); enhanced text
+     * only where a plot writes marked-up labels, user text noenhanced. */
     if (fmt == ACBB_PLOT_PNG)
-        sb_printf(b, "set terminal pngcairo size %d,%d\n", w, h);
+        sb_printf(b, "set encoding utf8\nset terminal pngcairo enhanced size %d,%d\n", w, h);
     else if (fmt == ACBB_PLOT_SVG)
-        sb_printf(b, "set terminal svg size %d,%d\n", w, h);
+        sb_printf(b, "set encoding utf8\nset terminal svg enhanced size %d,%d\n", w, h);
     else
         sb_printf(b, "set terminal dumb nofeed size %d,%d\n", w, h);
-    /* Titles and labels are plain text: no ^ _ { } markup. */
-    sb_printf(b, "set termoption noenhanced\n");
-    if (fmt != ACBB_PLOT_DUMB) sb_printf(b, "set key outside right top\n");
+    if (fmt == ACBB_PLOT_DUMB) {
+        sb_printf(b, "set termoption noenhanced\n");
+        return;
+    }
+    /* Okabe & Ito's colour-blind-safe palette ("Color Universal Design",
+     * 2002; yellow swapped for grey, too pale on white), so neighbouring
+     * series differ in hue for every reader and in print. */
+    static const char *const rgb[8] = { "#0072B2", "#D55E00", "#009E73", "#CC79A7",
+                                        "#E69F00", "#56B4E9", "#000000", "#999999" };
+    for (int i = 0; i < 8; i++) sb_printf(b, "set linetype %d linecolor rgb '%s'\n", i + 1, rgb[i]);
+    sb_printf(b, "set linetype cycle 8\n");
 }
 
 /* An image is complete when it ends as its format ends: PNG with the IEND
@@ -724,7 +776,13 @@ static acbb_status accuracy_script(sbuf *b, const acbb_accuracy_row *rows, size_
     sb_printf(b, "\nset xlabel 'median wall time per run (ms)'\n");
     sb_printf(b, "set ylabel 'max(loss error, T-rise error) vs the knob reference (%%), "
                  "floor %g %%'\n", ACC_FLOOR_PCT);
-    sb_printf(b, "set logscale xy\nset grid\nset format y '%%g'\n");
+    sb_printf(b, "set logscale xy\nset grid\nset format y '%%g'\nset termoption noenhanced\n");
+    key_pts kp = { 0 }; /* the key's corner on the log axes */
+    for (size_t i = 0; i < n; i++) {
+        double y = accuracy_error_pct(&rows[i]);
+        if (rows[i].wall_ms > 0.0 && y > 0.0) key_pts_add(&kp, log10(rows[i].wall_ms), log10(y));
+    }
+    key_corner(b, &kp, ACBB_KNOB_COUNT);
     sb_printf(b, "set arrow from graph 0, first %g to graph 1, first %g nohead dashtype 2\n",
               100.0 * ACBB_ACCURACY_FRONTIER_TOL, 100.0 * ACBB_ACCURACY_FRONTIER_TOL);
     sb_printf(b, "plot ");
@@ -820,7 +878,7 @@ static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t 
     sb_printf(b, "\nset xlabel ");
     sb_quoted(b, xlabel && xlabel[0] ? xlabel : "metric");
     sb_printf(b, "\nset ytics nomirror font ',8'\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
-    sb_printf(b, "set style fill solid 0.6 border -1\nset key below\n");
+    sb_printf(b, "set style fill solid 0.6 border -1\nset key below\nset termoption noenhanced\n");
     /* dashed: the scene's value; solid: zero, where the metric changes
      * sign (drawn only when a bar reaches it) */
     double lo = base, hi = base;

@@ -16,6 +16,9 @@
 #define run_gnuplot acbb_plot_run_gnuplot
 #define terminal_line acbb_plot_terminal_line
 #define image_complete acbb_plot_image_complete
+#define plot_markup acbb_plot_markup
+#define key_corner acbb_plot_key_corner
+#define key_pts_add acbb_plot_key_pts_add
 
 /* A growing NUL-terminated script; oom latches the first failed growth. */
 typedef struct {
@@ -46,5 +49,19 @@ acbb_status run_gnuplot(const sbuf *script, gp_io *io, acbb_error *err);
 void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h);
 /* PNG ends with IEND, SVG with </svg>. */
 bool image_complete(int fd, acbb_plot_format fmt);
+/* A plain label ("omega_x' (rad/s)") as gnuplot enhanced text
+ * ("ω_{x'} (rad/s)"), NUL-terminated in out[n] (plot_markup.c). */
+void plot_markup(const char *plain, char *out, size_t n);
+
+/* The points drawn, for the key's corner (plot_key.c). Owns x, y. */
+typedef struct {
+    double *x, *y;
+    size_t n, cap;
+} key_pts;
+void key_pts_add(key_pts *k, double x, double y);
+/* The `set key` line for the corner of the plot area that holds the
+ * fewest points (inside, opaque) for a key of `entries` rows; frees k's
+ * arrays. */
+void key_corner(sbuf *b, key_pts *k, int entries);
 
 #endif

@@ -10,6 +10,7 @@
 #define _GNU_SOURCE /* F_DUPFD_CLOEXEC */
 #include <fcntl.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -40,27 +41,48 @@ static size_t xy_blocks(sbuf *b, const acbb_plot_xy *p, bool *drawn)
     return used;
 }
 
+static void xy_label(sbuf *b, const char *cmd, const char *plain)
+{
+    char m[256];
+    plot_markup(plain ? plain : "", m, sizeof m);
+    sb_printf(b, "%s", cmd);
+    sb_quoted(b, m);
+    sb_printf(b, "\n");
+}
+
+/* Each series: its colour (the palette of terminal_line), its dash, and
+ * with points a filled marker for solid lines and an open one for dashed
+ * (TE solid and filled, WTE dashed and open in the seed figures), so two
+ * overlapping curves differ in three ways. */
 static void xy_plot(sbuf *b, const acbb_plot_xy *p, const bool *drawn)
 {
-    if (p->title && p->title[0]) {
-        sb_printf(b, "set title ");
-        sb_quoted(b, p->title);
-        sb_printf(b, "\n");
-    }
-    sb_printf(b, "set xlabel ");
-    sb_quoted(b, p->xlabel ? p->xlabel : "");
-    sb_printf(b, "\nset ylabel ");
-    sb_quoted(b, p->ylabel ? p->ylabel : "");
-    sb_printf(b, "\nset grid\nplot ");
+    static const int filled[4] = { 7, 5, 9, 13 }, open[4] = { 6, 4, 8, 12 };
+    if (p->title && p->title[0]) xy_label(b, "set title ", p->title);
+    xy_label(b, "set xlabel ", p->xlabel);
+    xy_label(b, "set ylabel ", p->ylabel);
+    sb_printf(b, "set grid\n");
+    key_pts kp = { 0 };
+    for (size_t k = 0; k < p->n_series; k++)
+        for (size_t i = 0; drawn[k] && i < p->series[k].n; i++)
+            key_pts_add(&kp, p->series[k].x[i], p->series[k].y[i]);
+    int entries = 0;
+    for (size_t k = 0; k < p->n_series; k++) entries += drawn[k];
+    key_corner(b, &kp, entries);
+    sb_printf(b, "plot ");
     bool first = true;
     for (size_t k = 0; k < p->n_series; k++) {
         const acbb_plot_series *s = &p->series[k];
         if (!drawn[k]) continue;
+        int dash = s->dash > 0 ? s->dash : 1;
+        char style[64] = "lines";
+        if (s->points)
+            snprintf(style, sizeof style, "linespoints pointtype %d pointsize 0.9",
+                     (dash > 1 ? open : filled)[k % 4]);
         sb_printf(b, "%s$S%zu using 1:2 with %s linewidth 2 linecolor %d dashtype %d title ",
-                  first ? "" : ", ", k, s->points ? "linespoints pointtype 7 pointsize 0.8"
-                                                  : "lines",
-                  s->color > 0 ? s->color : (int)k + 1, s->dash > 0 ? s->dash : 1);
-        sb_quoted(b, s->label ? s->label : "");
+                  first ? "" : ", ", k, style, s->color > 0 ? s->color : (int)k + 1, dash);
+        char m[256];
+        plot_markup(s->label ? s->label : "", m, sizeof m);
+        sb_quoted(b, m);
         first = false;
     }
     sb_printf(b, "\n");

@@ -144,6 +144,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
                                const acbb_snapshot *b, int n, const acbb_branches *br)
 {
     acbb_json_open(j, NULL, '{', false);
+    acbb_json_long(j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     acbb_json_str(j, "status", acbb_run_status_name(s));
     acbb_json_str(j, "message", s->message);
     acbb_json_long(j, "iterations", s->iteration);
@@ -177,6 +178,7 @@ void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *stat
                             const char *message)
 {
     acbb_json_open(j, NULL, '{', false);
+    acbb_json_long(j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     acbb_json_str(j, "status", status);
     acbb_json_str(j, "message", message);
     acbb_json_long(j, "iterations", 0);

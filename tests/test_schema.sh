@@ -1,0 +1,72 @@
+#!/bin/sh
+# The JSON contract (issue 21 item 10), TAP: `acbb schema` prints the
+# schema file; every preset's `acbb run --json`, a run that never started
+# and the bad_input document of exit 2 validate against it (schema_check.py:
+# the subset the schema uses); the checker itself rejects a broken
+# document; numbers carry 17 significant digits.
+# Usage: test_schema.sh PATH/TO/acbb   (cwd = repo root)
+set -u
+ACBB=${1:?usage: test_schema.sh PATH/TO/acbb}
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-schema.XXXXXX") || exit 1
+trap 'rm -rf "$TMP"' EXIT INT TERM
+. "$(dirname "$0")/tap.sh"
+SCHEMA=docs/schema/acbb.schema.json
+CHECK="python3 $(dirname "$0")/schema_check.py $SCHEMA"
+
+"$ACBB" schema >"$TMP/schema.json"
+code $? 0 "acbb schema runs"
+cmp -s "$TMP/schema.json" "$SCHEMA"
+t $? "and prints docs/schema/acbb.schema.json byte for byte"
+python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$SCHEMA"
+t $? "the schema is JSON"
+
+mkdir "$TMP/runs"
+for p in presets/*.ini; do
+    pn=$(basename "$p" .ini)
+    "$ACBB" run "$p" --json >"$TMP/runs/$pn.json" 2>/dev/null
+done
+# one checker process for all (python's start-up, not the check, is the cost)
+$CHECK "$TMP"/runs/*.json 2>"$TMP/bad"
+t $? "acbb run --json of every preset ($(ls presets/*.ini | wc -l)) conforms to the schema $(head -3 "$TMP/bad" | tr '\n' ' ')"
+jq -e '.schema_version == 2' "$TMP/runs/7008C.json" >/dev/null
+t $? "the run document says schema_version 2"
+# 17 significant digits: the printed number is the double itself
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); v=d["time_s"]; assert repr(v) == repr(float("%.17g" % v)) and len(json.dumps(d["losses_W"]["total"]).replace(".","").lstrip("0")) > 11' "$TMP/runs/7008C.json"
+t $? "numbers are printed with full precision (more than 10 digits)"
+
+# exit 2 with --json: a bad_input document on stdout, the message on stderr
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=-5 --json >"$TMP/bad.json" 2>"$TMP/err"
+code $? 2 "a bad --set value exits 2"
+jq -e '.status == "bad_input" and (.message | test("must be >= 0 N"))' "$TMP/bad.json" >/dev/null
+t $? "with --json it prints {status: bad_input, message} ($(cat "$TMP/bad.json"))"
+$CHECK "$TMP/bad.json"
+t $? "the bad_input document conforms to the schema"
+grep -q "must be >= 0 N" "$TMP/err"
+t $? "and the message still goes to stderr"
+"$ACBB" sweep presets/7008C.ini --bogus --json >"$TMP/bad2.json" 2>/dev/null
+code $? 2 "an unknown option of sweep exits 2"
+jq -e '.status == "bad_input" and (.message | test("unknown option --bogus"))' "$TMP/bad2.json" >/dev/null
+t $? "and prints the bad_input document too"
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=-5 >"$TMP/plain" 2>/dev/null
+[ ! -s "$TMP/plain" ]
+t $? "without --json nothing goes to stdout"
+
+# --baseline: a temperature's change in % of its rise above ambient, as the
+# TUI's Run screen shows it (issue 21 item 7); hand calculation from the two runs
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=500 --baseline "$TMP/runs/7008C.json" --json \
+    >"$TMP/vs.json" 2>/dev/null
+jq -e --slurpfile b "$TMP/runs/7008C.json" '
+    (.vs_baseline[] | select(.path == "temperature_C.outer_ring")) as $r
+    | ($b[0].temperature_C.outer_ring - $b[0].scene.keys["operating.ambient_C"]) as $rise
+    | ($r.change_pct - 100 * ($r.now - $r.baseline) / $rise) | fabs < 1e-9' "$TMP/vs.json" >/dev/null
+t $? "--baseline: temperature change_pct is of the rise above ambient ($(jq '.vs_baseline[] | select(.path == "temperature_C.outer_ring") | .change_pct' "$TMP/vs.json") %)"
+
+# the checker can fail: a document without status, a string for a number
+jq 'del(.status)' "$TMP/runs/7008C.json" >"$TMP/broken1.json"
+! $CHECK "$TMP/broken1.json" 2>/dev/null
+t $? "the checker rejects a document without status"
+jq '.losses_W.total = "54"' "$TMP/runs/7008C.json" >"$TMP/broken2.json"
+! $CHECK "$TMP/broken2.json" 2>/dev/null
+t $? "the checker rejects a string where a number belongs"
+
+tap_done
