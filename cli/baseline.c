@@ -112,8 +112,9 @@ static void temperature_rises(cJSON *rows, const cJSON *was)
         const cJSON *a = cJSON_GetObjectItem(r, "baseline"), *b = cJSON_GetObjectItem(r, "now");
         if (strncmp(p, "temperature_C.", 14) != 0 || !cJSON_IsNumber(a) || !cJSON_IsNumber(b)) continue;
         double rise = a->valuedouble - amb->valuedouble;
-        cJSON *pct = fabs(rise) > 1e-12 ? cJSON_CreateNumber(100.0 * (b->valuedouble - a->valuedouble) / fabs(rise))
-                                        : cJSON_CreateNull();
+        double v = 100.0 * (b->valuedouble - a->valuedouble) / fabs(rise);
+        /* No inf or nan (issue 20 item 9): an overflowing share is null. */
+        cJSON *pct = fabs(rise) > 1e-12 && isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
         cJSON_ReplaceItemInObject(r, "change_pct", pct);
         cJSON_AddStringToObject(r, "change_pct_of", "rise above ambient");
     }

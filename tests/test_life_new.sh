@@ -39,7 +39,7 @@ jq -r --arg d "$d" '
       elif (.life.estimated | not) then "life not marked estimated"
       elif .life.s0_min <= 1 then "s0_min \(.life.s0_min)"
       elif .life.L10r_h <= 0 then "L10r_h \(.life.L10r_h)"
-      elif ($ndm < 0.2e6 or $ndm > 0.6e6) then "n d_m \($ndm)"
+      elif ($ndm < 0.1e6 or $ndm > 0.3e6) then "n d_m \($ndm)"
       else "ok" end)] | join(" ")' "$dir/$d.json" 2>/dev/null || echo "$d no-json"
 ONE
 chmod +x "$TMP/one.sh"
