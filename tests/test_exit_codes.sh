@@ -98,11 +98,13 @@ if mkfifo "$TMP/fifo" 2>/dev/null; then
     has "$TMP/err" "a FIFO with no reader" "... saying so"
     timeout 60 "$ACBB" run "$P" $Q --csv "$TMP/fifo" >/dev/null 2>"$TMP/err"
     code $? 2 "run --csv FIFO without a reader exits 2 at once"
-    cat "$TMP/fifo" >"$TMP/fifo.out" &
-    reader=$!
+    # The reader is there before the sweep starts (a background `cat` may
+    # open it too late): the shell holds the FIFO open read-write on fd 3.
+    exec 3<>"$TMP/fifo"
     timeout 60 "$ACBB" sweep "$P" $Q $G --jsonl "$TMP/fifo" >/dev/null 2>&1
     code $? 0 "sweep --jsonl FIFO with a reader streams into it"
-    wait $reader
+    timeout 10 head -n 3 <&3 >"$TMP/fifo.out"
+    exec 3<&-
     [ "$(wc -l <"$TMP/fifo.out")" -eq 3 ]
     t $? "... the header and both records"
     (cd "$TMP" && timeout 60 "$ACBB" run fifo) >/dev/null 2>"$TMP/err"
