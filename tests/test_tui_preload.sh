@@ -65,5 +65,39 @@ wait_file "$TMP/pm1" 5
 grep -q EXIT=0 "$TMP/pm1"
 ok $? "the TUI quits cleanly"
 
+# ---- life per bearing (issue 19 item 1): a DB pair under 800 N thrust, so
+# the two bearings' lives differ; each row of the Set screen and the Run
+# screen's life line for the chosen bearing against `acbb run --json`.
+sed 's/^axial_load_N = 0$/axial_load_N = 800/' "$ROOT/presets/pair-DB-heated.ini" >"$TMP/pair.ini"
+grep -q '^axial_load_N = 800$' "$TMP/pair.ini"
+ok $? "the pair preset takes an external thrust"
+"$ACBB" run "$TMP/pair.ini" --json >"$TMP/pair.json"
+# "%.3g" of bearing $1's life field $2 (the TUI's format).
+life() { printf '%.3g' "$(jq -r ".bearings[$1].life.$2" "$TMP/pair.json")"; }
+[ "$(life 0 Lnmr_h)" != "$(life 1 Lnmr_h)" ]
+ok $? "the loaded bearing's life differs from the unloaded one's ($(life 0 Lnmr_h) h, $(life 1 Lnmr_h) h)"
+TUI_ARGS="--pace 0" start "" pm2 pair.ini
+wait_for "pair.ini"
+keys r
+wait_for "converged"
+keys S
+wait_for "Lnm h    s0"
+ok $? "the Set screen's table has life columns"
+for k in 0 1; do
+    screen | grep -q "^[> ]  $k  [-+]x .* $(life $k Lnmr_h) *$(life $k s0_min) *\$"
+    ok $? "bearing $k's row: Lnm $(life $k Lnmr_h) h, s0 $(life $k s0_min), as in the JSON"
+done
+for k in 1 0; do
+    keys "$([ $k = 1 ] && echo ']' || echo '[')"
+    wait_for "showing bearing $k of 2"
+    keys 1
+    wait_for "Life b$k: C $(printf '%.3g' "$(jq -r ".bearings[$k].life.C_N / 1000" "$TMP/pair.json")") kN  L10r $(life $k L10r_h) h  Lnm $(life $k Lnmr_h) h  s0 $(life $k s0_min)  edge "
+    ok $? "the Run screen's life line is bearing $k's (C, L10r, Lnm, s0, edge)"
+    keys S
+    wait_for "Lnm h    s0"
+done
+keys q
+wait_file "$TMP/pm2" 5
+
 echo "1..$n"
 [ $failed -eq 0 ]
