@@ -60,6 +60,19 @@ fi
 keys x
 wait_for "no preload map running (r starts one)"
 ok $? "x with nothing running says so"
+# Cancelling: r and x arrive together, so x finds the map running (288
+# cells take seconds); the speeds not run say so, the screen stays usable.
+keys s C-u "5000:20000:12" Enter e C-u "1:300:24" Enter
+wait_for "preloads 1:300:24 N (r runs the map)"
+keys r x
+wait_for "preload map cancelled after"
+ok $? "x cancels a running map and the message says how far it got"
+screen | grep -q "cancelled after [0-9]* of 12 speeds; r reruns"
+ok $? "the heading says so too"
+screen | grep -q ' 20000  -$'
+ok $? "the last speed was never run: marked -"
+[ "$(screen | grep -c '[0-9]\.\.[0-9]')" -eq "$(screen | sed -n 's/.*cancelled after \([0-9]*\) of 12 speeds;.*/\1/p')" ]
+ok $? "a window is given only for the speeds finished whole (a row cut short says so)"
 keys q
 wait_file "$TMP/pm1" 5
 grep -q EXIT=0 "$TMP/pm1"

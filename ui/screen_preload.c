@@ -130,6 +130,22 @@ static int in_window(const acbb_pmap_cell *c, const acbb_pmap_row *r)
     return c->flags == 0 && r->lo_N >= 0 && c->preload_N >= r->lo_N && c->preload_N <= r->hi_N;
 }
 
+/* A row the cancel cut short: its window stands on part of the row. */
+static int row_cut(const pm_result *v, int s)
+{
+    for (int k = 0; k < v->o.n_preloads; k++)
+        if (v->cells[s * v->o.n_preloads + k].status == ACBB_CANCELLED) return 1;
+    return 0;
+}
+
+/* Speed rows finished whole. */
+static int rows_whole(const pm_result *v)
+{
+    int n = 0;
+    for (int s = 0; s < v->rows_done; s++) n += !row_cut(v, s);
+    return n;
+}
+
 void acbb_preload_take(acbb_app *a)
 {
     struct acbb_pmap_ui *p = a->pmap;
@@ -137,7 +153,7 @@ void acbb_preload_take(acbb_app *a)
     if (p->info.phase <= ACBB_JOB_RUNNING || p->info.run_id == p->seen_run) return;
     p->seen_run = p->info.run_id;
     int with = 0;
-    for (int s = 0; s < p->view.rows_done; s++) with += p->view.rows[s].lo_N >= 0;
+    for (int s = 0; s < p->view.rows_done; s++) with += p->view.rows[s].lo_N >= 0 && !row_cut(&p->view, s);
     char took[16];
     acbb_fmt_duration(p->info.ended_s - p->info.started_s, took, sizeof took);
     if (p->info.phase == ACBB_JOB_DONE)
@@ -145,7 +161,7 @@ void acbb_preload_take(acbb_app *a)
                      "preload map done: a window at %d of %d speeds, in %s (g exports the chart)", with,
                      p->view.o.n_speeds, took);
     else if (p->info.phase == ACBB_JOB_CANCELLED)
-        acbb_app_msg(a, ACBB_ROLE_WARN, "preload map cancelled after %d of %d speeds", p->view.rows_done,
+        acbb_app_msg(a, ACBB_ROLE_WARN, "preload map cancelled after %d of %d speeds", rows_whole(&p->view),
                      p->view.o.n_speeds);
     else
         acbb_app_msg(a, ACBB_ROLE_ERROR, "preload map failed: %s", p->info.message);
@@ -275,8 +291,9 @@ static void export_chart(acbb_app *a)
     double x[PM_SPEEDS], lo[PM_SPEEDS], hi[PM_SPEEDS];
     for (int s = 0; s < v->rows_done; s++) {
         x[s] = v->rows[s].speed_rpm;
-        lo[s] = v->rows[s].lo_N >= 0 ? v->rows[s].lo_N : NAN;
-        hi[s] = v->rows[s].hi_N >= 0 ? v->rows[s].hi_N : NAN;
+        int have = v->rows[s].lo_N >= 0 && !row_cut(v, s);
+        lo[s] = have ? v->rows[s].lo_N : NAN;
+        hi[s] = have ? v->rows[s].hi_N : NAN;
     }
     acbb_plot_series sr[2] = {
         { "lowest preload inside the window (no skid)", x, lo, (size_t)v->rows_done, 1, 1, 1 },
@@ -304,7 +321,7 @@ static void export_chart(acbb_app *a)
  * run, a letter for the first reason out (the CLI's table), - not run. */
 static char cell_char(const acbb_pmap_cell *c, const acbb_pmap_row *r)
 {
-    if (!c->have && c->status == ACBB_CANCELLED) return '-';
+    if (c->status == ACBB_CANCELLED) return '-';
     if (in_window(c, r)) return '#';
     const char *v = acbb_pmap_verdict(c);
     return !strcmp(v, "ok") ? '.' : !strcmp(v, "low_s0") ? '0' : !strcmp(v, "runaway") ? 'R'
@@ -338,7 +355,7 @@ static void draw_heading(acbb_app *a, acbb_rect b)
                  v->o.n_preloads, took);
         break;
     case ACBB_JOB_CANCELLED:
-        acbb_put(a, y, b.x, b.w, ACBB_ROLE_WARN, "cancelled after %d of %d speeds; r reruns", v->rows_done,
+        acbb_put(a, y, b.x, b.w, ACBB_ROLE_WARN, "cancelled after %d of %d speeds; r reruns", rows_whole(v),
                  v->o.n_speeds);
         break;
     case ACBB_JOB_FAILED:
@@ -378,9 +395,10 @@ static void draw_row(acbb_app *a, int y, acbb_rect b, const pm_result *v, int s)
     }
     cells[2 * np] = '\0';
     char win[40];
-    if (r->lo_N >= 0) snprintf(win, sizeof win, "%g..%g", r->lo_N, r->hi_N);
+    if (row_cut(v, s)) snprintf(win, sizeof win, "cut short");
+    else if (r->lo_N >= 0) snprintf(win, sizeof win, "%g..%g", r->lo_N, r->hi_N);
     else snprintf(win, sizeof win, "none");
-    acbb_put(a, y, b.x, b.w, r->lo_N >= 0 ? ACBB_ROLE_NORMAL : ACBB_ROLE_WARN, "%8.0f  %s %s", speed,
+    acbb_put(a, y, b.x, b.w, r->lo_N >= 0 && !row_cut(v, s) ? ACBB_ROLE_NORMAL : ACBB_ROLE_WARN, "%8.0f  %s %s", speed,
              cells, win);
 }
 
