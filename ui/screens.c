@@ -20,8 +20,8 @@ const acbb_screen *const acbb_screens[] = {
     &acbb_screen_accuracy,
     &acbb_screen_sweep,
     &acbb_screen_sensitivity,
-    &acbb_screen_set,
     &acbb_screen_preload,
+    &acbb_screen_set,
 };
 
 const int acbb_screen_count = (int)(sizeof acbb_screens / sizeof acbb_screens[0]);
