@@ -112,5 +112,22 @@ done
 keys q
 wait_file "$TMP/pm2" 5
 
+# An edge-loaded bearing (a 0.3 mm inner shoulder, as test_life_cli): the
+# life line says EDGE with the margin, still within 80 columns.
+{ cat "$ROOT/presets/combined-load.ini"; printf '\n[life]\ninner_shoulder_mm = 0.3\n'; } >"$TMP/edge.ini"
+"$ACBB" run "$TMP/edge.ini" --json >"$TMP/edge.json" 2>/dev/null
+margin=$(printf '%.1f' "$(jq -r '.life.edge_margin_deg' "$TMP/edge.json")")
+TUI_ARGS="--pace 0" start "" pm3 edge.ini
+wait_for "edge.ini"
+keys r
+wait_for "converged"
+wait_for "s0 $(printf '%.3g' "$(jq -r '.life.s0_min' "$TMP/edge.json")")"
+screen | grep '^Life' | grep -q "EDGE $margin deg"
+ok $? "an edge-loaded bearing: the life line says EDGE $margin deg"
+[ "$(screen | grep '^Life' | awk '{ print length }')" -le 80 ]
+ok $? "and the line fits 80 columns"
+keys q
+wait_file "$TMP/pm3" 5
+
 echo "1..$n"
 [ $failed -eq 0 ]
