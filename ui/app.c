@@ -18,6 +18,7 @@
 #include "../cli/exit.h"
 #include "screens.h"
 #include "recover.h"
+#include "screen_preload.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
 #define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
@@ -511,6 +512,7 @@ static void take_state(acbb_app *a)
     acbb_screen_sweep_follow(a);
     acbb_sensjob_read(a->sens, &a->snv);
     acbb_screen_sensitivity_follow(a);
+    acbb_preload_take(a);
     if (a->st.run_id != a->prog_run) {
         acbb_progress_reset(&a->prog);
         a->prog_run = a->st.run_id;
@@ -557,7 +559,7 @@ static void frame(acbb_app *a)
 
 /* The background threads' wake-up pipes: the Sim worker, the benchmark,
  * the sweep, the sensitivity run. */
-#define N_WAKES 4
+#define N_WAKES 5 /* and the preload map */
 
 typedef struct {
     int input, signal;
@@ -570,6 +572,7 @@ static int wake_fd(acbb_app *a, int k)
     case 0: return acbb_worker_wake_fd(a->worker);
     case 1: return acbb_bench_wake_fd(a->bench);
     case 2: return acbb_job_wake_fd(acbb_sweepjob_job(a->sweep));
+    case 4: return acbb_preload_wake_fd(a);
     default: return acbb_job_wake_fd(acbb_sensjob_job(a->sens));
     }
 }
@@ -580,6 +583,7 @@ static void drain_wake(acbb_app *a, int k)
     case 0: acbb_worker_drain_wake(a->worker); break;
     case 1: acbb_bench_drain_wake(a->bench); break;
     case 2: acbb_job_drain_wake(acbb_sweepjob_job(a->sweep)); break;
+    case 4: acbb_preload_drain(a); break;
     default: acbb_job_drain_wake(acbb_sensjob_job(a->sens)); break;
     }
 }
@@ -750,12 +754,13 @@ int acbb_app_run(const acbb_app_options *opt)
     int rc = 0;
     if (!opt->no_mouse) a->mouse = acbb_term_mouse(&a->term);
     if (acbb_bench_new(&a->bench, &err) != ACBB_OK || acbb_sweepjob_new(&a->sweep, &err) != ACBB_OK ||
-        acbb_sensjob_new(&a->sens, &err) != ACBB_OK ||
+        acbb_sensjob_new(&a->sens, &err) != ACBB_OK || acbb_preload_new(a, &err) != ACBB_OK ||
         acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
         acbb_term_close(&a->term);
         acbb_bench_free(a->bench);
         acbb_sweepjob_free(a->sweep);
         acbb_sensjob_free(a->sens);
+        acbb_preload_free(a);
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         rc = ACBB_EXIT_INTERNAL;
     } else {
@@ -769,6 +774,7 @@ int acbb_app_run(const acbb_app_options *opt)
         acbb_bench_free(a->bench);
         acbb_sweepjob_free(a->sweep);
         acbb_sensjob_free(a->sens);
+        acbb_preload_free(a);
         acbb_worker_free(a->worker);
         rc = a->exit_code;
     }

@@ -124,6 +124,7 @@ struct acbb_app {
     int help_hit;                  /* help row of the last search hit */
     int node_hit;                  /* Nodes: the node the last search found (-1: none) */
     int bearing;                   /* a set's bearing the screens show (screen_set.c) */
+    struct acbb_pmap_ui *pmap;     /* the Preload screen's job and result (screen_preload.c) */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
 };
 

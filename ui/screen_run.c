@@ -200,15 +200,30 @@ void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role
     schedule_text(a, buf, n);
 }
 
-/* One line of rating life and static safety (MODEL.md 15, life.h). */
+/* One line of rating life and static safety (MODEL.md 15, life.h) of the
+ * bearing shown (a set's chosen one: the worker publishes its snapshot):
+ * C, L10r, Lnm, s0 and the shoulder margin, single-spaced when 80 columns
+ * need it; a_ISO and kappa after them when the row has room (never cut
+ * inside a number). */
 static int life_line(acbb_app *a, int y, acbb_rect r)
 {
     const acbb_life *L = &a->st.snap.life;
     if (r.h < 6) return 0;
-    acbb_put(a, y, r.x, r.w, L->edge_loaded ? ACBB_ROLE_ERROR : ACBB_ROLE_NORMAL,
-             "Life%s: L10r %.4g h  Lnm %.4g h  a_ISO %.3g  kappa %.3g  s0 %.3g%s",
-             L->estimated ? " (est.)" : "", L->L10r_h, L->Lnmr_h, L->a_iso, L->kappa, L->s0_min,
-             L->edge_loaded ? "  EDGE LOADED" : "");
+    char who[16] = "", edge[48], line[256];
+    if (a->st.snap.n_bearings > 1) snprintf(who, sizeof who, " b%d", a->bearing);
+    if (L->edge_ball < 0) snprintf(edge, sizeof edge, "edge -");
+    else snprintf(edge, sizeof edge, "%s %.1f deg", L->edge_loaded ? "EDGE" : "edge", L->edge_margin_deg);
+    int n = 0;
+    for (int gap = 2; gap >= 1; gap--) {
+        n = snprintf(line, sizeof line, "Life%s: C %.3g kN%s%*sL10r %.3g h%*sLnm %.3g h%*ss0 %.3g%*s%s",
+                     who, L->C * 1e-3, L->estimated ? " est." : "", gap, "", L->L10r_h, gap, "",
+                     L->Lnmr_h, gap, "", L->s0_min, gap, "", edge);
+        if (n <= r.w) break;
+    }
+    if (n >= 0 && (size_t)n < sizeof line)
+        snprintf(line + n, sizeof line - (size_t)n, "  a_ISO %.3g  kappa %.3g", L->a_iso, L->kappa);
+    if ((int)strlen(line) > r.w && n >= 0 && (size_t)n < sizeof line) line[n] = '\0';
+    acbb_put(a, y, r.x, r.w, L->edge_loaded ? ACBB_ROLE_ERROR : ACBB_ROLE_NORMAL, "%s", line);
     return 1;
 }
 

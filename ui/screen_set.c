@@ -1,7 +1,8 @@
 /* acbb TUI — a bearing set (MODEL.md 14): the set's preload now against
  * the assembly preload, its stiffness at the nose and the lift-off thrust,
  * one row per bearing (which way it carries thrust, its axial load, outer
- * and inner ring temperatures, loss, lifted off or not), and the preload
+ * and inner ring temperatures, loss, modified life Lnm and least static
+ * safety s0 (MODEL.md 15), lifted off or edge loaded), and the preload
  * over time beside each bearing's outer-ring temperature. [ and ] (or a
  * click on a row) choose the bearing the Run, Nodes and Balls screens show. */
 #include <math.h>
@@ -27,13 +28,16 @@ static void table(acbb_app *a, acbb_rect b)
 {
     const acbb_set_view *v = &a->st.snap.set;
     acbb_put(a, b.y + TABLE_Y - 1, b.x, b.w, ACBB_ROLE_HEADER,
-             "   #  thrust   axial N   outer C   inner C    loss W");
-    for (int k = 0; k < a->st.snap.n_bearings && k < ACBB_MAX_SET; k++)
+             "   #  thrust   axial N   outer C   inner C    loss W     Lnm h    s0");
+    for (int k = 0; k < a->st.snap.n_bearings && k < ACBB_MAX_SET; k++) {
+        const acbb_life *L = &a->st.set_life[k]; /* each bearing's own (worker.h) */
         acbb_put(a, b.y + TABLE_Y + k, b.x, b.w,
                  k == a->bearing ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL,
-                 "%s %2d  %-6s %9.1f %9.2f %9.2f %9.2f  %s", k == a->bearing ? ">" : " ", k,
-                 v->orientation[k] > 0 ? "+x" : "-x", v->axial_force[k], v->T_outer_ring[k],
-                 v->T_inner_ring[k], v->loss_total[k], v->contact_lost[k] ? "LIFTED OFF" : "");
+                 "%s %2d  %-6s %9.1f %9.2f %9.2f %9.2f %9.3g %5.3g  %s%s", k == a->bearing ? ">" : " ",
+                 k, v->orientation[k] > 0 ? "+x" : "-x", v->axial_force[k], v->T_outer_ring[k],
+                 v->T_inner_ring[k], v->loss_total[k], L->Lnmr_h, L->s0_min,
+                 v->contact_lost[k] ? "LIFTED OFF " : "", L->edge_loaded ? "EDGE" : "");
+    }
 }
 
 static void charts(acbb_app *a, acbb_rect r)

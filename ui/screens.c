@@ -7,6 +7,7 @@ extern const acbb_screen acbb_screen_run, acbb_screen_nodes, acbb_screen_balls,
     acbb_screen_charts, acbb_screen_edit, acbb_screen_compare, acbb_screen_plot,
     acbb_screen_accuracy, acbb_screen_sweep, acbb_screen_sensitivity;
 extern const acbb_screen acbb_screen_set;
+extern const acbb_screen acbb_screen_preload;
 
 const acbb_screen *const acbb_screens[] = {
     &acbb_screen_run,
@@ -19,6 +20,7 @@ const acbb_screen *const acbb_screens[] = {
     &acbb_screen_accuracy,
     &acbb_screen_sweep,
     &acbb_screen_sensitivity,
+    &acbb_screen_preload,
     &acbb_screen_set,
 };
 

@@ -72,6 +72,8 @@ typedef struct {
     acbb_scene scene;
     acbb_worker_phase phase;
     acbb_snapshot snap;
+    acbb_snapshot other;       /* another bearing of a set, for its life (take_snapshot) */
+    acbb_life set_life[ACBB_MAX_SET]; /* each bearing's life (a set; else unused) */
     double last_step;          /* acbb_now_ms of the last step (pacing) */
     double seg_start, wall_acc;/* running wall time (ms), pauses excluded */
     double rate_t0, rate;      /* steps/s measurement window (t0 in ms) */
@@ -120,6 +122,7 @@ static void publish_locked(acbb_worker *w, const worker_ctx *c, int with_snapsho
     w->st.steps_per_s = c->rate;
     if (with_snapshot && c->sim) {
         w->st.snap = c->snap;
+        memcpy(w->st.set_life, c->set_life, sizeof w->st.set_life);
         w->st.has_snapshot = 1;
     }
     w->st.publications++;
@@ -150,11 +153,18 @@ static void set_phase(worker_ctx *c, acbb_worker_phase p)
     c->phase = p;
 }
 
-/* The snapshot of the bearing the UI chose (a set's; else the run's). */
-static void take_snapshot(acbb_worker *w, const acbb_sim *sim, acbb_snapshot *s)
+/* The snapshot of the bearing the UI chose (a set's; else the run's), and
+ * of a set every bearing's life for the Set screen's table (each bearing's
+ * own snapshot carries it: acbb_sim_bearing_snapshot). */
+static void take_snapshot(acbb_worker *w, const acbb_sim *sim, worker_ctx *c)
 {
+    acbb_snapshot *s = &c->snap;
     int k = atomic_load(&w->bearing);
     if (k <= 0 || acbb_sim_bearing_snapshot(sim, k, s) != ACBB_OK) acbb_sim_snapshot(sim, s);
+    for (int b = 0; b < s->n_bearings && b < ACBB_MAX_SET && s->n_bearings > 1; b++) {
+        if (b == k) c->set_life[b] = s->life;
+        else if (acbb_sim_bearing_snapshot(sim, b, &c->other) == ACBB_OK) c->set_life[b] = c->other.life;
+    }
 }
 
 /* A new run (or a reset) begins: fresh history seeded with the initial state. */
@@ -164,7 +174,7 @@ static void begin_run(acbb_worker *w, worker_ctx *c, acbb_worker_phase p)
     c->wall_acc = 0.0;
     c->rate = 0.0;
     set_phase(c, p);
-    take_snapshot(w, c->sim, &c->snap);
+    take_snapshot(w, c->sim, c);
     /* Run id, scene, snapshot and history change together, so a reader
      * never sees the new run's id with the old run's numbers. */
     pthread_mutex_lock(&w->mu);
@@ -356,7 +366,7 @@ static int run_hook(void *ctx, const acbb_sim *sim)
     worker_ctx *c = h->c;
     long before = c->snap.iteration;
     double t_before = c->snap.time, sim_dt = 0.0;
-    take_snapshot(h->w, sim, &c->snap);
+    take_snapshot(h->w, sim, c);
     if (c->snap.iteration != before) { /* iteration 0 was published by begin_run */
         sim_dt = c->snap.time - t_before;
         double t = acbb_now_ms();
@@ -378,7 +388,7 @@ static void run_drive(acbb_worker *w, worker_ctx *c)
     double t = acbb_now_ms();
     /* A run shorter than one window still reports its rate. */
     if (c->rate == 0.0 && t > c->rate_t0) c->rate = 1e3 * (double)c->rate_n / (t - c->rate_t0);
-    take_snapshot(w, c->sim, &c->snap);
+    take_snapshot(w, c->sim, c);
     set_phase(c, rc == ACBB_CANCELLED ? ACBB_WORKER_STOPPED : ACBB_WORKER_DONE);
     publish(w, c, 0);
 }
@@ -391,7 +401,7 @@ static void stop_run(acbb_worker *w, worker_ctx *c)
     atomic_store(&w->cancel_run, 1);
     const acbb_run_ctl ctl = { NULL, NULL, &w->cancel_run };
     acbb_sim_drive(c->sim, &ctl);
-    take_snapshot(w, c->sim, &c->snap);
+    take_snapshot(w, c->sim, c);
     set_phase(c, ACBB_WORKER_STOPPED);
 }
 
@@ -430,7 +440,7 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
     case ACBB_CMD_QUIT:
         break;
     case ACBB_CMD_SHOW:
-        if (c->sim) take_snapshot(w, c->sim, &c->snap);
+        if (c->sim) take_snapshot(w, c->sim, c);
         break;
     }
 

@@ -80,6 +80,7 @@ typedef struct {
     acbb_scene scene;            /* the scene of the current run */
     int has_snapshot;
     acbb_snapshot snap;
+    acbb_life set_life[ACBB_MAX_SET]; /* a set's: each bearing's life (snap.n_bearings of them) */
     acbb_compare_result compare;
 } acbb_worker_state;
 

@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# The TUI's Preload screen (issue 19 item 4): acbb preload-map's window of
+# the edited scene in the background, ranges and limits typed, drawn per
+# speed at 80x24, the same cells and windows as the CLI's table, refused
+# ranges named, g exports the chart. $1 = the acbb binary.
+. "$(dirname "$0")/test_tui_lib.sh"
+
+cp "$ROOT/presets/7008C.ini" "$TMP/copy.ini"
+TUI_ARGS="--pace 0" start "" pm1 copy.ini
+wait_for "copy.ini"
+keys P
+wait_for "Preload window  speeds 3750:22500:6 rpm  preloads 75:750:10 N"
+ok $? "P opens the Preload screen; ranges default from the scene (15000 rpm, 300 N)"
+keys s C-u "5000:20000:4" Enter
+wait_for "speeds 5000:20000:4 rpm (r runs the map)"
+ok $? "s sets the speeds"
+keys e C-u "1:300:6" Enter
+wait_for "preloads 1:300:6 N (r runs the map)"
+ok $? "e sets the preloads"
+keys l C-u "10:0:0" Enter
+wait_for "limits 10:0:0 (r runs the map)"
+ok $? "l sets the limits (rise 10 K, life and s0 not checked)"
+keys e C-u "1:300:25" Enter
+wait_for "preloads 1:300:25 refused: N 1..24 here (acbb preload-map: 1..100)"
+ok $? "a grid wider than 80 columns is refused with the reason"
+keys s C-u "9000:3000:4" Enter
+wait_for "speeds 9000:3000:4 refused: LO:HI:N with 0 < LO <= HI, e.g. 4000:16000:7"
+ok $? "a reversed range is refused with the form it needs"
+keys r
+wait_for "preload map done: a window at 4 of 4 speeds"
+ok $? "r maps the edited scene in the background and says when it is done"
+wait_for "window: no skid (gyroscopic/traction <= 1), rise <= 10 K, no runaway"
+ok $? "the limits the map used are stated"
+# The CLI on the same grid: each speed's cells and window, as the TUI draws
+# them ('#' = in the window, which the CLI marks '.').
+"$ACBB" preload-map "$TMP/copy.ini" --speeds 5000:20000:4 --preloads 1:300:6 --max-rise 10 \
+    | awk '$1 ~ /^[0-9]+$/ && NF > 3 { w = $(NF-2) ".." $NF; if ($NF == "none") w = "none";
+           c = ""; for (i = 2; i <= 7; i++) c = c $i; print $1, c, w }' >"$TMP/cli.txt"
+screen | awk '$1 ~ /^[0-9]+$/ && NF == 8 { c = ""; for (i = 2; i <= 7; i++) c = c $i;
+           gsub("#", ".", c); print $1, c, $8 }' >"$TMP/tui.txt"
+[ -s "$TMP/cli.txt" ] && [ "$(wc -l <"$TMP/tui.txt")" -eq 4 ] && diff "$TMP/cli.txt" "$TMP/tui.txt" >&2
+ok $? "the TUI's cells and windows per speed equal acbb preload-map's table"
+grep -q 'h' "$TMP/tui.txt"
+ok $? "the rise limit bounds the window somewhere on this grid (h cells)"
+screen | grep -q '^ *N  1  *300 N$'
+ok $? "the preload axis under the cells names its ends"
+[ "$(screen | awk 'length > 80' | wc -l)" -eq 0 ]
+ok $? "every row fits 80 columns"
+if command -v gnuplot >/dev/null 2>&1; then
+    keys g
+    wait_for "wrote ./acbb-plots/preload_window.png and ./acbb-plots/preload_window.svg"
+    ok $? "g exports the window chart"
+    [ -s "$TMP/acbb-plots/preload_window.png" ] && grep -q '<svg' "$TMP/acbb-plots/preload_window.svg"
+    ok $? "as PNG and SVG"
+else
+    echo "ok 14 # SKIP gnuplot is not installed"
+    echo "ok 15 # SKIP gnuplot is not installed"
+    n=$((n + 2))
+fi
+keys x
+wait_for "no preload map running (r starts one)"
+ok $? "x with nothing running says so"
+# Cancelling: r and x arrive together, so x finds the map running (288
+# cells take seconds); the speeds not run say so, the screen stays usable.
+keys s C-u "5000:20000:12" Enter e C-u "1:300:24" Enter
+wait_for "preloads 1:300:24 N (r runs the map)"
+keys r x
+wait_for "preload map cancelled after"
+ok $? "x cancels a running map and the message says how far it got"
+screen | grep -q "cancelled after [0-9]* of 12 speeds; r reruns"
+ok $? "the heading says so too"
+screen | grep -q ' 20000  -$'
+ok $? "the last speed was never run: marked -"
+[ "$(screen | grep -c '[0-9]\.\.[0-9]')" -eq "$(screen | sed -n 's/.*cancelled after \([0-9]*\) of 12 speeds;.*/\1/p')" ]
+ok $? "a window is given only for the speeds finished whole (a row cut short says so)"
+keys q
+wait_file "$TMP/pm1" 5
+grep -q EXIT=0 "$TMP/pm1"
+ok $? "the TUI quits cleanly"
+
+# ---- life per bearing (issue 19 item 1): a DB pair under 800 N thrust, so
+# the two bearings' lives differ; each row of the Set screen and the Run
+# screen's life line for the chosen bearing against `acbb run --json`.
+sed 's/^axial_load_N = 0$/axial_load_N = 800/' "$ROOT/presets/pair-DB-heated.ini" >"$TMP/pair.ini"
+grep -q '^axial_load_N = 800$' "$TMP/pair.ini"
+ok $? "the pair preset takes an external thrust"
+"$ACBB" run "$TMP/pair.ini" --json >"$TMP/pair.json"
+# "%.3g" of bearing $1's life field $2 (the TUI's format).
+life() { printf '%.3g' "$(jq -r ".bearings[$1].life.$2" "$TMP/pair.json")"; }
+[ "$(life 0 Lnmr_h)" != "$(life 1 Lnmr_h)" ]
+ok $? "the loaded bearing's life differs from the unloaded one's ($(life 0 Lnmr_h) h, $(life 1 Lnmr_h) h)"
+TUI_ARGS="--pace 0" start "" pm2 pair.ini
+wait_for "pair.ini"
+keys r
+wait_for "converged"
+keys S
+wait_for "Lnm h    s0"
+ok $? "the Set screen's table has life columns"
+for k in 0 1; do
+    screen | grep -q "^[> ]  $k  [-+]x .* $(life $k Lnmr_h) *$(life $k s0_min) *\$"
+    ok $? "bearing $k's row: Lnm $(life $k Lnmr_h) h, s0 $(life $k s0_min), as in the JSON"
+done
+for k in 1 0; do
+    keys "$([ $k = 1 ] && echo ']' || echo '[')"
+    wait_for "showing bearing $k of 2"
+    keys 1
+    wait_for "Life b$k: C $(printf '%.3g' "$(jq -r ".bearings[$k].life.C_N / 1000" "$TMP/pair.json")") kN  L10r $(life $k L10r_h) h  Lnm $(life $k Lnmr_h) h  s0 $(life $k s0_min)  edge "
+    ok $? "the Run screen's life line is bearing $k's (C, L10r, Lnm, s0, edge)"
+    keys S
+    wait_for "Lnm h    s0"
+done
+keys q
+wait_file "$TMP/pm2" 5
+
+# An edge-loaded bearing (a 0.3 mm inner shoulder, as test_life_cli): the
+# life line says EDGE with the margin, still within 80 columns.
+{ cat "$ROOT/presets/combined-load.ini"; printf '\n[life]\ninner_shoulder_mm = 0.3\n'; } >"$TMP/edge.ini"
+"$ACBB" run "$TMP/edge.ini" --json >"$TMP/edge.json" 2>/dev/null
+margin=$(printf '%.1f' "$(jq -r '.life.edge_margin_deg' "$TMP/edge.json")")
+TUI_ARGS="--pace 0" start "" pm3 edge.ini
+wait_for "edge.ini"
+keys r
+wait_for "converged"
+wait_for "s0 $(printf '%.3g' "$(jq -r '.life.s0_min' "$TMP/edge.json")")"
+screen | grep '^Life' | grep -q "EDGE $margin deg"
+ok $? "an edge-loaded bearing: the life line says EDGE $margin deg"
+[ "$(screen | grep '^Life' | awk '{ print length }')" -le 80 ]
+ok $? "and the line fits 80 columns"
+keys q
+wait_file "$TMP/pm3" 5
+
+echo "1..$n"
+[ $failed -eq 0 ]
