@@ -150,6 +150,30 @@ rc=$?
     and ([.. | numbers | isinfinite or isnan] | any | not)' "$TMP/rramp.json" >/dev/null
 t $? "DB pair ramped to 16 000 rpm in 30 s: runaway after the last row, exit $rc, no NaN"
 
+# acbb preload-map of a set runs the set and judges its worst bearing
+# (MODEL.md 14; issue 19 item 4): a rigid DB pair at 16 000 rpm, 200 N, under
+# a growing thrust toward bearing 0. Bearing 1 unloads, so the set's skid
+# ratio rises with the thrust (measured 0.49, 0.61, 0.69 at 0, 200, 400 N;
+# bearing 0's alone falls: 0.49, 0.39, 0.32); the temperature rise, L_nmr
+# and s0 are the worst bearing's of `acbb run` of the same cell.
+for F in 0 400; do
+    "$ACBB" preload-map presets/pair-rigid-16k.ini --set operating.axial_load_N=$F \
+        --speeds 16000:16000:1 --preloads 200:200:1 --csv "$TMP/pm$F.csv" --jobs 1 >/dev/null 2>&1
+done
+s0=$(awk -F, 'NR == 2 { print $5 }' "$TMP/pm0.csv")
+s4=$(awk -F, 'NR == 2 { print $5 }' "$TMP/pm400.csv")
+awk -v a="$s0" -v b="$s4" 'BEGIN { exit !(b > a + 0.1) }'
+t $? "preload-map of a DB pair: the skid ratio is the unloading bearing's ($s0 -> $s4 under 400 N)"
+"$ACBB" run presets/pair-rigid-16k.ini --set operating.axial_load_N=400 --set mounting.preload_N=200 \
+    --json 2>/dev/null >"$TMP/pm.json"
+IFS=, read -r _ _ st _ _ rise L s0m <<<"$(sed -n 2p "$TMP/pm400.csv")"
+jqt "$TMP/pm.json" "\"$st\" == \"converged\"
+    and (([.bearings[] | [.temperature_C.outer_ring, .temperature_C.inner_ring, .temperature_C.ball]
+          | max] | max) - .scene.keys["operating.ambient_C"] - $rise | fabs) < 1e-6
+    and (([.bearings[].life.Lnmr_h] | min) / $L - 1 | fabs) < 1e-6
+    and (([.bearings[].life.s0_min] | min) / $s0m - 1 | fabs) < 1e-6" \
+    "preload-map of a DB pair: rise, L_nmr and s0 are the worst bearing's of acbb run"
+
 # A single bearing has no bearings/set keys; set.arrangement = single is the
 # default, and a set of one ignores the set's other keys: the same run
 # (every number but wall_ms; the scene echo differs in the keys given).
