@@ -169,7 +169,7 @@ t $? "preload-map of a DB pair: the skid ratio is the unloading bearing's ($s0 -
 IFS=, read -r _ _ st _ _ rise L s0m <<<"$(sed -n 2p "$TMP/pm400.csv")"
 jqt "$TMP/pm.json" "\"$st\" == \"converged\"
     and (([.bearings[] | [.temperature_C.outer_ring, .temperature_C.inner_ring, .temperature_C.ball]
-          | max] | max) - .scene.keys["operating.ambient_C"] - $rise | fabs) < 1e-6
+          | max] | max) - .scene.keys[\"operating.ambient_C\"] - $rise | fabs) < 1e-6
     and (([.bearings[].life.Lnmr_h] | min) / $L - 1 | fabs) < 1e-6
     and (([.bearings[].life.s0_min] | min) / $s0m - 1 | fabs) < 1e-6" \
     "preload-map of a DB pair: rise, L_nmr and s0 are the worst bearing's of acbb run"
