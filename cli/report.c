@@ -275,8 +275,9 @@ static const char k_mount_intro[] =
     "Seed conclusions by mounting (MODEL.md 14): the same study under the seed rig's constant "
     "force, under rigid preload of the same bearing (mounting.preload = displacement, each "
     "point's thrust the assembly preload) and as a rigid DB pair of it with the same preload "
-    "(set.arrangement = DB; the numbers are bearing 0's); where a transient runs away, the steady values are "
-    "the steady solve's and the transient checks say so. The checks' numbers under each:";
+    "(set.arrangement = DB; the numbers are bearing 0's); where a transient runs away, the "
+    "steady values are the steady solve's and the transient checks say so. The checks' numbers "
+    "under each:";
 
 static void print_mountings_text(FILE *f, const report_view *c)
 {

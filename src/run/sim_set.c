@@ -471,8 +471,10 @@ acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_s
     ss->s = *s;
     acbb_fidelity_apply(&ss->s, NULL); /* as every member's (sim.c sim_init) */
     acbb_operating op; /* the first row, or the last for the steady solve (sim.c sim_init) */
-    if (ss->s.thermal_mode == ACBB_THERMAL_STEADY || !ss->s.heating) acbb_schedule_final(&ss->s, &op);
-    else acbb_schedule_at(&ss->s, 0.0, &op);
+    if (ss->s.thermal_mode == ACBB_THERMAL_STEADY || !ss->s.heating)
+        acbb_schedule_final(&ss->s, &op);
+    else
+        acbb_schedule_at(&ss->s, 0.0, &op);
     acbb_schedule_apply(&ss->s, &op);
     ss->cancel = o->cancel;
     if ((rc = set_up(ss, o, err)) != ACBB_OK) {
