@@ -21,27 +21,36 @@
  * Each seed conclusion is judged under the seed rig's constant force and
  * under rigid preload of the same bearing: the study as the scene says, and
  * again with the other mounting.preload (under displacement the study's
- * thrust of each point is the assembly preload, study.c set_point). A DB
- * pair (helper "sets": set.arrangement = DB) joins as a third row here. */
-enum { M_FORCE, M_RIGID, N_MOUNTINGS };
+ * thrust of each point is the assembly preload, study.c set_point), and
+ * as a rigid DB pair of the same bearing with the same preload (the set's
+ * other keys as the scene has them; MODEL.md 14: the pair's own bearing
+ * carries the preload, the shaft's growth between them adds to it). */
+enum { M_FORCE, M_RIGID, M_DB, N_MOUNTINGS };
 static const struct {
-    const char *name, *json;
+    const char *name, *json, *label;
 } k_mountings[N_MOUNTINGS] = {
-    [M_FORCE] = { "constant force", "constant_force" },
-    [M_RIGID] = { "rigid preload", "rigid_preload" },
+    [M_FORCE] = { "constant force", "constant_force", "force" },
+    [M_RIGID] = { "rigid preload", "rigid_preload", "rigid" },
+    [M_DB] = { "DB pair", "db_pair", "DB" },
 };
 
 /* The scene of mounting m from the preset's scene. */
 static void mounting_scene(const acbb_scene *base, int m, acbb_scene *out)
 {
     *out = *base;
-    out->preload = m == M_RIGID ? ACBB_PRELOAD_DISPLACEMENT : ACBB_PRELOAD_FORCE;
-    if (m == M_RIGID && !(out->preload_force > 0.0)) out->preload_force = out->axial_load;
+    out->preload = m == M_FORCE ? ACBB_PRELOAD_FORCE : ACBB_PRELOAD_DISPLACEMENT;
+    if (m != M_FORCE && !(out->preload_force > 0.0)) out->preload_force = out->axial_load;
+    out->set_arrangement = m == M_DB ? ACBB_SET_DB : ACBB_SET_SINGLE;
+    if (m != M_DB) out->set_n_bearings = 0;
 }
 
+/* The mounting the scene itself is, or -1 (another set, a spring pair):
+ * then the study of the scene is shown above and every mounting below. */
 static int own_mounting(const acbb_scene *base)
 {
-    return base->preload == ACBB_PRELOAD_DISPLACEMENT ? M_RIGID : M_FORCE;
+    bool rigid = base->preload == ACBB_PRELOAD_DISPLACEMENT;
+    if (base->set_arrangement == ACBB_SET_SINGLE) return rigid ? M_RIGID : M_FORCE;
+    return base->set_arrangement == ACBB_SET_DB && rigid ? M_DB : -1;
 }
 
 /* What the formatters need besides the study. */
@@ -242,38 +251,54 @@ static const acbb_study_check *find_check(const acbb_study *s, const char *id)
     return ch ? ch : it && it->n_checks > 0 ? &it->checks[0] : NULL;
 }
 
-/* "both", "constant force only", ... for conclusion i. */
-static const char *holds_under(const report_view *c, size_t i)
+/* "all three", "constant force only", "rigid preload, DB pair", "none"
+ * for conclusion i; buf >= 40 bytes. */
+static const char *holds_under(const report_view *c, size_t i, char *buf, size_t cap)
 {
-    bool f = acbb_study_conclusion_verdict(c->by[M_FORCE], i) == ACBB_VERDICT_HELD;
-    bool r = acbb_study_conclusion_verdict(c->by[M_RIGID], i) == ACBB_VERDICT_HELD;
-    return f && r ? "both" : f ? "constant force only" : r ? "rigid preload only" : "neither";
+    int n = 0, last = 0;
+    size_t u = 0;
+    buf[0] = '\0';
+    for (int m = 0; m < N_MOUNTINGS; m++) {
+        if (acbb_study_conclusion_verdict(c->by[m], i) != ACBB_VERDICT_HELD) continue;
+        u += (size_t)snprintf(buf + u, u < cap ? cap - u : 0, "%s%s", n ? ", " : "",
+                              k_mountings[m].name);
+        n++;
+        last = m;
+    }
+    if (n == 0) return "none";
+    if (n == N_MOUNTINGS) return "all three";
+    if (n == 1) snprintf(buf, cap, "%s only", k_mountings[last].name);
+    return buf;
 }
 
 static const char k_mount_intro[] =
     "Seed conclusions by mounting (MODEL.md 14): the same study under the seed rig's constant "
-    "force and under rigid preload of the same bearing (mounting.preload = displacement, each "
-    "point's thrust the assembly preload); where a transient runs away, the steady values are "
-    "the steady solve's and the transient checks say so. The checks' numbers under each:";
+    "force, under rigid preload of the same bearing (mounting.preload = displacement, each "
+    "point's thrust the assembly preload) and as a rigid DB pair of it with the same preload "
+    "(set.arrangement = DB; the numbers are bearing 0's); where a transient runs away, the "
+    "steady values are the steady solve's and the transient checks say so. The checks' numbers "
+    "under each:";
 
 static void print_mountings_text(FILE *f, const report_view *c)
 {
     size_t nc;
     const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
     wrap(f, "", 0, k_mount_intro);
-    fprintf(f, "%-6s%-16s%-16s%s\n", "", k_mountings[M_FORCE].name, k_mountings[M_RIGID].name,
-            "holds under");
+    fprintf(f, "%-6s", "");
+    for (int m = 0; m < N_MOUNTINGS; m++) fprintf(f, "%-15s", k_mountings[m].name);
+    fprintf(f, "%s\n", "holds under");
     for (size_t i = 0; i < nc; i++) {
-        fprintf(f, "(%zu)   %-16s%-16s%s\n", i + 1,
-                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_FORCE], i)),
-                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_RIGID], i)),
-                holds_under(c, i));
+        char where[48];
+        fprintf(f, "(%zu)   ", i + 1);
+        for (int m = 0; m < N_MOUNTINGS; m++)
+            fprintf(f, "%-15s", acbb_verdict_name(acbb_study_conclusion_verdict(c->by[m], i)));
+        fprintf(f, "%s\n", holds_under(c, i, where, sizeof where));
         for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
             for (int m = 0; m < N_MOUNTINGS; m++) {
                 const acbb_study_check *ch = find_check(c->by[m], cc[i].checks[k]);
                 char head[48];
                 snprintf(head, sizeof head, "%6s%-4s %-4s %s: ", "", cc[i].checks[k],
-                         ch ? k_vmark[ch->verdict] : "n/e", m == M_FORCE ? "force" : "rigid");
+                         ch ? k_vmark[ch->verdict] : "n/e", k_mountings[m].label);
                 wrap(f, head, 12, ch ? ch->text : "not evaluated");
             }
     }
@@ -589,12 +614,15 @@ static void print_md(FILE *f, const report_view *c)
     }
     fputs("\n## Seed conclusions by mounting\n\n", f);
     md_text(f, k_mount_intro);
-    fputs("\n\n| # | constant force | rigid preload | holds under |\n|---|---|---|---|\n", f);
-    for (size_t i = 0; i < nc; i++)
-        fprintf(f, "| (%zu) | %s | %s | %s |\n", i + 1,
-                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_FORCE], i)),
-                acbb_verdict_name(acbb_study_conclusion_verdict(c->by[M_RIGID], i)),
-                holds_under(c, i));
+    fputs("\n\n| # | constant force | rigid preload | DB pair | holds under |\n"
+          "|---|---|---|---|---|\n", f);
+    for (size_t i = 0; i < nc; i++) {
+        char where[48];
+        fprintf(f, "| (%zu) |", i + 1);
+        for (int m = 0; m < N_MOUNTINGS; m++)
+            fprintf(f, " %s |", acbb_verdict_name(acbb_study_conclusion_verdict(c->by[m], i)));
+        fprintf(f, " %s |\n", holds_under(c, i, where, sizeof where));
+    }
     fputc('\n', f);
     for (size_t i = 0; i < nc; i++)
         for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
@@ -668,7 +696,7 @@ static void rob_progress_fn(void *ctx, size_t done, size_t total)
  * taken down) stopped nothing, so the complete report is printed and the
  * exit status is the runs' own. */
 static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
-                   acbb_study *other, acbb_study_rob *rob, bool *have_rob)
+                   acbb_study *const *other, acbb_study_rob *rob, bool *have_rob)
 {
     long jobs = 0;
     if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs) != 0)
@@ -678,9 +706,11 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
     const atomic_int *cancel = acbb_cli_interrupt_begin();
     acbb_cli_progress_note(&rp, "report: running the study  (Ctrl-C stops)");
     acbb_status ss = acbb_study_run(st, (int)jobs, cancel);
-    if (ss != ACBB_CANCELLED) {
-        acbb_cli_progress_note(&rp, "report: the study under the other mounting  (Ctrl-C stops)");
-        acbb_status so = acbb_study_run(other, (int)jobs, cancel);
+    for (int m = 0; m < N_MOUNTINGS && ss != ACBB_CANCELLED; m++) {
+        if (!other[m]) continue;
+        acbb_cli_progress_note(&rp, "report: the study under %s  (Ctrl-C stops)",
+                               k_mountings[m].name);
+        acbb_status so = acbb_study_run(other[m], (int)jobs, cancel);
         if (so == ACBB_CANCELLED) ss = so;
     }
     int rc = 0;
@@ -715,6 +745,12 @@ static int cancelled(const acbb_cli_args *a)
     return acbb_cli_worst(acbb_cli_cancelled("report", kept), acbb_cli_stdout_check(0));
 }
 
+static void free_studies(acbb_study *st, acbb_study *const *other)
+{
+    acbb_study_free(st);
+    for (int m = 0; m < N_MOUNTINGS; m++) acbb_study_free(other[m]);
+}
+
 /* Plan, run and print; the Markdown file is opened before the runs so a
  * bad path fails fast, and replaces FILE only when complete. */
 static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene *base)
@@ -727,15 +763,18 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
         fprintf(stderr, "acbb: report: --md %s\n", err.msg);
         return ACBB_EXIT_INPUT;
     }
-    acbb_study *st = NULL, *other = NULL;
-    acbb_scene other_scene;
+    acbb_study *st = NULL, *other[N_MOUNTINGS] = { NULL };
     int own = own_mounting(base);
-    mounting_scene(base, own == M_FORCE ? M_RIGID : M_FORCE, &other_scene);
-    if (acbb_study_plan(base, &st, &err) != ACBB_OK
-        || acbb_study_plan(&other_scene, &other, &err) != ACBB_OK) {
+    acbb_status ps = acbb_study_plan(base, &st, &err);
+    for (int m = 0; m < N_MOUNTINGS && ps == ACBB_OK; m++) {
+        acbb_scene ms;
+        mounting_scene(base, m, &ms);
+        if (m != own) ps = acbb_study_plan(&ms, &other[m], &err);
+    }
+    if (ps != ACBB_OK) {
         fputs("acbb: report: out of memory\n", stderr);
         if (md) acbb_out_abort(md);
-        acbb_study_free(st);
+        free_studies(st, other);
         return ACBB_EXIT_INTERNAL;
     }
     acbb_study_rob rob = { 0 };
@@ -743,15 +782,13 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     int rc = run_all(a, k, st, other, &rob, &have_rob);
     if (rc != 0) {
         if (md) acbb_out_abort(md);
-        acbb_study_free(st);
-        acbb_study_free(other);
+        free_studies(st, other);
         acbb_study_rob_free(&rob);
         return rc < 0 ? cancelled(a) : rc;
     }
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
-                      have_rob ? &rob : NULL, { NULL, NULL }, acbb_loss_set(base) };
-    v.by[own] = st;
-    v.by[own == M_FORCE ? M_RIGID : M_FORCE] = other;
+                      have_rob ? &rob : NULL, { NULL }, acbb_loss_set(base) };
+    for (int m = 0; m < N_MOUNTINGS; m++) v.by[m] = m == own ? st : other[m];
     if (a->val[CLI_OPT_JSON]) print_json(stdout, &v);
     else print_text(stdout, &v);
     rc = acbb_study_n_failed(st) ? ACBB_EXIT_SOLVER : ACBB_EXIT_OK;
@@ -763,8 +800,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
             rc = ACBB_EXIT_INTERNAL;
         }
     }
-    acbb_study_free(st);
-    acbb_study_free(other);
+    free_studies(st, other);
     acbb_study_rob_free(&rob);
     return rc;
 }

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "acbb/outputs.h"
 #include "acbb/units.h"
 #include "exit.h"
 #include "sweep.h"
@@ -17,6 +18,31 @@ static void put(char names[][ACBB_CLI_SWEEP_NAME], double *v, size_t *n, const c
     snprintf(names[*n], ACBB_CLI_SWEEP_NAME, "%s", name);
     v[(*n)++] = x;
 }
+
+/* The set's metrics (MODEL.md 14; acbb metrics' set.* rows), by their
+ * output-table paths: a sweep of a set carries them, a point that is one
+ * bearing leaves them empty (CSV) or out (JSONL). */
+static const char *const k_set_cols[] = {
+    "set.preload_N", "set.preload_assembly_N", "set.liftoff_thrust_N",
+    "set.stiffness_axial_N_per_um", "set.stiffness_radial_N_per_um",
+    "set.stiffness_tilt_Nm_per_mrad", "set.spacer_growth_um",
+};
+#define N_SET_COLS (sizeof k_set_cols / sizeof k_set_cols[0])
+
+static void put_set(const acbb_snapshot *snap, char names[][ACBB_CLI_SWEEP_NAME], double *v,
+                    size_t *n)
+{
+    for (size_t c = 0; c < N_SET_COLS; c++) {
+        acbb_output o;
+        long ball;
+        int ok = acbb_output_find(k_set_cols[c], &o, &ball, NULL) == ACBB_OK;
+        double x = ok && snap && snap->n_bearings > 1 ? acbb_output_value(&o, snap, 0) : NAN;
+        put(names, v, n, k_set_cols[c], x);
+    }
+}
+
+/* A set column of a point that is one bearing is empty on purpose. */
+static int is_set_col(const char *name) { return strncmp(name, "set.", 4) == 0; }
 
 size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
                               char names[][ACBB_CLI_SWEEP_NAME], double *v)
@@ -50,6 +76,7 @@ size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
     put(names, v, &n, "stiffness_radial_N_um", s->stiffness_radial / CLI_UM + nan_);
     put(names, v, &n, "stiffness_tilt_Nm_mrad", s->stiffness_tilt * 1e-3 + nan_);
     put(names, v, &n, "time_s", s->time + nan_);
+    put_set(snap, names, v, &n);
     return n;
 }
 
@@ -102,7 +129,9 @@ static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_
     cJSON_AddStringToObject(o, "status", status_text(r));
     cJSON_AddStringToObject(o, "message", message_text(r));
     cJSON_AddNumberToObject(o, "iterations", r->have_snap ? (double)r->snap.iteration : 0.0);
+    int set = r->have_snap && r->snap.n_bearings > 1;
     for (size_t k = 0; k < n; k++) {
+        if (is_set_col(names[k]) && !set) continue;
         if (isfinite(v[k])) cJSON_AddNumberToObject(o, names[k], v[k]);
         else cJSON_AddNullToObject(o, names[k]);
         nonfinite += checked && !isfinite(v[k]);
@@ -148,9 +177,10 @@ static long record_csv(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_re
     csv_prefix(prefix, sizeof prefix, id, r->index);
     fprintf(f, "%s%s,%ld,", prefix, status_text(r), r->have_snap ? r->snap.iteration : 0L);
     long nonfinite = 0;
+    int set = r->have_snap && r->snap.n_bearings > 1;
     for (size_t k = 0; k < n; k++) {
         if (isfinite(v[k])) fprintf(f, "%.10g", v[k]);
-        else nonfinite += checked;
+        else nonfinite += checked && (set || !is_set_col(names[k]));
         fputc(',', f);
     }
     csv_text(f, message_text(r));

@@ -113,6 +113,67 @@ rc=$?
     "$TMP/run.json" >/dev/null && jq -e '[.. | numbers | isinfinite or isnan] | any | not' "$TMP/run.json" >/dev/null
 t $? "rigid DF pair at 12 000 rpm on a warm shaft: runaway, exit $rc, no NaN"
 
+# A set follows a run-in schedule (MODEL.md 14, schedule.h), as one bearing
+# does: the run-in ramp of runaway-rigid-preload.ini as a rigid DB pair ends
+# converged at the last row (16 000 rpm): the transient's state is the steady
+# solve's (which takes the last row) to 1e-6, and a step lands on every row's
+# time (no step past a row).
+ramp="--set set.arrangement=DB --set set.spacing_mm=45"
+"$ACBB" run presets/run-in-ramp.ini $ramp --json --csv "$TMP/ramp.csv" >"$TMP/ramp.json" 2>/dev/null
+t $? "DB pair on the run-in ramp converges"
+jqt "$TMP/ramp.json" '.status == "converged" and .schedule.finished and .schedule.inner_speed_rpm == 16000
+    and ((.branches.transient.Qi_N / .branches.steady.Qi_N - 1) | fabs) < 1e-6
+    and ((.branches.transient.loss_total_W / .branches.steady.loss_total_W - 1) | fabs) < 1e-6' \
+    "DB pair ramp: converged at the last row's 16 000 rpm, the steady solve's state"
+for r in 120 420 540 840 960; do
+    awk -F, -v r=$r 'NR > 1 && $2 - r < 1e-6 && r - $2 < 1e-6 { f = 1 } END { exit !f }' "$TMP/ramp.csv" ||
+        echo "no step ends at row time $r" >&2
+done 2>"$TMP/rows"
+[ ! -s "$TMP/rows" ]
+t $? "DB pair ramp: a step ends on every row's time (120 ... 960 s)"
+# Isothermal: the last row's speed and thrust act on a spring pair as the
+# same [operating] values do (number for number but the scene echo).
+iso="--set effects.heating=off"
+"$ACBB" run presets/pair-spring-16k.ini $iso --set "schedule.rows=0,0,0,0;10,9000,400,50" \
+    --json 2>/dev/null | jq -S 'del(.wall_ms, .scene, .schedule, .effects_inactive)' >"$TMP/iso_s.json"
+"$ACBB" run presets/pair-spring-16k.ini $iso --set operating.inner_speed_rpm=9000 \
+    --set operating.axial_load_N=400 --set operating.radial_load_N=50 --json \
+    | jq -S 'del(.wall_ms, .scene, .schedule, .effects_inactive)' >"$TMP/iso_o.json"
+cmp -s "$TMP/iso_s.json" "$TMP/iso_o.json" && grep -q '"preload_N"' "$TMP/iso_s.json"
+t $? "isothermal spring pair: the last row's speed and loads act as [operating]'s"
+# A step-like ramp (0 -> 16 000 rpm in 30 s) of the same rigid pair crosses
+# into runaway: a named status, exit 3, the schedule past its last row, no NaN.
+"$ACBB" run presets/run-in-ramp.ini $ramp --set "schedule.rows=0,0,1000,0;30,16000,1000,0" \
+    --json >"$TMP/rramp.json" 2>/dev/null
+rc=$?
+[ $rc = 3 ] && jq -e '.status == "runaway" and .time_s > 30 and .schedule.row == 2
+    and ([.. | numbers | isinfinite or isnan] | any | not)' "$TMP/rramp.json" >/dev/null
+t $? "DB pair ramped to 16 000 rpm in 30 s: runaway after the last row, exit $rc, no NaN"
+
+# acbb preload-map of a set runs the set and judges its worst bearing
+# (MODEL.md 14; issue 19 item 4): a rigid DB pair at 16 000 rpm, 200 N, under
+# a growing thrust toward bearing 0. Bearing 1 unloads, so the set's skid
+# ratio rises with the thrust (measured 0.49, 0.61, 0.69 at 0, 200, 400 N;
+# bearing 0's alone falls: 0.49, 0.39, 0.32); the temperature rise, L_nmr
+# and s0 are the worst bearing's of `acbb run` of the same cell.
+for F in 0 400; do
+    "$ACBB" preload-map presets/pair-rigid-16k.ini --set operating.axial_load_N=$F \
+        --speeds 16000:16000:1 --preloads 200:200:1 --csv "$TMP/pm$F.csv" --jobs 1 >/dev/null 2>&1
+done
+s0=$(awk -F, 'NR == 2 { print $5 }' "$TMP/pm0.csv")
+s4=$(awk -F, 'NR == 2 { print $5 }' "$TMP/pm400.csv")
+awk -v a="$s0" -v b="$s4" 'BEGIN { exit !(b > a + 0.1) }'
+t $? "preload-map of a DB pair: the skid ratio is the unloading bearing's ($s0 -> $s4 under 400 N)"
+"$ACBB" run presets/pair-rigid-16k.ini --set operating.axial_load_N=400 --set mounting.preload_N=200 \
+    --json 2>/dev/null >"$TMP/pm.json"
+IFS=, read -r _ _ st _ _ rise L s0m <<<"$(sed -n 2p "$TMP/pm400.csv")"
+jqt "$TMP/pm.json" "\"$st\" == \"converged\"
+    and (([.bearings[] | [.temperature_C.outer_ring, .temperature_C.inner_ring, .temperature_C.ball]
+          | max] | max) - .scene.keys[\"operating.ambient_C\"] - $rise | fabs) < 1e-6
+    and (([.bearings[].life.Lnmr_h] | min) / $L - 1 | fabs) < 1e-6
+    and (([.bearings[].life.s0_min] | min) / $s0m - 1 | fabs) < 1e-6" \
+    "preload-map of a DB pair: rise, L_nmr and s0 are the worst bearing's of acbb run"
+
 # A single bearing has no bearings/set keys; set.arrangement = single is the
 # default, and a set of one ignores the set's other keys: the same run
 # (every number but wall_ms; the scene echo differs in the keys given).

@@ -160,6 +160,36 @@ jq -s -e 'map(select(.grid["operating.axial_load_N"] != -5)) |
     "$TMP/fail.jsonl" >/dev/null 2>&1
 t $? "the step limit: not_converged after 3 steps; the others converged"
 
+# ---- a bearing set: its set.* metrics in every record (MODEL.md 14) ----
+# A 2-D sweep of a rigid DB pair over speed x preload: every point converges,
+# carries its own assembly preload, and the preload heat adds grows with the
+# speed at each assembly preload (the rings warm more); CSV = JSONL.
+"$ACBB" sweep presets/pair-rigid-16k.ini --grid operating.inner_speed_rpm=8000:16000:3 \
+    --grid mounting.preload_N=200,400 --jobs 2 --jsonl "$TMP/pair.jsonl" --csv "$TMP/pair.csv" \
+    >"$TMP/out" 2>"$TMP/err"
+code $? 0 "a 2-D sweep of a DB pair over speed x preload"
+jq -s -e '.[1:] | length == 6 and all(.[]; .status == "converged"
+    and .["set.preload_assembly_N"] == .grid["mounting.preload_N"]
+    and .["set.preload_N"] > .["set.preload_assembly_N"]
+    and .["set.stiffness_axial_N_per_um"] > 0 and .["set.liftoff_thrust_N"] > 0)' \
+    "$TMP/pair.jsonl" >/dev/null 2>&1
+t $? "each point: converged, set.preload_assembly_N = its grid preload, heat adds preload"
+jq -s -e '.[1:] | group_by(.grid["mounting.preload_N"]) | all(.[];
+    sort_by(.grid["operating.inner_speed_rpm"]) | map(.["set.preload_N"])
+    | . as $p | [range(1; length)] | all(.[]; $p[.] > $p[. - 1]))' "$TMP/pair.jsonl" >/dev/null 2>&1
+t $? "the set's preload rises with speed at each assembly preload"
+col=$(sed -n 2p "$TMP/pair.csv" | tr , '\n' | grep -nx 'set.preload_N' | cut -d: -f1)
+want=$(jq -s '.[1:] | map(select(.index == 5))[0]["set.preload_N"]' "$TMP/pair.jsonl")
+got=$(awk -F, -v c="$col" '$1 == "5" { print $c }' "$TMP/pair.csv")
+[ -n "$col" ] && awk -v a="$got" -v b="$want" 'BEGIN { d = a - b; exit !(d < 1e-6 * b && d > -1e-6 * b) }'
+t $? "CSV column set.preload_N (column $col) = the JSONL value ($got)"
+# One bearing: no set keys in its JSONL records, empty set columns in CSV.
+"$ACBB" sweep "$PRESET" --grid operating.axial_load_N=300 --jsonl "$TMP/one1.jsonl" \
+    --csv "$TMP/one1.csv" >"$TMP/out" 2>"$TMP/err"
+tail -1 "$TMP/one1.jsonl" | jq -e '[keys[] | select(startswith("set."))] | length == 0' >/dev/null 2>&1 &&
+    [ "$(awk -F, -v c="$col" 'NR == 3 { print $c }' "$TMP/one1.csv")" = "" ]
+t $? "a single bearing's records: no set keys (JSONL), empty set columns (CSV)"
+
 # ---- bad grids are refused before anything runs ----
 for g in operating.axial_load_N operating.nosuch=1,2 operating.axial_load_N=1:2 \
          operating.axial_load_N=1:2:0 operating.axial_load_N=1,,2; do

@@ -1,6 +1,7 @@
 /* acbb — the preload window (preload_map.h, issue 19 item 4). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "acbb/batch.h"
 #include "acbb/preload_map.h"
@@ -11,6 +12,7 @@ typedef struct {
     const acbb_scene *base;
     const acbb_pmap_opts *o;
     acbb_pmap_cell *cells;
+    unsigned char *set_done;   /* per cell: a set's worst bearing already judged (set_final) */
 } pmap_ctx;
 
 double acbb_pmap_axis(double lo, double hi, int n, int k)
@@ -59,6 +61,43 @@ static unsigned judge(const acbb_pmap_opts *o, const acbb_pmap_cell *c)
     return f;
 }
 
+/* One state's limit values into cell (the snapshot of one bearing). */
+static void cell_values(const acbb_scene *base, const acbb_snapshot *s, acbb_pmap_cell *cell)
+{
+    cell->have = 1;
+    cell->skid = skid_ratio(base, s);
+    cell->rise_K = fmax(fmax(s->T_outer_ring, s->T_inner_ring), s->T_ball) - base->ambient_C;
+    cell->Lnmr_h = s->life.Lnmr_h;
+    cell->s0_min = s->life.s0_min;
+}
+
+/* A bearing set (MODEL.md 14) is judged by its worst bearing: the
+ * batch's snapshot is bearing 0's, so at the run's last state every
+ * bearing's own snapshot is read here (batch.h step hook: on the worker,
+ * only cell i touched). The unloaded side of a heated pair is the one that
+ * skids, the loaded one the one that runs hot and short. */
+static void set_final(void *vctx, size_t i, const acbb_sim *sim)
+{
+    const pmap_ctx *c = vctx;
+    if (acbb_sim_state(sim) == ACBB_RUN_RUNNING) return;
+    acbb_snapshot *s = malloc(sizeof *s);
+    if (!s) return;
+    acbb_pmap_cell worst = c->cells[i], one;
+    int k = 0;
+    for (; acbb_sim_bearing_snapshot(sim, k, s) == ACBB_OK && s->n_bearings > 1; k++) {
+        cell_values(c->base, s, &one);
+        worst.skid = k ? fmax(worst.skid, one.skid) : one.skid;
+        worst.rise_K = k ? fmax(worst.rise_K, one.rise_K) : one.rise_K;
+        worst.Lnmr_h = k ? fmin(worst.Lnmr_h, one.Lnmr_h) : one.Lnmr_h;
+        worst.s0_min = k ? fmin(worst.s0_min, one.s0_min) : one.s0_min;
+    }
+    free(s);
+    if (k < 2) return;
+    worst.have = 1;
+    c->cells[i] = worst;
+    c->set_done[i] = 1;
+}
+
 static void cell_done(void *vctx, const acbb_batch_result *r)
 {
     const pmap_ctx *c = vctx;
@@ -66,14 +105,7 @@ static void cell_done(void *vctx, const acbb_batch_result *r)
     cell->status = r->ran ? r->status : ACBB_CANCELLED;
     snprintf(cell->status_name, sizeof cell->status_name, "%s",
              r->snap ? acbb_run_status_name(r->snap) : acbb_status_name(cell->status));
-    if (r->snap) {
-        const acbb_snapshot *s = r->snap;
-        cell->have = 1;
-        cell->skid = skid_ratio(c->base, s);
-        cell->rise_K = fmax(fmax(s->T_outer_ring, s->T_inner_ring), s->T_ball) - c->base->ambient_C;
-        cell->Lnmr_h = s->life.Lnmr_h;
-        cell->s0_min = s->life.s0_min;
-    }
+    if (r->snap && !c->set_done[r->index]) cell_values(c->base, r->snap, cell);
     cell->flags = judge(c->o, cell);
 }
 
@@ -126,10 +158,14 @@ acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
                                                                  o->n_preloads, p),
                                      .status = ACBB_CANCELLED };
     }
-    pmap_ctx c = { base, o, cells };
+    pmap_ctx c = { base, o, cells, calloc(n, 1) };
+    if (!c.set_done) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    int set = base->set_arrangement != ACBB_SET_SINGLE;
     acbb_batch_opts bo = { .jobs = o->jobs, .cancel = o->cancel, .mode = ACBB_BATCH_TRANSIENT,
-                           .scene = cell_scene, .done = cell_done, .ctx = &c };
+                           .scene = cell_scene, .step = set ? set_final : NULL,
+                           .done = cell_done, .ctx = &c };
     rc = acbb_batch_run(n, &bo, NULL);
+    free(c.set_done);
     rows_of(o, cells, rows);
     if (rc == ACBB_CANCELLED) return acbb_error_set(err, rc, "preload map cancelled");
     return rc == ACBB_OK ? ACBB_OK : acbb_error_set(err, rc, "preload map: the batch failed");

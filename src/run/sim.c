@@ -1068,6 +1068,8 @@ acbb_network *acbb_simm_network(acbb_sim *b) { return &b->nw; }
 const double *acbb_simm_q(const acbb_sim *b) { return b->q; }
 int acbb_simm_has_traction(const acbb_sim *b) { return b->qd || b->dyn; }
 double acbb_simm_loss(const acbb_sim *b) { return b->loss.total; }
+/* The set's operating point (its schedule, sim_set.c): b's inner-ring speed. */
+void acbb_simm_speed(acbb_sim *b, double inner_speed) { b->s.inner_speed = inner_speed; }
 
 void acbb_simm_expand(acbb_sim *b)
 {

@@ -16,6 +16,7 @@
 #include "acbb/set.h"
 #include "acbb/measure.h"
 #include "acbb/fidelity.h"
+#include "acbb/schedule.h"
 #include "cancel.h"
 
 #define DT_MIN 0.05
@@ -146,6 +147,47 @@ static void converge(acbb_set_sim *ss, const char *what)
     snprintf(ss->run.msg, sizeof ss->run.msg, "%s", what);
 }
 
+/* ---- run-in schedule (MODEL.md 14; schedule.h), as sim.c's for one bearing ---- */
+
+/* A transient with rows follows them; the steady solve and an isothermal
+ * run take the last row once, at set-up. */
+static int follows_schedule(const acbb_set_sim *ss)
+{
+    return ss->s.schedule_n > 0 && ss->s.thermal_mode == ACBB_THERMAL_TRANSIENT && ss->s.heating;
+}
+
+/* op's speed and loads into the set's scene, its shaft loads and every
+ * bearing's speed (the members are prescribed: no loads of their own). */
+static void operating_apply(acbb_set_sim *ss, const acbb_operating *op)
+{
+    acbb_schedule_apply(&ss->s, op);
+    ss->sm.Fa = ss->s.axial_load;
+    ss->sm.Fr = ss->s.radial_load;
+    for (int k = 0; k < ss->n; k++)
+        if (ss->b[k]) acbb_simm_speed(ss->b[k], ss->s.inner_speed);
+}
+
+/* The schedule's operating point at time t. */
+static void schedule_point(acbb_set_sim *ss, double t)
+{
+    if (!follows_schedule(ss)) return;
+    acbb_operating op;
+    acbb_schedule_at(&ss->s, t, &op);
+    operating_apply(ss, &op);
+}
+
+/* sim.c schedule_done: no step past a row, no settling before the last. */
+static int schedule_done(acbb_set_sim *ss)
+{
+    if (!follows_schedule(ss)) return 1;
+    acbb_operating op;
+    acbb_schedule_at(&ss->s, ss->run.time, &op);
+    if (op.finished) return 1;
+    double next = ss->s.schedule[op.row].t;
+    ss->run.dt = fmin(ss->run.dt, fmax(next - ss->run.time, DT_MIN));
+    return 0;
+}
+
 /* ---- stepping ---- */
 
 static acbb_status fail(acbb_set_sim *ss, acbb_status st, const char *msg)
@@ -168,6 +210,7 @@ static void restore(acbb_set_sim *ss)
     memcpy(ss->T, ss->T_keep, sizeof(double) * (size_t)ss->ns.n);
     ss->sm = ss->sm_keep;
     for (int k = 0; k < ss->n; k++) acbb_simm_restore(ss->b[k]);
+    schedule_point(ss, ss->run.time); /* the kept state's */
     distribute(ss);
     gather_heat(ss, 0.0);
 }
@@ -213,6 +256,7 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
                                   "non-finite temperature caught; last good state kept");
         memcpy(ss->T, Tn, sizeof(double) * (size_t)ss->ns.n);
         double before = ss->total;
+        schedule_point(ss, ss->run.time + (steady ? 0.0 : ss->run.dt));
         rc = evaluate(ss, !steady, 0, err);
         if (rc != ACBB_OK) {
             restore(ss);
@@ -308,16 +352,20 @@ static acbb_status step(acbb_set_sim *ss)
     acbb_error err = { "" };
     double dT = 0.0, dTs = 0.0, before = ss->total;
     int steady = ss->s.thermal_mode == ACBB_THERMAL_STEADY;
+    int scheduled = !schedule_done(ss);
     acbb_status rc = advance(ss, steady, &dT, &dTs, &err);
     if (rc != ACBB_OK) return fail(ss, rc, err.msg[0] ? err.msg : acbb_status_name(rc));
     double step_dt = steady ? 1.0 : ss->run.dt;
     ss->run.iter++;
     if (!steady) ss->run.time += ss->run.dt;
     ss->run.residual = dT / step_dt;
+    /* While a schedule moves the operating point the preload grows by design
+     * (sim.c: the temperature and pressure limits stay on). */
+    if (scheduled) ss->growth = 0;
     if ((rc = runaway(ss, steady ? 0.0 : step_dt)) != ACBB_OK) return rc;
     double dP = fabs(ss->total - before) / fmax(ss->total, 1e-12);
     int quiet = steady ? dT < 1e-7 && dP < 1e-9 : ss->run.residual < ss->s.steady_tol && dP < 1e-4;
-    ss->quiet = quiet ? ss->quiet + 1 : 0;
+    ss->quiet = quiet && !scheduled ? ss->quiet + 1 : 0;
     if (!steady && dP < 0.005 && dTs < 0.25 * DT_MAX_DT_K)
         ss->run.dt = fmin(1.5 * ss->run.dt, DT_MAX);
     if (ss->quiet >= (steady ? 3 : STEADY_COUNT)) {
@@ -357,6 +405,7 @@ static void member_scene(const acbb_scene *s, double share, acbb_scene *m)
     m->preload_force = share > 0.0 ? share : 1.0;
     m->axial_load = m->preload_force;
     m->radial_load = m->moment_load = 0.0;
+    m->schedule_n = 0; /* the set follows the rows (schedule_point) */
 }
 
 /* Axial displacement of one bearing under thrust F at rest, 20 C, no
@@ -421,6 +470,12 @@ acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_s
     if (!ss) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     ss->s = *s;
     acbb_fidelity_apply(&ss->s, NULL); /* as every member's (sim.c sim_init) */
+    acbb_operating op; /* the first row, or the last for the steady solve (sim.c sim_init) */
+    if (ss->s.thermal_mode == ACBB_THERMAL_STEADY || !ss->s.heating)
+        acbb_schedule_final(&ss->s, &op);
+    else
+        acbb_schedule_at(&ss->s, 0.0, &op);
+    acbb_schedule_apply(&ss->s, &op);
     ss->cancel = o->cancel;
     if ((rc = set_up(ss, o, err)) != ACBB_OK) {
         acbb_set_sim_free(ss);

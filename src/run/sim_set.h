@@ -45,6 +45,7 @@ acbb_network *acbb_simm_network(acbb_sim *b);
 const double *acbb_simm_q(const acbb_sim *b);     /* b's heat vector, its node order */
 int acbb_simm_has_traction(const acbb_sim *b);    /* quasi-dynamic or dynamic level */
 double acbb_simm_loss(const acbb_sim *b);         /* total loss, W */
+void acbb_simm_speed(acbb_sim *b, double inner_speed); /* rad/s, the set's schedule */
 void acbb_simm_expand(acbb_sim *b);               /* expansions at b's temperatures */
 void acbb_simm_mode(acbb_sim *b, int transient, int polishing);
 acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err);
