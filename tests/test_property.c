@@ -202,8 +202,15 @@ int main(int argc, char **argv)
         }
         if (low && snap.n_balls > 0) {
             forces++;
-            is_close(axial_sum(&snap), snap.reaction_x, 100 * s.mech_tol, 1e-9,
-                     "low speed: sum Qi sin(alpha_i) = the axial reaction");
+            /* Not exact even at 0..50 rpm: the race friction that carries each
+             * ball's gyroscopic moment (2 M_g / D, ~1e-3 N at 50 rpm for a
+             * 7008C ball) has an axial part, so the contact normals alone sum to
+             * the reaction within ~1e-6 relative, whatever mech_tol asks. */
+            if (!is_close(axial_sum(&snap), snap.reaction_x, fmax(100 * s.mech_tol, 1e-6), 1e-9,
+                          "low speed: sum Qi sin(alpha_i) = the axial reaction"))
+                printf("#   set %d, bearings %d, tilt %d, preload %d, mech_tol %g, model %d\n",
+                       (int)s.set_arrangement, snap.n_bearings, (int)s.tilt,
+                       (int)s.preload, s.mech_tol, (int)s.model);
         }
     }
     ok(converged > 0, "%d of %d scenes converged (the balance checks ran)", converged, n);
