@@ -28,7 +28,7 @@ int main(int argc, char **argv)
     }
     acbb_sim_snapshot(sim, s);
     acbb_sim_free(sim);
-    printf("status %s\nT_outer_ring_C %.10g\nP_total_W %.10g\nQi_ball0_N %.10g\n",
+    printf("status %s\nT_outer_ring_C %.17g\nP_total_W %.17g\nQi_ball0_N %.17g\n",
            acbb_run_status_name(s), s->T_outer_ring, s->losses.total,
            s->n_balls > 0 ? s->balls[0].Qi : 0.0);
     int rc = s->state == ACBB_RUN_CONVERGED ? 0 : 1;

@@ -66,7 +66,7 @@ code $? 0 "the example runs 7008C to convergence (exit 0)"
 
 "$ACBB" run presets/7008C.ini --json >"$TMP/run.json" 2>"$TMP/err"
 code $? 0 "acbb run presets/7008C.ini --json"
-# The example prints %.10g, as the JSON does: the same numbers exactly.
+# The example prints %.17g, as the JSON does: the same numbers exactly.
 val() { awk -v k="$1" '$1 == k { print $2 }' "$TMP/ex.txt"; }
 jq -e --arg st "$(val status)" --argjson T "$(val T_outer_ring_C)" \
     --argjson P "$(val P_total_W)" --argjson Q "$(val Qi_ball0_N)" \
@@ -95,7 +95,7 @@ t $? "python/acbb.py is installed (${PYMOD#"$D"})"
 if [ "$SAN" = none ] && command -v python3 >/dev/null; then
     env -u ACBB_LIB PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
 r = acbb.run("presets/7008C.ini")
-print(r["status"], r["losses_W"]["total"])' >"$TMP/py.txt" 2>"$TMP/err"
+print(r["status"], "%.17g" % r["losses_W"]["total"])' >"$TMP/py.txt" 2>"$TMP/err"
     [ "$(cat "$TMP/py.txt")" = "converged $(val P_total_W)" ]
     t $? "the installed module runs 7008C with the installed library (no ACBB_LIB)"
 else

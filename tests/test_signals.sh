@@ -29,6 +29,8 @@ reached() {
     case "$2" in
         caught) caught "$1" ;;
         file:*) [ -s "${2#file:}" ] ;;
+        # a finished point's record (a sweep file starts with its header)
+        record:*) grep -q '"index"' "${2#record:}" 2>/dev/null ;;
         *) tr '\r' '\n' <"$TMP/err" 2>/dev/null | grep -q -- "$2" ;;
     esac
 }
@@ -72,7 +74,7 @@ for sig in INT TERM; do
 
     # sweep --grid: the finished points stay in both files; a re-run resumes.
     rm -f "$TMP/s.jsonl" "$TMP/s.csv"
-    cancel $sig "file:$TMP/s.jsonl" sweep "$P/7008C.ini" \
+    cancel $sig "record:$TMP/s.jsonl" sweep "$P/7008C.ini" \
         --grid operating.axial_load_N=50:1000:4000 --jsonl "$TMP/s.jsonl" --csv "$TMP/s.csv"
     code $rc 3 "sweep --grid, $S"
     said "sweep --grid, $S" sweep $S
