@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "acbb/json.h"
 #include "common.h"
 #include "exit.h"
 #include "sweep.h"
@@ -204,6 +205,7 @@ static int by_index(const void *a, const void *b)
 static void write_header(FILE *f, const merge_set *m)
 {
     cJSON *top = cJSON_CreateObject();
+    cJSON_AddNumberToObject(top, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddItemToObject(top, "acbb_sweep", cJSON_Duplicate(m->header, 1));
     char *text = cJSON_PrintUnformatted(top);
     cJSON_Delete(top);

@@ -3,6 +3,7 @@
  * JSON goes through the engine's writer (acbb/json.h). Numbers use %.10g in
  * JSON and CSV so values round-trip to ~1e-10 relative; the summary table
  * uses fixed widths that keep every line within 80 columns. */
+#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -402,6 +403,29 @@ void acbb_cli_list_metrics(FILE *f)
     }
 }
 
+void acbb_cli_list_metrics_json(FILE *f)
+{
+    acbb_output e;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "schema_version", ACBB_JSON_SCHEMA_VERSION);
+    cJSON *arr = cJSON_AddArrayToObject(o, "metrics");
+    for (size_t i = 0; arr && acbb_output_get(i, &e); i++) {
+        char path[64], col[64];
+        acbb_output_path(&e, "i", path, sizeof path);
+        acbb_output_flat(&e, col, sizeof col);
+        cJSON *m = cJSON_CreateObject();
+        cJSON_AddStringToObject(m, "path", path);
+        cJSON_AddStringToObject(m, "column", col);
+        cJSON_AddStringToObject(m, "unit", e.unit);
+        cJSON_AddStringToObject(m, "label", e.label);
+        cJSON_AddItemToArray(arr, m);
+    }
+    char *text = cJSON_Print(o);
+    cJSON_Delete(o);
+    if (text) fprintf(f, "%s\n", text);
+    cJSON_free(text);
+}
+
 /* ---- acbb sweep ---- */
 
 /* The numbers a sweep reports for one point (ball 0 for the contacts):
@@ -508,6 +532,7 @@ void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
         acbb_json_open(&j, NULL, '{', true);
+        acbb_json_long(&j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
         acbb_json_str(&j, "param", param);
         acbb_json_value_text(&j, "value", p->value);
         acbb_json_str(&j, "status", acbb_cli_point_status(p));

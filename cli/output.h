@@ -82,6 +82,10 @@ void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
 
 /* `acbb metrics`: every output table entry (outputs.h) as "path unit label". */
 void acbb_cli_list_metrics(FILE *f);
+/* The same as one JSON document (`acbb metrics --json`): schema_version and
+ * "metrics", one {path, column, unit, label} per output (column: the name of
+ * the quantity in CSV and sweep records). */
+void acbb_cli_list_metrics_json(FILE *f);
 
 /* `acbb run --csv`: one row per coupled step. */
 void acbb_cli_csv_header(acbb_cli_out *o);

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/json.h"
 #include "acbb/measure.h"
 #include "acbb/plot.h"
 #include "acbb/sensitivity.h"
@@ -123,6 +124,7 @@ static void json_number(cJSON *o, const char *k, int ok, double v)
 static cJSON *result_json(const acbb_sens_result *r)
 {
     cJSON *root = cJSON_CreateObject(), *rows = cJSON_CreateArray();
+    cJSON_AddNumberToObject(root, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddStringToObject(root, "metric", r->metric);
     if (r->delta_te) cJSON_AddStringToObject(root, "delta", "thermal_expansion");
     else cJSON_AddNullToObject(root, "delta");
@@ -165,7 +167,7 @@ static cJSON *result_json(const acbb_sens_result *r)
 
 static void csv_number(FILE *f, int ok, double v)
 {
-    if (ok && isfinite(v)) fprintf(f, ",%.10g", v);
+    if (ok && isfinite(v)) fprintf(f, ",%.17g", v);
     else fputc(',', f);
 }
 

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "acbb/json.h"
 #include "acbb/units.h"
 #include "exit.h"
 #include "sweep.h"
@@ -96,6 +97,7 @@ static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_
     int checked = r->have_snap && r->snap.n_balls > 0;
     long nonfinite = 0;
     cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddNumberToObject(o, "index", (double)r->index);
     cJSON_AddStringToObject(o, "fingerprint", id->fp);
     cJSON_AddItemToObject(o, "grid", acbb_cli_sweep_grid_json(id->g, r->index));

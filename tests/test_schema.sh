@@ -61,6 +61,37 @@ jq -e --slurpfile b "$TMP/runs/7008C.json" '
     | ($r.change_pct - 100 * ($r.now - $r.baseline) / $rise) | fabs < 1e-9' "$TMP/vs.json" >/dev/null
 t $? "--baseline: temperature change_pct is of the rise above ambient ($(jq '.vs_baseline[] | select(.path == "temperature_C.outer_ring") | .change_pct' "$TMP/vs.json") %)"
 
+# every other kind of JSON document (issue 21 item 10): schema_version 2 and
+# the schema's $defs entry for its kind
+"$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --jsonl "$TMP/s.jsonl" \
+    >/dev/null 2>&1
+code $? 0 "sweep --jsonl runs"
+head -1 "$TMP/s.jsonl" >"$TMP/s_head.json"
+tail -n +2 "$TMP/s.jsonl" >"$TMP/s_rec.jsonl"
+$CHECK --def sweep_header "$TMP/s_head.json" && [ "$(wc -l <"$TMP/s_rec.jsonl")" -eq 2 ] &&
+    $CHECK --def sweep_record --lines "$TMP/s_rec.jsonl"
+t $? "sweep --jsonl: the header and both records conform (sweep_header, sweep_record)"
+"$ACBB" merge "$TMP/m.jsonl" "$TMP/s.jsonl" 2>/dev/null &&
+    head -1 "$TMP/m.jsonl" >"$TMP/m_head.json" && tail -n +2 "$TMP/m.jsonl" >"$TMP/m_rec.jsonl" &&
+    $CHECK --def sweep_header "$TMP/m_head.json" && $CHECK --def sweep_record --lines "$TMP/m_rec.jsonl"
+t $? "merge: the merged file's header and records conform"
+"$ACBB" sweep presets/7008C.ini --param operating.axial_load_N --values 100,200 --json \
+    >"$TMP/sw.json" 2>/dev/null && $CHECK --def sweep_point --each "$TMP/sw.json"
+t $? "sweep --json: each point conforms (sweep_point)"
+"$ACBB" report presets/7008C.ini --json >"$TMP/rep.json" 2>/dev/null &&
+    $CHECK --def report_item --each "$TMP/rep.json"
+t $? "report --json: each item conforms (report_item)"
+"$ACBB" sensitivity presets/7008C.ini --metric losses_W.total --json >"$TMP/sens.json" \
+    2>/dev/null && $CHECK --def sensitivity "$TMP/sens.json"
+t $? "sensitivity --json conforms (sensitivity)"
+"$ACBB" metrics --json >"$TMP/met.json" && $CHECK --def metrics "$TMP/met.json" &&
+    jq -e '.metrics[] | select(.path == "temperature_C.outer_ring") | .unit == "C"' \
+        "$TMP/met.json" >/dev/null
+t $? "metrics --json conforms (metrics) and lists temperature_C.outer_ring in C"
+jq -e 'del(.schema_version)' "$TMP/sens.json" >"$TMP/broken3.json"
+! $CHECK --def sensitivity "$TMP/broken3.json" 2>/dev/null
+t $? "the checker rejects a sensitivity document without schema_version"
+
 # the checker can fail: a document without status, a string for a number
 jq 'del(.status)' "$TMP/runs/7008C.json" >"$TMP/broken1.json"
 ! $CHECK "$TMP/broken1.json" 2>/dev/null
