@@ -20,6 +20,7 @@
 #include "acbb/json.h"
 #include "common.h"
 #include "exit.h"
+#include "output.h"
 #include "sweep.h"
 
 typedef struct {
@@ -61,6 +62,7 @@ static char *jsonl_canonical(const char *line)
 {
     cJSON *o = cJSON_Parse(line);
     cJSON_DeleteItemFromObjectCaseSensitive(o, "wall_ms");
+    acbb_cli_json_exact(o); /* the record's digits, not cJSON's 15 */
     char *text = o ? cJSON_PrintUnformatted(o) : NULL;
     cJSON_Delete(o);
     if (!text) return NULL;

@@ -371,8 +371,8 @@ void acbb_cli_csv_header(acbb_cli_out *o)
     csv_names(o, c, n, o->set_n > 1 ? "," : "\n");
     if (o->set_n < 2) return;
     /* A set (MODEL.md 14): its preload and each bearing's outer ring. */
-    fputs("set_preload_N", o->f);
-    for (int k = 0; k < o->set_n; k++) fprintf(o->f, ",T_outer_ring_C_%d", k);
+    fputs("set.preload_N", o->f); /* the run JSON's paths (outputs.h) */
+    for (int k = 0; k < o->set_n; k++) fprintf(o->f, ",bearings[%d].temperature_C.outer_ring", k);
     fputc('\n', o->f);
 }
 
@@ -400,6 +400,27 @@ void acbb_cli_list_metrics(FILE *f)
         char path[64];
         acbb_output_path(&e, "i", path, sizeof path);
         fprintf(f, "%-32s %-9s %s\n", path, e.unit, e.label);
+    }
+}
+
+cJSON *acbb_cli_json_number(double v)
+{
+    char text[32];
+    if (!isfinite(v)) return cJSON_CreateNull();
+    snprintf(text, sizeof text, "%.17g", v);
+    return cJSON_CreateRaw(text);
+}
+
+void acbb_cli_json_exact(cJSON *o)
+{
+    cJSON *it = o ? o->child : NULL;
+    while (it) {
+        cJSON *next = it->next;
+        if (!cJSON_IsNumber(it)) acbb_cli_json_exact(it);
+        else if (it->string) /* keeps the key (ViaPointer would drop it) */
+            cJSON_ReplaceItemInObjectCaseSensitive(o, it->string, acbb_cli_json_number(it->valuedouble));
+        else cJSON_ReplaceItemViaPointer(o, it, acbb_cli_json_number(it->valuedouble));
+        it = next;
     }
 }
 
