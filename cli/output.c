@@ -1,7 +1,7 @@
 /* acbb CLI — output writers (see output.h).
  *
- * JSON goes through the engine's writer (acbb/json.h). Numbers use %.10g in
- * JSON and CSV so values round-trip to ~1e-10 relative; the summary table
+ * JSON goes through the engine's writer (acbb/json.h). Numbers use %.17g in
+ * JSON and CSV: the double itself (issue 21 item 10); the summary table
  * uses fixed widths that keep every line within 80 columns. */
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -60,7 +60,7 @@ static void cell(acbb_cli_out *o, int width, int prec, char conv, double v)
 
 static void c_num(acbb_cli_out *o, double v, bool last)
 {
-    if (isfinite(v)) fprintf(o->f, "%.10g", v);
+    if (isfinite(v)) fprintf(o->f, "%.17g", v);
     else o->nonfinite++;
     fputc(last ? '\n' : ',', o->f);
 }
@@ -676,7 +676,7 @@ static void study_csv_point(acbb_cli_out *o, const acbb_cli_point *p)
     if (p->have_snap) sweep_values(o, p, v);
     for (int k = 0; k < SW_N; k++) {
         fputc(',', o->f);
-        if (p->have_snap && isfinite(v[k])) fprintf(o->f, "%.10g", v[k]);
+        if (p->have_snap && isfinite(v[k])) fprintf(o->f, "%.17g", v[k]);
         else if (p->have_snap) o->nonfinite++;
     }
 }
@@ -698,7 +698,7 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
         const acbb_cli_study_block *b = &blocks[i];
         for (size_t k = b->first; k < b->first + b->count; k++) {
             const acbb_cli_point *te = &pts[2 * k], *wte = &pts[2 * k + 1];
-            fprintf(o->f, "%s,%.10g,%.10g", b->name, acbb_rads_to_rpm(te->scene.inner_speed),
+            fprintf(o->f, "%s,%.17g,%.17g", b->name, acbb_rads_to_rpm(te->scene.inner_speed),
                     te->scene.axial_load);
             study_csv_point(o, te);
             study_csv_point(o, wte);

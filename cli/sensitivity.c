@@ -205,7 +205,7 @@ static void write_csv(FILE *f, const acbb_sens_result *r)
         csv_number(f, r->ok0, r->y0);
         csv_number(f, w->ok_lo, w->y_lo);
         csv_number(f, w->ok_hi, w->y_hi);
-        fprintf(f, ",%.10g,%d", w->effect, w->flips);
+        fprintf(f, ",%.17g,%d", w->effect, w->flips);
         csv_number(f, w->n_ee > 0, w->mu_star);
         csv_number(f, w->n_ee > 0, w->mu);
         csv_number(f, w->n_ee > 0, w->sigma);
