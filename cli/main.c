@@ -133,7 +133,7 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "metrics", NULL, "", "every result a --metric can name, with unit and label",
       "The paths of `acbb run --json` (balls[i]: any ball index), as `acbb sensitivity\n"
       "--metric` and the TUI's Sweep and Sensitivity screens take them.\n",
-      0, 0, 0, -1, cmd_metrics },
+      O(JSON), 0, 0, -1, cmd_metrics },
     { "schema", NULL, "", "the JSON Schema of the JSON output",
       "Every JSON document starts with \"schema_version\"; with --json, bad input\n"
       "(exit 2) is {\"status\": \"bad_input\", \"message\": ...} on stdout.\n",
@@ -182,8 +182,8 @@ static const acbb_cli_command *find_command(int argc, char **argv, int *first, i
 
 static int cmd_metrics(const acbb_cli_args *a)
 {
-    (void)a;
-    acbb_cli_list_metrics(stdout);
+    if (a->val[CLI_OPT_JSON]) acbb_cli_list_metrics_json(stdout);
+    else acbb_cli_list_metrics(stdout);
     return acbb_cli_stdout_check(0);
 }
 

@@ -17,8 +17,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "acbb/json.h"
 #include "common.h"
 #include "exit.h"
+#include "output.h"
 #include "sweep.h"
 
 typedef struct {
@@ -60,6 +62,7 @@ static char *jsonl_canonical(const char *line)
 {
     cJSON *o = cJSON_Parse(line);
     cJSON_DeleteItemFromObjectCaseSensitive(o, "wall_ms");
+    acbb_cli_json_exact(o); /* the record's digits, not cJSON's 15 */
     char *text = o ? cJSON_PrintUnformatted(o) : NULL;
     cJSON_Delete(o);
     if (!text) return NULL;
@@ -204,6 +207,7 @@ static int by_index(const void *a, const void *b)
 static void write_header(FILE *f, const merge_set *m)
 {
     cJSON *top = cJSON_CreateObject();
+    cJSON_AddNumberToObject(top, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddItemToObject(top, "acbb_sweep", cJSON_Duplicate(m->header, 1));
     char *text = cJSON_PrintUnformatted(top);
     cJSON_Delete(top);

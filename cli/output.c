@@ -1,8 +1,9 @@
 /* acbb CLI — output writers (see output.h).
  *
- * JSON goes through the engine's writer (acbb/json.h). Numbers use %.10g in
- * JSON and CSV so values round-trip to ~1e-10 relative; the summary table
+ * JSON goes through the engine's writer (acbb/json.h). Numbers use %.17g in
+ * JSON and CSV: the double itself (issue 21 item 10); the summary table
  * uses fixed widths that keep every line within 80 columns. */
+#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,7 +60,7 @@ static void cell(acbb_cli_out *o, int width, int prec, char conv, double v)
 
 static void c_num(acbb_cli_out *o, double v, bool last)
 {
-    if (isfinite(v)) fprintf(o->f, "%.10g", v);
+    if (isfinite(v)) fprintf(o->f, "%.17g", v);
     else o->nonfinite++;
     fputc(last ? '\n' : ',', o->f);
 }
@@ -370,8 +371,8 @@ void acbb_cli_csv_header(acbb_cli_out *o)
     csv_names(o, c, n, o->set_n > 1 ? "," : "\n");
     if (o->set_n < 2) return;
     /* A set (MODEL.md 14): its preload and each bearing's outer ring. */
-    fputs("set_preload_N", o->f);
-    for (int k = 0; k < o->set_n; k++) fprintf(o->f, ",T_outer_ring_C_%d", k);
+    fputs("set.preload_N", o->f); /* the run JSON's paths (outputs.h) */
+    for (int k = 0; k < o->set_n; k++) fprintf(o->f, ",bearings[%d].temperature_C.outer_ring", k);
     fputc('\n', o->f);
 }
 
@@ -400,6 +401,50 @@ void acbb_cli_list_metrics(FILE *f)
         acbb_output_path(&e, "i", path, sizeof path);
         fprintf(f, "%-32s %-9s %s\n", path, e.unit, e.label);
     }
+}
+
+cJSON *acbb_cli_json_number(double v)
+{
+    char text[32];
+    if (!isfinite(v)) return cJSON_CreateNull();
+    snprintf(text, sizeof text, "%.17g", v);
+    return cJSON_CreateRaw(text);
+}
+
+void acbb_cli_json_exact(cJSON *o)
+{
+    cJSON *it = o ? o->child : NULL;
+    while (it) {
+        cJSON *next = it->next;
+        if (!cJSON_IsNumber(it)) acbb_cli_json_exact(it);
+        else if (it->string) /* keeps the key (ViaPointer would drop it) */
+            cJSON_ReplaceItemInObjectCaseSensitive(o, it->string, acbb_cli_json_number(it->valuedouble));
+        else cJSON_ReplaceItemViaPointer(o, it, acbb_cli_json_number(it->valuedouble));
+        it = next;
+    }
+}
+
+void acbb_cli_list_metrics_json(FILE *f)
+{
+    acbb_output e;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "schema_version", ACBB_JSON_SCHEMA_VERSION);
+    cJSON *arr = cJSON_AddArrayToObject(o, "metrics");
+    for (size_t i = 0; arr && acbb_output_get(i, &e); i++) {
+        char path[64], col[64];
+        acbb_output_path(&e, "i", path, sizeof path);
+        acbb_output_flat(&e, col, sizeof col);
+        cJSON *m = cJSON_CreateObject();
+        cJSON_AddStringToObject(m, "path", path);
+        cJSON_AddStringToObject(m, "column", col);
+        cJSON_AddStringToObject(m, "unit", e.unit);
+        cJSON_AddStringToObject(m, "label", e.label);
+        cJSON_AddItemToArray(arr, m);
+    }
+    char *text = cJSON_Print(o);
+    cJSON_Delete(o);
+    if (text) fprintf(f, "%s\n", text);
+    cJSON_free(text);
 }
 
 /* ---- acbb sweep ---- */
@@ -508,6 +553,7 @@ void acbb_cli_sweep_json(acbb_cli_out *o, const char *param,
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
         acbb_json_open(&j, NULL, '{', true);
+        acbb_json_long(&j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
         acbb_json_str(&j, "param", param);
         acbb_json_value_text(&j, "value", p->value);
         acbb_json_str(&j, "status", acbb_cli_point_status(p));
@@ -630,7 +676,7 @@ static void study_csv_point(acbb_cli_out *o, const acbb_cli_point *p)
     if (p->have_snap) sweep_values(o, p, v);
     for (int k = 0; k < SW_N; k++) {
         fputc(',', o->f);
-        if (p->have_snap && isfinite(v[k])) fprintf(o->f, "%.10g", v[k]);
+        if (p->have_snap && isfinite(v[k])) fprintf(o->f, "%.17g", v[k]);
         else if (p->have_snap) o->nonfinite++;
     }
 }
@@ -652,7 +698,7 @@ void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
         const acbb_cli_study_block *b = &blocks[i];
         for (size_t k = b->first; k < b->first + b->count; k++) {
             const acbb_cli_point *te = &pts[2 * k], *wte = &pts[2 * k + 1];
-            fprintf(o->f, "%s,%.10g,%.10g", b->name, acbb_rads_to_rpm(te->scene.inner_speed),
+            fprintf(o->f, "%s,%.17g,%.17g", b->name, acbb_rads_to_rpm(te->scene.inner_speed),
                     te->scene.axial_load);
             study_csv_point(o, te);
             study_csv_point(o, wte);

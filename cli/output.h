@@ -82,6 +82,18 @@ void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
 
 /* `acbb metrics`: every output table entry (outputs.h) as "path unit label". */
 void acbb_cli_list_metrics(FILE *f);
+/* The same as one JSON document (`acbb metrics --json`): schema_version and
+ * "metrics", one {path, column, unit, label} per output (column: the name of
+ * the quantity in CSV and sweep records). */
+void acbb_cli_list_metrics_json(FILE *f);
+
+/* A JSON number as %.17g, the double itself (acbb/json.h); null when not
+ * finite. Not cJSON_CreateNumber: cJSON 1.7 prints 15 digits whenever they
+ * read back within one ulp, so its numbers may be off by one ulp. */
+struct cJSON *acbb_cli_json_number(double v);
+/* Every number in the tree `o` re-made by acbb_cli_json_number (a parsed
+ * record printed again: cJSON's parser reads the double exactly). */
+void acbb_cli_json_exact(struct cJSON *o);
 
 /* `acbb run --csv`: one row per coupled step. */
 void acbb_cli_csv_header(acbb_cli_out *o);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "acbb/json.h"
 #include "acbb/measure.h"
 #include "acbb/schedule.h"
 #include "acbb/units.h"
@@ -67,8 +68,11 @@ int acbb_cli_cancelled(const char *cmd, const char *kept)
 
 void acbb_cli_cancelled_json(FILE *f, const char *cmd, const char *kept)
 {
-    fprintf(f, "{\"status\": \"cancelled\", \"command\": \"%s\", \"signal\": \"%s\", "
-            "\"message\": \"%s\"}\n", cmd, acbb_cli_interrupt_name(), kept ? kept : "");
+    /* By hand, not cJSON: test_progress links this file alone; cmd and kept
+     * are the callers' constant texts (no quote or backslash to escape). */
+    fprintf(f, "{\"schema_version\": %d, \"status\": \"cancelled\", \"command\": \"%s\", "
+            "\"signal\": \"%s\", \"message\": \"%s\"}\n", ACBB_JSON_SCHEMA_VERSION, cmd,
+            acbb_cli_interrupt_name(), kept ? kept : "");
 }
 
 bool acbb_cli_progress_wanted(FILE *f)

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/json.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/measure.h"
 #include "acbb/outfile.h"
@@ -359,7 +360,7 @@ static void json_str(FILE *f, const char *s)
 
 static void json_num(FILE *f, double v)
 {
-    if (isfinite(v)) fprintf(f, "%.10g", v);
+    if (isfinite(v)) fprintf(f, "%.17g", v); /* round-trips: acbb/json.h */
     else fputs("null", f);
 }
 
@@ -465,7 +466,8 @@ static void print_json(FILE *f, const report_view *c)
     fputs("[\n", f);
     for (size_t i = 0; i < n; i++) {
         const acbb_study_item *it = acbb_study_item_at(c->st, i);
-        fprintf(f, "  {\"item\": %d, \"statement\": ", it->num);
+        fprintf(f, "  {\"schema_version\": %d, \"item\": %d, \"statement\": ",
+                ACBB_JSON_SCHEMA_VERSION, it->num);
         json_str(f, it->statement);
         fputs(", \"verdict\": ", f);
         json_str(f, acbb_verdict_name(it->verdict));

@@ -5,11 +5,13 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/json.h"
 #include "acbb/measure.h"
 #include "acbb/plot.h"
 #include "acbb/sensitivity.h"
 #include "commands.h"
 #include "common.h"
+#include "output.h"
 #include "exit.h"
 #include "progress.h"
 
@@ -28,6 +30,19 @@ static void on_progress(void *ctx, size_t done, size_t total)
 }
 
 /* Options into the engine's; 0 or the exit status (message printed). */
+/* An old column name (T_outer_ring_C, README "Renamed outputs") is an
+ * alias: the outputs name the metric by its path. */
+static void canonical_metric(char *metric, size_t cap)
+{
+    acbb_output e;
+    long ball;
+    char idx[24];
+    if (acbb_output_find(metric, &e, &ball, NULL) != ACBB_OK) return;
+    snprintf(idx, sizeof idx, "%ld", ball);
+    acbb_output_path(&e, idx, metric, cap); /* fits: the path is no longer than
+                                               an alias plus "balls[k]." */
+}
+
 static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
 {
     const char *m = a->val[CLI_OPT_METRIC], *d = a->val[CLI_OPT_DELTA];
@@ -61,6 +76,7 @@ static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
         fprintf(stderr, "acbb: sensitivity: %s; `acbb metrics` lists them\n", err.msg);
         rc = ACBB_EXIT_INPUT;
     }
+    if (!rc) canonical_metric(o->metric, sizeof o->metric);
     return rc;
 }
 
@@ -116,13 +132,13 @@ static void print_table(FILE *f, const char *preset, const acbb_sens_result *r)
 
 static void json_number(cJSON *o, const char *k, int ok, double v)
 {
-    if (ok && isfinite(v)) cJSON_AddNumberToObject(o, k, v);
-    else cJSON_AddNullToObject(o, k);
+    cJSON_AddItemToObject(o, k, acbb_cli_json_number(ok ? v : NAN));
 }
 
 static cJSON *result_json(const acbb_sens_result *r)
 {
     cJSON *root = cJSON_CreateObject(), *rows = cJSON_CreateArray();
+    cJSON_AddNumberToObject(root, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddStringToObject(root, "metric", r->metric);
     if (r->delta_te) cJSON_AddStringToObject(root, "delta", "thermal_expansion");
     else cJSON_AddNullToObject(root, "delta");
@@ -153,19 +169,19 @@ static cJSON *result_json(const acbb_sens_result *r)
         cJSON *m = cJSON_AddObjectToObject(root, "morris");
         cJSON_AddNumberToObject(m, "trajectories", r->morris_r);
         cJSON_AddNumberToObject(m, "levels", r->morris_p);
-        cJSON_AddNumberToObject(m, "delta", r->morris_delta);
+        cJSON_AddItemToObject(m, "delta", acbb_cli_json_number(r->morris_delta));
         cJSON_AddNumberToObject(m, "points", (double)r->morris_r * (double)(r->n + 1));
         cJSON_AddNumberToObject(m, "seed", 1);
     }
     cJSON_AddNumberToObject(root, "runs", (double)r->runs);
     cJSON_AddNumberToObject(root, "failed_runs", (double)r->failed);
-    cJSON_AddNumberToObject(root, "wall_ms", r->wall_ms);
+    cJSON_AddItemToObject(root, "wall_ms", acbb_cli_json_number(r->wall_ms));
     return root;
 }
 
 static void csv_number(FILE *f, int ok, double v)
 {
-    if (ok && isfinite(v)) fprintf(f, ",%.10g", v);
+    if (ok && isfinite(v)) fprintf(f, ",%.17g", v);
     else fputc(',', f);
 }
 
@@ -189,7 +205,7 @@ static void write_csv(FILE *f, const acbb_sens_result *r)
         csv_number(f, r->ok0, r->y0);
         csv_number(f, w->ok_lo, w->y_lo);
         csv_number(f, w->ok_hi, w->y_hi);
-        fprintf(f, ",%.10g,%d", w->effect, w->flips);
+        fprintf(f, ",%.17g,%d", w->effect, w->flips);
         csv_number(f, w->n_ee > 0, w->mu_star);
         csv_number(f, w->n_ee > 0, w->mu);
         csv_number(f, w->n_ee > 0, w->sigma);

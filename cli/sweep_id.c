@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/json.h"
 #include "sweep.h"
 
 void acbb_cli_sweep_id_init(acbb_cli_sweep_id *id, const acbb_sweep *g, const acbb_scene *base,
@@ -44,6 +45,7 @@ static cJSON *header_json(const acbb_cli_sweep_id *id)
     cJSON_AddItemToObject(h, "grid", grid);
     cJSON_AddItemToObject(h, "scene", sc);
     cJSON *top = cJSON_CreateObject();
+    cJSON_AddNumberToObject(top, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddItemToObject(top, "acbb_sweep", h);
     return top;
 }

@@ -5,18 +5,32 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "acbb/json.h"
 #include "acbb/outputs.h"
+#include "output.h"
 #include "acbb/units.h"
 #include "exit.h"
 #include "sweep.h"
 
-#define CLI_UM 1e6 /* m -> um */
+/* The scalars of a record, by their run JSON paths (one name per quantity:
+ * outputs.h), ball entries of ball 0; `losses_W.*` expands to every loss
+ * kind. Their values come from the output table, as `acbb run --json`
+ * computes them. */
+static const char *const k_scalars[] = {
+    "temperature_C.outer_ring", "temperature_C.inner_ring", "temperature_C.ball",
+    "temperature_C.housing", "temperature_C.shaft", "temperature_C.cavity", "losses_W.*",
+    "losses_W.total", "balls[0].Qi_N", "balls[0].Qo_N", "balls[0].alpha_i_deg",
+    "balls[0].alpha_o_deg", "balls[0].film_i_um", "balls[0].film_o_um", "ring.delta_x_um",
+    "ring.stiffness_axial_N_per_um", "ring.stiffness_radial_N_per_um",
+    "ring.stiffness_tilt_Nm_per_mrad",
+};
 
-static void put(char names[][ACBB_CLI_SWEEP_NAME], double *v, size_t *n, const char *name,
-                double x)
+static void put(char names[][ACBB_CLI_SWEEP_NAME], double *v, size_t *n,
+                const acbb_output *e, long ball, const acbb_snapshot *snap)
 {
-    snprintf(names[*n], ACBB_CLI_SWEEP_NAME, "%s", name);
-    v[(*n)++] = x;
+    acbb_output_flat(e, names[*n], ACBB_CLI_SWEEP_NAME);
+    /* NAN marks "never ran" (and no ball 0) */
+    v[(*n)++] = snap ? acbb_output_value(e, snap, ball < 0 ? 0 : (int)ball) : NAN;
 }
 
 /* The set's metrics (MODEL.md 14; acbb metrics' set.* rows), by their
@@ -35,9 +49,9 @@ static void put_set(const acbb_snapshot *snap, char names[][ACBB_CLI_SWEEP_NAME]
     for (size_t c = 0; c < N_SET_COLS; c++) {
         acbb_output o;
         long ball;
-        int ok = acbb_output_find(k_set_cols[c], &o, &ball, NULL) == ACBB_OK;
-        double x = ok && snap && snap->n_bearings > 1 ? acbb_output_value(&o, snap, 0) : NAN;
-        put(names, v, n, k_set_cols[c], x);
+        if (acbb_output_find(k_set_cols[c], &o, &ball, NULL) != ACBB_OK) abort(); /* a bug */
+        acbb_output_flat(&o, names[*n], ACBB_CLI_SWEEP_NAME);
+        v[(*n)++] = snap && snap->n_bearings > 1 ? acbb_output_value(&o, snap, 0) : NAN;
     }
 }
 
@@ -47,35 +61,26 @@ static int is_set_col(const char *name) { return strncmp(name, "set.", 4) == 0; 
 size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
                               char names[][ACBB_CLI_SWEEP_NAME], double *v)
 {
-    static const acbb_snapshot none;
-    const acbb_snapshot *s = snap ? snap : &none;
-    const acbb_ball_view *b = &s->balls[0];
-    double nan_ = snap ? 0.0 : NAN; /* added to every value: NAN marks "never ran" */
-    double ball = snap && s->n_balls > 0 ? 0.0 : NAN;
     size_t n = 0;
-    put(names, v, &n, "T_outer_ring_C", s->T_outer_ring + nan_);
-    put(names, v, &n, "T_inner_ring_C", s->T_inner_ring + nan_);
-    put(names, v, &n, "T_ball_C", s->T_ball + nan_);
-    put(names, v, &n, "T_housing_C", s->T_housing + nan_);
-    put(names, v, &n, "T_shaft_C", s->T_shaft + nan_);
-    put(names, v, &n, "T_cavity_C", s->T_cavity + nan_);
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
-        char key[ACBB_CLI_SWEEP_NAME];
-        snprintf(key, sizeof key, "P_%s_W", acbb_loss_name((acbb_loss_kind)l));
-        put(names, v, &n, key, s->losses.P[l] + nan_);
+    for (size_t i = 0; i < sizeof k_scalars / sizeof k_scalars[0]; i++) {
+        acbb_output e;
+        long ball;
+        size_t len = strlen(k_scalars[i]);
+        if (strcmp(k_scalars[i] + len - 2, ".*") != 0) {
+            if (acbb_output_find(k_scalars[i], &e, &ball, NULL) != ACBB_OK) abort(); /* a bug */
+            put(names, v, &n, &e, ball, snap);
+            continue;
+        }
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
+            char path[ACBB_CLI_SWEEP_NAME];
+            snprintf(path, sizeof path, "%.*s.%s", (int)(len - 2), k_scalars[i],
+                     acbb_loss_name((acbb_loss_kind)l));
+            if (acbb_output_find(path, &e, &ball, NULL) != ACBB_OK) abort();
+            put(names, v, &n, &e, ball, snap);
+        }
     }
-    put(names, v, &n, "P_total_W", s->losses.total + nan_);
-    put(names, v, &n, "Qi_N", b->Qi + ball);
-    put(names, v, &n, "Qo_N", b->Qo + ball);
-    put(names, v, &n, "alpha_i_deg", acbb_rad_to_deg(b->alpha_i) + ball);
-    put(names, v, &n, "alpha_o_deg", acbb_rad_to_deg(b->alpha_o) + ball);
-    put(names, v, &n, "film_i_um", b->film_i * CLI_UM + ball);
-    put(names, v, &n, "film_o_um", b->film_o * CLI_UM + ball);
-    put(names, v, &n, "delta_x_um", s->delta_x * CLI_UM + nan_);
-    put(names, v, &n, "stiffness_axial_N_um", s->stiffness_axial / CLI_UM + nan_);
-    put(names, v, &n, "stiffness_radial_N_um", s->stiffness_radial / CLI_UM + nan_);
-    put(names, v, &n, "stiffness_tilt_Nm_mrad", s->stiffness_tilt * 1e-3 + nan_);
-    put(names, v, &n, "time_s", s->time + nan_);
+    snprintf(names[n], ACBB_CLI_SWEEP_NAME, "time_s");
+    v[n++] = snap ? snap->time : NAN;
     put_set(snap, names, v, &n);
     return n;
 }
@@ -123,6 +128,7 @@ static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_
     int checked = r->have_snap && r->snap.n_balls > 0;
     long nonfinite = 0;
     cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddNumberToObject(o, "index", (double)r->index);
     cJSON_AddStringToObject(o, "fingerprint", id->fp);
     cJSON_AddItemToObject(o, "grid", acbb_cli_sweep_grid_json(id->g, r->index));
@@ -132,11 +138,10 @@ static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_
     int set = r->have_snap && r->snap.n_bearings > 1;
     for (size_t k = 0; k < n; k++) {
         if (is_set_col(names[k]) && !set) continue;
-        if (isfinite(v[k])) cJSON_AddNumberToObject(o, names[k], v[k]);
-        else cJSON_AddNullToObject(o, names[k]);
+        cJSON_AddItemToObject(o, names[k], acbb_cli_json_number(v[k]));
         nonfinite += checked && !isfinite(v[k]);
     }
-    cJSON_AddNumberToObject(o, "wall_ms", r->wall_ms);
+    cJSON_AddItemToObject(o, "wall_ms", acbb_cli_json_number(r->wall_ms));
     char *text = cJSON_PrintUnformatted(o);
     cJSON_Delete(o);
     if (!text) return 1;
@@ -179,12 +184,12 @@ static long record_csv(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_re
     long nonfinite = 0;
     int set = r->have_snap && r->snap.n_bearings > 1;
     for (size_t k = 0; k < n; k++) {
-        if (isfinite(v[k])) fprintf(f, "%.10g", v[k]);
+        if (isfinite(v[k])) fprintf(f, "%.17g", v[k]);
         else nonfinite += checked && (set || !is_set_col(names[k]));
         fputc(',', f);
     }
     csv_text(f, message_text(r));
-    fprintf(f, ",%.10g\n", r->wall_ms);
+    fprintf(f, ",%.17g\n", r->wall_ms);
     return nonfinite;
 }
 

@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """A JSON Schema checker for the subset docs/schema/acbb.schema.json uses
 (type, const, enum, required, properties, additionalProperties, items,
-minimum): no validator library is installed. Usage: schema_check.py
-SCHEMA DOC.json...; exit 0 when every document conforms, 1 with each
-violation's path on stderr otherwise."""
+minimum; a type may be a list): no validator library is installed.
+Usage: schema_check.py SCHEMA [--def KIND] [--lines] [--each] DOC.json...
+--def: check against $defs/KIND instead of the root; --lines: each line of
+a DOC is one document (JSONL); --each: the DOC is an array, check each
+element. Exit 0 when every document conforms, 1 with each violation's
+path on stderr otherwise."""
 import json
 import sys
 
@@ -11,6 +14,8 @@ TYPES = {"object": dict, "array": list, "string": str, "boolean": bool}
 
 
 def type_ok(v, t):
+    if isinstance(t, list):
+        return any(type_ok(v, x) for x in t)
     if t == "number":
         return isinstance(v, (int, float)) and not isinstance(v, bool)
     if t == "integer":
@@ -50,12 +55,32 @@ def check(v, s, path, errs):
             check(x, s["items"], f"{path}[{i}]", errs)
 
 
+def documents(name, lines, each):
+    if lines:
+        docs = [json.loads(x) for x in open(name) if x.strip()]
+    else:
+        docs = [json.load(open(name))]
+    if each:
+        if not all(isinstance(d, list) and d for d in docs):
+            raise ValueError(f"{name}: not a non-empty array")
+        docs = [x for d in docs for x in d]
+    return docs
+
+
 def main():
     schema = json.load(open(sys.argv[1]))
+    args = sys.argv[2:]
+    lines = "--lines" in args
+    each = "--each" in args
+    args = [a for a in args if a not in ("--lines", "--each")]
+    if args[:1] == ["--def"]:
+        schema = schema["$defs"][args[1]]
+        args = args[2:]
     bad = 0
-    for name in sys.argv[2:]:
+    for name in args:
         errs = []
-        check(json.load(open(name)), schema, "$", errs)
+        for i, doc in enumerate(documents(name, lines, each)):
+            check(doc, schema, f"${i}" if lines or each else "$", errs)
         for e in errs:
             print(f"{name}: {e}", file=sys.stderr)
         bad += bool(errs)

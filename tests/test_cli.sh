@@ -76,7 +76,7 @@ jqt "$TMP/rad.json" '([.balls[].Qi_N] | max) > ([.balls[].Qi_N] | min) * 1.01' \
 code $? 0 "run --json --csv exits 0"
 [ ! -e "$TMP/run.csv.tmp" ] && [ -s "$TMP/run.csv" ]
 t $? "csv written and the .tmp renamed away"
-head -n 1 "$TMP/run.csv" | grep -q -x 'iteration,time_s,dt_s,T_outer_ring_C,T_inner_ring_C,T_ball_C,P_shear_W,P_slip_W,P_spin_W,P_rolling_W,P_drag_W,P_cage_W,P_ehl_rolling_W,P_churning_W,P_total_W,Qi_N,Qo_N,alpha_i_deg,alpha_o_deg,exp_ball_um,exp_inner_um,exp_outer_um,residual_K_s,delta_x_um,delta_z_um,tilt_y_mrad,film_i_um,film_o_um,hmin_i_um,hmin_o_um,squeeze_inner_thermal_um,squeeze_inner_centrifugal_um,squeeze_outer_um,squeeze_ball_um,squeeze_net_um,life_L10r_h,life_Lnmr_h,life_a_iso,life_kappa,life_s0_min'
+head -n 1 "$TMP/run.csv" | grep -q -x -F 'iteration,time_s,dt_s,temperature_C.outer_ring,temperature_C.inner_ring,temperature_C.ball,losses_W.shear,losses_W.slip,losses_W.spin,losses_W.rolling,losses_W.drag,losses_W.cage,losses_W.ehl_rolling,losses_W.churning,losses_W.total,balls[0].Qi_N,balls[0].Qo_N,balls[0].alpha_i_deg,balls[0].alpha_o_deg,expansion_um.ball,expansion_um.inner_ring,expansion_um.outer_ring,residual_K_s,ring.delta_x_um,ring.delta_z_um,ring.tilt_y_mrad,balls[0].film_i_um,balls[0].film_o_um,balls[0].hmin_i_um,balls[0].hmin_o_um,squeeze_um.inner_thermal,squeeze_um.inner_centrifugal,squeeze_um.outer,squeeze_um.ball,squeeze_um.net,life.L10r_h,life.Lnmr_h,life.a_iso,life.kappa,life.s0_min'
 t $? "csv header row"
 iters=$(jq '.iterations' "$TMP/csv.json")
 rows=$(($(wc -l <"$TMP/run.csv") - 1))
@@ -186,11 +186,11 @@ echo "# seed conclusion 1 (Qi TE > WTE at 1000 N): $held"
     >"$TMP/sw.json" 2>"$TMP/err"
 code $? 0 "sweep of 3 loads exits 0"
 jqt "$TMP/sw.json" 'length == 3 and ([.[].value] == [200, 500, 1000])' "sweep JSON has the 3 points in order"
-jqt "$TMP/sw.json" '[.[].Qi_N] | [range(1; length) as $i | .[$i] > .[$i - 1]] | all' \
+jqt "$TMP/sw.json" '[.[]."balls[0].Qi_N"] | [range(1; length) as $i | .[$i] > .[$i - 1]] | all' \
     "sweep: Qi increases with the axial load"
 # A sweep point is the steady solve: the run's steady state to ~5e-9 (sweep.h).
 jq -e --slurpfile one "$TMP/run.json" 'def abs: if . < 0 then -. else . end;
-    ((.[2].P_total_W - $one[0].losses_W.total) | abs) <= 1e-8 * .[2].P_total_W' \
+    ((.[2]."losses_W.total" - $one[0].losses_W.total) | abs) <= 1e-8 * .[2]."losses_W.total"' \
     "$TMP/sw.json" >/dev/null 2>&1
 t $? "sweep point at 1000 N equals the single run (to 1e-8)"
 "$ACBB" sweep "$PRESET" --param operating.axial_load_N --values 200,500,1000 \
@@ -241,7 +241,7 @@ jq -e 'def abs: if . < 0 then -. else . end; .losses_W.cage > 0 and ((.losses_W.
     "$TMP/cage.json" >/dev/null
 t $? "JSON: cage loss > 0 and the six losses sum to the total"
 awk -F, 'NR > 1 && $12 <= 0 { bad = 1 } END { exit bad }' "$TMP/cage.csv"
-t $? "CSV: P_cage_W column positive in every row"
+t $? "CSV: losses_W.cage column positive in every row"
 "$ACBB" run presets/7008C.ini --set effects.loss_cage=on >"$TMP/cage.txt" 2>&1
 has "$TMP/cage.txt" "cage" "text summary lists the cage loss"
 awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/cage.txt"
@@ -519,7 +519,7 @@ jq -e '.effects_inactive == [] and .ring.stiffness_axial_N_per_um > 0
     and .balls[0].hmin_i_um < .balls[0].film_i_um and .work.network_solves > 0' \
     "$TMP/csv.json" >/dev/null
 t $? "JSON: ring stiffness, squeeze terms summing to net, hmin < central film, work counters"
-head -n 1 "$TMP/run.csv" | grep -q 'residual_K_s,delta_x_um,.*,squeeze_net_um,life_L10r_h,life_Lnmr_h,life_a_iso,life_kappa,life_s0_min$'
+head -n 1 "$TMP/run.csv" | grep -q 'residual_K_s,ring\.delta_x_um,.*,squeeze_um\.net,life\.L10r_h,life\.Lnmr_h,life\.a_iso,life\.kappa,life\.s0_min$'
 t $? "CSV: ring displacement, film and squeeze columns after residual_K_s"
 "$ACBB" run presets/7008C.ini --set effects.heating=off --json >"$TMP/iso.json" 2>"$TMP/err"
 code $? 0 "heating off exits 0"

@@ -17,10 +17,10 @@ G="--set fidelity.model=quasi-static --grid operating.axial_load_N=100,200 --gri
 sweep() { "$ACBB" sweep "$PRESET" $G "$@" >/dev/null 2>>"$TMP/log"; }
 sweep --jsonl "$TMP/a.jsonl" --csv "$TMP/a.csv" --jobs 1
 sweep --jsonl "$TMP/s1.jsonl" --csv "$TMP/s1.csv" --shard 1/2
-head -1 "$TMP/a.jsonl" | jq -e '.acbb_sweep.format == 2 and (.acbb_sweep.fingerprint | length == 16)
+head -1 "$TMP/a.jsonl" | jq -e '.acbb_sweep.format == 3 and (.acbb_sweep.fingerprint | length == 16)
     and .acbb_sweep.scene["operating.radial_load_N"] == "0"
     and (.acbb_sweep.scene | has("operating.axial_load_N") | not)' >/dev/null 2>&1
-t $? "the header: format 2, a 16-digit fingerprint, every scene key the grid does not vary"
+t $? "the header: format 3, a 16-digit fingerprint, every scene key the grid does not vary"
 fp=$(head -1 "$TMP/a.jsonl" | jq -r .acbb_sweep.fingerprint)
 jq -s -e --arg fp "$fp" '.[1:] | length == 4 and all(.[]; .fingerprint == $fp)' "$TMP/a.jsonl" >/dev/null 2>&1 &&
     [ "$(awk -F, -v fp="$fp" 'NR > 2 && $2 != fp { bad = 1 } END { print bad + 0 }' "$TMP/a.csv")" = 0 ]
@@ -45,7 +45,7 @@ has "$TMP/err" 'grid operating.axial_load_N (["100","200"] vs ["100","300"])' ".
 "$ACBB" merge "$TMP/o" "$TMP/s1.jsonl" "$TMP/t.jsonl" 2>"$TMP/err"
 code $? 2 "merge refuses a --transient shard with a steady one"
 has "$TMP/err" 'mode ("steady" vs "transient")' "... naming the mode"
-sed '1s/"format":2/"format":1/' "$TMP/a.jsonl" >"$TMP/v.jsonl"
+sed '1s/"format":3/"format":2/' "$TMP/a.jsonl" >"$TMP/v.jsonl"
 "$ACBB" merge "$TMP/o" "$TMP/s1.jsonl" "$TMP/v.jsonl" 2>"$TMP/err"
 code $? 2 "merge refuses another record format"
 tail -n +2 "$TMP/a.jsonl" >"$TMP/nohead.jsonl"
@@ -66,15 +66,15 @@ bad_jsonl 's/"index":1,/"index":4,/' 'index 4 of a 4-point grid'
 bad_jsonl 's/"index":1,/"index":-1,/' 'index -1'
 bad_jsonl '/"index":1,/s/"operating.inner_speed_rpm":2000/"operating.inner_speed_rpm":1000/' 'the grid values of another index'
 bad_jsonl "3s/\"fingerprint\":\"$fp\"/\"fingerprint\":\"0000000000000000\"/" 'another fingerprint'
-bad_jsonl '3s/"T_ball_C":[-0-9.e]*/"T_ball_C":1e999/' 'a number 1e999'
+bad_jsonl '3s/"temperature_C.ball":[-0-9.e]*/"temperature_C.ball":1e999/' 'a number 1e999'
 bad_csv() {
     sed "$1" "$TMP/a.csv" >"$TMP/b.csv"
     "$ACBB" merge "$TMP/o" "$TMP/b.csv" 2>"$TMP/err"
     code $? 2 "merge refuses a CSV row with $2"
 }
-# column 7 is T_outer_ring_C (index, fingerprint, 2 grid keys, status, iterations)
+# column 7 is temperature_C.outer_ring (index, fingerprint, 2 grid keys, status, iterations)
 for v in nan 1e999 hello inf; do
-    bad_csv "3s/^\\(\\([^,]*,\\)\\{6\\}\\)[^,]*,/\\1$v,/" "T_outer_ring_C = $v"
+    bad_csv "3s/^\\(\\([^,]*,\\)\\{6\\}\\)[^,]*,/\\1$v,/" "temperature_C.outer_ring = $v"
 done
 bad_csv 's/^1,/1.5,/' 'index 1.5'
 bad_csv '3s/,converged,/,converged,x,/' 'one field too many'

@@ -28,8 +28,8 @@ done
 # one checker process for all (python's start-up, not the check, is the cost)
 $CHECK "$TMP"/runs/*.json 2>"$TMP/bad"
 t $? "acbb run --json of every preset ($(ls presets/*.ini | wc -l)) conforms to the schema $(head -3 "$TMP/bad" | tr '\n' ' ')"
-jq -e '.schema_version == 2' "$TMP/runs/7008C.json" >/dev/null
-t $? "the run document says schema_version 2"
+jq -e '.schema_version == 3' "$TMP/runs/7008C.json" >/dev/null
+t $? "the run document says schema_version 3"
 # 17 significant digits: the printed number is the double itself
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); v=d["time_s"]; assert repr(v) == repr(float("%.17g" % v)) and len(json.dumps(d["losses_W"]["total"]).replace(".","").lstrip("0")) > 11' "$TMP/runs/7008C.json"
 t $? "numbers are printed with full precision (more than 10 digits)"
@@ -60,6 +60,60 @@ jq -e --slurpfile b "$TMP/runs/7008C.json" '
     | ($b[0].temperature_C.outer_ring - $b[0].scene.keys["operating.ambient_C"]) as $rise
     | ($r.change_pct - 100 * ($r.now - $r.baseline) / $rise) | fabs < 1e-9' "$TMP/vs.json" >/dev/null
 t $? "--baseline: temperature change_pct is of the rise above ambient ($(jq '.vs_baseline[] | select(.path == "temperature_C.outer_ring") | .change_pct' "$TMP/vs.json") %)"
+
+# every other kind of JSON document (issue 21 item 10): schema_version 3 and
+# the schema's $defs entry for its kind
+"$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --jsonl "$TMP/s.jsonl" \
+    >/dev/null 2>&1
+code $? 0 "sweep --jsonl runs"
+head -1 "$TMP/s.jsonl" >"$TMP/s_head.json"
+tail -n +2 "$TMP/s.jsonl" >"$TMP/s_rec.jsonl"
+$CHECK --def sweep_header "$TMP/s_head.json" && [ "$(wc -l <"$TMP/s_rec.jsonl")" -eq 2 ] &&
+    $CHECK --def sweep_record --lines "$TMP/s_rec.jsonl"
+t $? "sweep --jsonl: the header and both records conform (sweep_header, sweep_record)"
+"$ACBB" merge "$TMP/m.jsonl" "$TMP/s.jsonl" 2>/dev/null &&
+    head -1 "$TMP/m.jsonl" >"$TMP/m_head.json" && tail -n +2 "$TMP/m.jsonl" >"$TMP/m_rec.jsonl" &&
+    $CHECK --def sweep_header "$TMP/m_head.json" && $CHECK --def sweep_record --lines "$TMP/m_rec.jsonl"
+t $? "merge: the merged file's header and records conform"
+"$ACBB" sweep presets/7008C.ini --param operating.axial_load_N --values 100,200 --json \
+    >"$TMP/sw.json" 2>/dev/null && $CHECK --def sweep_point --each "$TMP/sw.json"
+t $? "sweep --json: each point conforms (sweep_point)"
+"$ACBB" report presets/7008C.ini --json >"$TMP/rep.json" 2>/dev/null &&
+    $CHECK --def report_item --each "$TMP/rep.json"
+t $? "report --json: each item conforms (report_item)"
+"$ACBB" sensitivity presets/7008C.ini --metric losses_W.total --json >"$TMP/sens.json" \
+    2>/dev/null && $CHECK --def sensitivity "$TMP/sens.json"
+t $? "sensitivity --json conforms (sensitivity)"
+"$ACBB" metrics --json >"$TMP/met.json" && $CHECK --def metrics "$TMP/met.json" &&
+    jq -e '.metrics[] | select(.path == "temperature_C.outer_ring") | .unit == "C"' \
+        "$TMP/met.json" >/dev/null
+t $? "metrics --json conforms (metrics) and lists temperature_C.outer_ring in C"
+
+# one name per quantity (schema 3): a sweep record, the sweep --json point
+# and the metrics listing name each value by the run document's path, with
+# the same double; old column names still name it where a user passes one
+jq -e '.metrics | all(.[]; .column == (.path | sub("\\[i\\]"; "[0]")))' "$TMP/met.json" >/dev/null
+t $? "metrics --json: every column name is the run path (ball 0)"
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=200 --set fidelity.thermal_mode=steady \
+    --json >"$TMP/r200.json" 2>/dev/null
+jq -s -e --slurpfile r "$TMP/r200.json" 'map(select(.index == 1))[0] |
+    ."temperature_C.outer_ring" == $r[0].temperature_C.outer_ring and
+    ."ring.stiffness_axial_N_per_um" == $r[0].ring.stiffness_axial_N_per_um and
+    ."balls[0].Qi_N" == $r[0].balls[0].Qi_N' "$TMP/s_rec.jsonl" >/dev/null
+t $? "a sweep record's values equal the run's, under the run's names, to the last digit ($(jq -c '[.temperature_C.outer_ring, .iterations]' "$TMP/r200.json") $(jq -c 'select(.index == 1) | [."temperature_C.outer_ring", .iterations]' "$TMP/s_rec.jsonl"))"
+jq -e --slurpfile r "$TMP/r200.json" '.[1] | ."losses_W.total" == $r[0].losses_W.total and
+    (has("P_total_W") | not)' "$TMP/sw.json" >/dev/null
+t $? "sweep --json: losses_W.total, no P_total_W"
+"$ACBB" sensitivity presets/7008C.ini --metric T_outer_ring_C --json 2>/dev/null |
+    jq -e '.metric == "temperature_C.outer_ring"' >/dev/null
+t $? "an old name (--metric T_outer_ring_C) is an alias of temperature_C.outer_ring"
+"$ACBB" sensitivity presets/7008C.ini --metric stiffness_axial_N_um --json 2>/dev/null |
+    jq -e '.metric == "ring.stiffness_axial_N_per_um"' >/dev/null
+t $? "... and stiffness_axial_N_um of ring.stiffness_axial_N_per_um"
+
+jq -e 'del(.schema_version)' "$TMP/sens.json" >"$TMP/broken3.json"
+! $CHECK --def sensitivity "$TMP/broken3.json" 2>/dev/null
+t $? "the checker rejects a sensitivity document without schema_version"
 
 # the checker can fail: a document without status, a string for a number
 jq 'del(.status)' "$TMP/runs/7008C.json" >"$TMP/broken1.json"

@@ -59,10 +59,10 @@ for a in DB DF; do
 done
 # CSV: the preload and each bearing's outer ring over time, last row = JSON.
 "$ACBB" run presets/pair-DF-heated.ini --csv "$TMP/df.csv" >/dev/null
-head -n 1 "$TMP/df.csv" | grep -q ',set_preload_N,T_outer_ring_C_0,T_outer_ring_C_1$' &&
+head -n 1 "$TMP/df.csv" | grep -q ',set.preload_N,bearings\[0\].temperature_C.outer_ring,bearings\[1\].temperature_C.outer_ring$' &&
     awk -F, -v want="$(jq '.set.preload_N' "$TMP/hDF.json")" 'END { d = $(NF-2) - want;
         exit !(d < 1e-6 && d > -1e-6) }' "$TMP/df.csv"
-t $? "run --csv of a pair: set_preload_N and T_outer_ring_C_k columns; last row's preload = JSON"
+t $? "run --csv of a pair: set.preload_N and bearings[k].temperature_C.outer_ring columns; last row's preload = JSON"
 "$ACBB" run presets/7008C.ini --set effects.heating=off --csv "$TMP/one.csv" >/dev/null
 head -n 1 "$TMP/one.csv" | grep -qv set_preload
 t $? "run --csv of one bearing: no set columns"

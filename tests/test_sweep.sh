@@ -24,7 +24,7 @@ sweep() { "$ACBB" sweep "$PRESET" $GRID "$@" 2>>"$TMP/err"; }
 # ---- one machine ----
 sweep --jsonl "$TMP/one.jsonl" --csv "$TMP/one.csv" --jobs 2
 code $? 0 "2x2x2 sweep exits 0"
-[ "$(wc -l <"$TMP/one.jsonl")" -eq 9 ] && head -1 "$TMP/one.jsonl" | jq -e '.acbb_sweep.format == 2' >/dev/null 2>&1
+[ "$(wc -l <"$TMP/one.jsonl")" -eq 9 ] && head -1 "$TMP/one.jsonl" | jq -e '.acbb_sweep.format == 3' >/dev/null 2>&1
 t $? "a header line, then one JSON line per point"
 jq -s -e '.[1:] | map(.index) | sort == [0,1,2,3,4,5,6,7]' "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "every index 0..7 once"
@@ -36,9 +36,10 @@ jq -s -e 'map(select(.index == 2))[0].grid["operating.inner_speed_rpm"] == 12000
     "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "lo:hi:2 gives both ends (12000 rpm at index 2)"
 jq -s -e 'def abs: if . < 0 then -. else . end; .[1:] | all(.[]; .status == "converged" and .wall_ms >= 0 and
-    ((.P_shear_W + .P_slip_W + .P_spin_W + .P_rolling_W + .P_drag_W + .P_cage_W - .P_total_W)
-     | abs) <= 1e-9 * .P_total_W)' "$TMP/one.jsonl" >/dev/null 2>&1
-t $? "every point converged; the loss columns sum to P_total_W"
+    ((."losses_W.shear" + ."losses_W.slip" + ."losses_W.spin" + ."losses_W.rolling"
+      + ."losses_W.drag" + ."losses_W.cage" - ."losses_W.total")
+     | abs) <= 1e-9 * ."losses_W.total")' "$TMP/one.jsonl" >/dev/null 2>&1
+t $? "every point converged; the loss columns sum to losses_W.total"
 [ "$(wc -l <"$TMP/one.csv")" -eq 10 ] && sed -n 2p "$TMP/one.csv" | grep -q '^index,fingerprint,operating.axial_load_N,operating.inner_speed_rpm,effects.thermal_expansion,status,.*,message,wall_ms$'
 t $? "CSV: header (grid keys, ..., wall_ms) + 8 rows"
 
@@ -50,11 +51,14 @@ point6() {
         --set operating.inner_speed_rpm=12000 --set effects.thermal_expansion=on --json "$@" \
         >"$TMP/run.json" 2>>"$TMP/err"
 }
-# (run --json prints 10 significant digits: equal to that; the same steps)
+# (both print 17 significant digits from the one output table: equal
+# exactly, under the same name; the same steps)
 same6() {
-    jq -s -e --slurpfile r "$TMP/run.json" 'def abs: if . < 0 then -. else . end;
-        map(select(.index == 6))[0] | (.P_total_W - $r[0].losses_W.total | abs)
-        <= 1e-9 * .P_total_W and .iterations == $r[0].iterations' "$1" >/dev/null 2>&1
+    jq -s -e --slurpfile r "$TMP/run.json" 'map(select(.index == 6))[0] |
+        ."losses_W.total" == $r[0].losses_W.total and
+        ."temperature_C.outer_ring" == $r[0].temperature_C.outer_ring and
+        ."ring.stiffness_axial_N_per_um" == $r[0].ring.stiffness_axial_N_per_um and
+        .iterations == $r[0].iterations' "$1" >/dev/null 2>&1
 }
 point6 --set fidelity.thermal_mode=steady
 same6 "$TMP/one.jsonl"
@@ -151,7 +155,7 @@ code $? 3 "a sweep with failed points exits 3"
 jq -s -e '.[1:] | length == 6 and (map(.index) | sort == [0,1,2,3,4,5])' "$TMP/fail.jsonl" >/dev/null 2>&1
 t $? "every point recorded, failed ones too"
 jq -s -e 'map(select(.grid["operating.axial_load_N"] == -5)) | length == 2 and
-    all(.[]; .status == "bad_input" and (.message | test("must be >= 0 N")) and .P_total_W == null)' \
+    all(.[]; .status == "bad_input" and (.message | test("must be >= 0 N")) and ."losses_W.total" == null)' \
     "$TMP/fail.jsonl" >/dev/null 2>&1
 t $? "the invalid value: status bad_input, the range in the message, results null"
 jq -s -e 'map(select(.grid["operating.axial_load_N"] != -5)) |

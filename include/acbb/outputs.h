@@ -29,8 +29,9 @@ typedef struct {
     const char *section;         /* JSON object ("temperature_C"); ball rows: NULL
                                     (directly in balls[K]) or "losses_W" */
     const char *key;             /* key in it; NULL: one entry per loss kind */
-    const char *flat;            /* CSV / sweep column name ("T_outer_ring_C");
-                                    "%s" stands for the loss name */
+    const char *flat;            /* the CSV / sweep column name before schema 3
+                                    ("T_outer_ring_C"), now an alias a path may
+                                    use; "%s" stands for the loss name */
     const char *unit;            /* display unit ("W", "um", "N/um", "m/s") */
     const char *label;           /* short help (per-loss rows: the loss's label) */
     acbb_output_scope scope;
@@ -58,14 +59,20 @@ size_t acbb_output_count(void);
 /* The entry's path into buf; ball entries with `ball` as the index text
  * ("i" for the listing, "0"). Returns snprintf's count. */
 int acbb_output_path(const acbb_output *o, const char *ball, char *buf, size_t n);
-/* The entry's CSV / sweep column name into buf. */
+/* The entry's CSV / sweep column name into buf: one name per quantity
+ * (issue 21 item 10), the run JSON's path, ball entries of ball 0
+ * ("temperature_C.outer_ring", "balls[0].Qi_N"). */
 int acbb_output_flat(const acbb_output *o, char *buf, size_t n);
+/* The entry's old column name (schema 2 and before: "T_outer_ring_C"),
+ * accepted by acbb_output_find as an alias. */
+int acbb_output_old_name(const acbb_output *o, char *buf, size_t n);
 
 /* The entry's value in `s` in display units; ball entries of ball k (NAN
  * when k is not a ball of the snapshot). */
 double acbb_output_value(const acbb_output *o, const acbb_snapshot *s, int k);
 
-/* The entry a path names, and its ball index (-1 for a bearing entry).
+/* The entry a path (or an old column name, acbb_output_old_name: ball 0)
+ * names, and its ball index (-1 for a bearing entry).
  * ACBB_EINVAL with the reason when the path names none. The ball index is
  * checked against ACBB_MAX_BALLS only. */
 acbb_status acbb_output_find(const char *path, acbb_output *o, long *ball, acbb_error *err);

@@ -100,7 +100,7 @@ size_t acbb_sweep_n_todo(const acbb_sweep *g, const acbb_sweep_opts *o);
 /* The version of the sweep's output records (the CLI's JSONL and CSV):
  * raised whenever a record's fields change, so outputs of different
  * versions are never merged or resumed into each other. */
-#define ACBB_SWEEP_FORMAT 2
+#define ACBB_SWEEP_FORMAT 3
 
 /* What makes two outputs parts of one sweep (issue 20 items 3-4): FNV-1a
  * 64 (outfile.h) over the record format, the run mode (opts.transient),

@@ -208,6 +208,11 @@ int acbb_output_path(const acbb_output *o, const char *ball, char *buf, size_t n
 
 int acbb_output_flat(const acbb_output *o, char *buf, size_t n)
 {
+    return acbb_output_path(o, "0", buf, n);
+}
+
+int acbb_output_old_name(const acbb_output *o, char *buf, size_t n)
+{
     const char *f = o->row->flat, *at = strstr(f, "%s");
     if (!at) return snprintf(buf, n, "%s", f);
     return snprintf(buf, n, "%.*s%s%s", (int)(at - f), f, o->key, at + 2);
@@ -260,6 +265,20 @@ static int find_row(acbb_output_scope scope, const char *name, acbb_output *o)
     return 0;
 }
 
+/* The entry whose old column name is `name` (a ball entry: ball 0, as the
+ * old sweep columns were). */
+static int find_old_name(const char *name, acbb_output *o, long *ball)
+{
+    for (size_t i = 0; acbb_output_get(i, o); i++) {
+        char old[64];
+        acbb_output_old_name(o, old, sizeof old);
+        if (strcmp(old, name) != 0) continue;
+        *ball = o->row->scope == ACBB_OUT_BALL ? 0 : -1;
+        return 1;
+    }
+    return 0;
+}
+
 static acbb_status unknown(const char *path, acbb_error *err)
 {
     return acbb_error_set(err, ACBB_EINVAL,
@@ -282,5 +301,7 @@ acbb_status acbb_output_find(const char *path, acbb_output *o, long *ball, acbb_
         scope = ACBB_OUT_BALL;
         name = end + 2;
     }
-    return find_row(scope, name, o) ? ACBB_OK : unknown(path, err);
+    if (find_row(scope, name, o)) return ACBB_OK;
+    return scope == ACBB_OUT_BEARING && find_old_name(path, o, ball) ? ACBB_OK
+                                                                    : unknown(path, err);
 }
