@@ -102,7 +102,7 @@ static void draw(acbb_app *a)
         { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6, 0 },
         { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6, 0 },
         /* What heat costs in life (MODEL.md 15). */
-        { "Life L10r h", offsetof(acbb_snapshot, life.L10r_h), 1, 0 },
+        { "Life L10r h", offsetof(acbb_snapshot, life.L10r_h), 1, 1 },
         { "Life Lnmr h", offsetof(acbb_snapshot, life.Lnmr_h), 1, 0 },
         { "  kappa", offsetof(acbb_snapshot, life.kappa), 1, 1 },
         { "  static safety s0", offsetof(acbb_snapshot, life.s0_min), 1, 1 },
