@@ -440,7 +440,8 @@ if [ -n "$BUILD" ] && command -v meson >/dev/null 2>&1; then
     flock "$BUILD/meson-private/acbb-test-install.lock" \
         meson install -C "$BUILD" --destdir "$TMP/d" --no-rebuild --quiet >"$TMP/inst.log" 2>"$TMP/err"
     code $? 0 "meson install --destdir"
-    [ -s "$TMP/err" ] && sed 's/^/# /' "$TMP/err" | head -n 20
+    # meson prints its ERROR lines on stdout
+    grep -h -s ERROR "$TMP/inst.log" "$TMP/err" | sed 's/^/# /' | head -n 20
     INST=$(find "$TMP/d" -type f -path '*/bin/acbb' | head -n 1)
     [ -n "$INST" ] && [ -x "$INST" ]
     t $? "the binary is installed (${INST#$TMP/d})"

@@ -22,7 +22,8 @@ D=$TMP/d
 flock "$BUILD/meson-private/acbb-test-install.lock" \
     meson install -C "$BUILD" --destdir "$D" --no-rebuild --quiet >"$TMP/inst.log" 2>"$TMP/err"
 code $? 0 "meson install --destdir"
-[ -s "$TMP/err" ] && sed 's/^/# /' "$TMP/err" | head -n 20
+# meson prints its ERROR lines on stdout
+grep -h -s ERROR "$TMP/inst.log" "$TMP/err" | sed 's/^/# /' | head -n 20
 PC=$(find "$D" -name acbb.pc -path '*/pkgconfig/*' | head -n 1)
 [ -n "$PC" ]
 t $? "acbb.pc is installed (${PC#"$D"})"
