@@ -11,6 +11,7 @@
 #include "acbb/life_eval.h"
 #include "acbb/outputs.h"
 #include "acbb/units.h"
+#include "acbb/set.h"
 #include "output.h"
 
 #define CLI_UM 1e6                                   /* m -> um */
@@ -116,14 +117,33 @@ static double col_value(const acbb_cli_col *c, const acbb_snapshot *s)
 
 static const char *onoff(bool b) { return b ? "on" : "off"; }
 
+/* The loads as the mounting reads them (MODEL.md 14): a single bearing
+ * under a displacement preload has no axial force input (dx is fixed by
+ * preload_N at assembly); a set adds its preload, its loads act at the
+ * nose. The default mounting (one bearing, axial force) prints no line. */
+static void summary_mounting(FILE *f, const acbb_scene *sc)
+{
+    bool rigid = sc->preload == ACBB_PRELOAD_DISPLACEMENT;
+    if (sc->set_arrangement == ACBB_SET_SINGLE && rigid)
+        fprintf(f, "%-13srigid preload %g N at assembly (axial offset fixed)\n", "mounting",
+                sc->preload_force);
+    else if (sc->set_arrangement != ACBB_SET_SINGLE)
+        fprintf(f, "%-13s%s set, %s preload %g N at assembly, loads at the nose\n", "mounting",
+                acbb_set_arrangement_name(sc->set_arrangement), rigid ? "rigid" : "spring",
+                sc->preload_force);
+}
+
 static void summary_header(acbb_cli_out *o, const char *preset,
                            const acbb_scene *sc, const acbb_snapshot *s)
 {
     FILE *f = o->f;
     fprintf(f, "acbb run %s\n", preset);
-    fprintf(f, "%-13s%.0f rpm, Fx %g N, Fr %g N, thermal expansion %s, %s\n",
-            "scene", acbb_rads_to_rpm(sc->inner_speed), sc->axial_load, sc->radial_load,
+    fprintf(f, "%-13s%.0f rpm, ", "scene", acbb_rads_to_rpm(sc->inner_speed));
+    if (sc->set_arrangement != ACBB_SET_SINGLE || sc->preload != ACBB_PRELOAD_DISPLACEMENT)
+        fprintf(f, "Fx %g N, ", sc->axial_load);
+    fprintf(f, "Fr %g N, thermal expansion %s, %s\n", sc->radial_load,
             onoff(sc->thermal_expansion), acbb_model_level_name(sc->model));
+    summary_mounting(f, sc);
     fprintf(f, "%-13s%s", "status", acbb_run_status_name(s));
     if (s->message[0]) fprintf(f, ": %.60s", s->message);
     fprintf(f, "\n%-13s%-10ld simulated time ", "iterations", s->iteration);

@@ -592,4 +592,17 @@ code $? 2 "edit with a bad value exits 2"
 grep -q '^axial_load_N = 500' "$TMP/mine.ini"
 t $? "and leaves the file as it was"
 
+# The summary's scene line says what the mounting takes: a rigid single
+# bearing has no axial force input, a set its preload and the nose loads.
+"$ACBB" run presets/runaway-rigid-preload.ini --set thermal.max_time_s=10 >"$TMP/rig.txt" 2>/dev/null
+grep -q '^scene        16000 rpm, Fr 0 N,' "$TMP/rig.txt" \
+    && grep -q -x 'mounting     rigid preload 1000 N at assembly (axial offset fixed)' "$TMP/rig.txt"
+t $? "a rigid single bearing: no Fx on the scene line, the assembly preload on its own"
+"$ACBB" run presets/pair-spring-16k.ini --set thermal.max_time_s=10 >"$TMP/pair.txt" 2>/dev/null
+grep -q -x 'mounting     DB set, spring preload 300 N at assembly, loads at the nose' "$TMP/pair.txt"
+t $? "a DB pair: arrangement, preload kind and value"
+"$ACBB" run presets/7008C.ini --set thermal.max_time_s=10 >"$TMP/one.txt" 2>/dev/null
+grep -q '^scene        15000 rpm, Fx 1000 N, Fr 0 N,' "$TMP/one.txt" && ! grep -q '^mounting' "$TMP/one.txt"
+t $? "one bearing under a force: Fx and Fr, no mounting line"
+
 tap_done
