@@ -71,32 +71,52 @@ static void temps_panel(acbb_app *a, acbb_rect r)
     }
 }
 
+/* A loss's name in at most 8 columns, so name and symbol fit the panel's
+ * 13 (the JSON names run to 11: ehl_rolling). */
+static const char *loss_label(acbb_loss_kind k)
+{
+    return k == ACBB_LOSS_EHL_ROLLING ? "EHL roll" : acbb_loss_name(k);
+}
+
+static bool loss_shown(const acbb_app *a, int k)
+{
+    return acbb_loss_enabled(&a->ed.scene, (acbb_loss_kind)k) || a->st.snap.losses.P[k] != 0.0;
+}
+
 /* The rows of the loss table that the scene switches on (or that carry a
- * value, for a run started before an edit), then the total. */
+ * value, for a run started before an edit), then the total; when the rows
+ * leave no room for the total (the extended set at 24 lines), the header
+ * carries it. */
 static void losses_panel(acbb_app *a, acbb_rect r)
 {
     const acbb_losses *l = &a->st.snap.losses, *lb = &a->base.losses;
-    acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER,
-             a->has_base ? "Power loss      W  vs base     %%" : "Power loss        W      %%");
+    int n = 0;
+    for (int k = 0; k < ACBB_LOSS_KINDS; k++) n += loss_shown(a, k);
+    bool head_total = n + 1 >= r.h;
+    if (head_total)
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Power loss  total %7.2f W", l->total);
+    else
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER,
+                 a->has_base ? "Power loss      W  vs base     %%" : "Power loss        W      %%");
     double tot = l->total > 0 ? l->total : 1.0;
     int row = 1;
-    for (int k = 0; k <= ACBB_LOSS_KINDS && row < r.h; k++, row++) {
+    for (int k = 0; k <= ACBB_LOSS_KINDS - head_total && row < r.h; k++, row++) {
         int total = k == ACBB_LOSS_KINDS;
         double v = total ? l->total : l->P[k], vb = total ? lb->total : lb->P[k];
         char name[16];
         if (!total) {
-            if (!acbb_loss_enabled(&a->ed.scene, (acbb_loss_kind)k) && v == 0.0) { row--; continue; }
-            snprintf(name, sizeof name, "%.7s %s", acbb_loss_name((acbb_loss_kind)k),
+            if (!loss_shown(a, k)) { row--; continue; }
+            snprintf(name, sizeof name, "%s %s", loss_label((acbb_loss_kind)k),
                      acbb_loss_symbol((acbb_loss_kind)k));
         } else snprintf(name, sizeof name, "Total");
         acbb_role role = total ? ACBB_ROLE_HEADER : ACBB_ROLE_NORMAL;
         if (a->has_base) {
             char d[48];
             acbb_fmt_delta(v, vb, vb, d, sizeof d);
-            acbb_put(a, r.y + row, r.x, r.w, role, "%-12s %6.2f %s", name, v, d);
+            acbb_put(a, r.y + row, r.x, r.w, role, "%-13s%6.2f %s", name, v, d);
             continue;
         }
-        acbb_put(a, r.y + row, r.x, r.w, role, "%-12s %7.2f %6.1f", name, v, 100 * v / tot);
+        acbb_put(a, r.y + row, r.x, r.w, role, "%-13s%7.2f %6.1f", name, v, 100 * v / tot);
         if (!total) acbb_bar(a, r.y + row, r.x + 28, r.w - 29, v / tot, ACBB_ROLE_BAR);
     }
 }
