@@ -117,6 +117,30 @@ t $? "spacers given as the whole gap (30 mm) = the default matched spacers, numb
 "$ACBB" keys | grep -q 'set.inner_spacer_mm' && "$ACBB" keys | grep -q 'set.outer_spacer_mm'
 t $? "acbb keys lists set.inner_spacer_mm and set.outer_spacer_mm"
 
+# Shaft DOF (MODEL.md 14): the set solves dx, dz and the tilt about y; dy
+# and the tilt about z are 0 for every scene acbb accepts (no load in y, no
+# moment about z; ball azimuths 2 pi j / Z mirror about the x-z plane and
+# a bearing's reaction has no azimuthal force: set_mech.h). Under a radial
+# load, a moment and a load offset, each bearing's ball loads give a y force
+# and a moment about z of zero to round-off (1e-12 of the radial sum), while
+# the z forces balance the 400 N radial load (balls' radial components;
+# the contacts' friction in the ball plane makes the rest, under 1 %).
+"$ACBB" keys | grep -Eiq 'load_y|moment_z|_y_N|y_load' && echo "a y load key exists" >&2
+t $((! $?)) "acbb keys: no load in y and no moment about z (nothing breaks the x-z mirror)"
+for m in quasi-static quasi-dynamic; do
+    "$ACBB" run presets/pair-rigid-16k.ini --set fidelity.model=$m --set effects.heating=off \
+        --set operating.radial_load_N=400 --set operating.moment_load_Nm=5 \
+        --set set.load_offset_mm=80 --json >"$TMP/y$m.json"
+    jqt "$TMP/y$m.json" 'def r: . * 3.141592653589793 / 180;
+        [.bearings[].balls | {y: (map(.Qi_N * (.alpha_i_deg | r | cos) * (.psi_deg | r | sin)) | add),
+                              mz: (map(.Qi_N * (.alpha_i_deg | r | sin) * (.psi_deg | r | sin)) | add),
+                              z: (map(.Qi_N * (.alpha_i_deg | r | cos) * (.psi_deg | r | cos)) | add),
+                              s: (map(.Qi_N) | add)}]
+        | (map((.y | fabs) < 1e-12 * .s and (.mz | fabs) < 1e-12 * .s) | all)
+          and ((map(.z) | add) / 400 - 1 | fabs) < 0.01' \
+        "$m pair, radial load + moment + offset: y force and z moment of the balls 0 to round-off, z forces = 400 N"
+done
+
 # Spring preload keeps its axial preload: the floating bearing carries the
 # spring force to the solver tolerance while the rigid pair's rises.
 "$ACBB" run presets/pair-spring-16k.ini --json >"$TMP/spring.json"
