@@ -46,8 +46,9 @@ void acbb_network_set_free(acbb_network_set *ns);
  * (side 1) meets a neighbour: its end boundaries are dropped there. */
 int acbb_network_set_inner_face(const acbb_network_set *ns, int k, int side);
 
-/* Copy the members' current edge resistances into the joined network,
- * each that moved more than rel_tol (relative) since it was last copied:
+/* Copy the members' state-dependent edge resistances (contact spots,
+ * films, advection: network.h) into the joined network, each that moved
+ * more than rel_tol (relative) since it was last copied:
  * a joined network twice the size costs 8 times as much to factorise, and
  * the contact-spot resistances move a little every transient step
  * (BENCHMARKS.md "Bearing sets"). 0: every change, as the steady polish
