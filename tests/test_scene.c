@@ -192,6 +192,7 @@ static const char *const k_expected[][2] = {
     {"mounting.tilt", "auto"},
     {"set.arrangement", "single"}, {"set.n_bearings", "0"}, {"set.spacing_mm", "0"},
     {"set.load_offset_mm", "0"}, {"set.spacer_expansion_ppm_K", "0"},
+    {"set.inner_spacer_mm", "0"}, {"set.outer_spacer_mm", "0"},
     {"surroundings.housing_outer_diameter_mm", "0"}, {"surroundings.housing_length_mm", "0"},
     {"surroundings.housing_exterior", "convective"}, {"surroundings.shaft_length_mm", "0"},
     {"surroundings.shaft_bore", "derived"}, {"surroundings.shaft_bore_h_W_m2K", "500"},

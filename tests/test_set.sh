@@ -89,6 +89,58 @@ jqt "$TMP/hDB.json" '.set.spacer_growth_um > 0' "heated pair: the shaft grows ax
 db=$(jq '.set.preload_N' "$TMP/hDB.json")
 jqt "$TMP/hDF.json" ".set.preload_N > $db + 50" "heated alike: DF preload rises more than DB's ($db N)"
 
+# Separate inner and outer spacers (MODEL.md 14 L_s, L_h): spacers of a
+# material growing more than the shaft (16 ppm/K), the rest of the 30 mm gap
+# a shaft collar / housing shoulder. A longer inner spacer (30 mm against
+# 15 mm, the outer kept at 15 mm) grows more on the warm shaft: the axial
+# mismatch rises, which relieves the DB pair and loads the DF pair.
+sp="--set set.spacer_expansion_ppm_K=16 --set set.outer_spacer_mm=15"
+for a in DB DF; do
+    for Ls in 15 30; do
+        "$ACBB" run presets/pair-$a-heated.ini $sp --set set.inner_spacer_mm=$Ls --json >"$TMP/sp$a$Ls.json"
+    done
+    jq -n --slurpfile s "$TMP/sp${a}15.json" --slurpfile l "$TMP/sp${a}30.json" \
+        '$l[0].set.spacer_growth_um > $s[0].set.spacer_growth_um + 0.1' | grep -qx true
+    t $? "$a: a longer warm inner spacer grows more (set.spacer_growth_um up)"
+done
+jq -n --slurpfile s "$TMP/spDB15.json" --slurpfile l "$TMP/spDB30.json" \
+    '$l[0].set.preload_N < $s[0].set.preload_N - 1' | grep -qx true
+t $? "a longer warm inner spacer relieves the DB pair (MODEL.md 14 signs)"
+jq -n --slurpfile s "$TMP/spDF15.json" --slurpfile l "$TMP/spDF30.json" \
+    '$l[0].set.preload_N > $s[0].set.preload_N + 1' | grep -qx true
+t $? "a longer warm inner spacer loads the DF pair (MODEL.md 14 signs)"
+# Both lengths 0 (default) are the whole gap: the same run as giving them.
+"$ACBB" run presets/pair-DB-heated.ini --set set.inner_spacer_mm=30 --set set.outer_spacer_mm=30 \
+    --json | jq -S 'del(.wall_ms, .scene.keys)' >"$TMP/m30.json"
+jq -S 'del(.wall_ms, .scene.keys)' "$TMP/hDB.json" | cmp -s - "$TMP/m30.json"
+t $? "spacers given as the whole gap (30 mm) = the default matched spacers, number for number"
+"$ACBB" keys | grep -q 'set.inner_spacer_mm' && "$ACBB" keys | grep -q 'set.outer_spacer_mm'
+t $? "acbb keys lists set.inner_spacer_mm and set.outer_spacer_mm"
+
+# Shaft DOF (MODEL.md 14): the set solves dx, dz and the tilt about y; dy
+# and the tilt about z are 0 for every scene acbb accepts (no load in y, no
+# moment about z; ball azimuths 2 pi j / Z mirror about the x-z plane and
+# a bearing's reaction has no azimuthal force: set_mech.h). Under a radial
+# load, a moment and a load offset, each bearing's ball loads give a y force
+# and a moment about z of zero to round-off (1e-12 of the radial sum), while
+# the z forces balance the 400 N radial load (balls' radial components;
+# the contacts' friction in the ball plane makes the rest, under 1 %).
+"$ACBB" keys | grep -Eiq 'load_y|moment_z|_y_N|y_load' && echo "a y load key exists" >&2
+t $((! $?)) "acbb keys: no load in y and no moment about z (nothing breaks the x-z mirror)"
+for m in quasi-static quasi-dynamic; do
+    "$ACBB" run presets/pair-rigid-16k.ini --set fidelity.model=$m --set effects.heating=off \
+        --set operating.radial_load_N=400 --set operating.moment_load_Nm=5 \
+        --set set.load_offset_mm=80 --json >"$TMP/y$m.json"
+    jqt "$TMP/y$m.json" 'def r: . * 3.141592653589793 / 180;
+        [.bearings[].balls | {y: (map(.Qi_N * (.alpha_i_deg | r | cos) * (.psi_deg | r | sin)) | add),
+                              mz: (map(.Qi_N * (.alpha_i_deg | r | sin) * (.psi_deg | r | sin)) | add),
+                              z: (map(.Qi_N * (.alpha_i_deg | r | cos) * (.psi_deg | r | cos)) | add),
+                              s: (map(.Qi_N) | add)}]
+        | (map((.y | fabs) < 1e-12 * .s and (.mz | fabs) < 1e-12 * .s) | all)
+          and ((map(.z) | add) / 400 - 1 | fabs) < 0.01' \
+        "$m pair, radial load + moment + offset: y force and z moment of the balls 0 to round-off, z forces = 400 N"
+done
+
 # Spring preload keeps its axial preload: the floating bearing carries the
 # spring force to the solver tolerance while the rigid pair's rises.
 "$ACBB" run presets/pair-spring-16k.ini --json >"$TMP/spring.json"
@@ -218,6 +270,12 @@ t $? "DT with rigid preload and no thrust refused (exit $rc)"
 rc=$(refuse --set set.arrangement=DB --set set.spacing_mm=10)
 [ "$rc" = 2 ] && grep -q 'set.spacing_mm = 10 is shorter than bearing.width_mm = 15' "$TMP/err"
 t $? "spacer shorter than the bearing width refused (exit $rc)"
+rc=$(refuse --set set.arrangement=DB --set set.spacing_mm=45 --set set.inner_spacer_mm=40)
+[ "$rc" = 2 ] && grep -q 'set.inner_spacer_mm = 40 is longer than the gap between neighbouring rings' "$TMP/err"
+t $? "an inner spacer longer than the gap refused, key and rule named (exit $rc)"
+rc=$(refuse --set set.arrangement=DB --set set.spacing_mm=45 --set set.outer_spacer_mm=-5)
+[ "$rc" = 2 ] && grep -q 'set.outer_spacer_mm = -5: must be >= 0 mm' "$TMP/err"
+t $? "a negative outer spacer refused with its unit and range (exit $rc)"
 rc=$(refuse --set set.arrangement=DT --set set.n_bearings=5)
 [ "$rc" = 2 ] && grep -q 'set.n_bearings = 5: a set has at most 4 bearings' "$TMP/err"
 t $? "more than four bearings refused (exit $rc)"

@@ -19,6 +19,8 @@ screen | grep -q 'preload [0-9.]* N now, 200.0 N at assembly'
 ok $? "the preload now beside the assembly preload"
 screen | grep -q 'Set preload' && screen | grep -q 'Outer rings'
 ok $? "preload over time beside the outer-ring temperatures"
+screen | grep -q 'spacers: pitch 45.0 mm, inner 30.0 mm, outer 30.0 mm, growth +[0-9.]* um'
+ok $? "the spacing and the spacers (set.inner_spacer_mm, outer_spacer_mm) with their growth"
 keys ']'
 wait_for "showing bearing 1 of 2"
 ok $? "] shows bearing 1"

@@ -3,7 +3,8 @@
  * one row per bearing (which way it carries thrust, its axial load, outer
  * and inner ring temperatures, loss, modified life Lnm and least static
  * safety s0 (MODEL.md 15), lifted off or edge loaded), and the preload
- * over time beside each bearing's outer-ring temperature. [ and ] (or a
+ * over time beside each bearing's outer-ring temperature; the spacing and
+ * spacer lengths with the spacers' axial growth. [ and ] (or a
  * click on a row) choose the bearing the Run, Nodes and Balls screens show. */
 #include <math.h>
 #include <stdio.h>
@@ -84,6 +85,13 @@ static void draw(acbb_app *a)
              "   [ ] choose bearing", v->stiffness_axial * 1e-6, v->stiffness_radial * 1e-6,
              v->stiffness_tilt * 1e-3);
     table(a, b);
+    /* the spacers (MODEL.md 14 L_s, L_h) and what their growth does now;
+     * the row after the longest table (4 bearings) is free */
+    double L_in, L_out;
+    acbb_set_spacers(&a->st.scene, &L_in, &L_out);
+    acbb_put(a, b.y + TABLE_Y + ACBB_MAX_SET, b.x, b.w, ACBB_ROLE_NORMAL,
+             "spacers: pitch %.1f mm, inner %.1f mm, outer %.1f mm, growth %+.2f um (5: edit)", acbb_set_pitch(&a->st.scene) * 1e3, L_in * 1e3, L_out * 1e3,
+             v->spacer_growth * 1e6);
     int top = TABLE_Y + ACBB_MAX_SET + 1;
     acbb_rect r = { b.y + top, b.x, b.h - top, b.w };
     if (r.h >= 6) charts(a, r);

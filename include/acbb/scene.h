@@ -142,6 +142,8 @@ typedef struct {
     double set_load_offset;      /* nose x_F minus the set's centre x_0, m */
     double set_spacer_chi;       /* both spacers' expansion, 1/K; 0 = inner as the shaft,
                                   * outer as the housing (MODEL.md 14 chi_s, chi_h) */
+    double set_inner_spacer;     /* inner spacer length L_s, m; 0 = spacing - width (matched) */
+    double set_outer_spacer;     /* outer spacer length L_h, m; 0 = spacing - width (matched) */
 
     /* [surroundings] (MODEL.md 8.1, 13): sizes 0 = derived from the bearing
      * (acbb_scene_surroundings); housing and cap use materials.housing */

@@ -18,6 +18,12 @@ int acbb_set_layout(const acbb_scene *s, int orient[ACBB_MAX_SET], double x[ACBB
 /* Centre distance of neighbouring bearings, m (set.spacing_mm, 0 = one width). */
 double acbb_set_pitch(const acbb_scene *s);
 
+/* Lengths of the inner (shaft side) and outer (housing side) spacers
+ * between neighbours, m (MODEL.md 14 L_s, L_h): set.inner_spacer_mm and
+ * set.outer_spacer_mm, 0 = the gap between the rings (centre distance minus
+ * one width: matched spacers). Either pointer may be NULL. */
+void acbb_set_spacers(const acbb_scene *s, double *L_inner, double *L_outer);
+
 /* Short name of an arrangement ("single", "DB", ...). */
 const char *acbb_set_arrangement_name(acbb_set_arrangement a);
 

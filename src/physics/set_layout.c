@@ -15,6 +15,13 @@ double acbb_set_pitch(const acbb_scene *s)
     return s->set_spacing > 0.0 ? s->set_spacing : s->width;
 }
 
+void acbb_set_spacers(const acbb_scene *s, double *L_inner, double *L_outer)
+{
+    double gap = acbb_set_pitch(s) - s->width;
+    if (L_inner) *L_inner = s->set_inner_spacer > 0.0 ? s->set_inner_spacer : gap;
+    if (L_outer) *L_outer = s->set_outer_spacer > 0.0 ? s->set_outer_spacer : gap;
+}
+
 static int count(const acbb_scene *s)
 {
     static const int n[] = { 1, 2, 2, 2, 3, 4 };

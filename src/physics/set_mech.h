@@ -11,9 +11,16 @@
  * (a right-handed rotation about y moves a point at x by -tilt x in z, as
  * MODEL.md 3's A1 term does at the ring). MODEL.md 14 writes the tilt with
  * the opposite sign; only the name of the angle differs.
- * dy and the tilt about z stay 0: the scene has no load in y and no moment
- * about z, and the set is mirror-symmetric about the x-z plane (as the
- * single bearing, mechanics.h).
+ * dy and the tilt about z stay 0, and that is exact, not an approximation,
+ * for every scene acbb accepts: the scene has no load in y and no moment
+ * about z (no such key), the ball azimuths 2 pi j / Z mirror about the x-z
+ * plane (ball Z-j sees what ball j sees when dy = tilt_z = 0), and a
+ * bearing's reaction (MODEL.md 3, 4) has no azimuthal force (the contact
+ * friction acts in each ball's plane), so every bearing's Fy and Mz vanish
+ * at dy = tilt_z = 0 (mechanics.c sets them exactly) and those two
+ * equations hold there. A y load or a moment about z would need both
+ * unknowns (acbb_mech_prescribe takes dx, dz, tilt only); tests/test_set.sh
+ * checks the balls' y sums are 0 to round-off under radial load + moment.
  *
  * Ownership: a caller-owned plain value; the members (mechanics
  * workspaces and states) belong to the caller. */

@@ -45,15 +45,24 @@ acbb_status acbb_set_solve_shaft(acbb_set_sim *ss, acbb_error *err)
     return acbb_set_mech_solve(&ss->sm, mb, ss->s.inner_speed, err);
 }
 
-/* Axial growth of the inner path (shaft spacer, inner-ring halves) minus
- * the outer path (housing spacer, outer-ring halves) between neighbouring
- * centres moves the inner rings against the outer rings (MODEL.md 14); the
- * set's centre is the reference (the shaft's dx takes any common move). */
+/* Axial growth of the inner path (inner spacer L_s of the spacer material,
+ * the rest of the gap a shaft collar, inner-ring halves) minus the outer
+ * path (outer spacer L_h, the rest housing, outer-ring halves) between
+ * neighbouring centres moves the inner rings against the outer rings
+ * (MODEL.md 14 Delta_ax; spacers at the shaft's / housing's mean
+ * temperature); the set's centre is the reference (the shaft's dx takes
+ * any common move). */
+static double path_growth(double chi_sp, double chi_rest, double L_sp, double gap, double dT)
+{
+    return (chi_sp * L_sp + chi_rest * (gap - L_sp)) * dT;
+}
+
 static void spacer_growth(acbb_set_sim *ss)
 {
     const acbb_scene *s = &ss->s;
-    double u[ACBB_MAX_SET] = { 0 }, mean = 0.0;
-    double L = acbb_set_pitch(s) - s->width, h = 0.5 * s->width;
+    double u[ACBB_MAX_SET] = { 0 }, mean = 0.0, L_in, L_out;
+    double gap = acbb_set_pitch(s) - s->width, h = 0.5 * s->width;
+    acbb_set_spacers(s, &L_in, &L_out);
     double chi_in = s->set_spacer_chi > 0.0 ? s->set_spacer_chi : s->shaft.chi;
     double chi_out = s->set_spacer_chi > 0.0 ? s->set_spacer_chi : s->housing.chi;
     acbb_part_temps p[ACBB_MAX_SET];
@@ -62,9 +71,10 @@ static void spacer_growth(acbb_set_sim *ss)
     for (int k = 1; k < ss->n && s->thermal_expansion; k++) {
         const acbb_part_temps *a = &p[k - 1], *c = &p[k];
         double T0 = s->ambient_C;
-        double in = chi_in * (0.5 * (a->shaft + c->shaft) - T0) * L
+        double in = path_growth(chi_in, s->shaft.chi, L_in, gap, 0.5 * (a->shaft + c->shaft) - T0)
                   + s->ring.chi * (a->inner_ring + c->inner_ring - 2.0 * T0) * h;
-        double out = chi_out * (0.5 * (a->housing + c->housing) - T0) * L
+        double out = path_growth(chi_out, s->housing.chi, L_out, gap,
+                                 0.5 * (a->housing + c->housing) - T0)
                    + s->ring.chi * (a->outer_ring + c->outer_ring - 2.0 * T0) * h;
         u[k] = u[k - 1] + in - out;
     }

@@ -115,12 +115,21 @@ static double search_liftoff(lift_ctx *cp)
 {
     lift_ctx c = *cp;
     acbb_set_sim *ss = c.ss;
-    double lo = ss->sm.Fa * c.dir, hi = fmax(lo, 0.0) + ss->sm.Fp;
+    /* First bracket: a spring set lifts off at the spring force; a rigid
+     * opposed pair near 2^1.5 times the preload it carries now (MODEL.md
+     * 14, [HK-EC]; 3x: a little past it, and past it the walk doubles). */
+    double est = ss->sm.spring ? ss->sm.Fp : 3.0 * fmax(acbb_set_mech_preload(&ss->sm), ss->sm.Fp);
+    double lo = ss->sm.Fa * c.dir, hi = fmax(lo, 0.0) + est;
     double flo = lift_fn(lo, &c), fhi = lift_fn(hi, &c);
     if (flo <= 0.0) return 0.0;
+    /* Walk out to a bracket along the secant of the nearly linear F^(2/3),
+     * a quarter past its root (at least 1.25x, at most 4x a step). */
     for (int i = 0; i < 20 && fhi > 0.0; i++) {
+        double next = flo > fhi ? hi + 1.25 * (hi - lo) * fhi / (flo - fhi) : 4.0 * hi;
+        next = fmin(fmax(next, hi + 0.25 * fabs(hi)), hi + 3.0 * fabs(hi));
         lo = hi;
-        hi *= 2.0;
+        flo = fhi;
+        hi = next;
         fhi = lift_fn(hi, &c);
     }
     gsl_function F = { lift_fn, &c };

@@ -413,6 +413,25 @@ static acbb_status rule_preload(const acbb_scene *s, acbb_error *err)
                           show(s, "mounting", "preload_N", a));
 }
 
+/* The inner and outer spacers sit in the gap between neighbouring rings
+ * (centre distance minus one width); the rest of the gap, if any, is a
+ * shaft collar / housing shoulder (MODEL.md 14 L_s, L_h). */
+static acbb_status rule_spacers(const acbb_scene *s, acbb_error *err)
+{
+    static const char *const key[2] = { "inner_spacer_mm", "outer_spacer_mm" };
+    const double L[2] = { s->set_inner_spacer, s->set_outer_spacer };
+    double gap = acbb_set_pitch(s) - s->width;
+    char a[40], b[40], c[40];
+    for (int i = 0; i < 2; i++)
+        if (L[i] > 0.0 && L[i] > gap * (1.0 + 1e-12))
+            return acbb_error_set(err, ACBB_EINVAL, "set.%s = %s is longer than the gap between "
+                                  "neighbouring rings (set.spacing_mm = %s minus bearing.width_mm "
+                                  "= %s: %.6g mm): a spacer sits in that gap (0 = the whole gap)",
+                                  key[i], show(s, "set", key[i], a), show(s, "set", "spacing_mm", b),
+                                  show(s, "bearing", "width_mm", c), gap * 1e3);
+    return ACBB_OK;
+}
+
 /* A bearing set (MODEL.md 14): at most four bearings, the count the
  * arrangement has (DT: 2-4 in tandem), neighbours that do not overlap, and
  * a preload or thrust that loads every bearing's balls: a tandem set
@@ -438,6 +457,8 @@ static acbb_status rule_set(const acbb_scene *s, acbb_error *err)
                               "bearing.width_mm = %s: neighbouring bearings would overlap; the "
                               "centre distance is at least one width (0 = adjacent)",
                               show(s, "set", "spacing_mm", a), show(s, "bearing", "width_mm", b));
+    acbb_status rc = rule_spacers(s, err);
+    if (rc != ACBB_OK) return rc;
     if (dt && s->preload == ACBB_PRELOAD_DISPLACEMENT && s->axial_load == 0.0)
         return acbb_error_set(err, ACBB_ILL_POSED, "set.arrangement = DT with mounting.preload = "
                               "displacement and operating.axial_load_N = %s: a tandem set carries "

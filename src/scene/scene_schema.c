@@ -252,6 +252,12 @@ const acbb_sfield acbb_sf_table[] = {
     REAL("set", "spacer_expansion_ppm_K", "ppm/K", set_spacer_chi, 1e-6, 0, CC, 0, 100,
          "spacer material: its expansion coefficient (0 = inner spacer as the shaft, outer as "
          "the housing)"),
+    REAL("set", "inner_spacer_mm", "mm", set_inner_spacer, 1e-3, 0, CC, 0, 10000,
+         "inner (shaft side) spacer length between neighbours (0 = the gap: spacing - width, "
+         "matched spacers); its growth separates the inner rings"),
+    REAL("set", "outer_spacer_mm", "mm", set_outer_spacer, 1e-3, 0, CC, 0, 10000,
+         "outer (housing side) spacer length between neighbours (0 = the gap: spacing - width, "
+         "matched spacers); its growth separates the outer rings"),
 
     /* [surroundings] (MODEL.md 8.1, 13): 0 = derive from the bearing by
      * scaling the seed's 7008C rig (acbb_scene_surroundings in scene.h) */
