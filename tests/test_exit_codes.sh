@@ -95,6 +95,16 @@ jq -e '.status == "wall_limit" and .iterations == 0
 t $? "... ends wall_limit in the set-up: no step taken, finite JSON, the message says so"
 grep -q "wall_limit\|during the set-up" "$TMP/err"
 t $? "... and stderr names it"
+# A bearing set too (its run loop checks the bound between the set's
+# steps; before, a set was never bounded): a DB pair on the 9e7 s schedule.
+cp presets/pair-DB-heated.ini "$TMP/pair.ini"
+printf '\n[thermal]\nmax_time_s = 1e8\nmax_steps = 10000000\n\n[schedule]\nrow = 0, 15000, 300, 0\nrow = 90000000, 15000, 300, 0\n' \
+    >>"$TMP/pair.ini"
+timeout 120 "$ACBB" run "$TMP/pair.ini" $Q --max-wall 0.2 --json >"$TMP/w4.json" 2>"$TMP/err"
+code $? 3 "--max-wall 0.2 on a bearing set"
+jq -e '.status == "wall_limit" and .iterations >= 1 and .time_s < 9e7
+    and ([.. | numbers | select(isinfinite or isnan)] | length == 0)' "$TMP/w4.json" >/dev/null 2>&1
+t $? "... ends wall_limit after some steps, the set's JSON says so, finite"
 "$ACBB" run "$P" $Q --set fidelity.max_wall_s=1000 --json >"$TMP/w2.json" 2>/dev/null
 jq -e --slurpfile b "$TMP/base.json" '.status == "converged" and .losses_W.total == $b[0].losses_W.total
     and .iterations == $b[0].iterations' "$TMP/w2.json" >/dev/null 2>&1

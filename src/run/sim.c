@@ -1042,7 +1042,8 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     const acbb_network *nw = &sim->nw;
     if (sim->set) {
         acbb_set_sim_snapshot(sim->set, o);
-        if (sim->status == ACBB_CANCELLED) { /* cancelled by the run loop, not the set */
+        if (sim->status == ACBB_CANCELLED || sim->status == ACBB_WALL_LIMIT) {
+            /* ended by the run loop (cancel, wall-clock bound), not the set */
             o->state = sim->state;
             o->status = sim->status;
             snprintf(o->message, sizeof o->message, "%s", sim->msg);
