@@ -95,6 +95,12 @@ jq -e '.status == "wall_limit" and .iterations == 0
 t $? "... ends wall_limit in the set-up: no step taken, finite JSON, the message says so"
 grep -q "wall_limit\|during the set-up" "$TMP/err"
 t $? "... and stderr names it"
+# A sweep's points are bounded alike: each record says wall_limit, exit 3.
+"$ACBB" sweep presets/combined-load.ini --set fidelity.model=dynamic \
+    --grid operating.axial_load_N=300,400 --max-wall 0.001 --jsonl "$TMP/w5.jsonl" >/dev/null 2>"$TMP/err"
+code $? 3 "sweep --max-wall 0.001 at the dynamic level"
+[ "$(tail -n +2 "$TMP/w5.jsonl" | jq -r .status | sort -u)" = wall_limit ]
+t $? "... every point's record says wall_limit"
 # A bearing set too (its run loop checks the bound between the set's
 # steps; before, a set was never bounded): a DB pair on the 9e7 s schedule.
 cp presets/pair-DB-heated.ini "$TMP/pair.ini"
