@@ -63,6 +63,9 @@ done <<EOF_TABLE
 0| merge $TMP/m.jsonl $TMP/in.jsonl
 2| study $P --csv $NX/s.csv
 2| study $P --max-wall -3
+3| study $P --set fidelity.model=dynamic --max-wall 0.001 --csv -
+3| report $P --set fidelity.model=dynamic --max-wall 0.001 --json
+3| sensitivity $P --set fidelity.model=dynamic --max-wall 0.001 --metric losses_W.total
 EOF_TABLE
 
 [ "$(cmp -s "$TMP/keep.ini" "$P"; echo $?)" = 1 ] && grep -q '^axial_load_N = 1000$' "$TMP/keep.ini" &&
