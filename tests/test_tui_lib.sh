@@ -105,11 +105,11 @@ start() {
 field_index() {
     "$ACBB" keys | grep '^[a-z_]*\.[A-Za-z0-9_]* =' | grep -n "^$1 =" | cut -d: -f1 | awk '{print $1 - 1}'
 }
+# Home, then j as many times as the index: one send-keys for them all
+# (one tmux client per key took seconds for a key a hundred rows down).
 goto_field() {
-    keys Home
-    i=0
     idx=$(field_index "$1")
-    while [ "$i" -lt "$idx" ]; do keys j; i=$((i + 1)); done
+    if [ "$idx" -gt 0 ]; then keys Home $(yes j | head -n "$idx"); else keys Home; fi
 }
 tty_restored() { grep -qw icanon "$1" && grep -qw echo "$1"; }
 

@@ -19,6 +19,8 @@ struct acbb_dyn {
     acbb_traction_contact ci[ACBB_DYN_MAX_THREADS], co[ACBB_DYN_MAX_THREADS];
     long windows[ACBB_DYN_MAX_THREADS]; /* integrated by each worker (acbb_dyn_windows) */
     const atomic_int *cancel;   /* caller's flag, checked in every rhs call */
+    acbb_dyn_stop_fn stop;      /* caller's bound (acbb_dyn_set_stop), or NULL */
+    const void *stop_ctx;
     double skip_tol;            /* 0: every call integrates (see acbb_dyn_set_skip) */
     /* Inputs of each ball's last window and the relative move of omega_m
      * it made; in_ok[j] = 0: none yet. */
@@ -29,6 +31,8 @@ struct acbb_dyn {
 typedef struct {
     acbb_traction_contact *ci, *co; /* the worker's tables */
     const atomic_int *cancel;
+    acbb_dyn_stop_fn stop;
+    const void *stop_ctx;
     const acbb_geometry *g;
     const acbb_scene *s;
     const acbb_quad *quad;
@@ -111,7 +115,7 @@ static int rhs(double t, const double y[], double dydt[], void *p)
     (void)t;
     dyn_ctx *c = p;
     /* A window can take seconds: GSL's driver stops at once on a failed rhs. */
-    if (acbb_cancelled(c->cancel)) return GSL_EBADFUNC;
+    if (acbb_cancelled(c->cancel) || (c->stop && c->stop(c->stop_ctx))) return GSL_EBADFUNC;
     const acbb_geometry *g = c->g;
     acbb_ball_state *b = &c->b;
     double wi = c->omega_i, mass = g->mass, X2 = y[1] * 1e-6, V1 = y[2] * 1e-3, V2 = y[3] * 1e-3;
@@ -202,6 +206,12 @@ void acbb_dyn_set_cancel(acbb_dyn *d, const atomic_int *cancel)
     d->cancel = cancel;
 }
 
+void acbb_dyn_set_stop(acbb_dyn *d, acbb_dyn_stop_fn stop, const void *ctx)
+{
+    d->stop = stop;
+    d->stop_ctx = ctx;
+}
+
 void acbb_dyn_set_skip(acbb_dyn *d, double tol)
 {
     d->skip_tol = tol > 0.0 ? tol : 0.0;
@@ -266,6 +276,7 @@ acbb_status acbb_dyn_ball_on(acbb_dyn *d, int w, const acbb_dyn_env *env, acbb_m
     if (skip_ball(d, j, b, in)) return ACBB_OK;
     d->windows[w]++;
     dyn_ctx c = { .ci = &d->ci[w], .co = &d->co[w], .cancel = d->cancel,
+                  .stop = d->stop, .stop_ctx = d->stop_ctx,
                   .g = acbb_mech_geometry(env->m), .s = env->s, .quad = env->quad,
                   .oil_i = env->oil_i, .oil_o = env->oil_o, .mix = env->mix, .b = *b,
                   .omega_i = omega_i };
@@ -299,6 +310,9 @@ acbb_status acbb_dyn_ball_on(acbb_dyn *d, int w, const acbb_dyn_env *env, acbb_m
     gsl_odeiv2_driver_free(drv);
     if (rc == GSL_EBADFUNC && acbb_cancelled(d->cancel))
         return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
+    acbb_status why = rc == GSL_EBADFUNC && d->stop ? d->stop(d->stop_ctx) : ACBB_OK;
+    if (why != ACBB_OK)
+        return acbb_error_set(err, why, "%s", "stopped by the run's bound; last good state kept");
     if (rc != GSL_SUCCESS)
         return acbb_error_set(err, ACBB_DIVERGED, "dynamic model: integration of ball %d failed "
                               "(GSL status %d)", j + 1, rc);

@@ -52,6 +52,13 @@ int acbb_dyn_threads(const acbb_dyn *d);
  * with ACBB_CANCELLED within one right-hand-side evaluation. */
 void acbb_dyn_set_cancel(acbb_dyn *d, const atomic_int *cancel);
 
+/* A caller's bound beside the cancel flag (the run's wall-clock bound,
+ * fidelity.max_wall_s): `stop(ctx)` is called in every right-hand-side
+ * evaluation, from the worker threads (it must only read); a non-zero
+ * acbb_status ends the window with that status. NULL: none. */
+typedef acbb_status (*acbb_dyn_stop_fn)(const void *ctx);
+void acbb_dyn_set_stop(acbb_dyn *d, acbb_dyn_stop_fn stop, const void *ctx);
+
 /* Inside transient steps: a ball whose last window had settled (moved
  * omega_m by less than 1e-6 relative) and whose loads, contact angles and
  * inlet viscosities moved less than tol (relative; radians for the angles)

@@ -450,6 +450,7 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     for (int k = 0; k < ss->n; k++) {
         acbb_status rc = acbb_sim_create(&m, o, &ss->b[k], err);
         if (rc != ACBB_OK) return rc;
+        acbb_simm_unbound(ss->b[k]); /* the set's run loop bounds its steps */
         nw[k] = acbb_simm_network(ss->b[k]);
         if (!(ss->scratch[k] = malloc(sizeof *ss->scratch[k])))
             return acbb_error_set(err, ACBB_ENOMEM, "out of memory");

@@ -48,6 +48,9 @@ double acbb_simm_loss(const acbb_sim *b);         /* total loss, W */
 void acbb_simm_speed(acbb_sim *b, double inner_speed); /* rad/s, the set's schedule */
 void acbb_simm_expand(acbb_sim *b);               /* expansions at b's temperatures */
 void acbb_simm_mode(acbb_sim *b, int transient, int polishing);
+/* Drop b's wall-clock deadline after its set-up (fidelity.max_wall_s then
+ * bounds the set's steps in the run loop, not each member's). */
+void acbb_simm_unbound(acbb_sim *b);
 acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err);
 acbb_status acbb_simm_heat(acbb_sim *b, acbb_error *err);
 void acbb_simm_save(acbb_sim *b);
