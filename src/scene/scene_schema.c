@@ -339,7 +339,7 @@ const acbb_sfield acbb_sf_table[] = {
     REAL("fidelity", "target_error_pct", "%", target_error, 0.01, 0, CC, 0, 100,
          "cheapest stored settings within this error (0 = off; wins over preset)"),
     REAL("fidelity", "max_wall_s", "s", max_wall_s, 1.0, 0, CC, 0, 1e7,
-         "wall-clock bound of a run's steps (0 = none): ends wall_limit, last good state kept"),
+         "wall-clock bound of a run, set-up included (0 = none): ends wall_limit, last good state kept"),
 
     REAL("thermal", "max_time_s", "s", max_time, 1.0, 36000, OC, 0, 1e8,
          "simulated time limit"),
