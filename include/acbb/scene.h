@@ -226,7 +226,7 @@ void acbb_scene_default(acbb_scene *s);
  * it to its own copy (acbb_sim_new). */
 void acbb_lubricant_apply(acbb_scene *s);
 double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
-double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, both in mm^2/s */
+double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, mm^2/s; NAN: nu100 < 2 */
 double acbb_nu100_from_vi(double nu40, double vi);     /* mm^2/s: VI(nu40, result) = vi */
 
 /* Load a preset: starts from acbb_scene_default, then applies every key.
