@@ -41,23 +41,36 @@ static void test_issue_case(void)
 
 static void test_heating_off(void)
 {
-    acbb_scene s;
-    acbb_scene_default(&s);
-    s.heating = false;
-    s.bore_bc.dT = 10.0;
-    acbb_snapshot snap;
-    acbb_error err = { "" };
-    ok(run(&s, &snap, &err) == ACBB_OK, "heating off with a coolant offset converges");
-    ok(snap.heat_in == 0.0 && snap.heat_out == 0.0, "heating off: no heat flow (%g in, %g out)",
-       snap.heat_in, snap.heat_out);
+    for (int net = 0; net < 2; net++) {
+        acbb_scene s;
+        acbb_scene_default(&s);
+        s.heating = false;
+        s.network = net ? ACBB_NET_7 : ACBB_NET_46;
+        s.bore_bc.kind = ACBB_BC_CONVECTIVE;
+        s.bore_bc.dT = 10.0;
+        if (net) { /* the end cap exists on the 7-node network only */
+            s.cap_bc.kind = ACBB_BC_CONVECTIVE;
+            s.cap_bc.dT = -8.0;
+        }
+        s.radial_load = 150.0;
+        acbb_snapshot snap;
+        acbb_error err = { "" };
+        ok(run(&s, &snap, &err) == ACBB_OK, "%s-node, heating off with coolant offsets: %s",
+           net ? "7" : "46", err.msg[0] ? err.msg : "converges");
+        ok(snap.heat_in == 0.0 && snap.heat_out == 0.0,
+           "%s-node, heating off: no heat flow (%g in, %g out)", net ? "7" : "46", snap.heat_in,
+           snap.heat_out);
+    }
 }
 
-/* Random valid scenes: speed, axial load, network, bore boundary, the EHL
- * rolling loss; steady and transient. rand_r: reproducible. */
+/* Random valid scenes: speed, axial load, a radial load (the tilt free,
+ * issue 18) within the ill-posedness guard (Fa >= 1.25 Fr tan 15 deg),
+ * network, bore boundary, lubrication method with churning, an ISO grade,
+ * the EHL rolling loss; steady and transient. rand_r: reproducible. */
 static void test_random_sample(void)
 {
     unsigned seed = 18;
-    int n_conv[2] = { 0, 0 }, n_bal[2] = { 0, 0 }, n[2] = { 0, 0 };
+    int n_conv[2] = { 0, 0 }, n_bal[2] = { 0, 0 }, n[2] = { 0, 0 }, n_rad = 0, n_jet = 0;
     double worst[2] = { 0, 0 };
     for (int k = 0; k < 16; k++) {
         acbb_scene s;
@@ -75,13 +88,25 @@ static void test_random_sample(void)
             s.bore_bc.dT = (double)(rand_r(&seed) % 20) - 5.0;
         }
         s.loss_ehl_rolling = rand_r(&seed) % 2;
+        if (rand_r(&seed) % 2) s.radial_load = (double)(rand_r(&seed) % (int)(s.axial_load));
+        if (rand_r(&seed) % 2) {
+            s.lub_method = ACBB_LUB_OIL_JET;
+            s.loss_churning = true;
+        }
+        if (rand_r(&seed) % 2) {
+            s.oil_grade = ACBB_GRADE_VG22 + (acbb_oil_grade)(rand_r(&seed) % 3);
+            acbb_lubricant_apply(&s);
+        }
+        n_rad += s.radial_load > 0.0;
+        n_jet += s.lub_method == ACBB_LUB_OIL_JET;
         acbb_snapshot snap;
         acbb_error err = { "" };
         acbb_status rc = run(&s, &snap, &err);
         n[net]++;
         if (snap.state != ACBB_RUN_CONVERGED) {
-            printf("# %s %d rpm %.0f N: %s\n", net ? "7" : "46", (int)(s.inner_speed * 60 / (2 * M_PI)),
-                   s.axial_load, acbb_status_name(rc));
+            printf("# %s %d rpm %.0f N, %.0f N radial: %s\n", net ? "7" : "46",
+                   (int)(s.inner_speed * 60 / (2 * M_PI)), s.axial_load, s.radial_load,
+                   acbb_status_name(rc));
             continue;
         }
         n_conv[net]++;
@@ -89,6 +114,7 @@ static void test_random_sample(void)
         worst[net] = fmax(worst[net], rel);
         n_bal[net] += rel <= ACBB_BALANCE_TOL;
     }
+    printf("# %d of 16 with a radial load, %d oil-jet with churning\n", n_rad, n_jet);
     for (int net = 0; net < 2; net++) {
         ok(n_conv[net] == n[net], "%s-node: %d of %d random scenes converge", net ? "7" : "46",
            n_conv[net], n[net]);

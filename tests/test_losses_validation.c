@@ -116,6 +116,9 @@ static int compute(row *r, int cap)
         const skf_bearing *kb = strcmp(r[i].name, "6008") == 0 ? &k_dgbb60 : &k_acbb72b;
         r[i].skf = skf_moment(kb, s.bore * 1e3, s.outer_diameter * 1e3, r[i].n, 30.0, r[i].Fr,
                               r[i].Fa, &r[i].skf_rr);
+        if (!(g1 && g2))
+            printf("# %s %.0f rpm Fr %.0f Fa %.0f: %s set did not converge\n", r[i].name,
+                   r[i].n, r[i].Fr, r[i].Fa, g1 ? "extended" : "seed");
         good &= g1 && g2;
     }
     return good ? k : -1;

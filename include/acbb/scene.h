@@ -46,7 +46,7 @@ typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode
 /* [set] arrangement (MODEL.md 14): single = one bearing (today's scenes). */
 typedef enum { ACBB_SET_SINGLE, ACBB_SET_DB, ACBB_SET_DF, ACBB_SET_DT, ACBB_SET_DBT,
                ACBB_SET_QBC } acbb_set_arrangement;
-/* mounting.tilt (issue 18): auto = free only under a moment (the seed's). */
+/* mounting.tilt (issue 18): auto (default) = free: solved under any off-axis load. */
 typedef enum { ACBB_TILT_AUTO, ACBB_TILT_FREE, ACBB_TILT_HELD } acbb_tilt_mode;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 /* fidelity.preset (fidelity.h): custom = the individual knobs. */
@@ -228,7 +228,7 @@ void acbb_scene_default(acbb_scene *s);
  * it to its own copy (acbb_sim_new). */
 void acbb_lubricant_apply(acbb_scene *s);
 double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
-double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, both in mm^2/s */
+double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, mm^2/s; NAN: nu100 < 2 */
 double acbb_nu100_from_vi(double nu40, double vi);     /* mm^2/s: VI(nu40, result) = vi */
 
 /* Load a preset: starts from acbb_scene_default, then applies every key.

@@ -2,19 +2,29 @@
  *
  * Force: the closed form for elliptical contacts quoted in Harris &
  * Kotzalas, Advanced Concepts of Bearing Technology (2006), friction
- * chapter ([HK-AC], after Houpert and Chiu 1974):
+ * chapter ([HK-AC], after Houpert; Chiu's theory of the hydrodynamic
+ * rolling force with starvation: Y.P. Chiu, ASME J. Lubr. Technol. 96(2)
+ * 237, 1974):
  *   F_R = 2.86 E' Rx^2 kappa^0.348 G^0.022 U^0.66 W^0.47,
- * isothermal and fully flooded, fitted over the Hamrock-Dowson range
- * (kappa 1-8, U 1e-12 to 1e-9, G 2500-5000, W 1e-7 to 1e-5: UNSURE, the
- * fit's own range could not be checked against the source here).
+ * isothermal and fully flooded. UNSURE: written from memory of [HK-AC];
+ * no public copy of [HK-AC], of Houpert's paper or of an implementation
+ * could be found to check the constant, the exponents or the fit's range
+ * (searched in issue 18's third session: web pages, docs, code), so it has
+ * no source example test (tests/test_losses_ext.c checks the arithmetic
+ * and the trends). Its speed and viscosity exponent 0.66 is close to the
+ * SKF model's (nu n)^0.6 for the same rolling moment (see
+ * docs/losses_validation.md).
  * Inlet shear heating: the film's thermal factor phi_T (Gupta 1992,
  * MODEL.md 5) multiplies F_R as it multiplies h_c, both being set by the
- * inlet pressure build-up, as [HK-AC] apply it.
+ * inlet pressure build-up (UNSURE: how [HK-AC] apply it).
  * Starvation / replenishment: the kinematic factor of the SKF friction
- * model (SKF, "The SKF model for calculating the frictional moment", 2004
- * general catalogue section): K_rs = 3e-8 for oil bath and oil jet, 6e-8
- * for grease and oil-air; K_Z = 3.1 deep groove, 4.4 single-row angular
- * contact ball bearings. */
+ * model (SKF General Catalogue 6000 EN, 2005, "Kinematic replenishment/
+ * starvation reduction factor"): phi_rs = exp(-K_rs nu n (d + D)
+ * sqrt(K_Z / (2 (D - d)))), K_rs = 3e-8 for low-level oil bath and oil jet,
+ * 6e-8 for grease and oil-air; K_Z = 3.1 deep groove, 4.4 single-row
+ * angular contact. The form, K_rs and K_Z = 3.1 agree with a public
+ * implementation of the SKF model found in the code index (its repository
+ * not named there); K_Z = 4.4 is from memory of the catalogue (UNSURE). */
 #include <math.h>
 #include "ehl_rolling.h"
 

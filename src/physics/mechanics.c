@@ -39,6 +39,8 @@ struct acbb_mech {
     double dz_fixed, thy_fixed; /* the held radial displacement (m) and tilt (rad) */
     int hold_radial;            /* dz held at dz_hold, the tilt free (stiffness.h) */
     double dz_hold;
+    int hold_tilt;              /* thy held at thy_hold, dz free (stiffness.h) */
+    double thy_hold;
     gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
     double ring_J[MAX_RING_DOF + 1][MAX_RING_DOF * MAX_RING_DOF]; /* last, per DOF count */
     int ring_J_ok[MAX_RING_DOF + 1];
@@ -731,6 +733,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (m->fix_axial) w->dx = m->dx_fixed;
     if (m->prescribed) prescribed_state(m, w);
     if (m->hold_radial) w->dz = m->dz_hold;
+    if (m->hold_tilt) w->thy = m->thy_hold;
     for (int j = 0; j < w->n; j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
@@ -800,13 +803,6 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
     m->Fz = s->radial_load;
     m->My = s->moment_load;
     m->dof_dz = s->radial_load != 0.0 || s->moment_load != 0.0;
-    /* mounting.tilt (issue 18): free solves the tilt whenever the ring
-     * moves off-axis, so a moment of 0 and of 1e-3 N m are the same problem
-     * (without radial load or moment the tilt is 0 by symmetry); held keeps
-     * it 0 (a moment is refused by the rules); auto frees it only under a
-     * moment, the seed's rule, kept so the seed presets do not move. */
-    m->dof_thy = s->tilt == ACBB_TILT_FREE ? m->dof_dz
-               : s->tilt == ACBB_TILT_HELD ? 0 : s->moment_load != 0.0;
     /* Deep groove (nominal angle 0) without thrust or moment: the bearing is
      * mirror-symmetric about the groove plane, so the inner ring sits
      * axially centred (A1 = 0 in MODEL.md 3, dx = -A0 sin alpha0) and the
@@ -818,6 +814,16 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
         m->fix_axial = 1;
         m->dx_fixed = -m->g.A0 * sin(m->g.alpha0);
     }
+    /* mounting.tilt (issue 18): the tilt is solved whenever the ring moves
+     * off-axis (auto, the default, and free), so a moment of 0 and of
+     * 1e-3 N m are the same problem: M = 0 states the moment, not the tilt.
+     * Without radial load or moment the tilt is 0 by symmetry and not
+     * solved (pure thrust: the seed's problem, unchanged). held keeps it 0
+     * (a moment is refused by the rules). A centred deep-groove ring (no
+     * thrust, no moment) is mirror-symmetric about the groove plane: its
+     * tilt is 0 by symmetry like its axial offset, and not solved (its
+     * tilt stiffness vanishes with the contact angle). */
+    m->dof_thy = s->tilt == ACBB_TILT_HELD || m->centred ? 0 : m->dof_dz;
     m->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     m->brent_z = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     m->brent_a = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -866,7 +872,7 @@ void acbb_mech_adopt_state(const acbb_mech *m, acbb_mech_state *st)
     st->symmetric = sym;
     st->mirror = !sym; /* Fy and Mz are not scene loads, dy and thz never move */
     st->dz = m->dof_dz ? st->dz : m->hold_radial ? m->dz_hold : 0.0;
-    st->thy = m->dof_thy ? st->thy : 0.0;
+    st->thy = m->dof_thy ? st->thy : m->hold_tilt ? m->thy_hold : 0.0;
 }
 
 acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *err)
@@ -940,4 +946,11 @@ void acbb_mech_hold_radial(acbb_mech *m, double dz)
     m->hold_radial = 1;
     m->dz_hold = dz;
     m->dof_dz = 0;
+}
+
+void acbb_mech_hold_tilt(acbb_mech *m, double thy)
+{
+    m->hold_tilt = 1;
+    m->thy_hold = thy;
+    m->dof_thy = 0;
 }

@@ -165,6 +165,10 @@ void acbb_mech_prescribe(acbb_mech *m, double dx, double dz, double thy);
  * scene says: the radial-held tilt stiffness (stiffness.h). */
 void acbb_mech_hold_radial(acbb_mech *m, double dz);
 
+/* Hold the ring's tilt at thy (rad), the other DOFs as the scene says:
+ * the radial stiffness at the operating tilt (stiffness.h). */
+void acbb_mech_hold_tilt(acbb_mech *m, double thy);
+
 /* Combined inner-outer stiffness K_n and the static closed-form angle for
  * a pure thrust Fx at zero speed (independent reference used by tests and
  * for the initial guess): solves Fx = Z K_n A0^1.5 (cos a0/cos a - 1)^1.5 sin a. */

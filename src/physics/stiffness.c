@@ -19,16 +19,24 @@ static void warm_start(const acbb_mech *m, const acbb_mech_state *warm, acbb_mec
     acbb_mech_adopt_state(m, st);
 }
 
+/* What a probe holds besides the axial load: the radial probe keeps the
+ * tilt at the operating point's (0 in pure thrust, the seed's radial
+ * stiffness; the catalogue's, the ring guided by the shaft), the tilt
+ * probes leave the ring free radially or hold it (issue 18). */
+enum { PROBE_RADIAL, PROBE_TILT, PROBE_TILT_HELD };
+
 /* delta_z and theta_y of the equilibrium of scene s. */
 static acbb_status solve_point(const acbb_scene *s, const acbb_expansion *e, double dx_held,
-                               const acbb_mech_state *warm, int held, double *dz, double *thy)
+                               const acbb_mech_state *warm, int probe, double *dz, double *thy)
 {
     acbb_mech *m = NULL;
     acbb_mech_state *st = malloc(sizeof *st);
     acbb_status rc = st ? acbb_mech_new(s, &m, NULL) : ACBB_ENOMEM;
     if (rc == ACBB_OK && s->preload == ACBB_PRELOAD_DISPLACEMENT)
         acbb_mech_fix_axial(m, 1, dx_held);
-    if (rc == ACBB_OK && held) acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
+    if (rc == ACBB_OK && probe == PROBE_TILT_HELD)
+        acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
+    if (rc == ACBB_OK && probe == PROBE_RADIAL) acbb_mech_hold_tilt(m, warm ? warm->thy : 0.0);
     int cold = 1;
     if (rc == ACBB_OK && warm) {
         warm_start(m, warm, st);
@@ -46,17 +54,16 @@ static acbb_status solve_point(const acbb_scene *s, const acbb_expansion *e, dou
     return rc;
 }
 
-/* Central difference of the response to a load nudged by +-h around v
- * (tilt: 1 radial free, 2 radial held at the warm state's). */
+/* Central difference of the response to a load nudged by +-h around v. */
 static double difference(acbb_scene *s, double *load, double h, const acbb_expansion *e,
-                         double dx_held, const acbb_mech_state *warm, int tilt)
+                         double dx_held, const acbb_mech_state *warm, int probe)
 {
     double v = *load, r[2] = { 0, 0 }, other;
     acbb_status rc = ACBB_OK;
     for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
         *load = v + (k ? -h : h);
-        rc = tilt ? solve_point(s, e, dx_held, warm, tilt == 2, &other, &r[k])
-                  : solve_point(s, e, dx_held, warm, 0, &r[k], &other);
+        rc = probe != PROBE_RADIAL ? solve_point(s, e, dx_held, warm, probe, &other, &r[k])
+                                   : solve_point(s, e, dx_held, warm, probe, &r[k], &other);
     }
     *load = v;
     double K = 2.0 * h / (r[0] - r[1]);
@@ -70,9 +77,9 @@ acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, do
     /* A nudge of 1 % of the axial load (at least 1 N, 1 N m at the pitch
      * radius): small against the loads, large against solver noise. */
     double h = fmax(0.01 * fabs(s->axial_load), 1.0);
-    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, 0);
-    out->tilt = difference(&t, &t.moment_load, h * 0.5 * s->pitch_diameter, e, dx_held, warm, 1);
-    out->tilt_held = difference(&t, &t.moment_load, h * 0.5 * s->pitch_diameter, e, dx_held,
-                                warm, 2);
+    double hm = h * 0.5 * s->pitch_diameter;
+    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, PROBE_RADIAL);
+    out->tilt = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT);
+    out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT_HELD);
     return ACBB_OK;
 }

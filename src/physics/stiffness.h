@@ -2,8 +2,9 @@
  * (issue "any bearing", outputs): central differences of the quasi-static
  * (race-control) equilibrium in radial load and in moment, at the given
  * expansions, with the axial load (or the displacement preload) held.
- * Radial: the tilt as mounting.tilt says; tilt: radial free, and its
- * twin with the ring held radially (issue 18: the constraint named). The
+ * Radial: the tilt held at the operating point's (0 in pure thrust);
+ * tilt: radial free, and its twin with the ring held radially (issue 18:
+ * the constraint named). The
  * axial stiffness comes from the coupled state itself (sim.c). */
 #ifndef ACBB_STIFFNESS_H
 #define ACBB_STIFFNESS_H
@@ -14,7 +15,7 @@
 #include "acbb/status.h"
 
 typedef struct {
-    double radial;      /* dFz/d(delta_z), N/m */
+    double radial;      /* dFz/d(delta_z), tilt held, N/m */
     double tilt;        /* dMy/d(theta_y), radial free, N m/rad */
     double tilt_held;   /* dMy/d(theta_y) with the ring held radially, N m/rad */
 } acbb_stiffness;

@@ -6,11 +6,9 @@
  *   reference oils with the same nu100: VI = 100 (L - U)/(L - H) for
  *   U >= H, else VI = (10^N - 1)/0.00715 + 100 with
  *   N = (log H - log U)/log Y. For Y > 70 mm^2/s the standard gives
- *   L = 0.8353 Y^2 + 14.67 Y - 216, H = 0.1684 Y^2 + 11.85 Y - 97. For
- *   Y <= 70 it tabulates L and H; that table is not reproduced here:
- *   log L and log H are interpolated linearly in log Y between the
- *   table's first row (Y = 2: L = 7.994, H = 6.394) and the formulas at
- *   Y = 70 (UNSURE: an interpolation, not the table). Below Y = 2, where
+ *   L = 0.8353 Y^2 + 14.67 Y - 216, H = 0.1684 Y^2 + 11.85 Y - 97; from
+ *   2 to 70 it tabulates L and H (viscosity_index_table.c, interpolated
+ *   linearly between rows as the standard says). Below Y = 2, where
  *   D2270 is not defined, see below_range().
  * - Pressure-viscosity: Wooster's correlation for mineral oils,
  *   alpha = (0.6 + 0.965 log10 eta0[cP]) 1e-8 1/Pa (as quoted in
@@ -22,6 +20,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include "lubricant_grade.h"
+#include "viscosity_index_table.h"
 
 static const double k_midpoint[ACBB_GRADES] = {
     0, 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500,
@@ -32,34 +31,22 @@ double acbb_grade_midpoint(acbb_oil_grade g)
     return g > ACBB_GRADE_CUSTOM && g < ACBB_GRADES ? k_midpoint[g] : 0.0;
 }
 
-#define Y_TABLE_END 70.0
-#define Y0 2.0
-#define L0 7.994
-#define H0 6.394
+#define Y0 2.0 /* D2270's first row */
 
 static double L_formula(double Y) { return 0.8353 * Y * Y + 14.67 * Y - 216.0; }
 static double H_formula(double Y) { return 0.1684 * Y * Y + 11.85 * Y - 97.0; }
 
-/* log-log line through (Y0, v0) and (70, formula) */
-static double table_line(double Y, double v0, double v70)
-{
-    double t = log(Y / Y0) / log(Y_TABLE_END / Y0);
-    return exp(log(v0) + t * (log(v70) - log(v0)));
-}
-
+/* L and H for Y >= 2 (the table, then the formulas above 70) */
 static void ref_oils(double Y, double *L, double *H)
 {
-    if (Y > Y_TABLE_END) {
-        *L = L_formula(Y);
-        *H = H_formula(Y);
-        return;
-    }
-    *L = table_line(Y, L0, L_formula(Y_TABLE_END));
-    *H = table_line(Y, H0, H_formula(Y_TABLE_END));
+    if (acbb_d2270_table(Y, L, H)) return;
+    *L = L_formula(Y);
+    *H = H_formula(Y);
 }
 
 double acbb_viscosity_index(double nu40, double nu100)
 {
+    if (!(nu100 >= Y0)) return NAN; /* outside D2270 */
     double L, H;
     ref_oils(nu100, &L, &H);
     if (nu40 >= H) return 100.0 * (L - nu40) / (L - H);

@@ -236,8 +236,8 @@ const acbb_sfield acbb_sf_table[] = {
     REAL("mounting", "preload_N", "N", preload_force, 1.0, 300, CC, 0, 1e6,
          "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
     ENUM("mounting", "tilt", tilt, k_tilt, ACBB_TILT_AUTO,
-         "inner-ring tilt: free (solved whenever radial load or moment act), held (0), or "
-         "auto (free only under a moment: the seed's rule, discontinuous at 0 N m)"),
+         "inner-ring tilt: auto and free (solved whenever radial load or moment act, 0 N m "
+         "included), or held (0; the tilt before issue 18 at 0 N m)"),
 
     /* [set] (MODEL.md 14): a spindle set; single = today's one bearing */
     ENUM("set", "arrangement", set_arrangement, k_set, ACBB_SET_SINGLE,
