@@ -12,8 +12,9 @@
  * inner contacts unload with speed, where a rigid preload's grow (the
  * centrifugal ball load and the inner ring's growth are held between the
  * rings), so that on a rigid mounting the skid ratio below levels off
- * under 1 with speed (measured for the 7008C: 0.90 at 30 000 rpm and 1 N,
- * isothermal; docs/ratings.md) and the skid floor binds only with a spring.
+ * under 1 with speed (both grow as omega^2; measured for the 7008C at
+ * 30 000 rpm and 1 N, isothermal: 0.90) and the skid floor binds only with
+ * a spring (tests/test_life_skid.sh).
  *
  * Skid (from the ball speeds of the traction model): the gyroscopic
  * moment the ball's orbit and spin need, M_g = J omega_m |omega_perp|
@@ -25,7 +26,12 @@
  * contact, which at speed is the lighter one, as the stated choice of
  * this map), with mu = lubricant.limiting_shear_ratio, the most traction
  * the film can carry (MODEL.md 5). skid = max over balls of the ratio; a
- * cell skids when skid > 1.
+ * cell skids when skid > 1. MODEL.md 11's table states Jones's condition
+ * at the outer contact (2 M_g / D > mu Q_o: pivoting under outer race
+ * control); the inner contact is the stricter of the two at speed. With
+ * the traction model (quasi-dynamic) M_g is the moment the two contacts'
+ * traction does supply, so skid > 1 says the inner contact alone could not
+ * hold it; quasi-static, M_g is race control's (omega_y' = 0).
  *
  * Upper limits (each 0 = not checked): the hottest of the rings and the
  * ball at most max_rise_K above ambient, L_nmr at least min_life_h, s0 at
