@@ -22,6 +22,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_MAX_RISE] = { "max-rise", "K", "upper limit: rings and ball at most K above ambient (0 = off)" },
     [CLI_OPT_MIN_LIFE] = { "min-life", "H", "upper limit: modified rating life L_nmr at least H hours (0 = off)" },
     [CLI_OPT_MIN_S0] = { "min-s0", "S", "upper limit: static safety s0 at least S (0 = off)" },
+    [CLI_OPT_SPRING] = { "spring", NULL, "a spring (constant-force) preload: each cell's preload "
+                         "is the axial load (default: rigid, set at rest and held)" },
     [CLI_OPT_TRANSIENT] = { "transient", NULL, "run each point's transient (default: the steady "
                             "solve; only the transient catches a runaway)" },
     [CLI_OPT_REPEAT] = { "repeat", "N", "time every measurement N times, report the median" },

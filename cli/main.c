@@ -123,8 +123,11 @@ const acbb_cli_command acbb_cli_commands[] = {
       "transient from ambient. Below the window the balls skid (the gyroscopic\n"
       "moment beats the traction of the inner contact, from the ball speeds); above\n"
       "it a limit fails (--max-rise, --min-life, --min-s0) or the run runs away.\n"
+      "--spring: a constant-force preload instead (a rigid one's inner contact load\n"
+      "grows with speed, so on it the balls seldom skid; see preload-window-spring).\n"
       "--csv: speed_rpm, preload_N, status, verdict and the limits' values per cell.\n",
       SCENE_OPTS | O(SPEEDS) | O(PRELOADS) | O(MAX_RISE) | O(MIN_LIFE) | O(MIN_S0) | O(CSV) |
+      O(SPRING) |
       O(PLOT) | O(JOBS), 1, 1, 0, acbb_cli_cmd_preload_map },
     { "presets", NULL, "[DIR]", "the preset search path and the presets in it",
       NULL, 0, 0, 1, -1, acbb_cli_cmd_presets },

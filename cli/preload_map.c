@@ -60,6 +60,7 @@ static int options(const acbb_cli_args *a, acbb_pmap_opts *o)
     if (!rc) rc = limit(a, CLI_OPT_MIN_S0, &o->min_s0);
     if (!rc) rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 0, ACBB_CLI_MAX_JOBS, &jobs);
     o->jobs = (int)jobs;
+    o->spring = a->val[CLI_OPT_SPRING] != NULL;
     return rc;
 }
 
@@ -79,8 +80,9 @@ static void csv(FILE *f, const acbb_pmap_cell *c, size_t n)
 
 static void table(const acbb_pmap_opts *o, const acbb_pmap_cell *c, const acbb_pmap_row *r)
 {
-    printf("preload window: displacement preload set at rest, transient from ambient\n"
-           "limits: skid ratio <= 1");
+    printf("preload window: %s, transient from ambient\n"
+           "limits: skid ratio <= 1", o->spring ? "spring (constant-force) preload"
+                                                 : "displacement preload set at rest");
     if (o->max_rise_K > 0) printf(", rise <= %g K", o->max_rise_K);
     if (o->min_life_h > 0) printf(", L_nmr >= %g h", o->min_life_h);
     if (o->min_s0 > 0) printf(", s0 >= %g", o->min_s0);

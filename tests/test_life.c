@@ -50,7 +50,11 @@ static void ratings(void)
  * +-60 deg Q_max / 2^1.5. By hand: Q_ci 9855.5, Q_ce 20684.8, Q_ei 418.22,
  * Q_ee 439.52 N, L_10r = 12013.9 Mrev. The example of the open ISO/TS
  * 16281 implementation "BallBearing.py" (Example 1, with its own Hertz
- * solve) states 12008.93 Mrev. */
+ * solve) states 12008.93 Mrev, a reference it apparently took from the
+ * commercial MASTA (the script compares its axial displacement as
+ * Delta_a_MASTA): a second implementation, not a published worked example,
+ * which none was found of in reach (docs/ratings.md, "How the formulas are
+ * checked"). */
 static void reference_life(void)
 {
     double Qm = 1000.0 / (1.0 + 2.0 * pow(0.5, 2.5)), Q[6] = { Qm, Qm * pow(0.5, 1.5),

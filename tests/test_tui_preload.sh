@@ -60,6 +60,26 @@ fi
 keys x
 wait_for "no preload map running (r starts one)"
 ok $? "x with nothing running says so"
+# k: a spring (constant-force) preload, as acbb preload-map --spring: the
+# light preloads skid at 20 000 rpm (tests/test_life_skid.sh), same cells.
+keys k
+wait_for "spring preload: a constant axial force (r runs the map)"
+ok $? "k switches to a spring preload"
+keys s C-u "20000:20000:1" Enter e C-u "10:250:13" Enter
+wait_for "preloads 10:250:13 N (r runs the map)"
+keys r
+wait_for "spring preload  window: no skid (gyroscopic/traction <= 1), rise <= 10 K"
+ok $? "the spring map says so in its limits line"
+"$ACBB" preload-map "$TMP/copy.ini" --spring --speeds 20000:20000:1 --preloads 10:250:13 \
+    --max-rise 10 | awk '$1 == 20000 { c = ""; for (i = 2; i <= 14; i++) c = c $i; print c, $(NF-2) ".." $NF }' \
+    >"$TMP/cli-spring.txt"
+screen | awk '$1 == 20000 && NF == 15 { c = ""; for (i = 2; i <= 14; i++) c = c $i;
+           gsub("#", ".", c); print c, $15 }' >"$TMP/tui-spring.txt"
+grep -q '^s' "$TMP/cli-spring.txt" && diff "$TMP/cli-spring.txt" "$TMP/tui-spring.txt" >&2
+ok $? "its cells and window equal acbb preload-map --spring's, the lightest preload skids"
+keys k
+wait_for "rigid preload: set at rest, held (r runs the map)"
+ok $? "k again: back to the rigid preload"
 # Cancelling: r and x arrive together, so x finds the map running (288
 # cells take seconds); the speeds not run say so, the screen stays usable.
 keys s C-u "5000:20000:12" Enter e C-u "1:300:24" Enter

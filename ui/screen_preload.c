@@ -368,7 +368,8 @@ static void draw_heading(acbb_app *a, acbb_rect b)
 static void draw_limits(acbb_app *a, int y, acbb_rect b, const acbb_pmap_opts *o)
 {
     char t[160];
-    int n = snprintf(t, sizeof t, "window: no skid (gyroscopic/traction <= 1)");
+    int n = snprintf(t, sizeof t, "%swindow: no skid (gyroscopic/traction <= 1)",
+                     o->spring ? "spring preload  " : "");
     if (o->max_rise_K > 0) n += snprintf(t + n, sizeof t - (size_t)n, ", rise <= %g K", o->max_rise_K);
     if (o->min_life_h > 0) n += snprintf(t + n, sizeof t - (size_t)n, ", Lnm >= %g h", o->min_life_h);
     if (o->min_s0 > 0) n += snprintf(t + n, sizeof t - (size_t)n, ", s0 >= %g", o->min_s0);
@@ -450,6 +451,11 @@ static int on_key(acbb_app *a, int ch)
         acbb_app_ask(a, "limits RISE_K:LIFE_h:S0 (0 = not checked): ", init, limits_answer, NULL);
         return 1;
     case 'g': export_chart(a); return 1;
+    case 'k':
+        p->next.spring = !p->next.spring;
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s (r runs the map)", p->next.spring
+                     ? "spring preload: a constant axial force" : "rigid preload: set at rest, held");
+        return 1;
     default: return 0;
     }
 }
@@ -461,6 +467,7 @@ static const acbb_help_line help[] = {
     { "r  Enter", "map the edited scene (as acbb preload-map)" },
     { "x  Esc", "cancel the map" },
     { "g", "export the window chart (PNG+SVG) to the plot directory" },
+    { "k", "spring (constant-force) or rigid preload (acbb preload-map --spring)" },
     { NULL, NULL },
 };
 

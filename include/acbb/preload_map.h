@@ -5,7 +5,16 @@
  * Each cell is the base scene with mounting.preload = displacement (set at
  * rest by the cell's preload force, then held: the rigid mounting whose
  * preload heat raises, MODEL.md 11) at the cell's inner-ring speed, run as
- * a transient from ambient (the steady solve would miss a runaway).
+ * a transient from ambient (the steady solve would miss a runaway). With
+ * `spring` the cell's preload is a constant axial force instead
+ * (mounting.preload = force, operating.axial_load = the preload, the
+ * preset's own thrust replaced): the spring-preloaded spindle, whose
+ * inner contacts unload with speed, where a rigid preload's grow (the
+ * centrifugal ball load and the inner ring's growth are held between the
+ * rings), so that on a rigid mounting the skid ratio below levels off
+ * under 1 with speed (both grow as omega^2; measured for the 7008C at
+ * 30 000 rpm and 1 N, isothermal: 0.90) and the skid floor binds only with
+ * a spring (tests/test_life_skid.sh).
  *
  * Skid (from the ball speeds of the traction model): the gyroscopic
  * moment the ball's orbit and spin need, M_g = J omega_m |omega_perp|
@@ -17,7 +26,12 @@
  * contact, which at speed is the lighter one, as the stated choice of
  * this map), with mu = lubricant.limiting_shear_ratio, the most traction
  * the film can carry (MODEL.md 5). skid = max over balls of the ratio; a
- * cell skids when skid > 1.
+ * cell skids when skid > 1. MODEL.md 11's table states Jones's condition
+ * at the outer contact (2 M_g / D > mu Q_o: pivoting under outer race
+ * control); the inner contact is the stricter of the two at speed. With
+ * the traction model (quasi-dynamic) M_g is the moment the two contacts'
+ * traction does supply, so skid > 1 says the inner contact alone could not
+ * hold it; quasi-static, M_g is race control's (omega_y' = 0).
  *
  * Upper limits (each 0 = not checked): the hottest of the rings and the
  * ball at most max_rise_K above ambient, L_nmr at least min_life_h, s0 at
@@ -40,6 +54,7 @@ typedef struct {
     double preload_lo, preload_hi;   /* N, > 0 */
     int n_preloads;
     double max_rise_K, min_life_h, min_s0; /* limits; 0 = not checked */
+    int spring;                      /* 1: constant-force (spring) preload; 0: rigid */
     int jobs;                        /* batch workers (0: all CPUs) */
     const atomic_int *cancel;        /* may be NULL */
 } acbb_pmap_opts;

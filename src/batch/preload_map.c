@@ -26,8 +26,9 @@ static acbb_status cell_scene(void *vctx, size_t i, acbb_scene *out, acbb_batch_
     (void)err;
     const pmap_ctx *c = vctx;
     *out = *c->base;
-    out->preload = ACBB_PRELOAD_DISPLACEMENT;
+    out->preload = c->o->spring ? ACBB_PRELOAD_FORCE : ACBB_PRELOAD_DISPLACEMENT;
     out->preload_force = c->cells[i].preload_N;
+    if (c->o->spring) out->axial_load = c->cells[i].preload_N;
     out->inner_speed = c->cells[i].speed_rpm * ACBB_RPM;
     *mode = ACBB_BATCH_TRANSIENT; /* only the transient catches a runaway (batch.h) */
     return ACBB_OK;
@@ -127,7 +128,7 @@ static void rows_of(const acbb_pmap_opts *o, const acbb_pmap_cell *cells, acbb_p
     }
 }
 
-static acbb_status check(const acbb_pmap_opts *o, acbb_error *err)
+static acbb_status check(const acbb_pmap_opts *o, int set, acbb_error *err)
 {
     if (o->n_speeds < 1 || o->n_speeds > ACBB_PMAP_MAX_AXIS || o->n_preloads < 1 ||
         o->n_preloads > ACBB_PMAP_MAX_AXIS)
@@ -139,6 +140,9 @@ static acbb_status check(const acbb_pmap_opts *o, acbb_error *err)
     if (!(o->preload_lo > 0.0 && o->preload_hi >= o->preload_lo && isfinite(o->preload_hi)))
         return acbb_error_set(err, ACBB_EINVAL, "preloads %g..%g N: need 0 < low <= high",
                               o->preload_lo, o->preload_hi);
+    if (o->spring && set)
+        return acbb_error_set(err, ACBB_EINVAL, "a spring preload maps a single bearing "
+                              "(a set's preload is its own, set.*)");
     if (!(o->max_rise_K >= 0.0 && o->min_life_h >= 0.0 && o->min_s0 >= 0.0))
         return acbb_error_set(err, ACBB_EINVAL, "limits must be >= 0 (0 = not checked)");
     return ACBB_OK;
@@ -147,7 +151,8 @@ static acbb_status check(const acbb_pmap_opts *o, acbb_error *err)
 acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
                              acbb_pmap_cell *cells, acbb_pmap_row *rows, acbb_error *err)
 {
-    acbb_status rc = check(o, err);
+    int set = base->set_arrangement != ACBB_SET_SINGLE;
+    acbb_status rc = check(o, set, err);
     if (rc != ACBB_OK) return rc;
     size_t n = (size_t)o->n_speeds * o->n_preloads;
     for (size_t i = 0; i < n; i++) {
@@ -160,7 +165,6 @@ acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
     }
     pmap_ctx c = { base, o, cells, calloc(n, 1) };
     if (!c.set_done) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    int set = base->set_arrangement != ACBB_SET_SINGLE;
     acbb_batch_opts bo = { .jobs = o->jobs, .cancel = o->cancel, .mode = ACBB_BATCH_TRANSIENT,
                            .scene = cell_scene, .step = set ? set_final : NULL,
                            .done = cell_done, .ctx = &c };

@@ -100,6 +100,14 @@ static const acbb_output_row k_rows[] = {
     { NULL, "hmin_i_um", "hmin_i_um", "um", "inner minimum film", OFF_B(hmin_i), TO_UM },
     { NULL, "hmin_o_um", "hmin_o_um", "um", "outer minimum film", OFF_B(hmin_o), TO_UM },
     { NULL, "omega_m_radps", "omega_m_radps", "rad/s", "orbital speed", OFF_B(omega_m), AS_IS },
+    /* The ball's angular velocity in the orbiting frame (x' along the bearing axis, z'
+     * outward, MODEL.md 0): what the preload map's skid ratio is made of (preload_map.h). */
+    { NULL, "omega_x_radps", "omega_x_radps", "rad/s", "ball angular velocity x'", OFF_B(omega_x),
+      AS_IS },
+    { NULL, "omega_y_radps", "omega_y_radps", "rad/s", "ball angular velocity y'", OFF_B(omega_y),
+      AS_IS },
+    { NULL, "omega_z_radps", "omega_z_radps", "rad/s", "ball angular velocity z'", OFF_B(omega_z),
+      AS_IS },
     { "losses_W", NULL, "ball_P_%s_W", "W", NULL, OFF_B(loss_kind), AS_IS },
     { "losses_W", "total", "ball_P_total_W", "W", "this ball's contact losses", OFF_B(loss),
       AS_IS },
