@@ -17,7 +17,7 @@ ok $? "the run ends with the schedule done"
 screen | tr -s ' \n' ' ' | grep -q "Steady state: thermal steady state after [0-9]* steps Schedule row 6/6, 16000 rpm, done\."
 ok $? "steady state at row 6/6, 16000 rpm"
 keys q
-wait_file "$TMP/sess" 10
+wait_file "$TMP/sess" 60
 [ "$(cat "$TMP/sess" 2>/dev/null)" = "EXIT=0" ]
 ok $? "q quits with exit 0"
 
