@@ -34,12 +34,16 @@ build
 case "${1:-tui}" in
     tui) shift 2>/dev/null || true; exec ./build/acbb tui "$@" ;;
     test)
-        # Every suite: the fast default (under a minute), then the slow
+        # Every suite: the fast default (under a minute), the TUI's, the
+        # seed's studies and reports, the slow
         # fidelity matrix, the Slurm/GNU parallel sweep (they skip what
         # this machine lacks) and the library's install suite (DESTDIR,
         # pkg-config example, Python). Fuzzing needs clang: see README.
         rc=0
         meson test -C build --print-errorlogs || rc=1
+        # The tmux TUI tests mostly wait on a terminal: four at once.
+        meson test -C build --suite tui --num-processes 4 --logbase tuilog --print-errorlogs || rc=1
+        meson test -C build --suite studies --logbase studylog --print-errorlogs || rc=1
         meson test -C build --suite slow --logbase slowlog --print-errorlogs || rc=1
         meson test -C build --suite slurm --logbase slurmlog --print-errorlogs || rc=1
         # meson counts a TAP test whose checks say "# SKIP" as OK: say how

@@ -59,7 +59,7 @@ static const acbb_output_row k_rows[] = {
     { "ring", "tilt_y_mrad", "tilt_y_mrad", "mrad", "inner ring tilt", OFF_S(tilt_y), TO_MRAD },
     { "ring", "stiffness_axial_N_per_um", "stiffness_axial_N_um", "N/um", "axial stiffness",
       OFF_S(stiffness_axial), 1e-6, 1.0 },
-    { "ring", "stiffness_radial_N_per_um", "stiffness_radial_N_um", "N/um", "radial stiffness",
+    { "ring", "stiffness_radial_N_per_um", "stiffness_radial_N_um", "N/um", "radial stiffness, tilt held",
       OFF_S(stiffness_radial), 1e-6, 1.0 },
     { "ring", "stiffness_tilt_Nm_per_mrad", "stiffness_tilt_Nm_mrad", "N m/mrad",
       "tilt stiffness, radial free", OFF_S(stiffness_tilt), 1e-3, 1.0 },
