@@ -1,0 +1,48 @@
+/* acbb — the mechanics solver's state (internal to mechanics.c and
+ * mechanics_setup.c; everyone else sees the opaque acbb_mech of
+ * mechanics.h). */
+#ifndef ACBB_MECHANICS_PRIV_H
+#define ACBB_MECHANICS_PRIV_H
+
+#include <gsl/gsl_multiroots.h>
+#include <gsl/gsl_roots.h>
+#include "mechanics.h"
+
+#define MAX_RING_DOF 3
+
+struct acbb_mech {
+    acbb_geometry g;
+    int centrifugal, gyroscopic;
+    acbb_race_control race;
+    acbb_hertz_mode hertz;
+    acbb_geom_mode geom;
+    double tol;
+    double hertz_tol;           /* rad: constants kept below this angle move (0: 1e-11) */
+    double mu;                  /* friction available for the gyroscopic moment */
+    double Fx, Fz, My;          /* applied loads on the IR */
+    int fix_axial;
+    double dx_fixed;
+    int centred;                /* dx fixed by symmetry (deep groove, no thrust) */
+    int dof_dz, dof_thy;        /* active ring DOFs besides dx */
+    int prescribed;             /* all ring DOFs held (a member of a set, MODEL.md 14) */
+    double dz_fixed, thy_fixed; /* the held radial displacement (m) and tilt (rad) */
+    int hold_radial;            /* dz held at dz_hold, the tilt free (stiffness.h) */
+    double dz_hold;
+    int hold_tilt;              /* thy held at thy_hold, dz free (stiffness.h) */
+    double thy_hold;
+    gsl_multiroot_fsolver *ring_solver[MAX_RING_DOF + 1];
+    double ring_J[MAX_RING_DOF + 1][MAX_RING_DOF * MAX_RING_DOF]; /* last, per DOF count */
+    int ring_J_ok[MAX_RING_DOF + 1];
+    double ball_J[ACBB_MAX_BALLS][4]; /* last ball Jacobians (chord steps, transient mode) */
+    int ball_J_ok[ACBB_MAX_BALLS];
+    gsl_root_fsolver *brent;
+    gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
+    /* context of the solve in progress */
+    double omega;
+    const acbb_expansion *e;    /* NULL or &e_copy */
+    acbb_expansion e_copy;
+    acbb_mech_state *trial;
+    acbb_status inner_status;
+};
+
+#endif
