@@ -344,157 +344,129 @@ static void print_text(FILE *f, const report_view *c)
     }
 }
 
-/* ---- JSON ---- */
+/* ---- JSON (the engine's writer, acbb/json.h: one escaping, one number
+ * format for every document) ---- */
 
-static void json_str(FILE *f, const char *s)
+static void json_check(acbb_json *j, const acbb_study_check *ch)
 {
-    fputc('"', f);
-    for (; *s; s++) {
-        unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\') fprintf(f, "\\%c", ch);
-        else if (ch < 0x20) fprintf(f, "\\u%04x", ch);
-        else fputc(ch, f);
-    }
-    fputc('"', f);
+    acbb_json_open(j, NULL, '{', true);
+    acbb_json_str(j, "id", ch->id);
+    acbb_json_str(j, "verdict", acbb_verdict_name(ch->verdict));
+    acbb_json_bool(j, "info", ch->info);
+    acbb_json_str(j, "text", ch->text);
+    acbb_json_close(j, '}');
 }
 
-static void json_num(FILE *f, double v)
+static void json_checks(acbb_json *j, const char *key, const acbb_study_check *ch, int n,
+                        bool one_line)
 {
-    if (isfinite(v)) fprintf(f, "%.17g", v); /* round-trips: acbb/json.h */
-    else fputs("null", f);
-}
-
-static void json_check(FILE *f, const acbb_study_check *ch)
-{
-    fputs("{\"id\": ", f);
-    json_str(f, ch->id);
-    fputs(", \"verdict\": ", f);
-    json_str(f, acbb_verdict_name(ch->verdict));
-    fprintf(f, ", \"info\": %s, \"text\": ", ch->info ? "true" : "false");
-    json_str(f, ch->text);
-    fputc('}', f);
-}
-
-static void print_json_checks(FILE *f, const acbb_study_item *it)
-{
-    for (int k = 0; k < it->n_checks; k++) {
-        fputs(k ? ",\n     " : "\n     ", f);
-        json_check(f, &it->checks[k]);
-    }
+    acbb_json_open(j, key, '[', one_line);
+    for (int k = 0; k < n; k++) json_check(j, &ch[k]);
+    acbb_json_close(j, ']');
 }
 
 /* --sensitivity: the sign conditions of item `item` and what turns them. */
-static void print_json_conditions(FILE *f, const acbb_study_rob *rob, int item)
+static void json_conditions(acbb_json *j, const acbb_study_rob *rob, int item)
 {
-    bool first = true;
-    fputs(", \"conditions\": [", f);
+    acbb_json_open(j, "conditions", '[', true);
     for (size_t k = 0; k < rob->n_signs; k++) {
         const acbb_study_robust *r = &rob->signs[k];
         if (r->sign->item != item) continue;
-        fputs(first ? "" : ", ", f);
-        first = false;
-        fputs("{\"condition\": ", f);
-        json_str(f, r->sign->what);
-        fputs(", \"metric\": ", f);
-        json_str(f, r->sign->metric);
-        fprintf(f, ", \"load_N\": %g, \"speed_rpm\": %g, \"value\": ", r->sign->load_N,
-                r->sign->speed_rpm);
-        json_num(f, r->ok ? r->y : NAN);
-        fprintf(f, ", \"holds\": %s, \"failed\": %zu, \"turned_by\": [",
-                r->holds ? "true" : "false", r->failed);
+        acbb_json_open(j, NULL, '{', true);
+        acbb_json_str(j, "condition", r->sign->what);
+        acbb_json_str(j, "metric", r->sign->metric);
+        acbb_json_num(j, "load_N", r->sign->load_N);
+        acbb_json_num(j, "speed_rpm", r->sign->speed_rpm);
+        acbb_json_num(j, "value", r->ok ? r->y : NAN); /* null without a value */
+        acbb_json_bool(j, "holds", r->holds);
+        acbb_json_long(j, "failed", (long)r->failed);
+        acbb_json_open(j, "turned_by", '[', true);
         for (size_t t = 0; t < r->n_turns; t++) {
-            fputs(t ? ", {\"key\": " : "{\"key\": ", f);
-            json_str(f, r->turns[t].key);
-            fputs(", \"value\": ", f);
-            json_str(f, r->turns[t].value);
-            fputs(", \"at\": ", f);
-            json_num(f, r->turns[t].y);
-            fputc('}', f);
+            acbb_json_open(j, NULL, '{', true);
+            acbb_json_str(j, "key", r->turns[t].key);
+            acbb_json_str(j, "value", r->turns[t].value);
+            acbb_json_num(j, "at", r->turns[t].y);
+            acbb_json_close(j, '}');
         }
-        fputs("]}", f);
+        acbb_json_close(j, ']');
+        acbb_json_close(j, '}');
     }
-    fputc(']', f);
+    acbb_json_close(j, ']');
 }
 
 /* --sensitivity: the item's verdict under every single change that turns it. */
-static void print_json_robust(FILE *f, const report_view *c, size_t i)
+static void json_robust(acbb_json *j, const report_view *c, size_t i)
 {
     if (!c->rob || i >= c->rob->n_items) return;
     const acbb_study_item_rob *ir = &c->rob->items[i];
-    fprintf(f, ",\n   \"robustness\": {\"varied\": %s, \"inputs\": %zu, \"ends\": %zu, "
-            "\"turned\": %s, \"changes\": [", ir->varied ? "true" : "false",
-            c->rob->n_inputs, c->rob->n_ends, ir->n_turns ? "true" : "false");
-    for (size_t j = 0; j < ir->n_flips; j++) {
-        const acbb_study_flip *fl = &ir->flips[j];
-        fputs(j ? ",\n     {\"key\": " : "\n     {\"key\": ", f);
-        json_str(f, fl->key);
-        fputs(", \"value\": ", f);
-        json_str(f, fl->value);
-        fprintf(f, ", \"turns_item\": %s, \"verdict\": ", fl->turns_item ? "true" : "false");
-        json_str(f, acbb_verdict_name(fl->verdict));
-        fputs(", \"checks\": [", f);
-        for (int k = 0; k < fl->n_checks; k++) {
-            fputs(k ? ", " : "", f);
-            json_check(f, &fl->checks[k]);
-        }
-        fputs("]}", f);
+    acbb_json_open(j, "robustness", '{', false);
+    acbb_json_bool(j, "varied", ir->varied);
+    acbb_json_long(j, "inputs", (long)c->rob->n_inputs);
+    acbb_json_long(j, "ends", (long)c->rob->n_ends);
+    acbb_json_bool(j, "turned", ir->n_turns > 0);
+    acbb_json_open(j, "changes", '[', false);
+    for (size_t k = 0; k < ir->n_flips; k++) {
+        const acbb_study_flip *fl = &ir->flips[k];
+        acbb_json_open(j, NULL, '{', true);
+        acbb_json_str(j, "key", fl->key);
+        acbb_json_str(j, "value", fl->value);
+        acbb_json_bool(j, "turns_item", fl->turns_item);
+        acbb_json_str(j, "verdict", acbb_verdict_name(fl->verdict));
+        json_checks(j, "checks", fl->checks, fl->n_checks, true);
+        acbb_json_close(j, '}');
     }
-    fputc(']', f);
-    print_json_conditions(f, c->rob, ir->num);
-    fputc('}', f);
+    acbb_json_close(j, ']');
+    json_conditions(j, c->rob, ir->num);
+    acbb_json_close(j, '}');
 }
 
 /* The item's verdict and checks under each mounting. */
-static void print_json_mountings(FILE *f, const report_view *c, size_t i)
+static void json_mountings(acbb_json *j, const report_view *c, size_t i)
 {
-    fputs(",\n   \"mountings\": {", f);
+    acbb_json_open(j, "mountings", '{', false);
     for (int m = 0; m < N_MOUNTINGS; m++) {
         const acbb_study_item *it = acbb_study_item_at(c->by[m], i);
-        fprintf(f, "%s\"%s\": {\"verdict\": ", m ? ",\n    " : "", k_mountings[m].json);
-        json_str(f, acbb_verdict_name(it->verdict));
-        fputs(", \"checks\": [", f);
-        print_json_checks(f, it);
-        fputs("]}", f);
+        acbb_json_open(j, k_mountings[m].json, '{', false);
+        acbb_json_str(j, "verdict", acbb_verdict_name(it->verdict));
+        json_checks(j, "checks", it->checks, it->n_checks, false);
+        acbb_json_close(j, '}');
     }
-    fputc('}', f);
+    acbb_json_close(j, '}');
+}
+
+static void json_item(acbb_json *j, const report_view *c, size_t i, size_t nc)
+{
+    const acbb_study_item *it = acbb_study_item_at(c->st, i);
+    acbb_json_open(j, NULL, '{', false);
+    acbb_json_long(j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
+    acbb_json_long(j, "item", it->num);
+    acbb_json_str(j, "statement", it->statement);
+    acbb_json_str(j, "verdict", acbb_verdict_name(it->verdict));
+    acbb_json_str(j, "level", level_name(c, it->l2));
+    acbb_json_open(j, "seed_conclusions", '[', true);
+    for (size_t k = 0; k < nc; k++)
+        if (acbb_study_item_in_conclusion(c->st, i, k)) acbb_json_long(j, NULL, (long)(k + 1));
+    acbb_json_close(j, ']');
+    acbb_json_open(j, "evidence", '{', false);
+    json_checks(j, "checks", it->checks, it->n_checks, false);
+    acbb_json_open(j, "values", '{', false);
+    for (int k = 0; k < it->n_values; k++) acbb_json_num(j, it->values[k].key, it->values[k].v);
+    acbb_json_close(j, '}');
+    acbb_json_close(j, '}');
+    json_mountings(j, c, i);
+    json_robust(j, c, i);
+    acbb_json_close(j, '}');
 }
 
 static void print_json(FILE *f, const report_view *c)
 {
     size_t n = acbb_study_n_items(c->st), nc;
     acbb_study_conclusions(&nc);
-    fputs("[\n", f);
-    for (size_t i = 0; i < n; i++) {
-        const acbb_study_item *it = acbb_study_item_at(c->st, i);
-        fprintf(f, "  {\"schema_version\": %d, \"item\": %d, \"statement\": ",
-                ACBB_JSON_SCHEMA_VERSION, it->num);
-        json_str(f, it->statement);
-        fputs(", \"verdict\": ", f);
-        json_str(f, acbb_verdict_name(it->verdict));
-        fputs(", \"level\": ", f);
-        json_str(f, level_name(c, it->l2));
-        fputs(", \"seed_conclusions\": [", f);
-        bool first = true;
-        for (size_t k = 0; k < nc; k++)
-            if (acbb_study_item_in_conclusion(c->st, i, k)) {
-                fprintf(f, "%s%zu", first ? "" : ", ", k + 1);
-                first = false;
-            }
-        fputs("],\n   \"evidence\": {\"checks\": [", f);
-        print_json_checks(f, it);
-        fputs("],\n    \"values\": {", f);
-        for (int k = 0; k < it->n_values; k++) {
-            fputs(k ? ", " : "", f);
-            json_str(f, it->values[k].key);
-            fputs(": ", f);
-            json_num(f, it->values[k].v);
-        }
-        fputs("}}", f);
-        print_json_mountings(f, c, i);
-        print_json_robust(f, c, i);
-        fprintf(f, "}%s\n", i + 1 < n ? "," : "");
-    }
-    fputs("]\n", f);
+    acbb_json j;
+    acbb_json_init(&j, f);
+    acbb_json_open(&j, NULL, '[', false);
+    for (size_t i = 0; i < n; i++) json_item(&j, c, i, nc);
+    acbb_json_close(&j, ']');
 }
 
 /* ---- Markdown ---- */
