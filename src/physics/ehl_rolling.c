@@ -7,13 +7,13 @@
  * 237, 1974):
  *   F_R = 2.86 E' Rx^2 kappa^0.348 G^0.022 U^0.66 W^0.47,
  * isothermal and fully flooded. UNSURE: written from memory of [HK-AC];
- * no public copy of [HK-AC], of Houpert's paper or of an implementation
+ * no public copy of [HK-AC], of Houpert's papers or of an implementation
  * could be found to check the constant, the exponents or the fit's range
- * (searched in issue 18's third session: web pages, docs, code), so it has
- * no source example test (tests/test_losses_ext.c checks the arithmetic
- * and the trends). Its speed and viscosity exponent 0.66 is close to the
- * SKF model's (nu n)^0.6 for the same rolling moment (see
- * docs/losses_validation.md).
+ * (issue 18, third and fourth sessions; docs/losses_validation.md lists
+ * the searches and what a maintainer with the book must check), so it has
+ * no source example test. tests/test_losses_ext.c checks the arithmetic
+ * and pins its consistency with the SKF model's rolling moment for the
+ * same bearings: 0.17-0.41 of G_rr (nu n)^0.6, flooded and isothermal.
  * Inlet shear heating: the film's thermal factor phi_T (Gupta 1992,
  * MODEL.md 5) multiplies F_R as it multiplies h_c, both being set by the
  * inlet pressure build-up (UNSURE: how [HK-AC] apply it).
@@ -23,8 +23,10 @@
  * sqrt(K_Z / (2 (D - d)))), K_rs = 3e-8 for low-level oil bath and oil jet,
  * 6e-8 for grease and oil-air; K_Z = 3.1 deep groove, 4.4 single-row
  * angular contact. The form, K_rs and K_Z = 3.1 agree with a public
- * implementation of the SKF model found in the code index (its repository
- * not named there); K_Z = 4.4 is from memory of the catalogue (UNSURE). */
+ * implementation of the SKF model, K_Z = 4.4 with two others (found in
+ * the code index, independent of each other, their repositories not named
+ * there; docs/losses_validation.md); the catalogue page itself was not
+ * reached. */
 #include <math.h>
 #include "ehl_rolling.h"
 
