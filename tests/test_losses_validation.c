@@ -9,8 +9,10 @@
  * with the geometric constants of its tables (deep groove 60 series:
  * R1 4.1e-7, R2 1.7, S1 3.73e-3, S2 14.6; single-row angular contact
  * 72 B / 73 B: R1 5.03e-7, R2 1.97, R3 1.90e-12, S1 1.30e-2, S2 0.68,
- * S3 1.91e-12 -- UNSURE, quoted from memory of the catalogue, and the
- * 7008C is a 70 C bearing outside that table). Nothing is fitted.
+ * S3 1.91e-12 -- the same values in two independent public implementations
+ * of the SKF model (docs/losses_validation.md; the catalogue page itself
+ * not reached), and the 7008C is a 70 C bearing outside that table).
+ * Nothing is fitted.
  *
  * Each point runs acbb isothermal at 40 C (effects.heating = off, ambient
  * 40 C, nu40 = 30 mm^2/s, oil-air) with the seed set and with the
