@@ -16,6 +16,7 @@ typedef struct {
     int n;
     double x[NMAX], xs[NMAX], g[NMAX];
     int fail_at;        /* step number that fails with ACBB_CANCELLED; 0 never */
+    double jump;        /* added to the fixed point after step 1 (a map change) */
     int steps;
     double relax_seen[128];
 } linmap;
@@ -26,6 +27,7 @@ static acbb_status step(void *ctx, double relax, double *res, acbb_error *err)
     if (++m->steps == m->fail_at) return acbb_error_set(err, ACBB_CANCELLED, "stopped here");
     m->relax_seen[m->steps < 128 ? m->steps : 127] = relax;
     *res = 0.0;
+    if (m->steps == 2) m->xs[0] += m->jump;
     for (int i = 0; i < m->n; i++) {
         double r = m->g[i] * (m->x[i] - m->xs[i]) + m->xs[i] - m->x[i]; /* F(x) - x */
         *res = fmax(*res, fabs(r));
@@ -122,6 +124,21 @@ static void test_start_below_noise(void)
        first_damped);
 }
 
+/* The first polish step changes the map (every ball recomputed, a set's
+ * resistances synced): a second residual larger than the first is not
+ * overshoot, and a contracting map stays undamped. */
+static void test_map_change_not_judged(void)
+{
+    linmap m = map1(0.5, 40.001);
+    m.jump = 0.01;
+    acbb_polish_result r;
+    acbb_error err = { "" };
+    acbb_status rc = acbb_polish_iterate(step, &m, RESOLUTION, &r, &err);
+    ok(rc == ACBB_OK && r.relax == 1.0 && dist(&m) < ACBB_POLISH_TOL_K,
+       "g = 0.5, fixed point moved after step 1: converges undamped (relaxation %g), %d steps",
+       r.relax, r.iterations);
+}
+
 /* No relaxation helps a gain above 1 (a monotone runaway) nor one below
  * the floor's reach (-300 needs w < 2/301 < 1/64): ACBB_DIVERGED after the
  * cap, with the residual, never OK. */
@@ -163,6 +180,7 @@ int main(void)
     test_gain_below_minus_one();
     test_two_modes();
     test_start_below_noise();
+    test_map_change_not_judged();
     test_diverged();
     test_step_failure();
     return done_testing();

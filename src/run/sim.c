@@ -39,7 +39,7 @@
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
 #define HERTZ_SKIP_TOL 1e-3    /* rad, transient steps: Hertz constants kept (Kc moves < 6e-5) */
 #define LOSS_SKIP_TOL 3e-4     /* transient steps: a ball's loss quadrature kept below this move */
-#define POLISH_SKIP_TOL 1e-9   /* steady polish: the same reuse, below mech_tol (1e-8) */
+#define POLISH_SKIP_TOL ACBB_POLISH_REUSE_TOL /* steady polish: the same reuse (1e-9) */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 #define DYN_SKIP_TOL 1e-2      /* transient steps: settled balls keep speeds below this input move */
@@ -555,19 +555,6 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
     return rc;
 }
 
-/* How finely the polish's map resolves its fixed point (steady_polish.h):
- * losses resolved to mech_tol (or the polish's reuse tolerance) relative
- * move the steady temperatures by that fraction of their spread. */
-static double polish_resolution(const acbb_sim *sim)
-{
-    double lo = sim->T[0], hi = sim->T[0];
-    for (int i = 1; i < sim->nw.n; i++) {
-        lo = fmin(lo, sim->T[i]);
-        hi = fmax(hi, sim->T[i]);
-    }
-    return fmax(sim->s.mech_tol, POLISH_SKIP_TOL) * (hi - lo);
-}
-
 /* Damped where it overshoots (issue 18), never OK unconverged: a polish
  * that does not converge ends the run ACBB_DIVERGED with the iterate of
  * smallest residual. */
@@ -576,7 +563,9 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
     polish_ctx p = { sim, malloc(sizeof(checkpoint)), INFINITY };
     if (!p.best) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     acbb_polish_result r;
-    acbb_status rc = acbb_polish_iterate(polish_step, &p, polish_resolution(sim), &r, err);
+    acbb_status rc = acbb_polish_iterate(polish_step, &p,
+                                         acbb_polish_resolution(sim->s.mech_tol, sim->T,
+                                                                sim->nw.n), &r, err);
     if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS && p.best_res < INFINITY) {
         restore(sim, p.best);
         size_t n = strlen(err->msg);
@@ -715,13 +704,9 @@ static int unbalanced(acbb_sim *sim)
     if (!sim->s.heating) return 0;
     double in = sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
               + sim->heat.cavity + sim->heat.cage;
-    if (fabs(in - sim->heat_out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W))
-        return 0;
-    char d[160];
-    snprintf(d, sizeof d, "%.6g W in, %.6g W out, tolerance %g of the heat in or %g W",
-             in, sim->heat_out, ACBB_BALANCE_TOL, ACBB_BALANCE_FLOOR_W);
-    fail(sim, ACBB_UNBALANCED, "the network's heat balance does not close at the "
-         "steady state (%s); last state kept", d);
+    acbb_error err = { "" };
+    if (acbb_balance_check(in, sim->heat_out, &err) == ACBB_OK) return 0;
+    fail(sim, ACBB_UNBALANCED, "%s", err.msg);
     return 1;
 }
 

@@ -8,6 +8,16 @@
 #include <math.h>
 #include "steady_polish.h"
 
+double acbb_polish_resolution(double mech_tol, const double *T, int n)
+{
+    double lo = T[0], hi = T[0];
+    for (int i = 1; i < n; i++) {
+        lo = fmin(lo, T[i]);
+        hi = fmax(hi, T[i]);
+    }
+    return fmax(mech_tol, ACBB_POLISH_REUSE_TOL) * (hi - lo);
+}
+
 /* Converged: to the round-off tolerance when undamped, else to the map's
  * resolution (steady_polish.h). */
 static int converged(const acbb_polish_result *r, double resolution_K)
@@ -35,13 +45,26 @@ acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolut
         r.iterations++;
         if (converged(&r, resolution_K)) break;
         /* This residual judges the previous move's relaxation: halve only
-         * if that move was made at the relaxation still in force. */
-        if (r.residual > prev && r.residual > ACBB_POLISH_NOISE_FACTOR * resolution_K
-            && made_by == r.relax)
+         * if that move was made at the relaxation still in force, and not
+         * on the second residual: the first step changes the map itself
+         * (sim.c: every ball recomputed; a set: its joined network's
+         * resistances, lagged in the transient, synced), so the first
+         * residual is not comparable. */
+        if (r.iterations > 2 && r.residual > prev
+            && r.residual > ACBB_POLISH_NOISE_FACTOR * resolution_K && made_by == r.relax)
             r.relax = fmax(0.5 * r.relax, ACBB_POLISH_RELAX_MIN);
         prev = r.residual;
         made_by = w;
     }
     if (out) *out = r;
     return rc;
+}
+
+acbb_status acbb_balance_check(double in, double out, acbb_error *err)
+{
+    if (fabs(in - out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W)) return ACBB_OK;
+    return acbb_error_set(err, ACBB_UNBALANCED, "the network's heat balance does not close at "
+                          "the steady state (%.6g W in, %.6g W out, tolerance %g of the heat in "
+                          "or %g W); last state kept", in, out, ACBB_BALANCE_TOL,
+                          ACBB_BALANCE_FLOOR_W);
 }

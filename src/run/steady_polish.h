@@ -21,6 +21,15 @@
  * growth is judged as overshoot only above this many resolutions. */
 #define ACBB_POLISH_NOISE_FACTOR 10.0
 
+/* Relative tolerance below which the polish reuses a ball's results
+ * (sim.c POLISH_SKIP_TOL, below mech_tol 1e-8). */
+#define ACBB_POLISH_REUSE_TOL 1e-9
+
+/* The resolution of a polish over temperatures T[0..n) whose losses are
+ * resolved to mech_tol relative (or the reuse tolerance): that fraction
+ * of the temperatures' spread, K (the network is linear in its sources). */
+double acbb_polish_resolution(double mech_tol, const double *T, int n);
+
 /* One iteration at relaxation `relax` (0 < relax <= 1): from the current
  * state T the direct steady solve T_s, *res = max_n |T_s - T| (K, the
  * undamped residual), the move T += relax (T_s - T) and the evaluation
@@ -53,5 +62,10 @@ typedef struct {
  * may be NULL. */
 acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolution_K,
                                 acbb_polish_result *out, acbb_error *err);
+
+/* MODEL.md 12 item 18: a steady state's network balances its sources,
+ * |in - out| within ACBB_BALANCE_TOL of in or ACBB_BALANCE_FLOOR_W.
+ * ACBB_OK, else ACBB_UNBALANCED with both heats in err. */
+acbb_status acbb_balance_check(double in, double out, acbb_error *err);
 
 #endif
