@@ -17,6 +17,7 @@ typedef struct {
     double x[NMAX], xs[NMAX], g[NMAX];
     int fail_at;        /* step number that fails with ACBB_CANCELLED; 0 never */
     double jump;        /* added to the fixed point after step 1 (a map change) */
+    double noise;       /* the fixed point alternates between two values 2 noise apart */
     int steps;
     double relax_seen[128];
 } linmap;
@@ -28,6 +29,7 @@ static acbb_status step(void *ctx, double relax, double *res, acbb_error *err)
     m->relax_seen[m->steps < 128 ? m->steps : 127] = relax;
     *res = 0.0;
     if (m->steps == 2) m->xs[0] += m->jump;
+    m->xs[0] += (m->steps % 2 ? 2.0 : -2.0) * m->noise;
     for (int i = 0; i < m->n; i++) {
         double r = m->g[i] * (m->x[i] - m->xs[i]) + m->xs[i] - m->x[i]; /* F(x) - x */
         *res = fmax(*res, fabs(r));
@@ -139,6 +141,26 @@ static void test_map_change_not_judged(void)
        r.relax, r.iterations);
 }
 
+/* A map that cannot resolve its fixed point below its noise: stalled
+ * within ten resolutions after the cap is converged (sim: 3e-7 to 2e-6 K
+ * at a resolution of 1e-6 K for a 100 mm bore); beyond them it is not. */
+static void test_stalled(void)
+{
+    const double noise[] = { 4e-7, 2e-6 };
+    for (int k = 0; k < 2; k++) {
+        linmap m = map1(0.5, 40.01);
+        m.noise = noise[k];
+        acbb_polish_result r;
+        acbb_error err = { "" };
+        acbb_status rc = acbb_polish_iterate(step, &m, RESOLUTION, &r, &err);
+        /* beyond the band the alternation is judged as overshoot and damped */
+        ok(r.iterations == ACBB_POLISH_ITERS && (k || r.relax == 1.0)
+           && rc == (k ? ACBB_DIVERGED : ACBB_OK),
+           "noise %g K, resolution %g K: %s after %d steps (residual %.2g K, relaxation %g)",
+           noise[k], RESOLUTION, acbb_status_name(rc), r.iterations, r.residual, r.relax);
+    }
+}
+
 /* No relaxation helps a gain above 1 (a monotone runaway) nor one below
  * the floor's reach (-300 needs w < 2/301 < 1/64): ACBB_DIVERGED after the
  * cap, with the residual, never OK. */
@@ -181,6 +203,7 @@ int main(void)
     test_two_modes();
     test_start_below_noise();
     test_map_change_not_judged();
+    test_stalled();
     test_diverged();
     test_step_failure();
     return done_testing();

@@ -33,6 +33,11 @@ acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolut
     acbb_status rc;
     for (;;) {
         if (r.iterations == ACBB_POLISH_ITERS) {
+            /* Stalled within the noise band: steady to the map's resolution. */
+            if (r.residual < ACBB_POLISH_NOISE_FACTOR * resolution_K) {
+                rc = ACBB_OK;
+                break;
+            }
             rc = acbb_error_set(err, ACBB_DIVERGED, "the steady iteration did not converge: "
                                 "residual %.3g K after %d iterations (relaxation %g, tolerance "
                                 "%.3g K)", r.residual, r.iterations, r.relax,
