@@ -25,7 +25,7 @@
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
-#define MAX_EDITS 6
+#define MAX_EDITS 9
 /* 30 G instructions' worth (the old bound was 30 s of wall time). Measured
  * (2026-11): the fast cases take at most 240 units (moment 20 N m), the
  * dynamic ones 4354 and 11376 (light-load skid). */
@@ -101,6 +101,21 @@ static const hard_case cases[] = {
     { "quasi-dynamic level", { "fidelity.model=quasi-dynamic" }, "converged", 0, NULL },
     { "static level, 1e-5 N", { "fidelity.model=static", "operating.axial_load_N=1e-5" },
       "converged", 0, NULL },
+    /* Issue 18: presets/runaway-rigid-preload.ini with the issue's edits.
+     * The transient settles (its small steps damp the coupling), so a
+     * steady state exists; the undamped polish after it overshot (loop
+     * gain about -1.5) into a cycle between 43 W and 1 W and ended
+     * unbalanced. The steady solve must reach the same state. */
+    { "issue 18 rigid preload, flat inner groove, 7-node", { "operating.inner_speed_rpm=16000",
+      "mounting.preload=displacement", "mounting.preload_N=1000",
+      "bearing.inner_groove_radius_mm=52.9824", "fidelity.network=7",
+      "lubricant.air_density_kg_m3=0.00479549", "effects.loss_spin=off",
+      "fidelity.model=quasi-static" }, "converged", 0, NULL },
+    { "issue 18 case, steady thermal mode", { "operating.inner_speed_rpm=16000",
+      "mounting.preload=displacement", "mounting.preload_N=1000",
+      "bearing.inner_groove_radius_mm=52.9824", "fidelity.network=7",
+      "lubricant.air_density_kg_m3=0.00479549", "effects.loss_spin=off",
+      "fidelity.model=quasi-static", "fidelity.thermal_mode=steady" }, "converged", 0, NULL },
     { "dynamic level (3x3 grid)", { "fidelity.model=dynamic", "fidelity.contact_grid=3" },
       "converged", 1, NULL },
     { "dynamic level, light-load skid", { "fidelity.model=dynamic", "fidelity.contact_grid=3",
@@ -205,6 +220,13 @@ static void check_case(const hard_case *c, acbb_snapshot *snap)
     for (int k = 0; k < ACBB_LOSS_KINDS; k++) sane = sane && snap->losses.P[k] >= 0.0;
     for (int i = 0; i < snap->n_nodes; i++) sane = sane && snap->T[i] >= sc.ambient_C - 1e-6;
     ok(sane, "%s: every loss >= 0, no node below ambient", c->name);
+    if (snap->state == ACBB_RUN_CONVERGED && sc.heating) {
+        /* MODEL.md 12 item 18: a steady state balances its heat */
+        double in = snap->heat_in, out = snap->heat_out;
+        ok(fabs(in - out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W),
+           "%s: converged, heat in %.9g W = heat out %.9g W (tolerance %g)", c->name, in, out,
+           ACBB_BALANCE_TOL);
+    }
     if (sc.inner_speed == 0.0) {
         /* MODEL.md 11 "zero speed": no film, no loss, temperatures stay ambient. */
         double dT = 0.0;

@@ -11,6 +11,7 @@ typedef enum {
     ACBB_ENOMEM = -3,        /* allocation failed */
     ACBB_ILL_POSED = -4,     /* physically ill-posed scene (MODEL.md section 11) */
     ACBB_DIVERGED = -5,      /* a Newton/Brent solve did not converge */
+                             /* ... or the steady polish (damped, capped; issue 18) */
     ACBB_RUNAWAY = -6,       /* thermal runaway: temperature or pressure limit */
     ACBB_CONTACT_LOST = -7,  /* every ball unloaded: no equilibrium */
     ACBB_NOT_CONVERGED = -8, /* step or time limit reached before steady state */

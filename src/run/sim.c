@@ -25,6 +25,7 @@
 #include "cancel.h"
 #include "gsl_quiet.h"
 #include "sim_set.h"
+#include "steady_polish.h"
 #include "acbb/schedule.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
@@ -32,13 +33,13 @@
 #define DT_MAX_DT_K 2.0        /* reject a step that moves a node more than this */
 #define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
 #define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
-#define POLISH_ITERS 60        /* direct steady iterations after the transient */
+#define ISO_ITERS 60           /* mechanics passes of an isothermal run */
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
 #define HERTZ_SKIP_TOL 1e-3    /* rad, transient steps: Hertz constants kept (Kc moves < 6e-5) */
 #define LOSS_SKIP_TOL 3e-4     /* transient steps: a ball's loss quadrature kept below this move */
-#define POLISH_SKIP_TOL 1e-9   /* steady polish: the same reuse, below mech_tol (1e-8) */
+#define POLISH_SKIP_TOL ACBB_POLISH_REUSE_TOL /* steady polish: the same reuse (1e-9) */
 #define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
 #define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
 #define DYN_SKIP_TOL 1e-2      /* transient steps: settled balls keep speeds below this input move */
@@ -520,28 +521,59 @@ static void schedule_point(acbb_sim *sim, double t)
     acbb_schedule_apply(&sim->s, &op);
 }
 
+/* The polish's state: the Sim, and the iterate of smallest residual so far
+ * (kept when the polish does not converge). */
+typedef struct {
+    acbb_sim *sim;
+    checkpoint *best;
+    double best_res;
+} polish_ctx;
+
+/* One polish iteration (steady_polish.h): the direct steady solve, the
+ * move by `relax`, the evaluation there; a failed evaluation keeps the
+ * last evaluated iterate. */
+static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error *err)
+{
+    polish_ctx *p = ctx;
+    acbb_sim *sim = p->sim;
+    double Tn[ACBB_MAX_NODES], dT = 0.0;
+    acbb_status rc = stop_check(sim, err);
+    if (rc != ACBB_OK) return rc;
+    rc = steady_step(sim, relax, Tn, &dT);
+    if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
+    *res = dT / relax; /* the undamped move (relax is 1 or a power of 1/2) */
+    save(sim, sim->keep);
+    if (*res < p->best_res) { /* *res is the residual of the state before the move */
+        save(sim, p->best);
+        p->best_res = *res;
+    }
+    memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
+    sim->polishing = 1;
+    rc = evaluate(sim, err);
+    sim->polishing = 0;
+    if (rc != ACBB_OK) restore(sim, sim->keep);
+    return rc;
+}
+
+/* Damped where it overshoots (issue 18), never OK unconverged: a polish
+ * that does not converge ends the run ACBB_DIVERGED with the iterate of
+ * smallest residual. */
 static acbb_status polish(acbb_sim *sim, acbb_error *err)
 {
-    double Tn[ACBB_MAX_NODES], dT = 0.0;
-    for (int it = 0; it < POLISH_ITERS; it++) {
-        /* Plain Picard here: the transient has brought the state close to
-         * the fixed point, where the lagged coupling contracts strongly. */
-        acbb_status rc = stop_check(sim, err);
-        if (rc != ACBB_OK) return rc;
-        rc = steady_step(sim, 1.0, Tn, &dT);
-        if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
-        save(sim, sim->keep);
-        memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
-        sim->polishing = 1;
-        rc = evaluate(sim, err);
-        sim->polishing = 0;
-        if (rc != ACBB_OK) {
-            restore(sim, sim->keep); /* the last evaluated iterate stays */
-            return rc;
-        }
-        if (dT < 1e-9) break;
+    polish_ctx p = { sim, malloc(sizeof(checkpoint)), INFINITY };
+    if (!p.best) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    acbb_polish_result r;
+    acbb_status rc = acbb_polish_iterate(polish_step, &p,
+                                         acbb_polish_resolution(sim->s.mech_tol, sim->T,
+                                                                sim->nw.n), &r, err);
+    if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS && p.best_res < INFINITY) {
+        restore(sim, p.best);
+        size_t n = strlen(err->msg);
+        snprintf(err->msg + n, sizeof err->msg - n, "; the iterate of smallest residual "
+                 "(%.3g K) kept", p.best_res);
     }
-    return ACBB_OK;
+    free(p.best);
+    return rc;
 }
 
 static void finish_energy(acbb_sim *sim)
@@ -672,13 +704,9 @@ static int unbalanced(acbb_sim *sim)
     if (!sim->s.heating) return 0;
     double in = sim->heat.inner_contact + sim->heat.outer_contact + sim->heat.ball
               + sim->heat.cavity + sim->heat.cage;
-    if (fabs(in - sim->heat_out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W))
-        return 0;
-    char d[160];
-    snprintf(d, sizeof d, "%.6g W in, %.6g W out, tolerance %g of the heat in or %g W",
-             in, sim->heat_out, ACBB_BALANCE_TOL, ACBB_BALANCE_FLOOR_W);
-    fail(sim, ACBB_UNBALANCED, "the network's heat balance does not close at the "
-         "steady state (%s); last state kept", d);
+    acbb_error err = { "" };
+    if (acbb_balance_check(in, sim->heat_out, &err) == ACBB_OK) return 0;
+    fail(sim, ACBB_UNBALANCED, "%s", err.msg);
     return 1;
 }
 
@@ -697,7 +725,7 @@ static void converge(acbb_sim *sim, const char *what)
 static acbb_status isothermal(acbb_sim *sim)
 {
     acbb_error err = { "" };
-    for (int it = 0; it < POLISH_ITERS; it++) {
+    for (int it = 0; it < ISO_ITERS; it++) {
         double prev = sim->loss.total;
         acbb_status rc = evaluate(sim, &err);
         if (rc != ACBB_OK)
@@ -766,6 +794,7 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     if (sim->quiet >= (steady_mode ? 3 : STEADY_COUNT)) {
         rc = polish(sim, &err);
         if (rc != ACBB_OK) {
+            finish_energy(sim); /* energy_W of the state kept */
             sim->wall_ms += acbb_now_ms() - t0;
             return fail(sim, rc, "%s", err.msg);
         }

@@ -18,6 +18,7 @@
 #include "acbb/fidelity.h"
 #include "acbb/schedule.h"
 #include "cancel.h"
+#include "steady_polish.h"
 
 #define DT_MIN 0.05
 #define DT_MAX 30.0
@@ -279,23 +280,34 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
     }
 }
 
+/* One polish iteration (steady_polish.h), as sim.c's for one bearing. */
+static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error *err)
+{
+    acbb_set_sim *ss = ctx;
+    double Tn[ACBB_SET_NMAX], dT, dTs;
+    if (acbb_cancelled(ss->cancel))
+        return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
+    acbb_status rc = thermal(ss, 1, relax, Tn, &dT, &dTs);
+    if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
+    *res = dT / relax; /* the undamped move (relax is 1 or a power of 1/2) */
+    save(ss);
+    memcpy(ss->T, Tn, sizeof(double) * (size_t)ss->ns.n);
+    if ((rc = evaluate(ss, 0, 1, err)) != ACBB_OK) restore(ss);
+    return rc;
+}
+
+/* Damped where it overshoots, never OK unconverged (issue 18; sim.c). */
 static acbb_status polish(acbb_set_sim *ss, acbb_error *err)
 {
-    double Tn[ACBB_SET_NMAX], dT, dTs;
-    for (int it = 0; it < POLISH_ITERS; it++) {
-        if (acbb_cancelled(ss->cancel))
-            return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
-        acbb_status rc = thermal(ss, 1, 1.0, Tn, &dT, &dTs);
-        if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
-        save(ss);
-        memcpy(ss->T, Tn, sizeof(double) * (size_t)ss->ns.n);
-        if ((rc = evaluate(ss, 0, 1, err)) != ACBB_OK) {
-            restore(ss);
-            return rc;
-        }
-        if (dT < 1e-9) break;
+    acbb_polish_result r;
+    acbb_status rc = acbb_polish_iterate(polish_step, ss, acbb_polish_resolution(ss->s.mech_tol,
+                                         ss->T, ss->ns.n), &r, err);
+    if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS) {
+        size_t n = strlen(err->msg);
+        snprintf(err->msg + n, sizeof err->msg - n, "; last state kept");
     }
-    return ACBB_OK;
+    if (rc != ACBB_OK) return rc;
+    return acbb_balance_check(ss->heat_in, acbb_tnet_heat_to_fixed(ss->ns.net, ss->T), err);
 }
 
 /* Temperature and pressure limits, and a rigid set's preload growing ever
@@ -337,7 +349,8 @@ static acbb_status runaway(acbb_set_sim *ss, double step_dt)
 
 static void publish(acbb_set_sim *ss)
 {
-    ss->heat_out = acbb_tnet_heat_to_fixed(ss->ns.net, ss->T);
+    /* heating off solves no network: no heat flows (issue 18) */
+    ss->heat_out = ss->s.heating ? acbb_tnet_heat_to_fixed(ss->ns.net, ss->T) : 0.0;
     if (ss->run.state == ACBB_RUN_RUNNING) ss->preload = acbb_set_preload_now(ss);
     for (int k = 0; k < ss->n; k++) acbb_simm_publish(ss->b[k], &ss->run);
 }

@@ -1,0 +1,75 @@
+/* acbb — the steady polish's relaxation and stopping (steady_polish.h).
+ *
+ * Adaptive rather than MODEL.md section 9's fixed 0.5: a polish that
+ * contracts keeps plain Picard (the path, and so every result, of the
+ * presets that converged before stays bit for bit, and modes with a gain
+ * near +1 are not slowed down), and halving on growth damps any gain
+ * below -1, where a fixed 0.5 fails below -3. */
+#include <math.h>
+#include "steady_polish.h"
+
+double acbb_polish_resolution(double mech_tol, const double *T, int n)
+{
+    double lo = T[0], hi = T[0];
+    for (int i = 1; i < n; i++) {
+        lo = fmin(lo, T[i]);
+        hi = fmax(hi, T[i]);
+    }
+    return fmax(mech_tol, ACBB_POLISH_REUSE_TOL) * (hi - lo);
+}
+
+/* Converged: to the round-off tolerance when undamped, else to the map's
+ * resolution (steady_polish.h). */
+static int converged(const acbb_polish_result *r, double resolution_K)
+{
+    return r->residual < ACBB_POLISH_TOL_K || (r->relax < 1.0 && r->residual < resolution_K);
+}
+
+acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolution_K,
+                                acbb_polish_result *out, acbb_error *err)
+{
+    acbb_polish_result r = { 0, 0.0, 1.0 };
+    double prev = INFINITY, made_by = 1.0; /* relaxation of the move that led here */
+    acbb_status rc;
+    for (;;) {
+        if (r.iterations == ACBB_POLISH_ITERS) {
+            /* Stalled within the noise band: steady to the map's resolution. */
+            if (r.residual < ACBB_POLISH_NOISE_FACTOR * resolution_K) {
+                rc = ACBB_OK;
+                break;
+            }
+            rc = acbb_error_set(err, ACBB_DIVERGED, "the steady iteration did not converge: "
+                                "residual %.3g K after %d iterations (relaxation %g, tolerance "
+                                "%.3g K)", r.residual, r.iterations, r.relax,
+                                r.relax < 1.0 ? fmax(resolution_K, ACBB_POLISH_TOL_K)
+                                              : ACBB_POLISH_TOL_K);
+            break;
+        }
+        double w = r.relax;
+        if ((rc = step(ctx, w, &r.residual, err)) != ACBB_OK) break;
+        r.iterations++;
+        if (converged(&r, resolution_K)) break;
+        /* This residual judges the previous move's relaxation: halve only
+         * if that move was made at the relaxation still in force, and not
+         * on the second residual: the first step changes the map itself
+         * (sim.c: every ball recomputed; a set: its joined network's
+         * resistances, lagged in the transient, synced), so the first
+         * residual is not comparable. */
+        if (r.iterations > 2 && r.residual > prev
+            && r.residual > ACBB_POLISH_NOISE_FACTOR * resolution_K && made_by == r.relax)
+            r.relax = fmax(0.5 * r.relax, ACBB_POLISH_RELAX_MIN);
+        prev = r.residual;
+        made_by = w;
+    }
+    if (out) *out = r;
+    return rc;
+}
+
+acbb_status acbb_balance_check(double in, double out, acbb_error *err)
+{
+    if (fabs(in - out) <= fmax(ACBB_BALANCE_TOL * fabs(in), ACBB_BALANCE_FLOOR_W)) return ACBB_OK;
+    return acbb_error_set(err, ACBB_UNBALANCED, "the network's heat balance does not close at "
+                          "the steady state (%.6g W in, %.6g W out, tolerance %g of the heat in "
+                          "or %g W); last state kept", in, out, ACBB_BALANCE_TOL,
+                          ACBB_BALANCE_FLOOR_W);
+}

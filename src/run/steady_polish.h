@@ -1,0 +1,76 @@
+/* acbb — the steady polish's iteration control (internal).
+ *
+ * After a run has settled, sim.c iterates the direct steady solve of the
+ * network with the losses of the state it reached (Picard, MODEL.md
+ * section 9) so the reported state balances energy to round-off. The
+ * lagged coupling can overshoot: with a rigid preload, heat that expands
+ * the outer ring unloads the contacts, so the next losses fall, and the
+ * map's gain can be below -1 (issue 18: about -1.5, a two-state cycle
+ * between 43 W and 1 W). This file decides the relaxation of each
+ * iteration and when to stop; the caller owns the state and the map. */
+#ifndef ACBB_STEADY_POLISH_H
+#define ACBB_STEADY_POLISH_H
+
+#include "acbb/status.h"
+
+#define ACBB_POLISH_ITERS 100   /* iteration cap (60, undamped, before issue 18) */
+#define ACBB_POLISH_TOL_K 1e-9  /* an undamped polish converges below this move, K */
+#define ACBB_POLISH_RELAX_MIN (1.0 / 64) /* damps gains down to about -127 */
+/* Undamped residuals wander up to about the resolution (below) before
+ * they land (warm-shaft preset: 3.6e-7 K at a resolution of 3.6e-7 K):
+ * growth is judged as overshoot only above this many resolutions. */
+#define ACBB_POLISH_NOISE_FACTOR 10.0
+
+/* Relative tolerance below which the polish reuses a ball's results
+ * (sim.c POLISH_SKIP_TOL, below mech_tol 1e-8). */
+#define ACBB_POLISH_REUSE_TOL 1e-9
+
+/* The resolution of a polish over temperatures T[0..n) whose losses are
+ * resolved to mech_tol relative (or the reuse tolerance): that fraction
+ * of the temperatures' spread, K (the network is linear in its sources). */
+double acbb_polish_resolution(double mech_tol, const double *T, int n);
+
+/* One iteration at relaxation `relax` (0 < relax <= 1): from the current
+ * state T the direct steady solve T_s, *res = max_n |T_s - T| (K, the
+ * undamped residual), the move T += relax (T_s - T) and the evaluation
+ * there. Any status but ACBB_OK ends the polish with it; the callee keeps
+ * its last good state then. */
+typedef acbb_status (*acbb_polish_step)(void *ctx, double relax, double *res, acbb_error *err);
+
+typedef struct {
+    int iterations;  /* steps taken */
+    double residual; /* the last step's undamped residual, K */
+    double relax;    /* the relaxation reached */
+} acbb_polish_result;
+
+/* Iterate `step` from relaxation 1 (plain Picard: a contracting polish
+ * takes exactly the undamped path, to ACBB_POLISH_TOL_K) and halve the
+ * relaxation whenever the residual grows above ACBB_POLISH_NOISE_FACTOR
+ * times `resolution_K` (a gain
+ * g < -1 becomes 1 - w + w g, inside the unit circle once w < 2 / (1 - g)).
+ *
+ * `resolution_K` is how finely the map resolves its fixed point: the
+ * losses behind it are resolved to a relative tolerance (the mechanics'),
+ * which moves the steady temperatures by that fraction of their rise.
+ * An undamped step on a map that is constant below it lands on the fixed
+ * point; a damped step only approaches it and is knocked back by up to
+ * the resolution whenever a reused ball result expires, so a damped
+ * polish is converged once its residual is below `resolution_K`.
+ *
+ * Undamped residuals can also stall in the noise band, reset whenever a
+ * reused ball result expires (a 100 mm bore scaled from the 7008C:
+ * 3e-7 to 2e-6 K for 90 steps at a resolution of 1e-6 K): a polish whose
+ * last residual after ACBB_POLISH_ITERS steps is within
+ * ACBB_POLISH_NOISE_FACTOR resolutions is converged too.
+ *
+ * ACBB_OK when converged; else ACBB_DIVERGED with the residual in err
+ * (the caller says which state it keeps). `out` may be NULL. */
+acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolution_K,
+                                acbb_polish_result *out, acbb_error *err);
+
+/* MODEL.md 12 item 18: a steady state's network balances its sources,
+ * |in - out| within ACBB_BALANCE_TOL of in or ACBB_BALANCE_FLOOR_W.
+ * ACBB_OK, else ACBB_UNBALANCED with both heats in err. */
+acbb_status acbb_balance_check(double in, double out, acbb_error *err);
+
+#endif
