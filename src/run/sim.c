@@ -3,7 +3,9 @@
  * One step k: expansions from T^k -> mechanics (warm start) -> kinematics,
  * film and the five losses -> heat sources -> backward-Euler thermal step
  * to T^{k+1}. The coupling is lagged (mechanics at T^k); the time step
- * adapts so that no node moves more than 2 K per step. */
+ * adapts so that no node moves more than 2 K per step. This file is the
+ * stepper and the set-up; one evaluation of the state is sim_eval.c, the
+ * steady polish steady_polish.c, the snapshot's views sim_snapshot.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,87 +24,12 @@
 #include "quasi_dynamic.h"
 #include "dynamic.h"
 #include "sim_priv.h"
+#include "sim_struct.h"
 #include "cancel.h"
 #include "gsl_quiet.h"
 #include "sim_set.h"
 #include "steady_polish.h"
 #include "acbb/schedule.h"
-
-#define DT_MIN 0.05            /* s, MODEL.md section 9 */
-#define DT_MAX 30.0            /* s */
-#define DT_MAX_DT_K 2.0        /* reject a step that moves a node more than this */
-#define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
-#define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
-#define ISO_ITERS 60           /* mechanics passes of an isothermal run */
-#define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
-#define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
-#define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
-#define HERTZ_SKIP_TOL 1e-3    /* rad, transient steps: Hertz constants kept (Kc moves < 6e-5) */
-#define LOSS_SKIP_TOL 3e-4     /* transient steps: a ball's loss quadrature kept below this move */
-#define POLISH_SKIP_TOL ACBB_POLISH_REUSE_TOL /* steady polish: the same reuse (1e-9) */
-#define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
-#define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
-#define DYN_SKIP_TOL 1e-2      /* transient steps: settled balls keep speeds below this input move */
-#define DYN_THREADS 2          /* workers over the distinct balls (the answer does not depend on it) */
-
-typedef struct {
-    acbb_contact_loss in, out;
-    double ref[ACBB_BALL_INPUTS]; /* the ball's inputs when in, out were computed */
-    int ref_ok;
-} ball_loss;
-
-/* Everything a step changes, kept so a failed or rejected step can put the
- * last good state back exactly (not re-derived). */
-typedef struct {
-    acbb_mech_state ms;
-    double T[ACBB_MAX_NODES];
-    acbb_expansion exp;
-    ball_loss bl[ACBB_MAX_BALLS];
-    acbb_losses loss;
-    acbb_heat_sources heat;
-    double q[ACBB_MAX_NODES];
-} checkpoint;
-
-struct acbb_sim {
-    acbb_scene s;
-    acbb_mech *mech;
-    acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
-    acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
-    acbb_mech_state ms;        /* last accepted mechanics */
-    checkpoint *keep;          /* scratch for step rollback (owned) */
-    acbb_network nw;
-    acbb_quad quad;
-    double T[ACBB_MAX_NODES];  /* T^k */
-    acbb_expansion exp;
-    ball_loss bl[ACBB_MAX_BALLS];
-    acbb_losses loss;
-    acbb_heat_sources heat;
-    double q[ACBB_MAX_NODES];
-    double heat_out;
-    double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_rate;
-    int growth_count;
-    int transient_pass;        /* 1 while evaluating inside a transient step */
-    int polishing;             /* 1 while evaluating inside the steady polish */
-    long iter;
-    int quiet;
-    acbb_run_state state;
-    acbb_status status;
-    char msg[256];
-    const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
-    acbb_work work;            /* per-part work counters */
-    double K_axial;            /* axial stiffness at the converged state, N/m */
-    acbb_stiffness K_ring;     /* radial and tilt stiffness at the converged state */
-    int fixed_axial;           /* displacement preload: dx held at fixed_dx */
-    int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */
-    double fixed_dx;
-    long reported;             /* last iteration handed to a drive hook; -1 none */
-    acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */
-    double bound_axial, bound_radial; /* loads sim->mech was built with (schedule) */
-    double setup_ms;           /* computing time of the set-up (sim_init) */
-    double deadline_ms;        /* fidelity.max_wall_s as a monotonic-clock deadline; 0 none */
-};
-
-static int outputs_finite(const acbb_sim *sim);
 
 
 static acbb_status fail(acbb_sim *sim, acbb_status st, const char *fmt, const char *detail)
@@ -137,7 +64,7 @@ static void arm_bound(acbb_sim *sim)
 }
 
 /* The caller's cancel flag, then the wall-clock bound. */
-static acbb_status stop_check(const acbb_sim *sim, acbb_error *err)
+acbb_status acbb_simx_stop_check(const acbb_sim *sim, acbb_error *err)
 {
     if (acbb_cancelled(sim->cancel))
         return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
@@ -147,278 +74,7 @@ static acbb_status stop_check(const acbb_sim *sim, acbb_error *err)
     return ACBB_OK;
 }
 
-/* ---- one evaluation of the mechanical/tribological state at T^k ---- */
-
-static void expansions(acbb_sim *sim)
-{
-    sim->work.expansion_updates++;
-    acbb_part_temps pt;
-    acbb_network_part_temps(&sim->nw, sim->T, &pt);
-    acbb_expansion_compute(&sim->s, &pt, &sim->exp);
-}
-
-static void contact_input(const acbb_sim *sim, const acbb_ball_state *b, int inner,
-                          acbb_contact_in *c)
-{
-    acbb_mech_contact_input(acbb_mech_geometry(sim->mech), b, inner, sim->s.inner_speed, c);
-}
-
-/* Oil at the two contact inlets and the oil-air mixture of the cavity. */
-static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *oo,
-                      acbb_oil_state *oc_out, acbb_mixture *mix)
-{
-    double Tin_i, Tin_o;
-    acbb_oil_state oc;
-    acbb_network_inlet_temps(&sim->nw, sim->T, &Tin_i, &Tin_o);
-    acbb_oil_at(&sim->s, Tin_i, oi);
-    acbb_oil_at(&sim->s, Tin_o, oo);
-    acbb_oil_at(&sim->s, sim->T[sim->nw.node_cavity], &oc);
-    acbb_mixture_at(&sim->s, &oc, mix);
-    *oc_out = oc;
-}
-
-/* Contact heat of one contact, by where the table sends it. */
-static void route_contact(const acbb_contact_loss *cl, double w, double *race, double *ball)
-{
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
-        if (acbb_loss_table[l].sink == ACBB_HEAT_CONTACT) *race += w * cl->P[l];
-        else if (acbb_loss_table[l].sink == ACBB_HEAT_BALL) *ball += w * cl->P[l];
-    }
-}
-
-/* Whole-bearing losses (drag, cage) at the mean orbital speed. */
-static void bearing_losses(const acbb_sim *sim, const acbb_mixture *mix,
-                           const acbb_oil_state *oc, double wm, acbb_losses *L,
-                           acbb_heat_sources *H)
-{
-    acbb_bearing_in in = { &sim->s, mix, wm, oc };
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
-        const acbb_loss_desc *d = &acbb_loss_table[l];
-        if (!d->bearing || !acbb_loss_enabled(&sim->s, (acbb_loss_kind)l)) continue;
-        L->P[l] = d->bearing(&in);
-        if (d->sink == ACBB_HEAT_CAGE) H->cage += L->P[l];
-        else H->cavity += L->P[l];
-    }
-}
-
-/* The losses of ball b's two contacts into bl. Inside a transient step
- * (tol > 0) a ball whose inputs (acbb_ball_inputs: loads, angles, inlet
- * viscosities, speeds) moved less than tol since its losses were computed
- * keeps them; the steady polish recomputes every ball (MODEL.md section 9).
- * 3e-4, not the Level-2 skip's 3e-3: each recomputation makes the total
- * loss jump by up to about tol / Z, and at 3e-3 that broke the 1e-4 quiet
- * test of the steady detection (BENCHMARKS.md, "Speed beyond the axial
- * case", round 3). */
-static acbb_status ball_losses(acbb_sim *sim, const acbb_ball_state *b,
-                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
-                               double tol, ball_loss *bl)
-{
-    double ref[ACBB_BALL_INPUTS];
-    acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, sim->s.inner_speed, ref);
-    if (tol > 0.0 && bl->ref_ok && acbb_ball_moved(bl->ref, ref, acbb_ball_loss_weights) < tol)
-        return ACBB_OK;
-    acbb_contact_in ci, co;
-    contact_input(sim, b, 1, &ci);
-    contact_input(sim, b, 0, &co);
-    acbb_status rc = acbb_contact_losses(&sim->s, &sim->quad, &ci, oil_i, &bl->in);
-    if (rc == ACBB_OK)
-        rc = acbb_contact_losses(&sim->s, &sim->quad, &co, oil_o, &bl->out);
-    bl->ref_ok = rc == ACBB_OK;
-    memcpy(bl->ref, ref, sizeof ref);
-    sim->work.loss_quadratures += bl->in.integrated + bl->out.integrated;
-    return rc;
-}
-
-/* Tolerance of the per-ball reuse of Level-2 speeds and losses: `transient`
- * in transient steps of non-symmetric scenes, POLISH_SKIP_TOL in the steady
- * polish (a ball whose inputs moved less than the equilibrium resolves
- * keeps its results; MODEL.md section 9), 0 for pure thrust (one ball,
- * nothing to gain; its results stay bit for bit) and the set-up. */
-static double skip_tol(const acbb_sim *sim, double transient)
-{
-    if (sim->ms.symmetric) return 0.0;
-    return sim->transient_pass ? transient : sim->polishing ? POLISH_SKIP_TOL : 0.0;
-}
-
-/* Every loss of the table at the current mechanics; fills sim->loss and heat. */
-static acbb_status losses(acbb_sim *sim)
-{
-    acbb_oil_state oil_i, oil_o, oil_c;
-    acbb_mixture mix;
-    lubricant(sim, &oil_i, &oil_o, &oil_c, &mix);
-    int nb = acbb_mech_distinct(&sim->ms);
-    /* As the Level-2 skip (mechanics()): transient steps of non-symmetric
-     * scenes only, so pure thrust and the steady polish compute every ball. */
-    double tol = skip_tol(sim, LOSS_SKIP_TOL);
-    acbb_losses L = { 0 };
-    acbb_heat_sources H = { 0 };
-    double wm_sum = 0.0;
-    for (int j = 0; j < nb; j++) {
-        const acbb_ball_state *b = &sim->ms.ball[j];
-        double w = acbb_mech_weight(&sim->ms, j);
-        ball_loss *bl = &sim->bl[j];
-        acbb_status rc = ball_losses(sim, b, &oil_i, &oil_o, tol, bl);
-        if (rc != ACBB_OK)
-            return rc;
-        for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-            L.P[l] += w * (bl->in.P[l] + bl->out.P[l]);
-        route_contact(&bl->in, w, &H.inner_contact, &H.ball);
-        route_contact(&bl->out, w, &H.outer_contact, &H.ball);
-        wm_sum += w * b->kin.omega_m;
-    }
-    for (int j = nb; j < sim->ms.n; j++) sim->bl[j] = sim->bl[acbb_mech_source(&sim->ms, j)];
-    bearing_losses(sim, &mix, &oil_c, wm_sum / sim->ms.n, &L, &H);
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) L.total += L.P[l];
-    L.inner = H.inner_contact;
-    L.outer = H.outer_contact;
-    if (!isfinite(L.total))
-        return ACBB_NONFINITE;
-    sim->loss = L;
-    sim->heat = H;
-    return ACBB_OK;
-}
-
-static void network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
-{
-    /* Mean spot size over the balls in contact at each race, and how many
-     * there are (the rest carry no heat across a contact spot). */
-    *in = (acbb_net_inputs){ 0 };
-    double wm = 0.0;
-    for (int j = 0; j < sim->ms.n; j++) {
-        const acbb_ball_state *b = &sim->ms.ball[j];
-        wm += b->kin.omega_m;
-        if (b->ct_i.a > 0.0 && b->Qi > 1e-6) {
-            in->a_i += b->ct_i.a; in->b_i += b->ct_i.b;
-            in->n_loaded_i++;
-        }
-        if (b->ct_o.a > 0.0 && b->Qo > 1e-6) {
-            in->a_o += b->ct_o.a; in->b_o += b->ct_o.b;
-            in->n_loaded_o++;
-        }
-    }
-    if (in->n_loaded_i > 0) { in->a_i /= in->n_loaded_i; in->b_i /= in->n_loaded_i; }
-    if (in->n_loaded_o > 0) { in->a_o /= in->n_loaded_o; in->b_o /= in->n_loaded_o; }
-    in->omega_i = sim->s.inner_speed;
-    in->omega_m = wm / sim->ms.n;
-    in->T_cavity_C = sim->T[sim->nw.node_cavity];
-}
-
-/* Dynamic level: integrate every distinct ball over a window (longer from
- * the race-control start, short once warm) and keep its time average;
- * inside transient steps settled balls whose inputs barely moved keep
- * theirs (acbb_dyn_set_skip), the steady polish integrates every ball. */
-static acbb_status ball_dynamics(acbb_sim *sim, const acbb_oil_state *oi,
-                                 const acbb_oil_state *oo, const acbb_mixture *mix,
-                                 double *change, acbb_error *err)
-{
-    acbb_dyn_env env = { sim->mech, &sim->s, &sim->quad, sim->s.inner_speed, oi, oo, mix };
-    acbb_dyn_set_skip(sim->dyn, sim->transient_pass ? DYN_SKIP_TOL : 0.0);
-    long before = acbb_dyn_windows(sim->dyn);
-    acbb_status rc = acbb_dyn_balls(sim->dyn, &env, &sim->ms, DYN_WINDOW_COLD, DYN_WINDOW_WARM,
-                                    change, err);
-    sim->work.traction_solves += acbb_dyn_windows(sim->dyn) - before;
-    if (rc != ACBB_OK) return rc;
-    acbb_mech_spread(&sim->ms);
-    return ACBB_OK;
-}
-
-static acbb_status mech_solve(acbb_sim *sim, acbb_error *err)
-{
-    sim->work.mechanics_solves++;
-    /* As the Level-2 and loss skips: transient steps of non-symmetric
-     * scenes only (pure thrust stays as it was, bit for bit). */
-    int skip = sim->transient_pass && !sim->ms.symmetric;
-    acbb_mech_set_transient(sim->mech, skip ? HERTZ_SKIP_TOL : 0.0);
-    return acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
-}
-
-/* Equilibrium, and at the quasi-dynamic level the ball speeds from
- * traction equilibrium, iterated a few passes (the remaining mismatch
- * shrinks over the thermal steps; the final polish converges it). */
-static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
-{
-    /* Inside a transient step with warm ball speeds the Level-2 pass below
-     * re-solves the equilibrium anyway, so the first solve is skipped (the
-     * loads it would refresh lag one step, like the rest of the coupling). */
-    int warm = (sim->qd || sim->dyn) && sim->transient_pass && sim->ms.ball[0].traction_valid;
-    acbb_status rc = warm ? ACBB_OK : mech_solve(sim, err);
-    if (rc != ACBB_OK || (!sim->qd && !sim->dyn)) return rc;
-    acbb_oil_state oi, oo, oc;
-    acbb_mixture mix;
-    lubricant(sim, &oi, &oo, &oc, &mix);
-    /* One pass per transient step: the thermal steps iterate the coupling
-     * anyway; the set-up converges it fully. So does the steady polish,
-     * whose Picard iterations (to 1e-9 K) also carry the coupling when
-     * many balls are solved at Level 2: one pass each there (the steady
-     * state moves < 4e-7, BENCHMARKS.md round 4; pure thrust and the
-     * dynamic level stay as they were). */
-    int many = sim->qd && sim->polishing && !sim->ms.symmetric;
-    int passes = sim->transient_pass || many ? 1 : QD_PASSES;
-    for (int pass = 0; pass < passes; pass++) {
-        double change = 0.0;
-        if ((rc = stop_check(sim, err)) != ACBB_OK) return rc;
-        if (sim->dyn)
-            rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
-        else {
-            sim->work.traction_solves++;
-            /* Skipping pays only when many distinct balls are solved; with
-             * one (pure thrust) it would only perturb the transient path. */
-            acbb_qd_set_skip(sim->qd, skip_tol(sim, QD_SKIP_TOL));
-            rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
-                                sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
-        }
-        if (rc != ACBB_OK) return rc;
-        rc = mech_solve(sim, err);
-        if (rc != ACBB_OK || change < QD_TOL) return rc;
-    }
-    return ACBB_OK;
-}
-
-/* Mechanics + losses + network resistances at T^k. */
-static acbb_status evaluate(acbb_sim *sim, acbb_error *err)
-{
-    if (sim->s.thermal_expansion)
-        expansions(sim);
-    else
-        sim->exp = (acbb_expansion){ 0 };
-    acbb_status rc = mechanics(sim, err);
-    if (rc != ACBB_OK) return rc;
-    rc = losses(sim);
-    if (rc == ACBB_OK && !outputs_finite(sim)) rc = ACBB_NONFINITE;
-    if (rc != ACBB_OK)
-        return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "
-                              "last good state kept");
-    if (!sim->s.heating) return ACBB_OK; /* isothermal: no network at all */
-    acbb_net_inputs in;
-    network_inputs(sim, &in);
-    sim->work.network_solves++;
-    rc = acbb_network_update(&sim->nw, &sim->s, &in);
-    if (rc != ACBB_OK)
-        return acbb_error_set(err, rc, "thermal network: update failed");
-    acbb_network_heat(&sim->nw, &sim->s, &sim->heat, sim->q);
-    return ACBB_OK;
-}
-
 /* ---- checks ---- */
-
-/* Every value a snapshot publishes, checked where it is made, so that a
- * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. */
-static int outputs_finite(const acbb_sim *sim)
-{
-    const acbb_expansion *e = &sim->exp;
-    if (!isfinite(e->ball) || !isfinite(e->inner) || !isfinite(e->inner_cen)
-        || !isfinite(e->outer) || !isfinite(sim->loss.total) || !isfinite(sim->heat.inner_contact)
-        || !isfinite(sim->heat.outer_contact) || !isfinite(sim->ms.Fx))
-        return 0;
-    for (int j = 0; j < sim->ms.n; j++) {
-        const acbb_ball_state *b = &sim->ms.ball[j];
-        if (!acbb_snap_contact_finite(&sim->bl[j].in) || !acbb_snap_contact_finite(&sim->bl[j].out)
-            || !isfinite(b->ct_i.pmax) || !isfinite(b->ct_o.pmax) || !isfinite(b->kin.spin_i)
-            || !isfinite(b->kin.spin_o) || !isfinite(b->kin.wx) || !isfinite(b->kin.wz))
-            return 0;
-    }
-    return 1;
-}
 
 static acbb_status check_runaway(acbb_sim *sim, const double *T, double step_dt)
 {
@@ -537,7 +193,7 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
     polish_ctx *p = ctx;
     acbb_sim *sim = p->sim;
     double Tn[ACBB_MAX_NODES], dT = 0.0;
-    acbb_status rc = stop_check(sim, err);
+    acbb_status rc = acbb_simx_stop_check(sim, err);
     if (rc != ACBB_OK) return rc;
     rc = steady_step(sim, relax, Tn, &dT);
     if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
@@ -549,7 +205,7 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
     }
     memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
     sim->polishing = 1;
-    rc = evaluate(sim, err);
+    rc = acbb_simx_evaluate(sim, err);
     sim->polishing = 0;
     if (rc != ACBB_OK) restore(sim, sim->keep);
     return rc;
@@ -603,7 +259,7 @@ static void restore(acbb_sim *sim, const checkpoint *k)
     memcpy(sim->q, k->q, sizeof k->q);
     schedule_point(sim, sim->time); /* the kept state's; the mechanics follow when evaluated */
     acbb_net_inputs in;
-    network_inputs(sim, &in);
+    acbb_simx_network_inputs(sim, &in);
     acbb_network_update(&sim->nw, &sim->s, &in); /* resistances of the kept state */
 }
 
@@ -660,7 +316,7 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
         memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
         sim->transient_pass = !steady_mode;
         rc = follow_schedule(sim, sim->time + (steady_mode ? 0.0 : sim->dt), err);
-        if (rc == ACBB_OK) rc = evaluate(sim, err);
+        if (rc == ACBB_OK) rc = acbb_simx_evaluate(sim, err);
         sim->transient_pass = 0;
         if (rc != ACBB_OK) {
             restore(sim, sim->keep);
@@ -727,7 +383,7 @@ static acbb_status isothermal(acbb_sim *sim)
     acbb_error err = { "" };
     for (int it = 0; it < ISO_ITERS; it++) {
         double prev = sim->loss.total;
-        acbb_status rc = evaluate(sim, &err);
+        acbb_status rc = acbb_simx_evaluate(sim, &err);
         if (rc != ACBB_OK)
             return fail(sim, rc, "%s", err.msg[0] ? err.msg : acbb_status_name(rc));
         sim->iter++;
@@ -941,7 +597,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
         return rc;
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
-    if ((rc = initial_mechanics(sim, err)) == ACBB_OK) rc = evaluate(sim, err);
+    if ((rc = initial_mechanics(sim, err)) == ACBB_OK) rc = acbb_simx_evaluate(sim, err);
     sim->setup_ms = acbb_now_ms() - t0;
     if (rc == ACBB_WALL_LIMIT) /* no state yet: nothing to keep */
         return acbb_error_set(err, rc, "wall-clock bound fidelity.max_wall_s = %g s reached "
@@ -1150,12 +806,6 @@ double acbb_simm_loss(const acbb_sim *b) { return b->loss.total; }
 /* The set's operating point (its schedule, sim_set.c): b's inner-ring speed. */
 void acbb_simm_speed(acbb_sim *b, double inner_speed) { b->s.inner_speed = inner_speed; }
 
-void acbb_simm_expand(acbb_sim *b)
-{
-    if (b->s.thermal_expansion) expansions(b);
-    else b->exp = (acbb_expansion){ 0 };
-}
-
 void acbb_simm_unbound(acbb_sim *b)
 {
     b->deadline_ms = 0.0;
@@ -1166,39 +816,6 @@ void acbb_simm_mode(acbb_sim *b, int transient, int polishing)
 {
     b->transient_pass = transient;
     b->polishing = polishing;
-}
-
-/* One Level-2 or dynamic pass over b's balls at its current mechanics
- * (mechanics() without the equilibrium solves: the set solves those). */
-acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err)
-{
-    acbb_oil_state oi, oo, oc;
-    acbb_mixture mix;
-    lubricant(b, &oi, &oo, &oc, &mix);
-    *change = 0.0;
-    if (b->dyn) return ball_dynamics(b, &oi, &oo, &mix, change, err);
-    b->work.traction_solves++;
-    acbb_qd_set_skip(b->qd, skip_tol(b, QD_SKIP_TOL));
-    return acbb_qd_update(b->qd, &b->s, &b->quad, acbb_mech_geometry(b->mech), b->s.inner_speed,
-                          &oi, &oo, &mix, &b->ms, change, err);
-}
-
-/* evaluate() after the mechanics: losses, network resistances, heat. */
-acbb_status acbb_simm_heat(acbb_sim *b, acbb_error *err)
-{
-    acbb_status rc = losses(b);
-    if (rc == ACBB_OK && !outputs_finite(b)) rc = ACBB_NONFINITE;
-    if (rc != ACBB_OK)
-        return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "
-                              "last good state kept");
-    if (!b->s.heating) return ACBB_OK;
-    acbb_net_inputs in;
-    network_inputs(b, &in);
-    b->work.network_solves++;
-    if ((rc = acbb_network_update(&b->nw, &b->s, &in)) != ACBB_OK)
-        return acbb_error_set(err, rc, "thermal network: update failed");
-    acbb_network_heat(&b->nw, &b->s, &b->heat, b->q);
-    return ACBB_OK;
 }
 
 void acbb_simm_save(acbb_sim *b) { save(b, b->keep); }

@@ -1,0 +1,102 @@
+/* acbb — the Sim's state, shared by the stepper (sim.c) and the
+ * evaluation of one state (sim_eval.c); internal, not part of the public
+ * API (acbb/sim.h keeps acbb_sim opaque). */
+#ifndef ACBB_SIM_STRUCT_H
+#define ACBB_SIM_STRUCT_H
+
+#include <stdatomic.h>
+#include "acbb/sim.h"
+#include "mechanics.h"
+#include "network.h"
+#include "losses.h"
+#include "expansion.h"
+#include "quasi_dynamic.h"
+#include "dynamic.h"
+#include "stiffness.h"
+#include "sim_set.h"
+#include "steady_polish.h"
+
+#define DT_MIN 0.05            /* s, MODEL.md section 9 */
+#define DT_MAX 30.0            /* s */
+#define DT_MAX_DT_K 2.0        /* reject a step that moves a node more than this */
+#define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
+#define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
+#define ISO_ITERS 60           /* mechanics passes of an isothermal run */
+#define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
+#define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
+#define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
+#define HERTZ_SKIP_TOL 1e-3    /* rad, transient steps: Hertz constants kept (Kc moves < 6e-5) */
+#define LOSS_SKIP_TOL 3e-4     /* transient steps: a ball's loss quadrature kept below this move */
+#define POLISH_SKIP_TOL ACBB_POLISH_REUSE_TOL /* steady polish: the same reuse (1e-9) */
+#define DYN_WINDOW_COLD 4e-3   /* s of ball motion from the race-control start */
+#define DYN_WINDOW_WARM 1e-3   /* s of ball motion per pass once warm */
+#define DYN_SKIP_TOL 1e-2      /* transient steps: settled balls keep speeds below this input move */
+#define DYN_THREADS 2          /* workers over the distinct balls (the answer does not depend on it) */
+
+typedef struct {
+    acbb_contact_loss in, out;
+    double ref[ACBB_BALL_INPUTS]; /* the ball's inputs when in, out were computed */
+    int ref_ok;
+} ball_loss;
+
+/* Everything a step changes, kept so a failed or rejected step can put the
+ * last good state back exactly (not re-derived). */
+typedef struct {
+    acbb_mech_state ms;
+    double T[ACBB_MAX_NODES];
+    acbb_expansion exp;
+    ball_loss bl[ACBB_MAX_BALLS];
+    acbb_losses loss;
+    acbb_heat_sources heat;
+    double q[ACBB_MAX_NODES];
+} checkpoint;
+
+struct acbb_sim {
+    acbb_scene s;
+    acbb_mech *mech;
+    acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
+    acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
+    acbb_mech_state ms;        /* last accepted mechanics */
+    checkpoint *keep;          /* scratch for step rollback (owned) */
+    acbb_network nw;
+    acbb_quad quad;
+    double T[ACBB_MAX_NODES];  /* T^k */
+    acbb_expansion exp;
+    ball_loss bl[ACBB_MAX_BALLS];
+    acbb_losses loss;
+    acbb_heat_sources heat;
+    double q[ACBB_MAX_NODES];
+    double heat_out;
+    double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_rate;
+    int growth_count;
+    int transient_pass;        /* 1 while evaluating inside a transient step */
+    int polishing;             /* 1 while evaluating inside the steady polish */
+    long iter;
+    int quiet;
+    acbb_run_state state;
+    acbb_status status;
+    char msg[256];
+    const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
+    acbb_work work;            /* per-part work counters */
+    double K_axial;            /* axial stiffness at the converged state, N/m */
+    acbb_stiffness K_ring;     /* radial and tilt stiffness at the converged state */
+    int fixed_axial;           /* displacement preload: dx held at fixed_dx */
+    int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */
+    double fixed_dx;
+    long reported;             /* last iteration handed to a drive hook; -1 none */
+    acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */
+    double bound_axial, bound_radial; /* loads sim->mech was built with (schedule) */
+    double setup_ms;           /* computing time of the set-up (sim_init) */
+    double deadline_ms;        /* fidelity.max_wall_s as a monotonic-clock deadline; 0 none */
+};
+
+/* sim_eval.c: one evaluation of the mechanical/tribological state at T^k
+ * (expansions, mechanics, losses, network, heat sources); its inputs to
+ * the network; every published value finite. */
+acbb_status acbb_simx_evaluate(acbb_sim *sim, acbb_error *err);
+void acbb_simx_network_inputs(const acbb_sim *sim, acbb_net_inputs *in);
+int acbb_simx_outputs_finite(const acbb_sim *sim);
+/* sim.c: the caller's cancel flag, then the wall-clock bound. */
+acbb_status acbb_simx_stop_check(const acbb_sim *sim, acbb_error *err);
+
+#endif
