@@ -450,6 +450,19 @@ static double static_dx(double F, void *ctx)
     return dx;
 }
 
+/* fidelity.max_wall_s bounds the set's whole set-up (issue 20 item 8), not
+ * each member's: member k's own set-up gets what its predecessors left. */
+static acbb_status member_bound(const acbb_scene *s, double t0, acbb_scene *m, acbb_error *err)
+{
+    if (!(s->max_wall_s > 0.0)) return ACBB_OK;
+    double left = s->max_wall_s - 1e-3 * (acbb_now_ms() - t0);
+    if (left <= 0.0)
+        return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = %g s "
+                              "reached during the set-up, before the first state", s->max_wall_s);
+    m->max_wall_s = left;
+    return ACBB_OK;
+}
+
 static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *err)
 {
     const acbb_scene *s = &ss->s;
@@ -460,8 +473,10 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     for (int k = 0; k < ss->n; k++) np += ss->sm.orient[k] > 0;
     member_scene(s, s->preload_force / (np > 0 ? np : 1), &m);
     acbb_network *nw[ACBB_MAX_SET];
+    double t0 = acbb_now_ms();
     for (int k = 0; k < ss->n; k++) {
-        acbb_status rc = acbb_sim_create(&m, o, &ss->b[k], err);
+        acbb_status rc = member_bound(s, t0, &m, err);
+        if (rc == ACBB_OK) rc = acbb_sim_create(&m, o, &ss->b[k], err);
         if (rc != ACBB_OK) return rc;
         acbb_simm_unbound(ss->b[k]); /* the set's run loop bounds its steps */
         nw[k] = acbb_simm_network(ss->b[k]);
