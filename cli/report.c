@@ -377,7 +377,8 @@ static void json_conditions(acbb_json *j, const acbb_study_rob *rob, int item)
         acbb_json_str(j, "metric", r->sign->metric);
         acbb_json_num(j, "load_N", r->sign->load_N);
         acbb_json_num(j, "speed_rpm", r->sign->speed_rpm);
-        acbb_json_num(j, "value", r->ok ? r->y : NAN); /* null without a value */
+        if (r->ok) acbb_json_num(j, "value", r->y);
+        else acbb_json_null(j, "value");
         acbb_json_bool(j, "holds", r->holds);
         acbb_json_long(j, "failed", (long)r->failed);
         acbb_json_open(j, "turned_by", '[', true);
@@ -458,7 +459,10 @@ static void json_item(acbb_json *j, const report_view *c, size_t i, size_t nc)
     acbb_json_close(j, '}');
 }
 
-static void print_json(FILE *f, const report_view *c)
+/* Returns the writer's misuse count: nesting past ACBB_JSON_DEPTH would
+ * leave invalid JSON (the deepest path here is 7 levels). A NaN evidence
+ * value (a failed or cancelled run) is null by design, not an error. */
+static long print_json(FILE *f, const report_view *c)
 {
     size_t n = acbb_study_n_items(c->st), nc;
     acbb_study_conclusions(&nc);
@@ -467,6 +471,7 @@ static void print_json(FILE *f, const report_view *c)
     acbb_json_open(&j, NULL, '[', false);
     for (size_t i = 0; i < n; i++) json_item(&j, c, i, nc);
     acbb_json_close(&j, ']');
+    return j.misuse;
 }
 
 /* ---- Markdown ---- */
@@ -763,9 +768,10 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
                       have_rob ? &rob : NULL, { NULL }, acbb_loss_set(base) };
     for (int m = 0; m < N_MOUNTINGS; m++) v.by[m] = m == own ? st : other[m];
-    if (a->val[CLI_OPT_JSON]) print_json(stdout, &v);
-    else print_text(stdout, &v);
+    long misuse = a->val[CLI_OPT_JSON] ? print_json(stdout, &v) : 0;
+    if (!a->val[CLI_OPT_JSON]) print_text(stdout, &v);
     rc = acbb_study_n_failed(st) ? ACBB_EXIT_SOLVER : ACBB_EXIT_OK;
+    if (misuse) rc = ACBB_EXIT_INTERNAL; /* invalid JSON printed: a bug, said by the exit */
     if (fflush(stdout) != 0 || ferror(stdout)) rc = ACBB_EXIT_INTERNAL;
     if (md) {
         print_md(mf, &v);

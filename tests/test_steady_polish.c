@@ -73,12 +73,14 @@ static void test_contracting_undamped(void)
 }
 
 /* The issue's gain: undamped it grows 1.5x a step; one halving gives
- * 1 - 0.5 + 0.5 (-1.5) = -0.25 and it converges to the resolution. */
+ * 1 - 0.5 + 0.5 (-1.5) = -0.25 and it converges to the resolution. A gain
+ * of exactly -1 (a two-state cycle: the residual neither grows nor
+ * shrinks) is damped too: w = 0.5 lands on the fixed point at once. */
 static void test_gain_below_minus_one(void)
 {
-    const double gains[] = { -1.5, -4.0, -20.0 };
-    const double relax[] = { 0.5, 0.25, 1.0 / 16 }; /* largest w = 2^-k with |1-w+wg| < 1 */
-    for (int k = 0; k < 3; k++) {
+    const double gains[] = { -1.5, -4.0, -20.0, -1.0 };
+    const double relax[] = { 0.5, 0.25, 1.0 / 16, 0.5 }; /* largest w = 2^-k with |1-w+wg| < 1 */
+    for (int k = 0; k < 4; k++) {
         linmap m = map1(gains[k], 40.05);
         acbb_polish_result r;
         acbb_error err = { "" };

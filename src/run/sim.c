@@ -197,6 +197,9 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
     if (rc != ACBB_OK) return rc;
     rc = steady_step(sim, relax, Tn, &dT);
     if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
+    if (!acbb_snap_all_finite(Tn, sim->nw.n)) /* fmax in the residual drops a NaN */
+        return acbb_error_set(err, ACBB_NONFINITE, "non-finite temperature in the steady "
+                              "solve; last good state kept");
     *res = dT / relax; /* the undamped move (relax is 1 or a power of 1/2) */
     save(sim, sim->keep);
     if (*res < p->best_res) { /* *res is the residual of the state before the move */
@@ -406,6 +409,8 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
     if (sim->set) {
+        arm_bound(sim);
+        acbb_set_sim_deadline(sim->set, sim->deadline_ms);
         double t0 = acbb_now_ms();
         acbb_status rc = set_step(sim);
         sim->wall_ms += acbb_now_ms() - t0; /* for wall_limit; the set reports its own */

@@ -25,7 +25,7 @@
 #define DT_MAX_DT_K 2.0
 #define STEADY_COUNT 20
 #define PMAX_LIMIT 4.2e9
-#define POLISH_ITERS 60
+#define ISO_ITERS 60
 #define QD_PASSES 4
 #define QD_TOL 1e-9
 #define SYNC_TOL 1e-2        /* transient steps: resistances lag below this move (network_set.h) */
@@ -287,8 +287,14 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
     double Tn[ACBB_SET_NMAX], dT, dTs;
     if (acbb_cancelled(ss->cancel))
         return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
+    if (ss->deadline_ms > 0.0 && acbb_now_ms() >= ss->deadline_ms)
+        return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = "
+                              "%g s reached; last good state kept", ss->s.max_wall_s);
     acbb_status rc = thermal(ss, 1, relax, Tn, &dT, &dTs);
     if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
+    if (!acbb_snap_all_finite(Tn, ss->ns.n)) /* fmax in the residual drops a NaN */
+        return acbb_error_set(err, ACBB_NONFINITE, "non-finite temperature in the steady "
+                              "solve; last good state kept");
     *res = dT / relax; /* the undamped move (relax is 1 or a power of 1/2) */
     save(ss);
     memcpy(ss->T, Tn, sizeof(double) * (size_t)ss->ns.n);
@@ -358,7 +364,7 @@ static void publish(acbb_set_sim *ss)
 static acbb_status isothermal(acbb_set_sim *ss)
 {
     acbb_error err = { "" };
-    for (int it = 0; it < POLISH_ITERS; it++) {
+    for (int it = 0; it < ISO_ITERS; it++) {
         double prev = ss->total;
         acbb_status rc = evaluate(ss, 0, 0, &err);
         if (rc != ACBB_OK) return fail(ss, rc, err.msg[0] ? err.msg : acbb_status_name(rc));
@@ -477,6 +483,9 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     for (int k = 0; k < ss->n; k++) {
         acbb_status rc = member_bound(s, t0, &m, err);
         if (rc == ACBB_OK) rc = acbb_sim_create(&m, o, &ss->b[k], err);
+        if (rc == ACBB_WALL_LIMIT) /* the user's bound, not the member's share of it */
+            return acbb_error_set(err, rc, "wall-clock bound fidelity.max_wall_s = %g s reached "
+                                  "during the set-up, before the first state", s->max_wall_s);
         if (rc != ACBB_OK) return rc;
         acbb_simm_unbound(ss->b[k]); /* the set's run loop bounds its steps */
         nw[k] = acbb_simm_network(ss->b[k]);
@@ -548,4 +557,5 @@ acbb_run_state acbb_set_sim_outcome(const acbb_set_sim *ss, acbb_status *status,
 }
 
 void acbb_set_sim_cancel(acbb_set_sim *ss, const atomic_int *cancel) { ss->cancel = cancel; }
+void acbb_set_sim_deadline(acbb_set_sim *ss, double deadline_ms) { ss->deadline_ms = deadline_ms; }
 

@@ -25,6 +25,9 @@ acbb_status acbb_set_sim_step(acbb_set_sim *ss);
 /* The run state, with its status and step count. */
 acbb_run_state acbb_set_sim_outcome(const acbb_set_sim *ss, acbb_status *status, long *iter);
 void acbb_set_sim_cancel(acbb_set_sim *ss, const atomic_int *cancel);
+/* The run's wall-clock deadline (acbb_now_ms; 0 none), read by the steady
+ * polish, the one loop inside a set's step that can run long. */
+void acbb_set_sim_deadline(acbb_set_sim *ss, double deadline_ms);
 void acbb_set_sim_snapshot(const acbb_set_sim *ss, acbb_snapshot *o);
 acbb_status acbb_set_sim_bearing_snapshot(const acbb_set_sim *ss, int k, acbb_snapshot *o);
 

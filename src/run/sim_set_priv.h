@@ -20,6 +20,7 @@ struct acbb_set_sim {
     double T[ACBB_SET_NMAX], q[ACBB_SET_NMAX], T_keep[ACBB_SET_NMAX];
     acbb_set_run run;
     const atomic_int *cancel;
+    double deadline_ms;        /* the run's fidelity.max_wall_s, monotonic ms; 0 none */
     double prev_total, prev_F, prev_rate, total;
     int growth, quiet;
     double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;

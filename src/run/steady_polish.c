@@ -54,8 +54,9 @@ acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolut
          * on the second residual: the first step changes the map itself
          * (sim.c: every ball recomputed; a set: its joined network's
          * resistances, lagged in the transient, synced), so the first
-         * residual is not comparable. */
-        if (r.iterations > 2 && r.residual > prev
+         * residual is not comparable. An equal residual (a gain of -1, a
+         * two-state cycle) is no progress either. */
+        if (r.iterations > 2 && r.residual >= prev
             && r.residual > ACBB_POLISH_NOISE_FACTOR * resolution_K && made_by == r.relax)
             r.relax = fmax(0.5 * r.relax, ACBB_POLISH_RELAX_MIN);
         prev = r.residual;
