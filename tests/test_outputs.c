@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "acbb/json.h"
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/sensitivity.h"
@@ -252,10 +253,43 @@ static void table_rules(void)
     ok(m == n, "acbb_metric_name lists the table (%zu names)", m);
 }
 
+/* A failed stiffness probe (issue 30) is a null with a reason in the run
+ * JSON, never the 0 the snapshot holds; the others stay numbers. */
+static void failed_probe(void)
+{
+    static acbb_snapshot s;
+    memset(&s, 0, sizeof s);
+    s.stiffness_radial = 256e6;
+    s.stiffness_failed = ACBB_STIFF_AXIAL | ACBB_STIFF_TILT_HELD;
+    acbb_scene sc;
+    acbb_scene_default(&sc);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    acbb_json j;
+    acbb_json_init(&j, f);
+    acbb_json_write_run(&j, &sc, &s);
+    fclose(f);
+    cJSON *doc = cJSON_Parse(buf);
+    cJSON *ring = cJSON_GetObjectItem(doc, "ring");
+    ok(cJSON_IsNull(cJSON_GetObjectItem(ring, "stiffness_axial_N_per_um"))
+           && cJSON_IsNull(cJSON_GetObjectItem(ring, "stiffness_tilt_held_Nm_per_mrad")),
+       "failed axial and held-tilt probes are null in \"ring\"");
+    cJSON *kr = cJSON_GetObjectItem(ring, "stiffness_radial_N_per_um");
+    ok(cJSON_IsNumber(kr) && kr->valuedouble == 256.0, "the radial probe that converged stays a number");
+    cJSON *why = cJSON_GetObjectItem(ring, "stiffness_missing");
+    ok(cJSON_IsString(why) && strstr(why->valuestring, "did not converge"),
+       "\"ring\" says why: %s", cJSON_IsString(why) ? why->valuestring : "(none)");
+    ok(j.nonfinite == 0, "a missing probe is not a non-finite number");
+    cJSON_Delete(doc);
+    free(buf);
+}
+
 int main(int argc, char **argv)
 {
     table_rules();
     by_hand();
+    failed_probe();
     if (argc < 2) {
         skip("no acbb binary given", "round trip against `acbb run --json`");
         return done_testing();

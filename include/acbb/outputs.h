@@ -71,6 +71,12 @@ int acbb_output_old_name(const acbb_output *o, char *buf, size_t n);
  * when k is not a ball of the snapshot). */
 double acbb_output_value(const acbb_output *o, const acbb_snapshot *s, int k);
 
+/* Why the entry has no value in `s` (a stiffness probe that failed,
+ * acbb_snapshot.stiffness_failed), or NULL when it has one. Writers print
+ * a missing value as null (JSON) or an empty cell, never the 0 the
+ * snapshot holds. */
+const char *acbb_output_missing(const acbb_output *o, const acbb_snapshot *s);
+
 /* The entry a path (or an old column name, acbb_output_old_name: ball 0)
  * names, and its ball index (-1 for a bearing entry).
  * ACBB_EINVAL with the reason when the path names none. The ball index is

@@ -18,6 +18,10 @@
 #include "acbb/loss_kinds.h"
 #include "acbb/life.h"
 
+/* Which stiffness probes of a converged state failed (issue 30: a failed
+ * probe is reported as missing, never as a plausible number). */
+enum { ACBB_STIFF_AXIAL = 1, ACBB_STIFF_RADIAL = 2, ACBB_STIFF_TILT = 4, ACBB_STIFF_TILT_HELD = 8 };
+
 /* What a user sees of one ball. Sliding speeds are the pressure-weighted
  * mean magnitude of the translational (Heathcote + gross) slip over the
  * contact ellipse; spin is the ball-race relative angular speed about the
@@ -112,6 +116,8 @@ typedef struct {
     double stiffness_radial;    /* dFz/d(delta_z), N/m (stiffness.h; 0 until converged) */
     double stiffness_tilt;      /* dMy/d(theta_y), N m/rad (0 until converged) */
     double stiffness_tilt_held; /* the same with the ring held radially, N m/rad */
+    unsigned stiffness_failed;  /* ACBB_STIFF_* bits: a probe whose solve failed
+                                   (its value above is 0 and means nothing) */
     acbb_squeeze squeeze;
     acbb_work work;
     double reaction_x;          /* axial reaction (== load under force control), N */

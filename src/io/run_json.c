@@ -18,7 +18,8 @@ static void rows(acbb_json *j, const acbb_snapshot *s, const char *section, int 
         const char *sec = e.row->section;
         if ((e.row->scope == ACBB_OUT_BALL) != (k >= 0)) continue;
         if (sec && section ? strcmp(sec, section) != 0 : sec != section) continue;
-        acbb_json_num(j, e.key, acbb_output_value(&e, s, k));
+        if (k < 0 && acbb_output_missing(&e, s)) acbb_json_null(j, e.key);
+        else acbb_json_num(j, e.key, acbb_output_value(&e, s, k));
     }
 }
 
@@ -70,7 +71,12 @@ static void ball(acbb_json *j, const acbb_snapshot *s, int k)
  * 13), the work each part did, and the effects the scene cannot feel. */
 static void ring_and_work(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s)
 {
-    section(j, s, "ring");
+    acbb_json_open(j, "ring", '{', false);
+    rows(j, s, "ring", -1);
+    if (s->stiffness_failed) /* the nulls above are failed probes: say why */
+        acbb_json_str(j, "stiffness_missing",
+                      "a stiffness probe's equilibrium solve did not converge (null, not 0)");
+    acbb_json_close(j, '}');
     section(j, s, "squeeze_um");
     const acbb_work *w = &s->work;
     acbb_json_open(j, "work", '{', false);

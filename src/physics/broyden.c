@@ -89,8 +89,11 @@ int acbb_fd_jacobian(acbb_broyden_fn fn, void *ctx, int n, const double *x, cons
     if (n < 1 || n > ACBB_BROYDEN_MAX) return 0;
     for (int j = 0; j < n; j++) {
         memcpy(xx, x, sizeof xx[0] * (size_t)n);
-        double h = rel * fabs(x[j]);
-        if (h == 0.0) h = rel;
+        /* The step never falls below rel times a floor of 1 in x's
+         * units (um, mrad): a coordinate near 0 (the radial offset under a
+         * 1e-6 N radial load) would otherwise get a step lost in the
+         * residual's noise and a garbage column (issue 30). */
+        double h = rel * fmax(fabs(x[j]), 1.0);
         xx[j] += h;
         if (!fn(xx, ctx, f1)) return 0;
         for (int i = 0; i < n; i++) J[n * i + j] = (f1[i] - f[i]) / h;

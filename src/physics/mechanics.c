@@ -581,6 +581,23 @@ static int ring_broyden(acbb_mech *m, int n, const double *x0)
     return 0;
 }
 
+/* A held-displacement solve the hybrid could not finish: GSL's own
+ * difference steps are relative to x, so a radial offset near 0 (a
+ * radial load of 1e-6 N) gets a step lost in the residual's noise (issue
+ * 30). Broyden's floored steps from the same start, before giving up. */
+static acbb_status held_fallback(acbb_mech *m, acbb_mech_state *st, int n)
+{
+    double x0[MAX_RING_DOF];
+    int k = 0;
+    if (m->dof_dz) x0[k++] = st->dz / UM;
+    if (m->dof_thy) x0[k++] = st->thy / MRAD;
+    acbb_status inner = m->inner_status; 
+    m->inner_status = ACBB_OK;
+    if (m->fix_axial && k == n && ring_broyden(m, n, x0))
+        return solve_balls(m, st);
+    return inner != ACBB_OK ? inner : m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+}
+
 static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
 {
     int n = ring_dof(m);
@@ -604,7 +621,7 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
     gsl_multiroot_function F = { ring_f, (size_t)n, m };
     gsl_multiroot_fsolver *s = m->ring_solver[n];
     if (gsl_multiroot_fsolver_set(s, &F, &xv.vector) != GSL_SUCCESS)
-        return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+        return held_fallback(m, st, n);
     double tol = m->tol * ring_force_scale(m);
     int status = gsl_multiroot_test_residual(s->f, tol);
     for (int it = 0; status == GSL_CONTINUE && it < 300; it++) {
@@ -613,7 +630,7 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
         status = gsl_multiroot_test_residual(s->f, tol);
     }
     if (status != GSL_SUCCESS && gsl_multiroot_test_residual(s->f, 1e3 * tol) != GSL_SUCCESS)
-        return m->inner_status != ACBB_OK ? m->inner_status : ACBB_DIVERGED;
+        return held_fallback(m, st, n);
     ring_set(m, st, s->x->data);
     return solve_balls(m, st); /* leave st exactly at the accepted root */
 }

@@ -165,8 +165,9 @@ void acbb_mech_prescribe(acbb_mech *m, double dx, double dz, double thy);
  * scene says: the radial-held tilt stiffness (stiffness.h). */
 void acbb_mech_hold_radial(acbb_mech *m, double dz);
 
-/* Hold the ring's tilt at thy (rad), the other DOFs as the scene says:
- * the radial stiffness at the operating tilt (stiffness.h). */
+/* Hold the ring's tilt at thy (rad) and solve its radial offset (even
+ * under no radial load), the axial DOF as the scene says: the radial
+ * stiffness at the operating tilt (stiffness.h). */
 void acbb_mech_hold_tilt(acbb_mech *m, double thy);
 
 /* Combined inner-outer stiffness K_n and the static closed-form angle for

@@ -129,4 +129,8 @@ void acbb_mech_hold_tilt(acbb_mech *m, double thy)
     m->hold_tilt = 1;
     m->thy_hold = thy;
     m->dof_thy = 0;
+    /* The radial offset is the probe's answer: solved even where the
+     * nudged radial load is exactly 0 (issue 30: a held tilt off 0 moves
+     * the ring radially under no radial load). */
+    m->dof_dz = !m->hold_radial;
 }

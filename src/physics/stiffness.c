@@ -67,7 +67,7 @@ static double difference(acbb_scene *s, double *load, double h, const acbb_expan
     }
     *load = v;
     double K = 2.0 * h / (r[0] - r[1]);
-    return rc == ACBB_OK && isfinite(K) ? K : 0.0;
+    return rc == ACBB_OK && isfinite(K) ? K : NAN; /* NAN: the probe failed */
 }
 
 acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, double dx_held,
@@ -79,6 +79,10 @@ acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, do
     double h = fmax(0.01 * fabs(s->axial_load), 1.0);
     double hm = h * 0.5 * s->pitch_diameter;
     out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, PROBE_RADIAL);
+    /* The tilt probes solve the tilt whatever mounting.tilt says: held
+     * describes the operating point, the probe asks how the ring would
+     * tilt under a moment (README: both tilt stiffnesses are reported). */
+    t.tilt = ACBB_TILT_FREE;
     out->tilt = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT);
     out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT_HELD);
     return ACBB_OK;

@@ -247,6 +247,24 @@ double acbb_output_value(const acbb_output *o, const acbb_snapshot *s, int k)
     return si * r->scale / r->div;
 }
 
+/* The stiffness rows and the probe each needs (issue 30). */
+static const struct { size_t off; unsigned bit; } probe_rows[] = {
+    { offsetof(acbb_snapshot, stiffness_axial), ACBB_STIFF_AXIAL },
+    { offsetof(acbb_snapshot, stiffness_radial), ACBB_STIFF_RADIAL },
+    { offsetof(acbb_snapshot, stiffness_tilt), ACBB_STIFF_TILT },
+    { offsetof(acbb_snapshot, stiffness_tilt_held), ACBB_STIFF_TILT_HELD },
+};
+
+const char *acbb_output_missing(const acbb_output *o, const acbb_snapshot *s)
+{
+    const acbb_output_row *r = o->row;
+    if (r->scope != ACBB_OUT_BEARING || r->get) return NULL;
+    for (size_t i = 0; i < sizeof probe_rows / sizeof probe_rows[0]; i++)
+        if (r->off == probe_rows[i].off && (s->stiffness_failed & probe_rows[i].bit))
+            return "the stiffness probe's equilibrium solve did not converge";
+    return NULL;
+}
+
 /* Does "section.key" (or "key" without a section) name row r (with loss
  * kind l for a per-loss row)? */
 static int names(const acbb_output_row *r, int l, const char *name)

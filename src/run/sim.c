@@ -335,11 +335,12 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
 
 /* Axial stiffness dFx/d(delta_x) at the converged state: central
  * difference with the axial displacement held, the other ring freedoms
- * free, ball speeds and tractions as converged. 0 if a solve fails. */
+ * free, ball speeds and tractions as converged. NAN if a solve fails (the
+ * snapshot reports it missing: acbb_snap_stiffness). */
 static double axial_stiffness(acbb_sim *sim)
 {
     acbb_mech_state *st = malloc(sizeof *st);
-    if (!st) return 0.0;
+    if (!st) return NAN;
     double dx = sim->ms.dx, h = fmax(1e-9, 1e-4 * fabs(dx)), F[2] = { 0, 0 };
     acbb_status rc = ACBB_OK;
     for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
@@ -352,7 +353,7 @@ static double axial_stiffness(acbb_sim *sim)
     acbb_mech_fix_axial(sim->mech, held, held ? dx : 0.0);
     free(st);
     double K = (F[0] - F[1]) / (2.0 * h);
-    return rc == ACBB_OK && isfinite(K) ? K : 0.0;
+    return rc == ACBB_OK && isfinite(K) ? K : NAN;
 }
 
 /* A steady state is one whose network balances its sources (MODEL.md 12
@@ -776,6 +777,10 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->stiffness_radial = acbb_snap_fin(sim->K_ring.radial);
     o->stiffness_tilt = acbb_snap_fin(sim->K_ring.tilt);
     o->stiffness_tilt_held = acbb_snap_fin(sim->K_ring.tilt_held);
+    o->stiffness_failed = (isnan(sim->K_axial) ? ACBB_STIFF_AXIAL : 0u)
+                        | (isnan(sim->K_ring.radial) ? ACBB_STIFF_RADIAL : 0u)
+                        | (isnan(sim->K_ring.tilt) ? ACBB_STIFF_TILT : 0u)
+                        | (isnan(sim->K_ring.tilt_held) ? ACBB_STIFF_TILT_HELD : 0u);
     o->work = sim->work;
     acbb_snap_squeeze(&sim->exp, &sim->ms.ball[0], &o->squeeze);
     o->reaction_x = acbb_snap_fin(sim->ms.Fx);
