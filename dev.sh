@@ -7,7 +7,7 @@ set -eu
 cd "$(dirname "$0")"
 
 PACKAGES="build-essential meson ninja-build pkg-config libgsl-dev libinih-dev libncurses-dev libcjson-dev
-          gnuplot-nox jq tmux python3 libxml2-utils"
+          gnuplot-nox jq tmux python3 libxml2-utils locales"
 
 install_deps() {
     missing=""
@@ -24,9 +24,21 @@ install_deps() {
     $sudo apt-get install -y -qq $missing >/dev/null
 }
 
+# Quiet when all goes well, the whole compiler output when it does not
+# (issue 28 item 11: a compile error used to exit 1 with nothing printed).
 build() {
-    [ -f build/build.ninja ] || meson setup build -Dwerror=true >/dev/null
-    meson compile -C build >/dev/null
+    log=$(mktemp)
+    if [ ! -f build/build.ninja ]; then
+        echo "dev.sh: configuring and building acbb (the first build takes about a minute)..." >&2
+        meson setup build -Dwerror=true >"$log" 2>&1 || { cat "$log" >&2; rm -f "$log"; exit 1; }
+    fi
+    meson compile -C build >"$log" 2>&1 || {
+        cat "$log" >&2
+        echo "dev.sh: the build failed (output above)" >&2
+        rm -f "$log"
+        exit 1
+    }
+    rm -f "$log"
 }
 
 install_deps

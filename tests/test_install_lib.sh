@@ -60,6 +60,17 @@ SANF=()
 "$CC" "${SANF[@]}" examples/run_preset.c $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
     2>"$TMP/err"
 code $? 0 "the example builds with pkg-config --cflags --libs acbb"
+# The installed headers from C++ (issue 28 item 5): extern "C", no C11
+# _Atomic in a public type.
+if command -v c++ >/dev/null; then
+    printf '#include <acbb/acbb.h>\nint main() { acbb_scene s; acbb_scene_default(&s); return s.heating ? 0 : 1; }\n' >"$TMP/cxx.cpp"
+    # shellcheck disable=SC2046
+    c++ -std=c++17 -Wall -Wextra -Werror -pedantic -fsyntax-only $(pkg-config --cflags acbb) \
+        "$TMP/cxx.cpp" 2>"$TMP/err"
+    code $? 0 "the installed <acbb/acbb.h> compiles as C++17"
+else
+    skip "the installed <acbb/acbb.h> compiles as C++17" "no C++ compiler"
+fi
 LD_LIBRARY_PATH=$LIB ldd "$TMP/ex" | grep -q -F "libacbb.so.0 => $LIB/"
 t $? "it links libacbb.so.0 from the DESTDIR"
 LD_LIBRARY_PATH=$LIB "$TMP/ex" presets/7008C.ini >"$TMP/ex.txt" 2>"$TMP/err"

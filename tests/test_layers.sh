@@ -164,8 +164,8 @@ t $? "no engine message names a CLI flag"
 [ -z "$found" ] || printf '%s\n' "$found" | sed 's/^/#   /'
 
 # (5) Layer order (README "Source tree"): an engine folder includes internal
-# headers only from folders below it: physics < scene < run < batch < io.
-declare -A rank=([physics]=0 [scene]=1 [run]=2 [batch]=3 [io]=4) home=()
+# headers only from folders below it: base < physics < scene < run < batch < io.
+declare -A rank=([base]=-1 [physics]=0 [scene]=1 [run]=2 [batch]=3 [io]=4) home=()
 for f in src/*/*.h; do h=${f##*/}; d=${f%/*}; home[$h]=${d##*/}; done
 bad_layer=""
 for f in src/*/*.[ch]; do
@@ -177,7 +177,7 @@ for f in src/*/*.[ch]; do
     done < <(sed -n -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"([^"/]+)".*/\1/p' "$f")
 done
 [ -z "$bad_layer" ]
-t $? "src/ layers include only headers of their own or lower layers (physics < scene < run < batch < io)"
+t $? "src/ layers include only headers of their own or lower layers (base < physics < scene < run < batch < io)"
 [ -z "$bad_layer" ] || printf '%s' "$bad_layer" | sed 's/^/#   /'
 
 tap_done

@@ -33,4 +33,12 @@
 #include "acbb/life_eval.h"
 #include "acbb/preload_map.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifdef __cplusplus
+}
+#endif
+
 #endif

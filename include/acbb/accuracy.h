@@ -40,9 +40,14 @@
 #define ACBB_ACCURACY_H
 
 #include <stddef.h>
+#include "acbb/cancel_flag.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum {
     ACBB_KNOB_MODEL,
@@ -77,7 +82,7 @@ typedef struct {
      * stop the plan. It is read before every setting and between the coupled
      * steps of a run, so a cancel takes effect within one step (plus an
      * acbb_sim_new already under way) even in a long dynamic run. */
-    const _Atomic int *cancel;
+    const acbb_atomic_int *cancel;
     /* Ball workers of each run at the dynamic level (acbb_sim_opts.threads;
      * 0: the default). The envelope, whose points already fill the cores,
      * passes 1. The results do not depend on it. */
@@ -193,7 +198,7 @@ typedef struct {
     int points;              /* 1..48; 0 = 48 */
     int jobs;                /* threads; <= 0: acbb_batch_cpus() */
     int ladder;              /* 1: also measure the fidelity ladder */
-    const _Atomic int *cancel;
+    const acbb_atomic_int *cancel;
 } acbb_envelope_options;
 
 typedef struct {
@@ -235,5 +240,9 @@ void acbb_envelope_frontier(const acbb_envelope_row *rows, size_t n, double tol,
  * "-" when undefined, "0", "%.0e" below 0.01 % or from 1000 %, else
  * "%.2f" (one formatter, so a screen value matches the CLI digit for digit). */
 void acbb_accuracy_format_pct(double e, char *buf, size_t n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

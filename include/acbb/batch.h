@@ -30,11 +30,15 @@
 #ifndef ACBB_BATCH_H
 #define ACBB_BATCH_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include <stddef.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* CPUs the process may use (sched_getaffinity; sysconf when that fails), >= 1. */
 int acbb_batch_cpus(void);
@@ -51,7 +55,7 @@ typedef void (*acbb_batch_fn)(void *ctx, size_t i);
  * jobs) threads. Once `cancel` is set no further index starts. Returns how
  * many indices ran. */
 size_t acbb_batch_for(size_t n, int jobs, acbb_batch_fn fn, void *ctx,
-                      const atomic_int *cancel);
+                      const acbb_atomic_int *cancel);
 
 /* ---- Sim runs ---- */
 
@@ -88,7 +92,7 @@ typedef void (*acbb_batch_done_fn)(void *ctx, const acbb_batch_result *r);
 
 typedef struct {
     int jobs;                   /* workers (0: acbb_batch_cpus()) */
-    const atomic_int *cancel;   /* set: stop (runs end ACBB_CANCELLED, the rest do not start) */
+    const acbb_atomic_int *cancel;   /* set: stop (runs end ACBB_CANCELLED, the rest do not start) */
     acbb_batch_mode mode;       /* default for every point (the scene callback may change it) */
     acbb_batch_scene_fn scene;  /* required */
     acbb_batch_step_fn step;    /* may be NULL */
@@ -107,5 +111,9 @@ typedef struct {
  * errors), ACBB_EINVAL without `scene`, ACBB_ENOMEM when the lock cannot be
  * made (nothing ran). `stats` may be NULL. */
 acbb_status acbb_batch_run(size_t n, const acbb_batch_opts *o, acbb_batch_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

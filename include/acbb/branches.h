@@ -11,11 +11,15 @@
 #ifndef ACBB_BRANCHES_H
 #define ACBB_BRANCHES_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include <stdbool.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* What one branch ended in (finite numbers only; 0 where a run never
  * started). The ball is the most loaded one (largest Qi). */
@@ -49,7 +53,11 @@ bool acbb_branches_wanted(const acbb_scene *s);
  * status says how); ACBB_CANCELLED when `cancel` (may be NULL) stopped it;
  * ACBB_ENOMEM. */
 acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
-                                  const atomic_int *cancel, acbb_branches *out,
+                                  const acbb_atomic_int *cancel, acbb_branches *out,
                                   acbb_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 #include "acbb/scene.h"
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     char name[32];      /* canonical designation, "7014C", "6205" */
     int series;         /* designation series: 70 72 73 718 719 60 62 63 618 619 */
@@ -43,5 +47,9 @@ typedef struct {
  * estimated key; returns how many. The scene passes acbb_scene_validate. */
 size_t acbb_designation_scene(const acbb_designation *d, acbb_scene *s, acbb_estimate *notes,
                               size_t cap);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

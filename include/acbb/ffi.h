@@ -37,17 +37,26 @@
  * - Thread-safety: reentrant; calls on different threads are independent
  *   (the engine keeps no global mutable state). A call blocks until its
  *   run ends (milliseconds to seconds; no cancel). Nothing is printed.
- * - Numbers are read and written with a decimal point: the process must
- *   leave LC_NUMERIC at "C" (the default; Python does). */
+ * - Numbers are read and written with a decimal point whatever locale the
+ *   host set (setlocale(LC_ALL, "") under de_DE included): the engine
+ *   reads and prints them in the "C" locale on the calling thread only. */
 #ifndef ACBB_FFI_H
 #define ACBB_FFI_H
 
 #include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
                            size_t n_settings, int *status);
 
 /* Free a string returned by this API; NULL is allowed. */
 void acbb_string_free(char *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

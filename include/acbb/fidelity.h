@@ -25,6 +25,10 @@
 #include <stddef.h>
 #include "acbb/scene.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     const char *name;             /* "fast", "balanced", "reference", or a ladder label */
     acbb_fidelity_preset preset;  /* its preset name, or ACBB_FIDELITY_CUSTOM (unnamed) */
@@ -69,5 +73,9 @@ int acbb_fidelity_resolve(const acbb_scene *s, acbb_fidelity_choice *c);
  * result is an ordinary custom scene (applying twice changes nothing).
  * `c` may be NULL. Returns 1 when knobs were overridden. */
 int acbb_fidelity_apply(acbb_scene *s, acbb_fidelity_choice *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

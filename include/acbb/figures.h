@@ -20,11 +20,15 @@
 #ifndef ACBB_FIGURES_H
 #define ACBB_FIGURES_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include <stddef.h>
 #include "acbb/sim.h"
 #include "acbb/status.h"
 #include "acbb/study.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ---- inputs ---- */
 
@@ -59,7 +63,7 @@ typedef struct {
  * workers (0: acbb_batch_cpus()) and record every step of the transient.
  * ACBB_ENOMEM or ACBB_CANCELLED; a failed run is kept in its traj's status (its panels'
  * series leave it out). `runs` must outlive the input. */
-acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const atomic_int *cancel,
+acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const acbb_atomic_int *cancel,
                                 acbb_fig_input **out, acbb_error *err);
 void acbb_figures_input_free(acbb_fig_input *in);
 
@@ -151,5 +155,9 @@ typedef struct {
  * written, else the first failure's status (the others are still tried). */
 acbb_status acbb_figures_write_all(const acbb_fig_input *in, const char *dir, int jobs,
                                    int width, int height, acbb_figure_result *res);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

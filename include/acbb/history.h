@@ -10,6 +10,10 @@
 #include <stddef.h>
 #include "acbb/sim.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ACBB_HISTORY_CAP 2048
 
 typedef struct {
@@ -37,5 +41,9 @@ void acbb_history_point_from(const acbb_snapshot *s, acbb_history_point *p);
  * second point is dropped and the stride doubles. The last point offered
  * is always kept as the final entry (replacing a stride point if needed). */
 void acbb_history_push(acbb_history *h, const acbb_snapshot *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -18,6 +18,10 @@
 #include "acbb/sim.h"
 #include "acbb/branches.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The version of the JSON documents' layout, their first key
  * "schema_version"; docs/schema/acbb.schema.json (`acbb schema`) describes
  * it. Bumped when a key is renamed or removed, not when one is added. */
@@ -76,5 +80,9 @@ void acbb_json_write_branches(acbb_json *j, const acbb_branches *b);
  * iterations 0 and the scene. */
 void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *status,
                             const char *message);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,6 +11,10 @@
 
 #include <stdbool.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ACBB_LIFE_CAP_H 1e9     /* hours; lives above it are reported as it */
 
 typedef enum { ACBB_RACE_IN = 0, ACBB_RACE_OUT = 1 } acbb_life_race;
@@ -36,5 +40,9 @@ typedef struct {
     bool edge_loaded;           /* an ellipse passes its shoulder (edge_margin_deg < 0) */
     bool estimated;             /* the internal geometry is estimated (life.internals_estimated) */
 } acbb_life;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,9 +11,17 @@
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 void acbb_life_compute(const acbb_scene *s, const acbb_snapshot *snap, acbb_life *out);
 
 /* "inner ball 3", "outer ball 0" or "none" into buf (for messages, JSON). */
 void acbb_life_contact_name(int ball, acbb_life_race race, char *buf, unsigned long n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

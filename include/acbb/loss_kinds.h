@@ -6,6 +6,10 @@
 
 #include "acbb/scene.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     ACBB_LOSS_SHEAR,    /* P_L lubricant shear */
     ACBB_LOSS_SLIP,     /* P_t differential slipping (asperity) */
@@ -31,5 +35,9 @@ const char *acbb_loss_set(const acbb_scene *s);
 
 /* Is loss k switched on in the scene ([effects] loss_*)? */
 int acbb_loss_enabled(const acbb_scene *s, acbb_loss_kind k);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

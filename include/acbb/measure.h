@@ -4,10 +4,18 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Monotonic wall clock, milliseconds (CLOCK_MONOTONIC). */
 double acbb_now_ms(void);
 
 /* Median of n values; sorts v in place. 0 for n == 0. */
 double acbb_median(double *v, size_t n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -27,6 +27,10 @@
 #include <stdio.h>
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct acbb_out acbb_out;
 
 /* Open `path` for writing. *f (may be NULL when the caller only wants the
@@ -86,5 +90,9 @@ void acbb_file_lock_release(acbb_file_lock *l);
  * the content stamp and the sweep fingerprint. */
 #define ACBB_HASH64_SEED 14695981039346656037ULL
 uint64_t acbb_hash64(const void *data, size_t n, uint64_t h);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

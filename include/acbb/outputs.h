@@ -20,6 +20,10 @@
 #include "acbb/sim.h"
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     ACBB_OUT_BEARING,            /* a member of acbb_snapshot */
     ACBB_OUT_BALL                /* a member of acbb_ball_view (snapshot.balls[K]) */
@@ -82,5 +86,9 @@ const char *acbb_output_missing(const acbb_output *o, const acbb_snapshot *s);
  * ACBB_EINVAL with the reason when the path names none. The ball index is
  * checked against ACBB_MAX_BALLS only. */
 acbb_status acbb_output_find(const char *path, acbb_output *o, long *ball, acbb_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

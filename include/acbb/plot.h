@@ -19,6 +19,10 @@
 #include "acbb/sim.h"
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum { ACBB_PLOT_PNG, ACBB_PLOT_SVG, ACBB_PLOT_DUMB } acbb_plot_format;
 
 typedef enum {
@@ -116,5 +120,9 @@ acbb_status acbb_plot_tornado_file(const acbb_tornado_bar *bars, size_t n, doubl
 
 /* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
 const char *acbb_plot_program(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

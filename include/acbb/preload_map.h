@@ -42,9 +42,13 @@
 #ifndef ACBB_PRELOAD_MAP_H
 #define ACBB_PRELOAD_MAP_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define ACBB_PMAP_MAX_AXIS 100   /* grid points per axis */
 
@@ -56,7 +60,7 @@ typedef struct {
     double max_rise_K, min_life_h, min_s0; /* limits; 0 = not checked */
     int spring;                      /* 1: constant-force (spring) preload; 0: rigid */
     int jobs;                        /* batch workers (0: all CPUs) */
-    const atomic_int *cancel;        /* may be NULL */
+    const acbb_atomic_int *cancel;        /* may be NULL */
 } acbb_pmap_opts;
 
 /* Why a cell is outside the window (bits of acbb_pmap_cell.flags). */
@@ -96,5 +100,9 @@ acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
 /* The first reason of a cell's flags: "ok", "skid", "hot", "short_life",
  * "low_s0", "runaway", "failed". */
 const char *acbb_pmap_verdict(const acbb_pmap_cell *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,6 +10,10 @@
 
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     char title[160];     /* first comment line, "" if none */
     char look_at[1024];  /* the "Look at:" paragraph joined into one line, "" if none */
@@ -20,5 +24,9 @@ typedef struct {
  * line that is not a comment or blank). ACBB_EIO if the file cannot be
  * read; a preset without the lines gives empty fields and ACBB_OK. */
 acbb_status acbb_preset_info_read(const char *path, acbb_preset_info *out, acbb_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 #include <stddef.h>
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
     double E;      /* Young's modulus, Pa */
     double nu;     /* Poisson ratio */
@@ -382,5 +386,9 @@ typedef struct {
     const char *key;       /* "effects.centrifugal = on", "surroundings.cap_*" */
 } acbb_inactive_effect;
 size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 #include "acbb/scene.h"
 #include "acbb/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The operating point at one time. */
 typedef struct {
     double inner_speed;     /* rad/s */
@@ -57,5 +61,9 @@ void acbb_schedule_format_row(const acbb_scene *s, int i, char *buf, size_t n);
 /* Parse the text of a `row = ` line into a row (range of each value
  * checked; the order of rows is not). ACBB_EINVAL with the reason. */
 acbb_status acbb_schedule_parse_row(const char *text, acbb_schedule_row *row, acbb_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -33,11 +33,15 @@
 #ifndef ACBB_SENSITIVITY_H
 #define ACBB_SENSITIVITY_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include <stddef.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define ACBB_SENS_MAX 64         /* uncertain inputs at most */
 #define ACBB_SENS_METRIC 64      /* metric path length */
@@ -85,7 +89,7 @@ typedef struct {
     int morris_p;                /* grid levels (even, >= 2; 0: 4) */
     unsigned long seed;          /* design seed (0: 1) */
     int jobs;                    /* threads (<= 0: acbb_batch_cpus()) */
-    const atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
+    const acbb_atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
     acbb_sens_progress_fn progress; /* called from worker threads, under a lock */
     void *ctx;
     int transient;               /* 1: each run's transient as its scene says */
@@ -128,5 +132,9 @@ acbb_status acbb_sensitivity_run(const acbb_scene *base, const acbb_sens_opts *o
  * twice. Returns ACBB_OK, ACBB_ENOMEM or ACBB_CANCELLED. */
 acbb_status acbb_sens_eval(const acbb_scene *scenes, size_t n, const acbb_sens_opts *o,
                            double *y, char *first_fail, size_t fail_n, size_t *runs);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

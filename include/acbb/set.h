@@ -7,6 +7,10 @@
 #include "acbb/limits.h"
 #include "acbb/scene.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The bearings of s's set: orient[k] = +1 or -1, the direction of the
  * thrust bearing k's inner ring carries (MODEL.md 14 s_k), x[k] its centre
  * relative to the set's centre (m), bearings by increasing x. Returns the
@@ -26,5 +30,9 @@ void acbb_set_spacers(const acbb_scene *s, double *L_inner, double *L_outer);
 
 /* Short name of an arrangement ("single", "DB", ...). */
 const char *acbb_set_arrangement_name(acbb_set_arrangement a);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

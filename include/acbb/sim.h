@@ -11,12 +11,16 @@
 #ifndef ACBB_SIM_H
 #define ACBB_SIM_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
 #include "acbb/limits.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/life.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Which stiffness probes of a converged state failed (issue 30: a failed
  * probe is reported as missing, never as a plausible number). */
@@ -164,7 +168,7 @@ typedef int (*acbb_step_hook)(void *ctx, const acbb_sim *sim);
 typedef struct {
     acbb_step_hook hook;
     void *ctx;
-    const atomic_int *cancel;
+    const acbb_atomic_int *cancel;
 } acbb_run_ctl;
 
 /* Returns ACBB_OK while running (paused by the hook) or at convergence, a
@@ -173,7 +177,7 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl);
 
 /* acbb_sim_new whose set-up (initial mechanics: a dynamic-level window) can
  * be cancelled; the flag stays attached to the sim for its later steps. */
-acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb_sim **out,
+acbb_status acbb_sim_new_ctl(const acbb_scene *s, const acbb_atomic_int *cancel, acbb_sim **out,
                              acbb_error *err);
 
 /* acbb_sim_new_ctl with the options a pool of runs needs: `threads` is the
@@ -181,7 +185,7 @@ acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb
  * (0: the default, 2); a pool that already keeps every core busy with runs
  * passes 1. The answer does not depend on it. */
 typedef struct {
-    const atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
+    const acbb_atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
     int threads;
 } acbb_sim_opts;
 /* The first Sim of a process turns GSL's abort-on-error handler off
@@ -205,5 +209,9 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
 /* JSON/CLI name of a finished run's status: "converged", "not_converged",
  * "runaway", "contact_lost", "diverged", "ill_posed", "nonfinite", ... */
 const char *acbb_run_status_name(const acbb_snapshot *snap);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -4,6 +4,10 @@
 #ifndef ACBB_STATUS_H
 #define ACBB_STATUS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     ACBB_OK = 0,
     ACBB_EINVAL = -1,        /* bad input value, file:line message in acbb_error */
@@ -39,5 +43,9 @@ const char *acbb_status_name(acbb_status s);
 /* printf-style setter; safe with err == NULL. Returns `code` for chaining. */
 acbb_status acbb_error_set(acbb_error *err, acbb_status code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -25,13 +25,17 @@
 #ifndef ACBB_STUDY_H
 #define ACBB_STUDY_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include <stddef.h>
 #include "acbb/batch.h"
 #include "acbb/scene.h"
 #include "acbb/sensitivity.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef enum {
     ACBB_VERDICT_HELD,
@@ -167,7 +171,7 @@ acbb_status acbb_study_plan(const acbb_scene *base, acbb_study **out, acbb_error
  * NOT EVALUATED. Returns ACBB_OK when every run reached steady state, else
  * the status of the first failed run (the results are complete either
  * way), or ACBB_CANCELLED. */
-acbb_status acbb_study_run(acbb_study *s, int jobs, const atomic_int *cancel);
+acbb_status acbb_study_run(acbb_study *s, int jobs, const acbb_atomic_int *cancel);
 
 /* Re-evaluate the table over the current run results (after a caller
  * changed them through acbb_study_results: tests build results this way). */
@@ -266,7 +270,7 @@ typedef struct {
     const char *const *keys;     /* only these inputs ("section.key"); NULL: all */
     size_t n_keys;
     int jobs;                    /* workers (0: acbb_batch_cpus()) */
-    const atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
+    const acbb_atomic_int *cancel;    /* set: stop (ACBB_CANCELLED) */
     const acbb_study_row *rows;  /* the check table (NULL: acbb_study_table) */
     size_t n_rows;
     acbb_study_progress_fn progress; /* may be NULL */
@@ -340,7 +344,11 @@ void acbb_study_compare_plan(const acbb_scene *base, acbb_study_compare *out);
  * Returns acbb_batch_run's status (ACBB_CANCELLED when a cancel stopped
  * the batch; failed points are results, not errors). */
 acbb_status acbb_study_compare_run(const acbb_study_compare *c, int jobs,
-                                   const atomic_int *cancel, acbb_batch_done_fn done,
+                                   const acbb_atomic_int *cancel, acbb_batch_done_fn done,
                                    void *ctx, acbb_batch_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

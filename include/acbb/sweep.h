@@ -22,12 +22,16 @@
 #ifndef ACBB_SWEEP_H
 #define ACBB_SWEEP_H
 
-#include <stdatomic.h>
+#include "acbb/cancel_flag.h"
 #include <stddef.h>
 #include <stdint.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define ACBB_SWEEP_MAX_DIMS 8
 #define ACBB_SWEEP_MAX_VALUES 100000    /* per dimension */
@@ -81,7 +85,7 @@ typedef struct {
     size_t shard_k, shard_n;       /* shard_n <= 1: every point */
     const unsigned char *skip;     /* skip[i] != 0: point i is done already (may be NULL) */
     size_t max_points;             /* run at most this many (0: no limit) */
-    const atomic_int *cancel;      /* set: stop; cancelled points are not reported */
+    const acbb_atomic_int *cancel;      /* set: stop; cancelled points are not reported */
     acbb_sweep_done_fn done;
     void *ctx;
     int transient;                 /* 1: each point's transient as its scene says */
@@ -111,5 +115,9 @@ uint64_t acbb_sweep_fingerprint(const acbb_sweep *g, const acbb_scene *base, int
 /* Scene key i as "section.key" into key; 0 when the grid varies it (it is
  * then not part of the fingerprint's scene) or i is out of range. */
 int acbb_sweep_scene_key(const acbb_sweep *g, size_t i, char *key, size_t n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

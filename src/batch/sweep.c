@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/sweep.h"
+#include "c_locale.h"
 
 typedef struct {
     char key[ACBB_SWEEP_KEY];
@@ -53,7 +54,7 @@ static int parse_double(const char *s, size_t len, double *v)
     buf[len] = '\0';
     char *end = NULL;
     errno = 0;
-    *v = strtod(buf, &end);
+    *v = acbb_strtod_c(buf, &end);
     return errno == 0 && *end == '\0' && isfinite(*v);
 }
 

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/json.h"
+#include "c_locale.h"
 
 void acbb_json_init(acbb_json *j, FILE *f)
 {
@@ -84,7 +85,11 @@ void acbb_json_num(acbb_json *j, const char *key, double v)
 {
     put_key(j, key);
     if (isfinite(v)) {
-        fprintf(j->f, "%.17g", v); /* full precision: round-trips exactly */
+        {
+            char t[32]; /* full precision: round-trips exactly; a point, never a comma */
+            acbb_snprintf_c(t, sizeof t, "%.17g", v);
+            fputs(t, j->f);
+        }
     } else {
         j->nonfinite++;
         fputs("null", j->f);
@@ -118,7 +123,7 @@ void acbb_json_null(acbb_json *j, const char *key)
 void acbb_json_value_text(acbb_json *j, const char *key, const char *text)
 {
     char *end = NULL;
-    double v = strtod(text, &end);
+    double v = acbb_strtod_c(text, &end);
     if (end != text && *end == '\0' && isfinite(v)) acbb_json_num(j, key, v);
     else acbb_json_str(j, key, text);
 }

@@ -5,10 +5,9 @@
  * Unit conversion: value_SI = value_preset * scale. No key needs an offset:
  * temperatures stay in degrees Celsius inside a Scene (see scene.h).
  *
- * Locale: numbers are read with strtod and written with snprintf, and both
- * follow LC_NUMERIC. A program using this module must leave LC_NUMERIC at
- * "C" (set only LC_CTYPE from the environment), or presets would be read and
- * written with decimal commas. */
+ * Locale: numbers are read and written in the "C" locale whatever the host
+ * program set (base/c_locale.h), so a preset reads and saves the same under
+ * de_DE. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +16,7 @@
 #include "acbb/limits.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
+#include "c_locale.h"
 /* Enum fields are read and written through an int (memcpy, no aliasing). */
 _Static_assert(sizeof(acbb_model_level) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_geom_mode) == sizeof(int), "enum size");
@@ -449,13 +449,13 @@ static void format_real(double si, double scale, char *buf, size_t n)
     char best[40] = "", t[40];
     for (int prec = 1; prec <= 17; prec++) {
         for (int c = 0; c < n_exact; c++) {
-            snprintf(t, sizeof t, "%.*g", prec, exact[c]);
-            bool same = strtod(t, NULL) * scale == si;
+            acbb_snprintf_c(t, sizeof t, "%.*g", prec, exact[c]);
+            bool same = acbb_strtod_c(t, NULL) * scale == si;
             if (same && (best[0] == '\0' || text_cost(t) < text_cost(best)))
                 memcpy(best, t, sizeof t);
         }
     }
-    if (best[0] == '\0') snprintf(best, sizeof best, "%.17g", si / scale);
+    if (best[0] == '\0') acbb_snprintf_c(best, sizeof best, "%.17g", si / scale);
     snprintf(buf, n, "%s", best);
 }
 

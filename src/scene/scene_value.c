@@ -9,6 +9,7 @@
 #include <strings.h>
 
 #include "scene_internal.h"
+#include "c_locale.h"
 
 /* ---- key lookup and suggestions ---- */
 
@@ -136,7 +137,7 @@ static acbb_status parse_number(const acbb_sfield *f, const char *t, double *out
     const char *digits = t + (t[0] == '+' || t[0] == '-');
     if (digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X'))
         return reason(why, n, "decimal numbers only (hexadecimal like 0x10 is not accepted)");
-    double v = strtod(t, &end);
+    double v = acbb_strtod_c(t, &end);
     if (end == t) return reason(why, n, "not a number");
     if (*end != '\0')
         return reason(why, n, "not a number (unexpected \"%s\" after %.*s)", end,

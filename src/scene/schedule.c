@@ -11,6 +11,7 @@
 
 #include "acbb/schedule.h"
 #include "scene_internal.h"
+#include "c_locale.h"
 
 /* The keys a row's columns stand for, in column order after the time. */
 static const char *const k_columns[] = { "inner_speed_rpm", "axial_load_N", "radial_load_N" };
@@ -99,7 +100,7 @@ static acbb_status parse_time(const char *tok, const char *text, double *t, acbb
 {
     char *end;
     const char *d = tok + (tok[0] == '+' || tok[0] == '-');
-    double v = strtod(tok, &end);
+    double v = acbb_strtod_c(tok, &end);
     bool hex = d[0] == '0' && (d[1] == 'x' || d[1] == 'X');
     if (hex || end == tok || *end != '\0' || !isfinite(v))
         return bad_row(err, text, "t_s = \"%s\": not a decimal number of seconds", tok);
