@@ -196,7 +196,7 @@ static void test_adv_and_static_R(const acbb_scene *s, const acbb_network *nw)
 }
 
 /* thermal.contact_model = moving (docs/contact_heat.md): each body at its
- * own surface speed, by hand: R0 = K(e)/(2 pi k a), R_inf = 0.309957
+ * own surface speed, by hand: R0 = K(e)/(2 pi k a), R_inf = 0.309955
  * sqrt(kappa/(v b))/(k a), R = (R0^-2 + R_inf^-2)^-1/2 per contact, / Z;
  * c_mv on the race side only. The stationary model ignores the speeds. */
 static void test_moving46(const acbb_scene *s, acbb_network *nw, const acbb_net_inputs *in0)
@@ -209,7 +209,7 @@ static void test_moving46(const acbb_scene *s, acbb_network *nw, const acbb_net_
     double hand[2];
     const double v[2] = {21.0, 19.0};
     for (int i = 0; i < 2; i++) {
-        double Rf = 0.309957 * sqrt(kappa / (v[i] * b)) / (k * a);
+        double Rf = 0.309955 * sqrt(kappa / (v[i] * b)) / (k * a);
         hand[i] = 1.0 / sqrt(1.0 / (R0 * R0) + 1.0 / (Rf * Rf)) / 21;
     }
     acbb_scene sm = *s;

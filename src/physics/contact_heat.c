@@ -33,7 +33,7 @@ double acbb_spot_r_stationary(double a, double b, double k)
  * across, b along the motion) is (2 q / k) sqrt(kappa / (pi v)) <sqrt s>,
  * <sqrt s> = 4 sqrt(2) B(1/2, 7/4) sqrt(b) / (3 pi). With q = Q / (pi a b):
  * R = C sqrt(kappa / (v b)) / (k a), C = 8 sqrt(2) Gamma(7/4) /
- * (3 pi^2 Gamma(9/4)) = 0.30996 (Archard's 0.31 for a circle). */
+ * (3 pi^2 Gamma(9/4)) = 0.30995 (Archard's 0.31 for a circle). */
 double acbb_spot_c_fast(void)
 {
     return 8.0 * M_SQRT2 * tgamma(1.75) / (3.0 * M_PI * M_PI * tgamma(2.25));

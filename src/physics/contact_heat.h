@@ -19,7 +19,7 @@ double acbb_spot_r_stationary(double a, double b, double k);
 
 /* High-speed limit alone: a = semi-axis across the rolling direction, b =
  * along it (m), k, diffusivity kappa = k / (rho c_p) (m^2/s), surface
- * speed v (m/s): C_inf sqrt(kappa / (v b)) / (k a), C_inf = 0.30996.
+ * speed v (m/s): C_inf sqrt(kappa / (v b)) / (k a), C_inf = 0.30995.
  * v or b not > 0: +inf (no moving-source limit). */
 double acbb_spot_r_fast(double a, double b, double k, double kappa, double v);
 
