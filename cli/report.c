@@ -17,6 +17,7 @@
 #include "exit.h"
 #include "progress.h"
 #include "report.h"
+#include "report_contact.h"
 
 /* ---- mountings (issue 17 item 7; MODEL.md 14) ----
  * Each seed conclusion is judged under the seed rig's constant force and
@@ -65,6 +66,7 @@ typedef struct {
     const acbb_study_rob *rob;   /* --sensitivity, else NULL */
     const acbb_study *by[N_MOUNTINGS]; /* the study under each mounting (k_mountings) */
     const char *loss_set;        /* acbb_loss_set of the preset: "seed" | "extended" */
+    const acbb_contact_study *contact; /* the runaway case under each contact model */
 } report_view;
 
 /* ---- robustness (--sensitivity) ---- */
@@ -338,6 +340,8 @@ static void print_text(FILE *f, const report_view *c)
     fprintf(f, "\n%d held, %d not held, %d not evaluated\n", nv[0], nv[1], nv[2]);
     fputc('\n', f);
     print_mountings_text(f, c);
+    fputc('\n', f);
+    acbb_report_contact_text(f, c->contact);
     if (c->rob) {
         fputc('\n', f);
         print_robust_text(f, c);
@@ -455,6 +459,8 @@ static void json_item(acbb_json *j, const report_view *c, size_t i, size_t nc)
     acbb_json_close(j, '}');
     acbb_json_close(j, '}');
     json_mountings(j, c, i);
+    /* item 9's rigid-preload mounting is judged at the runaway case */
+    if (it->num == 9) acbb_report_contact_json(j, c->contact);
     json_robust(j, c, i);
     acbb_json_close(j, '}');
 }
@@ -612,6 +618,7 @@ static void print_md(FILE *f, const report_view *c)
                 md_text(f, ch ? ch->text : "not evaluated");
                 fputc('\n', f);
             }
+    acbb_report_contact_md(f, c->contact);
     fputs("\n## Evidence\n", f);
     for (size_t i = 0; i < n; i++) {
         const acbb_study_item *it = acbb_study_item_at(c->st, i);
@@ -675,7 +682,8 @@ static void rob_progress_fn(void *ctx, size_t done, size_t total)
  * taken down) stopped nothing, so the complete report is printed and the
  * exit status is the runs' own. */
 static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
-                   acbb_study *const *other, acbb_study_rob *rob, bool *have_rob)
+                   acbb_study *const *other, acbb_study_rob *rob, bool *have_rob,
+                   const acbb_scene *base, acbb_contact_study *cs)
 {
     long jobs = 0;
     if (acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs) != 0)
@@ -693,6 +701,18 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
         if (so == ACBB_CANCELLED) ss = so;
     }
     int rc = 0;
+    if (ss != ACBB_CANCELLED) {
+        acbb_error err = { { 0 } };
+        acbb_cli_progress_note(&rp, "report: contact heat models on the runaway case  "
+                               "(Ctrl-C stops)");
+        acbb_status cr = acbb_contact_study_run(base, cancel, cs, &err);
+        if (cr == ACBB_CANCELLED) ss = cr;
+        else if (cr != ACBB_OK) {
+            fprintf(stderr, "acbb: report: contact heat models: %s; no report printed\n",
+                    err.msg);
+            rc = acbb_cli_exit_for(cr);
+        }
+    }
     if (ss != ACBB_CANCELLED && (a->val[CLI_OPT_SENSITIVITY] || k->n)) {
         acbb_error err = { { 0 } };
         acbb_study_rob_opts o = { .keys = k->n ? k->keys : NULL, .n_keys = k->n,
@@ -758,15 +778,18 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     }
     acbb_study_rob rob = { 0 };
     bool have_rob = false;
-    int rc = run_all(a, k, st, other, &rob, &have_rob);
+    acbb_contact_study *cs = calloc(1, sizeof *cs);
+    if (!cs) fputs("acbb: report: out of memory\n", stderr);
+    int rc = cs ? run_all(a, k, st, other, &rob, &have_rob, base, cs) : ACBB_EXIT_INTERNAL;
     if (rc != 0) {
         if (md) acbb_out_abort(md);
         free_studies(st, other);
         acbb_study_rob_free(&rob);
+        free(cs);
         return rc < 0 ? cancelled(a) : rc;
     }
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
-                      have_rob ? &rob : NULL, { NULL }, acbb_loss_set(base) };
+                      have_rob ? &rob : NULL, { NULL }, acbb_loss_set(base), cs };
     for (int m = 0; m < N_MOUNTINGS; m++) v.by[m] = m == own ? st : other[m];
     long misuse = a->val[CLI_OPT_JSON] ? print_json(stdout, &v) : 0;
     if (!a->val[CLI_OPT_JSON]) print_text(stdout, &v);
@@ -782,6 +805,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     }
     free_studies(st, other);
     acbb_study_rob_free(&rob);
+    free(cs);
     return rc;
 }
 

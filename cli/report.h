@@ -29,6 +29,13 @@
  * --inputs K1,... (implies --sensitivity) varies only those inputs, and an
  * input without a plausible range is bad input (exit 2).
  *
+ * Every report also runs the runaway case (the bearing at 16000 rpm under
+ * rigid preload set by 1000 N; include/acbb/contact_study.h) under each
+ * thermal.contact_model and race-side thermal.contact_multiplier 0.25, 0.5,
+ * 1, 2 (8 short transient runs) and shows which branch each reaches: a
+ * text section, a Markdown section, and item 9's JSON member
+ * "contact_heat" (item 9's rigid-preload mounting is judged there).
+ *
  * SIGINT / SIGTERM (progress.h) stop the runs within a step: no report is
  * printed (--json prints {"status": "cancelled", ...}), no --md file is
  * written, exit 3.

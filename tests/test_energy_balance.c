@@ -97,7 +97,8 @@ static void test_heating_off_set(void)
 /* Random valid scenes: speed, axial load, a radial load (the tilt free,
  * issue 18) within the ill-posedness guard (Fa >= 1.25 Fr tan 15 deg),
  * network, bore boundary, lubrication method with churning, an ISO grade,
- * the EHL rolling loss; steady and transient. rand_r: reproducible. */
+ * the EHL rolling loss; stationary and moving contact heat; steady and
+ * transient. rand_r: reproducible. */
 static void test_random_sample(void)
 {
     unsigned seed = 18;
@@ -112,6 +113,9 @@ static void test_random_sample(void)
          * direct steady solve */
         s.thermal_mode = k % 4 == 3 ? ACBB_THERMAL_TRANSIENT : ACBB_THERMAL_STEADY;
         s.model = ACBB_MODEL_QUASI_STATIC;
+        /* both contact heat models on both networks (docs/contact_heat.md);
+         * drawn without rand_r so the other draws stay as they were */
+        s.contact_model = (k / 2) % 2 ? ACBB_CONTACT_MOVING : ACBB_CONTACT_STATIONARY;
         s.inner_speed = (2000 + rand_r(&seed) % 14000) * 2 * M_PI / 60;
         s.axial_load = 100 + rand_r(&seed) % 900;
         if (rand_r(&seed) % 2) {

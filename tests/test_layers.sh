@@ -163,6 +163,21 @@ found=$(msgs "${engine[@]}")
 t $? "no engine message names a CLI flag"
 [ -z "$found" ] || printf '%s\n' "$found" | sed 's/^/#   /'
 
+# (4b) Every public header is in the umbrella acbb.h and has extern "C"
+# guards; none names C11's atomic_int (acbb_atomic_int: cancel_flag.h),
+# so a C++ host can include it (issue 28 item 5).
+bad_pub=""
+for f in include/acbb/*.h; do
+    h=${f##*/}
+    case $h in acbb.h|cancel_flag.h) continue ;; esac
+    grep -q "^#include \"acbb/$h\"" include/acbb/acbb.h || bad_pub+="$f: not in acbb.h"$'\n'
+    grep -q 'extern "C"' "$f" || bad_pub+="$f: no extern \"C\""$'\n'
+    grep -Eq '(^|[^_])atomic_int|_Atomic' "$f" && bad_pub+="$f: C11 atomics in a public type"$'\n'
+done
+[ -z "$bad_pub" ]
+t $? "every public header is in acbb.h, has extern \"C\" and no C11 atomic type"
+[ -z "$bad_pub" ] || printf '%s' "$bad_pub" | sed 's/^/#   /'
+
 # (5) Layer order (README "Source tree"): an engine folder includes internal
 # headers only from folders below it: base < physics < scene < run < batch < io.
 declare -A rank=([base]=-1 [physics]=0 [scene]=1 [run]=2 [batch]=3 [io]=4) home=()

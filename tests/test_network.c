@@ -91,7 +91,7 @@ static int find_edge(const acbb_network *nw, int p, int q)
  * rolling kinematics omega_m = omega_i/2 (1 - D cos(alpha)/d_m). */
 static acbb_net_inputs inputs_15k(const acbb_scene *s)
 {
-    acbb_net_inputs in;
+    acbb_net_inputs in = { 0 };
     in.a_i = in.a_o = 1.0e-3;
     in.b_i = in.b_o = 0.17e-3;
     in.omega_i = s->inner_speed;
@@ -195,6 +195,36 @@ static void test_adv_and_static_R(const acbb_scene *s, const acbb_network *nw)
     ok(acbb_tnet_resistance(nw->net, nw->edge_sp_race_i) == 1e6, "SP open before update");
 }
 
+/* thermal.contact_model = moving (docs/contact_heat.md): each body at its
+ * own surface speed, by hand: R0 = K(e)/(2 pi k a), R_inf = 0.309955
+ * sqrt(kappa/(v b))/(k a), R = (R0^-2 + R_inf^-2)^-1/2 per contact, / Z;
+ * c_mv on the race side only. The stationary model ignores the speeds. */
+static void test_moving46(const acbb_scene *s, acbb_network *nw, const acbb_net_inputs *in0)
+{
+    acbb_net_inputs in = *in0;
+    in.v_race_i = 21.0;
+    in.v_ball_i = 19.0;
+    double kappa = 40.1 / (7810.0 * 450.0), k = 40.1, a = 1.0e-3, b = 0.17e-3;
+    double R0 = K_agm(sqrt(1.0 - pow(b / a, 2))) / (2 * M_PI * k * a);
+    double hand[2];
+    const double v[2] = {21.0, 19.0};
+    for (int i = 0; i < 2; i++) {
+        double Rf = 0.309955 * sqrt(kappa / (v[i] * b)) / (k * a);
+        hand[i] = 1.0 / sqrt(1.0 / (R0 * R0) + 1.0 / (Rf * Rf)) / 21;
+    }
+    acbb_scene sm = *s;
+    sm.contact_model = ACBB_CONTACT_MOVING;
+    sm.contact_multiplier = 0.5;
+    ok(acbb_network_update(nw, &sm, &in) == ACBB_OK, "moving: update OK");
+    is_close(acbb_tnet_resistance(nw->net, nw->edge_sp_race_i), 0.5 * hand[0], 1e-5, 0,
+             "moving: race 19-44 at 21 m/s, c_mv 0.5 (hand)");
+    is_close(acbb_tnet_resistance(nw->net, nw->edge_sp_ball_i), hand[1], 1e-5, 0,
+             "moving: ball 44-17 at 19 m/s (hand)");
+    ok(acbb_network_update(nw, s, &in) == ACBB_OK &&
+       fabs(acbb_tnet_resistance(nw->net, nw->edge_sp_race_i) - R0 / 21) <= 1e-10 * R0 / 21,
+       "stationary: the speeds change nothing");
+}
+
 static void test_update46(const acbb_scene *s, acbb_network *nw)
 {
     acbb_net_inputs in = inputs_15k(s);
@@ -230,6 +260,7 @@ static void test_update46(const acbb_scene *s, acbb_network *nw)
              "circular spot: race side c_mv/(4 k a Z)");
     is_close(acbb_tnet_resistance(nw->net, nw->edge_sp_ball_i), 1.0 / (4 * 40.1 * 0.5e-3) / 21,
              1e-12, 0, "circular spot: ball side not multiplied");
+    test_moving46(s, nw, &in);
     acbb_network_update(nw, s, &in);
 }
 

@@ -146,6 +146,39 @@ code $? 2 "--inputs with a key that has no plausible range exits 2"
 grep -q 'materials.ball_E_GPa is not an uncertain input' "$TMP/err"
 t $? "... and says why"
 
+# ---- contact heat models on the runaway case (issue 25 item 3) ----
+# Each row is computed: it equals `acbb run` of presets/runaway-rigid-preload.ini
+# (the 7008C case the section derives) under that model and multiplier.
+jq -e '.[8].contact_heat.runs | length == 8 and ([.[].contact_model] | unique == ["moving", "stationary"])' \
+    "$TMP/out.json" >/dev/null 2>&1
+t $? "JSON: item 9 carries contact_heat with 8 runs (2 models x 4 multipliers)"
+jq -e '[.[] | select(has("contact_heat"))] | length == 1' "$TMP/out.json" >/dev/null 2>&1
+t $? "JSON: only item 9 carries it"
+bad=0
+for i in 0 1 2 3 4 5 6 7; do
+    row=$(jq -r ".[8].contact_heat.runs[$i] | \"\(.contact_model) \(.contact_multiplier) \(.status) \(.time_s) \(.T_ball_C)\"" "$TMP/out.json")
+    set -- $row
+    run=$("$ACBB" run presets/runaway-rigid-preload.ini --set thermal.contact_model="$1" \
+          --set thermal.contact_multiplier="$2" --json 2>/dev/null |
+          jq -r '"\(.status) \(.time_s) \(.temperature_C.ball)"')
+    [ "$3 $4 $5" = "$run" ] || { bad=1; echo "# $1 c_mv $2: report '$3 $4 $5', run '$run'"; }
+done
+[ "$bad" -eq 0 ]
+t $? "every row equals acbb run presets/runaway-rigid-preload.ini under its model and c_mv"
+st=$(jq -r '[.[8].contact_heat.runs[] | select(.contact_model == "stationary") | .status] | join(" ")' "$TMP/out.json")
+[ "$st" = "converged converged runaway runaway" ]
+t $? "stationary spots: the runaway case converges at c_mv 0.25 and 0.5, runs away at 1 and 2 ($st)"
+mv=$(jq -r '[.[8].contact_heat.runs[] | select(.contact_model == "moving") | .status] | join(" ")' "$TMP/out.json")
+[ "$mv" = "converged converged converged converged" ]
+t $? "moving source: converged at every c_mv ($mv)"
+grep -q -E '^stationary  converged at c_mv 0.25, 0.5; runaway at c_mv 1, 2$' "$TMP/out.txt" &&
+    grep -q -E '^moving      converged at c_mv 0.25, 0.5, 1, 2$' "$TMP/out.txt"
+t $? "text: each model's branches by c_mv, as the JSON says"
+[ "$(sed -n '/^Contact heat paths/,$p' "$TMP/out.txt" | grep -c -E '^(stationary|moving) +[0-9.]+  (converged|runaway) ')" -eq 8 ]
+t $? "text: 8 rows in the contact heat section"
+[ "$(sed -n '/^## Contact heat models/,/^## Evidence/p' "$TMP/SEED.md" | grep -c -E '^\| (stationary|moving) \|')" -eq 8 ]
+t $? "Markdown: the contact heat table has 8 rows"
+
 # ---- bad input ----
 "$ACBB" report "$PRESET" --set operating.axial_load_N=abc >/dev/null 2>"$TMP/err"
 code $? 2 "bad --set value exits 2"

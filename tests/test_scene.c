@@ -218,6 +218,7 @@ static const char *const k_expected[][2] = {
     {"fidelity.max_wall_s", "0"}, /* issue 20: the wall-clock bound, off */
     {"thermal.max_time_s", "36000"}, {"thermal.max_steps", "20000"},
     {"thermal.temp_limit_C", "150"}, {"thermal.contact_multiplier", "1"},
+    {"thermal.contact_model", "stationary"}, /* issue 25: the seed's spots */
     {"thermal.heat_partition", "0.5"},
     {"life.reliability_pct", "90"},
     {"life.contamination_ec", "0.5"},

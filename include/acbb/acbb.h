@@ -30,8 +30,10 @@
 #include "acbb/plot.h"
 #include "acbb/json.h"
 #include "acbb/ffi.h"
+#include "acbb/life.h"
 #include "acbb/life_eval.h"
 #include "acbb/preload_map.h"
+#include "acbb/contact_study.h"
 
 #ifdef __cplusplus
 extern "C" {

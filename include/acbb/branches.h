@@ -56,6 +56,14 @@ acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
                                   const acbb_atomic_int *cancel, acbb_branches *out,
                                   acbb_error *err);
 
+/* One run of s as it is, to its end, into `snap` (a run that never
+ * started: state failed, its status and message). ACBB_OK also when the
+ * run fails; ACBB_CANCELLED, ACBB_ENOMEM. */
+acbb_status acbb_branch_run(const acbb_scene *s, const acbb_atomic_int *cancel, acbb_snapshot *snap);
+
+/* The summary above of a finished run. */
+void acbb_branch_summarize(const acbb_snapshot *r, acbb_branch_state *b);
+
 #ifdef __cplusplus
 }
 #endif

@@ -53,6 +53,10 @@ typedef enum { ACBB_SET_SINGLE, ACBB_SET_DB, ACBB_SET_DF, ACBB_SET_DT, ACBB_SET_
 /* mounting.tilt (issue 18): auto (default) = free: solved under any off-axis load. */
 typedef enum { ACBB_TILT_AUTO, ACBB_TILT_FREE, ACBB_TILT_HELD } acbb_tilt_mode;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
+/* thermal.contact_model (docs/contact_heat.md): stationary = isothermal spot
+ * constriction on both bodies (MODEL.md 8.1 SP, the seed); moving = each
+ * body's surface passes through the contact (Archard / Tian-Kennedy). */
+typedef enum { ACBB_CONTACT_STATIONARY, ACBB_CONTACT_MOVING } acbb_contact_model;
 /* fidelity.preset (fidelity.h): custom = the individual knobs. */
 typedef enum { ACBB_FIDELITY_CUSTOM, ACBB_FIDELITY_FAST, ACBB_FIDELITY_BALANCED,
                ACBB_FIDELITY_REFERENCE } acbb_fidelity_preset;
@@ -209,6 +213,7 @@ typedef struct {
     int max_steps;               /* coupled step limit */
     double temp_limit_C;         /* RUNAWAY above this node temperature, C */
     double contact_multiplier;   /* c_mv on race-side spot resistances */
+    acbb_contact_model contact_model; /* spot resistances: stationary or moving source */
     double heat_partition;       /* phi_p for the 7-node network */
 
     /* [life] rating life and static safety (MODEL.md 15, life.h) */

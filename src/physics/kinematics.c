@@ -38,6 +38,12 @@ void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double
     k->roll_i = -wx * ci + wz * si;
     k->u_o = 0.5 * (0.5 * D * k->roll_o + wm * (rm + 0.5 * D * co));
     k->u_i = 0.5 * (0.5 * D * k->roll_i + (omega_i - wm) * (rm - 0.5 * D * ci));
+    /* The two terms of u_c: ball and race surface speeds relative to the
+     * contact centre, which is fixed in the cage frame (MODEL.md 4). */
+    k->v_ball_o = fabs(0.5 * D * k->roll_o);
+    k->v_race_o = fabs(wm * (rm + 0.5 * D * co));
+    k->v_ball_i = fabs(0.5 * D * k->roll_i);
+    k->v_race_i = fabs((omega_i - wm) * (rm - 0.5 * D * ci));
 }
 
 acbb_control acbb_race_control_choose(double Qi, double ai, double Ei, double Qo, double ao,

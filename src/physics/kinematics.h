@@ -12,6 +12,9 @@ typedef struct {
     double spin_i, spin_o;      /* spin about the contact normals, rad/s */
     double roll_i, roll_o;      /* rolling components omega_R cos(alpha - beta) */
     double u_i, u_o;            /* entrainment speeds at the contact centres, m/s */
+    /* each body's surface speed through the contact (cage frame, |.|), m/s:
+     * the moving-heat-source spot resistances (docs/contact_heat.md) */
+    double v_race_i, v_ball_i, v_race_o, v_ball_o;
 } acbb_kin;
 
 /* Race-control kinematics for contact angles (alpha_i, alpha_o), ball

@@ -16,8 +16,7 @@
  * indices are recorded once (edge_sp_*, edge_cv[]). */
 #include <math.h>
 #include <string.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_sf_ellint.h>
+#include "contact_heat.h"
 #include "network.h"
 
 #define R_OPEN 1e6             /* "no contact" spot / no-flow resistance, K/W */
@@ -282,26 +281,18 @@ static void films_at(const net_geom *g, const acbb_scene *s, const net_fluid *f,
     h->cap = fmax(h_plate(f, 0.5 * omega_m * g->r_cap_in, g->t_cap), hn);
 }
 
-/* ---- contact spots (MODEL.md 8.1 SP, [Y]) ---- */
+/* ---- contact spots (MODEL.md 8.1 SP, [Y]; docs/contact_heat.md) ---- */
 
-/* Isothermal elliptic spot on a half space, one body, Z contacts in
- * parallel: R = K(e) / (2 pi k a) / Z, e = sqrt(1 - (b/a)^2). */
-static double r_spot(double a, double b, double k, int Z)
+/* One body's spot resistance, Z contacts in parallel: the stationary
+ * isothermal spot (the seed) or the moving source (contact_heat.h) at the
+ * body's own surface speed v through the contact and diffusivity. */
+static double r_spot(const acbb_scene *s, double a, double b, const acbb_material *m,
+                     double v, int Z)
 {
-    if (!(a > 0.0) || !(b > 0.0)) return R_OPEN;
-    if (b > a) {
-        double t = a;
-        a = b;
-        b = t;
-    }
-    double kp = b / a, K;
-    gsl_sf_result res;
-    /* near e = 1 the modulus rounds to 1.0; use K ~ ln(4/k') there */
-    if (kp < 1e-6 || gsl_sf_ellint_Kcomp_e(sqrt(1.0 - kp * kp), GSL_PREC_DOUBLE, &res))
-        K = log(4.0 / kp);
-    else
-        K = res.val;
-    return fmin(K / (2.0 * M_PI * k * a) / Z, R_OPEN);
+    double r = s->contact_model == ACBB_CONTACT_MOVING
+                   ? acbb_spot_r_moving(a, b, m->k, m->k / (m->rho * m->cp), v)
+                   : acbb_spot_r_stationary(a, b, m->k);
+    return fmin(r / Z, R_OPEN);
 }
 
 /* ---- names ---- */
@@ -705,8 +696,9 @@ void acbb_network_free(acbb_network *nw)
 
 static int inputs_ok(const acbb_net_inputs *in)
 {
-    const double v[] = {in->a_i, in->b_i, in->a_o, in->b_o};
-    for (int i = 0; i < 4; i++)
+    const double v[] = {in->a_i, in->b_i, in->a_o, in->b_o,
+                        in->v_race_i, in->v_ball_i, in->v_race_o, in->v_ball_o};
+    for (int i = 0; i < 8; i++)
         if (!isfinite(v[i]) || v[i] < 0.0) return 0;
     return isfinite(in->omega_i) && isfinite(in->omega_m) && isfinite(in->T_cavity_C);
 }
@@ -722,10 +714,10 @@ acbb_status acbb_network_update(acbb_network *nw, const acbb_scene *s,
     /* Only the balls in contact conduct through a spot (load zone). */
     int Zi = in->n_loaded_i > 0 ? in->n_loaded_i : g.Z;
     int Zo = in->n_loaded_o > 0 ? in->n_loaded_o : g.Z;
-    double race_i = cmv * r_spot(in->a_i, in->b_i, s->ring.k, Zi);
-    double ball_i = r_spot(in->a_i, in->b_i, s->ball.k, Zi);
-    double race_o = cmv * r_spot(in->a_o, in->b_o, s->ring.k, Zo);
-    double ball_o = r_spot(in->a_o, in->b_o, s->ball.k, Zo);
+    double race_i = cmv * r_spot(s, in->a_i, in->b_i, &s->ring, in->v_race_i, Zi);
+    double ball_i = r_spot(s, in->a_i, in->b_i, &s->ball, in->v_ball_i, Zi);
+    double race_o = cmv * r_spot(s, in->a_o, in->b_o, &s->ring, in->v_race_o, Zo);
+    double ball_o = r_spot(s, in->a_o, in->b_o, &s->ball, in->v_ball_o, Zo);
 
     net_fluid f;
     net_edge cv[16];

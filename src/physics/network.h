@@ -40,6 +40,9 @@ typedef struct {
     double a_o, b_o;        /* outer contact semi-axes, m */
     double omega_i;         /* inner ring speed, rad/s */
     double omega_m;         /* ball orbital (cage) speed, rad/s */
+    /* surface speeds through the contact, m/s (mean over loaded balls);
+     * used by thermal.contact_model = moving only */
+    double v_race_i, v_ball_i, v_race_o, v_ball_o;
     double T_cavity_C;      /* current oil-air temperature (for properties), C */
     int n_loaded_i, n_loaded_o; /* balls in contact at each race; 0 = all Z */
 } acbb_net_inputs;

@@ -21,7 +21,7 @@ bool acbb_branches_wanted(const acbb_scene *s)
     return s->heating && (s->schedule_n > 0 || s->preload == ACBB_PRELOAD_DISPLACEMENT);
 }
 
-static void summarize(const acbb_snapshot *r, acbb_branch_state *b)
+void acbb_branch_summarize(const acbb_snapshot *r, acbb_branch_state *b)
 {
     memset(b, 0, sizeof *b);
     snprintf(b->status, sizeof b->status, "%s", acbb_run_status_name(r));
@@ -55,16 +55,11 @@ static void compare(const acbb_snapshot *st, const acbb_snapshot *tr, acbb_branc
                  && dT <= AGREE_DT_K && out->loss_rel <= AGREE_LOSS_REL;
 }
 
-/* The scene in the other thermal mode, run to its end into `snap`. */
-static acbb_status run_other(const acbb_scene *s, const atomic_int *cancel, acbb_snapshot *snap)
+acbb_status acbb_branch_run(const acbb_scene *o, const atomic_int *cancel, acbb_snapshot *snap)
 {
-    acbb_scene o = *s;
-    acbb_fidelity_apply(&o, NULL);
-    o.thermal_mode = o.thermal_mode == ACBB_THERMAL_STEADY ? ACBB_THERMAL_TRANSIENT
-                                                           : ACBB_THERMAL_STEADY;
     acbb_sim *sim = NULL;
     acbb_error e = { "" };
-    acbb_status rc = acbb_sim_new_ctl(&o, cancel, &sim, &e);
+    acbb_status rc = acbb_sim_new_ctl(o, cancel, &sim, &e);
     if (rc != ACBB_OK) {
         /* Never started: its status and message, no state. */
         memset(snap, 0, sizeof *snap);
@@ -77,6 +72,16 @@ static acbb_status run_other(const acbb_scene *s, const atomic_int *cancel, acbb
     acbb_sim_snapshot(sim, snap);
     acbb_sim_free(sim);
     return rc == ACBB_CANCELLED ? rc : ACBB_OK;
+}
+
+/* The scene in the other thermal mode, run to its end into `snap`. */
+static acbb_status run_other(const acbb_scene *s, const atomic_int *cancel, acbb_snapshot *snap)
+{
+    acbb_scene o = *s;
+    acbb_fidelity_apply(&o, NULL);
+    o.thermal_mode = o.thermal_mode == ACBB_THERMAL_STEADY ? ACBB_THERMAL_TRANSIENT
+                                                           : ACBB_THERMAL_STEADY;
+    return acbb_branch_run(&o, cancel, snap);
 }
 
 acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
@@ -95,8 +100,8 @@ acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
     acbb_fidelity_apply(&applied, NULL);
     int run_steady = applied.thermal_mode == ACBB_THERMAL_STEADY;
     const acbb_snapshot *st = run_steady ? run : other, *tr = run_steady ? other : run;
-    summarize(st, &out->steady);
-    summarize(tr, &out->transient);
+    acbb_branch_summarize(st, &out->steady);
+    acbb_branch_summarize(tr, &out->transient);
     compare(st, tr, out);
     out->criterion = k_criterion;
     free(other);

@@ -155,15 +155,23 @@ void acbb_simx_network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
         wm += b->kin.omega_m;
         if (b->ct_i.a > 0.0 && b->Qi > 1e-6) {
             in->a_i += b->ct_i.a; in->b_i += b->ct_i.b;
+            in->v_race_i += b->kin.v_race_i; in->v_ball_i += b->kin.v_ball_i;
             in->n_loaded_i++;
         }
         if (b->ct_o.a > 0.0 && b->Qo > 1e-6) {
             in->a_o += b->ct_o.a; in->b_o += b->ct_o.b;
+            in->v_race_o += b->kin.v_race_o; in->v_ball_o += b->kin.v_ball_o;
             in->n_loaded_o++;
         }
     }
-    if (in->n_loaded_i > 0) { in->a_i /= in->n_loaded_i; in->b_i /= in->n_loaded_i; }
-    if (in->n_loaded_o > 0) { in->a_o /= in->n_loaded_o; in->b_o /= in->n_loaded_o; }
+    if (in->n_loaded_i > 0) {
+        in->a_i /= in->n_loaded_i; in->b_i /= in->n_loaded_i;
+        in->v_race_i /= in->n_loaded_i; in->v_ball_i /= in->n_loaded_i;
+    }
+    if (in->n_loaded_o > 0) {
+        in->a_o /= in->n_loaded_o; in->b_o /= in->n_loaded_o;
+        in->v_race_o /= in->n_loaded_o; in->v_ball_o /= in->n_loaded_o;
+    }
     in->omega_i = sim->s.inner_speed;
     in->omega_m = wm / sim->ms.n;
     in->T_cavity_C = sim->T[sim->nw.node_cavity];

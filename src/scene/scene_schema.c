@@ -35,6 +35,7 @@ _Static_assert(sizeof(acbb_bc_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_fidelity_preset) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_lub_method) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_oil_grade) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_contact_model) == sizeof(int), "enum size");
 
 /* Enum choices, in the order of the C enum values in scene.h. */
 static const char *const k_model[] = {"static", "quasi-static", "quasi-dynamic", "dynamic", NULL};
@@ -48,6 +49,7 @@ static const char *const k_preload[] = {"force", "displacement", NULL};
 static const char *const k_tilt[] = {"auto", "free", "held", NULL};
 static const char *const k_set[] = {"single", "DB", "DF", "DT", "DBT", "QBC", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
+static const char *const k_contact[] = {"stationary", "moving", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
 static const char *const k_bc[] = {"fixed", "derived", "convective", NULL};
 static const char *const k_fid_preset[] = {"custom", "fast", "balanced", "reference", NULL};
@@ -349,6 +351,9 @@ const acbb_sfield acbb_sf_table[] = {
     REALP("thermal", "contact_multiplier", "", contact_multiplier, 1.0, 1, OC, 0, 1000,
           "multiplier c_mv on the race-side spot resistances", 0.5, 2,
           "MODEL.md 8.1 ASSUMED c_mv = 1, no range quoted: x/2 to x2"),
+    ENUM("thermal", "contact_model", contact_model, k_contact, ACBB_CONTACT_STATIONARY,
+         "contact spot resistances: stationary spots (seed) or moving heat source "
+         "(each surface passes the contact; docs/contact_heat.md)"),
     REALP("thermal", "heat_partition", "", heat_partition, 1.0, 0.5, CC, 0, 1,
           "share phi_p of contact heat to the rings (7-node network)", 0.2, 0.8,
           "MODEL.md 8.3 phi_p = 0.5 (7-node network only), 0.2-0.8"),
