@@ -195,6 +195,8 @@ static void static_basis(void)
              acbb_iso_C0_table(6.35e-3, 21, a, 54e-3), 0, 1e-12, "Table 1 at its own grooves");
     ok(acbb_iso_C0(6.35e-3, 21, a, 54e-3, 0.515, 0.525, STEEL) >
        acbb_iso_C0_table(6.35e-3, 21, a, 54e-3), "tighter grooves: the stress, above the table");
+    ok(acbb_iso_C0(6.35e-3, 21, a, 54e-3, 0.5402, 0.5402, STEEL) == C0,
+       "the same C0 after other geometries (the per-thread memo is keyed on every input)");
     /* C_u = C0 / 22: the load putting 1500 MPa (ISO 281 Annex B's
      * fatigue-limit stress) on the same contact, to (22 / 21.95)^(1/3). */
     double Qu = 5.0 * acbb_iso_Cu(C0, 54e-3) / (21 * cos(a));
