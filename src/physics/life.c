@@ -3,7 +3,7 @@
 #include "hertz.h"
 #include "life.h"
 
-#define ISO76_PMAX 4200e6      /* Pa: ISO 76 3.1, ball bearings other than self-aligning */
+#define ISO76_PMAX 4200e6      /* Pa: ISO 76 clause 3, ball bearings other than self-aligning */
 #define ISO76_STRIBECK 5.0     /* Q_max = 5 F_r / (Z cos alpha), ISO 76's radial load zone */
 /* ISO 76 Table 1's basis: grooves 0.52 / 0.53 D_w, steel (207 GPa, 0.3). */
 #define TABLE_FI 0.52

@@ -23,7 +23,7 @@ double acbb_iso_fc_conformity(double gamma, double fi, double fo);
 /* Basic dynamic radial rating C_r, N (ISO 281 6.1.1, b_m = 1.3) with the
  * conformity reduction; fi, fo = groove radius / D_w. */
 double acbb_iso_C(double Dw, int Z, double alpha, double dpw, double fi, double fo);
-/* Basic static radial rating, N, by ISO 76's definition (3.1): the radial
+/* Basic static radial rating, N, by ISO 76's definition (clause 3): the radial
  * load whose most loaded contact, Q_max = 5 F_r / (Z cos alpha), reaches
  * 4200 MPa at the centre on whichever raceway gets there first (Hertz
  * with the real groove radii fi, fo = r / D_w and the effective modulus
