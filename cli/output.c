@@ -272,7 +272,8 @@ static void summary_balls(acbb_cli_out *o, const acbb_snapshot *s)
 }
 
 /* MODEL.md 15: ratings, lives, static safety and the shoulders (life.h):
- * three lines of "text number" items. */
+ * four lines of "text number" items (five when kappa is below ISO 281's
+ * 0.1), each under 80 columns at the presets' numbers. */
 static void summary_life(acbb_cli_out *o, const acbb_snapshot *s)
 {
     const acbb_life *L = &s->life;
@@ -288,9 +289,11 @@ static void summary_life(acbb_cli_out *o, const acbb_snapshot *s)
         { "\nlife         C ", L->C * 1e-3 }, { " kN, C0 ", L->C0 * 1e-3 }, { c0, L->L10r_h },
         { " h, Lnmr ", L->Lnmr_h }, { " h (a1 ", L->a1 }, { ", a_ISO ", L->a_iso },
         { ", kappa ", L->kappa },
-        { L->kappa_clamped ? " < 0.1: a_ISO at 0.1)\n             s0 "
+        { L->kappa_clamped ? ")\n             kappa below 0.1, where ISO 281 has no a_ISO: "
+                             "a_ISO taken at 0.1\n             s0 "
                            : ")\n             s0 ", L->s0_min },
-        { NULL, 0 }, { ", P0 ", L->P0 }, { " N, shoulder margin ", L->edge_margin_deg },
+        { NULL, 0 }, { ", P0 ", L->P0 },
+        { " N (static equivalent load)\n             shoulder margin ", L->edge_margin_deg },
     };
     for (size_t i = 0; i < sizeof it / sizeof it[0]; i++) {
         if (!it[i].pre) {
