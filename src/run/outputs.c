@@ -162,7 +162,7 @@ static const acbb_output_row k_rows[] = {
     { "life", "s0_min", "life_s0_min", "1", "least static safety (4200 MPa / p_max)^3",
       OFF_S(life.s0_min), AS_IS },
     { "life", "P0_N", "life_P0_N", "N",
-      "static equivalent radial load (ISO 76 3.4) of the worst contact: C0 / s0",
+      "static equivalent radial load (ISO 76 3.4) of the worst contact",
       OFF_S(life.P0), AS_IS },
     { "life", "edge_margin_deg", "life_edge_margin_deg", "deg",
       "least angle from a contact ellipse's end to its shoulder (< 0: truncated)",
