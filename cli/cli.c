@@ -158,6 +158,10 @@ static int run_report(const acbb_cli_args *a, const char *preset, const acbb_sce
                 "shoulder by %.2f deg (life.inner_shoulder_mm, life.outer_shoulder_mm)\n", c,
                 -snap->life.edge_margin_deg);
     }
+    if (snap->life.kappa_clamped && !a->val[CLI_OPT_QUIET]) /* ISO 281 9.3.2: 0.1 <= kappa */
+        fprintf(stderr, "acbb: warning: kappa %.3g is below 0.1, where ISO 281 does not define "
+                "a_ISO: a_ISO and L_nmr are taken at kappa 0.1 (life.kappa_clamped)\n",
+                snap->life.kappa);
     if (snap->state != ACBB_RUN_CONVERGED) {
         fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);
         rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);

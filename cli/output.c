@@ -272,7 +272,8 @@ static void summary_balls(acbb_cli_out *o, const acbb_snapshot *s)
 }
 
 /* MODEL.md 15: ratings, lives, static safety and the shoulders (life.h):
- * three lines of "text number" items. */
+ * four lines of "text number" items (five when kappa is below ISO 281's
+ * 0.1), each under 80 columns at the presets' numbers. */
 static void summary_life(acbb_cli_out *o, const acbb_snapshot *s)
 {
     const acbb_life *L = &s->life;
@@ -280,13 +281,19 @@ static void summary_life(acbb_cli_out *o, const acbb_snapshot *s)
     acbb_life_contact_name(L->s0_ball, L->s0_race, s0c, sizeof s0c);
     acbb_life_contact_name(L->edge_ball, L->edge_race, edc, sizeof edc);
     snprintf(tail, sizeof tail, " deg (%s)%s\n", edc, L->edge_loaded ? ": EDGE LOADED" : "");
+    char c0[96];
+    snprintf(c0, sizeof c0, " kN (%s%s)\n             L10r ",
+             L->C0_table ? "ISO 76 Table 1" : "4200 MPa, real grooves",
+             L->estimated ? "; internals estimated" : "");
     const struct { const char *pre; double v; } it[] = {
-        { "\nlife         C ", L->C * 1e-3 }, { " kN, C0 ", L->C0 * 1e-3 },
-        { L->estimated ? " kN (internals estimated)\n             L10r " : " kN\n             L10r ",
-          L->L10r_h },
+        { "\nlife         C ", L->C * 1e-3 }, { " kN, C0 ", L->C0 * 1e-3 }, { c0, L->L10r_h },
         { " h, Lnmr ", L->Lnmr_h }, { " h (a1 ", L->a1 }, { ", a_ISO ", L->a_iso },
-        { ", kappa ", L->kappa }, { ")\n             s0 ", L->s0_min },
-        { NULL, 0 }, { ", shoulder margin ", L->edge_margin_deg },
+        { ", kappa ", L->kappa },
+        { L->kappa_clamped ? ")\n             kappa below 0.1, where ISO 281 has no a_ISO: "
+                             "a_ISO taken at 0.1\n             s0 "
+                           : ")\n             s0 ", L->s0_min },
+        { NULL, 0 }, { ", P0 ", L->P0 },
+        { " N (static equivalent load)\n             shoulder margin ", L->edge_margin_deg },
     };
     for (size_t i = 0; i < sizeof it / sizeof it[0]; i++) {
         if (!it[i].pre) {

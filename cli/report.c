@@ -505,8 +505,9 @@ static void print_md_head(FILE *f, const report_view *c)
             "failed. Load sweep 50, 100, 150, 200, 400, 600, 800, 1000 N at 15000 rpm; speed "
             "sweeps 2000-16000 rpm (step 2000) at 100 N and 1000 N; each with (TE) and without "
             "(WTE) thermal expansion; one zero-speed run at the preset's load and four (WTE) at "
-            "the light loads. \"Room temperature\" is step 0 of the TE run, \"final\" its "
-            "converged state; per-ball numbers are ball 0's.\n\n", c->runs->n,
+            "the light loads. \"Room temperature\" is the WTE state (expansions held at 0), "
+            "\"final\" the TE run's converged state, \"step 0\" the TE run's start (which "
+            "already carries the centrifugal ring growth); per-ball numbers are ball 0's.\n\n", c->runs->n,
             acbb_model_level_name(c->model), acbb_study_n_failed(c->st));
     fprintf(f, "**%d held, %d not held, %d not evaluated** (of %zu).\n\n", nv[0], nv[1], nv[2],
             acbb_study_n_items(c->st));

@@ -35,6 +35,26 @@ t $? "a 0.3 mm inner shoulder: edge_loaded"
 grep -q '^acbb: warning: edge loading: the contact ellipse of inner ball [0-9]* passes its shoulder' \
     "$TMP/err"
 t $? "  and a named warning on stderr"
+# ---- issue 25: C0, C_u, s0 on one basis; a_ISO below kappa 0.1 said ----
+jq -e '.life | .C0_basis == "4200 MPa, real grooves" and (.C0_N / .P0_N / .s0_min - 1 | fabs < 1e-9)
+       and (.Cu_N * 22 / .C0_N - 1 | fabs < 1e-12) and .kappa_clamped == false' \
+    "$TMP/run.json" >/dev/null
+t $? "combined-load (grooves 0.5402): C0 from 4200 MPa, C0 / P0_N = s0_min, C_u = C0 / 22"
+"$ACBB" run presets/deep-groove-radial.ini --json 2>/dev/null |
+    jq -e '.life.C0_basis == "ISO 76 Table 1"' >/dev/null
+t $? "deep-groove-radial (grooves 0.52 / 0.53 D_w): C0 from ISO 76 Table 1"
+grep -q 'kN, C0 [0-9.]* kN (4200 MPa, real grooves)' "$TMP/summary" &&
+    grep -q 's0 [0-9.]* (.*), P0 [0-9.]* N (static equivalent load)$' "$TMP/summary"
+t $? "the text summary names C0's basis and P0"
+"$ACBB" run presets/7008C.ini --set operating.inner_speed_rpm=10 --json >"$TMP/slow.json" \
+    2>"$TMP/err"
+jq -e '.life.kappa < 0.1 and .life.kappa_clamped == true' "$TMP/slow.json" >/dev/null
+t $? "10 rpm: kappa < 0.1, life.kappa_clamped true"
+grep -q '^acbb: warning: kappa 0.0[0-9]* is below 0.1, where ISO 281 does not define a_ISO' "$TMP/err"
+t $? "  and a warning on stderr"
+"$ACBB" run presets/7008C.ini --set operating.inner_speed_rpm=10 2>/dev/null |
+    grep -q 'kappa below 0.1, where ISO 281 has no a_ISO: a_ISO taken at 0.1$'
+t $? "  and in the text summary"
 "$ACBB" run presets/combined-load.ini --set life.reliability_pct=80 >/dev/null 2>"$TMP/err"
 code $? 2 "reliability 80 % refused"
 has "$TMP/err" "life.reliability_pct" "  the message names the key"

@@ -91,6 +91,43 @@ for F in 200 1000; do
     done
 done
 
+# ---- issue 25 item 6: check 6a's "room temperature" is the WTE state ----
+# (MODEL.md 12), so its count is the loads where the WTE angles exceed the
+# final TE ones, recomputed here from the item's own values.
+want=$(jq -r '.[5].evidence.values as $v | [50,100,150,200,400,600,800,1000] |
+    map(select($v["alpha_i_WTE_deg_\(.)N"] > $v["alpha_i_TE_deg_\(.)N"] and
+               $v["alpha_o_WTE_deg_\(.)N"] > $v["alpha_o_TE_deg_\(.)N"])) | length' "$TMP/out.json")
+jq -r '.[5].evidence.checks[] | select(.id == "6a") | .text' "$TMP/out.json" >"$TMP/6a.txt"
+grep -q "^alpha_i, alpha_o deg, room temperature (WTE) -> final (TE):.*both fall at $want of 8\$" \
+    "$TMP/6a.txt"
+t $? "6a: room temperature is the WTE state; both angles fall at $want of 8 (from the values)"
+# ---- and 16c's tail: the numbers shown, the verdict from the stated 2 % ----
+jq -r '.[15].evidence.checks[] | select(.id == "16c") | "\(.verdict)\t\(.text)"' "$TMP/out.json" \
+    >"$TMP/16c.txt"
+awk -F'\t' '{
+    v = $1; s = $2; sub(/^.*TE\/WTE: /, "", s); sub(/;.*$/, "", s); n = split(s, e, ", ")
+    for (m = 1; m <= 2; m++) {
+        pk = 1; for (k = 1; k <= n; k++) { split(e[k], f, " "); split(f[3], x, "/"); y[k] = x[m]
+                                          if (y[k] > y[pk]) pk = k }
+        lo = pk; for (k = pk; k <= n; k++) if (y[k] < y[lo]) lo = k
+        tail = 0; for (k = lo; k <= n; k++) if (y[k] - y[lo] > tail) tail = y[k] - y[lo]
+        pct[m] = 100 * tail / (y[pk] - y[lo]); okm[m] = pk > 1 && lo > pk && pct[m] <= 2
+        for (k = 2; k <= pk; k++) okm[m] = okm[m] && y[k] > y[k - 1]
+        for (k = pk + 1; k <= lo; k++) okm[m] = okm[m] && y[k] < y[k - 1]
+    }
+    if (!match($2, /; TE peak [^;]* = [0-9.]+ % of the fall/)) exit 1
+    te = substr($2, RSTART, RLENGTH); sub(/ % of the fall$/, "", te); sub(/^.* = /, "", te)
+    if (!match($2, /WTE peak [^;]* = [0-9.]+ % of the fall/)) exit 1
+    wt = substr($2, RSTART, RLENGTH); sub(/ % of the fall$/, "", wt); sub(/^.* = /, "", wt)
+    d1 = te - pct[1]; d2 = wt - pct[2]
+    shown = d1 < 0.05 && d1 > -0.05 && d2 < 0.05 && d2 > -0.05
+    want = (okm[1] && okm[2]) ? "HELD" : "NOT HELD"
+    printf "# 16c tails TE %.2f %%, WTE %.2f %% of the fall; shown %s, %s; verdict %s\n",
+        pct[1], pct[2], te, wt, v
+    exit !(shown && v == want && index($2, "within 2 % of the fall") > 0)
+}' "$TMP/16c.txt"
+t $? "16c: the tail after the low is shown as a share of the fall, the verdict follows the stated 2 %"
+
 # ---- issue 11: no NaN/Inf reaches the report (axial load 0) ----
 "$ACBB" report "$PRESET" --set operating.axial_load_N=0 >"$TMP/zero.txt" 2>"$TMP/err"
 code $? 0 "report with axial load 0 runs"

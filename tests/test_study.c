@@ -25,6 +25,7 @@
 #include "acbb/study.h"
 #include "acbb/units.h"
 
+#include "study_priv.h"
 #include "test_study_preset.h"
 
 /* ---- 1. the check table on constructed results ---- */
@@ -575,10 +576,34 @@ static void test_compare(void)
     free(s);
 }
 
+/* Issue 25 item 6: "rises then falls" (checks 15b, 16c) reads a tail after
+ * the low as level while it stays within REPORT_SAME (2 %) of the fall,
+ * the swing from the peak to the low; beyond, a new rise. */
+static void test_peak_tail(void)
+{
+    const double strict[] = { 1, 2, 3, 2, 1 }, rise[] = { 1, 2, 3, 4, 5 };
+    const double small[] = { 1, 2, 3, 2, 1, 0, -1, -0.985, -0.99 };  /* tail 0.015 of 4 */
+    const double big[] = { 1, 2, 3, 2, 1, 0, -1, -0.9 };             /* tail 0.1 of 4 */
+    const double seed[] = { 41.7, 82.88, 94.87, 18.73, -140.4, -274.9, -335.4, -327.2 };
+    acbb_study_shape sh;
+    ok(acbb_study_peak_tail(strict, 0, 4, &sh) && sh.peak == 2 && sh.low == 4 && sh.tail == 0,
+       "strict rise and fall: a peak, no tail");
+    ok(!acbb_study_peak_tail(rise, 0, 4, &sh), "a plain rise: no peak");
+    ok(acbb_study_peak_tail(small, 0, 8, &sh) && sh.low == 6 && fabs(sh.tail - 0.015) < 1e-12 &&
+       sh.fall == 4, "a tail of 0.375 %% of the fall reads as level");
+    ok(!acbb_study_peak_tail(big, 0, 7, &sh) && fabs(sh.tail / sh.fall - 0.025) < 1e-12,
+       "a tail of 2.5 %% of the fall is a new rise");
+    ok(acbb_study_peak_tail(seed, 0, 7, &sh) && fabs(sh.tail / sh.fall - 8.2 / 430.27) < 1e-12,
+       "the seed's omega_so at 100 N (TE): tail 8.2 rad/s of a 430.3 rad/s fall (1.9 %%) is "
+       "level, though 2.4 %% of the low");
+    ok(acbb_study_peak(small, 0, 8) && !acbb_study_peak(big, 0, 7), "peak_shape is the same rule");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
     test_table_shape();
+    test_peak_tail();
     test_constructed();
     test_closed_form();
     test_be_vs_steady();

@@ -241,7 +241,8 @@ static int life_line(acbb_app *a, int y, acbb_rect r)
         if (n <= r.w) break;
     }
     if (n >= 0 && (size_t)n < sizeof line)
-        snprintf(line + n, sizeof line - (size_t)n, "  a_ISO %.3g  kappa %.3g", L->a_iso, L->kappa);
+        snprintf(line + n, sizeof line - (size_t)n, "  a_ISO %.3g  kappa %.3g%s", L->a_iso,
+                 L->kappa, L->kappa_clamped ? " < 0.1: a_ISO at 0.1" : "");
     if ((int)strlen(line) > r.w && n >= 0 && (size_t)n < sizeof line) line[n] = '\0';
     acbb_put(a, y, r.x, r.w, L->edge_loaded ? ACBB_ROLE_ERROR : ACBB_ROLE_NORMAL, "%s", line);
     return 1;

@@ -97,14 +97,22 @@ bool acbb_study_decr(const double *v, int a, int z)
     return true;
 }
 
-/* Rises to an interior maximum, then falls (strictly on both sides). */
-bool acbb_study_peak(const double *v, int a, int z)
+bool acbb_study_peak_tail(const double *v, int a, int z, acbb_study_shape *out)
 {
-    int i = a;
+    acbb_study_shape s = { a, a, 0.0, 0.0 };
     for (int k = a; k <= z; k++)
-        if (v[k] > v[i]) i = k;
-    return i > a && i < z && incr(v, a, i) && decr(v, i, z);
+        if (v[k] > v[s.peak]) s.peak = k;
+    s.low = s.peak;
+    for (int k = s.peak; k <= z; k++)
+        if (v[k] < v[s.low]) s.low = k;
+    s.fall = v[s.peak] - v[s.low];
+    for (int k = s.low; k <= z; k++) s.tail = fmax(s.tail, v[k] - v[s.low]);
+    if (out) *out = s;
+    return s.peak > a && s.low > s.peak && incr(v, a, s.peak) && decr(v, s.peak, s.low) &&
+           s.tail <= REPORT_SAME * s.fall;
 }
+
+bool acbb_study_peak(const double *v, int a, int z) { return acbb_study_peak_tail(v, a, z, NULL); }
 
 /* Falls to an interior minimum, then rises. */
 bool acbb_study_valley(const double *v, int a, int z)
@@ -145,6 +153,15 @@ void acbb_study_tb_pairs(tbuf *t, const char *what, int blk, const double *te,
     for (int k = a; k <= z; k++)
         tb(t, " %g %s %.*g/%.*g%s", xs(blk)[k], xunit(blk), prec, te[k], prec, wte[k],
            k < z ? "," : "");
+}
+
+void acbb_study_tb_shape(tbuf *t, const char *what, int blk, const double *v,
+                         const acbb_study_shape *s)
+{
+    double lo = v[s->low], of_low = lo != 0.0 ? 100.0 * s->tail / fabs(lo) : 0.0;
+    tb(t, "%s peak %.4g at %g %s, low %.4g at %g %s, tail %+.3g = %.3g %% of the fall %.4g "
+       "(%.3g %% of |low|)", what, v[s->peak], xs(blk)[s->peak], xunit(blk), lo, xs(blk)[s->low],
+       xunit(blk), s->tail, s->fall > 0.0 ? 100.0 * s->tail / s->fall : 0.0, s->fall, of_low);
 }
 
 void acbb_study_val_series(acbb_study_item *it, const char *name, int blk, const double *v,

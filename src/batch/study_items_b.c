@@ -249,10 +249,14 @@ void acbb_study_item16(const acbb_study_runs *c, acbb_study_item *it)
     series(c, LV_L2, BLK_S100, TE, g_spin_o_signed, sso[TE]);
     series(c, LV_L2, BLK_S100, WTE, g_spin_o_signed, sso[WTE]);
     tbuf t = { .n = 0 };
-    bool p = peak_shape(sso[TE], 0, NL - 1) && peak_shape(sso[WTE], 0, NL - 1);
+    acbb_study_shape sh[2];
+    bool pt = acbb_study_peak_tail(sso[TE], 0, NL - 1, &sh[TE]);
+    bool p = acbb_study_peak_tail(sso[WTE], 0, NL - 1, &sh[WTE]) && pt;
     tb(&t, "100 N ");
     tb_pairs(&t, "omega_so (signed) rad/s", BLK_S100, sso[TE], sso[WTE], 0, NL - 1, 4);
-    tb(&t, "; rises then falls: %s", p ? "yes" : "no");
+    for (int m = 0; m < 2; m++) tb_shape(&t, m ? "; WTE" : "; TE", BLK_S100, sso[m], &sh[m]);
+    tb(&t, "; a tail after the low within %.0f %% of the fall (the report's \"approximately "
+       "equal\") counts as level; rises then falls: %s", 100.0 * REPORT_SAME, p ? "yes" : "no");
     add_check(it, "16c", V(p), &t);
     t.n = 0;
     int n = 0;

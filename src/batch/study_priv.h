@@ -114,6 +114,18 @@ double acbb_study_min_loss(const acbb_snapshot *s);
 void acbb_study_series(const acbb_study_runs *r, int lv, int blk, int m, getter g, double *v);
 bool acbb_study_incr(const double *v, int a, int z);
 bool acbb_study_decr(const double *v, int a, int z);
+/* "Rises then falls" (MODEL.md 12 items 15b, 16c): strict rises to an
+ * interior maximum, strict falls from it to the lowest value after it; a
+ * tail after that low is read as level, not as a new rise, while it stays
+ * within REPORT_SAME (the report's "approximately equal") of the fall. A
+ * signed series that crosses zero (omega_so) has no scale of its own near
+ * zero, so the tail is measured against the fall, the swing the statement
+ * is about. */
+typedef struct {
+    int peak, low;               /* indices of the maximum and the low after it */
+    double fall, tail;           /* v[peak] - v[low]; largest v[k] - v[low] after the low */
+} acbb_study_shape;
+bool acbb_study_peak_tail(const double *v, int a, int z, acbb_study_shape *s);
 bool acbb_study_peak(const double *v, int a, int z);
 bool acbb_study_valley(const double *v, int a, int z);
 double acbb_study_spread(const double *v, int a, int z);
@@ -125,6 +137,9 @@ void acbb_study_tb_pairs(tbuf *t, const char *what, int blk, const double *te,
                          const double *wte, int a, int z, int prec);
 void acbb_study_val_series(acbb_study_item *it, const char *name, int blk, const double *v,
                            int a, int z);
+/* "<what> peak X at x, low Y at x, tail +T = p % of the fall F (q % of |Y|)". */
+void acbb_study_tb_shape(tbuf *t, const char *what, int blk, const double *v,
+                         const acbb_study_shape *s);
 /* The TE and WTE series of g over the load sweep of level lv, kept as the
  * values "<name>_TE_<unit>_50N"...; false (a NOT EVALUATED check `id`) if a
  * run of the sweep failed. */
@@ -148,6 +163,7 @@ void acbb_study_light_large(acbb_study_item *it, const char *ida, const char *id
 #define xunit acbb_study_xunit
 #define tb_series acbb_study_tb_series
 #define tb_pairs acbb_study_tb_pairs
+#define tb_shape acbb_study_tb_shape
 #define val_series acbb_study_val_series
 
 /* ---- the item functions (study_items_a.c: 1-9, study_items_b.c: 10-18) ---- */

@@ -16,6 +16,8 @@ void acbb_json_write_life(acbb_json *j, const acbb_snapshot *s)
     for (size_t i = 0; acbb_output_get(i, &e); i++)
         if (e.row->section && !strcmp(e.row->section, "life"))
             acbb_json_num(j, e.key, acbb_output_value(&e, s, -1));
+    acbb_json_str(j, "C0_basis", L->C0_table ? "ISO 76 Table 1" : "4200 MPa, real grooves");
+    acbb_json_bool(j, "kappa_clamped", L->kappa_clamped);
     acbb_life_contact_name(L->s0_ball, L->s0_race, name, sizeof name);
     acbb_json_str(j, "s0_contact", name);
     acbb_json_bool(j, "edge_loaded", L->edge_loaded);

@@ -1,6 +1,17 @@
 /* acbb — ISO rating-life and static-safety formulas (life.h, MODEL.md 15). */
 #include <math.h>
+#include "hertz.h"
 #include "life.h"
+
+#define ISO76_PMAX 4200e6      /* Pa: ISO 76 clause 3, ball bearings other than self-aligning */
+#define ISO76_STRIBECK 5.0     /* Q_max = 5 F_r / (Z cos alpha), ISO 76's radial load zone */
+/* ISO 76 Table 1's basis: grooves 0.52 / 0.53 D_w, steel (207 GPa, 0.3). */
+#define TABLE_FI 0.52
+#define TABLE_FO 0.53
+#define TABLE_TOL 1e-6
+/* m: half the 1 um the presets write groove radii in (3.3655 mm rounds
+ * either way), and the binary rounding of such a radius over D_w. */
+#define TABLE_GRID (0.5e-6 * (1.0 + 1e-9))
 
 /* Linear interpolation in a table on gamma = 0, step, 2 step, ...; held at
  * the ends. Hand-written: a fixed 25-41 point lookup, where gsl_interp
@@ -62,10 +73,71 @@ double acbb_iso_C(double Dw, int Z, double alpha, double dpw, double fi, double 
     return 1.3 * fc * pow(cos(alpha), 0.7) * pow((double)Z, 2.0 / 3.0) * pow(mm, 1.8);
 }
 
-double acbb_iso_C0(double Dw, int Z, double alpha, double dpw)
+/* Ball load putting p_max = 1 Pa on one raceway at the nominal angle:
+ * p_max grows as Q^(1/3) at fixed radii (MODEL.md 2), so the load at any
+ * stress p is this times p^3. 0 when the Hertz solve fails. */
+static double unit_load(double Dw, double dpw, double alpha, double f, int inner, double E_eff)
+{
+    double Rx, Ry;
+    acbb_hertz_const c;
+    acbb_hertz_contact h;
+    acbb_contact_radii(Dw, dpw, alpha, f, inner, &Rx, &Ry);
+    if (acbb_hertz_const_compute(Rx, Ry, E_eff, ACBB_HERTZ_EXACT, &c) != ACBB_OK) return 0.0;
+    acbb_hertz_from_load(&c, 1.0, &h);
+    return h.pmax > 0.0 ? 1.0 / (h.pmax * h.pmax * h.pmax) : 0.0;
+}
+
+/* The two exact Hertz solves cost about 30 us against the 4 us of the
+ * rest of a life (BENCHMARKS.md): a Sim computes them once for its scene
+ * (acbb_life_static_basis) instead of at every snapshot. */
+static void unit_loads(double Dw, double dpw, double alpha, double fi, double fo, double E_eff,
+                       double *qi, double *qo)
+{
+    *qi = unit_load(Dw, dpw, alpha, fi, 1, E_eff);
+    *qo = unit_load(Dw, dpw, alpha, fo, 0, E_eff);
+}
+
+double acbb_iso_Q_at_stress(double p, double Dw, double dpw, double alpha, double fi, double fo,
+                            double E_eff, acbb_life_race *race)
+{
+    double qi, qo;
+    unit_loads(Dw, dpw, alpha, fi, fo, E_eff, &qi, &qo);
+    if (!(qi > 0.0) || !(qo > 0.0)) return 0.0;
+    if (race) *race = qi <= qo ? ACBB_RACE_IN : ACBB_RACE_OUT;
+    return fmin(qi, qo) * p * p * p;
+}
+
+double acbb_iso_C0_stress(double Dw, int Z, double alpha, double dpw, double fi, double fo,
+                          double E_eff)
+{
+    double Q = acbb_iso_Q_at_stress(ISO76_PMAX, Dw, dpw, alpha, fi, fo, E_eff, NULL);
+    return Q * Z * cos(alpha) / ISO76_STRIBECK;
+}
+
+bool acbb_iso_table_basis(double Dw, double fi, double fo, double E_eff)
+{
+    double steel = acbb_effective_modulus(207e9, 0.3, 207e9, 0.3), tol = TABLE_GRID / Dw;
+    return fabs(fi - TABLE_FI) <= tol && fabs(fo - TABLE_FO) <= tol &&
+           fabs(E_eff / steel - 1.0) <= TABLE_TOL;
+}
+
+double acbb_iso_C0_table(double Dw, int Z, double alpha, double dpw)
 {
     double mm = Dw * 1e3;
     return acbb_iso_f0(Dw * cos(alpha) / dpw) * Z * mm * mm * cos(alpha);
+}
+
+/* The table where the grooves and steel are its own (it is the 4200 MPa
+ * load rounded to f_0's 0.1, test_life.c), the stress definition
+ * elsewhere; the table also if the Hertz solve fails (it cannot for
+ * grooves f > 0.5, which the presets validate). */
+double acbb_iso_C0(double Dw, int Z, double alpha, double dpw, double fi, double fo,
+                   double E_eff)
+{
+    double t = acbb_iso_C0_table(Dw, Z, alpha, dpw);
+    if (acbb_iso_table_basis(Dw, fi, fo, E_eff)) return t;
+    double h = acbb_iso_C0_stress(Dw, Z, alpha, dpw, fi, fo, E_eff);
+    return h > 0.0 ? h : t;
 }
 
 void acbb_iso_raceway_ratings(double C, int Z, double alpha, double gamma, double fi, double fo,
@@ -116,6 +188,11 @@ double acbb_iso_a_iso(double kappa, double ecp)
     return fmin(50.0, 0.1 * pow(base, -9.3));
 }
 
+bool acbb_iso_kappa_clamped(double kappa) { return kappa < 0.1; }
+
+/* 22 = (4200 / 1500)^3 = 21.95 rounded: the load at which the most loaded
+ * contact reaches the fatigue-limit stress 1500 MPa is C0 (1500/4200)^3,
+ * since p_max grows as Q^(1/3); so C_u follows whichever basis C0 has. */
 double acbb_iso_Cu(double C0, double dpw)
 {
     double d = dpw * 1e3;

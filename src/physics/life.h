@@ -7,6 +7,9 @@
 #ifndef ACBB_PHYS_LIFE_H
 #define ACBB_PHYS_LIFE_H
 
+#include <stdbool.h>
+#include "acbb/life.h"
+
 /* ISO 281 Table 2 f_c (single-row deep-groove and angular-contact ball
  * bearings) at gamma = D_w cos(alpha) / D_pw, linearly interpolated. */
 double acbb_iso_fc(double gamma);
@@ -20,8 +23,27 @@ double acbb_iso_fc_conformity(double gamma, double fi, double fo);
 /* Basic dynamic radial rating C_r, N (ISO 281 6.1.1, b_m = 1.3) with the
  * conformity reduction; fi, fo = groove radius / D_w. */
 double acbb_iso_C(double Dw, int Z, double alpha, double dpw, double fi, double fo);
-/* Basic static radial rating C_0r = f_0 Z D_w^2 cos(alpha), N (ISO 76 6.1). */
-double acbb_iso_C0(double Dw, int Z, double alpha, double dpw);
+/* Basic static radial rating, N, by ISO 76's definition (clause 3): the radial
+ * load whose most loaded contact, Q_max = 5 F_r / (Z cos alpha), reaches
+ * 4200 MPa at the centre on whichever raceway gets there first (Hertz
+ * with the real groove radii fi, fo = r / D_w and the effective modulus
+ * E_eff, Pa). Table 1's f_0 Z D_w^2 cos(alpha) where the grooves and the
+ * steel are the table's (acbb_iso_table_basis), the stress elsewhere. */
+double acbb_iso_C0(double Dw, int Z, double alpha, double dpw, double fi, double fo,
+                   double E_eff);
+/* The two bases: Table 1 (ISO 76 6.1) and the 4200 MPa stress (0 if the
+ * Hertz solve fails). */
+double acbb_iso_C0_table(double Dw, int Z, double alpha, double dpw);
+double acbb_iso_C0_stress(double Dw, int Z, double alpha, double dpw, double fi, double fo,
+                          double E_eff);
+/* Grooves 0.52 / 0.53 D_w (to the 1 um presets are written in) and steel
+ * on steel (207 GPa, 0.3): Table 1's basis. */
+bool acbb_iso_table_basis(double Dw, double fi, double fo, double E_eff);
+/* Ball load, N, at which a contact at the nominal angle alpha first reaches
+ * the centre stress p, Pa, on either raceway (which one into *race if not
+ * NULL); 0 if the Hertz solve fails. */
+double acbb_iso_Q_at_stress(double p, double Dw, double dpw, double alpha, double fi, double fo,
+                            double E_eff, acbb_life_race *race);
 /* Raceway ratings Q_ci, Q_ce, N, from C_r (ISO/TS 16281 eqs. 19-20). */
 void acbb_iso_raceway_ratings(double C, int Z, double alpha, double gamma, double fi, double fo,
                               double *Qci, double *Qce);
@@ -36,9 +58,14 @@ double acbb_iso_a1(double reliability_pct);
  * 9.3.3, eqs. for n < 1000 and n >= 1000 min^-1); +inf at n <= 0. */
 double acbb_iso_nu1(double n_rpm, double dpw);
 /* a_ISO for radial ball bearings (ISO 281 9.3.2, eqs. 31-33), kappa held to
- * 0.1..4 as the standard says, at most 50. */
+ * 0.1..4, at most 50. ISO 281 counts kappa > 4 as 4 but does not define
+ * a_ISO below 0.1: there the value is a_ISO(0.1), which the caller must
+ * report (acbb_iso_kappa_clamped). */
 double acbb_iso_a_iso(double kappa, double ec_Cu_P);
-/* Fatigue load limit C_u of a ball bearing, N (ISO 281 Annex B.3.2.2). */
+/* kappa below ISO 281's range (0.1): a_ISO was taken at 0.1. */
+bool acbb_iso_kappa_clamped(double kappa);
+/* Fatigue load limit C_u of a ball bearing, N (ISO 281 Annex B.3.2.2):
+ * C0 / 22, times (100 / D_pw mm)^0.5 above 100 mm; on C0's basis. */
 double acbb_iso_Cu(double C0, double dpw);
 /* Static safety of one contact (ISO 76 / ISO/TS 16281: 4200 MPa). */
 double acbb_iso_s0(double pmax);

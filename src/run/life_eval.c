@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include "acbb/life_eval.h"
 #include "acbb/units.h"
+#include "life_static.h"
+#include "hertz.h"
 #include "life.h"
 #include "lubrication.h"
 
@@ -59,6 +61,7 @@ static void modified(const acbb_scene *s, const acbb_snapshot *sn, double n_rpm,
     L->nu_mm2s = oil.nu * 1e6;
     L->nu1_mm2s = isfinite(nu1) ? nu1 * 1e6 : 0.0;
     L->kappa = isfinite(nu1) ? oil.nu / nu1 : 0.0;
+    L->kappa_clamped = isfinite(nu1) && acbb_iso_kappa_clamped(L->kappa);
     L->ec = s->life_ec;
     L->Cu = s->life_Cu > 0.0 ? s->life_Cu : acbb_iso_Cu(L->C0, s->pitch_diameter);
     L->a1 = acbb_iso_a1(s->life_reliability);
@@ -115,7 +118,37 @@ static void statics(const acbb_scene *s, const acbb_snapshot *sn, acbb_life *L)
     if (L->s0_ball < 0) L->s0_min = 0.0;
 }
 
+/* C0 on ISO 76's 4200 MPa basis with the real grooves and materials (the
+ * table where they are its own): the scene's geometry alone decides it. */
+void acbb_life_static_basis(const acbb_scene *s, acbb_life_static *b)
+{
+    double Dw = s->ball_diameter, fi = s->inner_groove_radius / Dw;
+    double fo = s->outer_groove_radius / Dw;
+    double E = acbb_effective_modulus(s->ball.E, s->ball.nu, s->ring.E, s->ring.nu);
+    b->C0 = acbb_iso_C0(Dw, s->n_balls, s->contact_angle0, s->pitch_diameter, fi, fo, E);
+    b->C0_table = acbb_iso_table_basis(Dw, fi, fo, E);
+    b->C0_stress = acbb_iso_C0_stress(Dw, s->n_balls, s->contact_angle0, s->pitch_diameter, fi,
+                                      fo, E);
+}
+
+/* The static equivalent load P0 of the worst contact on the same basis:
+ * the radial load C0_stress / s0. */
+static void static_rating(const acbb_life_static *b, acbb_life *L)
+{
+    L->C0 = b->C0;
+    L->C0_table = b->C0_table;
+    L->P0 = L->s0_ball >= 0 && L->s0_min > 0.0 ? b->C0_stress / L->s0_min : 0.0;
+}
+
 void acbb_life_compute(const acbb_scene *s, const acbb_snapshot *sn, acbb_life *L)
+{
+    acbb_life_static b;
+    acbb_life_static_basis(s, &b);
+    acbb_life_compute_with(s, sn, &b, L);
+}
+
+void acbb_life_compute_with(const acbb_scene *s, const acbb_snapshot *sn,
+                            const acbb_life_static *basis, acbb_life *L)
 {
     *L = (acbb_life){ 0 };
     int Z = sn->n_balls < ACBB_MAX_BALLS ? sn->n_balls : ACBB_MAX_BALLS;
@@ -123,7 +156,8 @@ void acbb_life_compute(const acbb_scene *s, const acbb_snapshot *sn, acbb_life *
     L->C = acbb_iso_C(s->ball_diameter, s->n_balls, s->contact_angle0, s->pitch_diameter,
                       s->inner_groove_radius / s->ball_diameter,
                       s->outer_groove_radius / s->ball_diameter);
-    L->C0 = acbb_iso_C0(s->ball_diameter, s->n_balls, s->contact_angle0, s->pitch_diameter);
+    statics(s, sn, L);
+    static_rating(basis, L);
     double n_rpm = acbb_rads_to_rpm(fabs(s->inner_speed));
     double L10 = Z > 0 ? reference_life(s, sn) : INFINITY;
     L->L10r_Mrev = isfinite(L10) ? fmin(L10, ACBB_LIFE_CAP_H) : ACBB_LIFE_CAP_H;
@@ -131,7 +165,6 @@ void acbb_life_compute(const acbb_scene *s, const acbb_snapshot *sn, acbb_life *
     double L10h = n_rpm > 0.0 ? L10 * 1e6 / (60.0 * n_rpm) : INFINITY;
     L->L10r_h = cap_h(L10h);
     modified(s, sn, n_rpm, L10h, L);
-    statics(s, sn, L);
 }
 
 void acbb_life_contact_name(int ball, acbb_life_race race, char *buf, unsigned long n)

@@ -575,6 +575,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     acbb_fidelity_apply(&sim->s, NULL);
     acbb_lubricant_apply(&sim->s);
     s = &sim->s;
+    acbb_life_static_basis(s, &sim->life_basis); /* once per scene, not per snapshot */
     double t0 = acbb_now_ms();
     arm_bound(sim); /* the set-up counts against fidelity.max_wall_s */
     acbb_operating op; /* schedule.h: the first row, or the last for the steady solve */
@@ -647,6 +648,7 @@ acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb
 static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     sim->s = *s;
+    acbb_life_static_basis(s, &sim->life_basis);
     acbb_sim_opts o = { sim->cancel, sim->threads };
     acbb_status rc = acbb_set_sim_new(s, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
@@ -791,7 +793,7 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
-    acbb_life_compute(&sim->s, o, &o->life);
+    acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
     o->n_bearings = 1;
 }
 

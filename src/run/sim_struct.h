@@ -15,6 +15,7 @@
 #include "stiffness.h"
 #include "sim_set.h"
 #include "steady_polish.h"
+#include "life_static.h"
 
 #define DT_MIN 0.05            /* s, MODEL.md section 9 */
 #define DT_MAX 30.0            /* s */
@@ -79,6 +80,7 @@ struct acbb_sim {
     const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
     acbb_work work;            /* per-part work counters */
     double K_axial;            /* axial stiffness at the converged state, N/m */
+    acbb_life_static life_basis; /* C0 of the scene (life_static.h), once per scene */
     acbb_stiffness K_ring;     /* radial and tilt stiffness at the converged state */
     int fixed_axial;           /* displacement preload: dx held at fixed_dx */
     int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */

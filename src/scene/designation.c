@@ -58,6 +58,7 @@
 #include "acbb/designation.h"
 #include "acbb/limits.h"
 #include "acbb/units.h"
+#include "hertz.h"
 #include "life.h"
 
 /* One bore: D and B (mm) for dimension series 18, 19, 10, 02, 03. */
@@ -269,8 +270,11 @@ static double ndm_default(const acbb_designation *d)
 static size_t operating_point(const acbb_designation *d, acbb_scene *s, acbb_estimate *notes,
                               size_t n, size_t cap)
 {
-    double ndm = ndm_default(d), C0 = acbb_iso_C0(s->ball_diameter, s->n_balls, d->angle,
-                                                   s->pitch_diameter);
+    double Dw = s->ball_diameter, E = acbb_effective_modulus(s->ball.E, s->ball.nu, s->ring.E,
+                                                              s->ring.nu);
+    double ndm = ndm_default(d), C0 = acbb_iso_C0(Dw, s->n_balls, d->angle, s->pitch_diameter,
+                                                   s->inner_groove_radius / Dw,
+                                                   s->outer_groove_radius / Dw, E);
     double rpm = fmax(100.0, round(ndm / (s->pitch_diameter * 1e3) / 100.0) * 100.0);
     double load = fmax(10.0, round(0.05 * C0 / 10.0) * 10.0);
     s->inner_speed = rpm * ACBB_RPM;
