@@ -30,9 +30,9 @@ t $? "$DOC has sections §0..§17, each once and in order ($(tr '\n' ' ' <"$TMP/
 # ---- user-facing files: no MODEL.md ----
 files="README.md BENCHMARKS.md $(ls docs/*.md) $(ls presets/*.ini) $(find contrib -type f)"
 # shellcheck disable=SC2086
-grep -n 'MODEL\.md' $files >"$TMP/hits" 2>/dev/null
+grep -n -E 'MODEL\.md|\.\./shared/' $files >"$TMP/hits" 2>/dev/null
 [ ! -s "$TMP/hits" ]
-t $? "no MODEL.md in README, BENCHMARKS, docs, presets, contrib$( [ -s "$TMP/hits" ] && printf ' (at %s)' "$(cut -d: -f1,2 "$TMP/hits" | head -5 | tr '\n' ' ')")"
+t $? "no MODEL.md nor ../shared/ in README, BENCHMARKS, docs, presets, contrib$( [ -s "$TMP/hits" ] && printf ' (at %s)' "$(cut -d: -f1,2 "$TMP/hits" | head -5 | tr '\n' ' ')")"
 
 # String literals of the program (comments stripped, macros not expanded).
 : >"$TMP/src"
