@@ -107,7 +107,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       O(POINTS) | O(JOBS), 1, 1, 0,
       acbb_cli_bench_accuracy },
     { "report", NULL, "PRESET",
-      "the seed's conclusions (MODEL.md 12): held or not",
+      "the seed's conclusions: held or not",
+      "The 18 statements and how each is checked: docs/physics.md section 12.\n"
       "Exit 0 whatever the verdicts (NOT HELD is a finding), 3 when a run failed.\n"
       "Cancelled (Ctrl-C, SIGTERM): no verdicts, no --md file, exit 3.\n",
       SCENE_OPTS | O(JSON) | O(MD) | O(SENSITIVITY) | O(INPUTS) | O(JOBS) | O(MAX_WALL), 1, 1, 0,

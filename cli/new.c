@@ -92,7 +92,7 @@ static int annotate(const char *path, const acbb_designation *d, const acbb_esti
                "mark internal geometry that catalogues do not publish\n; and the default "
                "operating point, estimated by the rule given\n; (src/scene/designation.c); "
                "overwrite any of it.\n; Loss set: extended (effects.loss_ehl_rolling = on, "
-               "MODEL.md 16); off gives the seed's five.\n",
+               "docs/physics.md section 16); off gives the seed's five.\n",
             d->name, d->deep_groove ? "deep-groove" : "angular-contact", d->name,
             d->bore * 1e3, d->outer_diameter * 1e3, d->width * 1e3);
     char line[512], section[64] = "";

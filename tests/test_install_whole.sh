@@ -30,7 +30,7 @@ cd "$TMP" && XDG_CONFIG_HOME="$TMP/none" "$BIN" run te-wte-heavy --quiet >/dev/n
 code $? 0 "the installed acbb runs te-wte-heavy by name from another directory"
 cd "$ROOT"
 for f in doc/acbb/LICENSE doc/acbb/README.md doc/acbb/BENCHMARKS.md doc/acbb/SEED_REPORT.md \
-         acbb/schema/acbb.schema.json bash-completion/completions/acbb.bash; do
+         doc/acbb/physics.md acbb/schema/acbb.schema.json bash-completion/completions/acbb.bash; do
     [ -s "$SHARE/$f" ] || miss="$miss $f"
 done
 [ -z "$miss" ]
@@ -39,6 +39,11 @@ t $? "LICENSE, docs, the JSON Schema and the bash completion are installed${miss
 t $? "the contrib recipes are installed executable"
 grep -q "MIT License" "$SHARE/doc/acbb/LICENSE"
 t $? "LICENSE is the MIT licence meson.build declares"
+cmp -s "$SHARE/doc/acbb/physics.md" docs/physics.md && grep -q '^## §17 ' "$SHARE/doc/acbb/physics.md"
+t $? "the physics reference the help and README cite is installed whole (doc/acbb/physics.md)"
+! grep -q 'MODEL\.md' "$SHARE/doc/acbb/README.md" "$SHARE/doc/acbb/physics.md" "$SHARE/man/man1/acbb.1" \
+    "$SHARE"/acbb/presets/*.ini
+t $? "the installed README, reference, man page and presets cite no unshipped MODEL.md"
 
 # ---- the completion: every command, and a command's options ----
 comp="$SHARE/bash-completion/completions/acbb.bash"

@@ -520,11 +520,11 @@ static void test_cross_rules(void)
     expect_set_fails("bearing.inner_groove_radius_mm", "3.2", ACBB_EINVAL,
                      "bearing.inner_groove_radius_mm = 3.2 with ball_diameter_mm = 6.35: groove "
                      "curvature f = radius / ball_diameter = 0.5039 must be >= 0.505 "
-                     "(MODEL.md section 11)");
+                     "(docs/physics.md section 11)");
     expect_set_fails("bearing.outer_groove_radius_mm", "3", ACBB_EINVAL,
                      "bearing.outer_groove_radius_mm = 3 with ball_diameter_mm = 6.35: groove "
                      "curvature f = radius / ball_diameter = 0.4724 must be >= 0.505 "
-                     "(MODEL.md section 11)");
+                     "(docs/physics.md section 11)");
     /* 27 * 6.35 = 171.45 mm > 0.98 pi 54 = 166.25 mm; 26 balls (165.1 mm) fit. */
     ok(27 * 6.35 > 0.98 * PI * 54 && 26 * 6.35 <= 0.98 * PI * 54, "hand: 26 fit, 27 do not");
     expect_set_fails("bearing.n_balls", "27", ACBB_EINVAL,
@@ -537,12 +537,13 @@ static void test_cross_rules(void)
     expect_set_fails("bearing.bore_mm", "47.7", ACBB_EINVAL,
                      "bearing.bore_mm = 47.7 with pitch_diameter_mm = 54, ball_diameter_mm = "
                      "6.35: the inner ring has no material (bore must be < the inner raceway "
-                     "diameter d_i = 47.6326 mm, MODEL.md section 1)");
+                     "diameter d_i = 47.6326 mm, docs/physics.md section 1)");
     expect_set_ok(&s, "bearing.bore_mm", "47.6");
     expect_set_fails("bearing.outer_diameter_mm", "60.3", ACBB_EINVAL,
                      "bearing.outer_diameter_mm = 60.3 with pitch_diameter_mm = 54, "
                      "ball_diameter_mm = 6.35: the outer ring has no material (outer_diameter "
-                     "must be > the outer raceway diameter d_o = 60.3674 mm, MODEL.md section 1)");
+                     "must be > the outer raceway diameter d_o = 60.3674 mm, docs/physics.md "
+                     "section 1)");
     expect_set_fails("bearing.inner_land_diameter_mm", "54.5", ACBB_EINVAL,
                      "bearing.inner_land_diameter_mm = 54.5 with pitch_diameter_mm = 54: the "
                      "inner land must lie between the inner raceway (d_i = 47.6326 mm) and the "

@@ -94,7 +94,7 @@ static void test_ranges(void)
     for (size_t i = 0; i < n; i++)
         if (strcmp(acbb_scene_field(i)->key, "boundary_friction") == 0)
             acbb_scene_field_plausible(i, text, sizeof text);
-    has_substr(text, "[0.08, 0.13]; MODEL.md 5 ASSUMED 0.08-0.13",
+    has_substr(text, "[0.08, 0.13]; docs/physics.md section 5 ASSUMED 0.08-0.13",
                "boundary friction's range and source as text");
 }
 

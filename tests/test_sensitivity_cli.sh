@@ -101,7 +101,7 @@ sens --metric losses_W.total --morris 5000 >/dev/null
 code $? 2 "--morris out of range refused"
 sens --metric losses_W.total --plot "$TMP/x.gif" >/dev/null
 code $? 2 "--plot with an unknown extension refused"
-"$ACBB" keys | grep -A3 '^mounting.h_natural_W_m2K' | grep -q 'plausible: \[5, 50\] W/(m^2 K); MODEL.md 10 ASSUMED'
+"$ACBB" keys | grep -A3 '^mounting.h_natural_W_m2K' | grep -q 'plausible: \[5, 50\] W/(m^2 K); docs/physics.md section 10 ASSUMED'
 t $? "acbb keys shows the plausible range and its source"
 
 tap_done

@@ -103,7 +103,7 @@ keys 5 / i n n e r _ g r o o v e Enter
 wait_for "bearing.inner_groove_radius_mm:"
 keys Enter C-u 1 Enter
 wait_for "refused"
-screen | tr -s ' \n' ' ' | grep -q "must be >= 0.505 (MODEL.md section 11)"
+screen | tr -s ' \n' ' ' | grep -q "must be >= 0.505 (docs/physics.md section 11)"
 ok $? "a long refusal (groove curvature) is shown in full at 80 columns"
 keys n
 ! screen | grep -q "unknown key"

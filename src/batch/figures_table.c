@@ -154,7 +154,7 @@ const acbb_figure_row *acbb_figure_table(size_t *n)
 static const acbb_seed_figure k_seed[] = {
     { 7, "a: outer-ring temperature rise at various axial forces during the iterative "
          "calculation; b: calculated vs tested outer-ring temperature vs axial force",
-      "the tested temperatures of 7b (the seed's rig; no test data here, MODEL.md 12): "
+      "the tested temperatures of 7b (the seed's rig; no test data here, docs/physics.md section 12): "
       "only the model's curves are drawn", { 7, 0 } },
     { 8, "angular velocity components omega_x, omega_y, omega_z of ball j=1 with time and "
          "axial load (a-c); d: |omega_x|, omega_y, omega_z in the convergent state, TE and WTE",

@@ -136,7 +136,7 @@ static void runaway_note(acbb_study_item *it, const char *id, const acbb_study_r
     if (!t.n) return;
     tb(&t, ": the transient ran away there; \"final\" above is its last good state, while "
        "its steady values in the other items are the steady solve's (another branch, "
-       "MODEL.md 14)");
+       "docs/physics.md section 14)");
     acbb_study_check *ch = add_check(it, id, V_NOT_EVAL, &t);
     if (ch) ch->info = 1;
 }

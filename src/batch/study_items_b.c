@@ -287,7 +287,7 @@ void acbb_study_item16(const acbb_study_runs *c, acbb_study_item *it)
     t.n = 0;
     double d0 = so[1][TE][1] - so[1][TE][0], dz = so[1][TE][NL - 1] - so[1][TE][NL - 2];
     bool r = incr(so[1][TE], 0, NL - 1), slow = dz < d0;
-    tb(&t, "seed conclusion (7), not in MODEL.md: 1000 N |omega_so| (TE) increases with speed: "
+    tb(&t, "seed conclusion (7), not in docs/physics.md: 1000 N |omega_so| (TE) increases with speed: "
        "%s; its rise slows at high speed (last step %+.4g < first step %+.4g rad/s): %s",
        r ? "yes" : "no", dz, d0, slow ? "yes" : "no");
     acbb_study_check *ch = add_check(it, "16f", V(r && slow), &t);
@@ -395,7 +395,7 @@ void acbb_study_item18(const acbb_study_runs *c, acbb_study_item *it)
      * sim API; they are tests, not study checks (the study reads snapshots
      * only). Reported so the reader knows where they are judged. */
     tbuf t = { .n = 0 };
-    tb(&t, "the static thrust solution vs the closed-form relation of MODEL.md section 3 "
+    tb(&t, "the static thrust solution vs the closed-form relation of docs/physics.md section 3 "
        "(bisection, K_n at the operating angle), to 1e-4: judged by tests/test_study.c, "
        "not from the study's runs");
     acbb_study_check *ch = add_check(it, "18c", V_NOT_EVAL, &t);

@@ -77,7 +77,7 @@ static acbb_status groove_rule(const acbb_scene *s, const char *which, double la
     return acbb_error_set(err, ACBB_EINVAL,
                           "bearing.%s = %s with ball_diameter_mm = %s: groove curvature "
                           "f = radius / ball_diameter = %.4g must be >= 0.505 "
-                          "(MODEL.md section 11)",
+                          "(docs/physics.md section 11)",
                           key, show(s, "bearing", key, a), show(s, "bearing", "ball_diameter_mm", b),
                           f);
 }
@@ -105,14 +105,14 @@ static acbb_status rule_clearance(const acbb_scene *s, acbb_error *err)
         return acbb_error_set(err, ACBB_EINVAL,
                               "bearing.clearance_um = %s with groove-centre distance A0 = %.4g "
                               "mm: the free contact angle acos(1 - P_d/(2 A0)) = %.4g deg is "
-                              "above 45 deg (MODEL.md section 1)",
+                              "above 45 deg (docs/physics.md section 1)",
                               show(s, "bearing", "clearance_um", a), A0 * 1e3, a0);
     double given = s->contact_angle0 / ACBB_DEG;
     if (given == 0.0 || fabs(given - a0) <= 0.05) return ACBB_OK;
     return acbb_error_set(err, ACBB_EINVAL,
                           "bearing.clearance_um = %s and contact_angle_deg = %s disagree: the "
                           "clearance gives a free contact angle of %.4f deg (cos a0 = 1 - "
-                          "P_d/(2 A0), MODEL.md section 1); set contact_angle_deg = 0 (deep "
+                          "P_d/(2 A0), docs/physics.md section 1); set contact_angle_deg = 0 (deep "
                           "groove) or %.4f, or clearance_um = 0 (geometry from the angle)",
                           show(s, "bearing", "clearance_um", a),
                           show(s, "bearing", "contact_angle_deg", b), a0, a0);
@@ -142,7 +142,7 @@ static acbb_status rule_inner_ring(const acbb_scene *s, acbb_error *err)
     return acbb_error_set(err, ACBB_EINVAL,
                           "bearing.bore_mm = %s with pitch_diameter_mm = %s, ball_diameter_mm = %s: "
                           "the inner ring has no material (bore must be < the inner raceway "
-                          "diameter d_i = %.6g mm, MODEL.md section 1)",
+                          "diameter d_i = %.6g mm, docs/physics.md section 1)",
                           show(s, "bearing", "bore_mm", a), show(s, "bearing", "pitch_diameter_mm", b),
                           show(s, "bearing", "ball_diameter_mm", c), di * 1e3);
 }
@@ -156,7 +156,7 @@ static acbb_status rule_outer_ring(const acbb_scene *s, acbb_error *err)
     return acbb_error_set(err, ACBB_EINVAL,
                           "bearing.outer_diameter_mm = %s with pitch_diameter_mm = %s, "
                           "ball_diameter_mm = %s: the outer ring has no material (outer_diameter "
-                          "must be > the outer raceway diameter d_o = %.6g mm, MODEL.md section 1)",
+                          "must be > the outer raceway diameter d_o = %.6g mm, docs/physics.md section 1)",
                           show(s, "bearing", "outer_diameter_mm", a),
                           show(s, "bearing", "pitch_diameter_mm", b),
                           show(s, "bearing", "ball_diameter_mm", c), d_o * 1e3);
@@ -445,7 +445,7 @@ static acbb_status rule_set(const acbb_scene *s, acbb_error *err)
     const char *arr = acbb_set_arrangement_name(s->set_arrangement);
     if (n > ACBB_MAX_SET)
         return acbb_error_set(err, ACBB_EINVAL, "set.n_bearings = %d: a set has at most %d "
-                              "bearings (MODEL.md 14)", n, ACBB_MAX_SET);
+                              "bearings (docs/physics.md section 14)", n, ACBB_MAX_SET);
     int dt = s->set_arrangement == ACBB_SET_DT;
     if (s->set_n_bearings > 0 && (dt ? n < 2 : n != nominal[s->set_arrangement]))
         return acbb_error_set(err, ACBB_EINVAL, "set.n_bearings = %d with set.arrangement = %s: "
@@ -553,20 +553,23 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
             "surroundings.cap_*" } },
         { s->heating && s->network == ACBB_NET_46 && s->heat_partition != d.heat_partition,
           { "heat_partition", "the 46-node network splits the contact heat by its spot "
-            "resistances; heat_partition applies to fidelity.network = 7 only (MODEL.md 8.3)",
+            "resistances; heat_partition applies to fidelity.network = 7 only "
+            "(docs/physics.md section 8.3)",
             "thermal.heat_partition" } },
         { s->schedule_n > 0,
           { "operating point", "the [schedule] rows set the speed and the axial and radial "
             "loads (the steady solve uses the last row)",
             "operating.inner_speed_rpm, axial_load_N, radial_load_N" } },
         { cage_solid_set(s, &d),
-          { "cage_solid", "the model has no cage mechanics or cage expansion (MODEL.md 7); "
-            "only the cage's density, specific heat and conductivity enter (the network)",
+          { "cage_solid", "the model has no cage mechanics or cage expansion "
+            "(docs/physics.md section 7); only the cage's density, specific heat and conductivity "
+            "enter (the network)",
             "the cage's E, Poisson ratio or expansion (materials.cage_*)" } },
         { s->loss_churning && s->lub_method != ACBB_LUB_OIL_BATH
               && s->lub_method != ACBB_LUB_OIL_JET,
           { "loss_churning", "oil-air and grease put no bulk oil in the bearing: churning needs "
-            "lubricant.method = oil-bath or oil-jet (MODEL.md 16)", "effects.loss_churning = on" } },
+            "lubricant.method = oil-bath or oil-jet (docs/physics.md section 16)",
+            "effects.loss_churning = on" } },
         { s->loss_ehl_rolling && !s->ehl_film,
           { "loss_ehl_rolling", "effects.ehl_film = off: no film, no EHL rolling resistance",
             "effects.loss_ehl_rolling = on" } },
