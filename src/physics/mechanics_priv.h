@@ -35,6 +35,7 @@ struct acbb_mech {
     int ring_J_ok[MAX_RING_DOF + 1];
     double ball_J[ACBB_MAX_BALLS][4]; /* last ball Jacobians (chord steps, transient mode) */
     int ball_J_ok[ACBB_MAX_BALLS];
+    int probing;                /* solves leave ball_J alone (acbb_mech_probing) */
     gsl_root_fsolver *brent;
     gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
     /* context of the solve in progress */
