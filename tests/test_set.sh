@@ -201,6 +201,20 @@ jqt "$TMP/sF.json" '(.bearings[1].balls[0]) as $b | ($b.alpha_i_deg * 0.01745329
     "DB at 8000 rpm: the opposite bearing keeps only the centrifugal remainder (hand calc)"
 jqt "$TMP/sF.json" "(.bearings[0].axial_force_N - .bearings[1].axial_force_N - $F) | fabs < 1e-3" \
     "DB at 8000 rpm: the loaded bearing carries the thrust plus that remainder"
+# Live (issues 25, 29): a run stopped before steady state reports the
+# lift-off of its last state (it said 0 until convergence), near the static
+# ratio to its preload, and says its stiffness was not computed.
+"$ACBB" run presets/pair-DB-heated.ini --set thermal.max_steps=30 --json >"$TMP/live.json"
+jqt "$TMP/live.json" '.status == "not_converged"
+    and (.set.liftoff_thrust_N / .set.preload_N) > 2.83 and (.set.liftoff_thrust_N / .set.preload_N) < 4' \
+    "a set stopped after 30 steps: lift-off 2.83-4 x its preload, not 0"
+"$ACBB" run presets/pair-DB-heated.ini --set thermal.max_steps=30 2>/dev/null \
+    | grep -q '^stiffness    not computed (only at convergence)'
+t $? "the text output says the stiffness is not computed, not 0"
+# A pair already past lift-off reports where it lifted off (it said 0): at
+# rest the same thrust as without it, to the search's 1e-4 of the preload.
+jqt "$TMP/over.json" "(.set.liftoff_thrust_N - $(jq .set.liftoff_thrust_N "$TMP/DB.json")) | fabs < 0.03" \
+    "DB under 1500 N thrust: the lift-off thrust it passed, as at no thrust"
 # (c) The issue's case: the heat off, 1000 rpm: lift-off near 640 N (it was
 # 4295 N, the full separation of the last centrifugal contact), and at 700 N
 # the opposite bearing's inner contacts carry < 1 % of their preload.

@@ -99,8 +99,9 @@ static double side_squeeze(acbb_set_sim *ss, acbb_set_mech *w, double Fa, int si
  * outer groove passes a little of it to the inner race (0.2-1 % of the
  * preload), which vanishes only microns of shaft travel later, at several
  * times the thrust: that full separation is no lift-off a designer can
- * use. The squeeze is smooth and nearly linear in the thrust, so the root
- * is found by a few secant steps.
+ * use; what the side still carries at lift-off is reported beside it
+ * (ss->lift_rest, 0 at rest). The squeeze is smooth and nearly linear in
+ * the thrust, so the root is found by a few secant steps.
  * A rigid opposed set unloads its -1 side under +x thrust; a spring set's
  * floating side keeps the spring force, so thrust the other way unloads
  * the +1 side at about the spring force. A tandem set has no opposite
@@ -110,6 +111,7 @@ typedef struct {
     acbb_set_mech w;
     int side, dir;
     double x[2], f[2];         /* the last two thrusts tried and their squeezes */
+    double rest;               /* the side's axial reaction at the last one, N */
 } lift_ctx;
 
 /* A thrust the set cannot carry (no shaft equilibrium: past lift-off the
@@ -125,10 +127,13 @@ static double lift_fn(double Fa, lift_ctx *c)
         c->w = c->ss->sm;
         g = side_squeeze(c->ss, &c->w, Fa * c->dir, c->side, &ok);
     }
+    c->rest = 0.0;
     if (!ok) {
         keep_members(c->ss, 1);
         c->w = c->ss->sm;
         g = -1.0;
+    } else {
+        for (int k = 0; k < c->w.n; k++) if (c->w.orient[k] == c->side) c->rest += c->w.Fx[k];
     }
     if (fabs(Fa - c->x[1]) > 1e-3 * fabs(Fa)) /* a slope above the solves' noise */
         c->x[0] = c->x[1], c->f[0] = c->f[1];
@@ -221,6 +226,7 @@ double acbb_set_liftoff(acbb_set_sim *ss, double rel_tol)
     double x0 = liftoff_guess(ss);
     double root = search_liftoff(&c, x0, ss->lift_slope, fmax(rel_tol * x0, 1e-4 * ss->sm.Fp));
     lift_state(ss, &c.w, 1);
+    ss->lift_rest = c.rest;
     double s = (c.f[1] - c.f[0]) / (c.x[1] - c.x[0]);
     ss->lift_slope = isfinite(s) && s < 0.0 ? s : NAN;
     members_probing(ss, 0);
