@@ -352,11 +352,8 @@ static void ball_frame(const acbb_mech *m, const acbb_ball_state *b, double A1, 
 
 static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, int j, double A1, double A2)
 {
-    double J[4];
-    int J_ok = 0;
-    ball_ctx c = { .m = m, .b = b, .J = m->probing ? J : m->ball_J[j],
-                   .J_ok = m->probing ? &J_ok : &m->ball_J_ok[j],
-                   .chord = m->hertz_tol > 0.0 && !m->probing };
+    ball_ctx c = { .m = m, .b = b, .J = m->ball_J[j], .J_ok = &m->ball_J_ok[j],
+                   .chord = m->hertz_tol > 0.0 };
     ball_frame(m, b, A1, A2, &c);
 
     /* Quick exit: no speed and no inner contact possible -> frozen ball. */
@@ -788,7 +785,16 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
     return acbb_mech_solve(m, 0.0, NULL, st, err);
 }
 
-void acbb_mech_probing(acbb_mech *m, int on) { m->probing = on; }
+void acbb_mech_probing(acbb_mech *m, int on)
+{
+    if (on) {
+        memcpy(m->kept_J, m->ball_J, sizeof m->kept_J);
+        memcpy(m->kept_J_ok, m->ball_J_ok, sizeof m->kept_J_ok);
+    } else {
+        memcpy(m->ball_J, m->kept_J, sizeof m->kept_J);
+        memcpy(m->ball_J_ok, m->kept_J_ok, sizeof m->kept_J_ok);
+    }
+}
 
 void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
                           acbb_ball_frame *f)

@@ -355,7 +355,7 @@ static acbb_status runaway(acbb_set_sim *ss, double step_dt)
 
 /* The lift-off thrust while the set runs (issues 25, 29: the Set screen
  * showed 0 until the end): searched again, from the last one, when the
- * preload has moved LIFT_MOVE since or the speed changed (a schedule), to
+ * preload or the speed (a schedule) has moved LIFT_MOVE since, to
  * LIFT_TOL of it; the ratio to the preload barely moves, and a search
  * costs two or three shaft solves, a step about two (BENCHMARKS.md). The
  * converged state's is searched once more, to 1e-4 of the preload. */
@@ -365,7 +365,7 @@ static void live_liftoff(acbb_set_sim *ss)
 {
     double F = ss->preload > 0.0 ? ss->preload : ss->sm.Fp;
     if (ss->lift_preload > 0.0 && fabs(F - ss->lift_preload) <= LIFT_MOVE * ss->lift_preload
-        && ss->s.inner_speed == ss->lift_speed)
+        && fabs(ss->s.inner_speed - ss->lift_speed) <= LIFT_MOVE * ss->lift_speed)
         return;
     ss->liftoff = acbb_set_liftoff(ss, LIFT_TOL);
 }

@@ -27,6 +27,7 @@ struct acbb_set_sim {
     /* the last lift-off search (sim_set_probe.c): its preload, speed, slope
      * of the squeeze (um/N) and where it ended (lift_sm.n 0: none yet) */
     double lift_preload, lift_speed, lift_slope;
+    double lift_prev[2];       /* the search before: its preload and lift-off, N */
     double lift_rest;          /* the unloading side's axial reaction at lift-off, N */
     acbb_set_mech lift_sm;
     acbb_mech_state *lift_ms[ACBB_MAX_SET];

@@ -166,12 +166,21 @@ static double search_liftoff(lift_ctx *c, double x0, double slope, double tol)
     return isfinite(b) ? b : a; /* no bracket: the last thrust tried */
 }
 
-/* The last lift-off scaled by the preload since, else 3 Fp (a little
- * below the static ratio, MODEL.md 14) or a spring set's spring force. */
+/* The preload the search works at: the set's now, or the assembly one. */
+static double lift_preload(const acbb_set_sim *ss)
+{
+    return ss->preload > 0.0 ? ss->preload : ss->sm.Fp;
+}
+
+/* The lift-off along the line through the last two searches' (preload,
+ * lift-off), or the last one scaled by the preload since, else 3 Fp (a
+ * little below the static ratio, MODEL.md 14) or a spring set's force. */
 static double liftoff_guess(const acbb_set_sim *ss)
 {
-    double F = ss->preload > 0.0 ? ss->preload : ss->sm.Fp;
-    if (ss->liftoff > 0.0 && ss->lift_preload > 0.0) return ss->liftoff * F / ss->lift_preload;
+    double F = lift_preload(ss), P1 = ss->lift_preload, P0 = ss->lift_prev[0];
+    if (ss->liftoff > 0.0 && ss->lift_prev[1] > 0.0 && P0 > 0.0 && fabs(P1 - P0) > 1e-3 * P1)
+        return ss->liftoff + (ss->liftoff - ss->lift_prev[1]) / (P1 - P0) * (F - P1);
+    if (ss->liftoff > 0.0 && P1 > 0.0) return ss->liftoff * F / P1;
     return ss->sm.spring ? ss->sm.Fp : 3.0 * F;
 }
 
@@ -228,10 +237,12 @@ double acbb_set_liftoff(acbb_set_sim *ss, double rel_tol)
     lift_state(ss, &c.w, 1);
     ss->lift_rest = c.rest;
     double s = (c.f[1] - c.f[0]) / (c.x[1] - c.x[0]);
-    ss->lift_slope = isfinite(s) && s < 0.0 ? s : NAN;
+    if (isfinite(s) && s < 0.0) ss->lift_slope = s; /* else the last one's */
     members_probing(ss, 0);
     keep_members(ss, 1);
-    ss->lift_preload = ss->preload > 0.0 ? ss->preload : ss->sm.Fp;
+    ss->lift_prev[0] = ss->lift_preload;
+    ss->lift_prev[1] = ss->liftoff;
+    ss->lift_preload = lift_preload(ss);
     ss->lift_speed = ss->s.inner_speed;
     return root;
 }
