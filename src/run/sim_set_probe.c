@@ -96,11 +96,13 @@ static double side_squeeze(acbb_set_sim *ss, acbb_set_mech *w, double Fa, int si
  * reaction is zero there (2^1.5 Fp for a constant contact angle [HK-EC],
  * 3.07-3.71 Fp for the 15 deg 7008C, MODEL.md 14). At speed the centrifugal
  * force still presses each ball on the outer race, and the slope of the
- * outer groove passes a little of it to the inner race (0.2-1 % of the
- * preload), which vanishes only microns of shaft travel later, at several
- * times the thrust: that full separation is no lift-off a designer can
- * use; what the side still carries at lift-off is reported beside it
- * (ss->lift_rest, 0 at rest). The squeeze is smooth and nearly linear in
+ * outer groove passes part of it to the inner race (7008C pairs: 1 % of
+ * the preload at 1000 rpm, 15-40 % at 8000-16 000 rpm), which vanishes
+ * only microns of shaft travel later, on a rigid pair at several times
+ * the thrust: that full separation is no lift-off a designer can use
+ * (issue 25: it let a design carry 7 times the thrust that unloads the
+ * back bearing); what the side still carries at lift-off is reported
+ * beside it (ss->lift_rest, 0 at rest). The squeeze is smooth and nearly linear in
  * the thrust, so the root is found by a few secant steps.
  * A rigid opposed set unloads its -1 side under +x thrust; a spring set's
  * floating side keeps the spring force, so thrust the other way unloads
