@@ -312,11 +312,16 @@ static void summary_set(acbb_cli_out *o, const acbb_snapshot *s)
 {
     const acbb_set_view *v = &s->set;
     if (s->n_bearings < 2) return;
-    fprintf(o->f, "\nset          preload %.1f N (assembly %.1f N), lift-off thrust %.0f N\n"
-            "stiffness    axial %.2f N/um, radial %.2f N/um, tilt %.2f N m/mrad at the nose\n"
-            "bearing  thrust  axial N  outer C  inner C   loss W\n",
-            v->preload_N, v->preload_assembly_N, v->liftoff_thrust_N, v->stiffness_axial * 1e-6,
-            v->stiffness_radial * 1e-6, v->stiffness_tilt * 1e-3);
+    fprintf(o->f, "\nset          preload %.1f N (assembly %.1f N), lift-off thrust %.0f N "
+            "(the other side keeps %.1f N there)\n", v->preload_N, v->preload_assembly_N,
+            v->liftoff_thrust_N, v->liftoff_remainder_N);
+    if (s->state == ACBB_RUN_CONVERGED)
+        fprintf(o->f, "stiffness    axial %.2f N/um, radial %.2f N/um, tilt %.2f N m/mrad at the "
+                "nose\n", v->stiffness_axial * 1e-6, v->stiffness_radial * 1e-6,
+                v->stiffness_tilt * 1e-3);
+    else
+        fputs("stiffness    not computed (only at convergence)\n", o->f);
+    fputs("bearing  thrust  axial N  outer C  inner C   loss W\n", o->f);
     for (int k = 0; k < s->n_bearings && k < ACBB_MAX_SET; k++)
         fprintf(o->f, "%7d  %6s %8.1f %8.2f %8.2f %8.2f%s\n", k,
                 v->orientation[k] > 0 ? "+x" : "-x", v->axial_force[k], v->T_outer_ring[k],

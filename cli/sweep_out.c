@@ -38,7 +38,7 @@ static void put(char names[][ACBB_CLI_SWEEP_NAME], double *v, size_t *n,
  * bearing leaves them empty (CSV) or out (JSONL). */
 static const char *const k_set_cols[] = {
     "set.preload_N", "set.preload_assembly_N", "set.liftoff_thrust_N",
-    "set.stiffness_axial_N_per_um", "set.stiffness_radial_N_per_um",
+    "set.liftoff_remainder_N", "set.stiffness_axial_N_per_um", "set.stiffness_radial_N_per_um",
     "set.stiffness_tilt_Nm_per_mrad", "set.spacer_growth_um",
 };
 #define N_SET_COLS (sizeof k_set_cols / sizeof k_set_cols[0])

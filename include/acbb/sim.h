@@ -84,7 +84,9 @@ typedef enum { ACBB_RUN_RUNNING, ACBB_RUN_CONVERGED, ACBB_RUN_FAILED } acbb_run_
 typedef struct {
     double preload_N;           /* axial force through the set with no external thrust, now */
     double preload_assembly_N;  /* mounting.preload_N */
-    double liftoff_thrust_N;    /* external thrust at which a bearing lifts off (0 until converged) */
+    double liftoff_thrust_N;    /* external thrust at which the opposite side's rings stop
+                                 * squeezing its balls (MODEL.md 14), updated while it runs */
+    double liftoff_remainder_N; /* what that side still carries there: centrifugal, N */
     double stiffness_axial;     /* N/m */
     double stiffness_radial;    /* N/m */
     double stiffness_tilt;      /* N m/rad */

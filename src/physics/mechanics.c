@@ -802,6 +802,17 @@ acbb_status acbb_mech_init_state(acbb_mech *m, acbb_mech_state *st, acbb_error *
     return acbb_mech_solve(m, 0.0, NULL, st, err);
 }
 
+void acbb_mech_probing(acbb_mech *m, int on)
+{
+    if (on) {
+        memcpy(m->kept_J, m->ball_J, sizeof m->kept_J);
+        memcpy(m->kept_J_ok, m->ball_J_ok, sizeof m->kept_J_ok);
+    } else {
+        memcpy(m->ball_J, m->kept_J, sizeof m->kept_J);
+        memcpy(m->ball_J_ok, m->kept_J_ok, sizeof m->kept_J_ok);
+    }
+}
+
 void acbb_mech_ball_frame(const acbb_mech *m, const acbb_mech_state *st, int j,
                           acbb_ball_frame *f)
 {

@@ -141,6 +141,12 @@ double acbb_ball_moved(const double from[ACBB_BALL_INPUTS], const double to[ACBB
  * tests/test_losses.c). */
 extern const double acbb_ball_loss_weights[ACBB_BALL_INPUTS];
 
+/* Probes of another load case between a run's steps (a bearing set's
+ * lift-off while it runs, sim_set_probe.c): on keeps the last ball
+ * Jacobians that the run's transient chord steps reuse, off puts them
+ * back, so the run's own numbers do not depend on the probes. */
+void acbb_mech_probing(acbb_mech *m, int on);
+
 /* Copy a state (header and the n balls in use). */
 void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
 

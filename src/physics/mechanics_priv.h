@@ -35,6 +35,8 @@ struct acbb_mech {
     int ring_J_ok[MAX_RING_DOF + 1];
     double ball_J[ACBB_MAX_BALLS][4]; /* last ball Jacobians (chord steps, transient mode) */
     int ball_J_ok[ACBB_MAX_BALLS];
+    double kept_J[ACBB_MAX_BALLS][4]; /* ball_J before the probes (acbb_mech_probing) */
+    int kept_J_ok[ACBB_MAX_BALLS];
     gsl_root_fsolver *brent;
     gsl_root_fsolver *brent_z, *brent_a; /* nested fallback of the ball solve */
     /* context of the solve in progress */

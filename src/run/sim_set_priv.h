@@ -24,6 +24,13 @@ struct acbb_set_sim {
     double prev_total, prev_F, prev_rate, total;
     int growth, quiet;
     double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
+    /* the last lift-off search (sim_set_probe.c): its preload, speed, slope
+     * of the squeeze (um/N) and where it ended (lift_sm.n 0: none yet) */
+    double lift_preload, lift_speed, lift_slope;
+    double lift_prev[2];       /* the search before: its preload and lift-off, N */
+    double lift_rest;          /* the unloading side's axial reaction at lift-off, N */
+    acbb_set_mech lift_sm;
+    acbb_mech_state *lift_ms[ACBB_MAX_SET];
 };
 
 /* The members' workspaces and states as set_mech.h wants them. */
@@ -33,10 +40,11 @@ acbb_status acbb_set_solve_shaft(acbb_set_sim *ss, acbb_error *err);
 
 /* Probes (sim_set_probe.c): the members and the set's solution are left as
  * they were. The preload with no external thrust, N; the lift-off thrust,
- * N (0: none, a tandem set); the radial and tilt stiffness at the nose
- * into ss->K_rad, ss->K_tilt. */
+ * N (0: none, a tandem set; to rel_tol of it, at least 1e-4 of the
+ * assembly preload; MODEL.md 14, sim_set_probe.c for what it is); the
+ * radial and tilt stiffness at the nose into ss->K_rad, ss->K_tilt. */
 double acbb_set_preload_now(acbb_set_sim *ss);
-double acbb_set_liftoff(acbb_set_sim *ss);
+double acbb_set_liftoff(acbb_set_sim *ss, double rel_tol);
 void acbb_set_nose_stiffness(acbb_set_sim *ss);
 
 #endif

@@ -3,8 +3,7 @@
  * speed and ball speeds, for the preload with no thrust, the lift-off
  * thrust and the stiffness at the nose. */
 #include <math.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
+#include <string.h>
 #include "sim_set_priv.h"
 
 typedef struct { double Fa, Fr, M; } loads;
@@ -67,94 +66,186 @@ double acbb_set_preload_now(acbb_set_sim *ss)
     return acbb_set_mech_preload(&p);
 }
 
-/* Load left on `side` under thrust Fa, solved in *w from its last
- * solution (the lift-off search walks the thrust: each solve starts from
- * the previous one, not from the run's state). */
-static double unloading_side(acbb_set_sim *ss, acbb_set_mech *w, double Fa, int side, int *ok)
+/* How far the rings of `side` still squeeze their balls under thrust Fa,
+ * um: the largest excess, over the side's balls, of the distance between a
+ * ball's groove centres over the sum of its unloaded groove-to-ball-centre
+ * lengths (MODEL.md 3, thermal terms included). Solved in *w from its
+ * last solution (the search walks the thrust: each solve starts from the
+ * previous one, not from the run's state). */
+static double side_squeeze(acbb_set_sim *ss, acbb_set_mech *w, double Fa, int side, int *ok)
 {
     *ok = solve_loads(ss, (loads){ Fa, 0.0, 0.0 }, w) == ACBB_OK;
-    double F = 0.0;
-    for (int k = 0; k < w->n; k++) if (w->orient[k] == side) F += w->Fx[k];
-    return F;
+    double g = -INFINITY;
+    for (int k = 0; k < w->n; k++) {
+        if (w->orient[k] != side) continue;
+        const acbb_mech_state *st = acbb_simm_ms(ss->b[k]);
+        for (int j = 0; j < st->n; j++) {
+            acbb_ball_frame f;
+            acbb_mech_ball_frame(acbb_simm_mech(ss->b[k]), st, j, &f);
+            g = fmax(g, hypot(f.A1, f.A2) - f.L0_i - f.L0_o);
+        }
+    }
+    return g * 1e6;
 }
 
-/* External thrust at which the unloading side's balls all unload, at the
- * current temperatures and speed, the radial load and moment set aside (a
- * bearing that carries radial load keeps balls loaded at any thrust; the
- * lift-off thrust is the axial preload's, as [HK-EC] states it): GSL's Brent on F^(2/3) - eps^(2/3) of the side's
- * load F, which near lift-off falls as (Fa_lift - Fa)^1.5 (Hertz), so its
- * 2/3 power is nearly linear there; to 1e-4 of the preload. A rigid
- * opposed set unloads its -1 side under +x thrust; a spring set's floating
- * side keeps the spring force, so thrust the other way unloads the +1 side
- * at the spring force. A tandem set has no opposite side: 0. */
-typedef struct { acbb_set_sim *ss; acbb_set_mech w; int side, dir; double eps; } lift_ctx;
+/* Lift-off (MODEL.md 14; issue 25): the external thrust at which the rings
+ * of the unloading side stop squeezing its balls, at the current
+ * temperatures and speed, the radial load and moment set aside (a bearing
+ * that carries radial load keeps balls loaded at any thrust; the lift-off
+ * thrust is the axial preload's, as [HK-EC] states it). At rest the side's
+ * reaction is zero there (2^1.5 Fp for a constant contact angle [HK-EC],
+ * 3.07-3.71 Fp for the 15 deg 7008C, MODEL.md 14). At speed the centrifugal
+ * force still presses each ball on the outer race, and the slope of the
+ * outer groove passes part of it to the inner race (7008C pairs: 1 % of
+ * the preload at 1000 rpm, 15-40 % at 8000-16 000 rpm), which vanishes
+ * only microns of shaft travel later, on a rigid pair at several times
+ * the thrust: that full separation is no lift-off a designer can use
+ * (issue 25: it let a design carry 7 times the thrust that unloads the
+ * back bearing); what the side still carries at lift-off is reported
+ * beside it (ss->lift_rest, 0 at rest). The squeeze is smooth and nearly linear in
+ * the thrust, so the root is found by a few secant steps.
+ * A rigid opposed set unloads its -1 side under +x thrust; a spring set's
+ * floating side keeps the spring force, so thrust the other way unloads
+ * the +1 side at about the spring force. A tandem set has no opposite
+ * side: 0. */
+typedef struct {
+    acbb_set_sim *ss;
+    acbb_set_mech w;
+    int side, dir;
+    double x[2], f[2];         /* the last two thrusts tried and their squeezes */
+    double rest;               /* the side's axial reaction at the last one, N */
+} lift_ctx;
 
 /* A thrust the set cannot carry (no shaft equilibrium: past lift-off the
  * remaining side alone may hold no moment, and a spring set's shaft is then
  * free axially) counts as lifted off; the next solve starts again from the
  * run's state. */
-static double lift_fn(double Fa, void *p)
+static double lift_fn(double Fa, lift_ctx *c)
 {
-    lift_ctx *c = p;
     int ok;
-    double F = unloading_side(c->ss, &c->w, Fa * c->dir, c->side, &ok);
+    double g = side_squeeze(c->ss, &c->w, Fa * c->dir, c->side, &ok);
     if (!ok) { /* again from the run's state before calling it lifted off */
         keep_members(c->ss, 1);
         c->w = c->ss->sm;
-        F = unloading_side(c->ss, &c->w, Fa * c->dir, c->side, &ok);
+        g = side_squeeze(c->ss, &c->w, Fa * c->dir, c->side, &ok);
     }
+    c->rest = 0.0;
     if (!ok) {
         keep_members(c->ss, 1);
         c->w = c->ss->sm;
-        F = 0.0;
+        g = -1.0;
+    } else {
+        for (int k = 0; k < c->w.n; k++) if (c->w.orient[k] == c->side) c->rest += c->w.Fx[k];
     }
-    return cbrt(F * F) - cbrt(c->eps * c->eps);
+    if (fabs(Fa - c->x[1]) > 1e-3 * fabs(Fa)) /* a slope above the solves' noise */
+        c->x[0] = c->x[1], c->f[0] = c->f[1];
+    c->x[1] = Fa, c->f[1] = g;
+    return g;
 }
 
-static double search_liftoff(lift_ctx *cp)
+/* Secant steps on the squeeze from the guess x0 (the first with the last
+ * search's slope, else 2 % of x0), kept inside the bracket once the root
+ * is bracketed (bisection when a step leaves it), until a step is below
+ * tol. 0: lifted off with no thrust. */
+static double search_liftoff(lift_ctx *c, double x0, double slope, double tol)
 {
-    lift_ctx c = *cp;
-    acbb_set_sim *ss = c.ss;
-    /* First bracket: a spring set lifts off at the spring force; a rigid
-     * opposed pair near 2^1.5 times the preload it carries now (MODEL.md
-     * 14, [HK-EC]; 3x: a little past it, and past it the walk doubles). */
-    double est = ss->sm.spring ? ss->sm.Fp : 3.0 * fmax(acbb_set_mech_preload(&ss->sm), ss->sm.Fp);
-    double lo = ss->sm.Fa * c.dir, hi = fmax(lo, 0.0) + est;
-    double flo = lift_fn(lo, &c), fhi = lift_fn(hi, &c);
-    if (flo <= 0.0) return 0.0;
-    /* Walk out to a bracket along the secant of the nearly linear F^(2/3),
-     * a quarter past its root (at least 1.25x, at most 4x a step). */
-    for (int i = 0; i < 20 && fhi > 0.0; i++) {
-        double next = flo > fhi ? hi + 1.25 * (hi - lo) * fhi / (flo - fhi) : 4.0 * hi;
-        next = fmin(fmax(next, hi + 0.25 * fabs(hi)), hi + 3.0 * fabs(hi));
-        lo = hi;
-        flo = fhi;
-        hi = next;
-        fhi = lift_fn(hi, &c);
+    double a = -INFINITY, b = INFINITY; /* squeezed at a, lifted off at b */
+    double x = fmax(x0, tol), f = lift_fn(x, c), px = NAN, pf = NAN;
+    for (int i = 0; i < 50; i++) {
+        if (f > 0.0) a = fmax(a, x); else b = fmin(b, x);
+        if (b <= 0.0) return 0.0;
+        if (b - a <= tol) return f > 0.0 ? b : a; /* the bracket's other end */
+        double sl = isfinite(pf) && pf != f ? (f - pf) / (x - px) : slope;
+        double next = sl < 0.0 ? x - f / sl : x * (f > 0.0 ? 1.02 : 0.98);
+        if (fabs(next - x) <= tol && next > a && next < b) return next;
+        if (!isfinite(b)) next = fmin(fmax(next, a + 0.5 * tol), 4.0 * a);
+        else if (!isfinite(a)) next = fmax(fmin(next, b - 0.5 * tol), 0.0);
+        else if (!(next > a && next < b)) next = 0.5 * (a + b);
+        px = x, pf = f;
+        x = next;
+        f = lift_fn(x, c);
     }
-    gsl_function F = { lift_fn, &c };
-    gsl_root_fsolver *b = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    double root = 0.0;
-    if (b && fhi <= 0.0 && gsl_root_fsolver_set(b, &F, lo, hi) == GSL_SUCCESS) {
-        for (int it = 0; it < 60; it++) {
-            if (gsl_root_fsolver_iterate(b) != GSL_SUCCESS) break;
-            root = gsl_root_fsolver_root(b);
-            if (gsl_root_fsolver_x_upper(b) - gsl_root_fsolver_x_lower(b) < 1e-4 * ss->sm.Fp)
-                break;
-        }
-    }
-    if (b) gsl_root_fsolver_free(b);
-    return root;
+    return isfinite(b) ? b : a; /* no bracket: the last thrust tried */
 }
 
-double acbb_set_liftoff(acbb_set_sim *ss)
+/* The preload the search works at: the set's now, or the assembly one. */
+static double lift_preload(const acbb_set_sim *ss)
+{
+    return ss->preload > 0.0 ? ss->preload : ss->sm.Fp;
+}
+
+/* The lift-off along the line through the last two searches' (preload,
+ * lift-off), or the last one scaled by the preload since, else 3 Fp (a
+ * little below the static ratio, MODEL.md 14) or a spring set's force. */
+static double liftoff_guess(const acbb_set_sim *ss)
+{
+    double F = lift_preload(ss), P1 = ss->lift_preload, P0 = ss->lift_prev[0];
+    if (ss->liftoff > 0.0 && ss->lift_prev[1] > 0.0 && P0 > 0.0 && fabs(P1 - P0) > 1e-3 * P1)
+        return ss->liftoff + (ss->liftoff - ss->lift_prev[1]) / (P1 - P0) * (F - P1);
+    if (ss->liftoff > 0.0 && P1 > 0.0) return ss->liftoff * F / P1;
+    return ss->sm.spring ? ss->sm.Fp : 3.0 * F;
+}
+
+static void members_probing(acbb_set_sim *ss, int on)
+{
+    for (int k = 0; k < ss->n; k++) acbb_mech_probing(acbb_simm_mech(ss->b[k]), on);
+}
+
+/* Ball k's positions, angles and Hertz constants where the last search
+ * ended; its speeds and tractions the run's (the probes' premise). */
+static void adopt_balls(acbb_mech_state *st, const acbb_mech_state *at)
+{
+    for (int j = 0; j < st->n && j < at->n; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        const acbb_ball_state *a = &at->ball[j];
+        b->X1 = a->X1, b->X2 = a->X2, b->Qi = a->Qi, b->Qo = a->Qo;
+        b->alpha_i = a->alpha_i, b->alpha_o = a->alpha_o;
+        b->alpha_i_lag = a->alpha_i_lag, b->alpha_o_lag = a->alpha_o_lag;
+        b->delta_i = a->delta_i, b->delta_o = a->delta_o;
+        b->hc_i = a->hc_i, b->hc_o = a->hc_o;
+        b->hc_alpha_i = a->hc_alpha_i, b->hc_alpha_o = a->hc_alpha_o;
+        b->loaded = a->loaded;
+    }
+}
+
+/* Start where the last search ended (balls, shaft position and its
+ * Jacobian), the run's offsets and loads; after it, keep where it ended. */
+static void lift_state(acbb_set_sim *ss, acbb_set_mech *w, int save)
+{
+    if (save) {
+        for (int k = 0; k < ss->n; k++) acbb_mech_state_copy(ss->lift_ms[k], acbb_simm_ms(ss->b[k]));
+        ss->lift_sm = *w;
+        return;
+    }
+    *w = ss->sm;
+    if (!ss->lift_sm.n) return;
+    for (int k = 0; k < ss->n; k++) adopt_balls(acbb_simm_ms(ss->b[k]), ss->lift_ms[k]);
+    memcpy(w->q, ss->lift_sm.q, sizeof w->q);
+    memcpy(w->J, ss->lift_sm.J, sizeof w->J);
+    w->J_ok = ss->lift_sm.J_ok;
+    w->J_n = ss->lift_sm.J_n;
+}
+
+double acbb_set_liftoff(acbb_set_sim *ss, double rel_tol)
 {
     if (!has_side(&ss->sm, 1) || !has_side(&ss->sm, -1)) return 0.0;
     int side = ss->sm.spring ? 1 : -1;
-    lift_ctx c = { ss, ss->sm, side, -side, 1e-6 * ss->sm.Fp };
+    lift_ctx c = { .ss = ss, .side = side, .dir = -side, .x = { NAN, NAN }, .f = { NAN, NAN } };
     keep_members(ss, 0);
-    double root = search_liftoff(&c);
+    members_probing(ss, 1);
+    lift_state(ss, &c.w, 0);
+    double x0 = liftoff_guess(ss);
+    double root = search_liftoff(&c, x0, ss->lift_slope, fmax(rel_tol * x0, 1e-4 * ss->sm.Fp));
+    lift_state(ss, &c.w, 1);
+    ss->lift_rest = c.rest;
+    double s = (c.f[1] - c.f[0]) / (c.x[1] - c.x[0]);
+    if (isfinite(s) && s < 0.0) ss->lift_slope = s; /* else the last one's */
+    members_probing(ss, 0);
     keep_members(ss, 1);
+    ss->lift_prev[0] = ss->lift_preload;
+    ss->lift_prev[1] = ss->liftoff;
+    ss->lift_preload = lift_preload(ss);
+    ss->lift_speed = ss->s.inner_speed;
     return root;
 }
 

@@ -12,6 +12,7 @@ static void set_view(const acbb_set_sim *ss, acbb_set_view *v)
     v->preload_N = acbb_snap_fin(ss->preload);
     v->preload_assembly_N = ss->s.preload_force;
     v->liftoff_thrust_N = acbb_snap_fin(ss->liftoff);
+    v->liftoff_remainder_N = acbb_snap_fin(ss->lift_rest);
     v->stiffness_axial = acbb_snap_fin(ss->K_ax);
     v->stiffness_radial = acbb_snap_fin(ss->K_rad);
     v->stiffness_tilt = acbb_snap_fin(ss->K_tilt);
