@@ -69,6 +69,12 @@ int acbb_sf_profile_row(const acbb_sfield *f)
     return -1;
 }
 
+bool acbb_sf_profile_given(const acbb_scene *s, const char *section, const char *key)
+{
+    int row = acbb_sf_profile_row(acbb_sf_find(section, key));
+    return row < 0 || (s->profile_given & (1u << row));
+}
+
 void acbb_profile_apply(acbb_scene *s)
 {
     acbb_physics_profile p = s->profile == ACBB_PROFILE_REFERENCE ? s->profile : ACBB_PROFILE_SEED;

@@ -100,6 +100,8 @@ acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *val
  * under p, for saving into a user's file). */
 int acbb_sf_profile_row(const acbb_sfield *f);
 void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p);
+/* section.key was given explicitly, or is not a key of the profile table. */
+bool acbb_sf_profile_given(const acbb_scene *s, const char *section, const char *key);
 
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);
