@@ -93,4 +93,6 @@ void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p)
     acbb_scene_default(d);
     d->profile = p;
     acbb_profile_apply(d);
+    /* The profile key's own default stays seed (a preset without it). */
+    d->profile = ACBB_PROFILE_SEED;
 }

@@ -96,8 +96,9 @@ acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *val
                                  int cross_check, acbb_error *err);
 
 /* physics_profile.c: the profile table's row of field f, or -1; a default
- * scene with profile p's values in (what "the default" of a key means
- * under p, for saving into a user's file). */
+ * scene with profile p's values in its table's keys (what "the default" of
+ * a key means under p, for saving into a user's file), physics.profile
+ * itself at its own default, seed. */
 int acbb_sf_profile_row(const acbb_sfield *f);
 void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p);
 /* section.key was given explicitly, or is not a key of the profile table. */
