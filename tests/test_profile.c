@@ -94,6 +94,28 @@ static void test_set(void)
        "--set edits: the key wins whatever the order of the edits");
 }
 
+static int notes_churning(const acbb_scene *s)
+{
+    acbb_inactive_effect in[16];
+    size_t n = acbb_scene_inactive_effects(s, in, 16);
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(in[i].effect, "loss_churning") == 0) return 1;
+    return 0;
+}
+
+/* Churning finds no bulk oil under oil-air: a user who switched it on is
+ * told; a profile that has it on (also written out in full, as acbb new
+ * does) is not the user's input. */
+static void test_inactive(void)
+{
+    acbb_scene s = load("[physics]\nprofile = reference\n");
+    ok(s.loss_churning && !notes_churning(&s), "reference, oil-air: churning on, no note");
+    s = load("[physics]\nprofile = reference\n[effects]\nloss_churning = on\n");
+    ok(!notes_churning(&s), "  the same value given explicitly: no note");
+    s = load("[effects]\nloss_churning = on\n");
+    ok(notes_churning(&s), "seed with churning switched on under oil-air: the note");
+}
+
 static int file_has(const char *path, const char *needle)
 {
     FILE *f = fopen(path, "r");
@@ -173,6 +195,7 @@ int main(void)
     test_table();
     test_load();
     test_set();
+    test_inactive();
     test_save_edits();
     test_run();
     return done_testing();

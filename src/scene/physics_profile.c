@@ -69,10 +69,17 @@ int acbb_sf_profile_row(const acbb_sfield *f)
     return -1;
 }
 
-bool acbb_sf_profile_given(const acbb_scene *s, const char *section, const char *key)
+bool acbb_sf_profile_own(const acbb_scene *s, const char *section, const char *key)
 {
-    int row = acbb_sf_profile_row(acbb_sf_find(section, key));
-    return row < 0 || (s->profile_given & (1u << row));
+    const acbb_sfield *f = acbb_sf_find(section, key);
+    if (!f || acbb_sf_profile_row(f) < 0) return true;
+    acbb_scene d;
+    acbb_sf_profile_defaults(&d, s->profile);
+    size_t i = (size_t)(f - acbb_sf_table);
+    char mine[64], its[64];
+    acbb_scene_field_format(s, i, mine, sizeof mine);
+    acbb_scene_field_format(&d, i, its, sizeof its);
+    return strcmp(mine, its) != 0;
 }
 
 void acbb_profile_apply(acbb_scene *s)

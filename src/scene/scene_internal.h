@@ -101,8 +101,9 @@ acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *val
  * itself at its own default, seed. */
 int acbb_sf_profile_row(const acbb_sfield *f);
 void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p);
-/* section.key was given explicitly, or is not a key of the profile table. */
-bool acbb_sf_profile_given(const acbb_scene *s, const char *section, const char *key);
+/* section.key is not a key of the profile table, or its value is not the
+ * one s->profile gives it (the user's own choice, not the profile's). */
+bool acbb_sf_profile_own(const acbb_scene *s, const char *section, const char *key);
 
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);
