@@ -321,7 +321,8 @@ int acbb_sf_write_preset(FILE *f, const acbb_scene *s)
     const char *section = "";
     int bad = fprintf(f, "; acbb preset (bearing scene). Units are in the key names; decimal "
                          "point '.'.\n; Every key is listed; a key left out of a preset takes "
-                         "its default (presets/7008C.ini).\n") < 0;
+                         "its default (presets/7008C.ini),\n; or physics.profile's value for "
+                         "the keys the profile sets.\n") < 0;
     for (size_t i = 0; i < acbb_sf_n && !bad; i++) {
         const acbb_field_info *in = &acbb_sf_table[i].info;
         char range[160], val[64];
