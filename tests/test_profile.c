@@ -114,6 +114,12 @@ static void test_inactive(void)
     ok(!notes_churning(&s), "  the same value given explicitly: no note");
     s = load("[effects]\nloss_churning = on\n");
     ok(notes_churning(&s), "seed with churning switched on under oil-air: the note");
+    acbb_inactive_effect in[16];
+    s = load("[physics]\nprofile = reference\n[fidelity]\nhysteresis_axis = minor\n");
+    size_t n = acbb_scene_inactive_effects(&s, in, 16);
+    int axis = 0;
+    for (size_t i = 0; i < n; i++) axis |= strcmp(in[i].effect, "hysteresis_axis") == 0;
+    ok(axis, "hysteresis_axis set under rolling_hysteresis = johnson is named inactive");
 }
 
 static int file_has(const char *path, const char *needle)
