@@ -21,19 +21,19 @@
 #include "scene_internal.h"
 
 typedef struct {
-    const char *section, *key;
+    const char *key;             /* "section.key" */
     const char *value[2];        /* [ACBB_PROFILE_SEED], [ACBB_PROFILE_REFERENCE] */
 } profile_row;
 
 static const profile_row k_rows[] = {
-    /* section      key                     seed     reference */
-    { "fidelity", "rolling_hysteresis", { "seed", "johnson" } },
-    { "effects", "loss_ehl_rolling", { "off", "on" } },
-    { "effects", "loss_churning", { "off", "on" } },
-    { "effects", "loss_cage", { "off", "on" } },
+    /* key                              seed      reference */
+    { "fidelity.rolling_hysteresis", { "seed", "johnson" } },
+    { "effects.loss_ehl_rolling", { "off", "on" } },
+    { "effects.loss_churning", { "off", "on" } },
+    { "effects.loss_cage", { "off", "on" } },
     /* thermal.contact_model (the moving-source contact resistances, another
      * branch): the lead adds its row here,
-     * { "thermal", "contact_model", { "stationary", "moving" } }, */
+     * { "thermal.contact_model", { "stationary", "moving" } }, */
 };
 
 #define N_ROWS (sizeof k_rows / sizeof k_rows[0])
@@ -50,10 +50,7 @@ size_t acbb_profile_row_count(void) { return N_ROWS; }
 
 const char *acbb_profile_row_key(size_t k)
 {
-    static char buf[N_ROWS][64];
-    if (k >= N_ROWS) return NULL;
-    snprintf(buf[k], sizeof buf[k], "%s.%s", k_rows[k].section, k_rows[k].key);
-    return buf[k];
+    return k < N_ROWS ? k_rows[k].key : NULL;
 }
 
 const char *acbb_profile_row_value(size_t k, acbb_physics_profile p)
@@ -62,10 +59,19 @@ const char *acbb_profile_row_value(size_t k, acbb_physics_profile p)
                ? k_rows[k].value[p] : NULL;
 }
 
+const acbb_sfield *acbb_sf_profile_field(size_t k)
+{
+    if (k >= N_ROWS) return NULL;
+    const char *dot = strchr(k_rows[k].key, '.');
+    char section[32];
+    snprintf(section, sizeof section, "%.*s", (int)(dot - k_rows[k].key), k_rows[k].key);
+    return acbb_sf_find(section, dot + 1);
+}
+
 int acbb_sf_profile_row(const acbb_sfield *f)
 {
     for (size_t k = 0; k < N_ROWS; k++)
-        if (acbb_sf_find(k_rows[k].section, k_rows[k].key) == f) return (int)k;
+        if (acbb_sf_profile_field(k) == f) return (int)k;
     return -1;
 }
 
@@ -87,7 +93,7 @@ void acbb_profile_apply(acbb_scene *s)
     acbb_physics_profile p = s->profile == ACBB_PROFILE_REFERENCE ? s->profile : ACBB_PROFILE_SEED;
     for (size_t k = 0; k < N_ROWS; k++) {
         if (s->profile_given & (1u << k)) continue;
-        const acbb_sfield *f = acbb_sf_find(k_rows[k].section, k_rows[k].key);
+        const acbb_sfield *f = acbb_sf_profile_field(k);
         acbb_error e;
         /* The table's values are valid choices (test_profile checks each
          * row parses): nothing to report here. */

@@ -100,6 +100,7 @@ acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *val
  * a key means under p, for saving into a user's file), physics.profile
  * itself at its own default, seed. */
 int acbb_sf_profile_row(const acbb_sfield *f);
+const acbb_sfield *acbb_sf_profile_field(size_t k);   /* row k's field, NULL past the end */
 void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p);
 /* section.key is not a key of the profile table, or its value is not the
  * one s->profile gives it (the user's own choice, not the profile's). */

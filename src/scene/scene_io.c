@@ -223,9 +223,9 @@ static int on_key(void *user, const char *section, const char *name, const char 
 static void given_by_profile(acbb_sf_parsed *out)
 {
     out->scene.profile_given = 0;
-    for (size_t i = 0; i < acbb_sf_n; i++) {
-        int row = acbb_sf_profile_row(&acbb_sf_table[i]);
-        if (row >= 0 && out->first_line[i]) out->scene.profile_given |= 1u << row;
+    for (size_t k = 0; k < acbb_profile_row_count(); k++) {
+        const acbb_sfield *f = acbb_sf_profile_field(k);
+        if (f && out->first_line[f - acbb_sf_table]) out->scene.profile_given |= 1u << k;
     }
     acbb_profile_apply(&out->scene);
 }
