@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "acbb/designation.h"
+#include "acbb/physics_profile.h"
 #include "acbb/outfile.h"
 #include "common.h"
 #include "exit.h"
@@ -91,8 +92,8 @@ static int annotate(const char *path, const acbb_designation *d, const acbb_esti
                "ISO 15:2017 general plan (boundary dimensions).\n; Lines \"; estimated: ...\" "
                "mark internal geometry that catalogues do not publish\n; and the default "
                "operating point, estimated by the rule given\n; (src/scene/designation.c); "
-               "overwrite any of it.\n; Loss set: extended (effects.loss_ehl_rolling = on, "
-               "docs/physics.md section 16); off gives the seed's five.\n",
+               "overwrite any of it.\n; Physics: physics.profile = reference (the "
+               "best-founded losses; seed gives the seed paper's).\n",
             d->name, d->deep_groove ? "deep-groove" : "angular-contact", d->name,
             d->bore * 1e3, d->outer_diameter * 1e3, d->width * 1e3);
     char line[512], section[64] = "";
@@ -121,9 +122,11 @@ int acbb_cli_cmd_new(const acbb_cli_args *a)
     acbb_scene s;
     acbb_estimate notes[MAX_NOTES];
     size_t n = acbb_designation_scene(&d, &s, notes, MAX_NOTES);
-    /* A new design declares the extended loss set (MODEL.md 16): the seed's
-     * five are the seed presets' declared set, a lower bound elsewhere. */
-    s.loss_ehl_rolling = true;
+    /* A new design states the reference physics profile (physics_profile.h):
+     * the seed's physics is the seed presets' own, a lower bound elsewhere. */
+    s.profile = ACBB_PROFILE_REFERENCE;
+    s.profile_given = 0;
+    acbb_profile_apply(&s);
     char def[64];
     snprintf(def, sizeof def, "%s.ini", d.name);
     const char *path = a->val[CLI_OPT_OUT] ? a->val[CLI_OPT_OUT] : def;

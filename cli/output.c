@@ -10,6 +10,7 @@
 #include "acbb/json.h"
 #include "acbb/life_eval.h"
 #include "acbb/outputs.h"
+#include "acbb/physics_profile.h"
 #include "acbb/units.h"
 #include "acbb/set.h"
 #include "output.h"
@@ -143,6 +144,7 @@ static void summary_header(acbb_cli_out *o, const char *preset,
         fprintf(f, "Fx %g N, ", sc->axial_load);
     fprintf(f, "Fr %g N, thermal expansion %s, %s\n", sc->radial_load,
             onoff(sc->thermal_expansion), acbb_model_level_name(sc->model));
+    fprintf(f, "%-13s%s profile (physics.profile)\n", "physics", acbb_profile_name(sc->profile));
     summary_mounting(f, sc);
     fprintf(f, "%-13s%s", "status", acbb_run_status_name(s));
     if (s->message[0]) fprintf(f, ": %.60s", s->message);

@@ -11,6 +11,7 @@
 #include "acbb/loss_kinds.h"
 #include "acbb/measure.h"
 #include "acbb/outfile.h"
+#include "acbb/physics_profile.h"
 #include "acbb/scene.h"
 #include "acbb/study.h"
 #include "common.h"
@@ -67,6 +68,7 @@ typedef struct {
     const acbb_study *by[N_MOUNTINGS]; /* the study under each mounting (k_mountings) */
     const char *loss_set;        /* acbb_loss_set of the preset: "seed" | "extended" */
     const acbb_contact_study *contact; /* the runaway case under each contact model */
+    const char *profile;         /* its physics.profile: "seed" | "reference" */
 } report_view;
 
 /* ---- robustness (--sensitivity) ---- */
@@ -317,9 +319,9 @@ static void print_text(FILE *f, const report_view *c)
     snprintf(line, sizeof line, "Runs: %zu (%s; items marked (L2) at quasi-dynamic), %zu failed, "
              "%.1f s wall. Load sweep 50-1000 N at 15000 rpm; speed sweeps 2000-16000 rpm at "
              "100 N and 1000 N; TE and WTE; zero-speed runs. Checks: ok = held, NO = not "
-             "held, n/e = not evaluated, info = not part of the verdict. Loss set: %s.",
+             "held, n/e = not evaluated, info = not part of the verdict. Loss set: %s; physics profile: %s.",
              c->runs->n, acbb_model_level_name(c->model), acbb_study_n_failed(c->st),
-             1e-3 * c->runs->wall_ms, c->loss_set);
+             1e-3 * c->runs->wall_ms, c->loss_set, c->profile);
     wrap(f, "", 0, line);
     fputc('\n', f);
     print_items_text(f, c);
@@ -512,8 +514,9 @@ static void print_md_head(FILE *f, const report_view *c)
             acbb_model_level_name(c->model), acbb_study_n_failed(c->st));
     fprintf(f, "**%d held, %d not held, %d not evaluated** (of %zu).\n\n", nv[0], nv[1], nv[2],
             acbb_study_n_items(c->st));
-    fprintf(f, "Loss set: %s (docs/physics.md section %s).\n\n", c->loss_set,
-            strcmp(c->loss_set, "seed") == 0 ? "6: the seed's five" : "16: the seed's five and more");
+    fprintf(f, "Loss set: %s (docs/physics.md section %s); physics profile: %s.\n\n", c->loss_set,
+            strcmp(c->loss_set, "seed") == 0 ? "6: the seed's five" : "16: the seed's five and more",
+            c->profile);
 }
 
 static void print_robust_md(FILE *f, const report_view *c)
@@ -793,7 +796,8 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
         return rc < 0 ? cancelled(a) : rc;
     }
     report_view v = { a->preset, a->sets, a->n_sets, base->model, st, acbb_study_results(st),
-                      have_rob ? &rob : NULL, { NULL }, acbb_loss_set(base), cs };
+                      have_rob ? &rob : NULL, { NULL }, acbb_loss_set(base), cs,
+                      acbb_profile_name(base->profile) };
     for (int m = 0; m < N_MOUNTINGS; m++) v.by[m] = m == own ? st : other[m];
     long misuse = a->val[CLI_OPT_JSON] ? print_json(stdout, &v) : 0;
     if (!a->val[CLI_OPT_JSON]) print_text(stdout, &v);

@@ -257,6 +257,16 @@ jq -e '.loss_set == "extended" and .losses_W.ehl_rolling > 0 and .losses_W.churn
 t $? "JSON: loss_set extended, ehl_rolling > 0, churning 0 with oil-air"
 jq -e '.loss_set == "seed" and .losses_W.ehl_rolling == 0' "$TMP/cage.json" >/dev/null
 t $? "JSON: the seed preset declares the seed set"
+# Physics profiles (issue 25): the run says which it used, in the JSON and
+# in the text summary's header; --set physics.profile moves the keys it sets.
+jq -e '.profile == "seed"' "$TMP/cage.json" >/dev/null
+t $? "JSON: the seed preset's profile is seed"
+"$ACBB" run presets/7008C.ini --set physics.profile=reference --set effects.heating=off \
+    >"$TMP/ref.txt" 2>"$TMP/ref.err"
+code $? 0 "run with --set physics.profile=reference exits 0"
+grep -q '^physics  *reference profile' "$TMP/ref.txt" && grep -q 'ehl_roll' "$TMP/ref.txt" &&
+    grep -q 'cage' "$TMP/ref.txt" && ! grep -q 'loss_churning' "$TMP/ref.err"
+t $? "text: header names the reference profile, its losses listed, no note for its churning"
 "$ACBB" run presets/7008C.ini --set effects.loss_ehl_rolling=on --set effects.loss_churning=on \
     --set effects.loss_cage=on >"$TMP/ext.txt" 2>"$TMP/ext.err"
 grep -q 'loss_churning = on has no effect here' "$TMP/ext.err"

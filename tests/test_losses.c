@@ -92,6 +92,15 @@ static void test_slip_and_rolling(void)
     s.hyst_axis = ACBB_HYST_MINOR;
     acbb_contact_losses(&s, &q, &c, &oil, &L);
     is_close(L.P[ACBB_LOSS_ROLLING], Pr * 0.2, 1e-12, 0, "hysteresis on the minor axis scales with b/a");
+    /* Johnson 1985 ch. 9, a sphere rolling: F = (3/16) eps Q b / R_x, b along
+     * the rolling direction, R_x = 3 mm here: 3/16 * 0.007 * 150 * 0.2e-3 /
+     * 3e-3 = 0.013125 N, times u = 19 m/s = 0.249375 W. */
+    s.roll_hyst = ACBB_ROLL_HYST_JOHNSON;
+    s.hyst_axis = ACBB_HYST_MAJOR;   /* no effect under johnson */
+    acbb_contact_losses(&s, &q, &c, &oil, &L);
+    is_close(L.P[ACBB_LOSS_ROLLING], 0.249375 * s.hysteresis / 0.007, 1e-12, 0,
+             "P_r Johnson = (3/16) eps Q b u / R_x (hand value 0.249 W at eps 0.007)");
+    s.roll_hyst = ACBB_ROLL_HYST_SEED;
     s.loss_slip = s.loss_rolling = s.loss_spin = s.loss_shear = false;
     acbb_contact_losses(&s, &q, &c, &oil, &L);
     ok(L.P[ACBB_LOSS_SLIP] == 0 && L.P[ACBB_LOSS_ROLLING] == 0 && L.P[ACBB_LOSS_SPIN] == 0 && L.P[ACBB_LOSS_SHEAR] == 0, "disabled losses are zero");

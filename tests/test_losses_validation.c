@@ -27,36 +27,17 @@
 #include "tap.h"
 #include "acbb/designation.h"
 #include "acbb/sim.h"
+#include "skf_model.h"
 
 #define DOC "docs/losses_validation.md"
 #define RPM (2.0 * M_PI / 60.0)
 
-typedef struct {
-    int angular;
-    double R1, R2, R3, S1, S2, S3, K_Z;
-} skf_bearing;
-
-static const skf_bearing k_dgbb60 = { 0, 4.1e-7, 1.7, 0, 3.73e-3, 14.6, 0, 3.1 };
-static const skf_bearing k_acbb72b = { 1, 5.03e-7, 1.97, 1.90e-12, 1.30e-2, 0.68, 1.91e-12, 4.4 };
-
-/* The SKF model's moment, N mm (oil-air: K_rs = 6e-8, no drag term). */
+/* The SKF model's moment, N mm (skf_model.h). */
 static double skf_moment(const skf_bearing *k, double d, double D, double n, double nu,
                          double Fr, double Fa, double *Mrr)
 {
-    double dm = 0.5 * (d + D), Grr, Gsl;
-    if (!k->angular) {
-        Grr = k->R1 * pow(dm, 1.96) * pow(Fr, 0.54);
-        Gsl = k->S1 * pow(dm, -0.26) * pow(Fr, 5.0 / 3.0);
-    } else {
-        double Fg = k->R3 * pow(dm, 4) * n * n, Fgs = k->S3 * pow(dm, 4) * n * n;
-        Grr = k->R1 * pow(dm, 1.97) * pow(Fr + Fg + k->R2 * Fa, 0.54);
-        Gsl = k->S1 * pow(dm, 0.26) * (pow(Fr + Fgs, 4.0 / 3.0) + k->S2 * pow(Fa, 4.0 / 3.0));
-    }
-    double ish = 1.0 / (1.0 + 1.84e-9 * pow(n * dm, 1.28) * pow(nu, 0.64));
-    double rs = exp(-6e-8 * nu * n * (d + D) * sqrt(k->K_Z / (2.0 * (D - d))));
-    double bl = exp(-2.6e-8 * pow(n * nu, 1.4) * dm);
-    *Mrr = ish * rs * Grr * pow(nu * n, 0.6);
-    return *Mrr + Gsl * (bl * 0.15 + (1.0 - bl) * 0.05);
+    double Msl;
+    return skf_moment_parts(k, d, D, n, nu, Fr, Fa, Mrr, &Msl);
 }
 
 /* acbb's frictional moment, N mm, of scene s with the given loss set;
@@ -142,21 +123,13 @@ static void print_md(const row *r, int n)
 /* The ratios of the committed table, in row order. */
 static int doc_ratios(double *seed, double *ext, int cap)
 {
-    FILE *f = fopen(DOC, "r");
-    if (!f) return -1;
-    char line[512];
-    int n = 0;
-    while (fgets(line, sizeof line, f) && n < cap) {
-        char name[16];
-        double v[9];
-        if (sscanf(line, "| %15s | %lf | %lf | %lf | %lf | %lf | %lf | %lf | %lf |", name, &v[0],
-                   &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7]) == 9) {
-            seed[n] = v[6];
-            ext[n] = v[7];
-            n++;
-        }
+    static double v[32][SKF_DOC_COLS];
+    int n = skf_doc_table(DOC, "| bearing | n rpm | Fr N | Fa N | acbb seed set", v, 8,
+                          cap < 32 ? cap : 32);
+    for (int i = 0; i < n; i++) {
+        seed[i] = v[i][6];
+        ext[i] = v[i][7];
     }
-    fclose(f);
     return n;
 }
 

@@ -38,6 +38,9 @@ for row in "7000C 10 26 8" "7008C 40 68 15" "7020AC 100 150 24" "7040B 200 310 5
     t $? "$1: d x D x B = $2 x $3 x $4 mm"
     grep -B1 '^ball_diameter_mm = ' "$f" | grep -q '^; estimated:'
     t $? "$1: the ball diameter is marked estimated"
+    [ "$(val "$f" profile)" = reference ] && [ "$(val "$f" rolling_hysteresis)" = johnson ] &&
+        [ "$(val "$f" loss_ehl_rolling)" = on ] && [ "$(val "$f" loss_cage)" = on ]
+    t $? "$1: states physics.profile = reference and its keys (issue 25)"
     "$ACBB" check "$f" >"$TMP/out" 2>"$TMP/err"
     rc=$?
     # The thermal network's surroundings are still the seed's fixed-size

@@ -211,7 +211,8 @@ static const char *const k_expected[][2] = {
     {"fidelity.model", "quasi-dynamic"}, {"fidelity.contact_grid", "6"},
     {"fidelity.hertz", "bh77"}, {"fidelity.geometry", "clean"},
     {"fidelity.race_control", "outer"}, {"fidelity.loss_form", "clean"},
-    {"fidelity.hysteresis_axis", "major"}, {"fidelity.mech_tol", "1e-08"},
+    {"fidelity.hysteresis_axis", "major"}, {"fidelity.rolling_hysteresis", "seed"},
+    {"fidelity.mech_tol", "1e-08"},
     {"fidelity.steady_tol_K_s", "0.0001"},
     {"fidelity.network", "46"}, {"fidelity.thermal_mode", "transient"}, {"fidelity.time_step_s", "5"},
     {"fidelity.preset", "custom"}, {"fidelity.target_error_pct", "0"},
@@ -226,6 +227,7 @@ static const char *const k_expected[][2] = {
     {"life.inner_shoulder_mm", "0"},
     {"life.outer_shoulder_mm", "0"},
     {"life.internals_estimated", "off"},
+    {"physics.profile", "seed"},
 };
 
 static void test_key_list_and_defaults(void)

@@ -11,8 +11,10 @@ trap 'rm -rf "$TMP"' EXIT
 # No NaN/Inf anywhere in a JSON document (jq reads them as null or fails).
 finite() { jq -e '[.. | numbers] | all(isinfinite | not)' "$1" >/dev/null 2>&1 && ! grep -qi 'nan\|null' "$1"; }
 
-# A step start at 16 000 rpm under rigid preload: branches automatic.
-"$ACBB" run presets/runaway-rigid-preload.ini --json >"$TMP/step.json" 2>"$TMP/err"
+# A step start at 16 000 rpm under rigid preload: branches automatic. The
+# 143 N is MODEL.md 14's, the seed physics' (the preset states reference).
+"$ACBB" run presets/runaway-rigid-preload.ini --set physics.profile=seed --json \
+    >"$TMP/step.json" 2>"$TMP/err"
 t $([ $? -eq 3 ]; echo $?) "runaway preset: exit 3 (the run ran away)"
 jqt "$TMP/step.json" '.status == "runaway" and .branches.agree == false
     and .branches.transient.status == "runaway" and .branches.steady.status == "converged"
@@ -60,10 +62,13 @@ tr '\r' '\n' <"$TMP/prog" | grep -Eq 'row [1-6]/6 [0-9]+ rpm'
 t $? "progress line: schedule row k/6 and speed"
 
 # A one-minute ramp crosses into the runaway: named status, last good state.
+# The seed's physics (stationary contact spots, MODEL.md 14's two
+# branches): under the reference profile's moving-source contact heat the
+# ramp converges (README "Physics profiles").
 cp presets/run-in-ramp.ini "$TMP/fast.ini"
 sed -i '/^row = [1-9]/d' "$TMP/fast.ini"
 echo 'row = 60, 16000, 1000, 0' >>"$TMP/fast.ini"
-"$ACBB" run "$TMP/fast.ini" --json >"$TMP/fast.json" 2>/dev/null
+"$ACBB" run "$TMP/fast.ini" --set physics.profile=seed --json >"$TMP/fast.json" 2>/dev/null
 t $([ $? -eq 3 ]; echo $?) "60 s ramp: exit 3"
 jqt "$TMP/fast.json" '.status == "runaway" and .schedule.finished == true
     and .branches.agree == false and .losses_W.total > 0' \

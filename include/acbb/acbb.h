@@ -14,6 +14,7 @@
 #include "acbb/preset_info.h"
 #include "acbb/designation.h"
 #include "acbb/fidelity.h"
+#include "acbb/physics_profile.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/sim.h"
 #include "acbb/branches.h"

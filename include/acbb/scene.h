@@ -45,6 +45,12 @@ typedef enum { ACBB_GRADE_CUSTOM, ACBB_GRADE_VG2, ACBB_GRADE_VG3, ACBB_GRADE_VG5
                ACBB_GRADE_VG1000, ACBB_GRADE_VG1500, ACBB_GRADES } acbb_oil_grade;
 typedef enum { ACBB_LOSS_CLEAN, ACBB_LOSS_SEED } acbb_loss_form;
 typedef enum { ACBB_HYST_MAJOR, ACBB_HYST_MINOR } acbb_hyst_axis;
+/* fidelity.rolling_hysteresis: the seed's Eq. 18 force 4 eps Q a_c / (3 pi D)
+ * (axis by hyst_axis) or Johnson's sphere (3/16) eps Q b / R_x (losses.c). */
+typedef enum { ACBB_ROLL_HYST_SEED, ACBB_ROLL_HYST_JOHNSON } acbb_roll_hyst;
+/* physics.profile (physics_profile.h): which physics a scene's loss keys
+ * default to: the seed paper's, or the best-founded ("reference") set. */
+typedef enum { ACBB_PROFILE_SEED, ACBB_PROFILE_REFERENCE } acbb_physics_profile;
 typedef enum { ACBB_NET_46, ACBB_NET_7 } acbb_network_kind;
 typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode;
 /* [set] arrangement (MODEL.md 14): single = one bearing (today's scenes). */
@@ -199,6 +205,7 @@ typedef struct {
     acbb_race_control race_control;
     acbb_loss_form loss_form;
     acbb_hyst_axis hyst_axis;
+    acbb_roll_hyst roll_hyst;    /* rolling hysteresis force: seed Eq. 18 or Johnson */
     double mech_tol;             /* relative force residual tolerance */
     double steady_tol;           /* steady state: max dT/dt, K/s */
 
@@ -224,6 +231,12 @@ typedef struct {
                                   * 0 = from inner_land_diameter */
     double life_shoulder_outer;  /* outer shoulder height, m; 0 = from outer_land_diameter */
     bool life_estimated;         /* internal geometry estimated (`acbb new`), ratings too */
+
+    /* [physics] (physics_profile.h) */
+    acbb_physics_profile profile; /* the defaults of the profile's keys */
+    unsigned profile_given;      /* bit k: the profile table's row k was given explicitly
+                                  * (in the preset or by acbb_scene_set): the profile
+                                  * does not move it */
 } acbb_scene;
 
 /* Fill `s` with the 7008C defaults of MODEL.md section 10. */

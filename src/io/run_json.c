@@ -6,6 +6,7 @@
 #include "acbb/json.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/outputs.h"
+#include "acbb/physics_profile.h"
 #include "acbb/units.h"
 #include "life_json.h"
 
@@ -159,6 +160,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
 
     section(j, s, "losses_W");
     acbb_json_str(j, "loss_set", acbb_loss_set(sc)); /* MODEL.md 16: seed | extended */
+    acbb_json_str(j, "profile", acbb_profile_name(sc->profile)); /* physics.profile */
 
     temperatures(j, s);
 

@@ -93,12 +93,30 @@ static double spin_finish(const acbb_contact_in *c, int seed, double sum)
     return fabs(c->spin) * sum;
 }
 
-/* Johnson's hysteresis force 4 eps Q a_c / (3 pi D) [J section 9] times u. */
+/* Rolling resistance by elastic hysteresis of a sphere rolling in a groove
+ * (rolling_hysteresis = johnson): K. L. Johnson, Contact Mechanics, 1985,
+ * ch. 9 (rolling resistance, elastic hysteresis): a sphere's resistance
+ * moment is (3/16) alpha W b, b the contact semi-axis in the rolling
+ * direction, so its force is F = (3/16) alpha W b / R with R the rolling
+ * radius, here R_x of the contact (MODEL.md 2); alpha is the hysteresis
+ * loss factor, the scene's eps (MODEL.md 6, UNSURE 0.005-0.01). Johnson
+ * derives it for alpha << 1 (a small loss per cycle), which bearing steel
+ * (eps ~ 0.007) is. The force times the entrainment speed u is the power. */
+static double johnson_rolling(const acbb_contact_form *f)
+{
+    const acbb_contact_in *c = f->c;
+    return 3.0 / 16.0 * f->s->hysteresis * c->Q * c->b / c->Rx * f->u;
+}
+
+/* The seed's Eq. 18 (MODEL.md 6): 4 eps Q a_c / (3 pi D) times u, a_c the
+ * ellipse's long axis (hysteresis_axis = major, the seed's) or its short
+ * one; or Johnson's sphere in the rolling direction (above). */
 static double rolling_contact(const acbb_contact_form *f)
 {
     const acbb_scene *s = f->s;
     const acbb_contact_in *c = f->c;
     double u = f->u;
+    if (s->roll_hyst == ACBB_ROLL_HYST_JOHNSON) return johnson_rolling(f);
     double ac = s->hyst_axis == ACBB_HYST_MINOR ? c->b : c->a;
     if (s->loss_form == ACBB_LOSS_SEED) {
         double arm = c->dm + (c->inner ? -2.0 : 2.0) * c->delta;

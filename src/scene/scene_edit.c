@@ -247,7 +247,8 @@ static acbb_status edit_file(const char *path, const acbb_scene *s, acbb_error *
     if (rc == ACBB_OK) {
         c->s = s;
         c->p = p;
-        acbb_scene_default(&c->defaults);
+        /* A key's default is its profile's (physics_profile.h). */
+        acbb_sf_profile_defaults(&c->defaults, s->profile);
         emit_file(c, buf, len);
         rc = acbb_out_commit(o, err);
     }

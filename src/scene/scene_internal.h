@@ -6,6 +6,7 @@
  * scene_rules.c   cross-field validation (acbb_scene_validate)
  * scene_io.c      INI parsing, load and full save
  * scene_edit.c    saving into an existing file, keeping the user's lines
+ * physics_profile.c the profiles' table (which keys physics.profile sets)
  *
  * ONE table (acbb_sf_table) describes every preset key: section, key (unit
  * in the name), type, unit, where the value lives in acbb_scene, the factor
@@ -93,6 +94,17 @@ acbb_status acbb_sf_schedule_check(const acbb_scene *s, int *row, acbb_error *er
  * cross_check: the scene's rules too. `s` unchanged on failure. */
 acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *value,
                                  int cross_check, acbb_error *err);
+
+/* physics_profile.c: the profile table's row of field f, or -1; a default
+ * scene with profile p's values in its table's keys (what "the default" of
+ * a key means under p, for saving into a user's file), physics.profile
+ * itself at its own default, seed. */
+int acbb_sf_profile_row(const acbb_sfield *f);
+const acbb_sfield *acbb_sf_profile_field(size_t k);   /* row k's field, NULL past the end */
+void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p);
+/* section.key is not a key of the profile table, or its value is not the
+ * one s->profile gives it (the user's own choice, not the profile's). */
+bool acbb_sf_profile_own(const acbb_scene *s, const char *section, const char *key);
 
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);

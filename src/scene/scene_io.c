@@ -23,6 +23,7 @@
 #include <ini.h>
 
 #include "acbb/outfile.h"
+#include "acbb/physics_profile.h"
 #include "acbb/schedule.h"
 #include "scene_internal.h"
 
@@ -216,6 +217,19 @@ static int on_key(void *user, const char *section, const char *name, const char 
     return 1;
 }
 
+/* The keys of the profile table the file gives are the user's; the others
+ * take physics.profile's values (physics_profile.h), wherever in the file
+ * the profile key stands. */
+static void given_by_profile(acbb_sf_parsed *out)
+{
+    out->scene.profile_given = 0;
+    for (size_t k = 0; k < acbb_profile_row_count(); k++) {
+        const acbb_sfield *f = acbb_sf_profile_field(k);
+        if (f && out->first_line[f - acbb_sf_table]) out->scene.profile_given |= 1u << k;
+    }
+    acbb_profile_apply(&out->scene);
+}
+
 acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_error *err)
 {
     load_ctx *c = calloc(1, sizeof *c);
@@ -236,6 +250,7 @@ acbb_status acbb_sf_parse(FILE *f, const char *path, acbb_sf_parsed *out, acbb_e
                             "%s:%d: malformed line (expected key = value or [section])", path, ret);
     else if (c->err_line)
         rc = acbb_error_set(err, c->err_code, "%s", c->err.msg);
+    if (rc == ACBB_OK) given_by_profile(out);
     free(c);
     return rc;
 }
@@ -306,7 +321,8 @@ int acbb_sf_write_preset(FILE *f, const acbb_scene *s)
     const char *section = "";
     int bad = fprintf(f, "; acbb preset (bearing scene). Units are in the key names; decimal "
                          "point '.'.\n; Every key is listed; a key left out of a preset takes "
-                         "its default (presets/7008C.ini).\n") < 0;
+                         "its default (presets/7008C.ini),\n; or physics.profile's value for "
+                         "the keys the profile sets.\n") < 0;
     for (size_t i = 0; i < acbb_sf_n && !bad; i++) {
         const acbb_field_info *in = &acbb_sf_table[i].info;
         char range[160], val[64];

@@ -565,12 +565,19 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
             "(docs/physics.md section 7); only the cage's density, specific heat and conductivity "
             "enter (the network)",
             "the cage's E, Poisson ratio or expansion (materials.cage_*)" } },
+        /* A loss on because the physics profile has it on is not the user's
+         * input: no note when it finds nothing to do (physics_profile.h). */
         { s->loss_churning && s->lub_method != ACBB_LUB_OIL_BATH
-              && s->lub_method != ACBB_LUB_OIL_JET,
+              && s->lub_method != ACBB_LUB_OIL_JET
+              && acbb_sf_profile_own(s, "effects", "loss_churning"),
           { "loss_churning", "oil-air and grease put no bulk oil in the bearing: churning needs "
             "lubricant.method = oil-bath or oil-jet (docs/physics.md section 16)",
             "effects.loss_churning = on" } },
-        { s->loss_ehl_rolling && !s->ehl_film,
+        { s->roll_hyst == ACBB_ROLL_HYST_JOHNSON && s->hyst_axis != d.hyst_axis,
+          { "hysteresis_axis", "fidelity.rolling_hysteresis = johnson uses the rolling-direction "
+            "semi-axis; the axis choice applies to rolling_hysteresis = seed",
+            "fidelity.hysteresis_axis" } },
+        { s->loss_ehl_rolling && !s->ehl_film && acbb_sf_profile_own(s, "effects", "loss_ehl_rolling"),
           { "loss_ehl_rolling", "effects.ehl_film = off: no film, no EHL rolling resistance",
             "effects.loss_ehl_rolling = on" } },
     };

@@ -26,6 +26,8 @@ _Static_assert(sizeof(acbb_visc_model) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_traction_model) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_loss_form) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_hyst_axis) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_roll_hyst) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_physics_profile) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_network_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_preload_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_set_arrangement) == sizeof(int), "enum size");
@@ -43,6 +45,8 @@ static const char *const k_hertz[] = {"exact", "bh77", "hb83", NULL};
 static const char *const k_clean_seed[] = {"clean", "seed", NULL};
 static const char *const k_race[] = {"outer", "inner", "equal", "auto", NULL};
 static const char *const k_hyst[] = {"major", "minor", NULL};
+static const char *const k_roll_hyst[] = {"seed", "johnson", NULL};
+static const char *const k_profile[] = {"seed", "reference", NULL};
 static const char *const k_visc[] = {"roelands", "barus", "const", NULL};
 static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
 static const char *const k_preload[] = {"force", "displacement", NULL};
@@ -328,7 +332,10 @@ const acbb_sfield acbb_sf_table[] = {
     ENUM("fidelity", "loss_form", loss_form, k_clean_seed, ACBB_LOSS_CLEAN,
          "loss equations: clean or the seed's literal form (docs/physics.md section 6)"),
     ENUM("fidelity", "hysteresis_axis", hyst_axis, k_hyst, ACBB_HYST_MAJOR,
-         "ellipse axis used in the rolling loss P_r"),
+         "ellipse axis used in the rolling loss P_r (rolling_hysteresis = seed)"),
+    ENUM("fidelity", "rolling_hysteresis", roll_hyst, k_roll_hyst, ACBB_ROLL_HYST_SEED,
+         "rolling hysteresis force in P_r: seed (Eq. 18, 4 eps Q a/(3 pi D)) or johnson "
+         "(sphere, 3/16 eps Q b/R_x, b along rolling; Johnson 1985 ch. 9)"),
     REAL("fidelity", "mech_tol", "", mech_tol, 1.0, 1e-8, CC, 1e-14, 1e-3,
          "relative force residual of the mechanics solve"),
     REAL("fidelity", "steady_tol_K_s", "K/s", steady_tol, 1.0, 1e-4, OC, 0, 1,
@@ -374,6 +381,12 @@ const acbb_sfield acbb_sf_table[] = {
          "outer-ring shoulder height over the groove bottom (0 = from the outer land)"),
     BOOL("life", "internals_estimated", life_estimated, 0,
          "ball set and grooves are estimates (acbb new): C and C0 are too"),
+
+    /* [physics] (physics_profile.h): the defaults of the keys it names */
+    ENUM("physics", "profile", profile, k_profile, ACBB_PROFILE_SEED,
+         "physics the loss keys default to: seed (the paper's, as printed) or reference "
+         "(best-founded: Johnson hysteresis, EHL rolling, churning, cage); a key set "
+         "explicitly wins"),
 };
 
 const size_t acbb_sf_n = sizeof acbb_sf_table / sizeof acbb_sf_table[0];

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "acbb/physics_profile.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 
@@ -201,6 +202,15 @@ acbb_status acbb_sf_apply(acbb_scene *s, const acbb_sfield *f, const char *text,
 
 /* ---- acbb_scene_set ---- */
 
+/* A key of the profile table set explicitly is the user's from now on; a
+ * new physics.profile moves the keys not given (physics_profile.h). */
+static void note_profile(acbb_scene *s, const acbb_sfield *f)
+{
+    int row = acbb_sf_profile_row(f);
+    if (row >= 0) s->profile_given |= 1u << row;
+    if (f == acbb_sf_find("physics", "profile")) acbb_profile_apply(s);
+}
+
 static acbb_status set_one_raw(acbb_scene *s, const char *dotted_key, const char *value,
                                int cross_check, acbb_error *err)
 {
@@ -221,6 +231,7 @@ static acbb_status set_one_raw(acbb_scene *s, const char *dotted_key, const char
 
     acbb_scene trial = *s;
     acbb_status rc = acbb_sf_apply(&trial, f, value, err);
+    if (rc == ACBB_OK) note_profile(&trial, f);
     if (rc == ACBB_OK && cross_check) rc = acbb_scene_validate(&trial, err);
     if (rc == ACBB_OK) *s = trial;
     return rc;
