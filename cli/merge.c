@@ -12,7 +12,13 @@
  * fingerprint, a whole index in the grid's range and the grid values of
  * that index, and only finite numbers (CSV fields checked like JSONL). A
  * FIFO input is refused: merge reads whole files, and a FIFO without a
- * writer would block forever (item 7). */
+ * writer would block forever (item 7).
+ *
+ * Issue 28 item 9: points of the grid without a record are exit 3 (the
+ * merged file written all the same), and a sweep's own output as OUT is
+ * refused (OUT forgotten: `acbb merge a.csv b.csv`). Of two records of one
+ * point, a result wins over a wall_limit / out_of_memory record (issue 26:
+ * a resumed sweep runs those again and appends the new record). */
 #include <cjson/cJSON.h>
 #include <stdlib.h>
 #include <string.h>

@@ -5,7 +5,8 @@
  *
  * - JSONL: a header line {"acbb_sweep":{format, fingerprint, mode, grid
  *   (key: [values]), scene (key: value of every key the grid does not
- *   vary)}}, then one object per line, keys in this order: index,
+ *   vary but fidelity.max_wall_s, and schedule.rows: the rows as one
+ *   text)}}, then one object per line, keys in this order: index,
  *   fingerprint, grid (key: value, a number when the value reads as one),
  *   status, message, iterations, the scalars (acbb_cli_sweep_scalars; null
  *   when the point never ran), wall_ms. Printed by cJSON (numbers
