@@ -122,14 +122,15 @@ static int parse_shard(const acbb_cli_args *a, acbb_sweep_opts *o)
 
 /* A grid value its key refuses (a typo, a value out of range) is refused
  * before anything runs (exit 2), naming it: every point with it would fail. */
-static int check_grid(const acbb_sweep *g, const acbb_scene *base)
+static int check_grid(const acbb_sweep *g, const acbb_scene *base, int first_is_param)
 {
     size_t d = 0, v = 0;
     acbb_error err = { { 0 } };
     acbb_status st = acbb_sweep_check_values(g, base, &d, &v, &err);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: sweep: --grid %s, value %zu of %zu: %s; nothing was run\n",
-            acbb_sweep_key(g, d), v + 1, acbb_sweep_n_values(g, d), acbb_cli_err_text(&err, st));
+    fprintf(stderr, "acbb: sweep: %s %s, value %zu of %zu: %s; nothing was run\n",
+            d == 0 && first_is_param ? "--param" : "--grid", acbb_sweep_key(g, d), v + 1,
+            acbb_sweep_n_values(g, d), acbb_cli_err_text(&err, st));
     return acbb_cli_exit_for(st) == ACBB_EXIT_INTERNAL ? ACBB_EXIT_INTERNAL : ACBB_EXIT_INPUT;
 }
 
@@ -287,7 +288,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     if (!rc) rc = build_grid(a, g);
     acbb_scene base;
     if (!rc) rc = acbb_cli_load_scene(a, &base);
-    if (!rc) rc = check_grid(g, &base);
+    if (!rc) rc = check_grid(g, &base, a->val[CLI_OPT_PARAM] != NULL);
     if (rc) {
         acbb_sweep_free(g);
         return rc;
