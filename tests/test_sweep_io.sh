@@ -36,8 +36,9 @@ t $? "its canonical forms"
     --jobs 1 --jsonl "$TMP/big.jsonl" >/dev/null 2>"$TMP/bigerr" &
 BG=$!
 until [ -s "$TMP/big.jsonl" ] || ! kill -0 "$BG" 2>/dev/null; do :; done
+# (--max-points 1: without the lock it would append one point and end)
 "$ACBB" sweep "$PRESET" --set fidelity.model=quasi-static --grid operating.axial_load_N=1:1000:100000 \
-    --jobs 1 --jsonl "$TMP/big.jsonl" >/dev/null 2>"$TMP/err"
+    --jobs 1 --max-points 1 --jsonl "$TMP/big.jsonl" >/dev/null 2>"$TMP/err"
 code $? 2 "a second sweep on a file another sweep writes exits 2"
 has "$TMP/err" "big.jsonl: another sweep is writing this file" "... naming the file and why"
 kill -0 "$BG" 2>/dev/null
