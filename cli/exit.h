@@ -9,9 +9,11 @@
  *   3  the solver did not reach steady state (output is still printed;
  *      the --max-wall bound, status wall_limit, included),
  *      or the command was cancelled (SIGINT / SIGTERM, progress.h): what
- *      finished is written, status `cancelled`
- *   4  internal error: non-finite output, stdout failed, out of memory,
- *      gnuplot missing or failing
+ *      finished is written, status `cancelled`; `acbb merge`: points
+ *      missing (the others are written)
+ *   4  internal error: non-finite output, stdout failed (a closed pipe
+ *      included), an output file's write failed (disk full), out of
+ *      memory, gnuplot missing or failing
  *   1  the TUI only: its terminal went away (no SIGHUP came)
  * 128+N killed by signal N: a second SIGINT/SIGTERM during a cancel, or
  *      the TUI leaving on SIGTERM, SIGHUP or SIGQUIT (edits saved first)

@@ -22,10 +22,11 @@ static const struct {
     { ACBB_EXIT_SOLVER, "solver did not reach steady state, or cancelled (SIGINT, SIGTERM)",
       "the solver did not reach steady state (output is still printed), or the command was "
       "cancelled by SIGINT (Ctrl-C) or SIGTERM: status cancelled, what finished is written, "
-      "no file claims more" },
+      "no file claims more; merge: points missing (the others are written)" },
     { ACBB_EXIT_INTERNAL, "internal error or gnuplot failure", "internal error, gnuplot "
-      "missing or failing, out of memory, or an output file whose write failed once open (the "
-      "old file is kept)" },
+      "missing or failing, out of memory, or an output whose write failed once open (disk "
+      "full, a closed pipe; the old file is kept, a sweep's file ends with its last whole "
+      "record)" },
     { KILLED, "killed by signal N", "killed by signal N: a second SIGINT or SIGTERM while a "
       "command is cancelling, or the TUI leaving on SIGTERM, SIGHUP or SIGQUIT (its edits are "
       "saved for recovery first)" },

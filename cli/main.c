@@ -59,7 +59,9 @@ const acbb_cli_command acbb_cli_commands[] = {
       "       --grid operating.inner_speed_rpm=2000:16000:8 --jsonl out.jsonl\n"
       "The cartesian product of the --grid dimensions, point index row-major (the\n"
       "first --grid slowest). --jsonl/--csv get one record per point as it finishes;\n"
-      "running the same command again resumes (points in the file are skipped).\n"
+      "running the same command again resumes (points in the file are skipped; a\n"
+      "wall_limit point runs again). One sweep per file: a second is refused (2).\n"
+      "A grid value its key refuses (a typo) is refused (2) before anything runs.\n"
       "Shards: --shard K/N on N machines, then `acbb merge`. --param/--values alone:\n"
       "one dimension, printed as a table (or --json, --csv) at the end.\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
@@ -67,7 +69,9 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
       "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
-      "byte. JSONL or CSV (not mixed); OUT - is stdout.\n",
+      "byte. JSONL or CSV (not mixed); OUT - is stdout. Exit 3 when points are\n"
+      "missing (the others are written); a sweep's own output (a shard) as OUT is\n"
+      "refused (2).\n",
       0, 2, CLI_MAX_POS, -1, acbb_cli_cmd_merge },
     { "sensitivity", NULL, "PRESET", "which uncertain input moves a result or flips its sign",
       "e.g. acbb sensitivity 7008C --metric balls[0].Qi_N --delta thermal_expansion\n"

@@ -12,7 +12,13 @@
  * fingerprint, a whole index in the grid's range and the grid values of
  * that index, and only finite numbers (CSV fields checked like JSONL). A
  * FIFO input is refused: merge reads whole files, and a FIFO without a
- * writer would block forever (item 7). */
+ * writer would block forever (item 7).
+ *
+ * Issue 28 item 9: points of the grid without a record are exit 3 (the
+ * merged file written all the same), and a sweep's own output as OUT is
+ * refused (OUT forgotten: `acbb merge a.csv b.csv`). Of two records of one
+ * point, a result wins over a wall_limit / out_of_memory record (issue 26:
+ * a resumed sweep runs those again and appends the new record). */
 #include <cjson/cJSON.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +31,7 @@
 
 typedef struct {
     size_t index, seq;
+    int retried;               /* wall_limit, out_of_memory: another record wins */
     char *text;                /* canonical record with its newline */
 } merge_rec;
 
@@ -44,7 +51,7 @@ typedef struct {
     int has_wall;              /* CSV: the input carries wall_ms last */
 } merge_in;
 
-static int add_rec(merge_set *m, size_t index, char *text)
+static int add_rec(merge_set *m, size_t index, int retried, char *text)
 {
     if (!text) return ACBB_EXIT_INTERNAL;
     if (m->n == m->cap) {
@@ -53,7 +60,7 @@ static int add_rec(merge_set *m, size_t index, char *text)
         if (!r) return free(text), ACBB_EXIT_INTERNAL;
         m->recs = r, m->cap = cap;
     }
-    m->recs[m->n] = (merge_rec){ index, m->n, text };
+    m->recs[m->n] = (merge_rec){ index, m->n, retried, text };
     m->n++;
     return 0;
 }
@@ -153,8 +160,9 @@ static int record_line(merge_set *m, merge_in *in, const char *line)
         snprintf(msg, sizeof msg, "not a record of this sweep: %s", why);
         return refuse(in, msg);
     }
-    return add_rec(m, index, m->fmt == ACBB_CLI_REC_CSV ? csv_cut(line, in->has_wall)
-                                                        : jsonl_canonical(line));
+    return add_rec(m, index, acbb_cli_sweep_record_retried(line, m->fmt, m->g),
+                   m->fmt == ACBB_CLI_REC_CSV ? csv_cut(line, in->has_wall)
+                                              : jsonl_canonical(line));
 }
 
 static FILE *open_input(const char *path)
@@ -201,6 +209,8 @@ static int by_index(const void *a, const void *b)
 {
     const merge_rec *x = a, *y = b;
     if (x->index != y->index) return x->index < y->index ? -1 : 1;
+    /* A point's result before a record its resume runs again (wall_limit). */
+    if (x->retried != y->retried) return x->retried - y->retried;
     return x->seq < y->seq ? -1 : x->seq > y->seq;
 }
 
@@ -214,6 +224,29 @@ static void write_header(FILE *f, const merge_set *m)
     fprintf(f, "%s%s\n", m->fmt == ACBB_CLI_REC_CSV ? "# " : "", text ? text : "{}");
     cJSON_free(text);
     if (m->fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, m->g, 0);
+}
+
+/* Points of the grid without a record: exit 3 (the merged file is written,
+ * as a cancelled sweep keeps what finished), so a pipeline notices (issue
+ * 28 item 9). m->recs is sorted. */
+static int missing(const merge_set *m, size_t kept)
+{
+    size_t total = acbb_sweep_n_points(m->g);
+    if (kept >= total) return 0;
+    char list[200];
+    size_t len = 0, shown = 0, r = 0;
+    list[0] = '\0';
+    for (size_t i = 0; i < total && shown < 8; i++) {
+        while (r < m->n && m->recs[r].index < i) r++;
+        if (r < m->n && m->recs[r].index == i) continue;
+        len += (size_t)snprintf(list + len, sizeof list - len, "%s%zu", shown ? ", " : "", i);
+        shown++;
+    }
+    fprintf(stderr, "acbb: merge: %zu of the %zu points are missing (index %s%s); the merged "
+            "file holds the other %zu: run the missing shards or resume their sweeps, then "
+            "merge again\n", total - kept, total, list, total - kept > shown ? ", ..." : "",
+            kept);
+    return ACBB_EXIT_SOLVER;
 }
 
 static int write_merged(const char *out, merge_set *m)
@@ -237,18 +270,53 @@ static int write_merged(const char *out, merge_set *m)
         kept++;
     }
     rc = acbb_cli_file_close(&file);
-    size_t total = acbb_sweep_n_points(m->g);
-    if (total > kept)
-        fprintf(stderr, "acbb: merge: warning: %zu of the %zu points are missing\n",
-                total - kept, total);
     if (dup) fprintf(stderr, "acbb: merge: %zu repeated records dropped\n", dup);
-    return rc;
+    return rc ? rc : missing(m, kept);
+}
+
+/* OUT is a sweep's own output, not a merge's: its column line (CSV) or
+ * its first record (JSONL) carries wall_ms, which merge drops. `acbb merge
+ * a.csv b.csv` (OUT forgotten) would replace the shard a.csv by b's
+ * points (issue 28 item 9); an earlier merge's output may be replaced. */
+static int out_is_shard(const char *path)
+{
+    struct stat st;
+    if (strcmp(path, "-") == 0 || stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
+    FILE *f = fopen(path, "r");
+    if (!f) return 0;
+    char *line = NULL;
+    size_t cap = 0;
+    int yes = 0;
+    acbb_cli_rec_format fmt = ACBB_CLI_REC_JSONL;
+    for (long n = 1; n <= 2 && getline(&line, &cap, f) > 0; n++) {
+        if (n == 1) {
+            fmt = line[0] == '#' ? ACBB_CLI_REC_CSV : ACBB_CLI_REC_JSONL;
+            cJSON *h = acbb_cli_sweep_header_parse(line, fmt);
+            cJSON_Delete(h);
+            if (!h) break;
+        } else if (fmt == ACBB_CLI_REC_CSV) {
+            size_t len = strlen(line);
+            yes = len >= 8 && strncmp(line + len - 8, ",wall_ms", 8) == 0;
+            yes = yes || (len >= 9 && strcmp(line + len - 9, ",wall_ms\n") == 0);
+        } else {
+            cJSON *o = cJSON_Parse(line);
+            yes = cJSON_GetObjectItemCaseSensitive(o, "wall_ms") != NULL;
+            cJSON_Delete(o);
+        }
+    }
+    free(line);
+    fclose(f);
+    if (yes)
+        fprintf(stderr, "acbb: merge: %s is a sweep's own output (a shard: its records carry "
+                "wall_ms), not an earlier merge's; merge writes OUT anew and would lose it. "
+                "Usage: acbb merge OUT IN... (OUT first, a new file)\n", path);
+    return yes;
 }
 
 int acbb_cli_cmd_merge(const acbb_cli_args *a)
 {
     merge_set m = { .fmt = ACBB_CLI_REC_JSONL };
-    int rc = 0;
+    int rc = out_is_shard(a->pos[0]) ? ACBB_EXIT_INPUT : 0;
     for (int i = 1; !rc && i < a->n_pos; i++) rc = read_input(&m, a->pos[i]);
     if (!rc) rc = write_merged(a->pos[0], &m);
     for (size_t i = 0; i < m.n; i++) free(m.recs[i].text);

@@ -50,7 +50,15 @@ void acbb_cli_interrupt_end(void)
     sigaction(SIGTERM, &old_term, NULL);
 }
 
-bool acbb_cli_interrupted(void) { return atomic_load(&interrupt_flag) != 0; }
+/* A command's own stop is -1: the engine stops as on a signal, but no
+ * "cancelled by" message is printed (no signal came). */
+void acbb_cli_interrupt_stop(void)
+{
+    int none = 0;
+    atomic_compare_exchange_strong(&interrupt_flag, &none, -1);
+}
+
+bool acbb_cli_interrupted(void) { return atomic_load(&interrupt_flag) > 0; }
 
 const char *acbb_cli_interrupt_name(void)
 {

@@ -28,6 +28,11 @@ const atomic_int *acbb_cli_interrupt_begin(void);
 void acbb_cli_interrupt_end(void);
 /* The flag itself (set or not), for a caller that did not begin. */
 const atomic_int *acbb_cli_interrupt_flag(void);
+/* Stop the engine through the same flag for the command's own reason (an
+ * output it can no longer write): acbb_cli_interrupted() stays false and
+ * acbb_cli_cancelled() silent; the command says why itself. */
+void acbb_cli_interrupt_stop(void);
+/* A signal set the flag. */
 bool acbb_cli_interrupted(void);
 /* "SIGINT" or "SIGTERM": the signal that set the flag. */
 const char *acbb_cli_interrupt_name(void);

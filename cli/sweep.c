@@ -3,6 +3,7 @@
  * for the 1-D `--param K --values V` form alone, the table / JSON / CSV of
  * output.h once every point is in. */
 #include <errno.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -16,20 +17,13 @@
 #include "sweep.h"
 
 typedef struct {
-    FILE *f;
-    const char *path;
-    acbb_cli_rec_format fmt;
-    int own;                   /* fclose it */
-    int failed;                /* a write failed (disk full) */
-} sweep_sink;
-
-typedef struct {
     const acbb_sweep *grid;
     acbb_cli_sweep_id id;      /* the header and the records' fingerprint */
-    sweep_sink sink[2];
+    acbb_cli_sink sink[2];
     size_t n_sinks;
     size_t total, done, failed;
     long nonfinite;
+    int oom;                   /* a record could not be built */
     int progress;              /* stderr is a terminal */
     double t0, last_shown;
     acbb_cli_point *pts;       /* the 1-D form: results kept for the table */
@@ -53,10 +47,15 @@ static void on_point(void *ctx, const acbb_sweep_result *r)
     sweep_run *s = ctx;
     s->done++;
     s->failed += !(r->have_snap && r->snap.state == ACBB_RUN_CONVERGED);
+    /* Each record whole, in one write (issue 26 item 4: a failed write
+     * leaves the file at its last whole record, sweep_sink.c). */
     for (size_t k = 0; k < s->n_sinks; k++) {
-        sweep_sink *o = &s->sink[k];
-        s->nonfinite += acbb_cli_sweep_record(o->f, o->fmt, &s->id, r);
-        if (fflush(o->f) != 0 || ferror(o->f)) o->failed = 1;
+        acbb_cli_sink *o = &s->sink[k];
+        size_t len = 0;
+        char *text = acbb_cli_sweep_record_text(o->fmt, &s->id, r, &len, &s->nonfinite);
+        if (!text) s->oom = 1, acbb_cli_interrupt_stop();
+        else if (acbb_cli_sink_put(o, text, len) == 0) o->written++;
+        free(text);
     }
     if (s->pts) {
         acbb_cli_point *p = &s->pts[r->index];
@@ -119,6 +118,20 @@ static int parse_shard(const acbb_cli_args *a, acbb_sweep_opts *o)
     o->shard_k = k;
     o->shard_n = n;
     return 0;
+}
+
+/* A grid value its key refuses (a typo, a value out of range) is refused
+ * before anything runs (exit 2), naming it: every point with it would fail. */
+static int check_grid(const acbb_sweep *g, const acbb_scene *base, int first_is_param)
+{
+    size_t d = 0, v = 0;
+    acbb_error err = { { 0 } };
+    acbb_status st = acbb_sweep_check_values(g, base, &d, &v, &err);
+    if (st == ACBB_OK) return 0;
+    fprintf(stderr, "acbb: sweep: %s %s, value %zu of %zu: %s; nothing was run\n",
+            d == 0 && first_is_param ? "--param" : "--grid", acbb_sweep_key(g, d), v + 1,
+            acbb_sweep_n_values(g, d), acbb_cli_err_text(&err, st));
+    return acbb_cli_exit_for(st) == ACBB_EXIT_INTERNAL ? ACBB_EXIT_INTERNAL : ACBB_EXIT_INPUT;
 }
 
 /* The 1-D form refuses a bad value before running anything (exit 2). */
@@ -187,69 +200,42 @@ static int sweep_table(const acbb_cli_args *a, sweep_run *s, const acbb_scene *b
     return rc;
 }
 
-/* A FIFO or device: written from the header on, nothing to resume (reading
- * it back would block), and no waiting for a reader that may never come. */
-static int open_special(sweep_run *s, sweep_sink *o, const char *path, acbb_cli_rec_format fmt)
-{
-    int fd = acbb_out_open_special(path);
-    if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
-        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path,
-                errno == ENXIO ? "a FIFO with no reader (start the reader first)" : strerror(errno));
-        if (fd >= 0) close(fd);
-        return ACBB_EXIT_INPUT;
-    }
-    o->own = 1;
-    s->n_sinks++;
-    acbb_cli_sweep_header(o->f, fmt, &s->id, 1);
-    return 0;
-}
-
 /* Open --jsonl / --csv for streaming; an existing file is resumed. */
 static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
                      unsigned char *count)
 {
-    sweep_sink *o = &s->sink[s->n_sinks];
-    o->path = path;
-    o->fmt = fmt;
-    if (strcmp(path, "-") == 0) {
-        o->f = stdout;
-        acbb_cli_sweep_header(stdout, fmt, &s->id, 1);
-        s->n_sinks++; /* nothing to resume */
-        return 0;
-    }
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) return open_special(s, o, path, fmt);
-    o->f = fopen(path, "a+");
-    if (!o->f) {
-        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path, strerror(errno));
-        return ACBB_EXIT_INPUT;
-    }
-    o->own = 1;
-    s->n_sinks++;
+    acbb_cli_sink *o = &s->sink[s->n_sinks];
     size_t found = 0;
-    int rc = acbb_cli_sweep_resume(o->f, path, fmt, &s->id, count, &found);
+    int rc = acbb_cli_sink_open(o, path, fmt, &s->id, count, &found);
+    if (o->fd >= 0) s->n_sinks++; /* closed (and its lock dropped) at the end */
     if (!rc && found && s->progress)
         fprintf(stderr, "sweep: %s: resuming, %zu point%s already there\n", path, found,
                 found == 1 ? "" : "s");
     return rc;
 }
 
-/* A write that fails once the file is open (disk full) is exit 4, naming
- * the file (README "Exit codes"; issue 20 item 9). */
 static int close_sinks(sweep_run *s)
 {
-    int rc = 0;
-    for (size_t k = 0; k < s->n_sinks; k++) {
-        sweep_sink *o = &s->sink[k];
-        int bad = o->failed || (o->own ? fclose(o->f) != 0 : fflush(o->f) != 0);
-        if (bad) {
-            fprintf(stderr, "acbb: sweep: cannot write %s: %s; the records before the failure "
-                    "are kept\n", strcmp(o->path, "-") ? o->path : "standard output",
-                    errno ? strerror(errno) : "write error");
-            rc = ACBB_EXIT_INTERNAL;
-        }
-    }
+    int rc = s->oom ? ACBB_EXIT_INTERNAL : 0;
+    if (s->oom) fprintf(stderr, "acbb: sweep: out of memory building a record\n");
+    for (size_t k = 0; k < s->n_sinks; k++) rc = acbb_cli_worst(rc, acbb_cli_sink_close(&s->sink[k]));
     return rc;
+}
+
+/* A closed pipe or a file over `ulimit -f` is a write error (exit 4, the
+ * message names the output), not a silent death by SIGPIPE or SIGXFSZ
+ * (issue 26 item 11). */
+static void quiet_signals(int on, struct sigaction *old)
+{
+    struct sigaction ign = { .sa_handler = SIG_IGN };
+    sigemptyset(&ign.sa_mask);
+    if (on) {
+        sigaction(SIGPIPE, &ign, &old[0]);
+        sigaction(SIGXFSZ, &ign, &old[1]);
+    } else {
+        sigaction(SIGPIPE, &old[0], NULL);
+        sigaction(SIGXFSZ, &old[1], NULL);
+    }
 }
 
 /* Streaming: the points of the shard not yet in every output file. */
@@ -258,6 +244,8 @@ static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *
 {
     unsigned char *count = calloc(s->total ? s->total : 1, 1);
     if (!count) return ACBB_EXIT_INTERNAL;
+    struct sigaction old[2];
+    quiet_signals(1, old);
     int rc = 0;
     if (a->val[CLI_OPT_JSONL]) rc = open_sink(s, a->val[CLI_OPT_JSONL], ACBB_CLI_REC_JSONL, count);
     if (!rc && a->val[CLI_OPT_CSV]) rc = open_sink(s, a->val[CLI_OPT_CSV], ACBB_CLI_REC_CSV, count);
@@ -275,6 +263,7 @@ static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *
         if (st != ACBB_OK && st != ACBB_CANCELLED) rc = acbb_cli_exit_for(st);
     }
     rc = acbb_cli_worst(rc, close_sinks(s));
+    quiet_signals(0, old);
     if (s->nonfinite) rc = acbb_cli_worst(rc, acbb_cli_stdout_check(s->nonfinite));
     if (s->failed) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
     char kept[160];
@@ -299,6 +288,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     if (!rc) rc = build_grid(a, g);
     acbb_scene base;
     if (!rc) rc = acbb_cli_load_scene(a, &base);
+    if (!rc) rc = check_grid(g, &base, a->val[CLI_OPT_PARAM] != NULL);
     if (rc) {
         acbb_sweep_free(g);
         return rc;

@@ -5,7 +5,8 @@
  *
  * - JSONL: a header line {"acbb_sweep":{format, fingerprint, mode, grid
  *   (key: [values]), scene (key: value of every key the grid does not
- *   vary)}}, then one object per line, keys in this order: index,
+ *   vary but fidelity.max_wall_s, and schedule.rows: the rows as one
+ *   text)}}, then one object per line, keys in this order: index,
  *   fingerprint, grid (key: value, a number when the value reads as one),
  *   status, message, iterations, the scalars (acbb_cli_sweep_scalars; null
  *   when the point never ran), wall_ms. Printed by cJSON (numbers
@@ -61,13 +62,58 @@ void acbb_cli_sweep_header(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_swee
                            int with_wall);
 void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall);
 
+/* The same, as text in memory (malloc'd, *len bytes; NULL: out of memory):
+ * a record is handed to write(2) whole (sweep_sink.c). */
+char *acbb_cli_sweep_record_text(acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
+                                 const acbb_sweep_result *r, size_t *len, long *nonfinite);
+char *acbb_cli_sweep_header_text(acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
+                                 int with_wall, size_t *len);
+
 /* Resume: read the header and records already in f (opened "a+"), mark
- * count[index]++ for each point found, cut a trailing partial record, and
- * write the header into an empty file. 0, or 2 with a message when the
- * file holds something else than records of this sweep (the message names
- * the keys that differ). *n_found: records read. */
+ * count[index]++ for each point found that is a result to keep (a
+ * wall_limit or out_of_memory record is not: acbb_cli_sweep_status_retried,
+ * the point runs again), and cut what a writer did not finish: a partial
+ * last record, or a header that stops short (a prefix of this sweep's
+ * header, CSV column line included: no records yet, the file is emptied
+ * and *have_header = 0, the caller writes the header). 0, or 2 with a
+ * message when the file holds something else than records of this sweep
+ * (the message names the keys that differ). *n_found: records read. */
 int acbb_cli_sweep_resume(FILE *f, const char *path, acbb_cli_rec_format fmt,
-                          const acbb_cli_sweep_id *id, unsigned char *count, size_t *n_found);
+                          const acbb_cli_sweep_id *id, unsigned char *count, size_t *n_found,
+                          int *have_header);
+
+/* A record whose status depends on the machine and not on the point alone
+ * (wall_limit: the --max-wall bound, not in the fingerprint; out_of_memory)
+ * is run again on resume, and `acbb merge` keeps another record of its
+ * point over it. Every other status (converged, not_converged, runaway,
+ * diverged, bad_input, ...) is the point's result and stays. 1 when the
+ * record's status is such (line already checked by check_record). */
+int acbb_cli_sweep_record_retried(const char *line, acbb_cli_rec_format fmt,
+                                  const acbb_sweep *g);
+
+/* ---- sweep_sink.c: a streaming sweep's output files (issue 26) ---- */
+typedef struct {
+    FILE *f;                   /* a regular file, as read for resume (owned) */
+    int fd;                    /* written by write(2), whole records */
+    const char *path;          /* "-": standard output */
+    acbb_cli_rec_format fmt;
+    int own, regular;
+    long long good_end;        /* bytes up to the last whole record */
+    int failed, err, cut_failed; /* a write failed (errno err) */
+    size_t written;            /* records written this run */
+} acbb_cli_sink;
+/* Open path ("-", a regular file, a FIFO or device), lock a regular file
+ * (a second sweep on it: exit 2), resume it (count, found as
+ * acbb_cli_sweep_resume) and write the header where there is none. 0 or
+ * the exit status, the message printed. */
+int acbb_cli_sink_open(acbb_cli_sink *o, const char *path, acbb_cli_rec_format fmt,
+                       const acbb_cli_sweep_id *id, unsigned char *count, size_t *found);
+/* Write len bytes whole; on a failed or short write cut a regular file
+ * back to its last whole record, stop taking records and stop the sweep
+ * (acbb_cli_interrupt_stop). 0 or -1. */
+int acbb_cli_sink_put(acbb_cli_sink *o, const char *buf, size_t len);
+/* Close (the lock goes with it); a failed sink: the message, exit 4. */
+int acbb_cli_sink_close(acbb_cli_sink *o);
 
 /* ---- sweep_id.c: headers and record checks (merge, resume) ---- */
 typedef struct cJSON cJSON;

@@ -42,6 +42,9 @@ static cJSON *header_json(const acbb_cli_sweep_id *id)
         acbb_scene_field_format(id->base, i, val, sizeof val);
         cJSON_AddStringToObject(sc, key, val);
     }
+    char rows[ACBB_SWEEP_SCHEDULE_TEXT];
+    acbb_sweep_schedule_text(id->base, rows, sizeof rows);
+    cJSON_AddStringToObject(sc, ACBB_SWEEP_SCHEDULE_KEY, rows);
     cJSON_AddItemToObject(h, "grid", grid);
     cJSON_AddItemToObject(h, "scene", sc);
     cJSON *top = cJSON_CreateObject();
@@ -59,6 +62,20 @@ void acbb_cli_sweep_header(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_swee
     fprintf(f, "%s%s\n", fmt == ACBB_CLI_REC_CSV ? "# " : "", text ? text : "{}");
     cJSON_free(text);
     if (fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, id->g, with_wall);
+}
+
+char *acbb_cli_sweep_header_text(acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
+                                 int with_wall, size_t *len)
+{
+    char *text = NULL;
+    FILE *m = open_memstream(&text, len);
+    if (!m) return NULL;
+    acbb_cli_sweep_header(m, fmt, id, with_wall);
+    if (fclose(m) != 0) {
+        free(text);
+        return NULL;
+    }
+    return text;
 }
 
 cJSON *acbb_cli_sweep_header_parse(const char *line, acbb_cli_rec_format fmt)
@@ -274,6 +291,31 @@ static int check_csv(const char *line, const acbb_sweep *g, const char *fp, int 
     }
     *why = "wrong number of fields";
     return col == n_cols && (line[at] == '\n' || line[at] == '\0') ? 0 : -1;
+}
+
+/* The statuses of acbb_cli_sweep_record_retried. */
+static int retried_status(const char *s, size_t len)
+{
+    static const char *const k[] = { "wall_limit", "out_of_memory" };
+    for (size_t i = 0; i < sizeof k / sizeof k[0]; i++)
+        if (len == strlen(k[i]) && strncmp(s, k[i], len) == 0) return 1;
+    return 0;
+}
+
+int acbb_cli_sweep_record_retried(const char *line, acbb_cli_rec_format fmt,
+                                  const acbb_sweep *g)
+{
+    if (fmt == ACBB_CLI_REC_JSONL) {
+        cJSON *o = cJSON_Parse(line);
+        const cJSON *st = cJSON_GetObjectItemCaseSensitive(o, "status");
+        int yes = cJSON_IsString(st) && retried_status(st->valuestring, strlen(st->valuestring));
+        cJSON_Delete(o);
+        return yes;
+    }
+    size_t at = 0, start = 0, len = 0, status_col = 2 + acbb_sweep_n_dims(g);
+    for (size_t col = 0; csv_field(line, &at, &start, &len); col++)
+        if (col == status_col) return retried_status(line + start, len);
+    return 0;
 }
 
 int acbb_cli_sweep_check_record(const char *line, acbb_cli_rec_format fmt, const acbb_sweep *g,

@@ -199,6 +199,20 @@ long acbb_cli_sweep_record(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_swee
     return fmt == ACBB_CLI_REC_JSONL ? record_jsonl(f, id, r) : record_csv(f, id, r);
 }
 
+char *acbb_cli_sweep_record_text(acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
+                                 const acbb_sweep_result *r, size_t *len, long *nonfinite)
+{
+    char *text = NULL;
+    FILE *m = open_memstream(&text, len);
+    if (!m) return NULL;
+    *nonfinite += acbb_cli_sweep_record(m, fmt, id, r);
+    if (fclose(m) != 0) {
+        free(text);
+        return NULL;
+    }
+    return text;
+}
+
 void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall)
 {
     char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
@@ -211,7 +225,7 @@ void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall)
     fprintf(f, ",message%s\n", with_wall ? ",wall_ms" : "");
 }
 
-/* Cut a record the writer did not finish (killed mid-line). */
+/* Cut what the writer did not finish (killed mid-line, a failed write). */
 static int cut_partial(FILE *f, const char *path, long good_end)
 {
     struct stat st;
@@ -223,8 +237,22 @@ static int cut_partial(FILE *f, const char *path, long good_end)
     return 0;
 }
 
-/* The first line(s) of an existing output: this sweep's header, else a
- * message naming what differs. Returns the lines it took, or -1. */
+/* Line `line` (no newline: the writer stopped in it) is the start of this
+ * sweep's header text at byte `at`: the header was cut short, nothing
+ * else is in the file. */
+static int header_prefix(const acbb_cli_sweep_id *id, acbb_cli_rec_format fmt, size_t at,
+                         const char *line)
+{
+    size_t len = 0, n = strlen(line);
+    char *mine = acbb_cli_sweep_header_text(fmt, id, 1, &len);
+    int yes = mine && at + n <= len && memcmp(mine + at, line, n) == 0;
+    free(mine);
+    return yes;
+}
+
+/* The first line(s) of an existing output: 0 this sweep's header; 1 this
+ * sweep's header cut short (the CSV column line unfinished); -1 another
+ * sweep's, with a message naming what differs. */
 static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
                          const acbb_cli_sweep_id *id, const char *line, long *lineno)
 {
@@ -249,7 +277,10 @@ static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
     FILE *h = open_memstream(&mine, &mcap);
     if (h) acbb_cli_sweep_csv_header(h, id->g, 1), fclose(h);
     ++*lineno;
-    if (getline(&cols, &cap, f) <= 0 || !mine || strcmp(cols, mine) != 0) {
+    ssize_t n = getline(&cols, &cap, f);
+    if (mine && (n <= 0 || (cols[n - 1] != '\n' && strncmp(cols, mine, (size_t)n) == 0)))
+        rc = 1; /* killed before the column line was whole */
+    else if (!mine || strcmp(cols, mine) != 0) {
         fprintf(stderr, "acbb: sweep: %s:%ld: not this sweep's column header; not resuming "
                 "(write to another file)\n", path, *lineno);
         rc = -1;
@@ -259,8 +290,25 @@ static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
     return rc;
 }
 
+/* One record line: counted when its result is kept. */
+static int resume_record(const char *line, const char *path, long lineno,
+                         acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
+                         unsigned char *count)
+{
+    size_t index = 0;
+    const char *why = "";
+    if (acbb_cli_sweep_check_record(line, fmt, id->g, id->fp, 1, &index, &why) != 0) {
+        fprintf(stderr, "acbb: sweep: %s:%ld: not a record of this sweep (%s); not "
+                "resuming (write to another file)\n", path, lineno, why);
+        return ACBB_EXIT_INPUT;
+    }
+    if (!acbb_cli_sweep_record_retried(line, fmt, id->g) && count[index] < 255) count[index]++;
+    return 0;
+}
+
 int acbb_cli_sweep_resume(FILE *f, const char *path, acbb_cli_rec_format fmt,
-                          const acbb_cli_sweep_id *id, unsigned char *count, size_t *n_found)
+                          const acbb_cli_sweep_id *id, unsigned char *count, size_t *n_found,
+                          int *have_header)
 {
     char *line = NULL;
     size_t cap = 0;
@@ -268,28 +316,31 @@ int acbb_cli_sweep_resume(FILE *f, const char *path, acbb_cli_rec_format fmt,
     long good_end = 0, lineno = 0;
     int rc = 0;
     *n_found = 0;
+    *have_header = 0;
     rewind(f);
     while (!rc && (len = getline(&line, &cap, f)) > 0) {
         lineno++;
-        if (line[len - 1] != '\n') break; /* unfinished: cut below */
-        size_t index = 0;
-        const char *why = "";
-        if (lineno == 1) {
-            rc = resume_header(f, path, fmt, id, line, &lineno) ? ACBB_EXIT_INPUT : 0;
-            good_end = ftell(f) - len; /* the header's line(s) */
-        } else if (acbb_cli_sweep_check_record(line, fmt, id->g, id->fp, 1, &index, &why) == 0) {
-            if (count[index] < 255) count[index]++;
-            ++*n_found;
-        } else {
-            fprintf(stderr, "acbb: sweep: %s:%ld: not a record of this sweep (%s); not "
-                    "resuming (write to another file)\n", path, lineno, why);
-            rc = ACBB_EXIT_INPUT;
+        if (line[len - 1] != '\n') { /* unfinished: cut below */
+            if (lineno == 1 && !header_prefix(id, fmt, 0, line)) {
+                fprintf(stderr, "acbb: sweep: %s:1: neither a sweep header nor the start of "
+                        "this sweep's; not resuming (write to another file)\n", path);
+                rc = ACBB_EXIT_INPUT;
+            }
+            break;
         }
-        good_end += len;
+        if (lineno == 1) {
+            int h = resume_header(f, path, fmt, id, line, &lineno);
+            if (h < 0) rc = ACBB_EXIT_INPUT;
+            if (h) break; /* h == 1: a header cut short, no records: written again */
+            good_end = ftell(f);
+            *have_header = 1;
+            continue;
+        }
+        rc = resume_record(line, path, lineno, fmt, id, count);
+        if (!rc) ++*n_found, good_end += len;
     }
     free(line);
     if (!rc) rc = cut_partial(f, path, good_end);
     fseek(f, 0, SEEK_END); /* from reading to (appending) writing */
-    if (!rc && good_end == 0) acbb_cli_sweep_header(f, fmt, id, 1);
     return rc;
 }

@@ -2,9 +2,10 @@
  * harnesses (tests/fuzz/fuzz_entry.h), with the plain compiler: in the
  * default suite, so a fixed crash stays fixed without clang.
  *
- * Usage: test_fuzz_replay --preset DIR... --set DIR...
+ * Usage: test_fuzz_replay --preset DIR... --set DIR... --merge DIR... --resume DIR...
  * Every file of a --preset directory is loaded as a preset, of a --set
- * directory read as `--set` edits; every entry of a directory is replayed
+ * directory read as `--set` edits, of --merge merged, of --resume resumed
+ * as a sweep's output (fuzz_cli.h); every entry of a directory is replayed
  * (counted against the directory listing, at least one). The entry points
  * check that a refusal has a message and an accepted scene no NaN/Inf (a
  * failure there is "broken"). Here, for every file: ok-* must be accepted,
@@ -13,12 +14,13 @@
  * starts with the path loaded), an edit's the key (the name after the
  * last dot of one of the input's keys, as a cross-field rule names the
  * other key of the pair by its full name; of a longer name its first 64
- * characters). */
+ * characters). The CLI's readers (merge, resume) print their refusals on
+ * stderr, which the entry points silence: their refusal is not matched. */
 #include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
 #include "tap.h"
-#include "fuzz/fuzz_entry.h"
+#include "fuzz/fuzz_cli.h"
 
 typedef acbb_fuzz_outcome (*entry_fn)(const uint8_t *, size_t, char *, size_t);
 
@@ -48,7 +50,7 @@ static int by_name(const struct dirent **a, const struct dirent **b)
 
 typedef struct {
     entry_fn fn;
-    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key) */
+    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key), -1: a CLI reader */
 } entry;
 
 /* Does a refusal of `data` as edits name one of its keys (by the name
@@ -78,6 +80,7 @@ static int names_a_key(const unsigned char *data, size_t n, const char *msg)
 
 static int names_input(const entry *e, const unsigned char *data, size_t n, const char *msg)
 {
+    if (e->preset < 0) return 1;
     if (e->preset) {
         const char *path = acbb_fuzz_preset_path();
         return path[0] && strncmp(msg, path, strlen(path)) == 0;
@@ -106,7 +109,8 @@ static void replay_one(const char *dir, const char *name, const entry *e)
         ok(!want_bad, "%s: accepted, every value finite%s", path, want_bad ? " (want refused)" : "");
     } else {
         ok(!want_ok && named, "%s: refused%s, the message names the %s: %s", path,
-           want_ok ? " (want accepted)" : "", e->preset ? "file" : "key", why);
+           want_ok ? " (want accepted)" : "", e->preset > 0 ? "file" : e->preset ? "input" : "key",
+           why);
     }
 }
 
@@ -132,11 +136,14 @@ static void replay_dir(const char *dir, const entry *e)
 int main(int argc, char **argv)
 {
     const entry as_preset = { acbb_fuzz_preset, 1 }, as_set = { acbb_fuzz_set, 0 };
+    const entry as_merge = { acbb_fuzz_merge, -1 }, as_resume = { acbb_fuzz_resume, -1 };
     const entry *e = &as_preset;
     int dirs = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--preset")) e = &as_preset;
         else if (!strcmp(argv[i], "--set")) e = &as_set;
+        else if (!strcmp(argv[i], "--merge")) e = &as_merge;
+        else if (!strcmp(argv[i], "--resume")) e = &as_resume;
         else replay_dir(argv[i], e), dirs++;
     }
     ok(dirs > 0, "%d corpus directories replayed", dirs);

@@ -17,10 +17,10 @@ G="--set fidelity.model=quasi-static --grid operating.axial_load_N=100,200 --gri
 sweep() { "$ACBB" sweep "$PRESET" $G "$@" >/dev/null 2>>"$TMP/log"; }
 sweep --jsonl "$TMP/a.jsonl" --csv "$TMP/a.csv" --jobs 1
 sweep --jsonl "$TMP/s1.jsonl" --csv "$TMP/s1.csv" --shard 1/2
-head -1 "$TMP/a.jsonl" | jq -e '.acbb_sweep.format == 3 and (.acbb_sweep.fingerprint | length == 16)
+head -1 "$TMP/a.jsonl" | jq -e '.acbb_sweep.format == 4 and (.acbb_sweep.fingerprint | length == 16)
     and .acbb_sweep.scene["operating.radial_load_N"] == "0"
     and (.acbb_sweep.scene | has("operating.axial_load_N") | not)' >/dev/null 2>&1
-t $? "the header: format 3, a 16-digit fingerprint, every scene key the grid does not vary"
+t $? "the header: format 4, a 16-digit fingerprint, every scene key the grid does not vary"
 fp=$(head -1 "$TMP/a.jsonl" | jq -r .acbb_sweep.fingerprint)
 jq -s -e --arg fp "$fp" '.[1:] | length == 4 and all(.[]; .fingerprint == $fp)' "$TMP/a.jsonl" >/dev/null 2>&1 &&
     [ "$(awk -F, -v fp="$fp" 'NR > 2 && $2 != fp { bad = 1 } END { print bad + 0 }' "$TMP/a.csv")" = 0 ]
@@ -45,7 +45,7 @@ has "$TMP/err" 'grid operating.axial_load_N (["100","200"] vs ["100","300"])' ".
 "$ACBB" merge "$TMP/o" "$TMP/s1.jsonl" "$TMP/t.jsonl" 2>"$TMP/err"
 code $? 2 "merge refuses a --transient shard with a steady one"
 has "$TMP/err" 'mode ("steady" vs "transient")' "... naming the mode"
-sed '1s/"format":3/"format":2/' "$TMP/a.jsonl" >"$TMP/v.jsonl"
+sed '1s/"format":4/"format":3/' "$TMP/a.jsonl" >"$TMP/v.jsonl"
 "$ACBB" merge "$TMP/o" "$TMP/s1.jsonl" "$TMP/v.jsonl" 2>"$TMP/err"
 code $? 2 "merge refuses another record format"
 tail -n +2 "$TMP/a.jsonl" >"$TMP/nohead.jsonl"
@@ -104,8 +104,8 @@ t $? "the same sweep resumes and merges equal to the one-machine run"
 sweep --jsonl "$TMP/e.jsonl" --max-points 0 --shard 1/1 2>/dev/null || head -1 "$TMP/a.jsonl" >"$TMP/e.jsonl"
 head -1 "$TMP/a.jsonl" >"$TMP/e.jsonl"
 "$ACBB" merge "$TMP/o.jsonl" "$TMP/e.jsonl" 2>"$TMP/err"
-code $? 0 "a merge of a header and no records exits 0"
-[ "$(wc -l <"$TMP/o.jsonl")" -eq 1 ] && has "$TMP/err" "4 of the 4 points are missing" "... warning that every point is missing"
+code $? 3 "a merge of a header and no records exits 3 (points missing; issue 28 item 9)"
+[ "$(wc -l <"$TMP/o.jsonl")" -eq 1 ] && has "$TMP/err" "4 of the 4 points are missing" "... saying every point is missing"
 : >"$TMP/empty.jsonl"
 "$ACBB" merge "$TMP/o2.jsonl" "$TMP/empty.jsonl" 2>"$TMP/err"
 code $? 2 "a merge of only empty files exits 2 (nothing to merge)"

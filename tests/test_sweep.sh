@@ -24,7 +24,7 @@ sweep() { "$ACBB" sweep "$PRESET" $GRID "$@" 2>>"$TMP/err"; }
 # ---- one machine ----
 sweep --jsonl "$TMP/one.jsonl" --csv "$TMP/one.csv" --jobs 2
 code $? 0 "2x2x2 sweep exits 0"
-[ "$(wc -l <"$TMP/one.jsonl")" -eq 9 ] && head -1 "$TMP/one.jsonl" | jq -e '.acbb_sweep.format == 3' >/dev/null 2>&1
+[ "$(wc -l <"$TMP/one.jsonl")" -eq 9 ] && head -1 "$TMP/one.jsonl" | jq -e '.acbb_sweep.format == 4' >/dev/null 2>&1
 t $? "a header line, then one JSON line per point"
 jq -s -e '.[1:] | map(.index) | sort == [0,1,2,3,4,5,6,7]' "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "every index 0..7 once"
@@ -148,17 +148,19 @@ code $? 2 "resuming into a file of another grid exits 2"
 has "$TMP/err" "written by another sweep" "the message says why"
 
 # ---- a failed point is recorded; the sweep goes on ----
-"$ACBB" sweep "$PRESET" --set fidelity.model=quasi-static \
-    --grid operating.axial_load_N=300,-5,600 --grid thermal.max_steps=3,20000 \
+# (axial 0 N under a 500 N radial load is ill-posed for one angular-contact
+# bearing: a cross-field rule, so that point's failure, not the grid's)
+"$ACBB" sweep "$PRESET" --set fidelity.model=quasi-static --set operating.radial_load_N=500 \
+    --grid operating.axial_load_N=300,0,600 --grid thermal.max_steps=3,20000 \
     --jsonl "$TMP/fail.jsonl" >"$TMP/out" 2>"$TMP/err"
 code $? 3 "a sweep with failed points exits 3"
 jq -s -e '.[1:] | length == 6 and (map(.index) | sort == [0,1,2,3,4,5])' "$TMP/fail.jsonl" >/dev/null 2>&1
 t $? "every point recorded, failed ones too"
-jq -s -e 'map(select(.grid["operating.axial_load_N"] == -5)) | length == 2 and
-    all(.[]; .status == "bad_input" and (.message | test("must be >= 0 N")) and ."losses_W.total" == null)' \
+jq -s -e 'map(select(.grid["operating.axial_load_N"] == 0)) | length == 2 and
+    all(.[]; .status == "ill_posed" and (.message | test("needs axial_load_N >=")) and ."losses_W.total" == null)' \
     "$TMP/fail.jsonl" >/dev/null 2>&1
-t $? "the invalid value: status bad_input, the range in the message, results null"
-jq -s -e 'map(select(.grid["operating.axial_load_N"] != -5)) |
+t $? "the ill-posed combination: status ill_posed, the rule in the message, results null"
+jq -s -e 'map(select(.grid["operating.axial_load_N"] != 0)) |
     (map(select(.grid["thermal.max_steps"] == 3)) | all(.[]; .status == "not_converged" and .iterations == 3))
     and (map(select(.grid["thermal.max_steps"] == 20000)) | all(.[]; .status == "converged"))' \
     "$TMP/fail.jsonl" >/dev/null 2>&1
@@ -199,6 +201,19 @@ tail -1 "$TMP/one1.jsonl" | jq -e '[keys[] | select(startswith("set."))] | lengt
 t $? "a single bearing's records: no set keys (JSONL), empty set columns (CSV)"
 
 # ---- bad grids are refused before anything runs ----
+# A value its key refuses fails at every point that has it: a typo, exit 2
+# before anything runs, naming the value (issue 26 item 11; it was exit 3).
+"$ACBB" sweep "$PRESET" --grid operating.axial_load_N=300,-5 --grid effects.thermal_expansion=on,of \
+    --jsonl "$TMP/typo.jsonl" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "a grid value out of its key's range exits 2"
+has "$TMP/err" "--grid operating.axial_load_N, value 2 of 2: operating.axial_load_N = -5: must be >= 0 N" \
+    "... naming the key, the value and the range"
+"$ACBB" sweep "$PRESET" --grid operating.axial_load_N=300 --grid effects.thermal_expansion=on,of \
+    --jsonl "$TMP/typo.jsonl" >"$TMP/out" 2>"$TMP/err"
+code $? 2 "a typo in a grid value (of for off) exits 2"
+has "$TMP/err" "effects.thermal_expansion = of: must be on or off" "... naming the value"
+[ ! -e "$TMP/typo.jsonl" ]
+t $? "... and nothing was written (not even a header)"
 for g in operating.axial_load_N operating.nosuch=1,2 operating.axial_load_N=1:2 \
          operating.axial_load_N=1:2:0 operating.axial_load_N=1,,2; do
     "$ACBB" sweep "$PRESET" --grid "$g" --jsonl "$TMP/never.jsonl" >"$TMP/out" 2>"$TMP/err"

@@ -16,7 +16,8 @@
 # A shard that fails can be re-run with the same command: it resumes.
 # Exit: 0 when every shard ran (points that did not converge, acbb's exit
 # 3, are results recorded in the files); 1 when a shard failed (the shards
-# there are still merged); the merge's status when the merge fails.
+# there are still merged); 3 when every shard ran but points are missing
+# (merge's 3: --max-points); the merge's status when the merge fails.
 set -u
 n=${1:?usage: acbb-sweep-parallel.sh N OUTDIR PRESET [sweep options]}
 out=${2:?usage: acbb-sweep-parallel.sh N OUTDIR PRESET [sweep options]}
@@ -37,9 +38,12 @@ fi
 rc=$?
 # parallel's exit status counts the failed shards (exit 3 is mapped to 0
 # above: non-converged points are in the files). Merge whatever is there.
-"$ACBB" merge "$out/sweep.jsonl" "$out"/shard-*.jsonl || exit $?
+# merge exits 3 when points are missing (it still writes the others).
+"$ACBB" merge "$out/sweep.jsonl" "$out"/shard-*.jsonl
+m=$?
+[ "$m" -ne 0 ] && [ "$m" -ne 3 ] && exit "$m"
 if [ "$rc" -ne 0 ]; then
     echo "acbb-sweep-parallel: $rc shard(s) failed; re-run the same command to resume them" >&2
     exit 1
 fi
-exit 0
+exit "$m"

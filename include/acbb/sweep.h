@@ -59,6 +59,18 @@ size_t acbb_sweep_n_points(const acbb_sweep *g);
 /* Dimension dim's value text at point `index`. */
 const char *acbb_sweep_value(const acbb_sweep *g, size_t index, size_t dim);
 
+/* Value v (0..n_values-1) of dimension dim. */
+const char *acbb_sweep_dim_value(const acbb_sweep *g, size_t dim, size_t v);
+
+/* Every value of every dimension against its key alone (acbb_scene_set_value
+ * on a copy of `base`: the text reads as the key's type and lies in its
+ * range). A value that fails fails at every point that has it: a typo, to
+ * refuse before anything runs (issue 26 item 11). The cross-field rules
+ * are left to each point (a combination may be ill-posed where another is
+ * not). ACBB_OK, or the first failure with *dim and *value naming it. */
+acbb_status acbb_sweep_check_values(const acbb_sweep *g, const acbb_scene *base, size_t *dim,
+                                    size_t *value, acbb_error *err);
+
 /* `base` with point `index`'s edits applied (first failing edit reported). */
 acbb_status acbb_sweep_scene(const acbb_sweep *g, const acbb_scene *base, size_t index,
                              acbb_scene *out, acbb_error *err);
@@ -104,17 +116,28 @@ size_t acbb_sweep_n_todo(const acbb_sweep *g, const acbb_sweep_opts *o);
 /* The version of the sweep's output records (the CLI's JSONL and CSV):
  * raised whenever a record's fields change, so outputs of different
  * versions are never merged or resumed into each other. */
-#define ACBB_SWEEP_FORMAT 3
+#define ACBB_SWEEP_FORMAT 4
 
-/* What makes two outputs parts of one sweep (issue 20 items 3-4): FNV-1a
- * 64 (outfile.h) over the record format, the run mode (opts.transient),
- * the value of every scene key of `base` that the grid does not vary (as
- * acbb_scene_field_format writes it) and every grid key with all its
- * values in order. Equal on every machine for the same inputs. */
+/* What makes two outputs parts of one sweep (issue 20 items 3-4, issue 26
+ * item 2): FNV-1a 64 (outfile.h) over the record format, the run mode
+ * (opts.transient), the value of every scene key of `base` that the grid
+ * does not vary (as acbb_scene_field_format writes it) except the
+ * wall-clock bound fidelity.max_wall_s (it changes no result of a run it
+ * does not end), the schedule's rows (acbb_sweep_schedule_text, under
+ * ACBB_SWEEP_SCHEDULE_KEY) and every grid key with all its values in
+ * order. Equal on every machine for the same inputs. Format 4: format 3
+ * left the schedule out (two sweeps differing only in their rows mixed). */
 uint64_t acbb_sweep_fingerprint(const acbb_sweep *g, const acbb_scene *base, int transient);
-/* Scene key i as "section.key" into key; 0 when the grid varies it (it is
- * then not part of the fingerprint's scene) or i is out of range. */
+/* Scene key i as "section.key" into key; 0 when it is not part of the
+ * fingerprint's scene (the grid varies it, or it is fidelity.max_wall_s)
+ * or i is out of range. */
 int acbb_sweep_scene_key(const acbb_sweep *g, size_t i, char *key, size_t n);
+/* The schedule's rows as one text, "t, speed, axial, radial" each (preset
+ * units, exact: acbb_schedule_format_row), joined by "; "; "" without
+ * rows. buf >= ACBB_SWEEP_SCHEDULE_TEXT bytes. */
+#define ACBB_SWEEP_SCHEDULE_TEXT (ACBB_SCHEDULE_MAX * 130)
+#define ACBB_SWEEP_SCHEDULE_KEY "schedule.rows"
+void acbb_sweep_schedule_text(const acbb_scene *s, char *buf, size_t n);
 
 #ifdef __cplusplus
 }

@@ -187,3 +187,24 @@ int acbb_sweep_in_shard(size_t index, size_t k, size_t n)
 {
     return n <= 1 || index % n == k - 1;
 }
+
+acbb_status acbb_sweep_check_values(const acbb_sweep *g, const acbb_scene *base, size_t *dim,
+                                    size_t *value, acbb_error *err)
+{
+    for (size_t d = 0; d < g->n_dims; d++)
+        for (size_t v = 0; v < g->dims[d].n; v++) {
+            acbb_scene trial = *base;
+            acbb_status st = acbb_scene_set_value(&trial, g->dims[d].key, g->dims[d].values[v], err);
+            if (st != ACBB_OK) {
+                *dim = d;
+                *value = v;
+                return st;
+            }
+        }
+    return ACBB_OK;
+}
+
+const char *acbb_sweep_dim_value(const acbb_sweep *g, size_t dim, size_t v)
+{
+    return g->dims[dim].values[v];
+}

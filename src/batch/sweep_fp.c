@@ -1,8 +1,14 @@
 /* acbb — the fingerprint of a sweep (sweep.h, acbb_sweep_fingerprint;
- * issue 20 items 3-4): what makes two outputs parts of one sweep. */
+ * issue 20 items 3-4, issue 26 item 2): what makes two outputs parts of one
+ * sweep. Everything that can change a point's result is in it: every scene
+ * key, the schedule's rows, the grid and the run mode. The wall-clock
+ * bound is not: it ends a run without changing the results of the runs it
+ * does not end (README "Wall-clock bound"), and its wall_limit records are
+ * run again on resume. */
 #include <stdio.h>
 #include <string.h>
 #include "acbb/outfile.h"
+#include "acbb/schedule.h"
 #include "acbb/sweep.h"
 
 static int gridded(const acbb_sweep *g, const char *key)
@@ -25,7 +31,18 @@ int acbb_sweep_scene_key(const acbb_sweep *g, size_t i, char *key, size_t n)
     const acbb_field_info *f = acbb_scene_field(i);
     if (!f) return 0;
     snprintf(key, n, "%s.%s", f->section, f->key);
-    return !gridded(g, key);
+    return !gridded(g, key) && strcmp(key, "fidelity.max_wall_s") != 0;
+}
+
+void acbb_sweep_schedule_text(const acbb_scene *s, char *buf, size_t n)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < s->schedule_n && len < n; i++) {
+        char row[128];
+        acbb_schedule_format_row(s, i, row, sizeof row);
+        len += (size_t)snprintf(buf + len, n - len, "%s%s", i ? "; " : "", row);
+    }
 }
 
 uint64_t acbb_sweep_fingerprint(const acbb_sweep *g, const acbb_scene *base, int transient)
@@ -39,6 +56,9 @@ uint64_t acbb_sweep_fingerprint(const acbb_sweep *g, const acbb_scene *base, int
         acbb_scene_field_format(base, i, val, sizeof val);
         h = add_line(h, key, val);
     }
+    char rows[ACBB_SWEEP_SCHEDULE_TEXT];
+    acbb_sweep_schedule_text(base, rows, sizeof rows);
+    h = add_line(h, ACBB_SWEEP_SCHEDULE_KEY, rows);
     for (size_t d = 0; d < acbb_sweep_n_dims(g); d++) {
         h = add_line(h, "grid", acbb_sweep_key(g, d));
         /* Every value of the dimension, in order: the point of index i
