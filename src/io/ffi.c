@@ -5,6 +5,7 @@
 #include "acbb/fidelity.h"
 #include "acbb/json.h"
 #include "acbb/sim.h"
+#include "gsl_quiet.h"
 
 /* The scene as `acbb run` prepares it: text, settings, fidelity preset. */
 static acbb_status prepare(const char *text, const char *const *settings, size_t n,
@@ -63,6 +64,7 @@ char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
     acbb_status st = ACBB_ENOMEM;
     acbb_scene *sc = malloc(sizeof *sc);
     FILE *m = sc ? open_memstream(&text, &len) : NULL;
+    acbb_gsl_enter(); /* the whole call, scene loading included (gsl_quiet.h) */
     if (m) {
         acbb_json j;
         acbb_json_init(&j, m);
@@ -78,6 +80,7 @@ char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
             st = ACBB_ENOMEM;
         }
     }
+    acbb_gsl_leave();
     free(sc);
     if (status) *status = st;
     return text;

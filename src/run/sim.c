@@ -404,7 +404,7 @@ static acbb_status set_step(acbb_sim *sim)
     return rc;
 }
 
-acbb_status acbb_sim_step(acbb_sim *sim)
+static acbb_status step_body(acbb_sim *sim)
 {
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
@@ -475,6 +475,16 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     return ACBB_OK;
 }
 
+/* The public entry points bracket GSL (gsl_quiet.h): the handler is off
+ * while they work and the host's again when they return. */
+acbb_status acbb_sim_step(acbb_sim *sim)
+{
+    acbb_gsl_enter();
+    acbb_status rc = step_body(sim);
+    acbb_gsl_leave();
+    return rc;
+}
+
 acbb_run_state acbb_sim_state(const acbb_sim *sim) { return sim->state; }
 
 acbb_status acbb_sim_run(acbb_sim *sim)
@@ -502,7 +512,7 @@ static int wall_limit(acbb_sim *sim)
     return 1;
 }
 
-acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
+static acbb_status drive_body(acbb_sim *sim, const acbb_run_ctl *ctl)
 {
     if (ctl && ctl->cancel) {
         sim->cancel = ctl->cancel;
@@ -513,11 +523,19 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
     while (sim->state == ACBB_RUN_RUNNING) {
         if (acbb_cancelled(sim->cancel))
             return fail(sim, ACBB_CANCELLED, "%s", "cancelled; last good state kept");
-        acbb_sim_step(sim);
+        step_body(sim);
         if (wall_limit(sim)) break;
         if (call_hook(sim, ctl)) break;
     }
     return sim->status;
+}
+
+acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
+{
+    acbb_gsl_enter();
+    acbb_status rc = drive_body(sim, ctl);
+    acbb_gsl_leave();
+    return rc;
 }
 
 /* ---- set-up ---- */
@@ -654,10 +672,9 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
-acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
-                            acbb_error *err)
+static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                               acbb_error *err)
 {
-    acbb_gsl_quiet();
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))) {
         free(sim);
@@ -675,6 +692,15 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
     }
     *out = sim;
     return ACBB_OK;
+}
+
+acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                            acbb_error *err)
+{
+    acbb_gsl_enter();
+    acbb_status rc = create_body(s, o, out, err);
+    acbb_gsl_leave();
+    return rc;
 }
 
 void acbb_sim_free(acbb_sim *sim)
@@ -701,7 +727,7 @@ static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *e
     return ACBB_OK;
 }
 
-acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
+static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
 {
     if (sim->set || s->set_arrangement != ACBB_SET_SINGLE) return set_restart(sim, s, err);
     double T[ACBB_MAX_NODES];
@@ -723,6 +749,14 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
     free(fresh);
     arm_bound(sim); /* the dynamic workspace's bound reads this Sim, not `fresh` */
     return ACBB_OK;
+}
+
+acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
+{
+    acbb_gsl_enter();
+    acbb_status rc = restart_body(sim, s, warm, err);
+    acbb_gsl_leave();
+    return rc;
 }
 
 /* ---- snapshot (the per-ball and squeeze views: sim_snapshot.c) ---- */
