@@ -309,8 +309,10 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
     double Tn[ACBB_MAX_NODES];
     save(sim, sim->keep);
     for (;;) {
-        acbb_status rc = steady_mode ? steady_step(sim, 0.5, Tn, dT)
-                                     : thermal_step(sim, Tn, dT, dTs);
+        /* each retry evaluates again (issue 26 item 7; the state is the kept one here) */
+        acbb_status rc = acbb_simx_stop_check(sim, err);
+        if (rc != ACBB_OK) return rc;
+        rc = steady_mode ? steady_step(sim, 0.5, Tn, dT) : thermal_step(sim, Tn, dT, dTs);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
         if (!acbb_snap_all_finite(Tn, sim->nw.n))
@@ -766,7 +768,8 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     const acbb_network *nw = &sim->nw;
     if (sim->set) {
         acbb_set_sim_snapshot(sim->set, o);
-        if (sim->status == ACBB_CANCELLED || sim->status == ACBB_WALL_LIMIT) {
+        if ((sim->status == ACBB_CANCELLED || sim->status == ACBB_WALL_LIMIT)
+            && o->state == ACBB_RUN_RUNNING) {
             /* ended by the run loop (cancel, wall-clock bound), not the set */
             o->state = sim->state;
             o->status = sim->status;
@@ -845,10 +848,10 @@ double acbb_simm_loss(const acbb_sim *b) { return b->loss.total; }
 /* The set's operating point (its schedule, sim_set.c): b's inner-ring speed. */
 void acbb_simm_speed(acbb_sim *b, double inner_speed) { b->s.inner_speed = inner_speed; }
 
-void acbb_simm_unbound(acbb_sim *b)
+void acbb_simm_deadline(acbb_sim *b, double deadline_ms)
 {
-    b->deadline_ms = 0.0;
-    if (b->dyn) acbb_dyn_set_stop(b->dyn, NULL, NULL);
+    b->deadline_ms = deadline_ms;
+    if (b->dyn) acbb_dyn_set_stop(b->dyn, deadline_ms > 0.0 ? past_bound : NULL, b);
 }
 
 void acbb_simm_mode(acbb_sim *b, int transient, int polishing)
