@@ -2,9 +2,10 @@
  * harnesses (tests/fuzz/fuzz_entry.h), with the plain compiler: in the
  * default suite, so a fixed crash stays fixed without clang.
  *
- * Usage: test_fuzz_replay --preset DIR... --set DIR...
+ * Usage: test_fuzz_replay --preset DIR... --set DIR... --schedule DIR...
  * Every file of a --preset directory is loaded as a preset, of a --set
- * directory read as `--set` edits; every entry of a directory is replayed
+ * directory read as `--set` edits, of a --schedule directory as the
+ * values of [schedule] `row = ` lines, one per line; every entry of a directory is replayed
  * (counted against the directory listing, at least one). The entry points
  * check that a refusal has a message and an accepted scene no NaN/Inf (a
  * failure there is "broken"). Here, for every file: ok-* must be accepted,
@@ -48,7 +49,8 @@ static int by_name(const struct dirent **a, const struct dirent **b)
 
 typedef struct {
     entry_fn fn;
-    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key) */
+    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key), */
+                /* 2: --schedule (the row: "schedule.row = ..." or "schedule row K") */
 } entry;
 
 /* Does a refusal of `data` as edits name one of its keys (by the name
@@ -78,6 +80,7 @@ static int names_a_key(const unsigned char *data, size_t n, const char *msg)
 
 static int names_input(const entry *e, const unsigned char *data, size_t n, const char *msg)
 {
+    if (e->preset == 2) return strstr(msg, "schedule") != NULL;
     if (e->preset) {
         const char *path = acbb_fuzz_preset_path();
         return path[0] && strncmp(msg, path, strlen(path)) == 0;
@@ -105,8 +108,9 @@ static void replay_one(const char *dir, const char *name, const entry *e)
     } else if (o == ACBB_FUZZ_ACCEPTED) {
         ok(!want_bad, "%s: accepted, every value finite%s", path, want_bad ? " (want refused)" : "");
     } else {
+        static const char *const what[] = { "key", "file", "row" };
         ok(!want_ok && named, "%s: refused%s, the message names the %s: %s", path,
-           want_ok ? " (want accepted)" : "", e->preset ? "file" : "key", why);
+           want_ok ? " (want accepted)" : "", what[e->preset], why);
     }
 }
 
@@ -132,11 +136,13 @@ static void replay_dir(const char *dir, const entry *e)
 int main(int argc, char **argv)
 {
     const entry as_preset = { acbb_fuzz_preset, 1 }, as_set = { acbb_fuzz_set, 0 };
+    const entry as_schedule = { acbb_fuzz_schedule, 2 };
     const entry *e = &as_preset;
     int dirs = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--preset")) e = &as_preset;
         else if (!strcmp(argv[i], "--set")) e = &as_set;
+        else if (!strcmp(argv[i], "--schedule")) e = &as_schedule;
         else replay_dir(argv[i], e), dirs++;
     }
     ok(dirs > 0, "%d corpus directories replayed", dirs);

@@ -5,9 +5,10 @@
  *
  * acbb_run_preset_json runs the scene to the end exactly as
  * `acbb run PRESET --set S1 --set S2 ... --json` does (the same loading and
- * checks, the fidelity preset applied, the same run loop) and returns the
- * document that command prints, byte for byte; only wall_ms, the run's
- * wall time, differs between any two runs.
+ * checks, the fidelity preset applied, the same run loop, the other
+ * branch solved for a scene with a [schedule] or a displacement preload,
+ * acbb/branches.h) and returns the document that command prints, byte for
+ * byte; only wall_ms, the run's wall time, differs between any two runs.
  *
  * - preset_text: the preset's content (INI text, NUL-terminated), not a
  *   path. Messages name it "<text>" ("<text>:3: ...").

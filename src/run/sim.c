@@ -223,8 +223,8 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
     if (!p.best) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     acbb_polish_result r;
     acbb_status rc = acbb_polish_iterate(polish_step, &p,
-                                         acbb_polish_resolution(sim->s.mech_tol, sim->T,
-                                                                sim->nw.n), &r, err);
+                                         acbb_polish_resolution(acbb_polish_loss_rtol(&sim->s),
+                                                                sim->T, sim->nw.n), &r, err);
     if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS && p.best_res < INFINITY) {
         restore(sim, p.best);
         size_t n = strlen(err->msg);
