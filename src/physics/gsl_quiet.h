@@ -10,7 +10,10 @@
  *
  * Every public entry point that can reach GSL brackets its work with
  * acbb_gsl_enter() ... acbb_gsl_leave() (sim.c: create, restart, step,
- * drive; ffi.c; lubricant_grade.c). Calls nest (a per-thread depth), and
+ * drive; ffi.c; lubricant_grade.c; the Morris design's generator in
+ * sensitivity.c). Every other GSL call of the engine runs inside one of
+ * these (the batch runner, the studies and the TUI reach GSL only through
+ * acbb_sim_*). Calls nest (a per-thread depth), and
  * calls on several threads share one process-wide count: the handler is
  * switched off when the first engine call in the process starts and the
  * host's handler is put back when the last one ends, so two threads can
