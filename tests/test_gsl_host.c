@@ -10,6 +10,13 @@
  * - acbb_run_preset_json on a scene that runs and on one that is refused
  *   returns a document, and the host's handler (default, then a counting
  *   one) is what the host set, and was never called;
+ * - the issue's case: after a first call, the host restores GSL's default
+ *   handler and runs a scene whose ball solve meets a failed root bracket
+ *   inside GSL (a DB pair with a nearly flat outer groove under 361 kN:
+ *   the fallback's Brent bracket on the outer deflection does not straddle
+ *   zero, gsl_root_fsolver_set calls the handler); before, the library had
+ *   turned the handler off once, on its first Sim, so this call aborted;
+ *   now the document comes back (diverged) and the handler is the default;
  * - two threads running documents at once, then the host's handler again
  *   (the process-wide count: neither thread leaves it off). */
 #include <math.h>
@@ -20,6 +27,7 @@
 #include <gsl/gsl_errno.h>
 #include "acbb/ffi.h"
 #include "acbb/scene.h"
+#include "slurp.h"
 #include "tap.h"
 
 static int host_calls;
@@ -33,12 +41,9 @@ static void host_handler(const char *reason, const char *file, int line, int gsl
 static char *preset_text(const char *path)
 {
     FILE *f = fopen(path, "r");
-    if (!f) return NULL;
-    static char buf[1 << 16];
-    size_t n = fread(buf, 1, sizeof buf - 1, f);
-    fclose(f);
-    buf[n] = '\0';
-    return buf;
+    char *s = f ? slurp(f) : NULL;
+    if (f) fclose(f);
+    return s;
 }
 
 /* The handler now, left in place. */
@@ -66,6 +71,9 @@ static void test_failed_bracket(void)
 
 static const char *const k_static[] = { "fidelity.model=static" };
 static const char *const k_ill[] = { "operating.axial_load_N=0", "operating.radial_load_N=500" };
+static const char *const k_bracket[] = { "fidelity.model=static",
+                                         "bearing.outer_groove_radius_mm=69.7003",
+                                         "operating.axial_load_N=360784" };
 
 static void run_doc(const char *text, const char *const *set, size_t n, const char *want,
                     gsl_error_handler_t *host, const char *what)
@@ -109,7 +117,7 @@ static void test_threads(const char *text)
 int main(void)
 {
     test_failed_bracket();
-    const char *text = preset_text("presets/7008C.ini");
+    char *text = preset_text("presets/7008C.ini");
     if (!text) {
         printf("Bail out! presets/7008C.ini not readable\n");
         return 1;
@@ -117,6 +125,11 @@ int main(void)
     run_doc(text, k_static, 1, "converged", NULL, "default handler, a run");
     run_doc(text, k_ill, 2, "ill_posed", NULL, "default handler, a refused scene");
     run_doc(text, k_static, 1, "converged", host_handler, "host handler, a run");
+    char *pair = preset_text("presets/pair-DB-heated.ini");
+    if (pair) run_doc(pair, k_bracket, 3, "diverged", NULL, "default handler, a failed bracket");
+    else ok(0, "presets/pair-DB-heated.ini readable");
     test_threads(text);
+    free(pair);
+    free(text);
     return done_testing();
 }
