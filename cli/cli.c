@@ -234,7 +234,8 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     acbb_error berr;
     if (!acbb_cli_interrupted() && acbb_cli_branches_wanted(a, &sc)) {
         acbb_cli_progress_note(&prog, "solving the other branch (steady solve vs transient)");
-        if (acbb_branches_compare(&sc, snap, cancel, deadline, &br_store, &berr) == ACBB_OK) br = &br_store;
+        if (acbb_branches_compare(&sc, snap, cancel, deadline, &br_store, &berr) == ACBB_OK)
+            br = &br_store;
     }
     acbb_cli_progress_end(&prog);
     acbb_cli_interrupt_end();

@@ -103,7 +103,8 @@ static void test_threads(const char *text)
     gsl_set_error_handler(host_handler);
     pthread_t t[2];
     int started = 0;
-    for (int i = 0; i < 2; i++) started += pthread_create(&t[i], NULL, thread_run, (void *)text) == 0;
+    for (int i = 0; i < 2; i++)
+        started += pthread_create(&t[i], NULL, thread_run, (void *)text) == 0;
     int good = 0;
     for (int i = 0; i < started; i++) {
         void *r;

@@ -106,7 +106,8 @@ static acbb_status run_other(const acbb_scene *s, const atomic_int *cancel, doub
     rc = acbb_sim_drive(sim, &(acbb_run_ctl){ .cancel = cancel });
     acbb_sim_snapshot(sim, snap);
     acbb_sim_free(sim);
-    if (shared && snap->status == ACBB_WALL_LIMIT) bound_text(snap, s->max_wall_s, "in the other branch; last good state kept");
+    if (shared && snap->status == ACBB_WALL_LIMIT)
+        bound_text(snap, s->max_wall_s, "in the other branch; last good state kept");
     return rc == ACBB_CANCELLED ? rc : ACBB_OK;
 }
 

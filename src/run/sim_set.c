@@ -322,8 +322,8 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
 static acbb_status polish(acbb_set_sim *ss, acbb_error *err)
 {
     acbb_polish_result r;
-    acbb_status rc = acbb_polish_iterate(polish_step, ss, acbb_polish_resolution(acbb_polish_loss_rtol(&ss->s),
-                                         ss->T, ss->ns.n), &r, err);
+    double resolution = acbb_polish_resolution(acbb_polish_loss_rtol(&ss->s), ss->T, ss->ns.n);
+    acbb_status rc = acbb_polish_iterate(polish_step, ss, resolution, &r, err);
     if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS) {
         size_t n = strlen(err->msg);
         snprintf(err->msg + n, sizeof err->msg - n, "; last state kept");
