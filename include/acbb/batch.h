@@ -6,8 +6,10 @@
  *
  * Each point is one Sim built from the scene the caller's `scene`
  * callback fills, driven by acbb_sim_drive on one worker, private to it.
- * The engine keeps no global mutable state, so a point's result does not
- * depend on the number of workers or on which worker ran it (tested bit
+ * The engine keeps no global mutable state that a result depends on (the
+ * one it keeps, GSL's error handler, is off while any call works), so a
+ * point's result does not depend on the number of workers or on which
+ * worker ran it (tested bit
  * for bit in tests/test_batch.c). Workers take the next index from one
  * atomic counter; the caller's thread works too.
  *

@@ -36,7 +36,9 @@
  *   bad input, the run's final status for a failed run (ACBB_NONFINITE
  *   and ACBB_ENOMEM as said above).
  * - Thread-safety: reentrant; calls on different threads are independent
- *   (the engine keeps no global mutable state). A call blocks until its
+ *   (the engine keeps no global mutable state but GSL's process-wide error
+ *   handler, which it turns off while a call works and gives back to the
+ *   host when the last call ends; acbb/sim.h). A call blocks until its
  *   run ends (milliseconds to seconds; no cancel). Nothing is printed.
  * - Numbers are read and written with a decimal point: the process must
  *   leave LC_NUMERIC at "C" (the default; Python does). */
