@@ -245,6 +245,15 @@ static cJSON *parse_doc(const char *text)
     return o;
 }
 
+/* A command's document, parsed (its text freed). */
+static cJSON *cmd_doc(const char *cmd)
+{
+    char *text = slurp_cmd(cmd);
+    cJSON *o = parse_doc(text);
+    free(text);
+    return o;
+}
+
 /* The scene as the comparison runs it: no wall bound, at most 300 steps,
  * at most the quasi-static level (seconds for the three runs). */
 static void deterministic(acbb_scene *s)
@@ -292,7 +301,7 @@ static void three_ways(const options *o, const acbb_scene *scene, int i)
         return;
     }
     snprintf(cmd, sizeof cmd, "'%s' run '%s' --json 2>/dev/null", o->acbb, path);
-    cJSON *cli = parse_doc(slurp_cmd(cmd));
+    cJSON *cli = cmd_doc(cmd);
     FILE *f = fopen(path, "r");
     char *text = f ? slurp(f) : NULL;
     if (f) fclose(f);
@@ -310,7 +319,7 @@ static void three_ways(const options *o, const acbb_scene *scene, int i)
     if (o->python) {
         snprintf(cmd, sizeof cmd, "python3 -c \"$ACBB_PROPERTY_PY\" '%s' '%s' 2>/dev/null", path,
                  o->lib);
-        cJSON *py = parse_doc(slurp_cmd(cmd));
+        cJSON *py = cmd_doc(cmd);
         ok(py && cli && cJSON_Compare(cli, py, 1), "scene %d: Python's JSON = the CLI's", i);
         cJSON_Delete(py);
     } else {
