@@ -85,7 +85,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                            "[schedule] or mounting.preload = displacement)" },
     [CLI_OPT_MAX_WALL] = { "max-wall", "SECONDS",
                            "bound each run's computing time (fidelity.max_wall_s): a run past "
-                           "it ends wall_limit with its last good state, exit 3" },
+                           "it ends wall_limit with its last good state, exit 3; with "
+                           "--branches the run and the other branch share it" },
     [CLI_OPT_BASH_COMPLETION] = { "bash-completion", NULL,
                                   "print the bash completion script made from the command table" },
 };

@@ -1,9 +1,12 @@
 /* acbb CLI — the what-if baseline (baseline.h). */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cjson/cJSON.h>
 #include "baseline.h"
 #include "exit.h"
@@ -11,15 +14,45 @@
 
 #define MAX_FILE (16 << 20)  /* a run's JSON is ~10 kB; refuse anything absurd */
 
+/* A saved document is a regular file: a FIFO or a device would block the
+ * read (a FIFO with no writer, for ever; issue 26 item 7) or never end.
+ * Opened without blocking, then refused unless regular; read up to
+ * MAX_FILE. NULL with errno set (EINVAL: not a regular file). */
 static char *slurp(const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) return NULL;
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        errno = EINVAL;
+        return NULL;
+    }
     char *buf = malloc(MAX_FILE + 1);
-    size_t n = buf ? fread(buf, 1, MAX_FILE, f) : 0;
-    fclose(f);
+    size_t n = 0;
+    ssize_t got = 1;
+    while (buf && n < MAX_FILE && (got = read(fd, buf + n, MAX_FILE - n)) > 0) n += (size_t)got;
+    close(fd);
     if (buf) buf[n] = '\0';
     return buf;
+}
+
+static int unreadable(const char *path)
+{
+    if (errno == EINVAL)
+        fprintf(stderr, "acbb: --baseline %s: not a regular file (a saved `acbb run --json`)\n",
+                path);
+    else
+        fprintf(stderr, "acbb: --baseline %s: cannot read: %s\n", path, strerror(errno));
+    return ACBB_EXIT_INPUT;
+}
+
+int acbb_cli_baseline_check(const char *path)
+{
+    char *text = slurp(path);
+    if (!text) return unreadable(path);
+    free(text);
+    return ACBB_EXIT_OK;
 }
 
 /* This run as the JSON `acbb run --json` prints, parsed. */
@@ -169,10 +202,7 @@ int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapsho
                       bool json, bool quiet)
 {
     char *text = slurp(path);
-    if (!text) {
-        fprintf(stderr, "acbb: --baseline %s: cannot read: %s\n", path, strerror(errno));
-        return ACBB_EXIT_INPUT;
-    }
+    if (!text) return unreadable(path);
     cJSON *was = cJSON_Parse(text);
     free(text);
     if (!cJSON_IsObject(was) || !cJSON_GetObjectItem(was, "losses_W")) {

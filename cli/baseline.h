@@ -14,6 +14,11 @@
  * JSON with a "vs_baseline" array added. Returns an exit status (0, 2 for
  * an unreadable baseline, 4 for an output failure). `quiet` (text only):
  * the baseline is still read and checked, nothing printed. */
+/* Before the run: 0 when FILE is a regular file that can be read, else 2
+ * with the message (a FIFO, a device or a directory is refused at once,
+ * not waited on). */
+int acbb_cli_baseline_check(const char *path);
+
 int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapshot *snap,
                       bool json, bool quiet);
 

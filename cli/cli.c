@@ -197,6 +197,8 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     const char *plot = a->val[CLI_OPT_PLOT], *csv_path = a->val[CLI_OPT_CSV];
     bool json = a->val[CLI_OPT_JSON] != NULL;
     if (plot && (rc = acbb_cli_plot_check_path(plot))) return rc;
+    const char *base = a->val[CLI_OPT_BASELINE];
+    if (base && (rc = acbb_cli_baseline_check(base))) return rc;
     acbb_scene sc;
     if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
     /* fidelity.preset / target: apply here, so the report shows the knobs used */
@@ -209,6 +211,9 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     prog.schedule = sc.schedule_n > 0 && sc.heating && sc.thermal_mode == ACBB_THERMAL_TRANSIENT
                     ? &sc : NULL;
     const atomic_int *cancel = acbb_cli_interrupt_begin();
+    /* --max-wall bounds the whole command: the other branch gets what the
+     * run left (issue 26 item 7). */
+    double deadline = sc.max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * sc.max_wall_s : 0.0;
     acbb_sim *sim = NULL;
     rc = start_sim(&sc, json, cancel, &prog, &sim);
     acbb_cli_file csv = { 0 };
@@ -233,7 +238,8 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     acbb_error berr;
     if (!acbb_cli_interrupted() && acbb_cli_branches_wanted(a, &sc)) {
         acbb_cli_progress_note(&prog, "solving the other branch (steady solve vs transient)");
-        if (acbb_branches_compare(&sc, snap, cancel, &br_store, &berr) == ACBB_OK) br = &br_store;
+        if (acbb_branches_compare(&sc, snap, cancel, deadline, &br_store, &berr) == ACBB_OK)
+            br = &br_store;
     }
     acbb_cli_progress_end(&prog);
     acbb_cli_interrupt_end();

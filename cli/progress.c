@@ -16,7 +16,6 @@
  * (the engine keeps none; it is handed the pointer). It holds the signal
  * number, so the message can name it; the engine only tests non-zero. */
 static atomic_int interrupt_flag;
-static struct sigaction old_int, old_term;
 
 static void on_interrupt(int sig)
 {
@@ -29,26 +28,32 @@ static void on_interrupt(int sig)
     sigaction(SIGTERM, &dfl, NULL);
 }
 
+/* Installed once, at a command's first long phase, and kept until the
+ * process ends (issue 28 item 14): a command with several phases (study,
+ * report) used to restore the default action between them and reset the
+ * flag at the next, so a signal in that gap killed the process (exit 130)
+ * or was forgotten (exit 0). Now a signal at any time after the first
+ * phase began is a cancel, and the next one still kills (on_interrupt). */
+static bool installed;
+
 const atomic_int *acbb_cli_interrupt_begin(void)
 {
-    atomic_store(&interrupt_flag, 0);
+    if (installed) return &interrupt_flag;
+    installed = true;
     /* SA_RESTART: the cancel travels through the flag alone; a large
      * stdout write or a file commit under way must not fail with EINTR
      * and turn a cancel (exit 3) into a write error (exit 4). */
     struct sigaction sa = { .sa_handler = on_interrupt, .sa_flags = SA_RESTART };
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
     return &interrupt_flag;
 }
 
 const atomic_int *acbb_cli_interrupt_flag(void) { return &interrupt_flag; }
 
-void acbb_cli_interrupt_end(void)
-{
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
-}
+/* The end of a long phase: the handler stays (above). */
+void acbb_cli_interrupt_end(void) {}
 
 /* A command's own stop is -1: the engine stops as on a signal, but no
  * "cancelled by" message is printed (no signal came). */

@@ -6,8 +6,10 @@
  * one flag, passed to the engine as its cancel flag (acbb_run_ctl.cancel,
  * acbb_sweep_opts.cancel, ...), so runs end within a step as
  * ACBB_CANCELLED. The first signal also restores the default actions: a
- * second one (either) kills at once. acbb_cli_interrupt_end restores the
- * previous handlers; acbb_cli_cancelled then prints "acbb: CMD: cancelled
+ * second one (either) kills at once. The handler is installed by the
+ * command's first long phase and stays until the process ends (a signal
+ * between two phases is a cancel, not a kill); acbb_cli_interrupt_end marks
+ * a phase's end only. acbb_cli_cancelled then prints "acbb: CMD: cancelled
  * by SIGINT; <what was kept>" and returns ACBB_EXIT_CANCELLED (3).
  *
  * Progress: one line on stderr, rewritten in place (\r) at most four times a
@@ -23,7 +25,7 @@
 #include <stdio.h>
 #include "acbb/sim.h"
 
-/* Install the handlers; returns the flag they set (cleared first). */
+/* Install the handlers (once); returns the flag they set, never cleared. */
 const atomic_int *acbb_cli_interrupt_begin(void);
 void acbb_cli_interrupt_end(void);
 /* The flag itself (set or not), for a caller that did not begin. */

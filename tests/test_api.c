@@ -13,30 +13,10 @@
 #include "acbb/ffi.h"
 #include "acbb/json.h"
 #include "acbb/scene.h"
+#include "slurp.h"
 #include "tap.h"
 
 #define PRESET "presets/7008C.ini"
-
-static char *slurp(FILE *f)
-{
-    size_t cap = 1 << 16, n = 0, got;
-    char *buf = malloc(cap);
-    while (buf && (got = fread(buf + n, 1, cap - n - 1, f)) > 0) {
-        n += got;
-        if (n + 1 == cap) buf = realloc(buf, cap *= 2);
-    }
-    if (buf) buf[n] = '\0';
-    return buf;
-}
-
-static char *slurp_cmd(const char *cmd)
-{
-    FILE *p = popen(cmd, "r");
-    if (!p) return NULL;
-    char *s = slurp(p);
-    pclose(p);
-    return s;
-}
 
 /* The document without its wall_ms line (the one run-dependent number). */
 static void drop_wall(char *s)

@@ -114,6 +114,13 @@ code $? 3 "--max-wall 0.5 on a bearing set"
 jq -e '.status == "wall_limit" and .iterations >= 1 and .time_s < 9e7
     and ([.. | numbers | select(isinfinite or isnan)] | length == 0)' "$TMP/w4.json" >/dev/null 2>&1
 t $? "... ends wall_limit after some steps, the set's JSON says so, finite"
+# Its other branch (displacement preload: the steady solve runs too) gets
+# what the run left of the one bound, here nothing (issue 26 item 7; before,
+# a second 0.5 s, in which the quasi-static pair's steady solve converged).
+jq -e '.branches.steady.status == "wall_limit" and .branches.steady.iterations == 0
+    and (.branches.steady.message | test("0.5 s \\(the run and the other branch together\\)"))' \
+    "$TMP/w4.json" >/dev/null 2>&1
+t $? "... and its other branch is not started: one bound for the whole command"
 "$ACBB" run "$P" $Q --set fidelity.max_wall_s=1000 --json >"$TMP/w2.json" 2>/dev/null
 jq -e --slurpfile b "$TMP/base.json" '.status == "converged" and .losses_W.total == $b[0].losses_W.total
     and .iterations == $b[0].iterations' "$TMP/w2.json" >/dev/null 2>&1
@@ -150,5 +157,16 @@ if mkfifo "$TMP/fifo" 2>/dev/null; then
     (cd "$TMP" && timeout 60 "$ACBB" run fifo) >/dev/null 2>"$TMP/err"
     code $? 2 "a FIFO preset is refused"
     has "$TMP/err" "a FIFO, not a regular file" "... as a FIFO, not 'no such file'"
+    # --baseline FIFO (issue 26 item 7): before, the read waited for a
+    # writer for ever; now it is refused before the run (the guard below
+    # is a hang guard, 124, not a timing check).
+    timeout 60 "$ACBB" run "$P" $Q --baseline "$TMP/fifo" >/dev/null 2>"$TMP/err"
+    code $? 2 "run --baseline FIFO exits 2 at once"
+    has "$TMP/err" "--baseline $TMP/fifo: not a regular file" "... saying it is not a regular file"
 fi
+timeout 60 "$ACBB" run "$P" $Q --baseline "$TMP" --json >"$TMP/out" 2>"$TMP/err"
+code $? 2 "run --baseline DIRECTORY exits 2"
+jq -e '.status == "bad_input" and (.message | test("not a regular file")) and (has("losses_W") | not)' \
+    "$TMP/out" >/dev/null 2>&1 && grep -q "not a regular file" "$TMP/err"
+t $? "... before the run: the bad_input record (no run document), the reason on stderr"
 tap_done

@@ -3,9 +3,11 @@
  * default suite, so a fixed crash stays fixed without clang.
  *
  * Usage: test_fuzz_replay --preset DIR... --set DIR... --merge DIR... --resume DIR...
+ *        --schedule DIR...
  * Every file of a --preset directory is loaded as a preset, of a --set
  * directory read as `--set` edits, of --merge merged, of --resume resumed
- * as a sweep's output (fuzz_cli.h); every entry of a directory is replayed
+ * as a sweep's output (fuzz_cli.h), of a --schedule directory as the
+ * values of [schedule] `row = ` lines, one per line; every entry of a directory is replayed
  * (counted against the directory listing, at least one). The entry points
  * check that a refusal has a message and an accepted scene no NaN/Inf (a
  * failure there is "broken"). Here, for every file: ok-* must be accepted,
@@ -50,7 +52,9 @@ static int by_name(const struct dirent **a, const struct dirent **b)
 
 typedef struct {
     entry_fn fn;
-    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key), -1: a CLI reader */
+    int preset; /* 1: --preset (a refusal names the file), 0: --set (the key), */
+                /* 2: --schedule (the row: "schedule.row = ..." or "schedule row K"), */
+                /* -1: a CLI reader (merge, resume) */
 } entry;
 
 /* Does a refusal of `data` as edits name one of its keys (by the name
@@ -81,6 +85,7 @@ static int names_a_key(const unsigned char *data, size_t n, const char *msg)
 static int names_input(const entry *e, const unsigned char *data, size_t n, const char *msg)
 {
     if (e->preset < 0) return 1;
+    if (e->preset == 2) return strstr(msg, "schedule") != NULL;
     if (e->preset) {
         const char *path = acbb_fuzz_preset_path();
         return path[0] && strncmp(msg, path, strlen(path)) == 0;
@@ -108,9 +113,9 @@ static void replay_one(const char *dir, const char *name, const entry *e)
     } else if (o == ACBB_FUZZ_ACCEPTED) {
         ok(!want_bad, "%s: accepted, every value finite%s", path, want_bad ? " (want refused)" : "");
     } else {
+        static const char *const what[] = { "key", "file", "row" };
         ok(!want_ok && named, "%s: refused%s, the message names the %s: %s", path,
-           want_ok ? " (want accepted)" : "", e->preset > 0 ? "file" : e->preset ? "input" : "key",
-           why);
+           want_ok ? " (want accepted)" : "", e->preset < 0 ? "input" : what[e->preset], why);
     }
 }
 
@@ -137,6 +142,7 @@ int main(int argc, char **argv)
 {
     const entry as_preset = { acbb_fuzz_preset, 1 }, as_set = { acbb_fuzz_set, 0 };
     const entry as_merge = { acbb_fuzz_merge, -1 }, as_resume = { acbb_fuzz_resume, -1 };
+    const entry as_schedule = { acbb_fuzz_schedule, 2 };
     const entry *e = &as_preset;
     int dirs = 0;
     for (int i = 1; i < argc; i++) {
@@ -144,6 +150,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--set")) e = &as_set;
         else if (!strcmp(argv[i], "--merge")) e = &as_merge;
         else if (!strcmp(argv[i], "--resume")) e = &as_resume;
+        else if (!strcmp(argv[i], "--schedule")) e = &as_schedule;
         else replay_dir(argv[i], e), dirs++;
     }
     ok(dirs > 0, "%d corpus directories replayed", dirs);

@@ -88,9 +88,34 @@ static void test_dynamic_settles_on_quasi_dynamic(void)
     is_close(snap.losses.total, ref.losses.total, 1e-4, 0, "dynamic total loss = quasi-dynamic");
 }
 
+/* presets/combined-load.ini at the dynamic level (issue 26 item 11): the
+ * polish took its windows' integration noise (2e-4 K, losses resolved to
+ * ACBB_DYN_RTOL) for overshoot, damped to the floor and ended diverged. A
+ * steady state that converges balances its heat (MODEL.md 12 item 18). */
+static void test_combined_load_dynamic(void)
+{
+    acbb_scene s;
+    acbb_error err = { "" };
+    acbb_sim *sim = NULL;
+    acbb_status rc = acbb_scene_load("presets/combined-load.ini", &s, &err);
+    if (rc == ACBB_OK) rc = acbb_scene_set(&s, "fidelity.model", "dynamic", &err);
+    if (rc == ACBB_OK) rc = acbb_sim_new(&s, &sim, &err);
+    if (rc == ACBB_OK) {
+        rc = acbb_sim_run(sim);
+        acbb_sim_snapshot(sim, &snap);
+        acbb_sim_free(sim);
+    }
+    ok(rc == ACBB_OK && snap.state == ACBB_RUN_CONVERGED && snapshot_plausible(&snap, 1),
+       "combined-load, dynamic level: converged, plausible (%s)",
+       rc == ACBB_OK ? snap.message : err.msg);
+    is_close(snap.heat_out, snap.heat_in, ACBB_BALANCE_TOL, 0,
+             "combined-load, dynamic level: heat out = heat in (W)");
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_combined_load_dynamic();
     test_quasi_dynamic_behaviour();
     test_dynamic_settles_on_quasi_dynamic();
     test_grid();

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/acbb.h"
+#include "acbb/measure.h"
 #include "tap.h"
 
 #define RPM(x) acbb_rpm_to_rads(x)
@@ -197,7 +198,7 @@ static void test_branches(acbb_snapshot *snap)
     acbb_branches b;
     acbb_status rc = run(&step, snap);
     ok(rc == ACBB_RUNAWAY, "step start: runaway (%s)", snap->message);
-    ok(acbb_branches_compare(&step, snap, NULL, &b, &e) == ACBB_OK, "step start: compared");
+    ok(acbb_branches_compare(&step, snap, NULL, 0.0, &b, &e) == ACBB_OK, "step start: compared");
     ok(!b.agree && strcmp(b.transient.status, "runaway") == 0
        && strcmp(b.steady.status, "converged") == 0, "step start: two branches (%s vs %s)",
        b.steady.status, b.transient.status);
@@ -210,7 +211,7 @@ static void test_branches(acbb_snapshot *snap)
        snap->message);
     ok(snap->time > acbb_schedule_end(&ramp), "  after the last row (t = %.0f s > %.0f s)",
        snap->time, acbb_schedule_end(&ramp));
-    rc = acbb_branches_compare(&ramp, snap, NULL, &b, &e);
+    rc = acbb_branches_compare(&ramp, snap, NULL, 0.0, &b, &e);
     ok(rc == ACBB_OK && b.agree, "staged ramp: one branch with the steady solve (max dT %.2g K, "
        "loss %.2g)", b.max_dT_K, b.loss_rel);
 
@@ -221,8 +222,22 @@ static void test_branches(acbb_snapshot *snap)
     int finite = isfinite(snap->losses.total) && isfinite(snap->reaction_x);
     for (int i = 0; i < snap->n_nodes; i++) finite &= isfinite(snap->T[i]) && snap->T[i] < 1000;
     ok(finite && snap->losses.total > 0.0, "  its last good state is finite");
-    ok(acbb_branches_compare(&ramp, snap, NULL, &b, &e) == ACBB_OK && !b.agree,
+    ok(acbb_branches_compare(&ramp, snap, NULL, 0.0, &b, &e) == ACBB_OK && !b.agree,
        "  and is another branch than the steady solve's");
+
+    /* fidelity.max_wall_s bounds both branches together (issue 26 item 7):
+     * a deadline already past leaves the other branch nothing, so it is not
+     * started (before, it got a second full budget and converged). */
+    step.max_wall_s = 1000.0;
+    ok(acbb_branches_compare(&step, snap, NULL, acbb_now_ms() - 1.0, &b, &e) == ACBB_OK
+       && strcmp(b.steady.status, "wall_limit") == 0 && b.steady.iterations == 0
+       && strstr(b.steady.message, "fidelity.max_wall_s = 1000 s (the run and the other branch "
+                 "together) reached before the other branch started") != NULL,
+       "shared bound spent: the other branch is not started (%s: %s)", b.steady.status,
+       b.steady.message);
+    ok(acbb_branches_compare(&step, snap, NULL, acbb_now_ms() + 1e6, &b, &e) == ACBB_OK
+       && strcmp(b.steady.status, "converged") == 0,
+       "shared bound with time left: the other branch runs (%s)", b.steady.status);
 }
 
 int main(void)

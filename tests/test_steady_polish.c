@@ -163,6 +163,38 @@ static void test_stalled(void)
     }
 }
 
+/* The dynamic level's losses are resolved to its integrator's tolerance
+ * (issue 26 item 11, presets/combined-load.ini: windows that differ by
+ * 2e-4 K at a spread of 13.4 K, a tolerance of 1.34e-7 K from mech_tol):
+ * the polish's resolution follows it, so that noise is within the band;
+ * from mech_tol it is taken for overshoot and ends diverged. */
+static void test_dynamic_resolution(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.model = ACBB_MODEL_QUASI_DYNAMIC;
+    s.mech_tol = 1e-8;
+    double qd = acbb_polish_loss_rtol(&s);
+    s.model = ACBB_MODEL_DYNAMIC;
+    double dyn = acbb_polish_loss_rtol(&s);
+    s.mech_tol = 1e-3;
+    ok(qd == 1e-8 && dyn == 1e-4 && acbb_polish_loss_rtol(&s) == 1e-3,
+       "losses resolved to mech_tol, at the dynamic level to at least 1e-4 (%g, %g)", qd, dyn);
+    const double T[2] = { 20.0, 33.4 };
+    const double rtol[2] = { 1e-8, 1e-4 };
+    for (int k = 0; k < 2; k++) {
+        linmap m = map1(0.5, 40.01);
+        m.noise = 1e-4; /* the fixed point alternates 2e-4 K apart */
+        acbb_polish_result r;
+        acbb_error err = { "" };
+        acbb_status rc = acbb_polish_iterate(step, &m, acbb_polish_resolution(rtol[k], T, 2), &r,
+                                             &err);
+        ok(rc == (k ? ACBB_OK : ACBB_DIVERGED), "2e-4 K noise over a 13.4 K spread, losses to "
+           "%g: %s (residual %.2g K, relaxation %g)", rtol[k], acbb_status_name(rc), r.residual,
+           r.relax);
+    }
+}
+
 /* No relaxation helps a gain above 1 (a monotone runaway) nor one below
  * the floor's reach (-300 needs w < 2/301 < 1/64): ACBB_DIVERGED after the
  * cap, with the residual, never OK. */
@@ -206,6 +238,7 @@ int main(void)
     test_start_below_noise();
     test_map_change_not_judged();
     test_stalled();
+    test_dynamic_resolution();
     test_diverged();
     test_step_failure();
     return done_testing();

@@ -6,10 +6,11 @@
  *
  * Each point is one Sim built from the scene the caller's `scene`
  * callback fills, driven by acbb_sim_drive on one worker, private to it.
- * The engine keeps no global mutable state, so a point's result does not
- * depend on the number of workers or on which worker ran it (tested bit
- * for bit in tests/test_batch.c). Workers take the next index from one
- * atomic counter; the caller's thread works too.
+ * The engine keeps no global mutable state that a result depends on (the
+ * one it keeps, GSL's error handler, is off while any call works), so a
+ * point's result does not depend on the number of workers or on which
+ * worker ran it (tested bit for bit in tests/test_batch.c). Workers take
+ * the next index from one atomic counter; the caller's thread works too.
  *
  * Jobs: 0 means acbb_batch_cpus(), the CPUs this process may run on (its
  * affinity mask: under `taskset -c 0` one worker), never more workers

@@ -51,10 +51,15 @@ bool acbb_branches_wanted(const acbb_scene *s);
  * snapshot of s as it was run (fidelity.preset applied or not: it is
  * applied here the same way). ACBB_OK also when the other run fails (its
  * status says how); ACBB_CANCELLED when `cancel` (may be NULL) stopped it;
- * ACBB_ENOMEM. */
+ * ACBB_ENOMEM.
+ * deadline_ms: when s->max_wall_s > 0, the bound's deadline for the run
+ * and the other branch together (acbb_now_ms; the CLI's is the command's
+ * start plus the bound): the other branch gets what is left, not a second
+ * budget, and when nothing is left it is not started (its status
+ * wall_limit). 0: the other branch gets s->max_wall_s of its own. */
 acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
-                                  const acbb_atomic_int *cancel, acbb_branches *out,
-                                  acbb_error *err);
+                                  const acbb_atomic_int *cancel, double deadline_ms,
+                                  acbb_branches *out, acbb_error *err);
 
 /* One run of s as it is, to its end, into `snap` (a run that never
  * started: state failed, its status and message). ACBB_OK also when the

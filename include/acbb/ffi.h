@@ -5,9 +5,10 @@
  *
  * acbb_run_preset_json runs the scene to the end exactly as
  * `acbb run PRESET --set S1 --set S2 ... --json` does (the same loading and
- * checks, the fidelity preset applied, the same run loop) and returns the
- * document that command prints, byte for byte; only wall_ms, the run's
- * wall time, differs between any two runs.
+ * checks, the fidelity preset applied, the same run loop, the other
+ * branch solved for a scene with a [schedule] or a displacement preload,
+ * acbb/branches.h) and returns the document that command prints, byte for
+ * byte; only wall_ms, the run's wall time, differs between any two runs.
  *
  * - preset_text: the preset's content (INI text, NUL-terminated), not a
  *   path. Messages name it "<text>" ("<text>:3: ...").
@@ -35,7 +36,9 @@
  *   bad input, the run's final status for a failed run (ACBB_NONFINITE
  *   and ACBB_ENOMEM as said above).
  * - Thread-safety: reentrant; calls on different threads are independent
- *   (the engine keeps no global mutable state). A call blocks until its
+ *   (the engine keeps no global mutable state but GSL's process-wide error
+ *   handler, which it turns off while a call works and gives back to the
+ *   host when the last call ends; acbb/sim.h). A call blocks until its
  *   run ends (milliseconds to seconds; no cancel). Nothing is printed.
  * - Numbers are read and written with a decimal point whatever locale the
  *   host set (setlocale(LC_ALL, "") under de_DE included): the engine

@@ -190,9 +190,12 @@ typedef struct {
     const acbb_atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
     int threads;
 } acbb_sim_opts;
-/* The first Sim of a process turns GSL's abort-on-error handler off
- * (gsl_set_error_handler_off, once): the engine checks GSL's statuses
- * itself. A program that wants its own handler sets it afterwards. */
+/* GSL's error handler: the engine checks GSL's statuses itself, so while
+ * an acbb_sim_* call (create, restart, step, drive, run) works the
+ * process-wide handler is off; when the call returns it is again what the
+ * host had set (GSL's aborting default included). A host that sets its
+ * handler on one thread while an engine call runs on another races with
+ * it: set it before or between engine calls. */
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                             acbb_error *err);
 

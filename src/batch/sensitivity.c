@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "gsl_quiet.h"
 #include "acbb/measure.h"
 #include "acbb/sensitivity.h"
 
@@ -199,11 +200,13 @@ static acbb_status run_morris(const acbb_scene *base, const acbb_sens_opts *o, p
     double *x = malloc(n * k * sizeof *x), *y = malloc(n * sizeof *y);
     size_t *who = malloc((size_t)r->morris_r * k * sizeof *who);
     acbb_scene *sc = malloc(n * sizeof *sc);
+    acbb_gsl_enter(); /* the generator's allocation can reach GSL's handler (gsl_quiet.h) */
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     acbb_status st = x && y && who && sc && rng ? ACBB_OK : ACBB_ENOMEM;
     if (rng) gsl_rng_set(rng, o->seed ? o->seed : 1);
     for (int t = 0; st == ACBB_OK && t < r->morris_r; t++)
         morris_design(rng, k, r->morris_p, r->morris_delta, x + t * per * k, who + t * k);
+    acbb_gsl_leave();
     for (size_t i = 0; st == ACBB_OK && i < n; i++) {
         sc[i] = *base;
         for (size_t j = 0; st == ACBB_OK && j < k; j++)

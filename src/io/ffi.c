@@ -2,9 +2,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "acbb/ffi.h"
+#include "acbb/branches.h"
 #include "acbb/fidelity.h"
 #include "acbb/json.h"
+#include "acbb/measure.h"
 #include "acbb/sim.h"
+#include "gsl_quiet.h"
 
 /* The scene as `acbb run` prepares it: text, settings, fidelity preset. */
 static acbb_status prepare(const char *text, const char *const *settings, size_t n,
@@ -16,10 +19,13 @@ static acbb_status prepare(const char *text, const char *const *settings, size_t
     return st;
 }
 
-/* Run `sc` to the end and write its document; the call's status. */
+/* Run `sc` to the end and write its document; the call's status. As
+ * `acbb run` does, a scene that wants it (acbb_branches_wanted) also
+ * solves the other branch, within what the run left of fidelity.max_wall_s. */
 static acbb_status run(acbb_json *j, const acbb_scene *sc)
 {
     acbb_error err = { { 0 } };
+    double deadline = sc->max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * sc->max_wall_s : 0.0;
     acbb_sim *sim = NULL;
     acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ 0 }, &sim, &err);
     if (st != ACBB_OK) {
@@ -39,7 +45,10 @@ static acbb_status run(acbb_json *j, const acbb_scene *sc)
     acbb_snapshot *b = nb ? malloc(sizeof *b * (size_t)nb) : NULL;
     for (int k = 0; b && k < nb; k++) acbb_sim_bearing_snapshot(sim, k, &b[k]);
     acbb_sim_free(sim);
-    acbb_json_write_run_parts(j, sc, snap, b, b ? nb : 0, NULL);
+    acbb_branches br;
+    int other = acbb_branches_wanted(sc)
+                && acbb_branches_compare(sc, snap, NULL, deadline, &br, &err) == ACBB_OK;
+    acbb_json_write_run_parts(j, sc, snap, b, b ? nb : 0, other ? &br : NULL);
     free(b);
     if (st == ACBB_OK && snap->state != ACBB_RUN_CONVERGED) st = ACBB_NOT_CONVERGED;
     free(snap);
@@ -63,6 +72,7 @@ char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
     acbb_status st = ACBB_ENOMEM;
     acbb_scene *sc = malloc(sizeof *sc);
     FILE *m = sc ? open_memstream(&text, &len) : NULL;
+    acbb_gsl_enter(); /* the whole call, scene loading included (gsl_quiet.h) */
     if (m) {
         acbb_json j;
         acbb_json_init(&j, m);
@@ -78,6 +88,7 @@ char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
             st = ACBB_ENOMEM;
         }
     }
+    acbb_gsl_leave();
     free(sc);
     if (status) *status = st;
     return text;

@@ -11,7 +11,7 @@
 
 #define NY 8          /* X1, X2 (um), V1, V2 (mm/s), wm, wx, wy, wz (/omega_i) */
 #define FD_STEP 1e-7
-#define TOL 1e-4      /* rtol = atol of the BDF stepper on the scaled states (BENCHMARKS.md) */
+#define TOL ACBB_DYN_RTOL /* rtol = atol of the BDF stepper on the scaled states (dynamic.h) */
 #define SETTLED 1e-6  /* a skipped ball's last window moved omega_m less than this */
 
 struct acbb_dyn {

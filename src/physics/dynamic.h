@@ -26,6 +26,13 @@
 
 #define ACBB_DYN_MAX_THREADS 8
 
+/* rtol = atol of the BDF stepper on the scaled states (BENCHMARKS.md): a
+ * window's averaged speeds and tractions, and so the losses the level
+ * hands on, are resolved to this relative tolerance, not to mech_tol (each
+ * window restarts from the last one's speeds, so two windows at the same
+ * inputs differ by up to it). */
+#define ACBB_DYN_RTOL 1e-4
+
 typedef struct acbb_dyn acbb_dyn;
 
 /* What every ball's window reads (all borrowed, read-only during a call). */

@@ -5,6 +5,7 @@
 #include <string.h>
 #include "acbb/branches.h"
 #include "acbb/fidelity.h"
+#include "acbb/measure.h"
 #include "acbb/units.h"
 
 /* One branch when the two polish to the same steady state: the transient
@@ -55,17 +56,30 @@ static void compare(const acbb_snapshot *st, const acbb_snapshot *tr, acbb_branc
                  && dT <= AGREE_DT_K && out->loss_rel <= AGREE_LOSS_REL;
 }
 
-acbb_status acbb_branch_run(const acbb_scene *o, const atomic_int *cancel, acbb_snapshot *snap)
+/* The branch's status is `rc`, with a message, and no state. */
+static void not_run(acbb_snapshot *snap, acbb_status rc, const char *msg)
+{
+    memset(snap, 0, sizeof *snap);
+    snap->state = ACBB_RUN_FAILED;
+    snap->status = rc;
+    snprintf(snap->message, sizeof snap->message, "%s", msg);
+}
+
+/* The one text of the shared bound, naming the user's value (the other
+ * branch's own scene holds only what was left of it). */
+static void bound_text(acbb_snapshot *snap, double max_wall_s, const char *when)
+{
+    snprintf(snap->message, sizeof snap->message, "wall-clock bound fidelity.max_wall_s = %g s "
+             "(the run and the other branch together) reached %s", max_wall_s, when);
+}
+
+acbb_status acbb_branch_run(const acbb_scene *o, const acbb_atomic_int *cancel, acbb_snapshot *snap)
 {
     acbb_sim *sim = NULL;
     acbb_error e = { "" };
     acbb_status rc = acbb_sim_new_ctl(o, cancel, &sim, &e);
     if (rc != ACBB_OK) {
-        /* Never started: its status and message, no state. */
-        memset(snap, 0, sizeof *snap);
-        snap->state = ACBB_RUN_FAILED;
-        snap->status = rc;
-        snprintf(snap->message, sizeof snap->message, "%s", e.msg);
+        not_run(snap, rc, e.msg); /* never started */
         return rc == ACBB_ENOMEM || rc == ACBB_CANCELLED ? rc : ACBB_OK;
     }
     rc = acbb_sim_drive(sim, &(acbb_run_ctl){ .cancel = cancel });
@@ -74,23 +88,39 @@ acbb_status acbb_branch_run(const acbb_scene *o, const atomic_int *cancel, acbb_
     return rc == ACBB_CANCELLED ? rc : ACBB_OK;
 }
 
-/* The scene in the other thermal mode, run to its end into `snap`. */
-static acbb_status run_other(const acbb_scene *s, const atomic_int *cancel, acbb_snapshot *snap)
+/* The scene in the other thermal mode, run to its end into `snap`, within
+ * what the shared bound left (acbb_branches_compare). */
+static acbb_status run_other(const acbb_scene *s, const acbb_atomic_int *cancel, double deadline_ms,
+                             acbb_snapshot *snap)
 {
     acbb_scene o = *s;
     acbb_fidelity_apply(&o, NULL);
     o.thermal_mode = o.thermal_mode == ACBB_THERMAL_STEADY ? ACBB_THERMAL_TRANSIENT
                                                            : ACBB_THERMAL_STEADY;
-    return acbb_branch_run(&o, cancel, snap);
+    int shared = o.max_wall_s > 0.0 && deadline_ms > 0.0;
+    if (shared) {
+        o.max_wall_s = 1e-3 * (deadline_ms - acbb_now_ms());
+        if (!(o.max_wall_s > 0.0)) {
+            not_run(snap, ACBB_WALL_LIMIT, "");
+            bound_text(snap, s->max_wall_s, "before the other branch started");
+            return ACBB_OK;
+        }
+    }
+    acbb_status rc = acbb_branch_run(&o, cancel, snap);
+    if (shared && snap->status == ACBB_WALL_LIMIT)
+        bound_text(snap, s->max_wall_s, snap->state == ACBB_RUN_FAILED && snap->iteration == 0
+                   ? "during the other branch's set-up"
+                   : "in the other branch; last good state kept");
+    return rc;
 }
 
 acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
-                                  const atomic_int *cancel, acbb_branches *out,
-                                  acbb_error *err)
+                                  const acbb_atomic_int *cancel, double deadline_ms,
+                                  acbb_branches *out, acbb_error *err)
 {
     acbb_snapshot *other = malloc(sizeof *other);
     if (!other) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    acbb_status rc = run_other(s, cancel, other);
+    acbb_status rc = run_other(s, cancel, deadline_ms, other);
     if (rc != ACBB_OK) {
         free(other);
         return acbb_error_set(err, rc, "%s", rc == ACBB_CANCELLED

@@ -223,8 +223,8 @@ static acbb_status polish(acbb_sim *sim, acbb_error *err)
     if (!p.best) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     acbb_polish_result r;
     acbb_status rc = acbb_polish_iterate(polish_step, &p,
-                                         acbb_polish_resolution(sim->s.mech_tol, sim->T,
-                                                                sim->nw.n), &r, err);
+                                         acbb_polish_resolution(acbb_polish_loss_rtol(&sim->s),
+                                                                sim->T, sim->nw.n), &r, err);
     if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS && p.best_res < INFINITY) {
         restore(sim, p.best);
         size_t n = strlen(err->msg);
@@ -309,8 +309,10 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
     double Tn[ACBB_MAX_NODES];
     save(sim, sim->keep);
     for (;;) {
-        acbb_status rc = steady_mode ? steady_step(sim, 0.5, Tn, dT)
-                                     : thermal_step(sim, Tn, dT, dTs);
+        /* each retry evaluates again (issue 26 item 7; the state is the kept one here) */
+        acbb_status rc = acbb_simx_stop_check(sim, err);
+        if (rc != ACBB_OK) return rc;
+        rc = steady_mode ? steady_step(sim, 0.5, Tn, dT) : thermal_step(sim, Tn, dT, dTs);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
         if (!acbb_snap_all_finite(Tn, sim->nw.n))
@@ -405,7 +407,7 @@ static acbb_status set_step(acbb_sim *sim)
     return rc;
 }
 
-acbb_status acbb_sim_step(acbb_sim *sim)
+static acbb_status step_body(acbb_sim *sim)
 {
     if (sim->state != ACBB_RUN_RUNNING)
         return sim->status;
@@ -476,6 +478,16 @@ acbb_status acbb_sim_step(acbb_sim *sim)
     return ACBB_OK;
 }
 
+/* The public entry points bracket GSL (gsl_quiet.h): the handler is off
+ * while they work and the host's again when they return. */
+acbb_status acbb_sim_step(acbb_sim *sim)
+{
+    acbb_gsl_enter();
+    acbb_status rc = step_body(sim);
+    acbb_gsl_leave();
+    return rc;
+}
+
 acbb_run_state acbb_sim_state(const acbb_sim *sim) { return sim->state; }
 
 acbb_status acbb_sim_run(acbb_sim *sim)
@@ -503,7 +515,7 @@ static int wall_limit(acbb_sim *sim)
     return 1;
 }
 
-acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
+static acbb_status drive_body(acbb_sim *sim, const acbb_run_ctl *ctl)
 {
     if (ctl && ctl->cancel) {
         sim->cancel = ctl->cancel;
@@ -514,11 +526,19 @@ acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
     while (sim->state == ACBB_RUN_RUNNING) {
         if (acbb_cancelled(sim->cancel))
             return fail(sim, ACBB_CANCELLED, "%s", "cancelled; last good state kept");
-        acbb_sim_step(sim);
+        step_body(sim);
         if (wall_limit(sim)) break;
         if (call_hook(sim, ctl)) break;
     }
     return sim->status;
+}
+
+acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl)
+{
+    acbb_gsl_enter();
+    acbb_status rc = drive_body(sim, ctl);
+    acbb_gsl_leave();
+    return rc;
 }
 
 /* ---- set-up ---- */
@@ -657,10 +677,9 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
-acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
-                            acbb_error *err)
+static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                               acbb_error *err)
 {
-    acbb_gsl_quiet();
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))) {
         free(sim);
@@ -678,6 +697,15 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
     }
     *out = sim;
     return ACBB_OK;
+}
+
+acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                            acbb_error *err)
+{
+    acbb_gsl_enter();
+    acbb_status rc = create_body(s, o, out, err);
+    acbb_gsl_leave();
+    return rc;
 }
 
 void acbb_sim_free(acbb_sim *sim)
@@ -704,7 +732,7 @@ static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *e
     return ACBB_OK;
 }
 
-acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
+static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
 {
     if (sim->set || s->set_arrangement != ACBB_SET_SINGLE) return set_restart(sim, s, err);
     double T[ACBB_MAX_NODES];
@@ -728,6 +756,14 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
     return ACBB_OK;
 }
 
+acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
+{
+    acbb_gsl_enter();
+    acbb_status rc = restart_body(sim, s, warm, err);
+    acbb_gsl_leave();
+    return rc;
+}
+
 /* ---- snapshot (the per-ball and squeeze views: sim_snapshot.c) ---- */
 
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
@@ -735,7 +771,8 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     const acbb_network *nw = &sim->nw;
     if (sim->set) {
         acbb_set_sim_snapshot(sim->set, o);
-        if (sim->status == ACBB_CANCELLED || sim->status == ACBB_WALL_LIMIT) {
+        if ((sim->status == ACBB_CANCELLED || sim->status == ACBB_WALL_LIMIT)
+            && o->state == ACBB_RUN_RUNNING) {
             /* ended by the run loop (cancel, wall-clock bound), not the set */
             o->state = sim->state;
             o->status = sim->status;
@@ -818,10 +855,10 @@ double acbb_simm_loss(const acbb_sim *b) { return b->loss.total; }
 /* The set's operating point (its schedule, sim_set.c): b's inner-ring speed. */
 void acbb_simm_speed(acbb_sim *b, double inner_speed) { b->s.inner_speed = inner_speed; }
 
-void acbb_simm_unbound(acbb_sim *b)
+void acbb_simm_deadline(acbb_sim *b, double deadline_ms)
 {
-    b->deadline_ms = 0.0;
-    if (b->dyn) acbb_dyn_set_stop(b->dyn, NULL, NULL);
+    b->deadline_ms = deadline_ms;
+    if (b->dyn) acbb_dyn_set_stop(b->dyn, deadline_ms > 0.0 ? past_bound : NULL, b);
 }
 
 void acbb_simm_mode(acbb_sim *b, int transient, int polishing)

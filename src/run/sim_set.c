@@ -84,6 +84,19 @@ static void spacer_growth(acbb_set_sim *ss)
     ss->spacer = u[ss->n - 1];
 }
 
+/* The caller's cancel flag, then fidelity.max_wall_s (the deadline the run
+ * loop armed for this step, sim.c arm_bound), checked in every loop of a
+ * step that can run long (issue 26 item 7). */
+static acbb_status stop_check(const acbb_set_sim *ss, acbb_error *err)
+{
+    if (acbb_cancelled(ss->cancel))
+        return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
+    if (ss->deadline_ms > 0.0 && acbb_now_ms() >= ss->deadline_ms)
+        return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = "
+                              "%g s reached; last good state kept", ss->s.max_wall_s);
+    return ACBB_OK;
+}
+
 /* Shaft equilibrium, alternated with the ball speeds at the quasi-dynamic
  * and dynamic levels (sim.c mechanics(): one pass inside transient steps,
  * up to QD_PASSES otherwise). */
@@ -95,8 +108,7 @@ static acbb_status mechanics(acbb_set_sim *ss, int transient, acbb_error *err)
     if (rc != ACBB_OK || !traction) return rc;
     for (int pass = 0; pass < (transient ? 1 : QD_PASSES); pass++) {
         double change = 0.0;
-        if (acbb_cancelled(ss->cancel))
-            return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
+        if ((rc = stop_check(ss, err)) != ACBB_OK) return rc;
         for (int k = 0; k < ss->n; k++) {
             double ch;
             if ((rc = acbb_simm_traction(ss->b[k], &ch, err)) != ACBB_OK) return rc;
@@ -205,7 +217,11 @@ static acbb_status fail(acbb_set_sim *ss, acbb_status st, const char *msg)
 {
     ss->run.state = ACBB_RUN_FAILED;
     ss->run.status = st;
-    snprintf(ss->run.msg, sizeof ss->run.msg, "%s", msg);
+    if (st == ACBB_WALL_LIMIT) /* one text wherever the bound was met (a member's or the set's) */
+        snprintf(ss->run.msg, sizeof ss->run.msg, "wall-clock bound fidelity.max_wall_s = %g s "
+                 "reached; last good state kept", ss->s.max_wall_s);
+    else
+        snprintf(ss->run.msg, sizeof ss->run.msg, "%s", msg);
     return st;
 }
 
@@ -259,7 +275,10 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
     double Tn[ACBB_SET_NMAX];
     save(ss);
     for (;;) {
-        acbb_status rc = thermal(ss, steady, 0.5, Tn, dT, dTs);
+        /* each retry evaluates the whole set again (the state is the kept one here) */
+        acbb_status rc = stop_check(ss, err);
+        if (rc != ACBB_OK) return rc;
+        rc = thermal(ss, steady, 0.5, Tn, dT, dTs);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
         if (!acbb_snap_all_finite(Tn, ss->ns.n))
@@ -285,12 +304,9 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
 {
     acbb_set_sim *ss = ctx;
     double Tn[ACBB_SET_NMAX], dT, dTs;
-    if (acbb_cancelled(ss->cancel))
-        return acbb_error_set(err, ACBB_CANCELLED, "cancelled; last good state kept");
-    if (ss->deadline_ms > 0.0 && acbb_now_ms() >= ss->deadline_ms)
-        return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = "
-                              "%g s reached; last good state kept", ss->s.max_wall_s);
-    acbb_status rc = thermal(ss, 1, relax, Tn, &dT, &dTs);
+    acbb_status rc = stop_check(ss, err);
+    if (rc != ACBB_OK) return rc;
+    rc = thermal(ss, 1, relax, Tn, &dT, &dTs);
     if (rc != ACBB_OK) return acbb_error_set(err, rc, "steady solve failed");
     if (!acbb_snap_all_finite(Tn, ss->ns.n)) /* fmax in the residual drops a NaN */
         return acbb_error_set(err, ACBB_NONFINITE, "non-finite temperature in the steady "
@@ -306,8 +322,8 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
 static acbb_status polish(acbb_set_sim *ss, acbb_error *err)
 {
     acbb_polish_result r;
-    acbb_status rc = acbb_polish_iterate(polish_step, ss, acbb_polish_resolution(ss->s.mech_tol,
-                                         ss->T, ss->ns.n), &r, err);
+    double resolution = acbb_polish_resolution(acbb_polish_loss_rtol(&ss->s), ss->T, ss->ns.n);
+    acbb_status rc = acbb_polish_iterate(polish_step, ss, resolution, &r, err);
     if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS) {
         size_t n = strlen(err->msg);
         snprintf(err->msg + n, sizeof err->msg - n, "; last state kept");
@@ -386,7 +402,8 @@ static acbb_status isothermal(acbb_set_sim *ss)
     acbb_error err = { "" };
     for (int it = 0; it < ISO_ITERS; it++) {
         double prev = ss->total;
-        acbb_status rc = evaluate(ss, 0, 0, &err);
+        acbb_status rc = stop_check(ss, &err);
+        if (rc == ACBB_OK) rc = evaluate(ss, 0, 0, &err);
         if (rc != ACBB_OK) return fail(ss, rc, err.msg[0] ? err.msg : acbb_status_name(rc));
         ss->run.iter++;
         if (fabs(ss->total - prev) <= 1e-12 * fmax(ss->total, 1e-12)) break;
@@ -476,6 +493,13 @@ static double static_dx(double F, void *ctx)
     return dx;
 }
 
+/* The set-up met the user's bound (not a member's share of it). */
+static acbb_status setup_wall(const acbb_scene *s, acbb_error *err)
+{
+    return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = %g s "
+                          "reached during the set-up, before the first state", s->max_wall_s);
+}
+
 /* fidelity.max_wall_s bounds the set's whole set-up (issue 20 item 8), not
  * each member's: member k's own set-up gets what its predecessors left. */
 static acbb_status member_bound(const acbb_scene *s, double t0, acbb_scene *m, acbb_error *err)
@@ -483,8 +507,7 @@ static acbb_status member_bound(const acbb_scene *s, double t0, acbb_scene *m, a
     if (!(s->max_wall_s > 0.0)) return ACBB_OK;
     double left = s->max_wall_s - 1e-3 * (acbb_now_ms() - t0);
     if (left <= 0.0)
-        return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = %g s "
-                              "reached during the set-up, before the first state", s->max_wall_s);
+        return setup_wall(s, err);
     m->max_wall_s = left;
     return ACBB_OK;
 }
@@ -504,10 +527,9 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
         acbb_status rc = member_bound(s, t0, &m, err);
         if (rc == ACBB_OK) rc = acbb_sim_create(&m, o, &ss->b[k], err);
         if (rc == ACBB_WALL_LIMIT) /* the user's bound, not the member's share of it */
-            return acbb_error_set(err, rc, "wall-clock bound fidelity.max_wall_s = %g s reached "
-                                  "during the set-up, before the first state", s->max_wall_s);
+            return setup_wall(s, err);
         if (rc != ACBB_OK) return rc;
-        acbb_simm_unbound(ss->b[k]); /* the set's run loop bounds its steps */
+        acbb_simm_deadline(ss->b[k], 0.0); /* the set's steps hand theirs down */
         nw[k] = acbb_simm_network(ss->b[k]);
         if (!(ss->scratch[k] = malloc(sizeof *ss->scratch[k]))
             || !(ss->lift_ms[k] = malloc(sizeof *ss->lift_ms[k])))
@@ -525,7 +547,14 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     if (rc != ACBB_OK) return rc;
     for (int i = 0; i < ss->ns.n; i++)
         ss->T[i] = acbb_tnet_is_fixed(ss->ns.net, i) ? ss->ns.T_fixed[i] : s->ambient_C;
-    return evaluate(ss, 0, 0, err);
+    /* The first evaluation (at the dynamic level seconds of ball motion)
+     * within what the members' set-ups left of the bound (issue 26 item 7). */
+    acbb_set_sim_deadline(ss, s->max_wall_s > 0.0 ? t0 + 1e3 * s->max_wall_s : 0.0);
+    rc = evaluate(ss, 0, 0, err);
+    acbb_set_sim_deadline(ss, 0.0); /* the run loop arms each step's */
+    if (rc == ACBB_WALL_LIMIT)
+        return setup_wall(s, err);
+    return rc;
 }
 
 acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_set_sim **out,
@@ -579,5 +608,9 @@ acbb_run_state acbb_set_sim_outcome(const acbb_set_sim *ss, acbb_status *status,
 }
 
 void acbb_set_sim_cancel(acbb_set_sim *ss, const atomic_int *cancel) { ss->cancel = cancel; }
-void acbb_set_sim_deadline(acbb_set_sim *ss, double deadline_ms) { ss->deadline_ms = deadline_ms; }
+void acbb_set_sim_deadline(acbb_set_sim *ss, double deadline_ms)
+{
+    ss->deadline_ms = deadline_ms;
+    for (int k = 0; k < ss->n; k++) acbb_simm_deadline(ss->b[k], deadline_ms);
+}
 

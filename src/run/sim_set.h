@@ -25,8 +25,10 @@ acbb_status acbb_set_sim_step(acbb_set_sim *ss);
 /* The run state, with its status and step count. */
 acbb_run_state acbb_set_sim_outcome(const acbb_set_sim *ss, acbb_status *status, long *iter);
 void acbb_set_sim_cancel(acbb_set_sim *ss, const atomic_int *cancel);
-/* The run's wall-clock deadline (acbb_now_ms; 0 none), read by the steady
- * polish, the one loop inside a set's step that can run long. */
+/* The run's wall-clock deadline (acbb_now_ms; 0 none), read by every loop
+ * inside a set's step that can run long (the step-size retries, the ball
+ * speed passes, the isothermal iterations, the steady polish) and handed
+ * to every member's own inner loops. */
 void acbb_set_sim_deadline(acbb_set_sim *ss, double deadline_ms);
 void acbb_set_sim_snapshot(const acbb_set_sim *ss, acbb_snapshot *o);
 acbb_status acbb_set_sim_bearing_snapshot(const acbb_set_sim *ss, int k, acbb_snapshot *o);
@@ -51,9 +53,10 @@ double acbb_simm_loss(const acbb_sim *b);         /* total loss, W */
 void acbb_simm_speed(acbb_sim *b, double inner_speed); /* rad/s, the set's schedule */
 void acbb_simm_expand(acbb_sim *b);               /* expansions at b's temperatures */
 void acbb_simm_mode(acbb_sim *b, int transient, int polishing);
-/* Drop b's wall-clock deadline after its set-up (fidelity.max_wall_s then
- * bounds the set's steps in the run loop, not each member's). */
-void acbb_simm_unbound(acbb_sim *b);
+/* b's wall-clock deadline (acbb_now_ms; 0 none): the set's, so that b's
+ * own inner loops (its ball-speed passes, every right-hand side of the
+ * dynamic level) stop at the set's fidelity.max_wall_s (issue 26 item 7). */
+void acbb_simm_deadline(acbb_sim *b, double deadline_ms);
 acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err);
 acbb_status acbb_simm_heat(acbb_sim *b, acbb_error *err);
 void acbb_simm_save(acbb_sim *b);

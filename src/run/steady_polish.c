@@ -7,6 +7,12 @@
  * below -1, where a fixed 0.5 fails below -3. */
 #include <math.h>
 #include "steady_polish.h"
+#include "dynamic.h"
+
+double acbb_polish_loss_rtol(const acbb_scene *s)
+{
+    return s->model == ACBB_MODEL_DYNAMIC ? fmax(s->mech_tol, ACBB_DYN_RTOL) : s->mech_tol;
+}
 
 double acbb_polish_resolution(double mech_tol, const double *T, int n)
 {

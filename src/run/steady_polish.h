@@ -11,6 +11,7 @@
 #ifndef ACBB_STEADY_POLISH_H
 #define ACBB_STEADY_POLISH_H
 
+#include "acbb/scene.h"
 #include "acbb/status.h"
 
 #define ACBB_POLISH_ITERS 100   /* iteration cap (60, undamped, before issue 18) */
@@ -24,6 +25,13 @@
 /* Relative tolerance below which the polish reuses a ball's results
  * (sim.c POLISH_SKIP_TOL, below mech_tol 1e-8). */
 #define ACBB_POLISH_REUSE_TOL 1e-9
+
+/* The relative tolerance the scene's losses are resolved to: mech_tol, or
+ * at the dynamic level the integrator's (dynamic.h ACBB_DYN_RTOL), whose
+ * windows differ by up to it from one evaluation to the next; with
+ * mech_tol there, the polish took that noise for overshoot, damped to its
+ * floor and ended diverged (combined-load, issue 26 item 11). */
+double acbb_polish_loss_rtol(const acbb_scene *s);
 
 /* The resolution of a polish over temperatures T[0..n) whose losses are
  * resolved to mech_tol relative (or the reuse tolerance): that fraction

@@ -19,6 +19,7 @@
 #include <math.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
+#include "gsl_quiet.h"
 #include "lubricant_grade.h"
 #include "viscosity_index_table.h"
 
@@ -91,11 +92,15 @@ double acbb_nu100_from_vi(double nu40, double vi)
     if (!(hi > lo) || vi_miss(lo, &g) > 0.0) return below_range(nu40, vi);
     if (vi_miss(hi, &g) < 0.0) return hi;
     gsl_function F = { vi_miss, &g };
+    acbb_gsl_enter(); /* a scene call, outside any Sim's bracket */
     gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (!s) return NAN;
-    gsl_root_fsolver_set(s, &F, lo, hi);
-    double Y = 0.5 * (lo + hi);
-    for (int it = 0; it < 200; it++) {
+    if (!s) {
+        acbb_gsl_leave();
+        return NAN;
+    }
+    /* A NaN at an end (a NaN vi from a library caller) fails here. */
+    double Y = gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS ? 0.5 * (lo + hi) : NAN;
+    for (int it = 0; it < 200 && isfinite(Y); it++) {
         gsl_root_fsolver_iterate(s);
         Y = gsl_root_fsolver_root(s);
         if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
@@ -103,6 +108,7 @@ double acbb_nu100_from_vi(double nu40, double vi)
             break;
     }
     gsl_root_fsolver_free(s);
+    acbb_gsl_leave();
     return Y;
 }
 

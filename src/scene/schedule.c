@@ -126,6 +126,13 @@ static acbb_status parse_column(int c, const char *tok, const char *text, acbb_s
 acbb_status acbb_schedule_parse_row(const char *text, acbb_schedule_row *row, acbb_error *err)
 {
     char buf[256], *tok[N_COLUMNS + 2];
+    /* Cut short, a row would be read as another (a value's digits or a
+     * fifth value dropped, silently): refused whole (issue 26 fuzzing). */
+    if (strlen(text) >= sizeof buf) {
+        char head[48];
+        snprintf(head, sizeof head, "%.40s...", text);
+        return bad_row(err, head, "%s", "longer than 255 characters");
+    }
     snprintf(buf, sizeof buf, "%s", text);
     int n = 0;
     for (char *p = buf, *save = NULL; n < N_COLUMNS + 2; p = NULL) {
@@ -192,6 +199,12 @@ acbb_status acbb_sf_schedule_set(acbb_scene *s, const char *key, const char *val
     free(buf);
     if (rc == ACBB_OK && cross_check) rc = acbb_scene_validate(&trial, err);
     if (rc == ACBB_OK) *s = trial;
+    else if (err && strncmp(err->msg, "schedule.rows", 13) != 0) {
+        /* the key the user wrote, then which row and why */
+        char why[sizeof err->msg];
+        snprintf(why, sizeof why, "%s", err->msg);
+        acbb_error_set(err, rc, "schedule.rows: %s", why);
+    }
     return rc;
 }
 

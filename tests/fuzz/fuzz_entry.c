@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/scene.h"
+#include "acbb/schedule.h"
 #include "fuzz_entry.h"
 
 /* One temporary file per process, rewritten for every input: the loader
@@ -137,4 +138,54 @@ acbb_fuzz_outcome acbb_fuzz_set(const uint8_t *data, size_t size, char *why, siz
     }
     free(text);
     return o;
+}
+
+/* One row's text: refused with a message, or finite and exact in print. */
+static acbb_fuzz_outcome schedule_row(const char *text, acbb_scene *s, char *why, size_t n)
+{
+    acbb_schedule_row r;
+    acbb_error err = { { 0 } };
+    acbb_fuzz_outcome o = check_refusal(acbb_schedule_parse_row(text, &r, &err), &err,
+                                        "schedule row", why, n);
+    if (o != ACBB_FUZZ_ACCEPTED) return o;
+    if (!isfinite(r.t) || !isfinite(r.inner_speed) || !isfinite(r.axial_load) ||
+        !isfinite(r.radial_load))
+        return broken(why, n, "accepted row \"%s\" has a non-finite value%s", text, "");
+    if (s->schedule_n >= ACBB_SCHEDULE_MAX) return ACBB_FUZZ_ACCEPTED;
+    s->schedule[s->schedule_n++] = r;
+    char back[256];
+    acbb_schedule_row again;
+    acbb_schedule_format_row(s, s->schedule_n - 1, back, sizeof back);
+    /* == (not the bits): -0 prints as 0, the same value */
+    if (acbb_schedule_parse_row(back, &again, &err) != ACBB_OK || again.t != r.t ||
+        again.inner_speed != r.inner_speed || again.axial_load != r.axial_load ||
+        again.radial_load != r.radial_load)
+        return broken(why, n, "row \"%s\" prints as \"%s\", which reads back otherwise", text,
+                      back);
+    return ACBB_FUZZ_ACCEPTED;
+}
+
+acbb_fuzz_outcome acbb_fuzz_schedule(const uint8_t *data, size_t size, char *why, size_t n)
+{
+    char *text = malloc(size + 1);
+    if (!text) return ACBB_FUZZ_REJECTED;
+    memcpy(text, data, size);
+    text[size] = '\0';
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.schedule_n = 0;
+    acbb_fuzz_outcome o = ACBB_FUZZ_ACCEPTED;
+    int lines = 0;
+    for (char *line = text, *next; line && o == ACBB_FUZZ_ACCEPTED
+                                   && lines < ACBB_SCHEDULE_MAX; line = next, lines++) {
+        next = strchr(line, '\n');
+        if (next) *next++ = '\0';
+        if (!*line && !next && lines > 0) break; /* the text's last newline */
+        o = schedule_row(line, &s, why, n);
+    }
+    free(text);
+    if (o != ACBB_FUZZ_ACCEPTED) return o;
+    acbb_error err = { { 0 } };
+    o = check_refusal(acbb_scene_validate(&s, &err), &err, "schedule", why, n);
+    return o == ACBB_FUZZ_ACCEPTED ? check_scene(&s, why, n) : o;
 }

@@ -28,6 +28,14 @@ acbb_fuzz_outcome acbb_fuzz_preset(const uint8_t *data, size_t size, char *why, 
  * acbb_scene_apply_edits, then each one alone through acbb_scene_set. */
 acbb_fuzz_outcome acbb_fuzz_set(const uint8_t *data, size_t size, char *why, size_t n);
 
+/* The input as `row = ` values of a [schedule], one row per line (at most
+ * ACBB_SCHEDULE_MAX; more are not read): each through acbb_schedule_parse_row (an
+ * accepted row is finite and prints back, acbb_schedule_format_row, to
+ * text that reads as the very same doubles), then the accepted rows as
+ * the 7008C scene's schedule through acbb_scene_validate (an accepted
+ * schedule is a valid scene; a refused one names its row). */
+acbb_fuzz_outcome acbb_fuzz_schedule(const uint8_t *data, size_t size, char *why, size_t n);
+
 /* The temporary file acbb_fuzz_preset loads (a refusal names it). */
 const char *acbb_fuzz_preset_path(void);
 
