@@ -210,8 +210,55 @@ static void test_ring_stiffness(void)
        "(%.0f N/um)", Kr * 1e-6, snap_a.stiffness_axial * 1e-6);
 }
 
+/* Inputs the scene as set cannot feel are named with the key that makes
+ * them act (issue 29 item 1): a single bearing's preload_N under a force
+ * preload, its axial load under a displacement preload; and the per-key
+ * query a what-if line asks (acbb_scene_key_inactive), names listed after
+ * a sectioned first one and wildcards included. */
+static void test_inactive_keys(void)
+{
+    acbb_scene s;
+    acbb_inactive_effect e = { "", "", "" };
+    bool off;
+    acbb_scene_default(&s);
+    ok(!acbb_scene_key_inactive(&s, "mounting.preload_N", NULL),
+       "force preload, default preload_N: nothing to say");
+    s.preload_force = 600.0;
+    off = acbb_scene_key_inactive(&s, "mounting.preload_N", &e);
+    ok(off && strstr(e.why, "mounting.preload = displacement"),
+       "force preload, preload_N = 600: no effect, and says what makes it act (%s)", e.why);
+    ok(!acbb_scene_key_inactive(&s, "operating.axial_load_N", NULL),
+       "force preload: the axial load acts");
+    s.preload = ACBB_PRELOAD_DISPLACEMENT;
+    s.axial_load = 1000.0;
+    off = acbb_scene_key_inactive(&s, "operating.axial_load_N", &e);
+    ok(off && strstr(e.why, "mounting.preload = force")
+           && !acbb_scene_key_inactive(&s, "mounting.preload_N", NULL),
+       "displacement preload: the axial load has none, preload_N has (%s)", e.why);
+    s.set_arrangement = ACBB_SET_DB;
+    ok(!acbb_scene_key_inactive(&s, "operating.axial_load_N", NULL),
+       "a DB pair under displacement preload carries the axial load");
+    acbb_scene_default(&s);
+    s.schedule_n = 1;
+    ok(acbb_scene_key_inactive(&s, "operating.radial_load_N", NULL)
+           && acbb_scene_key_inactive(&s, "operating.inner_speed_rpm", NULL)
+           && !acbb_scene_key_inactive(&s, "operating.moment_load_Nm", NULL),
+       "a schedule: speed and loads named in one row (sectioned first, then bare names)");
+    acbb_scene_default(&s);
+    s.network = ACBB_NET_7;
+    s.cap_thickness = 5e-3;
+    ok(acbb_scene_key_inactive(&s, "surroundings.cap_outer_diameter_mm", NULL)
+           && acbb_scene_key_inactive(&s, "surroundings.cap_thickness_mm", NULL)
+           && !acbb_scene_key_inactive(&s, "surroundings.housing_outer_diameter_mm", NULL),
+       "a wildcard row (surroundings.cap_*) names each cap key, no other");
+    s.model = ACBB_MODEL_STATIC;
+    ok(acbb_scene_key_inactive(&s, "effects.centrifugal", NULL),
+       "an effect switch row (\"effects.centrifugal = on\") names its key");
+}
+
 int main(void)
 {
+    test_inactive_keys();
     gsl_set_error_handler_off();
     test_ring_stiffness();
     test_thrust_deflection();

@@ -405,6 +405,11 @@ typedef struct {
 } acbb_inactive_effect;
 size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap);
 
+/* Whether the preset key "section.key" ("mounting.preload_N") has no effect
+ * in scene s: true with the row that says why (and which key makes it act)
+ * in *out (may be NULL). For a what-if line or an editor mark. */
+bool acbb_scene_key_inactive(const acbb_scene *s, const char *key, acbb_inactive_effect *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -535,6 +535,7 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
 {
     acbb_scene d;
     acbb_scene_default(&d);
+    bool single = s->set_arrangement == ACBB_SET_SINGLE;
     const struct {
         bool when;
         acbb_inactive_effect e;
@@ -580,9 +581,56 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
         { s->loss_ehl_rolling && !s->ehl_film && acbb_sf_profile_own(s, "effects", "loss_ehl_rolling"),
           { "loss_ehl_rolling", "effects.ehl_film = off: no film, no EHL rolling resistance",
             "effects.loss_ehl_rolling = on" } },
+        /* One bearing (issue 29 item 1): a force preload is the axial load
+         * itself; a displacement preload holds the ring where preload_N put
+         * it at rest, so the thrust goes to the fixture. A set uses both. */
+        { single && s->preload == ACBB_PRELOAD_FORCE && s->preload_force != d.preload_force,
+          { "preload_N", "mounting.preload = force: the axial load (operating.axial_load_N) "
+            "preloads a single bearing; preload_N acts under mounting.preload = displacement",
+            "mounting.preload_N" } },
+        { single && s->preload == ACBB_PRELOAD_DISPLACEMENT && s->axial_load != 0.0,
+          { "axial_load", "mounting.preload = displacement holds the ring where "
+            "mounting.preload_N put it at rest: the thrust goes to the fixture; the axial load "
+            "acts under mounting.preload = force",
+            "operating.axial_load_N" } },
     };
     size_t n = 0;
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
         if (rows[i].when && n < cap) out[n++] = rows[i].e;
     return n;
 }
+
+/* Does one name of an inactive row ("effects.centrifugal = on",
+ * "surroundings.cap_*", "axial_load_N" after a sectioned first name) name
+ * the key "section.name"? */
+static bool names_key(const char *part, size_t len, const char *section, const char *key)
+{
+    const char *eq = memchr(part, ' ', len); /* drop " = on" */
+    size_t n = eq ? (size_t)(eq - part) : len;
+    char want[96];
+    if (memchr(part, '.', n)) snprintf(want, sizeof want, "%s", key);
+    else snprintf(want, sizeof want, "%s", strchr(key, '.') ? strchr(key, '.') + 1 : key);
+    if (n > 0 && part[n - 1] == '*') return strncmp(part, want, n - 1) == 0;
+    (void)section;
+    return strlen(want) == n && strncmp(part, want, n) == 0;
+}
+
+bool acbb_scene_key_inactive(const acbb_scene *s, const char *key, acbb_inactive_effect *out)
+{
+    acbb_inactive_effect in[32];
+    size_t n = acbb_scene_inactive_effects(s, in, 32);
+    for (size_t i = 0; i < n; i++) {
+        const char *p = in[i].key;
+        while (*p) {
+            size_t len = strcspn(p, ",");
+            if (names_key(p, len, NULL, key)) {
+                if (out) *out = in[i];
+                return true;
+            }
+            p += len;
+            while (*p == ',' || *p == ' ') p++;
+        }
+    }
+    return false;
+}
+
