@@ -336,7 +336,7 @@ int acbb_cli_cmd_study(const acbb_cli_args *args)
     acbb_cli_args *a = malloc(sizeof *a);
     if (!a) return ACBB_EXIT_INTERNAL;
     *a = *args;
-    const char *name = strcmp(a->pos[0], "seed") == 0 ? "7008C" : a->pos[0];
+    const char *name = acbb_cli_study_preset_name(a->pos[0]);
     if (acbb_cli_resolve_preset(name, a->preset_buf, sizeof a->preset_buf, true) != 0)
         rc = ACBB_EXIT_INPUT;
     a->preset = a->preset_buf;

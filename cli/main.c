@@ -20,6 +20,7 @@
 #include "output.h"
 #include "sweep.h"
 #include "json_status.h"
+#include "out_guard.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -254,7 +255,7 @@ static int run_command(int argc, char **argv)
     }
     a->sets = sets;
     rc = acbb_cli_parse(c, argc, argv, first, a);
-    if (rc == 0) rc = acbb_cli_check_paths(a); /* an output over an input: exit 2 */
+    if (rc == 0) rc = acbb_cli_out_guard(a); /* every output checked before anything runs */
     if (rc == 0) rc = c->run(a);
     else if (rc < 0) rc = 0;     /* --help was printed */
     free(sets);

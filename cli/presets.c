@@ -129,6 +129,11 @@ int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report)
     return -1;
 }
 
+const char *acbb_cli_study_preset_name(const char *arg)
+{
+    return strcmp(arg, "seed") == 0 ? "7008C" : arg;
+}
+
 /* ---- acbb presets ---- */
 
 static int cmp_str(const void *x, const void *y)

@@ -20,6 +20,11 @@ cp "$P" "$TMP/keep.ini"
 "$ACBB" sweep "$P" $Q $G --jsonl "$TMP/in.jsonl" >/dev/null 2>&1
 echo "not json" >"$TMP/garbage.json"
 NX=$TMP/no/such/dir
+# issue 26: a dangling symlink's target is the file written; a name longer
+# than the writer's temporary file leaves room for (NAME_MAX - 24).
+ln -s dl-target.csv "$TMP/dl"
+LONG=$TMP/$(printf 'x%.0s' $(seq 240)).csv
+cp "$P" "$TMP/seed.ini"
 
 # want | arguments (word-split; no spaces inside one argument)
 while IFS='|' read -r want args; do
@@ -62,6 +67,11 @@ done <<EOF_TABLE
 4| merge /dev/full $TMP/in.jsonl
 0| merge $TMP/m.jsonl $TMP/in.jsonl
 2| study $P --csv $NX/s.csv
+2| study $TMP/seed.ini --csv $TMP/seed.ini
+2| study $P --csv $P
+2| sweep $P $Q $G --jsonl $TMP/dl --csv $TMP/dl-target.csv
+2| run $P $Q --csv $LONG
+2| study $P --csv $LONG
 2| study $P --max-wall -3
 3| study $P --set fidelity.model=dynamic --max-wall 0.001 --csv -
 3| report $P --set fidelity.model=dynamic --max-wall 0.001 --json
@@ -71,6 +81,9 @@ EOF_TABLE
 [ "$(cmp -s "$TMP/keep.ini" "$P"; echo $?)" = 1 ] && grep -q '^axial_load_N = 1000$' "$TMP/keep.ini" &&
     ! grep -q '^iteration,' "$TMP/keep.ini"
 t $? "the preset named as --csv is still the preset (only the edit changed it)"
+
+cmp -s "$TMP/seed.ini" "$P" && cmp -s "$P" presets/7008C.ini && [ ! -e "$TMP/dl-target.csv" ]
+t $? "study --csv PRESET left the preset alone; the dangling link's target was not made"
 
 # --max-wall: the named status and the last good state in the JSON. The
 # scene: a quasi-static set-up (milliseconds) and a [schedule] of 9e7 s
@@ -138,6 +151,11 @@ if mkfifo "$TMP/fifo" 2>/dev/null; then
     has "$TMP/err" "a FIFO with no reader" "... saying so"
     timeout 60 "$ACBB" run "$P" $Q --csv "$TMP/fifo" >/dev/null 2>"$TMP/err"
     code $? 2 "run --csv FIFO without a reader exits 2 at once"
+    # study used to run its 48 points first and fail at the end (issue 26).
+    timeout 60 "$ACBB" study "$P" --csv "$TMP/fifo" >"$TMP/out" 2>"$TMP/err"
+    code $? 2 "study --csv FIFO without a reader exits 2"
+    [ ! -s "$TMP/out" ]
+    t $? "... before anything runs (no table)"
     # The reader is there before the sweep starts (a background `cat` may
     # open it too late): the shell holds the FIFO open read-write on fd 3.
     exec 3<>"$TMP/fifo"
