@@ -85,6 +85,31 @@ t $? "the preset named as --csv is still the preset (only the edit changed it)"
 cmp -s "$TMP/seed.ini" "$P" && cmp -s "$P" presets/7008C.ini && [ ! -e "$TMP/dl-target.csv" ]
 t $? "study --csv PRESET left the preset alone; the dangling link's target was not made"
 
+# --json: exactly one document on stdout whatever the exit (issue 26 item
+# 8); on exit 2 its message is the error, never a "note:" line. The third
+# case printed run's failure record and then a bad_input document; the
+# fourth had the note as its message.
+N="--set effects.thermal_expansion=off --set effects.ring_centrifugal=on"
+while IFS='|' read -r want args; do
+    # shellcheck disable=SC2086
+    "$ACBB" $args --json >"$TMP/out" 2>"$TMP/err" </dev/null
+    code $? "$want" "acbb$args --json"
+    jq -e -s 'length == 1 and (.[0].message | (startswith("note:") or startswith("warning:")) | not)
+        and (.[0].status != "converged")' "$TMP/out" >/dev/null 2>&1
+    t $? "... one document on stdout, its message the error: $(head -c 120 "$TMP/out")"
+done <<EOF_JSON
+2| run $P --josn
+2| run $P --set bearing.n_balls=0
+2| run $P --set lubricant.grade=VG2
+2| run $P $N --set lubricant.grade=VG2
+2| run $P $N --set bearing.cage_width_mm=1e-06
+2| run $TMP/keep.ini $Q --csv $TMP/keep.ini
+2| sweep $P $Q --param operating.axial_load_N --values 100,-1
+2| report $P $N --set bearing.n_balls=0
+2| metrics --bogus
+3| run $P $Q --set thermal.max_steps=2
+EOF_JSON
+
 # --max-wall: the named status and the last good state in the JSON. The
 # scene: a quasi-static set-up (milliseconds) and a [schedule] of 9e7 s
 # (3 million steps of at most 30 s, minutes on any machine), bounded at
