@@ -55,6 +55,10 @@ done <<EOF_TABLE
 2| check $P --set bearing.n_balls=0
 2| edit $TMP/keep.ini
 0| edit $TMP/keep.ini --set operating.radial_load_N=5
+2| edit $TMP/seed.ini --set lubricant.grade=VG2
+2| edit $TMP/seed.ini --set bearing.cage_width_mm=1e-06
+2| edit $TMP/seed.ini --set operating.axial_load_N=5 --out $TMP/seed.ini
+2| edit $TMP/seed.ini --set operating.axial_load_N=5 --out $LONG
 2| sweep $P $Q $G --jsonl $TMP/x --csv $TMP/x
 2| sweep $P $Q $G --jsonl - --json
 2| sweep $P $Q $G --jsonl $NX/x.jsonl
@@ -84,6 +88,31 @@ t $? "the preset named as --csv is still the preset (only the edit changed it)"
 
 cmp -s "$TMP/seed.ini" "$P" && cmp -s "$P" presets/7008C.ini && [ ! -e "$TMP/dl-target.csv" ]
 t $? "study --csv PRESET left the preset alone; the dangling link's target was not made"
+
+# issue 26 item 9: edit saved what check and run then refused. VG2 is a
+# listed grade, valid from viscosity_index ~160 (its nu100 reaches the
+# 1 mm^2/s the viscosity law takes); the refusal names the grade and index.
+"$ACBB" edit "$TMP/seed.ini" --set lubricant.grade=VG2 >/dev/null 2>"$TMP/err"
+has "$TMP/err" "lubricant.grade = VG2 with lubricant.viscosity_index = 100 derives" \
+    "edit VG2: the message names the grade and the index"
+cp "$P" "$TMP/vg2.ini"
+"$ACBB" edit "$TMP/vg2.ini" --set lubricant.grade=VG2 --set lubricant.viscosity_index=200 \
+    >/dev/null 2>&1 && "$ACBB" check "$TMP/vg2.ini" >/dev/null 2>&1 &&
+    "$ACBB" run "$TMP/vg2.ini" $Q --quiet >/dev/null 2>&1
+t $? "VG2 at viscosity_index 200: edit saves it, check and run accept it"
+
+# A full disk during edit or new is 4 (a write that failed once open), not
+# 2: a file-size limit of one block makes every write of the preset fail
+# (EFBIG, SIGXFSZ ignored), the short message on stderr still fits.
+full() { sh -c 'trap "" XFSZ; ulimit -f 1; exec "$0" "$@"' "$ACBB" "$@"; }
+full edit "$TMP/seed.ini" --set operating.axial_load_N=300 >/dev/null 2>"$TMP/err"
+code $? 4 "edit on a full disk (file size limit) exits 4"
+cmp -s "$TMP/seed.ini" "$P"
+t $? "... the preset unchanged"
+full new 7014C --out "$TMP/n.ini" >/dev/null 2>"$TMP/err"
+code $? 4 "new on a full disk (file size limit) exits 4"
+[ ! -e "$TMP/n.ini" ]
+t $? "... no file left"
 
 # --json: exactly one document on stdout whatever the exit (issue 26 item
 # 8); on exit 2 its message is the error, never a "note:" line. The third

@@ -178,10 +178,11 @@ static void test_editor(void)
 {
     static acbb_editor e;
     acbb_error err = { { 0 } };
-    size_t idiam = 0, iload = 0;
+    size_t idiam = 0, iload = 0, icage = 0;
     for (size_t i = 0; i < acbb_scene_field_count(); i++) {
         if (strcmp(acbb_scene_field(i)->key, "ball_diameter_mm") == 0) idiam = i;
         if (strcmp(acbb_scene_field(i)->key, "axial_load_N") == 0) iload = i;
+        if (strcmp(acbb_scene_field(i)->key, "cage_width_mm") == 0) icage = i;
     }
     ok(acbb_editor_open(&e, "presets/7008C.ini", &err) == ACBB_OK, "editor: opens 7008C (%s)", err.msg);
     double D = e.scene.ball_diameter;
@@ -205,6 +206,16 @@ static void test_editor(void)
     acbb_scene back;
     ok(acbb_scene_load(path, &back, &err) == ACBB_OK && back.axial_load == 450.0,
        "editor: the saved file loads back with axial_load_N = 450");
+    /* issue 26 item 9: the save checks what `acbb run` checks; a cage
+     * width of 1e-6 mm passes the key's range but leaves the thermal
+     * network no cage volume, and was saved for run to refuse. */
+    ok(acbb_editor_set(&e, icage, "1e-06", &err) == ACBB_OK && e.modified,
+       "editor: cage_width_mm = 1e-06 is in the key's range");
+    ok(acbb_editor_save(&e, path, &err) != ACBB_OK && e.modified,
+       "editor: ... but the save refuses it, as run would");
+    has_substr(err.msg, "not saved: network: balls and cage do not fit", "editor: ... saying why");
+    ok(acbb_scene_load(path, &back, &err) == ACBB_OK && back.cage_width == e.saved.cage_width,
+       "editor: the file keeps its cage width");
     unlink(path);
 }
 

@@ -228,6 +228,11 @@ void acbb_scene_default(acbb_scene *s);
  * it to its own copy (acbb_sim_new). */
 void acbb_lubricant_apply(acbb_scene *s);
 double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
+/* A failed check `rc` of a scene after acbb_lubricant_apply: when a graded
+ * oil's derived value is what failed (VG2 at viscosity_index 100 derives
+ * nu100 < 1 mm^2/s), the message names the grade and index the user set,
+ * not only the key they never wrote. Returns rc. */
+acbb_status acbb_lubricant_explain(const acbb_scene *s, acbb_status rc, acbb_error *err);
 double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, mm^2/s; NAN: nu100 < 2 */
 double acbb_nu100_from_vi(double nu40, double vi);     /* mm^2/s: VI(nu40, result) = vi */
 
@@ -276,6 +281,10 @@ acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *e
  * scene or the old file), ACBB_EIO or ACBB_ENOMEM; on failure the file is
  * untouched. */
 acbb_status acbb_scene_save_edits(const char *path, const acbb_scene *s, acbb_error *err);
+/* The same, the file at `path` kept and the result written to `to`
+ * (`acbb edit --out`: an installed preset edited into the user's copy). */
+acbb_status acbb_scene_save_edits_to(const char *path, const char *to, const acbb_scene *s,
+                                     acbb_error *err);
 
 /* Set one value from text, "section.key" and "value" in preset units
  * (as `--set` on the CLI and the TUI editor do). Validates the value;
