@@ -79,6 +79,9 @@ done <<EOF_TABLE
 2| study $P --max-wall -3
 3| study $P --set fidelity.model=dynamic --max-wall 0.001 --csv -
 3| report $P --set fidelity.model=dynamic --max-wall 0.001 --json
+2| preload-map $P --speeds 150000:200000:2 --preloads 100:200:2
+3| preload-map $P --speeds 4000:8000:2 --preloads 100:200:2 --set thermal.max_steps=2
+0| preload-map $P $Q --speeds 4000:8000:2 --preloads 100:200:2
 3| sensitivity $P --set fidelity.model=dynamic --max-wall 0.001 --metric losses_W.total
 EOF_TABLE
 
