@@ -1,11 +1,13 @@
 /* Tests of the TUI's curses-free, single-threaded parts: the layout
  * function for several terminal sizes, the progress estimate, the chart
- * raster, the editor model, and the accuracy screen's layout and log-log
+ * raster, the editor model, its recovery files, and the accuracy screen's layout and log-log
  * chart model (acc_chart.c). The thread hand-offs are tests/test_worker.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "tap.h"
@@ -16,6 +18,7 @@
 #include "worker.h"
 #include "layout.h"
 #include "progress.h"
+#include "recover.h"
 
 /* ---- layout ---- */
 
@@ -396,6 +399,68 @@ static void test_pace(void)
     ok(total >= 7000.0, "78 steps over 24 simulated s at x200 take %.1f s (was 0.12 s)", total / 1e3);
 }
 
+
+/* ---- recovery files (issue 26 item 10) ---- */
+
+static void set_mtime(const char *path, time_t sec, long nsec)
+{
+    struct timespec t[2] = { { sec, nsec }, { sec, nsec } };
+    utimensat(AT_FDCWD, path, t, 0);
+}
+
+static void test_recover(void)
+{
+    static acbb_editor e;
+    acbb_error err = { { 0 } };
+    char root[] = "/tmp/acbb-test-recover-XXXXXX", preset[128], state[128], path[4096];
+    char why[512], cmd[512];
+    if (!mkdtemp(root)) return;
+    snprintf(preset, sizeof preset, "%s/mine.ini", root);
+    snprintf(state, sizeof state, "%s/state", root);
+    snprintf(cmd, sizeof cmd, "cp presets/7008C.ini %s", preset);
+    ok(system(cmd) == 0, "recover: a preset to edit");
+    setenv("XDG_STATE_HOME", state, 1);
+    acbb_editor_init(&e);
+    ok(acbb_editor_open(&e, preset, &err) == ACBB_OK, "recover: editor opens it (%s)", err.msg);
+    size_t iload = 0;
+    for (size_t i = 0; i < acbb_scene_field_count(); i++)
+        if (strcmp(acbb_scene_field(i)->key, "axial_load_N") == 0) iload = i;
+    acbb_editor_set(&e, iload, "750", &err);
+    ok(acbb_recover_write(&e, why, sizeof why) == 0, "recover: written (%s)", why);
+    ok(acbb_recover_pending(&e, path, sizeof path), "recover: offered while newer than the preset");
+    /* An outside save 0.5 s after the recovery file, in the same second:
+     * offered before (seconds compared, >=), and restoring it reverted it. */
+    struct stat st;
+    stat(path, &st);
+    set_mtime(path, st.st_mtim.tv_sec, 100000000);
+    set_mtime(preset, st.st_mtim.tv_sec, 600000000);
+    ok(!acbb_recover_pending(&e, path, sizeof path),
+       "recover: a recovery file 0.5 s older than an outside save is not offered");
+    set_mtime(path, st.st_mtim.tv_sec, 700000000);
+    ok(acbb_recover_pending(&e, path, sizeof path), "recover: 0.1 s newer: offered again");
+    static acbb_editor back;
+    acbb_editor_init(&back);
+    acbb_editor_open(&back, preset, &err);
+    char msg[256];
+    ok(acbb_recover_restore(&back, path, msg, sizeof msg) == 0 && back.scene.axial_load == 750.0,
+       "recover: restored through the directory's descriptor (axial load 750)");
+    /* A symlink in the directory's path: "acbb" swapped for a link to a
+     * directory of the attacker's choosing. Only the last component was
+     * checked (lstat), so the write went through the link. */
+    snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s %s/elsewhere && ln -s %s/elsewhere %s/acbb",
+             state, state, root, root, state);
+    ok(system(cmd) == 0, "recover: state/acbb is a symlink");
+    why[0] = '\0';
+    ok(acbb_recover_write(&e, why, sizeof why) != 0 && strstr(why, "symbolic link"),
+       "recover: not written through a symlinked component (%s)", why);
+    snprintf(cmd, sizeof cmd, "%s/elsewhere/recover", root);
+    ok(access(cmd, F_OK) != 0, "recover: nothing made behind the link");
+    ok(!acbb_recover_pending(&e, path, sizeof path), "recover: nothing offered through it");
+    snprintf(cmd, sizeof cmd, "rm -rf %s", root);
+    if (system(cmd) != 0) fprintf(stderr, "# could not remove %s\n", root);
+    unsetenv("XDG_STATE_HOME");
+}
+
 int main(void)
 {
     test_pace();
@@ -405,6 +470,7 @@ int main(void)
     test_chart();
     test_nice();
     test_editor();
+    test_recover();
     test_acc_layout();
     test_acc_chart();
     return done_testing();

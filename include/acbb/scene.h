@@ -12,6 +12,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 #include "acbb/status.h"
 
 typedef struct {
@@ -257,6 +258,10 @@ acbb_status acbb_scene_load_text(const char *text, acbb_scene *s, acbb_error *er
  * or an export; to save back into the user's own preset, use
  * acbb_scene_save_edits. */
 acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *err);
+/* The text acbb_scene_save writes, to an open stream the caller owns (the
+ * TUI's recovery files, written through a directory descriptor). The scene
+ * must pass acbb_scene_validate; ACBB_EIO when a write fails. */
+acbb_status acbb_scene_write(FILE *f, const acbb_scene *s, acbb_error *err);
 
 /* Save `s` into the preset at `path`, keeping the user's file (the way
  * `git config` writes; DESIGN.md). For the TUI's Save and `acbb edit`.
