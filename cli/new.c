@@ -145,5 +145,5 @@ int acbb_cli_cmd_new(const acbb_cli_args *a)
     printf("%s: %s, %g x %g x %g mm, %d balls of %.4g mm on %.4g mm (estimated)\n", path, d.name,
            d.bore * 1e3, d.outer_diameter * 1e3, d.width * 1e3, s.n_balls,
            s.ball_diameter * 1e3, s.pitch_diameter * 1e3);
-    return 0;
+    return acbb_cli_stdout_check(0);
 }
