@@ -201,56 +201,6 @@ while IFS='|' read -r cmd c kind; do
         t $? "README: $cmd exits $c (a case above gave it)"
     fi
 done <"$TMP/claims"
-0| run $P $Q --quiet
-2| run $P --josn
-2| run $TMP/nosuch.ini
-2| run $P --set operating.axial_load_N=-1
-3| run $P $Q --set thermal.max_steps=2 --json
-3| run $P --set fidelity.model=dynamic --max-wall 0.05 --json
-2| run $P --max-wall -1
-2| run $P --max-wall soon
-2| run $P $Q --csv $NX/x.csv
-4| run $P $Q --csv /dev/full
-2| run $P $Q --plot $NX/x.png
-2| run $P $Q --baseline $TMP/nosuch.json
-2| run $P $Q --baseline $TMP/garbage.json
-2| run $TMP/keep.ini $Q --csv $TMP/keep.ini
-2| plot $TMP/keep.ini $Q --out $TMP/keep.ini
-2| run $P $Q --csv - --json
-2| run $P $Q --baseline $TMP/base.json --csv $TMP/base.json
-0| check $P
-2| check $P --set bearing.n_balls=0
-2| edit $TMP/keep.ini
-0| edit $TMP/keep.ini --set operating.radial_load_N=5
-2| edit $TMP/seed.ini --set lubricant.grade=VG2
-2| edit $TMP/seed.ini --set bearing.cage_width_mm=1e-06
-2| edit $TMP/seed.ini --set operating.axial_load_N=5 --out $TMP/seed.ini
-2| edit $TMP/seed.ini --set operating.axial_load_N=5 --out $LONG
-2| sweep $P $Q $G --jsonl $TMP/x --csv $TMP/x
-2| sweep $P $Q $G --jsonl - --json
-2| sweep $P $Q $G --jsonl $NX/x.jsonl
-2| sweep $P $Q $G --csv $NX/x.csv
-4| sweep $P $Q $G --jsonl /dev/full
-4| sweep $P $Q $G --csv /dev/full
-0| sweep $P $Q $G --jsonl $TMP/in.jsonl
-2| merge $TMP/in.jsonl $TMP/in.jsonl
-2| merge $NX/m.jsonl $TMP/in.jsonl
-4| merge /dev/full $TMP/in.jsonl
-0| merge $TMP/m.jsonl $TMP/in.jsonl
-2| study $P --csv $NX/s.csv
-2| study $TMP/seed.ini --csv $TMP/seed.ini
-2| study $P --csv $P
-2| sweep $P $Q $G --jsonl $TMP/dl --csv $TMP/dl-target.csv
-2| run $P $Q --csv $LONG
-2| study $P --csv $LONG
-2| study $P --max-wall -3
-3| study $P --set fidelity.model=dynamic --max-wall 0.001 --csv -
-3| report $P --set fidelity.model=dynamic --max-wall 0.001 --json
-2| preload-map $P --speeds 150000:200000:2 --preloads 100:200:2
-3| preload-map $P --speeds 4000:8000:2 --preloads 100:200:2 --set thermal.max_steps=2
-0| preload-map $P $Q --speeds 4000:8000:2 --preloads 100:200:2
-3| sensitivity $P --set fidelity.model=dynamic --max-wall 0.001 --metric losses_W.total
-EOF_TABLE
 
 [ "$(cmp -s "$TMP/keep.ini" "$P"; echo $?)" = 1 ] && grep -q '^axial_load_N = 1000$' "$TMP/keep.ini" &&
     ! grep -q '^iteration,' "$TMP/keep.ini"
