@@ -9,6 +9,7 @@
 #include "acbb/outfile.h"
 #include "exit.h"
 #include "out_guard.h"
+#include "plot.h"
 #include "presets.h"
 
 /* The file a write to `path` lands in: a symlink chain followed to its
@@ -171,7 +172,24 @@ int acbb_cli_guard_paths(const char *cmd, const acbb_cli_named_path *in, size_t 
 
 /* ---- the inputs and outputs of each command ---- */
 
-#define MAX_OUT 9
+#define MAX_OUT (9 + ACBB_CLI_PLOT_SIBLINGS)
+
+/* The plots written next to --plot FILE (run) or --out FILE (plot --kind
+ * all): outputs too, so their names are checked before the run. */
+static size_t plot_siblings(const acbb_cli_args *a, acbb_cli_named_path *out)
+{
+    static char names[ACBB_CLI_PLOT_SIBLINGS][CLI_PATH_MAX];
+    const char *kind = a->val[CLI_OPT_KIND];
+    bool run = strcmp(a->cmd, "run") == 0 && a->val[CLI_OPT_PLOT];
+    bool all = strcmp(a->cmd, "plot") == 0 && a->val[CLI_OPT_OUT] && kind &&
+               strcmp(kind, "all") == 0;
+    if (!run && !all) return 0;
+    size_t n = acbb_cli_plot_siblings(run ? a->val[CLI_OPT_PLOT] : a->val[CLI_OPT_OUT], all,
+                                      names, ACBB_CLI_PLOT_SIBLINGS);
+    for (size_t i = 0; i < n; i++)
+        out[i] = (acbb_cli_named_path){ names[i], run ? "a --plot sibling" : "a --out sibling" };
+    return n;
+}
 
 static size_t collect(const acbb_cli_args *a, char *study_preset, acbb_cli_named_path *in,
                       size_t *n_in, acbb_cli_named_path *out)
@@ -200,7 +218,7 @@ static size_t collect(const acbb_cli_args *a, char *study_preset, acbb_cli_named
     for (size_t k = 0; k < sizeof outs / sizeof *outs; k++)
         if (a->val[outs[k]] && a->val[outs[k]][0])
             out[n_out++] = (acbb_cli_named_path){ a->val[outs[k]], out_names[k] };
-    return n_out;
+    return n_out + plot_siblings(a, out + n_out);
 }
 
 int acbb_cli_out_guard(const acbb_cli_args *a)

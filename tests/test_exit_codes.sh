@@ -26,6 +26,8 @@ NX=$TMP/no/such/dir
 # than the writer's temporary file leaves room for (NAME_MAX - 24).
 ln -s dl-target.csv "$TMP/dl"
 LONG=$TMP/$(printf 'x%.0s' $(seq 240)).csv
+# 224 bytes: fits, but its sibling FILE-history-loads.png does not.
+LONGP=$TMP/$(printf 'y%.0s' $(seq 220)).png
 cp "$P" "$TMP/seed.ini"
 
 # A full disk for one command: a file-size limit of one block makes every
@@ -79,6 +81,9 @@ done <<EOF_TABLE
 2| run $P $Q --csv - --json
 2| run $P $Q --baseline $TMP/base.json --csv $TMP/base.json
 2| run $P $Q --csv $LONG
+2| run $P $Q --plot $LONGP
+2| run $P $Q --plot $TMP/q.png --csv $TMP/q-losses.png
+2| plot $P $Q --kind all --out $LONGP
 # check
 0| check $P
 2| check $P --set bearing.n_balls=0
