@@ -241,7 +241,7 @@ while IFS='|' read -r want args; do
     code $? "$want" "acbb$args --json"
     jq -e -s 'length == 1 and (.[0].message | (startswith("note:") or startswith("warning:")) | not)
         and (.[0].status != "converged")' "$TMP/out" >/dev/null 2>&1
-    t $? "... one document on stdout, its message the error: $(head -c 120 "$TMP/out")"
+    t $? "... one document on stdout, its message the error: $(head -c 120 "$TMP/out" | tr -s "\n " " ")"
 done <<EOF_JSON
 2| run $P --josn
 2| run $P --set bearing.n_balls=0
