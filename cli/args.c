@@ -31,7 +31,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                        "temperature|losses|loads|angles|history-loads|all (default temperature); "
                        "a bearing set also set-preload|set-temperature" },
     [CLI_OPT_OUT] = { "out", "PATH", "plot: write PATH.png or .svg (default: a text chart on "
-                      "stdout); new: the preset file; study: the figure directory" },
+                      "stdout); new: the preset file; edit: the edited copy (the preset kept); "
+                      "study: the figure directory" },
     [CLI_OPT_DUMB] = { "dumb", NULL, "a text chart on stdout (the default)" },
     [CLI_OPT_SIZE] = { "size", "WxH", "pixels (default 1000x600) or characters with --dumb (80x25)" },
     [CLI_OPT_KNOBS] = { "knobs", "K1,...",

@@ -263,72 +263,14 @@ int acbb_cli_cmd_check(const acbb_cli_args *a)
     acbb_scene sc;
     if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
     acbb_error err = { { 0 } };
-    acbb_status st = acbb_scene_validate(&sc, &err);
     /* Ill-posedness (MODEL.md 11) is judged when the scene is compiled, so
      * check compiles it too; no thermal step is taken. */
-    acbb_sim *sim = NULL;
-    if (st == ACBB_OK) st = acbb_sim_new(&sc, &sim, &err);
-    acbb_sim_free(sim);
+    acbb_status st = acbb_sim_check(&sc, &err);
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
         return acbb_cli_exit_for(st);
     }
     printf("%s: ok\n", a->preset);
-    return acbb_cli_stdout_check(0);
-}
-
-/* ---- acbb edit ---- */
-
-#define EDIT_LOCK_S 30.0   /* wait this long for another acbb's save */
-#define EDIT_TRIES 3       /* re-reads when an unlocking writer keeps changing it */
-
-/* Read, apply the --set edits and save, all under the file's lock
- * (outfile.h): a second `acbb edit` or the TUI's save waits, so each one
- * applies its keys to the content the other left (issue 20 item 1). A
- * writer that takes no lock (a text editor) is caught by the stamp: the
- * file is read again and the keys applied to the new content. */
-static int edit_locked(const acbb_cli_args *a)
-{
-    acbb_error err = { { 0 } };
-    acbb_status st = ACBB_OK;
-    for (int tries = 0; tries < EDIT_TRIES; tries++) {
-        acbb_file_stamp was, now;
-        acbb_scene sc;
-        int rc;
-        if ((st = acbb_file_stamp_take(a->preset, &was, &err)) != ACBB_OK) break;
-        if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
-        st = acbb_scene_validate(&sc, &err);
-        if (st == ACBB_OK) st = acbb_file_stamp_take(a->preset, &now, &err);
-        if (st != ACBB_OK) break;
-        if (!acbb_file_stamp_changed(&was, &now)) {
-            if ((st = acbb_scene_save_edits(a->preset, &sc, &err)) == ACBB_OK) return 0;
-            break;
-        }
-    }
-    if (st == ACBB_OK)
-        st = acbb_error_set(&err, ACBB_EIO, "%s: not saved: another program kept changing "
-                            "it while the edits were applied", a->preset);
-    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
-    return acbb_cli_exit_for(st);
-}
-
-int acbb_cli_cmd_edit(const acbb_cli_args *a)
-{
-    if (a->n_sets == 0) {
-        fprintf(stderr, "acbb: edit: nothing to do (give --set section.key=value)\n");
-        return ACBB_EXIT_INPUT;
-    }
-    acbb_error err = { { 0 } };
-    acbb_file_lock *lock = NULL;
-    acbb_status st = acbb_file_lock_take(a->preset, EDIT_LOCK_S, &lock, &err);
-    if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
-        return acbb_cli_exit_for(st);
-    }
-    int rc = edit_locked(a);
-    acbb_file_lock_release(lock);
-    if (rc) return rc;
-    printf("%s: %zu edit%s saved\n", a->preset, a->n_sets, a->n_sets == 1 ? "" : "s");
     return acbb_cli_stdout_check(0);
 }
 
@@ -346,7 +288,7 @@ int acbb_cli_cmd_study(const acbb_cli_args *args)
     acbb_cli_args *a = malloc(sizeof *a);
     if (!a) return ACBB_EXIT_INTERNAL;
     *a = *args;
-    const char *name = strcmp(a->pos[0], "seed") == 0 ? "7008C" : a->pos[0];
+    const char *name = acbb_cli_study_preset_name(a->pos[0]);
     if (acbb_cli_resolve_preset(name, a->preset_buf, sizeof a->preset_buf, true) != 0)
         rc = ACBB_EXIT_INPUT;
     a->preset = a->preset_buf;

@@ -9,7 +9,7 @@
 /* cli.c */
 int acbb_cli_cmd_run(const acbb_cli_args *a);
 int acbb_cli_cmd_check(const acbb_cli_args *a);
-int acbb_cli_cmd_edit(const acbb_cli_args *a);
+int acbb_cli_cmd_edit(const acbb_cli_args *a);     /* edit.c */
 int acbb_cli_cmd_sweep(const acbb_cli_args *a);
 int acbb_cli_cmd_study(const acbb_cli_args *a);
 int acbb_cli_cmd_bench_speed(const acbb_cli_args *a);

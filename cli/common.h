@@ -22,12 +22,6 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc);
  * could not be written. */
 int acbb_cli_stdout_check(long nonfinite);
 
-/* 0, or 2 (message printed) when an output path (--csv, --jsonl, --md,
- * --plot, merge's OUT) names an input (the preset, --baseline, a merge
- * input) or another output, or when two formats would go to stdout
- * (issue 20 item 5). */
-int acbb_cli_check_paths(const acbb_cli_args *a);
-
 /* An output file: writers go to `out.f`; close commits it in place. */
 typedef struct {
     const char *path;

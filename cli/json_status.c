@@ -1,3 +1,4 @@
+#define _GNU_SOURCE /* memfd_create (Linux) */
 /* acbb CLI — the bad_input JSON document (json_status.h).
  *
  * Exit 2 has dozens of sources (argument parsing, preset values, merge
@@ -7,6 +8,7 @@
 #include <cjson/cJSON.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/mman.h>
 #include <string.h>
 #include <unistd.h>
 #include "acbb/json.h"
@@ -31,13 +33,32 @@ static void *tee_main(void *arg)
     return NULL;
 }
 
+/* stdout into an anonymous in-memory file until the end. */
+static void hold_stdout(acbb_cli_json_status *t)
+{
+    int fd = memfd_create("acbb-stdout", MFD_CLOEXEC);
+    if (fd < 0) return;
+    fflush(stdout);
+    t->saved_out = dup(STDOUT_FILENO);
+    if (t->saved_out < 0 || dup2(fd, STDOUT_FILENO) < 0) {
+        if (t->saved_out >= 0) close(t->saved_out);
+        t->saved_out = -1;
+        close(fd);
+        return;
+    }
+    t->held = fd;
+}
+
 void acbb_cli_json_status_begin(acbb_cli_json_status *t, int argc, char **argv)
 {
     memset(t, 0, sizeof *t);
+    t->saved_out = t->held = -1;
     bool json = false;
     for (int i = 1; i < argc; i++) json |= strcmp(argv[i], "--json") == 0;
     int p[2];
-    if (!json || pipe(p) != 0) return;
+    if (!json) return;
+    hold_stdout(t);
+    if (pipe(p) != 0) return;
     /* Progress lines follow the real stderr, not the pipe (progress.c reads
      * ACBB_PROGRESS first); an explicit setting wins. */
     if (isatty(STDERR_FILENO)) setenv("ACBB_PROGRESS", "1", 0);
@@ -60,33 +81,126 @@ void acbb_cli_json_status_begin(acbb_cli_json_status *t, int argc, char **argv)
     t->active = true;
 }
 
-/* The message: the first line, without the "acbb: " every error starts with. */
-static void first_line(char *s)
+/* The message: the first error line, without the "acbb: " every error
+ * starts with; a note or warning is not the error (issue 26 item 8). */
+static const char *error_line(char *s)
 {
-    s[strcspn(s, "\n")] = '\0';
-    if (strncmp(s, "acbb: ", 6) == 0) memmove(s, s + 6, strlen(s + 6) + 1);
+    const char *first = NULL;
+    for (char *line = s; *line;) {
+        char *end = line + strcspn(line, "\n");
+        bool more = *end != '\0';
+        *end = '\0';
+        if (!first) first = line;
+        if (strncmp(line, "acbb: ", 6) == 0 && !strstr(line, ": note: ") &&
+            !strstr(line, ": warning: ") && strncmp(line + 6, "note: ", 6) != 0 &&
+            strncmp(line + 6, "warning: ", 9) != 0)
+            return line + 6;
+        if (!more) break;
+        line = end + 1;
+    }
+    if (!first) return "bad input";
+    return strncmp(first, "acbb: ", 6) == 0 ? first + 6 : first;
+}
+
+/* What the command printed on stdout, NUL-terminated (malloc'd), or NULL. */
+static char *held_text(int fd, size_t *len)
+{
+    off_t n = lseek(fd, 0, SEEK_END);
+    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    *len = 0;
+    if (!buf || lseek(fd, 0, SEEK_SET) != 0) {
+        free(buf);
+        return NULL;
+    }
+    while (*len < (size_t)n) {
+        ssize_t r = read(fd, buf + *len, (size_t)n - *len);
+        if (r <= 0) break;
+        *len += (size_t)r;
+    }
+    buf[*len] = '\0';
+    return buf;
+}
+
+/* True when `text` is one JSON object alone whose status is not
+ * "converged" (a failure record the command wrote itself). */
+static bool own_failure(const char *text)
+{
+    const char *end = NULL;
+    cJSON *o = cJSON_ParseWithOpts(text, &end, false);
+    bool one = o && cJSON_IsObject(o) && end && end[strspn(end, " \t\r\n")] == '\0';
+    const cJSON *st = one ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
+    one = one && cJSON_IsString(st) && strcmp(st->valuestring, "converged") != 0;
+    cJSON_Delete(o);
+    return one;
+}
+
+static int write_all(int fd, const char *p, size_t n)
+{
+    while (n > 0) {
+        ssize_t w = write(fd, p, n);
+        if (w <= 0) return -1;
+        p += w;
+        n -= (size_t)w;
+    }
+    return 0;
+}
+
+static char *bad_input_doc(const char *message)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "schema_version", ACBB_JSON_SCHEMA_VERSION);
+    cJSON_AddStringToObject(o, "status", "bad_input");
+    cJSON_AddStringToObject(o, "message", message);
+    char *text = cJSON_PrintUnformatted(o);
+    cJSON_Delete(o);
+    return text;
+}
+
+/* Put stdout back and pass on the one document. */
+static int release_stdout(acbb_cli_json_status *t, int rc, const char *message)
+{
+    size_t len = 0;
+    fflush(stdout);
+    char *text = held_text(t->held, &len), *doc = NULL;
+    dup2(t->saved_out, STDOUT_FILENO);
+    close(t->saved_out);
+    close(t->held);
+    if (rc == ACBB_EXIT_INPUT && !(text && own_failure(text))) {
+        free(text);
+        doc = bad_input_doc(message);
+        text = NULL;
+    }
+    int bad = text ? write_all(STDOUT_FILENO, text, len) != 0
+                   : !doc || write_all(STDOUT_FILENO, doc, strlen(doc)) != 0 ||
+                     write_all(STDOUT_FILENO, "\n", 1) != 0;
+    free(text);
+    free(doc);
+    if (bad && rc < ACBB_EXIT_INTERNAL) {
+        fprintf(stderr, "acbb: cannot write to stdout\n");
+        rc = ACBB_EXIT_INTERNAL;
+    }
+    return rc;
 }
 
 int acbb_cli_json_status_end(acbb_cli_json_status *t, int rc)
 {
-    if (!t->active) return rc;
-    fflush(stderr);
-    dup2(t->saved_fd, STDERR_FILENO); /* the pipe's last writer closes: EOF */
-    pthread_join(t->thread, NULL);
-    close(t->saved_fd);
-    close(t->pipe_rd);
-    t->active = false;
+    const char *message = "bad input";
+    if (!t->active && t->held < 0) return rc; /* no --json */
+    if (t->active) {
+        fflush(stderr);
+        dup2(t->saved_fd, STDERR_FILENO); /* the pipe's last writer closes: EOF */
+        pthread_join(t->thread, NULL);
+        close(t->saved_fd);
+        close(t->pipe_rd);
+        t->active = false;
+        t->start[t->len] = '\0';
+        message = error_line(t->start);
+    }
+    if (t->held >= 0) return release_stdout(t, rc, message);
     if (rc != ACBB_EXIT_INPUT) return rc;
-    t->start[t->len] = '\0';
-    first_line(t->start);
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddNumberToObject(o, "schema_version", ACBB_JSON_SCHEMA_VERSION);
-    cJSON_AddStringToObject(o, "status", "bad_input");
-    cJSON_AddStringToObject(o, "message", t->start[0] ? t->start : "bad input");
-    char *text = cJSON_PrintUnformatted(o);
-    if (text) printf("%s\n", text);
-    free(text);
-    cJSON_Delete(o);
+    char *doc = bad_input_doc(message);
+    if (doc) printf("%s\n", doc);
+    free(doc);
     fflush(stdout);
     return rc;
 }

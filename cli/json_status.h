@@ -1,7 +1,15 @@
 /* acbb CLI — with --json, bad input is a JSON document too (issue 21 item
  * 10): exit 2 prints {"schema_version": N, "status": "bad_input",
- * "message": "..."} on stdout, the message being the first line the
- * command wrote to stderr (it still goes to stderr as it is written). */
+ * "message": "..."} on stdout, the message being the first error line the
+ * command wrote to stderr (it still goes to stderr as it is written);
+ * "note:" and "warning:" lines are not errors.
+ *
+ * Exactly one document reaches stdout whatever the exit (issue 26 item
+ * 8): with --json, stdout is held in memory until the command returns.
+ * On exit 2 a command's own document (the failure record of `run`) is
+ * passed on when it is the only thing printed and does not say
+ * "converged"; anything else is replaced by the bad_input document.
+ * On other exits what was printed passes unchanged. */
 #ifndef ACBB_CLI_JSON_STATUS_H
 #define ACBB_CLI_JSON_STATUS_H
 
@@ -16,14 +24,16 @@ typedef struct {
     pthread_t thread;      /* copies the pipe to saved_fd, keeps the start */
     char start[2048];
     size_t len;
+    int saved_out;         /* the real stdout while it is held; -1 none */
+    int held;              /* what the command printed on stdout */
 } acbb_cli_json_status;
 
 /* If argv has --json: route stderr through a pipe whose reader copies
  * everything to the real stderr at once and keeps its start. Otherwise,
  * or if the pipe cannot be made, nothing changes. */
 void acbb_cli_json_status_begin(acbb_cli_json_status *t, int argc, char **argv);
-/* Put stderr back; for rc 2 print the bad_input document on stdout.
- * Returns rc. */
+/* Put stderr and stdout back; pass on one document as above. Returns rc,
+ * or 4 when stdout could not be written. */
 int acbb_cli_json_status_end(acbb_cli_json_status *t, int rc);
 
 #endif

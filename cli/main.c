@@ -20,6 +20,7 @@
 #include "output.h"
 #include "sweep.h"
 #include "json_status.h"
+#include "out_guard.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -52,8 +53,10 @@ const acbb_cli_command acbb_cli_commands[] = {
     { "edit", NULL, "PRESET", "apply --set edits to the preset file in place",
       "Only the lines of the changed keys are rewritten; comments, order and blank\n"
       "lines stay; new keys go at the end of their section. The file is replaced\n"
-      "atomically, and only if the edited scene is valid.\n",
-      SCENE_OPTS, 1, 1, 0, acbb_cli_cmd_edit },
+      "atomically, and only if the edited scene passes every check `acbb run` makes.\n"
+      "An installed preset (shared by every user) is never rewritten: --out FILE\n"
+      "writes the edited copy there instead.\n",
+      SCENE_OPTS | O(OUT), 1, 1, 0, acbb_cli_cmd_edit },
     { "sweep", NULL, "PRESET", "runs over a grid of parameter values, on every core",
       "e.g. acbb sweep 7008C --grid operating.axial_load_N=200,500,1000 \\\n"
       "       --grid operating.inner_speed_rpm=2000:16000:8 --jsonl out.jsonl\n"
@@ -259,7 +262,7 @@ static int run_command(int argc, char **argv)
     }
     a->sets = sets;
     rc = acbb_cli_parse(c, argc, argv, first, a);
-    if (rc == 0) rc = acbb_cli_check_paths(a); /* an output over an input: exit 2 */
+    if (rc == 0) rc = acbb_cli_out_guard(a); /* every output checked before anything runs */
     if (rc == 0) rc = c->run(a);
     else if (rc < 0) rc = 0;     /* --help was printed */
     free(sets);

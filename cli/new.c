@@ -111,7 +111,9 @@ static int annotate(const char *path, const acbb_designation *d, const acbb_esti
         acbb_out_abort(o);
         return fail("cannot read back the saved preset");
     }
-    return acbb_out_commit(o, &e) == ACBB_OK ? 0 : fail(e.msg);
+    if (acbb_out_commit(o, &e) == ACBB_OK) return 0;
+    fprintf(stderr, "acbb: new: %s\n", e.msg);
+    return ACBB_EXIT_INTERNAL; /* opened, then the write failed (disk full) */
 }
 
 int acbb_cli_cmd_new(const acbb_cli_args *a)
@@ -138,11 +140,13 @@ int acbb_cli_cmd_new(const acbb_cli_args *a)
     acbb_status st = acbb_scene_save(path, &s, &e);
     if (st != ACBB_OK) {
         fprintf(stderr, "acbb: new: %s\n", acbb_cli_err_text(&e, st));
-        return acbb_cli_exit_for(st);
+        /* The guard (out_guard.h) found the path writable: a failed write
+         * now is the disk's (README "Exit codes"), not bad input. */
+        return st == ACBB_EIO ? ACBB_EXIT_INTERNAL : acbb_cli_exit_for(st);
     }
     if ((rc = annotate(path, &d, notes, n)) != 0) return rc;
     printf("%s: %s, %g x %g x %g mm, %d balls of %.4g mm on %.4g mm (estimated)\n", path, d.name,
            d.bore * 1e3, d.outer_diameter * 1e3, d.width * 1e3, s.n_balls,
            s.ball_diameter * 1e3, s.pitch_diameter * 1e3);
-    return 0;
+    return acbb_cli_stdout_check(0);
 }

@@ -24,6 +24,7 @@
 #define PLOT_DUMB_W 80
 #define PLOT_DUMB_H 25
 #define PLOT_N_KINDS 5
+_Static_assert(PLOT_N_KINDS <= ACBB_CLI_PLOT_SIBLINGS, "the guard's room for siblings");
 
 /* The options of one `acbb plot`, as typed (NULL when absent). */
 typedef struct {
@@ -113,6 +114,18 @@ static char *sibling_path(const char *path, acbb_plot_kind kind)
     char *out = malloc(n);
     if (out) snprintf(out, n, "%.*s-%s%s", (int)stem, path, name, dot ? dot : "");
     return out;
+}
+
+size_t acbb_cli_plot_siblings(const char *path, bool all, char (*out)[CLI_PATH_MAX], size_t max)
+{
+    size_t n = 0;
+    for (int k = all ? 0 : 1; k < PLOT_N_KINDS && n < max; k++) {
+        char *p = sibling_path(path, (acbb_plot_kind)k);
+        if (!p) break;
+        snprintf(out[n++], CLI_PATH_MAX, "%s", p);
+        free(p);
+    }
+    return n;
 }
 
 /* Write the kinds in [first, last] to files; `own` is the kind that goes to

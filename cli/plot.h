@@ -20,7 +20,10 @@
 #ifndef ACBB_CLI_PLOT_H
 #define ACBB_CLI_PLOT_H
 
+#include <stdbool.h>
+#include <stddef.h>
 #include "acbb/history.h"
+#include "args.h"
 #include "acbb/sim.h"
 
 /* `acbb plot` (options: main.c's command table): runs the scene and draws
@@ -32,6 +35,14 @@
 /* Parse --size "WxH" (whole numbers): 0, or 2 with a message on stderr.
  * The range is the plot module's to check (acbb_plot_check_size). */
 int acbb_cli_parse_size(const char *text, int *w, int *h);
+
+/* The files next to `path` a write of every kind makes (naming above):
+ * `all` (plot --kind all) every kind, else (run --plot) every kind but
+ * the temperature plot, which goes to `path` itself. Into out[max], each
+ * CLI_PATH_MAX long (a longer one is cut); returns the count. For the
+ * output guard (out_guard.h): they are outputs too. */
+#define ACBB_CLI_PLOT_SIBLINGS 5
+size_t acbb_cli_plot_siblings(const char *path, bool all, char (*out)[CLI_PATH_MAX], size_t max);
 
 /* Check a `--plot FILE` argument before a run starts: 0, or 2 with a
  * message on stderr if the extension is neither .png nor .svg. */

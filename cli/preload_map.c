@@ -145,6 +145,23 @@ static int outputs(const acbb_cli_args *a, const acbb_pmap_opts *o, const acbb_p
     return acbb_cli_worst(rc, acbb_cli_stdout_check(0));
 }
 
+/* A cell whose run neither finished nor ran away (verdict "failed", x) is
+ * a run that did not reach steady state: exit 3, as for every command
+ * (README "Exit codes"); a runaway is a verdict of the map, not a failure.
+ * Cancelled cells are the cancel's (acbb_cli_cancelled). */
+static int failed_cells(const acbb_pmap_cell *c, size_t n, acbb_status st)
+{
+    size_t bad = 0, first = 0;
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(acbb_pmap_verdict(&c[i]), "failed") == 0 && c[i].status != ACBB_CANCELLED &&
+            bad++ == 0)
+            first = i;
+    if (bad == 0 || st == ACBB_CANCELLED) return 0;
+    fprintf(stderr, "acbb: preload-map: %zu of %zu cells failed (x); the first, %g rpm and "
+            "%g N: %s\n", bad, n, c[first].speed_rpm, c[first].preload_N, c[first].status_name);
+    return ACBB_EXIT_SOLVER;
+}
+
 int acbb_cli_cmd_preload_map(const acbb_cli_args *a)
 {
     acbb_pmap_opts o;
@@ -173,7 +190,7 @@ int acbb_cli_cmd_preload_map(const acbb_cli_args *a)
         fprintf(stderr, "acbb: preload-map: %s\n", acbb_cli_err_text(&e, st));
         rc = ACBB_EXIT_INPUT;
     } else {
-        rc = outputs(a, &o, cells, rows);
+        rc = acbb_cli_worst(outputs(a, &o, cells, rows), failed_cells(cells, n, st));
         if (st == ACBB_CANCELLED)
             rc = acbb_cli_worst(rc, acbb_cli_cancelled("preload-map", "the cells that finished"));
     }

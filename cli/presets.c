@@ -129,6 +129,29 @@ int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report)
     return -1;
 }
 
+bool acbb_cli_preset_installed(const char *path, char *dir, size_t n)
+{
+    char *file = realpath(path, NULL);
+    char *slash = file ? strrchr(file, '/') : NULL;
+    bool found = false;
+    if (slash) *slash = '\0';
+    acbb_cli_preset_dir dirs[CLI_MAX_PRESET_DIRS];
+    size_t nd = slash ? acbb_cli_preset_dirs(dirs) : 0;
+    for (size_t i = 0; i < nd && !found; i++) {
+        char *d = strcmp(dirs[i].role, "installed") == 0 ? realpath(dirs[i].path, NULL) : NULL;
+        found = d && strcmp(d, file) == 0;
+        if (found) snprintf(dir, n, "%s", dirs[i].path);
+        free(d);
+    }
+    free(file);
+    return found;
+}
+
+const char *acbb_cli_study_preset_name(const char *arg)
+{
+    return strcmp(arg, "seed") == 0 ? "7008C" : arg;
+}
+
 /* ---- acbb presets ---- */
 
 static int cmp_str(const void *x, const void *y)

@@ -31,6 +31,13 @@ size_t acbb_cli_preset_dirs(acbb_cli_preset_dir dirs[CLI_MAX_PRESET_DIRS]);
  * message on stderr naming every directory searched). */
 int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report);
 
+/* True when the file `path` lies in an installed preset directory (role
+ * "installed": shared by every user); dir[n] gets that directory. */
+bool acbb_cli_preset_installed(const char *path, char *dir, size_t n);
+
+/* The preset `acbb study NAME` means: `seed` is the seed's case, 7008C. */
+const char *acbb_cli_study_preset_name(const char *arg);
+
 /* `acbb presets [DIR]`: the search path and every preset in it (or in DIR
  * alone) with its first comment line. */
 int acbb_cli_cmd_presets(const acbb_cli_args *a);

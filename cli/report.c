@@ -803,7 +803,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     if (!a->val[CLI_OPT_JSON]) print_text(stdout, &v);
     rc = acbb_study_n_failed(st) ? ACBB_EXIT_SOLVER : ACBB_EXIT_OK;
     if (misuse) rc = ACBB_EXIT_INTERNAL; /* invalid JSON printed: a bug, said by the exit */
-    if (fflush(stdout) != 0 || ferror(stdout)) rc = ACBB_EXIT_INTERNAL;
+    rc = acbb_cli_worst(rc, acbb_cli_stdout_check(0)); /* says so on stderr */
     if (md) {
         print_md(mf, &v);
         if (acbb_out_commit(md, &err) != ACBB_OK) {

@@ -491,10 +491,27 @@ if [ -n "$BUILD" ] && command -v meson >/dev/null 2>&1; then
     (cd "$TMP/elsewhere" && XDG_CONFIG_HOME="$TMP/xdg-user" "$INST" presets) >"$TMP/upresets.txt" 2>&1
     has "$TMP/upresets.txt" "(shadowed by $TMP/xdg-user/acbb/presets)" \
         "acbb presets marks the installed 7008C.ini as shadowed"
+    # issue 26 item 6: `acbb edit 7008C` found the installed preset, shared
+    # by every user, and rewrote it.
+    cp "$PDIR/7008C.ini" "$TMP/inst-7008C.ini"
+    (cd "$TMP/elsewhere" && XDG_CONFIG_HOME="$TMP/xdg-empty" "$INST" edit 7008C \
+        --set operating.axial_load_N=300) >"$TMP/out" 2>"$TMP/err"
+    code $? 2 "edit of the installed 7008C is refused"
+    has "$TMP/err" "is an installed preset" "... saying it is the installed, shared preset"
+    has "$TMP/err" "--out FILE" "... with the hint --out"
+    cmp -s "$PDIR/7008C.ini" "$TMP/inst-7008C.ini"
+    t $? "... and the installed file is unchanged"
+    (cd "$TMP/elsewhere" && XDG_CONFIG_HOME="$TMP/xdg-empty" "$INST" edit 7008C \
+        --set operating.axial_load_N=300 --out "$TMP/mine.ini") >"$TMP/out" 2>"$TMP/err"
+    code $? 0 "edit 7008C --out FILE writes the edited copy"
+    grep -q '^axial_load_N = 300$' "$TMP/mine.ini" && cmp -s "$PDIR/7008C.ini" "$TMP/inst-7008C.ini" &&
+        [ "$(diff "$PDIR/7008C.ini" "$TMP/mine.ini" | grep -c '^[<>]')" -eq 2 ]
+    t $? "... one line changed in the copy, the installed file unchanged"
 else
     for what in "meson install" "binary" "presets" "man page" "presets exits 0" \
         "installed dir" "user dir" "7008C listed" "run exits 0" "converged" "same loss" \
-        "user run" "user shadows" "shadow marked"; do
+        "user run" "user shadows" "shadow marked" "edit installed" "edit says so" \
+        "edit hint" "installed kept" "edit --out" "copy edited"; do
         echo "ok $((n += 1)) - install: $what # SKIP no build directory given"
     done
 fi

@@ -29,8 +29,16 @@ t $? "the symlink is still a link and its target holds the CSV"
 mkfifo pipe.csv
 cat pipe.csv >fifo.out &
 reader=$!
-"$ACBB" run "$PRESET" --csv pipe.csv --quiet 2>"$TMP/err"
-code $? 0 "csv onto a FIFO exits 0"
+# The background reader opens the FIFO some time after it starts; until
+# then acbb refuses at once (no reader: exit 2, before anything runs), so
+# poll by trying again (bounded) until the reader is there.
+for _ in $(seq 300); do
+    "$ACBB" run "$PRESET" --csv pipe.csv --quiet 2>"$TMP/err"
+    rc=$?
+    [ "$rc" -eq 2 ] && grep -q "a FIFO with no reader" "$TMP/err" || break
+    sleep 0.1
+done
+code $rc 0 "csv onto a FIFO exits 0"
 wait $reader
 [ -p pipe.csv ] && head -n 1 fifo.out | grep -q '^iteration,'
 t $? "the FIFO is still a FIFO and the reader got the CSV"

@@ -9,6 +9,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <sched.h>
 #include <stdlib.h>
 #include <string.h>
@@ -183,6 +184,38 @@ static void test_without_proc(unsigned flags, const char *what)
     unlink(path);
 }
 
+/* ACBB_OUT_NAME_MAX (outfile.h): the longest name every way writes, its
+ * temporary ".NAME.acbb-PID-N" included; a name the file system takes but
+ * the temporary's does not fails only at commit, after a run (issue 26
+ * item 11): the CLI's output guard refuses it before. */
+static void test_longest_name(void)
+{
+    static const size_t lens[2] = { ACBB_OUT_NAME_MAX, NAME_MAX - 5 };
+    for (size_t l = 0; l < 2; l++) {
+        char name[NAME_MAX + 1], path[NAME_MAX + 80];
+        memset(name, 'n', lens[l]);
+        name[lens[l]] = '\0';
+        snprintf(path, sizeof path, "%s/%s", dir, name);
+        for (size_t i = 0; i < sizeof ways / sizeof ways[0]; i++) {
+            acbb_error err = { { 0 } };
+            acbb_out *o = NULL;
+            FILE *f = NULL;
+            acbb_status rc = acbb_out_open_ex(path, ways[i].flags, &o, &f, &err);
+            if (rc == ACBB_OK) {
+                fputs("long\n", f);
+                rc = acbb_out_commit(o, &err);
+            }
+            if (l == 0)
+                ok(rc == ACBB_OK && file_is(path, "long\n"), "%s: a %zu-byte name (ACBB_OUT_NAME_MAX) "
+                   "is written", ways[i].way, lens[l]);
+            else
+                ok(rc != ACBB_OK && access(path, F_OK) != 0, "%s: a %zu-byte name fails (its "
+                   "temporary's name is too long): %s", ways[i].way, lens[l], err.msg);
+            unlink(path);
+        }
+    }
+}
+
 int main(void)
 {
     const char *base = getenv("TMPDIR");
@@ -197,6 +230,7 @@ int main(void)
 
     test_without_proc(0, "the public acbb_out_open");
     test_without_proc(ACBB_OUT_NO_EMPTY_PATH, "the copy into a named temp");
+    test_longest_name();
 
     /* A missing directory: a clear error naming the path, nothing created. */
     acbb_error err = { { 0 } };

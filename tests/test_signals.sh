@@ -20,9 +20,16 @@ TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 export ACBB_PROGRESS=1     # the progress lines are the states awaited
 
-# caught PID: the process catches SIGINT and SIGTERM (its handler is in).
+# caught PID: the process runs acbb and catches SIGINT and SIGTERM (its
+# handler is in). The exe check matters (issue 28 item 14): between fork
+# and exec the background job is this script's own bash, which also
+# catches both; a SIGINT sent then ran this script's EXIT trap in that
+# child (rm -rf $TMP) and ended it by SIGINT (exit 130), and every later
+# check failed on missing files.
+ACBB_EXE=$(readlink -f "$ACBB")
 caught() {
     local m
+    [ "$(readlink "/proc/$1/exe" 2>/dev/null)" = "$ACBB_EXE" ] || return 1
     m=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null)
     [ -n "$m" ] && (( (16#$m & 0x4002) == 0x4002 ))
 }

@@ -1,11 +1,13 @@
 /* Tests of the TUI's curses-free, single-threaded parts: the layout
  * function for several terminal sizes, the progress estimate, the chart
- * raster, the editor model, and the accuracy screen's layout and log-log
+ * raster, the editor model, its recovery files, and the accuracy screen's layout and log-log
  * chart model (acc_chart.c). The thread hand-offs are tests/test_worker.c. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "tap.h"
@@ -16,6 +18,7 @@
 #include "worker.h"
 #include "layout.h"
 #include "progress.h"
+#include "recover.h"
 
 /* ---- layout ---- */
 
@@ -178,10 +181,11 @@ static void test_editor(void)
 {
     static acbb_editor e;
     acbb_error err = { { 0 } };
-    size_t idiam = 0, iload = 0;
+    size_t idiam = 0, iload = 0, icage = 0;
     for (size_t i = 0; i < acbb_scene_field_count(); i++) {
         if (strcmp(acbb_scene_field(i)->key, "ball_diameter_mm") == 0) idiam = i;
         if (strcmp(acbb_scene_field(i)->key, "axial_load_N") == 0) iload = i;
+        if (strcmp(acbb_scene_field(i)->key, "cage_width_mm") == 0) icage = i;
     }
     ok(acbb_editor_open(&e, "presets/7008C.ini", &err) == ACBB_OK, "editor: opens 7008C (%s)", err.msg);
     double D = e.scene.ball_diameter;
@@ -205,6 +209,16 @@ static void test_editor(void)
     acbb_scene back;
     ok(acbb_scene_load(path, &back, &err) == ACBB_OK && back.axial_load == 450.0,
        "editor: the saved file loads back with axial_load_N = 450");
+    /* issue 26 item 9: the save checks what `acbb run` checks; a cage
+     * width of 1e-6 mm passes the key's range but leaves the thermal
+     * network no cage volume, and was saved for run to refuse. */
+    ok(acbb_editor_set(&e, icage, "1e-06", &err) == ACBB_OK && e.modified,
+       "editor: cage_width_mm = 1e-06 is in the key's range");
+    ok(acbb_editor_save(&e, path, &err) != ACBB_OK && e.modified,
+       "editor: ... but the save refuses it, as run would");
+    has_substr(err.msg, "not saved: network: balls and cage do not fit", "editor: ... saying why");
+    ok(acbb_scene_load(path, &back, &err) == ACBB_OK && back.cage_width == e.saved.cage_width,
+       "editor: the file keeps its cage width");
     unlink(path);
 }
 
@@ -385,6 +399,68 @@ static void test_pace(void)
     ok(total >= 7000.0, "78 steps over 24 simulated s at x200 take %.1f s (was 0.12 s)", total / 1e3);
 }
 
+
+/* ---- recovery files (issue 26 item 10) ---- */
+
+static void set_mtime(const char *path, time_t sec, long nsec)
+{
+    struct timespec t[2] = { { sec, nsec }, { sec, nsec } };
+    utimensat(AT_FDCWD, path, t, 0);
+}
+
+static void test_recover(void)
+{
+    static acbb_editor e;
+    acbb_error err = { { 0 } };
+    char root[] = "/tmp/acbb-test-recover-XXXXXX", preset[128], state[128], path[4096];
+    char why[512], cmd[512];
+    if (!mkdtemp(root)) return;
+    snprintf(preset, sizeof preset, "%s/mine.ini", root);
+    snprintf(state, sizeof state, "%s/state", root);
+    snprintf(cmd, sizeof cmd, "cp presets/7008C.ini %s", preset);
+    ok(system(cmd) == 0, "recover: a preset to edit");
+    setenv("XDG_STATE_HOME", state, 1);
+    acbb_editor_init(&e);
+    ok(acbb_editor_open(&e, preset, &err) == ACBB_OK, "recover: editor opens it (%s)", err.msg);
+    size_t iload = 0;
+    for (size_t i = 0; i < acbb_scene_field_count(); i++)
+        if (strcmp(acbb_scene_field(i)->key, "axial_load_N") == 0) iload = i;
+    acbb_editor_set(&e, iload, "750", &err);
+    ok(acbb_recover_write(&e, why, sizeof why) == 0, "recover: written (%s)", why);
+    ok(acbb_recover_pending(&e, path, sizeof path), "recover: offered while newer than the preset");
+    /* An outside save 0.5 s after the recovery file, in the same second:
+     * offered before (seconds compared, >=), and restoring it reverted it. */
+    struct stat st;
+    stat(path, &st);
+    set_mtime(path, st.st_mtim.tv_sec, 100000000);
+    set_mtime(preset, st.st_mtim.tv_sec, 600000000);
+    ok(!acbb_recover_pending(&e, path, sizeof path),
+       "recover: a recovery file 0.5 s older than an outside save is not offered");
+    set_mtime(path, st.st_mtim.tv_sec, 700000000);
+    ok(acbb_recover_pending(&e, path, sizeof path), "recover: 0.1 s newer: offered again");
+    static acbb_editor back;
+    acbb_editor_init(&back);
+    acbb_editor_open(&back, preset, &err);
+    char msg[256];
+    ok(acbb_recover_restore(&back, path, msg, sizeof msg) == 0 && back.scene.axial_load == 750.0,
+       "recover: restored through the directory's descriptor (axial load 750)");
+    /* A symlink in the directory's path: "acbb" swapped for a link to a
+     * directory of the attacker's choosing. Only the last component was
+     * checked (lstat), so the write went through the link. */
+    snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s %s/elsewhere && ln -s %s/elsewhere %s/acbb",
+             state, state, root, root, state);
+    ok(system(cmd) == 0, "recover: state/acbb is a symlink");
+    why[0] = '\0';
+    ok(acbb_recover_write(&e, why, sizeof why) != 0 && strstr(why, "symbolic link"),
+       "recover: not written through a symlinked component (%s)", why);
+    snprintf(cmd, sizeof cmd, "%s/elsewhere/recover", root);
+    ok(access(cmd, F_OK) != 0, "recover: nothing made behind the link");
+    ok(!acbb_recover_pending(&e, path, sizeof path), "recover: nothing offered through it");
+    snprintf(cmd, sizeof cmd, "rm -rf %s", root);
+    if (system(cmd) != 0) fprintf(stderr, "# could not remove %s\n", root);
+    unsetenv("XDG_STATE_HOME");
+}
+
 int main(void)
 {
     test_pace();
@@ -394,6 +470,7 @@ int main(void)
     test_chart();
     test_nice();
     test_editor();
+    test_recover();
     test_acc_layout();
     test_acc_chart();
     return done_testing();

@@ -1,6 +1,7 @@
 /* acbb TUI — preset editor model (see editor.h). */
 #include <stdio.h>
 #include <string.h>
+#include "acbb/sim.h"
 #include "editor.h"
 
 #define ACBB_EDITOR_LOCK_S 5.0 /* the TUI waits this long for another save */
@@ -135,8 +136,13 @@ static acbb_status save_to(acbb_editor *e, const char *path, int check, acbb_err
     if (strlen(p) >= sizeof e->path)
         return acbb_error_set(err, ACBB_EINVAL, "%s: path too long", p);
     e->conflict = 0;
+    /* The rules `acbb run` applies, as `acbb edit` (issue 26 item 9): the
+     * scene's own check misses what only compiling it finds. */
+    acbb_error why;
+    acbb_status rc = acbb_sim_check(&e->scene, &why);
+    if (rc != ACBB_OK) return acbb_error_set(err, rc, "%s: not saved: %s", p, why.msg);
     acbb_file_lock *lock = NULL;
-    acbb_status rc = acbb_file_lock_take(p, ACBB_EDITOR_LOCK_S, &lock, err);
+    rc = acbb_file_lock_take(p, ACBB_EDITOR_LOCK_S, &lock, err);
     if (rc != ACBB_OK) return rc;
     rc = save_locked(e, p, check && strcmp(p, e->path) == 0, err);
     acbb_file_lock_release(lock);

@@ -23,6 +23,7 @@
 #ifndef ACBB_OUTFILE_H
 #define ACBB_OUTFILE_H
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include "acbb/status.h"
@@ -37,6 +38,10 @@ typedef struct acbb_out acbb_out;
  * temp path for an external writer) receives the stream. Errors name the
  * path and the reason (ACBB_EIO, ACBB_EINVAL). */
 acbb_status acbb_out_open(const char *path, acbb_out **out, FILE **f, acbb_error *err);
+
+/* The longest file name (last path component) the writer takes: NAME_MAX
+ * less what the temporary file's name adds (".NAME.acbb-PID-N"). */
+#define ACBB_OUT_NAME_MAX (NAME_MAX - 24)
 
 /* The descriptor an external program should write (the temporary file; for
  * a non-regular target opened without a stream, its bytes are copied into

@@ -12,6 +12,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 #include "acbb/status.h"
 
 #ifdef __cplusplus
@@ -250,6 +251,11 @@ void acbb_scene_default(acbb_scene *s);
  * it to its own copy (acbb_sim_new). */
 void acbb_lubricant_apply(acbb_scene *s);
 double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
+/* A failed check `rc` of a scene after acbb_lubricant_apply: when a graded
+ * oil's derived value is what failed (VG2 at viscosity_index 100 derives
+ * nu100 < 1 mm^2/s), the message names the grade and index the user set,
+ * not only the key they never wrote. Returns rc. */
+acbb_status acbb_lubricant_explain(const acbb_scene *s, acbb_status rc, acbb_error *err);
 double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, mm^2/s; NAN: nu100 < 2 */
 double acbb_nu100_from_vi(double nu40, double vi);     /* mm^2/s: VI(nu40, result) = vi */
 
@@ -274,6 +280,10 @@ acbb_status acbb_scene_load_text(const char *text, acbb_scene *s, acbb_error *er
  * or an export; to save back into the user's own preset, use
  * acbb_scene_save_edits. */
 acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *err);
+/* The text acbb_scene_save writes, to an open stream the caller owns (the
+ * TUI's recovery files, written through a directory descriptor). The scene
+ * must pass acbb_scene_validate; ACBB_EIO when a write fails. */
+acbb_status acbb_scene_write(FILE *f, const acbb_scene *s, acbb_error *err);
 
 /* Save `s` into the preset at `path`, keeping the user's file (the way
  * `git config` writes; DESIGN.md). For the TUI's Save and `acbb edit`.
@@ -298,6 +308,10 @@ acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *e
  * scene or the old file), ACBB_EIO or ACBB_ENOMEM; on failure the file is
  * untouched. */
 acbb_status acbb_scene_save_edits(const char *path, const acbb_scene *s, acbb_error *err);
+/* The same, the file at `path` kept and the result written to `to`
+ * (`acbb edit --out`: an installed preset edited into the user's copy). */
+acbb_status acbb_scene_save_edits_to(const char *path, const char *to, const acbb_scene *s,
+                                     acbb_error *err);
 
 /* Set one value from text, "section.key" and "value" in preset units
  * (as `--set` on the CLI and the TUI editor do). Validates the value;

@@ -147,6 +147,13 @@ typedef struct acbb_sim acbb_sim;
 acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err);
 void acbb_sim_free(acbb_sim *sim);
 
+/* Every check a run makes before its first step, and no step: the scene's
+ * values and rules, then its compilation by acbb_sim_new (derived
+ * lubricant values, the thermal network's geometry, an ill-posed first
+ * equilibrium). `acbb check`, `acbb edit` and the TUI's save all use it,
+ * so nothing is saved that `acbb run` then refuses (issue 26 item 9). */
+acbb_status acbb_sim_check(const acbb_scene *s, acbb_error *err);
+
 /* One coupled step. Returns ACBB_OK while running and at convergence
  * (check acbb_sim_state); a named failure otherwise, with the last good
  * state kept for the snapshot. Calling step after the run ended is a no-op

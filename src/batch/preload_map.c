@@ -148,6 +148,27 @@ static acbb_status check(const acbb_pmap_opts *o, int set, acbb_error *err)
     return ACBB_OK;
 }
 
+/* The grid's corners as scenes, checked before anything runs: a speed or
+ * preload outside its key's range is bad input, not a map of failed cells
+ * (issue 26 item 11). Each key is monotonic over the grid, so the corners
+ * bound every cell. */
+static acbb_status corners_valid(const pmap_ctx *c, size_t n, acbb_error *err)
+{
+    size_t np = (size_t)c->o->n_preloads, corner[4] = { 0, np - 1, n - np, n - 1 };
+    for (int k = 0; k < 4; k++) {
+        acbb_scene sc;
+        acbb_batch_mode mode;
+        acbb_error e;
+        cell_scene((void *)c, corner[k], &sc, &mode, &e);
+        acbb_status rc = acbb_scene_validate(&sc, &e);
+        if (rc != ACBB_OK)
+            return acbb_error_set(err, rc, "the cell at %g rpm, %g N: %s",
+                                  c->cells[corner[k]].speed_rpm, c->cells[corner[k]].preload_N,
+                                  e.msg);
+    }
+    return ACBB_OK;
+}
+
 acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
                              acbb_pmap_cell *cells, acbb_pmap_row *rows, acbb_error *err)
 {
@@ -165,6 +186,10 @@ acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
     }
     pmap_ctx c = { base, o, cells, calloc(n, 1) };
     if (!c.set_done) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    if ((rc = corners_valid(&c, n, err)) != ACBB_OK) {
+        free(c.set_done);
+        return rc;
+    }
     acbb_batch_opts bo = { .jobs = o->jobs, .cancel = o->cancel, .mode = ACBB_BATCH_TRANSIENT,
                            .scene = cell_scene, .step = set ? set_final : NULL,
                            .done = cell_done, .ctx = &c };

@@ -604,7 +604,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     acbb_schedule_apply(&sim->s, &op);
     sim->bound_axial = op.axial_load;
     sim->bound_radial = op.radial_load;
-    acbb_status rc = acbb_scene_validate(s, err);
+    acbb_status rc = acbb_lubricant_explain(s, acbb_scene_validate(s, err), err);
     if (rc != ACBB_OK) return rc;
     if ((rc = check_supported(s, err)) != ACBB_OK) return rc;
     if ((rc = acbb_quad_init(&sim->quad, s->contact_grid)) != ACBB_OK)

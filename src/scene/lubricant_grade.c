@@ -17,6 +17,8 @@
  * Explicit values override: a graded scene keeps any of oil_nu40,
  * oil_nu100, oil_alpha_pv set to other than its default. */
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include "gsl_quiet.h"
@@ -135,4 +137,16 @@ void acbb_lubricant_apply(acbb_scene *s)
         s->oil_nu100 = acbb_nu100_from_vi(s->oil_nu40 * 1e6, s->oil_vi) * 1e-6;
     if (s->oil_alpha_pv == d.oil_alpha_pv)
         s->oil_alpha_pv = acbb_wooster_alpha(rho40(s) * s->oil_nu40);
+}
+
+acbb_status acbb_lubricant_explain(const acbb_scene *s, acbb_status rc, acbb_error *err)
+{
+    if (rc == ACBB_OK || !err || acbb_grade_midpoint(s->oil_grade) <= 0.0 ||
+        strncmp(err->msg, "lubricant.oil_", 14) != 0)
+        return rc;
+    char was[sizeof err->msg];
+    snprintf(was, sizeof was, "%s", err->msg);
+    return acbb_error_set(err, rc, "lubricant.grade = VG%g with lubricant.viscosity_index = %g "
+                          "derives %s: choose a higher grade or viscosity index, "
+                          "or set that key", acbb_grade_midpoint(s->oil_grade), s->oil_vi, was);
 }

@@ -232,7 +232,8 @@ static acbb_status parse_old(const char *path, char *buf, size_t len, acbb_sf_pa
     return rc;
 }
 
-static acbb_status edit_file(const char *path, const acbb_scene *s, acbb_error *err)
+static acbb_status edit_file(const char *path, const char *to, const acbb_scene *s,
+                             acbb_error *err)
 {
     char *buf = NULL;
     size_t len = 0;
@@ -243,7 +244,7 @@ static acbb_status edit_file(const char *path, const acbb_scene *s, acbb_error *
     if (!c || !p) rc = acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", path);
     if (rc == ACBB_OK) rc = parse_old(path, buf, len, p, err);
     acbb_out *o = NULL;
-    if (rc == ACBB_OK) rc = acbb_out_open(path, &o, &c->f, err);
+    if (rc == ACBB_OK) rc = acbb_out_open(to, &o, &c->f, err);
     if (rc == ACBB_OK) {
         c->s = s;
         c->p = p;
@@ -260,6 +261,12 @@ static acbb_status edit_file(const char *path, const acbb_scene *s, acbb_error *
 
 acbb_status acbb_scene_save_edits(const char *path, const acbb_scene *s, acbb_error *err)
 {
+    return acbb_scene_save_edits_to(path, path, s, err);
+}
+
+acbb_status acbb_scene_save_edits_to(const char *path, const char *to, const acbb_scene *s,
+                                     acbb_error *err)
+{
     acbb_error e;
     acbb_status rc = acbb_scene_validate(s, &e);
     struct stat st;
@@ -269,9 +276,9 @@ acbb_status acbb_scene_save_edits(const char *path, const acbb_scene *s, acbb_er
     else if (!found && en != ENOENT)
         rc = acbb_error_set(err, ACBB_EIO, "%s: cannot save: %s", path, strerror(en));
     else if (!found || !S_ISREG(st.st_mode) || st.st_size == 0)
-        return acbb_scene_save(path, s, err);
+        return acbb_scene_save(to, s, err);
     else
-        rc = edit_file(path, s, err);
+        rc = edit_file(path, to, s, err);
     if (rc != ACBB_OK) acbb_sf_escape_msg(err);
     return rc;
 }

@@ -345,6 +345,16 @@ int acbb_sf_write_preset(FILE *f, const acbb_scene *s)
     return bad ? -1 : 0;
 }
 
+acbb_status acbb_scene_write(FILE *f, const acbb_scene *s, acbb_error *err)
+{
+    acbb_error e;
+    acbb_status rc = acbb_scene_validate(s, &e);
+    if (rc != ACBB_OK) return acbb_error_set(err, rc, "not saved: %s", e.msg);
+    if (acbb_sf_write_preset(f, s) != 0 || fflush(f) != 0)
+        return acbb_error_set(err, ACBB_EIO, "cannot write: %s", strerror(errno));
+    return ACBB_OK;
+}
+
 /* Through acbb_out (outfile.h): temp file beside the target, fsync, rename;
  * mode kept, symlinks followed, non-regular targets written directly. */
 acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *err)
