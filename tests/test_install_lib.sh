@@ -100,18 +100,28 @@ if [ "$SAN" = none ]; then
 else
     skip "the example links fully static" "sanitizer build ($SAN): no static runtime"
 fi
-# The Python module as installed finds the library of its own prefix.
-PYMOD=$(find "$D" -path '*/share/acbb/python/acbb.py' | head -n 1)
-[ -n "$PYMOD" ]
-t $? "python/acbb.py is installed (${PYMOD#"$D"})"
+# The Python module as installed (issue 28 item 1): in the Python site
+# directory, where `import acbb` works with PYTHONPATH at the DESTDIR's
+# site directory only (nothing under share/); it has __version__, finds the
+# library of its own prefix and the installed presets by name, as the CLI
+# does, from a directory with no presets/ and no user presets.
+PYMOD=$(find "$D" -name acbb.py -path '*-packages/acbb.py' | head -n 1)
+[ -n "$PYMOD" ] && [ -z "$(find "$D" -path '*/share/acbb/python*')" ]
+t $? "acbb.py is installed into the Python site directory (${PYMOD#"$D"}), not share/acbb/python"
 if [ "$SAN" = none ] && command -v python3 >/dev/null; then
-    env -u ACBB_LIB PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
-r = acbb.run("presets/7008C.ini")
-print(r["status"], "%.17g" % r["losses_W"]["total"])' >"$TMP/py.txt" 2>"$TMP/err"
-    [ "$(cat "$TMP/py.txt")" = "converged $(val P_total_W)" ]
-    t $? "the installed module runs 7008C with the installed library (no ACBB_LIB)"
+    mkdir -p "$TMP/elsewhere" "$TMP/xdg"
+    (cd "$TMP/elsewhere" && env -u ACBB_LIB XDG_CONFIG_HOME="$TMP/xdg" \
+        PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
+print("version", acbb.__version__)
+r = acbb.run("7008C")
+print(r["status"], "%.17g" % r["losses_W"]["total"])') >"$TMP/py.txt" 2>"$TMP/err"
+    has "$TMP/py.txt" "converged $(val P_total_W)" \
+        "the installed module runs the installed preset 7008C by name with the installed library"
+    has "$TMP/py.txt" "version $("$ACBB" --version | awk '{ print $2 }')" \
+        "acbb.__version__ is the release acbb --version prints"
 else
-    skip "the installed module runs 7008C" "sanitizer build or no python3"
+    skip "the installed module runs 7008C by name" "sanitizer build or no python3"
+    skip "acbb.__version__" "sanitizer build or no python3"
 fi
 
 LD_LIBRARY_PATH=$LIB "$TMP/ex" presets/no-such.ini >/dev/null 2>"$TMP/err"

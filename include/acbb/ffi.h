@@ -21,8 +21,8 @@
  *     ("not_converged", "runaway", ...) with the reason in message;
  *   - the scene could not be compiled: status, message, "iterations": 0
  *     and "scene" (acbb_json_write_failed);
- *   - bad input (text or a setting): {"status": "bad_input", "message":
- *     ...} with the engine's message, e.g. "operating.axial_load_N=-5:
+ *   - bad input (text or a setting): {"schema_version": N, "status":
+ *     "bad_input", "message": ...} with the engine's message, e.g. "operating.axial_load_N=-5:
  *     ..." for a setting (the CLI prefixes it with "--set ").
  *   No number in it is NaN or Inf: one would be written as null and
  *   *status set to ACBB_NONFINITE (an internal error, as the CLI's exit
@@ -36,7 +36,8 @@
  *   and ACBB_ENOMEM as said above).
  * - Thread-safety: reentrant; calls on different threads are independent
  *   (the engine keeps no global mutable state). A call blocks until its
- *   run ends (milliseconds to seconds; no cancel). Nothing is printed.
+ *   run ends (milliseconds to seconds) or acbb_run_preset_json_ctl's
+ *   cancel flag is set. Nothing is printed.
  * - Numbers are read and written with a decimal point whatever locale the
  *   host set (setlocale(LC_ALL, "") under de_DE included): the engine
  *   reads and prints them in the "C" locale on the calling thread only. */
@@ -44,6 +45,7 @@
 #define ACBB_FFI_H
 
 #include <stddef.h>
+#include "acbb/cancel_flag.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -51,6 +53,22 @@ extern "C" {
 
 char *acbb_run_preset_json(const char *preset_text, const char *const *settings,
                            size_t n_settings, int *status);
+
+/* acbb_run_preset_json with two controls (issue 28 items 2 and 4):
+ * - the text is text_len bytes (no terminator needed), so a NUL byte in
+ *   it is refused as `acbb run` refuses it in a file ("<text>:2: NUL byte
+ *   in line 2 (a preset is plain text)", bad_input), not taken as the end;
+ * - cancel (may be NULL): the caller sets it (nonzero, from any thread or
+ *   a signal handler) to stop the run, as Ctrl-C stops `acbb run`: the
+ *   call returns soon after with the document that command prints then,
+ *   status "cancelled" and the last good state (a set-up that was cut:
+ *   "cancelled", iterations 0 and the scene), and *status ACBB_CANCELLED.
+ *   The flag is only read; the caller owns it and clears it for reuse.
+ * acbb_run_preset_json(t, ...) is acbb_run_preset_json_ctl(t, strlen(t),
+ * ..., NULL, ...). */
+char *acbb_run_preset_json_ctl(const char *preset_text, size_t text_len,
+                               const char *const *settings, size_t n_settings,
+                               const acbb_atomic_int *cancel, int *status);
 
 /* Free a string returned by this API; NULL is allowed. */
 void acbb_string_free(char *s);
