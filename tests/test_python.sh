@@ -148,6 +148,20 @@ has "$TMP/out" "nul bad_input |<text>:2: NUL byte in line 2 (a preset is plain t
 has "$TMP/out" "refusal schema_version 3" "a bad_input document carries schema_version"
 has "$TMP/out" "missing bad_input cannot open preset no-such-preset" "an unknown name is said"
 
+# An ill-posed scene: the CLI's status and message (bad_input, exit 2).
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=0 --set operating.radial_load_N=500 \
+    --json 2>/dev/null | jq -r '"\(.status) \(.message)"' >"$TMP/ill_cli"
+py <<'PY' >"$TMP/ill_py"
+import sys
+import acbb
+try:
+    acbb.run("7008C", {"operating.axial_load_N": 0, "operating.radial_load_N": 500}, lib=sys.argv[2])
+except acbb.AcbbError as e:
+    print(e.status, e)
+PY
+[ -s "$TMP/ill_cli" ] && cmp -s "$TMP/ill_cli" "$TMP/ill_py" && grep -q "^bad_input " "$TMP/ill_py"
+t $? "an ill-posed scene: the same status and message as the CLI's ($(cat "$TMP/ill_py"))"
+
 # Ctrl-C during a long call (the dynamic level of combined-load, whose
 # set-up alone takes seconds): SIGINT once python runs the call in its
 # worker thread (python catches SIGINT and a second thread is in /proc),

@@ -23,7 +23,9 @@
  *     and "scene" (acbb_json_write_failed);
  *   - bad input (text or a setting): {"schema_version": N, "status":
  *     "bad_input", "message": ...} with the engine's message, e.g. "operating.axial_load_N=-5:
- *     ..." for a setting (the CLI prefixes it with "--set ").
+ *     ..." for a setting (the CLI prefixes it with "--set "); a scene
+ *     the rules find ill-posed as it loads is bad_input too, as the CLI
+ *     names it, with *status ACBB_ILL_POSED.
  *   No number in it is NaN or Inf: one would be written as null and
  *   *status set to ACBB_NONFINITE (an internal error, as the CLI's exit
  *   status reports it; the document stays the one the CLI prints).
@@ -32,8 +34,9 @@
  *   NULL is returned only when memory runs out.
  * - *status (may be NULL): ACBB_OK when the run converged, else the
  *   acbb_status (status.h) that the "status" string names: ACBB_EINVAL for
- *   bad input, the run's final status for a failed run (ACBB_NONFINITE
- *   and ACBB_ENOMEM as said above).
+ *   bad input (ACBB_ILL_POSED for an ill-posed one), the run's final
+ *   status for a failed run (ACBB_NONFINITE and ACBB_ENOMEM as said
+ *   above).
  * - Thread-safety: reentrant; calls on different threads are independent
  *   (the engine keeps no global mutable state). A call blocks until its
  *   run ends (milliseconds to seconds) or acbb_run_preset_json_ctl's

@@ -56,12 +56,14 @@ static acbb_status run(acbb_json *j, const acbb_scene *sc, const acbb_atomic_int
 }
 
 /* Bad input, or a scene that could not be prepared: the layout's version,
- * status and message, as every document (acbb/json.h). */
+ * status and message, as every document (acbb/json.h). A scene the rules
+ * find ill-posed while loading is bad input, as `acbb run --json` names it
+ * (exit 2); *status still says ACBB_ILL_POSED. */
 static void write_refusal(acbb_json *j, acbb_status st, const acbb_error *err)
 {
     acbb_json_open(j, NULL, '{', false);
     acbb_json_long(j, "schema_version", ACBB_JSON_SCHEMA_VERSION);
-    acbb_json_str(j, "status", acbb_status_name(st));
+    acbb_json_str(j, "status", acbb_status_name(st == ACBB_ILL_POSED ? ACBB_EINVAL : st));
     acbb_json_str(j, "message", err->msg[0] ? err->msg : acbb_status_name(st));
     acbb_json_close(j, '}');
 }
