@@ -57,9 +57,12 @@ t $? "pkg-config --cflags acbb points into the DESTDIR"
 SANF=()
 [ "$SAN" != none ] && SANF=("-fsanitize=$SAN")
 # shellcheck disable=SC2046  # pkg-config's words are meant to split
-"$CC" "${SANF[@]}" examples/run_preset.c $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
+EX=$(find "$D" -path '*/doc/acbb/examples/run_preset.c' | head -n 1)
+[ -n "$EX" ] && cmp -s "$EX" examples/run_preset.c
+t $? "the example is installed (${EX#"$D"})"
+"$CC" "${SANF[@]}" "${EX:-examples/run_preset.c}" $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
     2>"$TMP/err"
-code $? 0 "the example builds with pkg-config --cflags --libs acbb"
+code $? 0 "the installed example builds with pkg-config --cflags --libs acbb"
 # The installed headers from C++ (issue 28 item 5): extern "C", no C11
 # _Atomic in a public type.
 if command -v c++ >/dev/null; then
@@ -80,11 +83,11 @@ code $? 0 "the example runs 7008C to convergence (exit 0)"
 code $? 0 "acbb run presets/7008C.ini --json"
 # The example prints %.17g, as the JSON does: the same numbers exactly.
 val() { awk -v k="$1" '$1 == k { print $2 }' "$TMP/ex.txt"; }
-jq -e --arg st "$(val status)" --argjson T "$(val T_outer_ring_C)" \
-    --argjson P "$(val P_total_W)" --argjson Q "$(val Qi_ball0_N)" \
+jq -e --arg st "$(val status)" --argjson T "$(val temperature_C.outer_ring)" \
+    --argjson P "$(val losses_W.total)" --argjson Q "$(val 'balls[0].Qi_N')" \
     '.status == $st and $st == "converged" and .temperature_C.outer_ring == $T
      and .losses_W.total == $P and .balls[0].Qi_N == $Q' "$TMP/run.json" >/dev/null 2>&1
-t $? "status, outer-ring temperature, total loss and Qi equal the CLI's JSON"
+t $? "status, outer-ring temperature, total loss and Qi, named by their JSON paths, equal the CLI's JSON"
 
 if [ "$SAN" = none ]; then
     # shellcheck disable=SC2046
@@ -115,7 +118,7 @@ if [ "$SAN" = none ] && command -v python3 >/dev/null; then
 print("version", acbb.__version__)
 r = acbb.run("7008C")
 print(r["status"], "%.17g" % r["losses_W"]["total"])') >"$TMP/py.txt" 2>"$TMP/err"
-    has "$TMP/py.txt" "converged $(val P_total_W)" \
+    has "$TMP/py.txt" "converged $(val losses_W.total)" \
         "the installed module runs the installed preset 7008C by name with the installed library"
     has "$TMP/py.txt" "version $("$ACBB" --version | awk '{ print $2 }')" \
         "acbb.__version__ is the release acbb --version prints"

@@ -14,7 +14,7 @@
 static acbb_status prepare(const char *text, size_t len, const char *const *settings,
                            size_t n, acbb_scene *sc, acbb_error *err)
 {
-    acbb_status st = acbb_scene_load_text_n(text, len, sc, err);
+    acbb_status st = acbb_scene_load_text_n(text, len, NULL, sc, err);
     if (st == ACBB_OK) st = acbb_scene_apply_edits(sc, settings, n, err);
     if (st == ACBB_OK) acbb_fidelity_apply(sc, NULL);
     return st;
