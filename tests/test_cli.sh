@@ -359,15 +359,17 @@ code $? 2 "tui --pace fast exits 2 (parsed by the table, checked by the TUI)"
 "$ACBB" report "$PRESET" --md >"$TMP/out" 2>"$TMP/err"
 code $? 2 "report --md without a value exits 2"
 has "$TMP/err" "option needs a value: --md" "the one parser says so"
-# A robustness that fails (here a bad --inputs key, found after the study
-# ran) prints no report and writes no --md file: without the section asked
-# for it would look complete (issue 16). Out of memory takes the same path
-# with exit 4 (acbb_cli_exit_for).
-"$ACBB" report "$PRESET" --inputs materials.ball_E_GPa --md "$TMP/rob.md" >"$TMP/out" 2>"$TMP/err"
-code $? 2 "report with a failing robustness exits 2"
+# A bad --inputs key is refused before the study runs (issue 28 item 13:
+# it used to be found after the whole study): exit 2, no report on
+# stdout, no --md file, and no "running the study" progress note first.
+ACBB_PROGRESS=1 "$ACBB" report "$PRESET" --inputs materials.ball_E_GPa --md "$TMP/rob.md" \
+    >"$TMP/out" 2>"$TMP/err"
+code $? 2 "report --inputs with a key that is not an uncertain input exits 2"
 [ ! -e "$TMP/rob.md" ] && [ ! -s "$TMP/out" ]
-t $? "a failed robustness: no report on stdout, no --md file"
-has "$TMP/err" "no report printed, --md file not written" "a failed robustness says what was not written"
+t $? "no report on stdout, no --md file"
+has "$TMP/err" "report: --inputs: materials.ball_E_GPa is not an uncertain input" "naming the key"
+! grep -q "running the study" "$TMP/err"
+t $? "and nothing runs first (no study progress on stderr)"
 
 # ---- unknown and misplaced options ----
 "$ACBB" run "$PRESET" --josn >"$TMP/out" 2>"$TMP/err"
