@@ -607,4 +607,14 @@ t $? "a DB pair: arrangement, preload kind and value"
 grep -q '^scene        15000 rpm, Fx 1000 N, Fr 0 N,' "$TMP/one.txt" && ! grep -q '^mounting' "$TMP/one.txt"
 t $? "one bearing under a force: Fx and Fr, no mounting line"
 
+# Progress of the batch commands (issue 28 item 13): study counts its runs,
+# sensitivity's count has an ETA (the first run always draws the line).
+ACBB_PROGRESS=1 "$ACBB" study "$PRESET" >/dev/null 2>"$TMP/err"
+tr '\r' '\n' <"$TMP/err" | grep -q '^study: 48/48 runs, [0-9.]* runs/s$'
+t $? "study PRESET shows its progress (study: N/48 runs)"
+ACBB_PROGRESS=1 "$ACBB" sensitivity "$PRESET" --metric losses_W.total \
+    --set fidelity.thermal_mode=steady >/dev/null 2>"$TMP/err"
+tr '\r' '\n' <"$TMP/err" | grep -q '^sensitivity: 1/[0-9]* runs, [0-9.]* runs/s, ETA [0-9]* s'
+t $? "sensitivity's progress has an ETA"
+
 tap_done
