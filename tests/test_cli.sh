@@ -607,6 +607,16 @@ t $? "a DB pair: arrangement, preload kind and value"
 grep -q '^scene        15000 rpm, Fx 1000 N, Fr 0 N,' "$TMP/one.txt" && ! grep -q '^mounting' "$TMP/one.txt"
 t $? "one bearing under a force: Fx and Fr, no mounting line"
 
+# A sweep's CSV has the JSONL's doubles, all 17 digits (the README said
+# %.10g; issue 28 item 13).
+"$ACBB" sweep "$PRESET" --param operating.axial_load_N --values 300 --csv "$TMP/digits.csv" \
+    --jsonl "$TMP/digits.jsonl" >/dev/null 2>&1
+csv_total=$(awk -F, '/^#/ { next } !c { for (i = 1; i <= NF; i++) if ($i == "losses_W.total") c = i
+                                              next } { print $c; exit }' "$TMP/digits.csv")
+[ -n "$csv_total" ] && jq -e --argjson v "$csv_total" 'select(.index == 0) | ."losses_W.total" == $v' \
+    "$TMP/digits.jsonl" >/dev/null && [ "$(printf %s "$csv_total" | tr -d '.-' | sed 's/^0*//' | wc -c)" -gt 11 ]
+t $? "sweep --csv: losses_W.total $csv_total, the JSONL's double to the last digit"
+
 # Progress of the batch commands (issue 28 item 13): study counts its runs,
 # sensitivity's count has an ETA (the first run always draws the line).
 ACBB_PROGRESS=1 "$ACBB" study "$PRESET" >/dev/null 2>"$TMP/err"
