@@ -32,6 +32,8 @@ t $? "and prints docs/schema/acbb.schema.json byte for byte"
 $PY -c 'import json, sys, jsonschema
 jsonschema.Draft202012Validator.check_schema(json.load(open(sys.argv[1])))' "$SCHEMA"
 t $? "the schema is a valid Draft 2020-12 schema"
+! grep -q 'MODEL\.md' "$SCHEMA"
+t $? "the installed schema cites docs/physics.md, never the unshipped MODEL.md"
 
 mkdir "$TMP/runs"
 for p in presets/*.ini; do
