@@ -5,9 +5,11 @@
  *
  * acbb_run_preset_json runs the scene to the end exactly as
  * `acbb run PRESET --set S1 --set S2 ... --json` does (the same loading and
- * checks, the fidelity preset applied, the same run loop) and returns the
- * document that command prints, byte for byte; only wall_ms, the run's
- * wall time, differs between any two runs.
+ * checks, the fidelity preset applied, the same run loop, the other branch
+ * solved for a scene that wants it, acbb/branches.h) and returns the
+ * document that command prints, byte for byte (test `python` compares
+ * every preset's); only wall_ms, the run's wall time, differs between any
+ * two runs.
  *
  * - preset_text: the preset's content (INI text, NUL-terminated), not a
  *   path. Messages name it "<text>" ("<text>:3: ...").
@@ -15,15 +17,16 @@
  *   the CLI's --set takes them (NULL when n_settings is 0); checked and
  *   applied after the text, as a whole (acbb_scene_apply_edits).
  * - Returns a JSON object as a NUL-terminated string (ASCII, or UTF-8
- *   quoted from the input). It always has "status" and "message" strings:
+ *   quoted from the input). It always has "schema_version" first, then
+ *   "status" and "message" strings (docs/schema/acbb.schema.json):
  *   - the run started: the full run document (acbb/json.h,
  *     acbb_json_write_run); status "converged", or how the run failed
  *     ("not_converged", "runaway", ...) with the reason in message;
  *   - the scene could not be compiled: status, message, "iterations": 0
  *     and "scene" (acbb_json_write_failed);
  *   - bad input (text or a setting): {"schema_version": N, "status":
- *     "bad_input", "message": ...} with the engine's message, e.g. "operating.axial_load_N=-5:
- *     ..." for a setting (the CLI prefixes it with "--set "); a scene
+ *     "bad_input", "message": ...} with the engine's message, e.g.
+ *     "operating.axial_load_N=-5: ..." for a setting (the CLI prefixes it with "--set "); a scene
  *     the rules find ill-posed as it loads is bad_input too, as the CLI
  *     names it, with *status ACBB_ILL_POSED.
  *   No number in it is NaN or Inf: one would be written as null and
