@@ -7,7 +7,7 @@ set -eu
 cd "$(dirname "$0")"
 
 PACKAGES="build-essential meson ninja-build pkg-config libgsl-dev libinih-dev libncurses-dev libcjson-dev
-          gnuplot-nox jq tmux python3 libxml2-utils locales"
+          gnuplot-nox jq tmux python3 python3-jsonschema libxml2-utils locales"
 
 install_deps() {
     missing=""

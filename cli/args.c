@@ -20,8 +20,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_SPEEDS] = { "speeds", "LO:HI:N", "inner-ring speeds, rpm: N evenly spaced from LO to HI" },
     [CLI_OPT_PRELOADS] = { "preloads", "LO:HI:N", "preload forces, N: N evenly spaced from LO to HI" },
     [CLI_OPT_MAX_RISE] = { "max-rise", "K", "upper limit: rings and ball at most K above ambient (0 = off)" },
-    [CLI_OPT_MIN_LIFE] = { "min-life", "H", "upper limit: modified rating life L_nmr at least H hours (0 = off)" },
-    [CLI_OPT_MIN_S0] = { "min-s0", "S", "upper limit: static safety s0 at least S (0 = off)" },
+    [CLI_OPT_MIN_LIFE] = { "min-life", "H", "lower limit: modified rating life L_nmr at least H hours (0 = off)" },
+    [CLI_OPT_MIN_S0] = { "min-s0", "S", "lower limit: static safety s0 at least S (0 = off)" },
     [CLI_OPT_SPRING] = { "spring", NULL, "a spring (constant-force) preload: each cell's preload "
                          "is the axial load (default: rigid, set at rest and held)" },
     [CLI_OPT_TRANSIENT] = { "transient", NULL, "run each point's transient (default: the steady "
@@ -34,7 +34,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                       "stdout); new: the preset file; edit: the edited copy (the preset kept); "
                       "study: the figure directory" },
     [CLI_OPT_DUMB] = { "dumb", NULL, "a text chart on stdout (the default)" },
-    [CLI_OPT_SIZE] = { "size", "WxH", "pixels (default 1000x600) or characters with --dumb (80x25)" },
+    [CLI_OPT_SIZE] = { "size", "WxH",
+                       "plot: pixels (default 1000x600) or characters with --dumb (80x25); "
+                       "study: pixels (default 900x600)" },
     [CLI_OPT_KNOBS] = { "knobs", "K1,...",
                         "model contact_grid hertz mech_tol steady_tol thermal network (default all)" },
     [CLI_OPT_MODELS] = { "models", "M1,...",

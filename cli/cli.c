@@ -299,10 +299,17 @@ int acbb_cli_cmd_study(const acbb_cli_args *args)
 
 /* A run the cancel stopped mid-way is shown as not run: its numbers are
  * those of an unfinished transient (issue 16). */
+typedef struct {
+    acbb_cli_point *pts;
+    acbb_cli_counter count;  /* "study: 12/48 runs, ..., ETA" (issue 28 item 13) */
+} study_ctx;
+
 static void study_done(void *ctx, const acbb_batch_result *r)
 {
-    point_done(ctx, r);
-    acbb_cli_point *p = &((acbb_cli_point *)ctx)[r->index];
+    study_ctx *sc = ctx;
+    acbb_cli_counter_step(&sc->count, r->done, r->total);
+    point_done(sc->pts, r);
+    acbb_cli_point *p = &sc->pts[r->index];
     if (r->status != ACBB_CANCELLED || !p->have_snap) return;
     p->have_snap = false;
     p->status = ACBB_CANCELLED;
@@ -335,7 +342,9 @@ static int study_table(const acbb_cli_args *a, long jobs)
         pts[i].scene = plan->pts[i].scene;
         snprintf(pts[i].value, sizeof pts[i].value, "%g", plan->pts[i].x);
     }
-    acbb_study_compare_run(plan, (int)jobs, acbb_cli_interrupt_begin(), study_done, pts, NULL);
+    study_ctx ctx = { .pts = pts };
+    acbb_cli_counter_init(&ctx.count, "study");
+    acbb_study_compare_run(plan, (int)jobs, acbb_cli_interrupt_begin(), study_done, &ctx, NULL);
     acbb_cli_interrupt_end();
 
     if (a->val[CLI_OPT_CSV]) {

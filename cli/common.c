@@ -1,6 +1,7 @@
 /* acbb CLI — shared helpers (common.h). */
 #include <errno.h>
 #include <limits.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,10 +26,35 @@ const char *acbb_cli_set_prefix(const char *msg, const char *const *sets, size_t
     return "";
 }
 
+#define STDIN_PRESET_MAX (4u << 20) /* bytes; a preset is a few kB */
+
+/* PRESET "-": stdin, read once and kept (a command may load its scene more
+ * than once), named "<stdin>" in messages (issue 28 item 12). */
+static acbb_status load_stdin(acbb_scene *sc, acbb_error *err)
+{
+    static char *text;
+    static size_t len;
+    static bool read_done;
+    if (!read_done) {
+        read_done = true;
+        text = malloc(STDIN_PRESET_MAX + 1);
+        if (!text) return acbb_error_set(err, ACBB_ENOMEM, "<stdin>: out of memory");
+        len = fread(text, 1, STDIN_PRESET_MAX + 1, stdin);
+        if (ferror(stdin))
+            return acbb_error_set(err, ACBB_EIO, "<stdin>: cannot read: %s", strerror(errno));
+    }
+    if (!text) return acbb_error_set(err, ACBB_ENOMEM, "<stdin>: out of memory");
+    if (len > STDIN_PRESET_MAX)
+        return acbb_error_set(err, ACBB_EINVAL, "<stdin>: more than %u bytes (a preset is a "
+                              "few kB)", STDIN_PRESET_MAX);
+    return acbb_scene_load_text_n(text, len, "<stdin>", sc, err);
+}
+
 int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
 {
     acbb_error err = { { 0 } };
-    acbb_status st = acbb_scene_load(a->preset, sc, &err);
+    acbb_status st = strcmp(a->preset, "-") == 0 ? load_stdin(sc, &err)
+                                                 : acbb_scene_load(a->preset, sc, &err);
     if (st == ACBB_OK) st = acbb_scene_apply_edits(sc, a->sets, a->n_sets, &err);
     /* --max-wall is fidelity.max_wall_s, checked by the schema's range. */
     if (st == ACBB_OK && a->val[CLI_OPT_MAX_WALL] &&

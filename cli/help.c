@@ -179,6 +179,27 @@ static void roff_synopsis(FILE *f, const acbb_cli_command *c)
     fputc('\n', f);
 }
 
+/* A command's details: prose filled (hand-broken lines overflowed the
+ * indent), an example line ("e.g. acbb ...", continued by a trailing
+ * backslash) unfilled and unhyphenated, so it neither runs into the prose
+ * nor breaks inside a word (issue 28 item 13). */
+static void man_details(FILE *f, const char *s)
+{
+    fputs(".IP\n", f);
+    bool example = false;
+    while (*s) {
+        size_t n = strcspn(s, "\n");
+        bool starts = !example && strncmp(s, "e.g. ", 5) == 0;
+        if (starts) fputs(".nf\n.nh\n", f);
+        roff(f, s, n);
+        fputc('\n', f);
+        bool more = n > 0 && s[n - 1] == '\\';
+        if ((starts || example) && !more) fputs(".fi\n.hy\n", f);
+        example = (starts || example) && more;
+        s += n + (s[n] == '\n');
+    }
+}
+
 static void man_commands(FILE *f)
 {
     fputs(".SH COMMANDS\n.na\n", f);   /* ragged right: long synopses */
@@ -188,10 +209,7 @@ static void man_commands(FILE *f)
         roff_synopsis(f, c);
         roff_s(f, c->summary);
         fputs(".\n", f);
-        if (c->details) { /* filled: hand-broken lines overflowed the indent */
-            fputs(".IP\n", f);
-            roff_s(f, c->details);
-        }
+        if (c->details) man_details(f, c->details);
     }
 }
 

@@ -59,7 +59,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       SCENE_OPTS | O(OUT), 1, 1, 0, acbb_cli_cmd_edit },
     { "sweep", NULL, "PRESET", "runs over a grid of parameter values, on every core",
       "e.g. acbb sweep 7008C --grid operating.axial_load_N=200,500,1000 \\\n"
-      "       --grid operating.inner_speed_rpm=2000:16000:8 --jsonl out.jsonl\n"
+      "       --grid operating.inner_speed_rpm=2000:16000:8 \\\n"
+      "       --jsonl out.jsonl\n"
       "The cartesian product of the --grid dimensions, point index row-major (the\n"
       "first --grid slowest). --jsonl/--csv get one record per point as it finishes;\n"
       "running the same command again resumes (points in the file are skipped; a\n"
@@ -77,7 +78,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "refused (2).\n",
       0, 2, CLI_MAX_POS, -1, acbb_cli_cmd_merge },
     { "sensitivity", NULL, "PRESET", "which uncertain input moves a result or flips its sign",
-      "e.g. acbb sensitivity 7008C --metric balls[0].Qi_N --delta thermal_expansion\n"
+      "e.g. acbb sensitivity 7008C --metric balls[0].Qi_N \\\n"
+      "       --delta thermal_expansion\n"
       "Every uncertain input (`acbb keys` shows its plausible range and source) is\n"
       "set to each end of its range, one at a time; the table is sorted by effect\n"
       "and FLIPS SIGN marks the inputs whose range changes the metric's sign.\n"
@@ -92,7 +94,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "--out DIR instead writes the seed's Figs. 7-19 (the study of `acbb report`:\n"
       "sweeps at 15000 rpm, TE and WTE) as DIR/figNN*.png, .svg and .csv, and\n"
       "DIR/REPORT.md linking them with the seed's captions and the verdicts of the\n"
-      "statements that cite them. e.g. acbb study seed --out figs\n"
+      "statements that cite them.\n"
+      "e.g. acbb study seed --out figs\n"
       "--size WxH: the figures' size in pixels (default 900x600).\n",
       SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT) | O(SIZE) | O(MAX_WALL), 1, 1, -1, acbb_cli_cmd_study },
     { "plot", NULL, "PRESET", "run the scene and plot it through gnuplot",
@@ -126,7 +129,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "internal geometry is estimated and marked `; estimated:` in the file.\n",
       O(OUT) | O(SERIES) | O(BORE) | O(ANGLE), 0, 1, -1, acbb_cli_cmd_new },
     { "preload-map", NULL, "PRESET", "the preload window over speed x preload, on every core",
-      "e.g. acbb preload-map preload-window --speeds 4000:16000:7 --preloads 50:1500:8\n"
+      "e.g. acbb preload-map preload-window --speeds 4000:16000:7 \\\n"
+      "       --preloads 50:1500:8\n"
       "Each cell: mounting.preload = displacement set at rest by the preload, the\n"
       "transient from ambient. Below the window the balls skid (the gyroscopic\n"
       "moment beats the traction of the inner contact, from the ball speeds); above\n"

@@ -107,7 +107,8 @@ static bool ends_with_ini(const char *s)
 
 int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report)
 {
-    if (strchr(arg, '/') || is_file(arg) || is_special(arg) || !arg[0]) {
+    /* "-": the preset is read from stdin (acbb_cli_load_scene). */
+    if (strchr(arg, '/') || is_file(arg) || is_special(arg) || !arg[0] || !strcmp(arg, "-")) {
         snprintf(out, n, "%s", arg);
         return 0;
     }

@@ -200,3 +200,20 @@ void acbb_cli_progress_end(acbb_cli_progress *p)
     fflush(p->f);
     p->shown = 0;
 }
+
+void acbb_cli_counter_init(acbb_cli_counter *c, const char *name)
+{
+    *c = (acbb_cli_counter){ .show = acbb_cli_progress_wanted(stderr), .t0_ms = acbb_now_ms(),
+                             .name = name };
+}
+
+void acbb_cli_counter_step(acbb_cli_counter *c, size_t done, size_t total)
+{
+    double now = acbb_now_ms(), s = 1e-3 * (now - c->t0_ms);
+    if (!c->show || (done < total && now - c->last_ms < 200.0)) return;
+    c->last_ms = now;
+    double rate = s > 0.0 ? (double)done / s : 0.0;
+    fprintf(stderr, "\r%s: %zu/%zu runs, %.1f runs/s", c->name, done, total, rate);
+    if (done < total && rate > 0.0) fprintf(stderr, ", ETA %.0f s", (double)(total - done) / rate);
+    fputs(done >= total ? "\n" : "   ", stderr);
+}

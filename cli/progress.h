@@ -74,6 +74,19 @@ void acbb_cli_progress_note(acbb_cli_progress *p, const char *fmt, ...)
 /* Erase the line. */
 void acbb_cli_progress_end(acbb_cli_progress *p);
 
+/* A batch's count on stderr when progress is wanted: "NAME: 12/48 runs,
+ * 3.1 runs/s, ETA 12 s", the time left at the rate so far; redrawn at most
+ * five times a second, the last call (done == total) ends the line
+ * (issue 28 item 13: study showed nothing, sensitivity no ETA). */
+typedef struct {
+    bool show;
+    double t0_ms, last_ms;
+    const char *name;
+} acbb_cli_counter;
+
+void acbb_cli_counter_init(acbb_cli_counter *c, const char *name);
+void acbb_cli_counter_step(acbb_cli_counter *c, size_t done, size_t total);
+
 /* Seconds until the residual reaches `target` at the fitted decay rate,
  * measured from wall second `now`; < 0 while not estimable (too few
  * points, or not decaying). */

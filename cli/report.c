@@ -826,5 +826,11 @@ int acbb_cli_cmd_report(const acbb_cli_args *a)
     }
     acbb_scene base;
     int rc = acbb_cli_load_scene(a, &base);
+    acbb_error err = { { 0 } };
+    if (!rc && k.n && acbb_study_rob_check_keys(&base, &(acbb_study_rob_opts){ .keys = k.keys,
+                                                .n_keys = k.n }, &err) != ACBB_OK) {
+        fprintf(stderr, "acbb: report: --inputs: %s; nothing run\n", err.msg);
+        return ACBB_EXIT_INPUT;
+    }
     return rc ? rc : report(a, &k, &base);
 }

@@ -15,18 +15,10 @@
 #include "exit.h"
 #include "progress.h"
 
-typedef struct {
-    int show;
-    double last;
-} progress_state;
-
+/* The count with an ETA (progress.h). */
 static void on_progress(void *ctx, size_t done, size_t total)
 {
-    progress_state *p = ctx;
-    double now = acbb_now_ms();
-    if (!p->show || (done < total && now - p->last < 200)) return;
-    p->last = now;
-    fprintf(stderr, "\rsensitivity: %zu/%zu runs%s", done, total, done >= total ? "\n" : "   ");
+    acbb_cli_counter_step(ctx, done, total);
 }
 
 /* Options into the engine's; 0 or the exit status (message printed). */
@@ -265,7 +257,8 @@ int acbb_cli_cmd_sensitivity(const acbb_cli_args *a)
     if (rc) return rc;
     acbb_sens_result *r = malloc(sizeof *r);
     if (!r) return ACBB_EXIT_INTERNAL;
-    progress_state ps = {.show = acbb_cli_progress_wanted(stderr), .last = 0};
+    acbb_cli_counter ps;
+    acbb_cli_counter_init(&ps, "sensitivity");
     o.progress = on_progress;
     o.ctx = &ps;
     /* SIGINT / SIGTERM stop the runs within a step (progress.h); a

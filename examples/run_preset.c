@@ -1,7 +1,9 @@
 /* Run a preset to steady state with the installed engine library:
  *   cc run_preset.c $(pkg-config --cflags --libs acbb) -o run_preset
  *   ./run_preset presets/7008C.ini
- * Exits 0 when the run converged, 1 when it did not, 2 on bad input. */
+ * Prints four results under the names `acbb run --json` gives them (JSON
+ * schema 3 paths). Exits 0 when the run converged, 1 when it did not, 2 on
+ * bad input. Installed as PREFIX/share/doc/acbb/examples/run_preset.c. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <acbb/acbb.h>
@@ -28,7 +30,7 @@ int main(int argc, char **argv)
     }
     acbb_sim_snapshot(sim, s);
     acbb_sim_free(sim);
-    printf("status %s\nT_outer_ring_C %.17g\nP_total_W %.17g\nQi_ball0_N %.17g\n",
+    printf("status %s\ntemperature_C.outer_ring %.17g\nlosses_W.total %.17g\nballs[0].Qi_N %.17g\n",
            acbb_run_status_name(s), s->T_outer_ring, s->losses.total,
            s->n_balls > 0 ? s->balls[0].Qi : 0.0);
     int rc = s->state == ACBB_RUN_CONVERGED ? 0 : 1;

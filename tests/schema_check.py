@@ -1,58 +1,21 @@
 #!/usr/bin/env python3
-"""A JSON Schema checker for the subset docs/schema/acbb.schema.json uses
-(type, const, enum, required, properties, additionalProperties, items,
-minimum; a type may be a list): no validator library is installed.
+"""Validate JSON documents against docs/schema/acbb.schema.json with the
+jsonschema package's Draft 2020-12 validator (Debian python3-jsonschema;
+issue 28 item 6: it replaced a hand-written checker of a subset).
 Usage: schema_check.py SCHEMA [--def KIND] [--lines] [--each] DOC.json...
 --def: check against $defs/KIND instead of the root; --lines: each line of
 a DOC is one document (JSONL); --each: the DOC is an array, check each
 element. Exit 0 when every document conforms, 1 with each violation's
-path on stderr otherwise."""
+path and reason on stderr otherwise, 77 when jsonschema is missing."""
 import json
 import sys
 
-TYPES = {"object": dict, "array": list, "string": str, "boolean": bool}
-
-
-def type_ok(v, t):
-    if isinstance(t, list):
-        return any(type_ok(v, x) for x in t)
-    if t == "number":
-        return isinstance(v, (int, float)) and not isinstance(v, bool)
-    if t == "integer":
-        return isinstance(v, int) and not isinstance(v, bool)
-    if t == "null":
-        return v is None
-    return isinstance(v, TYPES[t])
-
-
-def check(v, s, path, errs):
-    if s is True:
-        return
-    if s is False:
-        errs.append(f"{path}: not allowed")
-        return
-    if "type" in s and not type_ok(v, s["type"]):
-        errs.append(f"{path}: expected {s['type']}, got {type(v).__name__}")
-        return
-    if "const" in s and v != s["const"]:
-        errs.append(f"{path}: expected {s['const']!r}, got {v!r}")
-    if "enum" in s and v not in s["enum"]:
-        errs.append(f"{path}: {v!r} not in {s['enum']}")
-    if "minimum" in s and type_ok(v, "number") and v < s["minimum"]:
-        errs.append(f"{path}: {v} < {s['minimum']}")
-    if isinstance(v, dict):
-        for k in s.get("required", []):
-            if k not in v:
-                errs.append(f"{path}: missing {k}")
-        props = s.get("properties", {})
-        for k, x in v.items():
-            if k in props:
-                check(x, props[k], f"{path}.{k}", errs)
-            elif "additionalProperties" in s:
-                check(x, s["additionalProperties"], f"{path}.{k}", errs)
-    if isinstance(v, list) and "items" in s:
-        for i, x in enumerate(v):
-            check(x, s["items"], f"{path}[{i}]", errs)
+try:
+    import jsonschema
+except ImportError:
+    print("schema_check.py: the jsonschema module is missing (apt-get install python3-jsonschema)",
+          file=sys.stderr)
+    sys.exit(77)
 
 
 def documents(name, lines, each):
@@ -67,20 +30,38 @@ def documents(name, lines, each):
     return docs
 
 
+def validator(schema, kind):
+    cls = jsonschema.Draft202012Validator
+    cls.check_schema(schema)
+    if kind:
+        if kind not in schema["$defs"]:
+            raise KeyError(f"no $defs/{kind} in the schema")
+        # A reference into the whole schema, so $refs between $defs resolve.
+        schema = {**schema, "$ref": f"#/$defs/{kind}"}
+        schema.pop("oneOf", None)
+    return cls(schema)
+
+
 def main():
     schema = json.load(open(sys.argv[1]))
     args = sys.argv[2:]
     lines = "--lines" in args
     each = "--each" in args
     args = [a for a in args if a not in ("--lines", "--each")]
+    kind = None
     if args[:1] == ["--def"]:
-        schema = schema["$defs"][args[1]]
-        args = args[2:]
+        kind, args = args[1], args[2:]
+    v = validator(schema, kind)
     bad = 0
     for name in args:
         errs = []
         for i, doc in enumerate(documents(name, lines, each)):
-            check(doc, schema, f"${i}" if lines or each else "$", errs)
+            where = f"${i}" if lines or each else "$"
+            # best_match: under oneOf, the branch that came closest
+            e = jsonschema.exceptions.best_match(v.iter_errors(doc))
+            if e is not None:
+                path = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in e.absolute_path)
+                errs.append(f"{where}{path}: {e.message}")
         for e in errs:
             print(f"{name}: {e}", file=sys.stderr)
         bad += bool(errs)

@@ -84,13 +84,15 @@ static void test_threads(char *text)
     acbb_string_free(doc[1]);
 }
 
-/* Bad input: exactly {status, message}, the engine's message. */
+/* Bad input: exactly {schema_version, status, message} (issue 28 item 4:
+ * schema_version as in every document), the engine's message. */
 static void bad(const char *what, const char *text, const char *setting, int want_st,
                 const char *msg)
 {
     int st = 0;
     char want[1024];
-    snprintf(want, sizeof want, "{\n  \"status\": \"bad_input\",\n  \"message\": \"%s\"\n}\n", msg);
+    snprintf(want, sizeof want, "{\n  \"schema_version\": %d,\n  \"status\": \"bad_input\",\n"
+             "  \"message\": \"%s\"\n}\n", ACBB_JSON_SCHEMA_VERSION, msg);
     char *got = acbb_run_preset_json(text, &setting, setting ? 1 : 0, &st);
     ok(st == want_st && got && strcmp(got, want) == 0, "%s: %s", what, msg);
     if (got && strcmp(got, want) != 0) printf("#   got: %s", got);
@@ -157,6 +159,24 @@ static void test_json_misuse(void)
     free(buf);
 }
 
+/* acbb_run_preset_json_ctl (issue 28 items 2, 4): a flag set before the
+ * call cancels the set-up (document "cancelled", status ACBB_CANCELLED);
+ * a NUL byte inside the given length is refused as in a file. */
+static void test_ctl(const char *text)
+{
+    acbb_atomic_int stop = 1;
+    int st = 0;
+    char *got = acbb_run_preset_json_ctl(text, strlen(text), NULL, 0, &stop, &st);
+    ok(st == ACBB_CANCELLED && got && strstr(got, "\"status\": \"cancelled\""),
+       "a set cancel flag: a cancelled document, ACBB_CANCELLED");
+    acbb_string_free(got);
+    static const char nul[] = "[operating]\naxial_load_N = 100\0 junk\n";
+    got = acbb_run_preset_json_ctl(nul, sizeof nul - 1, NULL, 0, NULL, &st);
+    ok(st == ACBB_EINVAL && got && strstr(got, "<text>:2: NUL byte in line 2"),
+       "a NUL byte inside the text's length is refused (line 2)");
+    acbb_string_free(got);
+}
+
 int main(int argc, char **argv)
 {
     char *text = preset_text();
@@ -169,6 +189,7 @@ int main(int argc, char **argv)
     test_bad(text);
     test_load_text(text);
     test_json_misuse();
+    test_ctl(text);
     free(text);
     printf("1..%d\n", tap_n);
     return tap_failed ? 1 : 0;

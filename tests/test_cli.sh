@@ -369,15 +369,17 @@ code $? 2 "tui --pace fast exits 2 (parsed by the table, checked by the TUI)"
 "$ACBB" report "$PRESET" --md >"$TMP/out" 2>"$TMP/err"
 code $? 2 "report --md without a value exits 2"
 has "$TMP/err" "option needs a value: --md" "the one parser says so"
-# A robustness that fails (here a bad --inputs key, found after the study
-# ran) prints no report and writes no --md file: without the section asked
-# for it would look complete (issue 16). Out of memory takes the same path
-# with exit 4 (acbb_cli_exit_for).
-"$ACBB" report "$PRESET" --inputs materials.ball_E_GPa --md "$TMP/rob.md" >"$TMP/out" 2>"$TMP/err"
-code $? 2 "report with a failing robustness exits 2"
+# A bad --inputs key is refused before the study runs (issue 28 item 13:
+# it used to be found after the whole study): exit 2, no report on
+# stdout, no --md file, and no "running the study" progress note first.
+ACBB_PROGRESS=1 "$ACBB" report "$PRESET" --inputs materials.ball_E_GPa --md "$TMP/rob.md" \
+    >"$TMP/out" 2>"$TMP/err"
+code $? 2 "report --inputs with a key that is not an uncertain input exits 2"
 [ ! -e "$TMP/rob.md" ] && [ ! -s "$TMP/out" ]
-t $? "a failed robustness: no report on stdout, no --md file"
-has "$TMP/err" "no report printed, --md file not written" "a failed robustness says what was not written"
+t $? "no report on stdout, no --md file"
+has "$TMP/err" "report: --inputs: materials.ball_E_GPa is not an uncertain input" "naming the key"
+! grep -q "running the study" "$TMP/err"
+t $? "and nothing runs first (no study progress on stderr)"
 
 # ---- unknown and misplaced options ----
 "$ACBB" run "$PRESET" --josn >"$TMP/out" 2>"$TMP/err"
@@ -631,5 +633,25 @@ t $? "a DB pair: arrangement, preload kind and value"
 "$ACBB" run presets/7008C.ini --set thermal.max_time_s=10 >"$TMP/one.txt" 2>/dev/null
 grep -q '^scene        15000 rpm, Fx 1000 N, Fr 0 N,' "$TMP/one.txt" && ! grep -q '^mounting' "$TMP/one.txt"
 t $? "one bearing under a force: Fx and Fr, no mounting line"
+
+# A sweep's CSV has the JSONL's doubles, all 17 digits (the README said
+# %.10g; issue 28 item 13).
+"$ACBB" sweep "$PRESET" --param operating.axial_load_N --values 300 --csv "$TMP/digits.csv" \
+    --jsonl "$TMP/digits.jsonl" >/dev/null 2>&1
+csv_total=$(awk -F, '/^#/ { next } !c { for (i = 1; i <= NF; i++) if ($i == "losses_W.total") c = i
+                                              next } { print $c; exit }' "$TMP/digits.csv")
+[ -n "$csv_total" ] && jq -e --argjson v "$csv_total" 'select(.index == 0) | ."losses_W.total" == $v' \
+    "$TMP/digits.jsonl" >/dev/null && [ "$(printf %s "$csv_total" | tr -d '.-' | sed 's/^0*//' | wc -c)" -gt 11 ]
+t $? "sweep --csv: losses_W.total $csv_total, the JSONL's double to the last digit"
+
+# Progress of the batch commands (issue 28 item 13): study counts its runs,
+# sensitivity's count has an ETA (the first run always draws the line).
+ACBB_PROGRESS=1 "$ACBB" study "$PRESET" >/dev/null 2>"$TMP/err"
+tr '\r' '\n' <"$TMP/err" | grep -q '^study: 48/48 runs, [0-9.]* runs/s$'
+t $? "study PRESET shows its progress (study: N/48 runs)"
+ACBB_PROGRESS=1 "$ACBB" sensitivity "$PRESET" --metric losses_W.total \
+    --set fidelity.thermal_mode=steady >/dev/null 2>"$TMP/err"
+tr '\r' '\n' <"$TMP/err" | grep -q '^sensitivity: 1/[0-9]* runs, [0-9.]* runs/s, ETA [0-9]* s'
+t $? "sensitivity's progress has an ETA"
 
 tap_done

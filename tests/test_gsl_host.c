@@ -124,7 +124,7 @@ int main(void)
         return 1;
     }
     run_doc(text, k_static, 1, "converged", NULL, "default handler, a run");
-    run_doc(text, k_ill, 2, "ill_posed", NULL, "default handler, a refused scene");
+    run_doc(text, k_ill, 2, "bad_input", NULL, "default handler, a refused scene"); /* the CLI's name for it (issue 28 item 4) */
     run_doc(text, k_static, 1, "converged", host_handler, "host handler, a run");
     char *pair = preset_text("presets/pair-DB-heated.ini");
     if (pair) run_doc(pair, k_bracket, 3, "diverged", NULL, "default handler, a failed bracket");

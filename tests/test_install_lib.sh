@@ -57,9 +57,12 @@ t $? "pkg-config --cflags acbb points into the DESTDIR"
 SANF=()
 [ "$SAN" != none ] && SANF=("-fsanitize=$SAN")
 # shellcheck disable=SC2046  # pkg-config's words are meant to split
-"$CC" "${SANF[@]}" examples/run_preset.c $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
+EX=$(find "$D" -path '*/doc/acbb/examples/run_preset.c' | head -n 1)
+[ -n "$EX" ] && cmp -s "$EX" examples/run_preset.c
+t $? "the example is installed (${EX#"$D"})"
+"$CC" "${SANF[@]}" "${EX:-examples/run_preset.c}" $(pkg-config --cflags --libs acbb) -o "$TMP/ex" \
     2>"$TMP/err"
-code $? 0 "the example builds with pkg-config --cflags --libs acbb"
+code $? 0 "the installed example builds with pkg-config --cflags --libs acbb"
 # The installed headers from C++ (issue 28 item 5): extern "C", no C11
 # _Atomic in a public type.
 if command -v c++ >/dev/null; then
@@ -80,11 +83,11 @@ code $? 0 "the example runs 7008C to convergence (exit 0)"
 code $? 0 "acbb run presets/7008C.ini --json"
 # The example prints %.17g, as the JSON does: the same numbers exactly.
 val() { awk -v k="$1" '$1 == k { print $2 }' "$TMP/ex.txt"; }
-jq -e --arg st "$(val status)" --argjson T "$(val T_outer_ring_C)" \
-    --argjson P "$(val P_total_W)" --argjson Q "$(val Qi_ball0_N)" \
+jq -e --arg st "$(val status)" --argjson T "$(val temperature_C.outer_ring)" \
+    --argjson P "$(val losses_W.total)" --argjson Q "$(val 'balls[0].Qi_N')" \
     '.status == $st and $st == "converged" and .temperature_C.outer_ring == $T
      and .losses_W.total == $P and .balls[0].Qi_N == $Q' "$TMP/run.json" >/dev/null 2>&1
-t $? "status, outer-ring temperature, total loss and Qi equal the CLI's JSON"
+t $? "status, outer-ring temperature, total loss and Qi, named by their JSON paths, equal the CLI's JSON"
 
 if [ "$SAN" = none ]; then
     # shellcheck disable=SC2046
@@ -100,18 +103,28 @@ if [ "$SAN" = none ]; then
 else
     skip "the example links fully static" "sanitizer build ($SAN): no static runtime"
 fi
-# The Python module as installed finds the library of its own prefix.
-PYMOD=$(find "$D" -path '*/share/acbb/python/acbb.py' | head -n 1)
-[ -n "$PYMOD" ]
-t $? "python/acbb.py is installed (${PYMOD#"$D"})"
+# The Python module as installed (issue 28 item 1): in the Python site
+# directory, where `import acbb` works with PYTHONPATH at the DESTDIR's
+# site directory only (nothing under share/); it has __version__, finds the
+# library of its own prefix and the installed presets by name, as the CLI
+# does, from a directory with no presets/ and no user presets.
+PYMOD=$(find "$D" -name acbb.py -path '*-packages/acbb.py' | head -n 1)
+[ -n "$PYMOD" ] && [ -z "$(find "$D" -path '*/share/acbb/python*')" ]
+t $? "acbb.py is installed into the Python site directory (${PYMOD#"$D"}), not share/acbb/python"
 if [ "$SAN" = none ] && command -v python3 >/dev/null; then
-    env -u ACBB_LIB PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
-r = acbb.run("presets/7008C.ini")
-print(r["status"], "%.17g" % r["losses_W"]["total"])' >"$TMP/py.txt" 2>"$TMP/err"
-    [ "$(cat "$TMP/py.txt")" = "converged $(val P_total_W)" ]
-    t $? "the installed module runs 7008C with the installed library (no ACBB_LIB)"
+    mkdir -p "$TMP/elsewhere" "$TMP/xdg"
+    (cd "$TMP/elsewhere" && env -u ACBB_LIB XDG_CONFIG_HOME="$TMP/xdg" \
+        PYTHONPATH="$(dirname "$PYMOD")" python3 -c 'import acbb
+print("version", acbb.__version__)
+r = acbb.run("7008C")
+print(r["status"], "%.17g" % r["losses_W"]["total"])') >"$TMP/py.txt" 2>"$TMP/err"
+    has "$TMP/py.txt" "converged $(val losses_W.total)" \
+        "the installed module runs the installed preset 7008C by name with the installed library"
+    has "$TMP/py.txt" "version $("$ACBB" --version | awk '{ print $2 }')" \
+        "acbb.__version__ is the release acbb --version prints"
 else
-    skip "the installed module runs 7008C" "sanitizer build or no python3"
+    skip "the installed module runs 7008C by name" "sanitizer build or no python3"
+    skip "acbb.__version__" "sanitizer build or no python3"
 fi
 
 LD_LIBRARY_PATH=$LIB "$TMP/ex" presets/no-such.ini >/dev/null 2>"$TMP/err"

@@ -30,7 +30,7 @@ cd "$TMP" && XDG_CONFIG_HOME="$TMP/none" "$BIN" run te-wte-heavy --quiet >/dev/n
 code $? 0 "the installed acbb runs te-wte-heavy by name from another directory"
 cd "$ROOT"
 for f in doc/acbb/LICENSE doc/acbb/README.md doc/acbb/BENCHMARKS.md doc/acbb/SEED_REPORT.md \
-         doc/acbb/physics.md acbb/schema/acbb.schema.json bash-completion/completions/acbb.bash; do
+         doc/acbb/physics.md acbb/schema/acbb.schema.json bash-completion/completions/acbb; do
     [ -s "$SHARE/$f" ] || miss="$miss $f"
 done
 [ -z "$miss" ]
@@ -46,7 +46,7 @@ t $? "the physics reference the help and README cite is installed whole (doc/acb
 t $? "the installed README, reference, man page and presets cite no unshipped MODEL.md"
 
 # ---- the completion: every command, and a command's options ----
-comp="$SHARE/bash-completion/completions/acbb.bash"
+comp="$SHARE/bash-completion/completions/acbb"
 bash -c ". '$comp' && complete -p acbb" >/dev/null 2>&1
 t $? "the completion loads in bash and registers acbb"
 cmds=$("$ACBB" help | sed -n 's/^  \([a-z]*\) .*/\1/p' | sort -u)
@@ -80,6 +80,14 @@ done
 t $? "the man page has every command, the options and environment variables asked for${miss:+ (missing:$miss)}"
 grep -q "^\.I $PREFIX/share/acbb/presets" "$man" && ! grep -q "DATADIR/acbb" "$man"
 t $? "it names the prefix's real preset directory ($PREFIX/share/acbb/presets)"
+# Issue 28 item 13: the minimums are lower limits; an example stands on its
+# own unfilled lines, not run into the prose around it.
+grep -A1 -F -e '\-\-min\-life' -e '\-\-min\-s0' "$man" | grep -c '^lower limit:' | grep -q '^2$' \
+    && ! grep -q 'upper limit: .* at least' "$man"
+t $? "--min-life and --min-s0 are described as lower limits"
+grep -A2 -x '\.nh' "$man" | grep -q -x 'e\.g\. acbb study seed \\-\\-out figs' \
+    && ! grep -q 'cite them\. e\.g\.' "$man"
+t $? "an example is on its own unfilled line (e.g. acbb study seed --out figs)"
 grep -q "acbb/recover" "$man"
 t $? "and where the TUI's recovery files go"
 grep -q '^\.TH ACBB 1 "[0-9]\{4\}-[0-9][0-9]-[0-9][0-9]"' "$man"

@@ -58,4 +58,13 @@ t $? "warm-shaft: the net squeeze is positive and TE raises Qi over WTE"
 jq -e '.squeeze_um.net < 0' "$TMP/hv.json" >/dev/null
 t $? "te-wte-heavy: the net squeeze is negative (TE loosens at the seed's boundaries)"
 
+# The README's preset table (issue 28 item 13: rows had drifted out of it)
+# names every preset, in one table: its rows are consecutive.
+awk '/^\| preset \| shows \|$/ { on = 1; next } on && /^\|/ { print; next } on { exit }' README.md \
+    >"$TMP/table"
+miss=""
+for p in presets/*.ini; do grep -q -F "\`$(basename "$p")\`" "$TMP/table" || miss="$miss $(basename "$p")"; done
+[ -z "$miss" ] && [ "$(grep -c '^| `[a-zA-Z0-9-]*\.ini`' README.md)" -eq "$(grep -c '^| `' "$TMP/table")" ]
+t $? "the README's preset table lists every preset, no row outside it${miss:+ (missing:$miss)}"
+
 tap_done

@@ -5,6 +5,10 @@
 # beside the module; bad input raises AcbbError with the engine's message.
 # $1 acbb, $2 the build's libacbb.so, $3 b_sanitize, $4 the C compiler (a
 # sanitized library needs its runtime preloaded into python).
+# Issue 28 items 1, 2, 4: the FFI's document is the CLI's byte for byte
+# on every preset (wall_ms's value aside); a preset by name through the
+# CLI's search path; __version__; Ctrl-C cancels a running call; a NUL
+# byte in the text is refused; error documents carry schema_version.
 set -u
 ACBB=$1 LIB=$2 SAN=${3:-none} CC=${4:-cc}
 cd "$(dirname "$0")/.." || exit 1
@@ -87,5 +91,106 @@ has "$TMP/out" "raised bad_input -1 |$MSG|" \
 has "$TMP/out" "raised bad_input |<text>:2: operating.axial_load_N = abc: not a number|" \
     "bad preset text raises AcbbError naming <text>:line"
 has "$TMP/out" "nolib cannot find the acbb library" "a missing library is said"
+
+# Every preset: the FFI's text is `acbb run --json`'s, byte for byte, but
+# for wall_ms's value (the run's wall time).
+py <<'PY' >"$TMP/ffi.log"
+import ctypes, glob, os, sys
+lib = ctypes.CDLL(sys.argv[2])
+f = lib.acbb_run_preset_json
+f.restype, f.argtypes = ctypes.c_void_p, [ctypes.c_char_p, ctypes.c_void_p, ctypes.c_size_t,
+                                          ctypes.POINTER(ctypes.c_int)]
+for path in sorted(glob.glob("presets/*.ini")):
+    code = ctypes.c_int(0)
+    p = f(open(path, "rb").read(), None, 0, ctypes.byref(code))
+    name = os.path.basename(path)[:-4]
+    open(f"{sys.argv[1]}/ffi-{name}.json", "wb").write(ctypes.string_at(p))
+    lib.acbb_string_free(ctypes.c_void_p(p))
+    print(name)
+PY
+nw() { sed 's/^\(  "wall_ms": \)[0-9.e+-]*,$/\1W,/' "$1"; }
+np=0 bad=""
+for ini in presets/*.ini; do
+    name=$(basename "$ini" .ini)
+    "$ACBB" run "$ini" --json >"$TMP/cli-$name.json" 2>/dev/null
+    np=$((np + 1))
+    cmp -s <(nw "$TMP/cli-$name.json") <(nw "$TMP/ffi-$name.json") || bad="$bad $name"
+done
+[ "$np" -ge 19 ] && [ "$(wc -l <"$TMP/ffi.log")" -eq "$np" ] && [ -z "$bad" ] \
+    && grep -q '"branches"' "$TMP/ffi-pair-DB-heated.json"
+t $? "the FFI's document is acbb run --json's byte for byte on all $np presets (branches included)${bad:+; differ:$bad}"
+
+py <<'PY' >"$TMP/out"
+import sys
+import acbb
+lib = sys.argv[2]
+print("version", acbb.__version__)
+r = acbb.run("7008C", lib=lib)
+print("byname", r["status"], r["scene"]["inner_speed_rpm"])
+try:
+    acbb.run("[operating]\naxial_load_N = 100\0 junk\n", lib=lib)
+    print("nul ran")
+except acbb.AcbbError as e:
+    print("nul", e.status, "|" + str(e) + "|", e.result["schema_version"])
+try:
+    acbb.run("7008C", ["operating.axial_load_N=-5"], lib=lib)
+except acbb.AcbbError as e:
+    print("refusal schema_version", e.result.get("schema_version"))
+try:
+    acbb.run("no-such-preset", lib=lib)
+except acbb.AcbbError as e:
+    print("missing", e.status, str(e).split(":")[0])
+PY
+has "$TMP/out" "version $("$ACBB" --version | awk '{ print $2 }')" "acbb.__version__ is acbb --version's"
+has "$TMP/out" "byname converged 15000" "a preset by name (7008C) is found as the CLI finds it"
+has "$TMP/out" "nul bad_input |<text>:2: NUL byte in line 2 (a preset is plain text)| 3" \
+    "a NUL byte in the text is refused with the CLI's message (it used to cut the text and run)"
+has "$TMP/out" "refusal schema_version 3" "a bad_input document carries schema_version"
+has "$TMP/out" "missing bad_input cannot open preset no-such-preset" "an unknown name is said"
+
+# An ill-posed scene: the CLI's status and message (bad_input, exit 2).
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=0 --set operating.radial_load_N=500 \
+    --json 2>/dev/null | jq -r '"\(.status) \(.message)"' >"$TMP/ill_cli"
+py <<'PY' >"$TMP/ill_py"
+import sys
+import acbb
+try:
+    acbb.run("7008C", {"operating.axial_load_N": 0, "operating.radial_load_N": 500}, lib=sys.argv[2])
+except acbb.AcbbError as e:
+    print(e.status, e)
+PY
+[ -s "$TMP/ill_cli" ] && cmp -s "$TMP/ill_cli" "$TMP/ill_py" && grep -q "^bad_input " "$TMP/ill_py"
+t $? "an ill-posed scene: the same status and message as the CLI's ($(cat "$TMP/ill_py"))"
+
+# Ctrl-C during a long call (the dynamic level of combined-load, whose
+# set-up alone takes seconds): SIGINT once python runs the call in its
+# worker thread (python catches SIGINT and a second thread is in /proc),
+# then acbb.Cancelled (a
+# KeyboardInterrupt) with the library's "cancelled" document. It used to
+# come only when the run had finished, as a plain KeyboardInterrupt.
+PYTHONPATH=python python3 - "$LIB" >"$TMP/out" 2>"$TMP/err" <<'PY' &
+import signal, sys
+# A background job starts with SIGINT ignored; Python's own handler back.
+signal.signal(signal.SIGINT, signal.default_int_handler)
+import acbb
+try:
+    r = acbb.run("presets/combined-load.ini", {"fidelity.model": "dynamic"}, lib=sys.argv[1])
+    print("finished", r["status"])
+except acbb.Cancelled as e:
+    print("cancelled", isinstance(e, KeyboardInterrupt), e.result["status"],
+          e.result["schema_version"])
+PY
+pid=$!
+for ((i = 0; i < 600; i++)); do
+    m=$(awk '/^SigCgt:/ { print $2 }' "/proc/$pid/status" 2>/dev/null)
+    [ -n "$m" ] && (( (16#$m & 0x2) == 0x2 )) \
+        && [ "$(ls "/proc/$pid/task" 2>/dev/null | wc -l)" -ge 2 ] && break
+    kill -0 $pid 2>/dev/null || break
+    sleep 0.1
+done
+kill -INT $pid
+wait $pid
+has "$TMP/out" "cancelled True cancelled 3" \
+    "SIGINT stops a running call: acbb.Cancelled, a KeyboardInterrupt, with the cancelled document"
 
 tap_done

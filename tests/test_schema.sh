@@ -2,8 +2,10 @@
 # The JSON contract (issue 21 item 10), TAP: `acbb schema` prints the
 # schema file; every preset's `acbb run --json`, a run that never started
 # and the bad_input document of exit 2 validate against it (schema_check.py:
-# the subset the schema uses); the checker itself rejects a broken
-# document; numbers carry 17 significant digits.
+# python3-jsonschema's Draft 2020-12 validator, issue 28 item 6); the
+# schema is strict: a status outside its enum, a converged run without its
+# results, a key it does not describe are refused; every metric is
+# described; numbers carry 17 significant digits.
 # Usage: test_schema.sh PATH/TO/acbb   (cwd = repo root)
 set -u
 ACBB=${1:?usage: test_schema.sh PATH/TO/acbb}
@@ -11,14 +13,27 @@ TMP=$(mktemp -d "${TMPDIR:-/tmp}/acbb-schema.XXXXXX") || exit 1
 trap 'rm -rf "$TMP"' EXIT INT TERM
 . "$(dirname "$0")/tap.sh"
 SCHEMA=docs/schema/acbb.schema.json
-CHECK="python3 $(dirname "$0")/schema_check.py $SCHEMA"
+# Debian's python3 with python3-jsonschema first (dev.sh installs it), then
+# whatever python3 is first on PATH.
+PY=""
+for c in /usr/bin/python3 python3; do
+    "$c" -c 'import jsonschema' 2>/dev/null && { PY=$c; break; }
+done
+if [ -z "$PY" ]; then
+    echo "1..0 # SKIP no python3 with jsonschema (apt-get install python3-jsonschema)"
+    exit 0
+fi
+CHECK="$PY $(dirname "$0")/schema_check.py $SCHEMA"
 
 "$ACBB" schema >"$TMP/schema.json"
 code $? 0 "acbb schema runs"
 cmp -s "$TMP/schema.json" "$SCHEMA"
 t $? "and prints docs/schema/acbb.schema.json byte for byte"
-python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$SCHEMA"
-t $? "the schema is JSON"
+$PY -c 'import json, sys, jsonschema
+jsonschema.Draft202012Validator.check_schema(json.load(open(sys.argv[1])))' "$SCHEMA"
+t $? "the schema is a valid Draft 2020-12 schema"
+! grep -q 'MODEL\.md' "$SCHEMA"
+t $? "the installed schema cites docs/physics.md, never the unshipped MODEL.md"
 
 mkdir "$TMP/runs"
 for p in presets/*.ini; do
@@ -122,5 +137,69 @@ t $? "the checker rejects a document without status"
 jq '.losses_W.total = "54"' "$TMP/runs/7008C.json" >"$TMP/broken2.json"
 ! $CHECK "$TMP/broken2.json" 2>/dev/null
 t $? "the checker rejects a string where a number belongs"
+
+# Strict (issue 28 item 6): each of these used to pass.
+# refused DOC JQ-FILTER NAME: DOC changed by the filter fails validation.
+refused() {
+    jq "$2" "$TMP/runs/$1.json" >"$TMP/changed.json" && ! $CHECK "$TMP/changed.json" 2>/dev/null
+    t $? "$3"
+}
+refused 7008C '.status = "banana"' "the validator rejects status \"banana\""
+refused 7008C 'del(.losses_W)' "the validator rejects a converged run without losses_W"
+refused 7008C '.life.C0_N_typo = 1' \
+    "the validator rejects a key the schema does not describe (life.C0_N_typo)"
+jq -e '.branches and .bearings and .set and .life' "$TMP/runs/pair-DB-heated.json" >/dev/null
+t $? "pair-DB-heated's document has branches, bearings, set and life"
+refused pair-DB-heated '.branches.steady.status = "banana"' \
+    "branches are described (a branch's status outside the enum is refused)"
+refused pair-DB-heated '.bearings[1].set = 1' "bearings are described (an extra key refused)"
+refused pair-DB-heated 'del(.set.preload_N)' "set is described (its keys required)"
+# Every metric `acbb metrics` lists has its place in the schema's run.
+$PY - "$SCHEMA" "$TMP/met.json" <<'PY' >"$TMP/undescribed" 2>&1
+import json, sys
+run = json.load(open(sys.argv[1]))["$defs"]["run"]
+missing = []
+for m in json.load(open(sys.argv[2]))["metrics"]:
+    node = run
+    for part in m["path"].replace("[i]", "[]").split("."):
+        if part.endswith("[]"):
+            node = node["properties"][part[:-2]]["items"]
+        else:
+            node = node.get("properties", {}).get(part)
+        if node is None:
+            missing.append(m["path"])
+            break
+print(" ".join(missing))
+sys.exit(1 if missing else 0)
+PY
+t $? "every metric of acbb metrics --json is described in the run schema $(cat "$TMP/undescribed")"
+# The other root documents: an ill-posed scene (exit 2), the FFI's refusal
+# and a set-up the cancel flag stopped (not_started).
+"$ACBB" run presets/7008C.ini --set operating.axial_load_N=0 --set operating.radial_load_N=500 \
+    --json >"$TMP/ill.json" 2>/dev/null
+code $? 2 "an ill-posed scene exits 2"
+$CHECK "$TMP/ill.json"
+t $? "its document conforms ($(head -c 60 "$TMP/ill.json"))"
+LIB=$(dirname "$ACBB")/libacbb.so
+if [ -f "$LIB" ]; then
+    $PY - "$LIB" "$TMP" <<'PY'
+import ctypes, sys
+lib = ctypes.CDLL(sys.argv[1])
+f = lib.acbb_run_preset_json_ctl
+f.restype = ctypes.c_void_p
+f.argtypes = [ctypes.c_char_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
+              ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_int)]
+text = open("presets/7008C.ini", "rb").read()
+for name, t, flag in (("cancelled", text, 1), ("nul", b"[operating]\naxial_load_N = 1\0\n", 0)):
+    st, c = ctypes.c_int(0), ctypes.c_int(flag)
+    p = f(t, len(t), None, 0, ctypes.byref(c), ctypes.byref(st))
+    open(f"{sys.argv[2]}/ffi_{name}.json", "wb").write(ctypes.string_at(p))
+PY
+    jq -e '.status == "cancelled" and .iterations == 0' "$TMP/ffi_cancelled.json" >/dev/null \
+        && $CHECK "$TMP/ffi_cancelled.json" "$TMP/ffi_nul.json"
+    t $? "the FFI's cancelled set-up (not_started) and its refusal conform"
+else
+    skip "the FFI's cancelled set-up and refusal conform" "no $LIB"
+fi
 
 tap_done

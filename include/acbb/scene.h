@@ -270,6 +270,12 @@ acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err);
 /* acbb_scene_load from preset text in memory (NUL-terminated), with the
  * same checks and messages, the source named "<text>" ("<text>:3: ..."). */
 acbb_status acbb_scene_load_text(const char *text, acbb_scene *s, acbb_error *err);
+/* The same from `len` bytes of text (no terminator needed): a NUL byte
+ * inside them is refused ("<text>:2: NUL byte in line 2 ..."), as in a
+ * file, where the NUL-terminated form would end the text there. Messages
+ * name the source `name` ("<stdin>:3: ..."; NULL: "<text>"). */
+acbb_status acbb_scene_load_text_n(const char *text, size_t len, const char *name,
+                                   acbb_scene *s, acbb_error *err);
 
 /* Write the whole preset: every schema key, with its unit in the key name
  * and a comment line (help and range) above it. Written through acbb_out

@@ -296,6 +296,12 @@ typedef struct {
 acbb_status acbb_study_robustness(const acbb_study *base, const acbb_study_rob_opts *o,
                                   acbb_study_rob *out, acbb_error *err);
 void acbb_study_rob_free(acbb_study_rob *r);
+/* acbb_study_robustness's first check on its own: every o->keys is an
+ * uncertain input of scene `s`; ACBB_OK, or ACBB_EINVAL with the same
+ * message. A caller refuses bad keys with it before running the study
+ * (issue 28 item 13: `report --inputs BAD` ran the whole study first). */
+acbb_status acbb_study_rob_check_keys(const acbb_scene *s, const acbb_study_rob_opts *o,
+                                      acbb_error *err);
 
 /* The scene `s` was planned from. */
 const acbb_scene *acbb_study_scene(const acbb_study *s);

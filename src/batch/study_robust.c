@@ -65,6 +65,13 @@ static acbb_status check_keys(const acbb_study_rob_opts *o, const acbb_sens_inpu
     return ACBB_OK;
 }
 
+acbb_status acbb_study_rob_check_keys(const acbb_scene *s, const acbb_study_rob_opts *o,
+                                      acbb_error *err)
+{
+    acbb_sens_input in[ACBB_SENS_MAX];
+    return check_keys(o, in, acbb_sens_inputs(s, in, ACBB_SENS_MAX), err);
+}
+
 /* The ends of the selected inputs that differ from the scene's value, each
  * with its (unrun) run set. */
 static acbb_status plan_ends(const acbb_scene *base, const acbb_study_rob_opts *o, rob_end **out,

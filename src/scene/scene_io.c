@@ -300,10 +300,18 @@ acbb_status acbb_scene_load(const char *path, acbb_scene *s, acbb_error *err)
  * file does (issue 16: the FFI entry point takes preset text). */
 acbb_status acbb_scene_load_text(const char *text, acbb_scene *s, acbb_error *err)
 {
-    static const char name[] = "<text>";
+    return acbb_scene_load_text_n(text, text ? strlen(text) : 0, NULL, s, err);
+}
+
+/* The length is the caller's, so a NUL inside the text reaches the line
+ * reader and is refused as in a file (issue 28 item 4), not cut there. */
+acbb_status acbb_scene_load_text_n(const char *text, size_t len, const char *name,
+                                   acbb_scene *s, acbb_error *err)
+{
+    if (!name) name = "<text>";
     acbb_status rc;
-    FILE *f = text && *text ? fmemopen((void *)text, strlen(text), "r") : NULL;
-    if (!text || !*text)
+    FILE *f = text && len ? fmemopen((void *)text, len, "r") : NULL;
+    if (!text || !len)
         rc = acbb_error_set(err, ACBB_EINVAL, "%s: empty preset (no keys)", name);
     else if (!f)
         rc = acbb_error_set(err, ACBB_ENOMEM, "%s: cannot read: %s", name, strerror(errno));
