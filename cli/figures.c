@@ -21,8 +21,8 @@
 #include "plot.h"
 #include "progress.h"
 
-#define FIG_W 900
-#define FIG_H 600
+#define FIG_W 1004 /* "column": 8.5 x 6.4 cm at 300 dpi (plot.h) */
+#define FIG_H 753
 
 typedef struct {
     const char *preset, *dir;

@@ -88,8 +88,9 @@ if [ "$plot_wired" -eq 1 ]; then
     has "$TMP/l.svg" "<svg" "l.svg is an SVG"
     has "$TMP/l.svg" "7008C: power losses" "l.svg has the title"
     has "$TMP/l.svg" "power loss (W)" "l.svg y label has the unit"
-    has "$TMP/l.svg" '>spinning P</tspan><tspan font-family="Arial"  font-size="9.6" dy="3.60px">s' \
-        "l.svg legend names the spin loss, P_s with a real subscript"
+    grep -qE '>spinning P</tspan><tspan font-family="sans"  font-size="[0-9.]+" dy="[0-9.]+px">s' \
+        "$TMP/l.svg"
+    t $? "l.svg legend names the spin loss, P_s with a real subscript"
     ! grep -q "P_s" "$TMP/l.svg"
     t $? "no literal P_s in l.svg"
     if command -v xmllint >/dev/null 2>&1; then

@@ -355,10 +355,15 @@ void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
 {
     /* UTF-8 labels (Greek, degree sign: plot_markup.c); enhanced text
      * only where a plot writes marked-up labels, user text noenhanced. */
+    /* Text for print (plot_size.c): pngcairo takes points at 96 dpi, svg
+     * takes the em in its pixels; lines and markers grow with the text. */
+    double em = acbb_plot_font_px(w), lw = em / 16.0;
     if (fmt == ACBB_PLOT_PNG)
-        sb_printf(b, "set encoding utf8\nset terminal pngcairo enhanced size %d,%d\n", w, h);
+        sb_printf(b, "set encoding utf8\nset terminal pngcairo enhanced size %d,%d "
+                     "font 'sans,%.1f' linewidth %.2f\n", w, h, 0.75 * em, lw);
     else if (fmt == ACBB_PLOT_SVG)
-        sb_printf(b, "set encoding utf8\nset terminal svg enhanced size %d,%d\n", w, h);
+        sb_printf(b, "set encoding utf8\nset terminal svg enhanced size %d,%d "
+                     "font 'sans,%.1f' linewidth %.2f\n", w, h, em, lw);
     else
         sb_printf(b, "set terminal dumb nofeed size %d,%d\n", w, h);
     if (fmt == ACBB_PLOT_DUMB) {
@@ -371,6 +376,7 @@ void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
     static const char *const rgb[8] = { "#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                         "#E69F00", "#56B4E9", "#000000", "#999999" };
     for (int i = 0; i < 8; i++) sb_printf(b, "set linetype %d linecolor rgb '%s'\n", i + 1, rgb[i]);
+    sb_printf(b, "set pointsize %.2f\n", em / 20.0);
     sb_printf(b, "set linetype cycle 8\n");
 }
 

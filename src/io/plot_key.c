@@ -57,3 +57,79 @@ void key_corner(sbuf *b, key_pts *k, int entries)
     free(k->y);
     *k = (key_pts){ 0 };
 }
+
+/* ---- the x-y figures' key (issue 29 item 9) ----
+ * The key's box from the text size (a row 1.25 em, a character about
+ * 0.55 em, the sample and margins 4 em), as fractions of the plot area. */
+#define KEY_ROW_EM 1.35
+#define KEY_CHAR_EM 0.55
+#define KEY_PAD_EM 4.0
+#define KEY_MARGIN 0.04
+
+static size_t in_box(const key_pts *k, const xy_layout *L, int corner, double fw, double fh)
+{
+    size_t n = 0;
+    double wx = L->gx1 - L->gx0, wy = L->gy1 - L->gy0;
+    for (size_t i = 0; i < k->n; i++) {
+        double u = (k->x[i] - L->gx0) / wx, v = (k->y[i] - L->gy0) / wy;
+        bool right = u >= 1.0 - fw - KEY_MARGIN, left = u <= fw + KEY_MARGIN;
+        bool top = v >= 1.0 - fh - KEY_MARGIN, bottom = v <= fh + KEY_MARGIN;
+        n += corner == 0 ? top && right : corner == 1 ? top && left
+           : corner == 2 ? bottom && right : bottom && left;
+    }
+    return n;
+}
+
+/* A key of `cols` columns: its box as fractions of the plot area. */
+static void key_box(const xy_layout *L, int entries, double chars, int cols, double *fw,
+                    double *fh)
+{
+    int rows = (entries + cols - 1) / cols;
+    *fw = cols * (chars * KEY_CHAR_EM + KEY_PAD_EM) * L->em / L->plot_w;
+    *fh = (rows * KEY_ROW_EM + 0.8) * L->em / L->plot_h;
+}
+
+/* A free corner for a key of 1..3 columns: the corner (0..3), or -1. */
+static int free_corner(const key_pts *k, const xy_layout *L, int entries, double chars,
+                       int *cols)
+{
+    for (*cols = 1; *cols <= 3; (*cols)++) {
+        double fw, fh;
+        key_box(L, entries, chars, *cols, &fw, &fh);
+        for (int c = 0; c < 4 && fw < 0.95 && fh < 0.95; c++)
+            if (in_box(k, L, c, fw, fh) == 0) return c;
+    }
+    return -1;
+}
+
+void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars)
+{
+    static const char *const where[4] = { "top right", "top left", "bottom right", "bottom left" };
+    static const char style[] = "opaque nobox samplen 2.5 spacing 1.1 height 0.8";
+    int cols = 1, c = free_corner(k, L, entries, chars, &cols);
+    double fw = 1.0, fh = 1.0;
+    if (c < 0) /* the fewest columns whose rows fit a band at the top */
+        for (cols = 1; cols <= 3; cols++) {
+            key_box(L, entries, chars, cols, &fw, &fh);
+            if (fw < 0.95 && fh <= 0.55) break;
+        }
+    int rows = (entries + cols - 1) / cols;
+    if (c >= 0) {
+        sb_printf(b, "set key inside %s %s maxrows %d\n", where[c], style, rows);
+    } else if (cols <= 3) {
+        /* raise the y axis until the data stay below the key's band */
+        axes_fit_y(L, L->gy0 + (L->y1 - L->gy0) / (1.0 - fh - 2.0 * KEY_MARGIN));
+        sb_printf(b, "set key inside top right %s maxrows %d\n", style, rows);
+    } else { /* below the plot, as many columns as fit */
+        cols = (int)(L->w / ((chars * KEY_CHAR_EM + KEY_PAD_EM) * L->em));
+        cols = cols < 1 ? 1 : cols;
+        rows = (entries + cols - 1) / cols;
+        L->plot_h -= (rows * KEY_ROW_EM + 1.0) * L->em;
+        axes_fit_y(L, L->y1);
+        sb_printf(b, "set key outside below center horizontal nobox samplen 2.5 width -4 maxcols %d\n",
+                  cols);
+    }
+    free(k->x);
+    free(k->y);
+    *k = (key_pts){ 0 };
+}
