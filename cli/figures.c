@@ -207,13 +207,10 @@ static void md_conclusions(FILE *f, const fig_view *v)
     fputs("\n\n| # | conclusion | constant force | rigid preload | DB pair | holds under |\n"
           "|---|---|---|---|---|---|\n", f);
     for (size_t i = 0; i < nc; i++) {
-        char where[64];
         fprintf(f, "| (%zu) | ", i + 1);
         acbb_cli_md_text(f, cc[i].text);
         fputs(" |", f);
-        for (int m = 0; m < N_MOUNTINGS; m++)
-            fprintf(f, " %s |", acbb_verdict_name(acbb_study_conclusion_verdict(v->by[m], i)));
-        fprintf(f, " %s |\n", acbb_cli_holds_under(v->by, i, where, sizeof where));
+        acbb_cli_mountings_md_row(f, v->by, i);
     }
     for (size_t i = 0; i < nc; i++) md_conclusion(f, v, &cc[i], i);
 }

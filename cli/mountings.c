@@ -81,6 +81,14 @@ void acbb_cli_md_text(FILE *f, const char *s)
     }
 }
 
+void acbb_cli_mountings_md_row(FILE *f, const acbb_study *const *by, size_t i)
+{
+    char where[64];
+    for (int m = 0; m < N_MOUNTINGS; m++)
+        fprintf(f, " %s |", acbb_verdict_name(acbb_study_conclusion_verdict(by[m], i)));
+    fprintf(f, " %s |\n", acbb_cli_holds_under(by, i, where, sizeof where));
+}
+
 void acbb_cli_mountings_md(FILE *f, const acbb_study *const *by)
 {
     size_t nc;
@@ -89,11 +97,8 @@ void acbb_cli_mountings_md(FILE *f, const acbb_study *const *by)
     fputs("\n\n| # | constant force | rigid preload | DB pair | holds under |\n"
           "|---|---|---|---|---|\n", f);
     for (size_t i = 0; i < nc; i++) {
-        char where[48];
         fprintf(f, "| (%zu) |", i + 1);
-        for (int m = 0; m < N_MOUNTINGS; m++)
-            fprintf(f, " %s |", acbb_verdict_name(acbb_study_conclusion_verdict(by[m], i)));
-        fprintf(f, " %s |\n", acbb_cli_holds_under(by, i, where, sizeof where));
+        acbb_cli_mountings_md_row(f, by, i);
     }
     fputc('\n', f);
     for (size_t i = 0; i < nc; i++)

@@ -28,6 +28,9 @@ const char *acbb_cli_holds_under(const acbb_study *const *by, size_t i, char *bu
 extern const char acbb_cli_mount_intro[];
 /* Markdown text: '|', '*', '_' escaped. */
 void acbb_cli_md_text(FILE *f, const char *s);
+/* " HELD | NOT HELD | HELD | rigid preload, DB pair |\n": conclusion i's
+ * verdicts under each mounting and where it holds, a Markdown row's end. */
+void acbb_cli_mountings_md_row(FILE *f, const acbb_study *const *by, size_t i);
 /* The Markdown table "conclusion x mounting" and each check's numbers
  * under each mounting (as `acbb report --md` prints it). */
 void acbb_cli_mountings_md(FILE *f, const acbb_study *const *by);

@@ -93,7 +93,8 @@ void axes_emit(sbuf *b, const xy_layout *L)
 {
     sb_printf(b, "set xrange [%.17g:%.17g]\nset yrange [%.17g:%.17g]\n", L->gx0, L->gx1, L->gy0,
               L->gy1);
-    sb_printf(b, "set xtics %.17g\nset ytics %.17g\nset mxtics 2\nset mytics 2\n", L->xs, L->ys);
+    /* a 1-2-5 step: 15 digits print it exactly (0.2, not 0.20000000000000001) */
+    sb_printf(b, "set xtics %.15g\nset ytics %.15g\nset mxtics 2\nset mytics 2\n", L->xs, L->ys);
 }
 
 /* Up to three lines of about `per_line` characters, broken at spaces. */
