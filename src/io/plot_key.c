@@ -126,8 +126,10 @@ void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars)
         rows = (entries + cols - 1) / cols;
         L->plot_h -= (rows * KEY_ROW_EM + 1.0) * L->em;
         axes_fit_y(L, L->y1);
-        sb_printf(b, "set key outside below center horizontal nobox samplen 2.5 width -4 maxcols %d\n",
-                  cols);
+        /* gnuplot sizes a column by the bytes of its enhanced-text label
+         * (markup, UTF-8): with several columns, take back what that adds */
+        sb_printf(b, "set key outside below center horizontal nobox samplen 2.5 width %d "
+                     "maxcols %d\n", cols > 1 ? -4 : 0, cols);
     }
     free(k->x);
     free(k->y);
