@@ -240,8 +240,30 @@ static void kind_points(const plot_kind_spec *k, const acbb_plot_data *d, key_pt
             key_pts_add(kp, h->p[i].time, k->y_scale * field(&h->p[i], k->s[j].off));
 }
 
+/* Key and axes of a PNG/SVG kind: the key where it covers no data, tic
+ * steps that fit, no negative axis for a positive quantity. The number of
+ * points per series. */
+static size_t print_layout(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d, int w,
+                           int h)
+{
+    key_pts kp = { 0 };
+    kind_points(k, d, &kp);
+    xy_layout L = { .w = w, .h = h, .em = acbb_plot_font_px(w), .title_lines = 1 };
+    axes_range(&L, &kp);
+    double chars = 0;
+    for (int i = 0; i < k->n; i++) { /* the characters shown: a "_" is markup */
+        double c = 0;
+        for (const char *p = k->s[i].label; *p; p++) c += *p != '_';
+        chars = fmax(chars, c);
+    }
+    size_t rows = k->n > 0 ? kp.n / (size_t)k->n : 0;
+    key_place(b, &kp, &L, k->n, chars);
+    axes_emit(b, &L);
+    return rows;
+}
+
 static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d,
-                            bool dumb)
+                            bool dumb, int w, int h)
 {
     char title[640];
     /* The dumb terminal cannot rotate text and drops the y label, so there
@@ -258,26 +280,22 @@ static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_da
     if (dumb) sb_quoted(b, k->ylabel);
     else sb_label(b, k->ylabel);
     sb_printf(b, "\nset grid\n");
-    if (!dumb) {
-        key_pts kp = { 0 };
-        kind_points(k, d, &kp);
-        key_corner(b, &kp, k->n);
-    }
-    /* The balls are few and discrete; the history is a dense time series. */
-    static const int pt[4] = { 7, 5, 9, 13 };
+    size_t rows = 0;
+    if (!dumb) /* the key clear of the data, axes for print (plot_axes.c) */
+        rows = print_layout(b, k, d, w, h);
     sb_printf(b, "plot ");
     for (int i = 0; i < k->n; i++) {
-        if (dumb) /* text: one character per series already */
-            sb_printf(b, "%s$D using 1:%d with %s linewidth 2 title ", i ? ", " : "", i + 2,
-                      k->per_ball ? "linespoints pointtype 7" : "lines");
-        else if (k->per_ball)
-            sb_printf(b, "%s$D using 1:%d with linespoints pointtype %d linewidth 2 "
-                         "dashtype %d title ", i ? ", " : "", i + 2, pt[i % 4], 1 + i % 2);
-        else
-            sb_printf(b, "%s$D using 1:%d with lines linewidth 2 dashtype %d title ", i ? ", " : "",
-                      i + 2, 1 + i % 5);
-        if (dumb) sb_quoted(b, k->s[i].label);
-        else sb_label(b, k->s[i].label);
+        sb_printf(b, "%s$D using 1:%d ", i ? ", " : "", i + 2);
+        if (dumb) { /* text: one character per series already */
+            sb_printf(b, "with %s linewidth 2 title ", k->per_ball ? "linespoints pointtype 7" : "lines");
+            sb_quoted(b, k->s[i].label);
+            continue;
+        }
+        /* each series its colour, dash and marker: apart in grey too */
+        acbb_plot_series st = { k->s[i].label, NULL, NULL, rows, i + 1, 1 + i % 5, 1 };
+        series_style(b, &st, rows);
+        sb_printf(b, "title ");
+        sb_label(b, k->s[i].label);
     }
     sb_printf(b, "\n");
 }
@@ -338,11 +356,11 @@ static acbb_status check_data(acbb_plot_kind kind, const acbb_plot_data *d,
 
 /* The script after the terminal/output lines; EINVAL if no row is finite. */
 static acbb_status script_body(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d,
-                               bool dumb, acbb_error *err)
+                               bool dumb, int w, int h, acbb_error *err)
 {
     if (datablock(b, k, d) == 0)
         return acbb_error_set(err, ACBB_EINVAL, "%s plot: no finite data to plot", k->name);
-    labels_and_plot(b, k, d, dumb);
+    labels_and_plot(b, k, d, dumb, w, h);
     /* `set output` with no file closes (and so completes) the image. */
     sb_printf(b, "set output\nexit\n");
     if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
@@ -443,7 +461,7 @@ acbb_status acbb_plot_file(acbb_plot_kind kind, acbb_plot_format fmt, const char
 
     sbuf b = { 0 };
     terminal_line(&b, fmt, width, height);
-    st = script_body(&b, k, d, false, err);
+    st = script_body(&b, k, d, false, width, height, err);
     if (st == ACBB_OK) st = render_file(&b, fmt, path, err);
     free(b.p);
     return st;
@@ -471,7 +489,7 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
     if ((st = acbb_plot_check_size(ACBB_PLOT_DUMB, cols, rows, err))) return st;
     sbuf b = { 0 };
     terminal_line(&b, ACBB_PLOT_DUMB, cols, rows);
-    st = script_body(&b, k, d, true, err);
+    st = script_body(&b, k, d, true, cols, rows, err);
     gp_io io = { .out = text, .out_cap = text_len };
     if (st == ACBB_OK) st = run_gnuplot(&b, &io, err);
     if (st != ACBB_OK) text[0] = '\0';

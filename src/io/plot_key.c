@@ -121,7 +121,7 @@ void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars)
         axes_fit_y(L, L->gy0 + (L->y1 - L->gy0) / (1.0 - fh - 2.0 * KEY_MARGIN));
         sb_printf(b, "set key inside top right %s maxrows %d\n", style, rows);
     } else { /* below the plot, as many columns as fit */
-        cols = (int)(L->w / ((chars * KEY_CHAR_EM + KEY_PAD_EM) * L->em));
+        cols = (int)(L->w / ((chars * KEY_CHAR_EM + KEY_PAD_EM - 1.0) * L->em));
         cols = cols < 1 ? 1 : cols;
         rows = (entries + cols - 1) / cols;
         L->plot_h -= (rows * KEY_ROW_EM + 1.0) * L->em;

@@ -25,6 +25,7 @@
 #define axes_fit_y acbb_plot_axes_fit_y
 #define title_lines acbb_plot_title_lines
 #define nice_step acbb_plot_nice_step
+#define series_style acbb_plot_series_style
 
 /* A growing NUL-terminated script; oom latches the first failed growth. */
 typedef struct {
@@ -92,6 +93,10 @@ void axes_emit(sbuf *b, const xy_layout *L);
 double nice_step(double lo, double hi, int max_tics);
 /* `text` broken at spaces into at most 3 lines of about per_line chars. */
 int title_lines(const char *text, double per_line, char lines[3][160]);
+/* "with ... linewidth 2 dashtype D linecolor C pointtype P pointinterval I "
+ * for series s of n points (plot_xy.c): markers by colour, filled when
+ * solid, open when dashed, about eight on a dense series. */
+void series_style(sbuf *b, const acbb_plot_series *s, size_t n);
 /* The key of `entries` rows `chars` wide where it covers no point of k:
  * a free corner inside; else the y axis raised until a top band is free
  * (L->gy1, L->ys change); else outside below the plot. Frees k. */

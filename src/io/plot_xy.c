@@ -83,7 +83,7 @@ static int xy_title(sbuf *b, const char *title, const xy_layout *L)
 /* Markers by colour: eight shapes, filled for solid lines and open for
  * dashed ones (TE solid and filled, WTE dashed and open), so two curves
  * differ in colour, dash and marker and survive grey print. */
-static void xy_style(sbuf *b, const acbb_plot_series *s, size_t n)
+void series_style(sbuf *b, const acbb_plot_series *s, size_t n)
 {
     static const int filled[8] = { 7, 5, 9, 11, 13, 15, 1, 3 },
                      open[8] = { 6, 4, 8, 10, 12, 14, 2, 3 };
@@ -141,7 +141,7 @@ static void xy_plot(sbuf *b, const acbb_plot_xy *p, const acbb_plot_look *look,
         const acbb_plot_series *s = &p->series[k];
         if (!drawn[k]) continue;
         sb_printf(b, "%s$S%zu using 1:2 ", first ? "" : ", ", k);
-        xy_style(b, s, s->n);
+        series_style(b, s, s->n);
         first = false;
         if (own) {
             sb_printf(b, "notitle");
@@ -155,7 +155,7 @@ static void xy_plot(sbuf *b, const acbb_plot_xy *p, const acbb_plot_look *look,
     for (size_t k = 0; own && k < look->n_key; k++) {
         char m[256];
         sb_printf(b, ", keyentry ");
-        xy_style(b, &look->key[k], 1);
+        series_style(b, &look->key[k], 1);
         plot_markup(look->key[k].label ? look->key[k].label : "", m, sizeof m);
         sb_printf(b, "title ");
         sb_quoted(b, m);
