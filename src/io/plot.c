@@ -655,8 +655,8 @@ static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t 
     sb_quoted(b, title && title[0] ? title : "sensitivity, one input at a time");
     sb_printf(b, "\nset xlabel ");
     sb_quoted(b, xlabel && xlabel[0] ? xlabel : "metric");
-    sb_printf(b, "\nset ytics nomirror font ',8'\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
-    sb_printf(b, "set style fill solid 0.6 border -1\nset key below\nset termoption noenhanced\n");
+    sb_printf(b, "\nset ytics nomirror\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
+    sb_printf(b, "set style fill solid 0.6 border -1\nset key outside top center horizontal maxrows 1\nset termoption noenhanced\n");
     /* dashed: the scene's value; solid: zero, where the metric changes
      * sign (drawn only when a bar reaches it) */
     double lo = base, hi = base;
@@ -669,9 +669,9 @@ static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t 
         sb_printf(b, "set arrow from 0, graph 0 to 0, graph 1 nohead linewidth 2 "
                      "linecolor 'black'\n");
     sb_printf(b, "plot $T using (($2+$3)/2):1:(($3<$2)?$3:$2):(($3<$2)?$2:$3):($1-0.35):($1+0.35)"
-                 ":ytic(5) with boxxyerror linecolor 1 title 'low end of the plausible range', "
+                 ":ytic(5) with boxxyerror linecolor 1 title 'low end of the range', "
                  "$T using (($2+$4)/2):1:(($4<$2)?$4:$2):(($4<$2)?$2:$4):($1-0.35):($1+0.35) "
-                 "with boxxyerror linecolor 2 title 'high end'\n");
+                 "with boxxyerror linecolor 2 title 'high end of the range'\n");
     sb_printf(b, "set output\nexit\n");
     if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
     return ACBB_OK;
