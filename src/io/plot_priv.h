@@ -17,7 +17,6 @@
 #define terminal_line acbb_plot_terminal_line
 #define image_complete acbb_plot_image_complete
 #define plot_markup acbb_plot_markup
-#define key_corner acbb_plot_key_corner
 #define key_pts_add acbb_plot_key_pts_add
 #define key_place acbb_plot_key_place
 #define axes_range acbb_plot_axes_range
@@ -66,10 +65,6 @@ typedef struct {
     size_t n, cap;
 } key_pts;
 void key_pts_add(key_pts *k, double x, double y);
-/* The `set key` line for the corner of the plot area that holds the
- * fewest points (inside, opaque) for a key of `entries` rows; frees k's
- * arrays. */
-void key_corner(sbuf *b, key_pts *k, int entries);
 
 /* The layout of an x-y figure (plot_axes.c), in pixels of the image. */
 typedef struct {
