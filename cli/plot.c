@@ -203,6 +203,10 @@ static int check_plot_args(const plot_args *a, int *first, int *last, int *w, in
     *h = a->out ? PLOT_FILE_H : PLOT_DUMB_H;
     if (!a->size) return 0;
     if (acbb_cli_parse_size(a->size, w, h)) return ACBB_EXIT_INPUT;
+    if (!a->out && strspn(a->size, "0123456789xX") != strlen(a->size)) {
+        fprintf(stderr, "acbb: plot: --size %s: with --dumb the size is WxH characters\n", a->size);
+        return ACBB_EXIT_INPUT;
+    }
     acbb_error err = { { 0 } };
     int fmt = a->out ? acbb_plot_format_from_name(a->out) : ACBB_PLOT_DUMB;
     if (acbb_plot_check_size((acbb_plot_format)fmt, *w, *h, &err) != ACBB_OK) {

@@ -99,9 +99,9 @@ static void test_key_raised(void)
     char *t = xy_script(&p, NULL, 1004, 753);
     has_substr(t, "set key inside top right", "no empty corner: the key at the top");
     double top = range_hi(t, "y");
-    /* the key's band: 2 rows of 1.35 em + 0.8 em over the plot area */
+    /* the key's band: 2 rows of 1.45 em + 0.8 em over the plot area */
     double em = acbb_plot_font_px(1004), plot_h = 753 - (1.5 + 1.5 + 4.0) * em;
-    double band = (2 * 1.35 + 0.8) * em / plot_h;
+    double band = (2 * 1.45 + 0.8) * em / plot_h;
     ok(10.0 / top <= 1.0 - band, "the y axis is raised so the data (max 10) stay below the key's "
        "band (%.3f of the height): top %g", band, top);
     free(t);

@@ -24,12 +24,13 @@ void key_pts_add(key_pts *k, double x, double y)
 }
 
 /* ---- the x-y figures' key (issue 29 item 9) ----
- * The key's box from the text size (a row 1.25 em, a character about
- * 0.55 em, the sample and margins 4 em), as fractions of the plot area. */
-#define KEY_ROW_EM 1.35
-#define KEY_CHAR_EM 0.55
-#define KEY_PAD_EM 4.0
-#define KEY_MARGIN 0.04
+ * The key's box from the text size (a row 1.45 em, a character 0.6 em,
+ * the sample and margins 4.5 em, and 6 % of the plot around it: gnuplot's
+ * own box measured on the seed figures), as fractions of the plot area. */
+#define KEY_ROW_EM 1.45
+#define KEY_CHAR_EM 0.6
+#define KEY_PAD_EM 4.5
+#define KEY_MARGIN 0.06
 
 static size_t in_box(const key_pts *k, const xy_layout *L, int corner, double fw, double fh)
 {
@@ -76,7 +77,7 @@ void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars)
     if (c < 0) /* the fewest columns whose rows fit a band at the top */
         for (cols = 1; cols <= 3; cols++) {
             key_box(L, entries, chars, cols, &fw, &fh);
-            if (fw < 0.95 && fh <= 0.55) break;
+            if (fw < 0.95 && fh <= 0.6) break;
         }
     int rows = (entries + cols - 1) / cols;
     if (c >= 0) {
@@ -86,7 +87,9 @@ void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars)
         axes_fit_y(L, L->gy0 + (L->y1 - L->gy0) / (1.0 - fh - 2.0 * KEY_MARGIN));
         sb_printf(b, "set key inside top right %s maxrows %d\n", style, rows);
     } else { /* below the plot, as many columns as fit */
-        cols = (int)(L->w / ((chars * KEY_CHAR_EM + KEY_PAD_EM - 1.0) * L->em));
+        /* below, a column needs the label and sample only (the width
+         * taken back below) */
+        cols = (int)(L->w / ((chars * 0.55 + 2.5) * L->em));
         cols = cols < 1 ? 1 : cols;
         rows = (entries + cols - 1) / cols;
         L->plot_h -= (rows * KEY_ROW_EM + 1.0) * L->em;
