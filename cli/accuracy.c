@@ -20,8 +20,8 @@
 #include "exit.h"
 #include "progress.h"
 
-#define ACC_PLOT_W 1000
-#define ACC_PLOT_H 650
+#define ACC_PLOT_W 2067 /* "full": 17.5 cm at 300 dpi (plot.h) */
+#define ACC_PLOT_H 1300
 
 /* What the options say, checked. */
 typedef struct {

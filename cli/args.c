@@ -35,8 +35,8 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                       "study: the figure directory" },
     [CLI_OPT_DUMB] = { "dumb", NULL, "a text chart on stdout (the default)" },
     [CLI_OPT_SIZE] = { "size", "WxH",
-                       "plot: pixels (default 1000x600) or characters with --dumb (80x25); "
-                       "study: pixels (default 900x600)" },
+                       "WxH pixels, a print width (85mm, 8.5cm, 85mmx60mm), column (the "
+                       "default) or full; characters with --dumb (80x25)" },
     [CLI_OPT_KNOBS] = { "knobs", "K1,...",
                         "model contact_grid hertz mech_tol steady_tol thermal network (default all)" },
     [CLI_OPT_MODELS] = { "models", "M1,...",

@@ -18,11 +18,12 @@
 #include "common.h"
 #include "exit.h"
 #include "figures.h"
+#include "mountings.h"
 #include "plot.h"
 #include "progress.h"
 
-#define FIG_W 900
-#define FIG_H 600
+#define FIG_W 1004 /* "column": 8.5 x 6.4 cm at 300 dpi (plot.h) */
+#define FIG_H 753
 
 typedef struct {
     const char *preset, *dir;
@@ -32,6 +33,7 @@ typedef struct {
     const acbb_figure_result *res;
     double ms[3];                /* study runs, trajectories, figures */
     int w, h;                    /* figure size, pixels (--size) */
+    const acbb_study *by[N_MOUNTINGS]; /* the study under each mounting (mountings.h) */
 } fig_view;
 
 static void md_text(FILE *f, const char *s)
@@ -98,24 +100,119 @@ static void md_figure(FILE *f, const fig_view *v, const acbb_seed_figure *sf)
     }
 }
 
-/* The seed's seven conclusions (seed section 5) as `acbb report` judges
- * them: the engine's mapping onto the checks and its verdicts (study.h). */
+/* The panels whose seed figure a statement cites: "fig17a, fig17c"; "" if none. */
+static void item_panels(int item, char *buf, size_t cap)
+{
+    size_t ns, nr, u = 0;
+    const acbb_seed_figure *sf = acbb_seed_figure_table(&ns);
+    const acbb_figure_row *rows = acbb_figure_table(&nr);
+    buf[0] = '\0';
+    for (size_t i = 0; i < ns; i++)
+        for (int k = 0; k < ACBB_FIG_MAX_ITEMS && sf[i].items[k]; k++) {
+            if (sf[i].items[k] != item) continue;
+            for (size_t r = 0; r < nr && u < cap; r++)
+                if (rows[r].seed_fig == sf[i].num)
+                    u += (size_t)snprintf(buf + u, cap - u, "%s%s", u ? ", " : "", rows[r].id);
+        }
+}
+
+/* Why conclusion i holds or not under mounting m, in words. */
+static void md_why(FILE *f, const fig_view *v, const acbb_study_conclusion *c, size_t i, int m)
+{
+    const acbb_study *s = v->by[m];
+    acbb_verdict cv = acbb_study_conclusion_verdict(s, i);
+    fprintf(f, "- %s %s it is %s: ", m == M_DB ? "as a" : "under", acbb_cli_mountings[m].name,
+            acbb_verdict_name(cv));
+    if (cv == ACBB_VERDICT_HELD) {
+        fputs("every check it rests on holds (", f);
+        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && c->checks[k]; k++)
+            fprintf(f, "%scheck %s", k ? ", " : "", c->checks[k]);
+        fputs(").\n", f);
+        return;
+    }
+    const char *sep = "";
+    for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && c->checks[k]; k++) {
+        const acbb_study_check *ch = acbb_cli_find_check(s, c->checks[k]);
+        if (ch && ch->verdict == ACBB_VERDICT_HELD) continue;
+        fprintf(f, "%scheck %s %s", sep, c->checks[k],
+                !ch || ch->verdict == ACBB_VERDICT_NOT_EVALUATED ? "could not be evaluated"
+                                                                 : "does not hold");
+        sep = " and ";
+    }
+    fputs(" (its numbers below).\n", f);
+}
+
+/* Conclusion (6)'s omega_so at 100 N (fig17c) reverses sign in the
+ * model: say so, since the check reads the signed value (study_items_b.c
+ * check 16c) and a reader of the figure sees the fall pass through zero. */
+static void md_spin_sign(FILE *f, const fig_view *v)
+{
+    const acbb_study_point *pts = v->runs->sweep[ACBB_STUDY_L2][ACBB_STUDY_S100];
+    for (int k = 1; k < ACBB_STUDY_NPTS; k++) {
+        const acbb_study_point *a = &pts[2 * (k - 1) + ACBB_STUDY_TE];
+        const acbb_study_point *b = &pts[2 * k + ACBB_STUDY_TE];
+        double sa = a->last.balls[0].spin_o, sb = b->last.balls[0].spin_o;
+        if (!a->ok || !b->ok || !(sa > 0.0 && sb < 0.0)) continue;
+        fprintf(f, "\nNote (fig17c): under the constant force the outer contact's spin omega\\_so "
+                "(with expansion) changes sign between %g rpm (%+.4g rad/s) and %g rpm (%+.4g "
+                "rad/s): the spin at the outer contact reverses. Check 16c reads the signed value, "
+                "which rises and then falls as the seed says; its magnitude grows again after "
+                "the reversal, which the seed's figure does not show.\n",
+                acbb_study_speeds[k - 1], sa, acbb_study_speeds[k], sb);
+        return;
+    }
+}
+
+/* One conclusion: its verdict under each mounting, why, and every check
+ * it rests on with its statement, what it measures and its numbers. */
+static void md_conclusion(FILE *f, const fig_view *v, const acbb_study_conclusion *c, size_t i)
+{
+    fprintf(f, "\n### (%zu) ", i + 1);
+    acbb_cli_md_text(f, c->text);
+    fputs("\n\nWhy:\n\n", f);
+    for (int m = 0; m < N_MOUNTINGS; m++) md_why(f, v, c, i, m);
+    for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && c->checks[k]; k++) {
+        const acbb_study_item *it = item_num(v->st, atoi(c->checks[k]));
+        char panels[200];
+        item_panels(atoi(c->checks[k]), panels, sizeof panels);
+        fprintf(f, "\nCheck %s is a test of statement %d (\"", c->checks[k], atoi(c->checks[k]));
+        acbb_cli_md_text(f, it ? it->statement : "?");
+        fprintf(f, "\")%s%s. What it measures and its numbers:\n\n", panels[0] ? "; figures: " : "",
+                panels);
+        for (int m = 0; m < N_MOUNTINGS; m++) {
+            const acbb_study_check *ch = acbb_cli_find_check(v->by[m], c->checks[k]);
+            fprintf(f, "- %s, %s: ", acbb_cli_mountings[m].name,
+                    ch ? acbb_verdict_name(ch->verdict) : "NOT EVALUATED");
+            acbb_cli_md_text(f, ch ? ch->text : "not evaluated");
+            fputc('\n', f);
+        }
+    }
+    if (i == 5) md_spin_sign(f, v);
+}
+
+/* The seed's seven conclusions (seed section 5) as `acbb report --md`
+ * judges them, under the three mountings (issue 29 item 10: with the
+ * numbers, the reasons and every check named defined). */
 static void md_conclusions(FILE *f, const fig_view *v)
 {
     size_t nc;
     const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
     fprintf(f, "\n## Seed conclusions (seed section 5)\n\nThe seed's %zu conclusions, each judged "
-            "from the checks it maps onto, as `acbb report` judges them.\n\n"
-            "| # | verdict | conclusion | checks |\n|---|---|---|---|\n", nc);
+            "from tests (checks) of the statements of docs/physics.md section 12, as `acbb report` "
+            "judges them. A check is named by its statement's number and a letter (check 16c is "
+            "a test of statement 16); each is given below with its statement, what it measures "
+            "and the numbers that decide it. A conclusion is HELD when every check it rests on "
+            "holds, NOT HELD when one does not.\n\n", nc);
+    acbb_cli_md_text(f, acbb_cli_mount_intro);
+    fputs("\n\n| # | conclusion | constant force | rigid preload | DB pair | holds under |\n"
+          "|---|---|---|---|---|---|\n", f);
     for (size_t i = 0; i < nc; i++) {
-        fprintf(f, "| (%zu) | %s | ", i + 1,
-                acbb_verdict_name(acbb_study_conclusion_verdict(v->st, i)));
-        md_text(f, cc[i].text);
+        fprintf(f, "| (%zu) | ", i + 1);
+        acbb_cli_md_text(f, cc[i].text);
         fputs(" |", f);
-        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
-            fprintf(f, " %s", cc[i].checks[k]);
-        fputs(" |\n", f);
+        acbb_cli_mountings_md_row(f, v->by, i);
     }
+    for (size_t i = 0; i < nc; i++) md_conclusion(f, v, &cc[i], i);
 }
 
 static void md_report(FILE *f, const fig_view *v)
@@ -208,13 +305,13 @@ static int figures_cancelled(const fig_view *v, bool drawn)
     return acbb_cli_cancelled("study", kept);
 }
 
-static int figures(const acbb_cli_args *a, acbb_study *st, long jobs)
+static int figures(const acbb_cli_args *a, acbb_study *st, acbb_study *const *by, long jobs)
 {
     size_t n;
     acbb_figure_table(&n);
     acbb_figure_result *res = calloc(n, sizeof *res);
     fig_view v = { a->preset, a->val[CLI_OPT_OUT], st, acbb_study_results(st), NULL, res,
-                   { 0, 0, 0 }, FIG_W, FIG_H };
+                   { 0, 0, 0 }, FIG_W, FIG_H, { by[0], by[1], by[2] } };
     acbb_fig_input *in = NULL;
     acbb_error err = { { 0 } };
     if (!res) return ACBB_EXIT_INTERNAL;
@@ -231,6 +328,13 @@ static int figures(const acbb_cli_args *a, acbb_study *st, long jobs)
     acbb_cli_progress_note(&prog, "study: running the study  (Ctrl-C stops)");
     double t0 = acbb_now_ms();
     acbb_status ss = acbb_study_run(st, (int)jobs, cancel);
+    /* the conclusions under the other mountings (REPORT.md, as `acbb report`) */
+    for (int m = 0; m < N_MOUNTINGS && ss != ACBB_CANCELLED; m++) {
+        if (by[m] == st) continue;
+        acbb_cli_progress_note(&prog, "study: the study under %s  (Ctrl-C stops)",
+                               acbb_cli_mountings[m].name);
+        if (acbb_study_run(by[m], (int)jobs, cancel) == ACBB_CANCELLED) ss = ACBB_CANCELLED;
+    }
     double t1 = acbb_now_ms();
     int rc = 0;
     if (ss != ACBB_CANCELLED) {
@@ -269,13 +373,20 @@ int acbb_cli_study_figures(const acbb_cli_args *a, long jobs)
     int rc = acbb_cli_load_scene(a, &base);
     if (!rc) rc = make_dir(a->val[CLI_OPT_OUT]);
     if (rc) return rc;
-    acbb_study *st = NULL;
+    acbb_study *st = NULL, *by[N_MOUNTINGS] = { NULL };
     acbb_error err = { { 0 } };
-    if (acbb_study_plan(&base, &st, &err) != ACBB_OK) {
-        fputs("acbb: study: out of memory\n", stderr);
-        return ACBB_EXIT_INTERNAL;
+    int own = acbb_cli_own_mounting(&base);
+    acbb_status ps = acbb_study_plan(&base, &st, &err);
+    for (int m = 0; m < N_MOUNTINGS && ps == ACBB_OK; m++) {
+        acbb_scene ms;
+        acbb_cli_mounting_scene(&base, m, &ms);
+        if (m != own) ps = acbb_study_plan(&ms, &by[m], &err);
+        else by[m] = st;
     }
-    rc = figures(a, st, jobs);
+    if (ps == ACBB_OK) rc = figures(a, st, by, jobs);
+    else fputs("acbb: study: out of memory\n", stderr), rc = ACBB_EXIT_INTERNAL;
+    for (int m = 0; m < N_MOUNTINGS; m++)
+        if (by[m] != st) acbb_study_free(by[m]);
     acbb_study_free(st);
     return rc;
 }

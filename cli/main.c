@@ -96,7 +96,8 @@ const acbb_cli_command acbb_cli_commands[] = {
       "DIR/REPORT.md linking them with the seed's captions and the verdicts of the\n"
       "statements that cite them.\n"
       "e.g. acbb study seed --out figs\n"
-      "--size WxH: the figures' size in pixels (default 900x600).\n",
+      "--size: the figures' size: column (default; 8.5 x 6.4 cm, text 8.5 pt),\n"
+      "full (17.5 cm), a print width (85mm, 8.5cm, 85mmx60mm; 300 dpi) or WxH pixels.\n",
       SCENE_OPTS | O(CSV) | O(JOBS) | O(OUT) | O(SIZE) | O(MAX_WALL), 1, 1, -1, acbb_cli_cmd_study },
     { "plot", NULL, "PRESET", "run the scene and plot it through gnuplot",
       "--kind all writes every kind, FILE-<kind>.png next to --out FILE.png.\n",

@@ -40,21 +40,13 @@ static int bad_usage(const char *what, const char *arg)
     return ACBB_EXIT_INPUT;
 }
 
-/* "WxH" with both sides whole numbers; the plot module checks the range. */
+/* "WxH" pixels, a print width ("85mm", "8.5cm", "85mmx60mm"), "column" or
+ * "full" (acbb_plot_parse_size); the plot module checks the range. */
 int acbb_cli_parse_size(const char *text, int *w, int *h)
 {
-    char *end = NULL;
-    errno = 0;
-    long x = strtol(text, &end, 10);
-    if (errno || end == text || (*end != 'x' && *end != 'X')) goto bad;
-    const char *p = end + 1;
-    long y = strtol(p, &end, 10);
-    if (errno || end == p || *end || x < 1 || y < 1 || x > 100000 || y > 100000) goto bad;
-    *w = (int)x;
-    *h = (int)y;
-    return 0;
-bad:
-    fprintf(stderr, "acbb: --size %s: expected WxH, e.g. 1000x600\n", text);
+    if (acbb_plot_parse_size(text, w, h) == 0) return 0;
+    fprintf(stderr, "acbb: --size %s: expected WxH pixels (e.g. 1000x600), a print width "
+            "(85mm, 8.5cm, 85mmx60mm) or column (8.5 cm) / full (17.5 cm)\n", text);
     return ACBB_EXIT_INPUT;
 }
 
@@ -224,6 +216,10 @@ static int check_plot_args(const plot_args *a, int *first, int *last, int *w, in
     *h = a->out ? PLOT_FILE_H : PLOT_DUMB_H;
     if (!a->size) return 0;
     if (acbb_cli_parse_size(a->size, w, h)) return ACBB_EXIT_INPUT;
+    if (!a->out && strspn(a->size, "0123456789xX") != strlen(a->size)) {
+        fprintf(stderr, "acbb: plot: --size %s: with --dumb the size is WxH characters\n", a->size);
+        return ACBB_EXIT_INPUT;
+    }
     acbb_error err = { { 0 } };
     int fmt = a->out ? acbb_plot_format_from_name(a->out) : ACBB_PLOT_DUMB;
     if (acbb_plot_check_size((acbb_plot_format)fmt, *w, *h, &err) != ACBB_OK) {

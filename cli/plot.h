@@ -29,10 +29,12 @@
 /* `acbb plot` (options: main.c's command table): runs the scene and draws
  * --kind (default temperature; all = every kind) to --out FILE.png|.svg, or
  * with gnuplot's dumb terminal on stdout. --size defaults to 1000x600
- * pixels, or 80x25 characters for the dumb terminal. The handler itself is
+ * pixels (or a print size, acbb_plot_parse_size), or 80x25 characters
+ * for the dumb terminal. The handler itself is
  * acbb_cli_plot in commands.h. */
 
-/* Parse --size "WxH" (whole numbers): 0, or 2 with a message on stderr.
+/* Parse --size "WxH" (whole numbers) or a print size ("column", "full",
+ * "85mm", "85mmx60mm": acbb_plot_parse_size): 0, or 2 with a message on stderr.
  * The range is the plot module's to check (acbb_plot_check_size). */
 int acbb_cli_parse_size(const char *text, int *w, int *h);
 

@@ -19,42 +19,7 @@
 #include "progress.h"
 #include "report.h"
 #include "report_contact.h"
-
-/* ---- mountings (issue 17 item 7; MODEL.md 14) ----
- * Each seed conclusion is judged under the seed rig's constant force and
- * under rigid preload of the same bearing: the study as the scene says, and
- * again with the other mounting.preload (under displacement the study's
- * thrust of each point is the assembly preload, study.c set_point), and
- * as a rigid DB pair of the same bearing with the same preload (the set's
- * other keys as the scene has them; MODEL.md 14: the pair's own bearing
- * carries the preload, the shaft's growth between them adds to it). */
-enum { M_FORCE, M_RIGID, M_DB, N_MOUNTINGS };
-static const struct {
-    const char *name, *json, *label;
-} k_mountings[N_MOUNTINGS] = {
-    [M_FORCE] = { "constant force", "constant_force", "force" },
-    [M_RIGID] = { "rigid preload", "rigid_preload", "rigid" },
-    [M_DB] = { "DB pair", "db_pair", "DB" },
-};
-
-/* The scene of mounting m from the preset's scene. */
-static void mounting_scene(const acbb_scene *base, int m, acbb_scene *out)
-{
-    *out = *base;
-    out->preload = m == M_FORCE ? ACBB_PRELOAD_FORCE : ACBB_PRELOAD_DISPLACEMENT;
-    if (m != M_FORCE && !(out->preload_force > 0.0)) out->preload_force = out->axial_load;
-    out->set_arrangement = m == M_DB ? ACBB_SET_DB : ACBB_SET_SINGLE;
-    if (m != M_DB) out->set_n_bearings = 0;
-}
-
-/* The mounting the scene itself is, or -1 (another set, a spring pair):
- * then the study of the scene is shown above and every mounting below. */
-static int own_mounting(const acbb_scene *base)
-{
-    bool rigid = base->preload == ACBB_PRELOAD_DISPLACEMENT;
-    if (base->set_arrangement == ACBB_SET_SINGLE) return rigid ? M_RIGID : M_FORCE;
-    return base->set_arrangement == ACBB_SET_DB && rigid ? M_DB : -1;
-}
+#include "mountings.h"
 
 /* What the formatters need besides the study. */
 typedef struct {
@@ -65,7 +30,7 @@ typedef struct {
     const acbb_study *st;
     const acbb_study_runs *runs;
     const acbb_study_rob *rob;   /* --sensitivity, else NULL */
-    const acbb_study *by[N_MOUNTINGS]; /* the study under each mounting (k_mountings) */
+    const acbb_study *by[N_MOUNTINGS]; /* the study under each mounting (acbb_cli_mountings) */
     const char *loss_set;        /* acbb_loss_set of the preset: "seed" | "extended" */
     const acbb_contact_study *contact; /* the runaway case under each contact model */
     const char *profile;         /* its physics.profile: "seed" | "reference" */
@@ -249,62 +214,26 @@ static void print_robust_text(FILE *f, const report_view *c)
 
 /* Check `id` ("5a") of study s; when the item was not evaluated as a whole
  * (one check named by the item number), that check: it says why. */
-static const acbb_study_check *find_check(const acbb_study *s, const char *id)
-{
-    const acbb_study_check *ch = acbb_study_find_check(s, id);
-    const acbb_study_item *it = acbb_study_item_at(s, (size_t)(atoi(id) - 1));
-    return ch ? ch : it && it->n_checks > 0 ? &it->checks[0] : NULL;
-}
-
-/* "all three", "constant force only", "rigid preload, DB pair", "none"
- * for conclusion i; buf >= 40 bytes. */
-static const char *holds_under(const report_view *c, size_t i, char *buf, size_t cap)
-{
-    int n = 0, last = 0;
-    size_t u = 0;
-    buf[0] = '\0';
-    for (int m = 0; m < N_MOUNTINGS; m++) {
-        if (acbb_study_conclusion_verdict(c->by[m], i) != ACBB_VERDICT_HELD) continue;
-        u += (size_t)snprintf(buf + u, u < cap ? cap - u : 0, "%s%s", n ? ", " : "",
-                              k_mountings[m].name);
-        n++;
-        last = m;
-    }
-    if (n == 0) return "none";
-    if (n == N_MOUNTINGS) return "all three";
-    if (n == 1) snprintf(buf, cap, "%s only", k_mountings[last].name);
-    return buf;
-}
-
-static const char k_mount_intro[] =
-    "Seed conclusions by mounting (docs/physics.md section 14): the same study under the seed "
-    "rig's constant "
-    "force, under rigid preload of the same bearing (mounting.preload = displacement, each "
-    "point's thrust the assembly preload) and as a rigid DB pair of it with the same preload "
-    "(set.arrangement = DB; the numbers are bearing 0's); where a transient runs away, the "
-    "steady values are the steady solve's and the transient checks say so. The checks' numbers "
-    "under each:";
-
 static void print_mountings_text(FILE *f, const report_view *c)
 {
     size_t nc;
     const acbb_study_conclusion *cc = acbb_study_conclusions(&nc);
-    wrap(f, "", 0, k_mount_intro);
+    wrap(f, "", 0, acbb_cli_mount_intro);
     fprintf(f, "%-6s", "");
-    for (int m = 0; m < N_MOUNTINGS; m++) fprintf(f, "%-15s", k_mountings[m].name);
+    for (int m = 0; m < N_MOUNTINGS; m++) fprintf(f, "%-15s", acbb_cli_mountings[m].name);
     fprintf(f, "%s\n", "holds under");
     for (size_t i = 0; i < nc; i++) {
         char where[48];
         fprintf(f, "(%zu)   ", i + 1);
         for (int m = 0; m < N_MOUNTINGS; m++)
             fprintf(f, "%-15s", acbb_verdict_name(acbb_study_conclusion_verdict(c->by[m], i)));
-        fprintf(f, "%s\n", holds_under(c, i, where, sizeof where));
+        fprintf(f, "%s\n", acbb_cli_holds_under(c->by, i, where, sizeof where));
         for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
             for (int m = 0; m < N_MOUNTINGS; m++) {
-                const acbb_study_check *ch = find_check(c->by[m], cc[i].checks[k]);
+                const acbb_study_check *ch = acbb_cli_find_check(c->by[m], cc[i].checks[k]);
                 char head[48];
                 snprintf(head, sizeof head, "%6s%-4s %-4s %s: ", "", cc[i].checks[k],
-                         ch ? k_vmark[ch->verdict] : "n/e", k_mountings[m].label);
+                         ch ? k_vmark[ch->verdict] : "n/e", acbb_cli_mountings[m].label);
                 wrap(f, head, 12, ch ? ch->text : "not evaluated");
             }
     }
@@ -434,7 +363,7 @@ static void json_mountings(acbb_json *j, const report_view *c, size_t i)
     acbb_json_open(j, "mountings", '{', false);
     for (int m = 0; m < N_MOUNTINGS; m++) {
         const acbb_study_item *it = acbb_study_item_at(c->by[m], i);
-        acbb_json_open(j, k_mountings[m].json, '{', false);
+        acbb_json_open(j, acbb_cli_mountings[m].json, '{', false);
         acbb_json_str(j, "verdict", acbb_verdict_name(it->verdict));
         json_checks(j, "checks", it->checks, it->n_checks, false);
         acbb_json_close(j, '}');
@@ -485,13 +414,7 @@ static long print_json(FILE *f, const report_view *c)
 
 /* ---- Markdown ---- */
 
-static void md_text(FILE *f, const char *s)
-{
-    for (; *s; s++) {
-        if (*s == '|' || *s == '*' || *s == '_') fputc('\\', f);
-        fputc(*s, f);
-    }
-}
+#define md_text acbb_cli_md_text
 
 static void print_md_head(FILE *f, const report_view *c)
 {
@@ -604,26 +527,7 @@ static void print_md(FILE *f, const report_view *c)
         fputs(ids, f);
     }
     fputs("\n## Seed conclusions by mounting\n\n", f);
-    md_text(f, k_mount_intro);
-    fputs("\n\n| # | constant force | rigid preload | DB pair | holds under |\n"
-          "|---|---|---|---|---|\n", f);
-    for (size_t i = 0; i < nc; i++) {
-        char where[48];
-        fprintf(f, "| (%zu) |", i + 1);
-        for (int m = 0; m < N_MOUNTINGS; m++)
-            fprintf(f, " %s |", acbb_verdict_name(acbb_study_conclusion_verdict(c->by[m], i)));
-        fprintf(f, " %s |\n", holds_under(c, i, where, sizeof where));
-    }
-    fputc('\n', f);
-    for (size_t i = 0; i < nc; i++)
-        for (int k = 0; k < ACBB_STUDY_CONCL_CHECKS && cc[i].checks[k]; k++)
-            for (int m = 0; m < N_MOUNTINGS; m++) {
-                const acbb_study_check *ch = find_check(c->by[m], cc[i].checks[k]);
-                fprintf(f, "- (%zu) **%s %s**, %s: ", i + 1, cc[i].checks[k],
-                        ch ? acbb_verdict_name(ch->verdict) : "NOT EVALUATED", k_mountings[m].name);
-                md_text(f, ch ? ch->text : "not evaluated");
-                fputc('\n', f);
-            }
+    acbb_cli_mountings_md(f, c->by);
     acbb_report_contact_md(f, c->contact);
     fputs("\n## Evidence\n", f);
     for (size_t i = 0; i < n; i++) {
@@ -703,7 +607,7 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
     for (int m = 0; m < N_MOUNTINGS && ss != ACBB_CANCELLED; m++) {
         if (!other[m]) continue;
         acbb_cli_progress_note(&rp, "report: the study under %s  (Ctrl-C stops)",
-                               k_mountings[m].name);
+                               acbb_cli_mountings[m].name);
         acbb_status so = acbb_study_run(other[m], (int)jobs, cancel);
         if (so == ACBB_CANCELLED) ss = so;
     }
@@ -770,11 +674,11 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
         return ACBB_EXIT_INPUT;
     }
     acbb_study *st = NULL, *other[N_MOUNTINGS] = { NULL };
-    int own = own_mounting(base);
+    int own = acbb_cli_own_mounting(base);
     acbb_status ps = acbb_study_plan(base, &st, &err);
     for (int m = 0; m < N_MOUNTINGS && ps == ACBB_OK; m++) {
         acbb_scene ms;
-        mounting_scene(base, m, &ms);
+        acbb_cli_mounting_scene(base, m, &ms);
         if (m != own) ps = acbb_study_plan(&ms, &other[m], &err);
     }
     if (ps != ACBB_OK) {

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "acbb/json.h"
 #include "acbb/measure.h"
+#include "acbb/outputs.h"
 #include "acbb/plot.h"
 #include "acbb/sensitivity.h"
 #include "commands.h"
@@ -76,6 +77,33 @@ static const char *metric_title(const acbb_sens_result *r, char *buf, size_t n)
 {
     snprintf(buf, n, "%s%s", r->metric, r->delta_te ? " (TE - WTE)" : "");
     return buf;
+}
+
+/* The metric as an axis label: its words and unit ("outer ring (seed node
+ * 5) temperature (°C)"), not its JSON path (issue 29 item 9). */
+static void metric_words(const acbb_sens_result *r, char *buf, size_t n)
+{
+    static const struct { const char *plain, *printed; } units[] = {
+        { "C", "\u00b0C" }, { "um", "\u03bcm" } };
+    static const struct { const char *section, *word; } what[] = {
+        { "temperature_C", "temperature" }, { "expansion_um", "expansion" },
+        { "losses_W", "power loss" } };
+    acbb_output o;
+    long ball;
+    acbb_error err = { { 0 } };
+    if (acbb_output_find(r->metric, &o, &ball, &err) != ACBB_OK) {
+        metric_title(r, buf, n);
+        return;
+    }
+    const char *unit = o.unit, *word = "";
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
+        if (strcmp(unit, units[i].plain) == 0) unit = units[i].printed;
+    for (size_t i = 0; i < sizeof what / sizeof what[0]; i++)
+        if (o.row->section && strcmp(o.row->section, what[i].section) == 0 &&
+            !strstr(o.label, what[i].word))
+            word = what[i].word;
+    snprintf(buf, n, "%s%s%s%s (%s)", r->delta_te ? "TE - WTE of " : "", o.label,
+             word[0] ? " " : "", word, unit);
 }
 
 static void print_value(FILE *f, int ok, double v)
@@ -212,13 +240,21 @@ static int write_plot(const char *path, const char *preset, const acbb_sens_resu
     for (size_t i = 0; i < r->n; i++)
         bars[i] = (acbb_tornado_bar){r->rows[i].in.key, r->rows[i].ok_lo ? r->rows[i].y_lo : NAN,
                                      r->rows[i].ok_hi ? r->rows[i].y_hi : NAN};
-    char t[128], title[320];
-    snprintf(title, sizeof title, "%s: %s over each plausible range", preset,
-             metric_title(r, t, sizeof t));
+    char t[128], title[320], xlabel[160];
+    /* the preset's name, not its path; the metric in words on the axis */
+    const char *base = strrchr(preset, '/');
+    base = base ? base + 1 : preset;
+    int len = (int)strcspn(base, ".");
+    metric_title(r, t, sizeof t);
+    snprintf(title, sizeof title, "%.*s: each uncertain input over its plausible range", len, base);
+    metric_words(r, xlabel, sizeof xlabel);
+    /* full width (17.5 cm at 300 dpi: the inputs' names need it); a bar
+     * per input, each a text row and a half high at the print text size */
+    int w = 2067, h = (int)((7.0 + 1.6 * (double)r->n) * acbb_plot_font_px(w));
     acbb_error err = {{0}};
     acbb_status st = fmt == ACBB_PLOT_PNG || fmt == ACBB_PLOT_SVG
         ? acbb_plot_tornado_file(bars, r->n, r->ok0 ? r->y0 : NAN, (acbb_plot_format)fmt, path,
-                                 1000, 200 + 22 * (int)r->n, title, t, &err)
+                                 w, h, title, xlabel, &err)
         : acbb_error_set(&err, ACBB_EINVAL, "--plot %s: use a .png or .svg name", path);
     if (st == ACBB_OK) return 0;
     fprintf(stderr, "acbb: sensitivity: %s\n", err.msg);

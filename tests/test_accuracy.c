@@ -345,7 +345,7 @@ static void check_plot(const acbb_accuracy_row *rows, size_t n)
     has_substr(err.msg, "no converged setting", "its message");
 
     err.msg[0] = '\0';
-    st = acbb_plot_accuracy_file(rows, n, ACBB_PLOT_SVG, path, 800, 500, "7008C", &err);
+    st = acbb_plot_accuracy_file(rows, n, ACBB_PLOT_SVG, path, 2067, 1300, "7008C", &err);
     if (st == ACBB_EIO && strstr(err.msg, "not found")) {
         skip("gnuplot not installed", "svg plot written");
         return;

@@ -24,7 +24,13 @@ fi
 
 # One study serves every check below, the --size one included (a second
 # full study only for the PNG size cost the suite seconds).
-"$ACBB" study seed --out "$OUT" --size 640x400 >"$TMP/stdout" 2>"$TMP/err"
+# A gnuplot that keeps a copy of each script it is sent (issue 29 item 9:
+# what gnuplot is asked to draw is checked below).
+mkdir "$TMP/gp"
+GP=$(command -v "${ACBB_GNUPLOT:-gnuplot}")
+printf '#!/bin/sh\nf=$(mktemp "%s/gp/s.XXXXXX")\ntee "$f" | "%s"\n' "$TMP" "$GP" >"$TMP/gpwrap"
+chmod +x "$TMP/gpwrap"
+ACBB_GNUPLOT="$TMP/gpwrap" "$ACBB" study seed --out "$OUT" --size 640x400 >"$TMP/stdout" 2>"$TMP/err"
 code $? 0 "study seed --out DIR --size 640x400 runs"
 [ -s "$OUT/REPORT.md" ]
 t $? "REPORT.md written"
@@ -81,13 +87,33 @@ t $? "REPORT.md cites at least 15 of the 18 statements"
 # The seed's seven conclusions, with the verdicts acbb report gives (issue 21 item 11).
 grep -q "^## Seed conclusions (seed section 5)" "$OUT/REPORT.md"
 t $? "REPORT.md has the seed's conclusions"
-sed -n 's/^| (\([0-9]\)) | \(HELD\|NOT HELD\|NOT EVALUATED\) | .*/\1 \2/p' "$OUT/REPORT.md" >"$TMP/cgot"
+# "| (n) | conclusion | force | rigid | DB | holds under |": the verdicts
+# under the three mountings, against acbb report --md's table by mounting.
+V='HELD\|NOT HELD\|NOT EVALUATED'
+sed -n "s/^| (\([0-9]\)) | [^|]* | \($V\) | \($V\) | \($V\) | \([^|]*\) |\$/\1 \2 \3 \4 \5/p" \
+    "$OUT/REPORT.md" >"$TMP/cgot"
 [ "$(wc -l <"$TMP/cgot")" -eq 7 ]
-t $? "all seven are listed ($(wc -l <"$TMP/cgot"))"
-sed -n 's/^| (\([0-9]\)) | \(HELD\|NOT HELD\|NOT EVALUATED\) | .*/\1 \2/p' "$TMP/report.md" |
-    awk '!seen[$1]++' >"$TMP/cwant" # the first table; the by-mounting one follows
+t $? "all seven are listed with a verdict per mounting ($(wc -l <"$TMP/cgot"))"
+sed -n "s/^| (\([0-9]\)) | \($V\) | \($V\) | \($V\) | \([^|]*\) |\$/\1 \2 \3 \4 \5/p" \
+    "$TMP/report.md" >"$TMP/cwant"
 [ -s "$TMP/cwant" ] && cmp -s "$TMP/cgot" "$TMP/cwant"
-t $? "with the verdicts of acbb report --md"
+t $? "the constant force / rigid preload / DB pair table of acbb report --md"
+# issue 29 item 10: each conclusion with its numbers and the reason, and no
+# check named that the report does not define.
+for c in 1 2 3 4 5 6 7; do
+    sed -n "/^### ($c) /,/^##/p" "$OUT/REPORT.md" | sed 1d >"$TMP/c$c"
+    grep -q '^Why:' "$TMP/c$c" && grep -q 'it is \(HELD\|NOT HELD\)' "$TMP/c$c" &&
+        grep -q '[0-9][0-9.]* \(N\|rpm\|%\|W\|rad/s\|m/s\)' "$TMP/c$c"
+    t $? "conclusion ($c): a reason (Why:, a verdict per mounting) and numbers with units"
+done
+grep -o '[Cc]heck [0-9][0-9]*[a-z]' "$OUT/REPORT.md" | sed 's/^[Cc]heck //' | sort -u >"$TMP/used"
+grep -o '^Check [0-9]*[a-z] is a test of statement [0-9]*' "$OUT/REPORT.md" |
+    awk '{ print $2 }' | sort -u >"$TMP/defined"
+[ -s "$TMP/used" ] && [ -z "$(comm -23 "$TMP/used" "$TMP/defined")" ]
+t $? "every check REPORT.md names is defined ($(wc -l <"$TMP/used") named; undefined:" \
+  "$(comm -23 "$TMP/used" "$TMP/defined" | tr '\n' ' '))"
+grep -q 'Note (fig17c).*changes sign' "$OUT/REPORT.md"
+t $? "conclusion (6) says omega_so of fig17c reverses sign (check 16c reads it signed)"
 
 # ---- fit to print (issue 21 item 9), read from the SVGs ----
 grep -q "ω" "$OUT/fig08a.svg" && ! grep -q "omega_x'" "$OUT/fig08a.svg"
@@ -108,6 +134,37 @@ t $? "--size 640x400: the PNGs are 640 x 400 pixels"
 code $? 2 "--size 10x10 is refused with exit 2"
 grep -q "size" "$TMP/err"
 t $? "and says why: $(head -1 "$TMP/err")"
+
+# ---- what gnuplot is asked to draw (issue 29 item 9) ----
+ls "$TMP"/gp/s.* >"$TMP/scripts" 2>/dev/null
+[ "$(wc -l <"$TMP/scripts")" -eq "$(wc -l <"$TMP/ids")" ]
+t $? "one gnuplot script per panel ($(wc -l <"$TMP/scripts"))"
+bad=""
+while read -r f; do
+    # text: the em at 640 px printed 8.5 cm wide is 8.5 pt (pngcairo takes 3/4 of it)
+    pt=$(sed -n "s/^set terminal pngcairo .*size \([0-9]*\),[0-9]* font 'sans,\([0-9.]*\)'.*/\2 \1/p" "$f" |
+         awk '{ printf "%.2f", $1 / 0.75 / $2 * 241 }')
+    awk -v p="${pt:-0}" 'BEGIN { exit !(p >= 8 && p <= 9.5) }' || bad="$bad $f:font=$pt"
+    grep -E "^set (x|y)label" "$f" | grep -qv "(.*)" && bad="$bad $f:label-without-unit"
+    grep -iE "^set title.*(fig[0-9]|seed fig|L2|ball 0)" "$f" >/dev/null && bad="$bad $f:title"
+    grep -E "_\{[^}]*\} " "$f" >/dev/null && bad="$bad $f:space-after-subscript"
+    grep -qE "^set key (inside (top|bottom) (left|right)|outside below)" "$f" || bad="$bad $f:key"
+    grep "^plot " "$f" | grep -q "dashtype" || bad="$bad $f:dash"
+    # a quantity never negative has no negative axis
+    awk '/^\$S[0-9]+ << EOD/ { d = 1; next } /^EOD/ { d = 0 } d && $2 < m { m = $2 }
+         /^set yrange \[/ { v = $0; sub(/^set yrange \[/, "", v); lo = v + 0; seen = 1 }
+         END { exit !(seen && (m < 0 || lo >= 0)) }' m=0 "$f" || bad="$bad $f:negative-axis"
+done <"$TMP/scripts"
+[ -z "$bad" ]
+t $? "every panel: text 8-9.5 pt at column width, axis labels with units, titles without" \
+  "file names, a key clear of the data, dashes, no negative axis for a positive" \
+  "quantity${bad:+ (bad:$bad)}"
+f=$(grep -l "^set title 'Outer-ring temperature rise" $(cat "$TMP/scripts") | head -1)
+shapes=$(grep "^plot " "$f" | grep -o "pointtype [0-9]*" | sort -u | wc -l)
+[ "$shapes" -ge 8 ]
+t $? "fig07a: the eight loads have eight marker shapes ($shapes), not colour alone"
+grep -q "F_{x}" "$f" $(cat "$TMP/scripts") && grep -q "T_{5}" $(cat "$TMP/scripts")
+t $? "F_x and T_5 are subscripted"
 
 # ---- failures ----
 : >"$TMP/file"

@@ -91,7 +91,23 @@ if command -v gnuplot >/dev/null 2>&1; then
     "$ACBB" preload-map presets/7008C.ini --speeds 4000:8000:2 --preloads 50:100:2 \
         --plot "$TMP/w.svg" >/dev/null 2>"$TMP/err"
     code $? 0 "--plot FILE.svg"
-    grep -q 'preload window' "$TMP/w.svg"; t $? "  the chart is written"
+    grep -q 'Preload window' "$TMP/w.svg"; t $? "  the chart is written"
+    # issue 29 item 9: a window reaching the grid's last preload found no
+    # limit there; the chart must not draw that end as the upper limit.
+    printf '#!/bin/sh\ntee "%s/w.gp" | gnuplot\n' "$TMP" >"$TMP/gpw"
+    chmod +x "$TMP/gpw"
+    # (The seed's physics, as the map above: 24 000 rpm meets a limit.)
+    ACBB_GNUPLOT="$TMP/gpw" "$ACBB" preload-map presets/preload-window.ini --speeds 8000:24000:3 \
+        --preloads 1:601:3 --set physics.profile=seed --plot "$TMP/w2.svg" >"$TMP/w2.txt" 2>"$TMP/err"
+    code $? 0 "--plot of a window that reaches the grid's top at 8000 and 16000 rpm"
+    grep -q '^ *8000 .* 1 \.\. 601$' "$TMP/w2.txt"; t $? "  (the table: 1 .. 601 N at 8000 rpm)"
+    # $S1: the upper limits found; $S3: the grid's top where no limit was met
+    awk '/^\$S1 << EOD/ { b = 1; next } /^\$S3 << EOD/ { b = 3; next } /^EOD/ { b = 0 }
+         b == 1 && $2 == 601 { bad = 1 } b == 3 && $2 == 601 { top++ }
+         END { exit bad || top != 2 }' "$TMP/w.gp"
+    t $? "  601 N (the grid's top) is drawn as 'grid top, no limit', never as the upper limit"
+    grep -q "set xlabel 'inner-ring speed (rpm)'" "$TMP/w.gp" && grep -q "set ylabel 'preload (N)'" "$TMP/w.gp"
+    t $? "  axis labels are words with units"
 else
     skip "--plot FILE.svg" "gnuplot not installed"
 fi

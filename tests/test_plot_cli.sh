@@ -88,8 +88,9 @@ if [ "$plot_wired" -eq 1 ]; then
     has "$TMP/l.svg" "<svg" "l.svg is an SVG"
     has "$TMP/l.svg" "7008C: power losses" "l.svg has the title"
     has "$TMP/l.svg" "power loss (W)" "l.svg y label has the unit"
-    has "$TMP/l.svg" '>spinning P</tspan><tspan font-family="Arial"  font-size="9.6" dy="3.60px">s' \
-        "l.svg legend names the spin loss, P_s with a real subscript"
+    grep -qE '>spinning P</tspan><tspan font-family="sans"  font-size="[0-9.]+" dy="[0-9.]+px">s' \
+        "$TMP/l.svg"
+    t $? "l.svg legend names the spin loss, P_s with a real subscript"
     ! grep -q "P_s" "$TMP/l.svg"
     t $? "no literal P_s in l.svg"
     if command -v xmllint >/dev/null 2>&1; then
@@ -137,6 +138,17 @@ if [ "$plot_wired" -eq 1 ]; then
     code $? 2 "--size 10x5 -> exit 2"
     "$ACBB" plot "$PRESET" --set operating.axial_load_N=abc --dumb 2>"$TMP/err"
     code $? 2 "bad --set -> exit 2"
+    # print sizes (issue 29 item 9): 85 mm at 300 dpi is 1004 px wide
+    "$ACBB" plot "$PRESET" --out "$TMP/p85.png" --size 85mm 2>"$TMP/err"
+    code $? 0 "--size 85mm"
+    [ "$(od -An -tu1 -j16 -N8 "$TMP/p85.png" | tr -s ' ' | sed 's/^ //')" = "0 0 3 236 0 0 2 241" ]
+    t $? "  the PNG is 1004 x 753 px (8.5 x 6.4 cm at 300 dpi)"
+    "$ACBB" plot "$PRESET" --dumb --size column 2>"$TMP/err"
+    code $? 2 "--dumb --size column -> exit 2"
+    has "$TMP/err" "WxH characters" "  the message says the dumb size is characters"
+    "$ACBB" plot "$PRESET" --out "$TMP/q.png" --size 85 2>"$TMP/err"
+    code $? 2 "--size 85 (no unit) -> exit 2"
+    has "$TMP/err" "column (8.5 cm)" "  the message lists the forms"
 
     # ---- a run that stops early still plots its last good state ----
     "$ACBB" plot "$PRESET" --set thermal.max_steps=3 --out "$TMP/m.svg" 2>"$TMP/err"

@@ -68,8 +68,12 @@ if command -v "${ACBB_GNUPLOT:-gnuplot}" >/dev/null 2>&1; then
     t $? "tornado SVG complete"
     grep -q 'surroundings.shaft_bore' "$TMP/t.svg"
     t $? "tornado SVG names the inputs"
+    # issue 29 item 9: the axis says the metric in words with its unit
+    grep -q '>outer ring (seed node 5) temperature (°C)<' "$TMP/t.svg" &&
+        ! grep -q 'temperature_C' "$TMP/t.svg"
+    t $? "tornado axis label is words with the unit, not the JSON path"
 else
-    for c in 1 2 3 4 5 6 7; do skip "tornado check $c" "gnuplot not installed"; done
+    for c in 1 2 3 4 5 6 7 8; do skip "tornado check $c" "gnuplot not installed"; done
 fi
 
 # ---- steady solve by default, --transient on request (issue 16) ----

@@ -120,6 +120,7 @@ const acbb_seed_figure *acbb_seed_figure_table(size_t *n);
 /* ---- series and files ---- */
 
 #define ACBB_FIG_MAX_SERIES 24
+#define ACBB_FIG_MAX_KEY 16
 typedef struct {
     char label[64];
     double *x, *y;               /* malloc'd, n finite points */
@@ -132,6 +133,12 @@ typedef struct {
     acbb_fig_series s[ACBB_FIG_MAX_SERIES];
     int oom;
     char why[640];               /* why a series is missing (a failed run), else "" */
+    /* The key when series differ in two ways (acbb_plot_look): one entry
+     * per load or quantity family (colour and marker) and one per dash
+     * (a trajectory's quantities; a sweep's TE and WTE); n_key 0: one
+     * entry per series. Labels only (no points). */
+    int n_key;
+    acbb_fig_series key[ACBB_FIG_MAX_KEY];
 } acbb_fig_data;
 
 /* The series of one panel (clears `out`). A run that failed leaves its

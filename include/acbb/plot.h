@@ -82,7 +82,10 @@ typedef struct {
     size_t n;
     int color;               /* gnuplot linecolor index 1..; 0: by series order */
     int dash;                /* gnuplot dashtype: 0 or 1 solid, 2 dashed, 3 dotted, ... */
-    int points;              /* lines with points (sweeps) instead of plain lines */
+    int points;              /* 0 lines; 1 lines with markers (about 8 on a dense series);
+                              * 2 markers only. The marker's shape follows the colour
+                              * (eight shapes), filled when solid, open when dashed, so
+                              * families stay apart in grey */
 } acbb_plot_series;
 
 typedef struct {
@@ -90,6 +93,17 @@ typedef struct {
     const acbb_plot_series *series;
     size_t n_series;
 } acbb_plot_xy;
+
+/* A figure's key made of its own entries (issue 29 item 9): when series
+ * differ in two ways (a quantity and a load, TE and WTE), one entry per
+ * value of each (the loads by colour and marker, TE solid and WTE dashed)
+ * instead of one per series. Each entry is drawn as a sample only: label,
+ * color (<= 0: black), dash and points of an acbb_plot_series (x, y, n
+ * unused). With a key the series themselves have no entry. */
+typedef struct {
+    const acbb_plot_series *key;
+    size_t n_key;
+} acbb_plot_look;
 
 /* Write one x-y plot as PNG to `png_path` and as SVG to `svg_path` (either
  * may be NULL, not both), width x height pixels, from ONE gnuplot process:
@@ -99,6 +113,10 @@ typedef struct {
  * has a finite point or a label has a control character. */
 acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
                                const char *svg_path, int width, int height, acbb_error *err);
+/* As acbb_plot_xy_files, with the key of `look` (may be NULL). */
+acbb_status acbb_plot_xy_styled(const acbb_plot_xy *p, const acbb_plot_look *look,
+                                const char *png_path, const char *svg_path, int width,
+                                int height, acbb_error *err);
 
 /* One bar of a tornado chart: the metric at the low and the high end of an
  * input's range (NaN: that end failed and is not drawn). */
@@ -117,6 +135,17 @@ acbb_status acbb_plot_tornado_file(const acbb_tornado_bar *bars, size_t n, doubl
                                    acbb_plot_format fmt, const char *path, int width,
                                    int height, const char *title, const char *xlabel,
                                    acbb_error *err);
+
+/* Figure sizes for print (src/io/plot_size.c). `--size` text: "WxH"
+ * pixels, a width "85mm" / "8.5cm" / "3.3in" (height 3/4 of it) or
+ * "85mmx60mm", or "column" (8.5 x 6.4 cm) and "full" (17.5 x 8.75 cm), the
+ * physical ones at 300 dpi. 0 with *w, *h in pixels, or -1. The range is
+ * acbb_plot_check_size's. */
+int acbb_plot_parse_size(const char *text, int *w, int *h);
+/* The text height (em, pixels) of a figure `width` pixels wide: 8.5 pt
+ * when it is printed 8.5 cm wide (a journal column), at most 9 pt at
+ * 300 dpi (full width), at least 10 px. */
+double acbb_plot_font_px(int width);
 
 /* The gnuplot program to run: $ACBB_GNUPLOT if set, else "gnuplot". */
 const char *acbb_plot_program(void);

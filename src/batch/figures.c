@@ -151,6 +151,22 @@ static void why(acbb_fig_data *d, const char *what, const char *status, const ch
         snprintf(d->why, sizeof d->why, "%s: %s%s%s", what, status, msg[0] ? ": " : "", msg);
 }
 
+/* A key entry: a label and a style, no points. */
+static void key_entry(acbb_fig_data *d, int color, int dash, int points, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+static void key_entry(acbb_fig_data *d, int color, int dash, int points, const char *fmt, ...)
+{
+    if (d->n_key >= ACBB_FIG_MAX_KEY) return;
+    acbb_fig_series *k = &d->key[d->n_key++];
+    *k = (acbb_fig_series){ .color = color, .dash = dash, .points = points };
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(k->label, sizeof k->label, fmt, ap);
+    va_end(ap);
+}
+
+/* Loads by colour and marker (issue 29 item 9: by colour alone 7 of 8
+ * lines looked the same in grey), quantities by dash. */
 static void eval_traj(const acbb_figure_row *row, const acbb_fig_input *in, acbb_fig_data *d)
 {
     int a = row->sel == ACBB_FIG_LARGE ? ACBB_STUDY_NLIGHT : 0;
@@ -167,7 +183,8 @@ static void eval_traj(const acbb_figure_row *row, const acbb_fig_input *in, acbb
                 why(d, what, acbb_status_name(tr->status), tr->message);
                 continue;
             }
-            acbb_fig_series *s = add_series(d, tr->n, k - a + 1, qi + 1, 0, "%s%s%g N",
+            if (row->nq > 1 && qi == 0) key_entry(d, k - a + 1, 1, 1, "%g N", acbb_study_loads[k]);
+            acbb_fig_series *s = add_series(d, tr->n, k - a + 1, qi + 1, 1, "%s%s%g N",
                                             row->nq > 1 ? q->label : "",
                                             row->nq > 1 ? " at " : "", acbb_study_loads[k]);
             for (size_t i = 0; s && i < tr->n; i++) {
@@ -178,6 +195,8 @@ static void eval_traj(const acbb_figure_row *row, const acbb_fig_input *in, acbb
                 put(s, x, q->scale * y);
             }
         }
+    for (int qi = 0; row->nq > 1 && qi < row->nq; qi++)
+        key_entry(d, 0, qi + 1, 0, "%s", row->q[qi].label);
 }
 
 static void eval_sweep(const acbb_figure_row *row, const acbb_fig_input *in, acbb_fig_data *d)
@@ -191,9 +210,15 @@ static void eval_sweep(const acbb_figure_row *row, const acbb_fig_input *in, acb
                 const acbb_study_point *pts = in->runs->sweep[lv][blks[bi]];
                 const double *xs = blks[bi] == ACBB_STUDY_LOAD ? acbb_study_loads
                                                                 : acbb_study_speeds;
+                int fam = 1 + bi * row->nq + qi;
+                if (m == 0 && (both || row->nq > 1))
+                    key_entry(d, fam, 1, 1, "%s%s%s", row->nq > 1 ? row->q[qi].label : "",
+                              !both ? "" : row->nq > 1 ? ", " : "F_x = ",
+                              !both ? "" : bi ? "1000 N" : "100 N");
+                /* a family by colour and marker shape; TE solid and
+                 * filled, WTE dashed and open (issue 29 item 9) */
                 acbb_fig_series *s = add_series(
-                    /* TE and WTE differ in colour, dash and marker (issue 21 item 9) */
-                    d, ACBB_STUDY_NPTS, 1 + 2 * (bi * row->nq + qi) + m, m == ACBB_STUDY_TE ? 1 : 2, 1,
+                    d, ACBB_STUDY_NPTS, fam, m == ACBB_STUDY_TE ? 1 : 2, 1,
                     "%s %s%s", row->q[qi].label, m == ACBB_STUDY_TE ? "TE" : "WTE",
                     !both ? "" : bi ? " at 1000 N" : " at 100 N");
                 for (int k = 0; s && k < ACBB_STUDY_NPTS; k++) {
@@ -205,6 +230,8 @@ static void eval_sweep(const acbb_figure_row *row, const acbb_fig_input *in, acb
                     put(s, xs[k], row->q[qi].scale * row->q[qi].get(&p->last));
                 }
             }
+    key_entry(d, 0, 1, 1, "TE: with expansion");
+    key_entry(d, 0, 2, 1, "WTE: without");
 }
 
 void acbb_figure_eval(const acbb_figure_row *row, const acbb_fig_input *in, acbb_fig_data *out)

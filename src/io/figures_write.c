@@ -49,10 +49,15 @@ static acbb_status write_plot(const acbb_figure_row *row, const acbb_fig_data *d
     for (int i = 0; i < d->n; i++)
         ps[i] = (acbb_plot_series){ d->s[i].label, d->s[i].x, d->s[i].y, d->s[i].n,
                                     d->s[i].color, d->s[i].dash, d->s[i].points };
-    char title[160];
-    snprintf(title, sizeof title, "Seed Fig. %d (%s): %s", row->seed_fig, row->id, row->title);
-    acbb_plot_xy p = { title, row->xlabel, row->ylabel, ps, (size_t)d->n };
-    return acbb_plot_xy_files(&p, png, svg, w, h, err);
+    acbb_plot_series key[ACBB_FIG_MAX_KEY];
+    for (int i = 0; i < d->n_key; i++)
+        key[i] = (acbb_plot_series){ .label = d->key[i].label, .color = d->key[i].color,
+                                     .dash = d->key[i].dash, .points = d->key[i].points };
+    /* The title says what is drawn; the panel's id is its file name and
+     * the seed figure is REPORT.md's (issue 29 item 9). */
+    acbb_plot_xy p = { row->title, row->xlabel, row->ylabel, ps, (size_t)d->n };
+    acbb_plot_look look = { key, (size_t)d->n_key };
+    return acbb_plot_xy_styled(&p, &look, png, svg, w, h, err);
 }
 
 static void summarize(const acbb_fig_data *d, acbb_figure_result *r)

@@ -240,8 +240,30 @@ static void kind_points(const plot_kind_spec *k, const acbb_plot_data *d, key_pt
             key_pts_add(kp, h->p[i].time, k->y_scale * field(&h->p[i], k->s[j].off));
 }
 
+/* Key and axes of a PNG/SVG kind: the key where it covers no data, tic
+ * steps that fit, no negative axis for a positive quantity. The number of
+ * points per series. */
+static size_t print_layout(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d, int w,
+                           int h)
+{
+    key_pts kp = { 0 };
+    kind_points(k, d, &kp);
+    xy_layout L = { .w = w, .h = h, .em = acbb_plot_font_px(w), .title_lines = 1 };
+    axes_range(&L, &kp);
+    double chars = 0;
+    for (int i = 0; i < k->n; i++) { /* the characters shown: a "_" is markup */
+        double c = 0;
+        for (const char *p = k->s[i].label; *p; p++) c += *p != '_';
+        chars = fmax(chars, c);
+    }
+    size_t rows = k->n > 0 ? kp.n / (size_t)k->n : 0;
+    key_place(b, &kp, &L, k->n, chars);
+    axes_emit(b, &L);
+    return rows;
+}
+
 static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d,
-                            bool dumb)
+                            bool dumb, int w, int h)
 {
     char title[640];
     /* The dumb terminal cannot rotate text and drops the y label, so there
@@ -258,26 +280,22 @@ static void labels_and_plot(sbuf *b, const plot_kind_spec *k, const acbb_plot_da
     if (dumb) sb_quoted(b, k->ylabel);
     else sb_label(b, k->ylabel);
     sb_printf(b, "\nset grid\n");
-    if (!dumb) {
-        key_pts kp = { 0 };
-        kind_points(k, d, &kp);
-        key_corner(b, &kp, k->n);
-    }
-    /* The balls are few and discrete; the history is a dense time series. */
-    static const int pt[4] = { 7, 5, 9, 13 };
+    size_t rows = 0;
+    if (!dumb) /* the key clear of the data, axes for print (plot_axes.c) */
+        rows = print_layout(b, k, d, w, h);
     sb_printf(b, "plot ");
     for (int i = 0; i < k->n; i++) {
-        if (dumb) /* text: one character per series already */
-            sb_printf(b, "%s$D using 1:%d with %s linewidth 2 title ", i ? ", " : "", i + 2,
-                      k->per_ball ? "linespoints pointtype 7" : "lines");
-        else if (k->per_ball)
-            sb_printf(b, "%s$D using 1:%d with linespoints pointtype %d linewidth 2 "
-                         "dashtype %d title ", i ? ", " : "", i + 2, pt[i % 4], 1 + i % 2);
-        else
-            sb_printf(b, "%s$D using 1:%d with lines linewidth 2 dashtype %d title ", i ? ", " : "",
-                      i + 2, 1 + i % 5);
-        if (dumb) sb_quoted(b, k->s[i].label);
-        else sb_label(b, k->s[i].label);
+        sb_printf(b, "%s$D using 1:%d ", i ? ", " : "", i + 2);
+        if (dumb) { /* text: one character per series already */
+            sb_printf(b, "with %s linewidth 2 title ", k->per_ball ? "linespoints pointtype 7" : "lines");
+            sb_quoted(b, k->s[i].label);
+            continue;
+        }
+        /* each series its colour, dash and marker: apart in grey too */
+        acbb_plot_series st = { k->s[i].label, NULL, NULL, rows, i + 1, 1 + i % 5, 1 };
+        series_style(b, &st, rows);
+        sb_printf(b, "title ");
+        sb_label(b, k->s[i].label);
     }
     sb_printf(b, "\n");
 }
@@ -338,11 +356,11 @@ static acbb_status check_data(acbb_plot_kind kind, const acbb_plot_data *d,
 
 /* The script after the terminal/output lines; EINVAL if no row is finite. */
 static acbb_status script_body(sbuf *b, const plot_kind_spec *k, const acbb_plot_data *d,
-                               bool dumb, acbb_error *err)
+                               bool dumb, int w, int h, acbb_error *err)
 {
     if (datablock(b, k, d) == 0)
         return acbb_error_set(err, ACBB_EINVAL, "%s plot: no finite data to plot", k->name);
-    labels_and_plot(b, k, d, dumb);
+    labels_and_plot(b, k, d, dumb, w, h);
     /* `set output` with no file closes (and so completes) the image. */
     sb_printf(b, "set output\nexit\n");
     if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
@@ -355,10 +373,15 @@ void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
 {
     /* UTF-8 labels (Greek, degree sign: plot_markup.c); enhanced text
      * only where a plot writes marked-up labels, user text noenhanced. */
+    /* Text for print (plot_size.c): pngcairo takes points at 96 dpi, svg
+     * takes the em in its pixels; lines and markers grow with the text. */
+    double em = acbb_plot_font_px(w), lw = em / 16.0;
     if (fmt == ACBB_PLOT_PNG)
-        sb_printf(b, "set encoding utf8\nset terminal pngcairo enhanced size %d,%d\n", w, h);
+        sb_printf(b, "set encoding utf8\nset terminal pngcairo enhanced size %d,%d "
+                     "font 'sans,%.1f' linewidth %.2f\n", w, h, 0.75 * em, lw);
     else if (fmt == ACBB_PLOT_SVG)
-        sb_printf(b, "set encoding utf8\nset terminal svg enhanced size %d,%d\n", w, h);
+        sb_printf(b, "set encoding utf8\nset terminal svg enhanced size %d,%d "
+                     "font 'sans,%.1f' linewidth %.2f\n", w, h, em, lw);
     else
         sb_printf(b, "set terminal dumb nofeed size %d,%d\n", w, h);
     if (fmt == ACBB_PLOT_DUMB) {
@@ -371,6 +394,7 @@ void terminal_line(sbuf *b, acbb_plot_format fmt, int w, int h)
     static const char *const rgb[8] = { "#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                         "#E69F00", "#56B4E9", "#000000", "#999999" };
     for (int i = 0; i < 8; i++) sb_printf(b, "set linetype %d linecolor rgb '%s'\n", i + 1, rgb[i]);
+    sb_printf(b, "set pointsize %.2f\n", em / 20.0);
     sb_printf(b, "set linetype cycle 8\n");
 }
 
@@ -437,7 +461,7 @@ acbb_status acbb_plot_file(acbb_plot_kind kind, acbb_plot_format fmt, const char
 
     sbuf b = { 0 };
     terminal_line(&b, fmt, width, height);
-    st = script_body(&b, k, d, false, err);
+    st = script_body(&b, k, d, false, width, height, err);
     if (st == ACBB_OK) st = render_file(&b, fmt, path, err);
     free(b.p);
     return st;
@@ -465,7 +489,7 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
     if ((st = acbb_plot_check_size(ACBB_PLOT_DUMB, cols, rows, err))) return st;
     sbuf b = { 0 };
     terminal_line(&b, ACBB_PLOT_DUMB, cols, rows);
-    st = script_body(&b, k, d, true, err);
+    st = script_body(&b, k, d, true, cols, rows, err);
     gp_io io = { .out = text, .out_cap = text_len };
     if (st == ACBB_OK) st = run_gnuplot(&b, &io, err);
     if (st != ACBB_OK) text[0] = '\0';
@@ -510,6 +534,9 @@ static size_t accuracy_block(sbuf *b, const acbb_accuracy_row *rows, size_t n, i
     return count;
 }
 
+/* a marker shape per knob (apart in grey) */
+static const int k_marks[8] = { 7, 5, 9, 11, 13, 15, 1, 2 };
+
 static acbb_status accuracy_script(sbuf *b, const acbb_accuracy_row *rows, size_t n,
                                    const char *title, acbb_error *err)
 {
@@ -523,28 +550,27 @@ static acbb_status accuracy_script(sbuf *b, const acbb_accuracy_row *rows, size_
     if (total == 0)
         return acbb_error_set(err, ACBB_EINVAL, "accuracy plot: no converged setting to plot");
     char t[640];
-    snprintf(t, sizeof t, "%s%serror vs wall time, one [fidelity] knob at a time",
-             title && title[0] ? title : "", title && title[0] ? ": " : "");
+    snprintf(t, sizeof t, "%s%smax(loss, T-rise error) vs wall time, one knob at a time, "
+             "floor %g %%",
+             title && title[0] ? title : "", title && title[0] ? ": " : "", ACC_FLOOR_PCT);
     sb_printf(b, "set title ");
     sb_quoted(b, t);
     sb_printf(b, "\nset xlabel 'median wall time per run (ms)'\n");
-    sb_printf(b, "set ylabel 'max(loss error, T-rise error) vs the knob reference (%%), "
-                 "floor %g %%'\n", ACC_FLOOR_PCT);
+    /* short enough for the plot's height at print size; the title and
+     * BENCHMARKS.md say what the error is and its floor */
+    sb_printf(b, "set ylabel 'error vs the reference (%%)'\n");
     sb_printf(b, "set logscale xy\nset grid\nset format y '%%g'\nset termoption noenhanced\n");
-    key_pts kp = { 0 }; /* the key's corner on the log axes */
-    for (size_t i = 0; i < n; i++) {
-        double y = accuracy_error_pct(&rows[i]);
-        if (rows[i].wall_ms > 0.0 && y > 0.0) key_pts_add(&kp, log10(rows[i].wall_ms), log10(y));
-    }
-    key_corner(b, &kp, ACBB_KNOB_COUNT);
+    /* the knobs' points spread over the whole plot and carry labels: the
+     * key beside it, where it covers nothing (issue 29 item 9) */
+    sb_printf(b, "set key outside right top vertical samplen 2.5\n");
     sb_printf(b, "set arrow from graph 0, first %g to graph 1, first %g nohead dashtype 2\n",
               100.0 * ACBB_ACCURACY_FRONTIER_TOL, 100.0 * ACBB_ACCURACY_FRONTIER_TOL);
     sb_printf(b, "plot ");
     bool first = true;
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
         if (!used[k]) continue;
-        sb_printf(b, "%s$K%d using 1:2 with linespoints pointtype 7 linecolor %d title ",
-                  first ? "" : ", ", k, k + 1);
+        sb_printf(b, "%s$K%d using 1:2 with linespoints linewidth 2 pointtype %d dashtype %d "
+                  "linecolor %d title ", first ? "" : ", ", k, k_marks[k % 8], 1 + k % 5, k + 1);
         sb_quoted(b, acbb_accuracy_knob_name((acbb_accuracy_knob)k));
         sb_printf(b, ", $K%d using 1:2:3 with labels offset char 0.6,0.6 left "
                      "textcolor lt %d notitle", k, k + 1);
@@ -631,8 +657,8 @@ static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t 
     sb_quoted(b, title && title[0] ? title : "sensitivity, one input at a time");
     sb_printf(b, "\nset xlabel ");
     sb_quoted(b, xlabel && xlabel[0] ? xlabel : "metric");
-    sb_printf(b, "\nset ytics nomirror font ',8'\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
-    sb_printf(b, "set style fill solid 0.6 border -1\nset key below\nset termoption noenhanced\n");
+    sb_printf(b, "\nset ytics nomirror\nset grid xtics\nset yrange [0.3:%zu.7]\n", n);
+    sb_printf(b, "set style fill solid 0.6 border -1\nset key outside top center horizontal maxrows 1\nset termoption noenhanced\n");
     /* dashed: the scene's value; solid: zero, where the metric changes
      * sign (drawn only when a bar reaches it) */
     double lo = base, hi = base;
@@ -645,9 +671,9 @@ static acbb_status tornado_script(sbuf *b, const acbb_tornado_bar *bars, size_t 
         sb_printf(b, "set arrow from 0, graph 0 to 0, graph 1 nohead linewidth 2 "
                      "linecolor 'black'\n");
     sb_printf(b, "plot $T using (($2+$3)/2):1:(($3<$2)?$3:$2):(($3<$2)?$2:$3):($1-0.35):($1+0.35)"
-                 ":ytic(5) with boxxyerror linecolor 1 title 'low end of the plausible range', "
+                 ":ytic(5) with boxxyerror linecolor 1 title 'low end of the range', "
                  "$T using (($2+$4)/2):1:(($4<$2)?$4:$2):(($4<$2)?$2:$4):($1-0.35):($1+0.35) "
-                 "with boxxyerror linecolor 2 title 'high end'\n");
+                 "with boxxyerror linecolor 2 title 'high end of the range'\n");
     sb_printf(b, "set output\nexit\n");
     if (b->oom) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
     return ACBB_OK;

@@ -1,10 +1,7 @@
-/* acbb — the key (legend) inside the plot where it covers the least data
- * (issue 21 item 9): outside it took a quarter to a third of the width.
- * Of the four corners, the one whose box (40 % of the width, 30 % of the
- * height of the data's range) holds the fewest points; the key is opaque,
- * so a point it still covers is hidden rather than drawn through text;
- * with data in all four, the y range grows on the key's side by what
- * its rows need (at least 30 %). */
+/* acbb — the key (legend) where it covers no data (issue 21 item 9, issue
+ * 29 item 9): inside a corner whose box, sized from the text, holds no
+ * point; else the y axis raised until a band at the top is free; else
+ * below the plot. */
 #include <math.h>
 #include <stdlib.h>
 #include "plot_priv.h"
@@ -26,32 +23,81 @@ void key_pts_add(key_pts *k, double x, double y)
     k->y[k->n++] = y;
 }
 
-void key_corner(sbuf *b, key_pts *k, int entries)
+/* ---- the x-y figures' key (issue 29 item 9) ----
+ * The key's box from the text size (a row 1.45 em, a character 0.6 em,
+ * the sample and margins 4.5 em, and 6 % of the plot around it: gnuplot's
+ * own box measured on the seed figures), as fractions of the plot area. */
+#define KEY_ROW_EM 1.45
+#define KEY_CHAR_EM 0.6
+#define KEY_PAD_EM 4.5
+#define KEY_MARGIN 0.06
+
+static size_t in_box(const key_pts *k, const xy_layout *L, int corner, double fw, double fh)
+{
+    size_t n = 0;
+    double wx = L->gx1 - L->gx0, wy = L->gy1 - L->gy0;
+    for (size_t i = 0; i < k->n; i++) {
+        double u = (k->x[i] - L->gx0) / wx, v = (k->y[i] - L->gy0) / wy;
+        bool right = u >= 1.0 - fw - KEY_MARGIN, left = u <= fw + KEY_MARGIN;
+        bool top = v >= 1.0 - fh - KEY_MARGIN, bottom = v <= fh + KEY_MARGIN;
+        n += corner == 0 ? top && right : corner == 1 ? top && left
+           : corner == 2 ? bottom && right : bottom && left;
+    }
+    return n;
+}
+
+/* A key of `cols` columns: its box as fractions of the plot area. */
+static void key_box(const xy_layout *L, int entries, double chars, int cols, double *fw,
+                    double *fh)
+{
+    int rows = (entries + cols - 1) / cols;
+    *fw = cols * (chars * KEY_CHAR_EM + KEY_PAD_EM) * L->em / L->plot_w;
+    *fh = (rows * KEY_ROW_EM + 0.8) * L->em / L->plot_h;
+}
+
+/* A free corner for a key of 1..3 columns: the corner (0..3), or -1. */
+static int free_corner(const key_pts *k, const xy_layout *L, int entries, double chars,
+                       int *cols)
+{
+    for (*cols = 1; *cols <= 3; (*cols)++) {
+        double fw, fh;
+        key_box(L, entries, chars, *cols, &fw, &fh);
+        for (int c = 0; c < 4 && fw < 0.95 && fh < 0.95; c++)
+            if (in_box(k, L, c, fw, fh) == 0) return c;
+    }
+    return -1;
+}
+
+void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars)
 {
     static const char *const where[4] = { "top right", "top left", "bottom right", "bottom left" };
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (size_t i = 0; i < k->n; i++) {
-        x0 = fmin(x0, k->x[i]), x1 = fmax(x1, k->x[i]);
-        y0 = fmin(y0, k->y[i]), y1 = fmax(y1, k->y[i]);
-    }
-    size_t count[4] = { 0, 0, 0, 0 };
-    double wx = x1 > x0 ? x1 - x0 : 1.0, wy = y1 > y0 ? y1 - y0 : 1.0;
-    for (size_t i = 0; i < k->n; i++) {
-        double u = (k->x[i] - x0) / wx, v = (k->y[i] - y0) / wy;
-        int right = u >= 0.6, left = u <= 0.4, top = v >= 0.7, bottom = v <= 0.3;
-        count[0] += top && right;
-        count[1] += top && left;
-        count[2] += bottom && right;
-        count[3] += bottom && left;
-    }
-    int best = 0;
-    for (int c = 1; c < 4; c++)
-        if (count[c] < count[best]) best = c;
-    sb_printf(b, "set key inside %s opaque box samplen 2\n", where[best]);
-    /* Data in every corner: room above (or below) the data for the key. */
-    if (count[best] > 0) { /* about a twentieth of the height per key row */
-        double room = fmin(1.0, fmax(0.3, 0.06 * entries));
-        sb_printf(b, best < 2 ? "set offsets 0, 0, graph %g, 0\n" : "set offsets 0, 0, 0, graph %g\n", room);
+    static const char style[] = "opaque nobox samplen 2.5 spacing 1.1 height 0.8";
+    int cols = 1, c = free_corner(k, L, entries, chars, &cols);
+    double fw = 1.0, fh = 1.0;
+    if (c < 0) /* the fewest columns whose rows fit a band at the top */
+        for (cols = 1; cols <= 3; cols++) {
+            key_box(L, entries, chars, cols, &fw, &fh);
+            if (fw < 0.95 && fh <= 0.6) break;
+        }
+    int rows = (entries + cols - 1) / cols;
+    if (c >= 0) {
+        sb_printf(b, "set key inside %s %s maxrows %d\n", where[c], style, rows);
+    } else if (cols <= 3) {
+        /* raise the y axis until the data stay below the key's band */
+        axes_fit_y(L, L->gy0 + (L->y1 - L->gy0) / (1.0 - fh - 2.0 * KEY_MARGIN));
+        sb_printf(b, "set key inside top right %s maxrows %d\n", style, rows);
+    } else { /* below the plot, as many columns as fit */
+        /* below, a column needs the label and sample only (the width
+         * taken back below) */
+        cols = (int)(L->w / ((chars * 0.55 + 2.5) * L->em));
+        cols = cols < 1 ? 1 : cols;
+        rows = (entries + cols - 1) / cols;
+        L->plot_h -= (rows * KEY_ROW_EM + 1.0) * L->em;
+        axes_fit_y(L, L->y1);
+        /* gnuplot sizes a column by the bytes of its enhanced-text label
+         * (markup, UTF-8): with several columns, take back what that adds */
+        sb_printf(b, "set key outside below center horizontal nobox samplen 2.5 width %d "
+                     "maxcols %d\n", cols > 1 ? -4 : 0, cols);
     }
     free(k->x);
     free(k->y);

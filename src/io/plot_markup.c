@@ -64,6 +64,13 @@ void plot_markup(const char *plain, char *out, size_t n)
             put(&o, p + 1, k - 1);
             put(&o, "}", 1);
             p += k;
+            /* gnuplot's SVG puts the text after a subscript in its own
+             * tspan, whose leading space a renderer drops ("P_tTE"): a
+             * no-break space survives. */
+            if (*p == ' ') {
+                put(&o, "\u00a0", strlen("\u00a0"));
+                p++;
+            }
         } else {
             if (strchr("^_{}@&~\\", *p)) put(&o, "\\", 1); /* a literal, not markup */
             put(&o, p, 1);

@@ -17,8 +17,14 @@
 #define terminal_line acbb_plot_terminal_line
 #define image_complete acbb_plot_image_complete
 #define plot_markup acbb_plot_markup
-#define key_corner acbb_plot_key_corner
 #define key_pts_add acbb_plot_key_pts_add
+#define key_place acbb_plot_key_place
+#define axes_range acbb_plot_axes_range
+#define axes_emit acbb_plot_axes_emit
+#define axes_fit_y acbb_plot_axes_fit_y
+#define title_lines acbb_plot_title_lines
+#define nice_step acbb_plot_nice_step
+#define series_style acbb_plot_series_style
 
 /* A growing NUL-terminated script; oom latches the first failed growth. */
 typedef struct {
@@ -59,9 +65,36 @@ typedef struct {
     size_t n, cap;
 } key_pts;
 void key_pts_add(key_pts *k, double x, double y);
-/* The `set key` line for the corner of the plot area that holds the
- * fewest points (inside, opaque) for a key of `entries` rows; frees k's
- * arrays. */
-void key_corner(sbuf *b, key_pts *k, int entries);
+
+/* The layout of an x-y figure (plot_axes.c), in pixels of the image. */
+typedef struct {
+    int w, h;                /* the image */
+    double em;               /* text height, acbb_plot_font_px(w) */
+    int title_lines;
+    double x0, x1, y0, y1;   /* the data's range */
+    double xs, ys;           /* tic steps */
+    double gx0, gx1, gy0, gy1; /* the axes: whole steps around the data */
+    double plot_w, plot_h;   /* the plot area, estimated */
+    int ychars;              /* the widest y tic label */
+} xy_layout;
+/* Steps and ranges of both axes from the points drawn (w, h, em and
+ * title_lines set). */
+void axes_range(xy_layout *L, const key_pts *k);
+/* The y step and range again for [y0, max(y1, top)] over plot_h. */
+void axes_fit_y(xy_layout *L, double top);
+/* `set xrange`, `set yrange`, `set xtics`, `set ytics`. */
+void axes_emit(sbuf *b, const xy_layout *L);
+/* The smallest 1-2-5 step that spans [lo, hi] with at most max_tics tics. */
+double nice_step(double lo, double hi, int max_tics);
+/* `text` broken at spaces into at most 3 lines of about per_line chars. */
+int title_lines(const char *text, double per_line, char lines[3][160]);
+/* "with ... linewidth 2 dashtype D linecolor C pointtype P pointinterval I "
+ * for series s of n points (plot_xy.c): markers by colour, filled when
+ * solid, open when dashed, about eight on a dense series. */
+void series_style(sbuf *b, const acbb_plot_series *s, size_t n);
+/* The key of `entries` rows `chars` wide where it covers no point of k:
+ * a free corner inside; else the y axis raised until a top band is free
+ * (L->gy1, L->ys change); else outside below the plot. Frees k. */
+void key_place(sbuf *b, key_pts *k, xy_layout *L, int entries, double chars);
 
 #endif

@@ -50,40 +50,115 @@ static void xy_label(sbuf *b, const char *cmd, const char *plain)
     sb_printf(b, "\n");
 }
 
-/* Each series: its colour (the palette of terminal_line), its dash, and
- * with points a filled marker for solid lines and an open one for dashed
- * (TE solid and filled, WTE dashed and open in the seed figures), so two
- * overlapping curves differ in three ways. */
-static void xy_plot(sbuf *b, const acbb_plot_xy *p, const bool *drawn)
+/* The characters a label shows (a Greek name is one, markup none). */
+static double shown_chars(const char *plain)
 {
-    static const int filled[4] = { 7, 5, 9, 13 }, open[4] = { 6, 4, 8, 12 };
-    if (p->title && p->title[0]) xy_label(b, "set title ", p->title);
+    char m[256];
+    double n = 0;
+    plot_markup(plain ? plain : "", m, sizeof m);
+    for (const unsigned char *c = (const unsigned char *)m; *c; c++)
+        n += (*c & 0xc0) != 0x80 && !strchr("_{}\\", *c);
+    return n;
+}
+
+/* The title broken into lines that fit the width (issue 29 item 9: at
+ * print size a one-line title was cut); lines joined by "\n" in gnuplot's
+ * string concatenation. Returns the number of lines. */
+static int xy_title(sbuf *b, const char *title, const xy_layout *L)
+{
+    char lines[3][160];
+    if (!title || !title[0]) return 0;
+    int n = title_lines(title, L->w / (0.55 * L->em) - 4.0, lines);
+    sb_printf(b, "set title ");
+    for (int i = 0; i < n; i++) {
+        char m[256];
+        plot_markup(lines[i], m, sizeof m);
+        if (i) sb_printf(b, ".\"\\n\".");
+        sb_quoted(b, m);
+    }
+    sb_printf(b, "\n");
+    return n;
+}
+
+/* Markers by colour: eight shapes, filled for solid lines and open for
+ * dashed ones (TE solid and filled, WTE dashed and open), so two curves
+ * differ in colour, dash and marker and survive grey print. */
+void series_style(sbuf *b, const acbb_plot_series *s, size_t n)
+{
+    static const int filled[8] = { 7, 5, 9, 11, 13, 15, 1, 3 },
+                     open[8] = { 6, 4, 8, 10, 12, 14, 2, 3 };
+    int dash = s->dash > 0 ? s->dash : 1;
+    int c = s->color > 0 ? s->color : 0;
+    const char *with = s->points == 2 ? "points" : s->points ? "linespoints" : "lines";
+    sb_printf(b, "with %s linewidth 2 dashtype %d ", with, dash);
+    if (c > 0) sb_printf(b, "linecolor %d ", c);
+    else sb_printf(b, "linecolor rgb '#000000' ");
+    if (s->points)
+        sb_printf(b, "pointtype %d pointinterval %zu ", (dash > 1 ? open : filled)[(c > 0 ? c - 1 : 0) % 8],
+                  n > 16 ? (n + 7) / 8 : 1);
+}
+
+/* The points a key must not cover: the data and, between two points of a
+ * line, eight more along the segment. */
+static void xy_points(key_pts *kp, const acbb_plot_xy *p, const bool *drawn)
+{
+    for (size_t k = 0; k < p->n_series; k++) {
+        const acbb_plot_series *s = &p->series[k];
+        double px = NAN, py = NAN;
+        for (size_t i = 0; drawn[k] && i < s->n; i++) {
+            if (!isfinite(s->x[i]) || !isfinite(s->y[i])) continue;
+            for (int j = 1; s->points != 2 && isfinite(px) && j < 8; j++)
+                key_pts_add(kp, px + (s->x[i] - px) * j / 8.0, py + (s->y[i] - py) * j / 8.0);
+            key_pts_add(kp, px = s->x[i], py = s->y[i]);
+        }
+    }
+}
+
+static void xy_plot(sbuf *b, const acbb_plot_xy *p, const acbb_plot_look *look,
+                    const bool *drawn, int w, int h)
+{
+    xy_layout L = { .w = w, .h = h, .em = acbb_plot_font_px(w) };
+    L.title_lines = xy_title(b, p->title, &L);
     xy_label(b, "set xlabel ", p->xlabel);
     xy_label(b, "set ylabel ", p->ylabel);
     sb_printf(b, "set grid\n");
     key_pts kp = { 0 };
-    for (size_t k = 0; k < p->n_series; k++)
-        for (size_t i = 0; drawn[k] && i < p->series[k].n; i++)
-            key_pts_add(&kp, p->series[k].x[i], p->series[k].y[i]);
+    xy_points(&kp, p, drawn);
+    axes_range(&L, &kp);
+    bool own = look && look->n_key > 0;
     int entries = 0;
-    for (size_t k = 0; k < p->n_series; k++) entries += drawn[k];
-    key_corner(b, &kp, entries);
+    double chars = 0;
+    for (size_t k = 0; k < (own ? look->n_key : p->n_series); k++) {
+        if (!own && !drawn[k]) continue;
+        entries++;
+        chars = fmax(chars, shown_chars(own ? look->key[k].label : p->series[k].label));
+    }
+    key_place(b, &kp, &L, entries, chars);
+    axes_emit(b, &L);
     sb_printf(b, "plot ");
     bool first = true;
     for (size_t k = 0; k < p->n_series; k++) {
         const acbb_plot_series *s = &p->series[k];
         if (!drawn[k]) continue;
-        int dash = s->dash > 0 ? s->dash : 1;
-        char style[64] = "lines";
-        if (s->points)
-            snprintf(style, sizeof style, "linespoints pointtype %d pointsize 0.9",
-                     (dash > 1 ? open : filled)[k % 4]);
-        sb_printf(b, "%s$S%zu using 1:2 with %s linewidth 2 linecolor %d dashtype %d title ",
-                  first ? "" : ", ", k, style, s->color > 0 ? s->color : (int)k + 1, dash);
+        sb_printf(b, "%s$S%zu using 1:2 ", first ? "" : ", ", k);
+        series_style(b, s, s->n);
+        first = false;
+        if (own) {
+            sb_printf(b, "notitle");
+            continue;
+        }
         char m[256];
         plot_markup(s->label ? s->label : "", m, sizeof m);
+        sb_printf(b, "title ");
         sb_quoted(b, m);
-        first = false;
+    }
+    for (size_t k = 0; own && k < look->n_key; k++) {
+        char m[256];
+        sb_printf(b, ", keyentry ");
+        series_style(b, &look->key[k], 1);
+        plot_markup(look->key[k].label ? look->key[k].label : "", m, sizeof m);
+        sb_printf(b, "title ");
+        sb_quoted(b, m);
     }
     sb_printf(b, "\n");
 }
@@ -105,8 +180,8 @@ static acbb_status xy_check(const acbb_plot_xy *p, const char *png, const char *
 }
 
 /* The whole script: data once, then one terminal + output + plot per format. */
-static acbb_status xy_script(sbuf *b, const acbb_plot_xy *p, const bool want[2], int w, int h,
-                             acbb_error *err)
+static acbb_status xy_script(sbuf *b, const acbb_plot_xy *p, const acbb_plot_look *look,
+                             const bool want[2], int w, int h, acbb_error *err)
 {
     bool *drawn = calloc(p->n_series, sizeof *drawn);
     if (!drawn) return acbb_error_set(err, ACBB_ENOMEM, "out of memory building the plot");
@@ -115,7 +190,7 @@ static acbb_status xy_script(sbuf *b, const acbb_plot_xy *p, const bool want[2],
         if (!want[f]) continue;
         terminal_line(b, f == 0 ? ACBB_PLOT_PNG : ACBB_PLOT_SVG, w, h);
         sb_printf(b, "set output '/dev/fd/%d'\n", fd++);
-        xy_plot(b, p, drawn);
+        xy_plot(b, p, look, drawn, w, h);
         /* `set output` with no file closes (and so completes) the image. */
         sb_printf(b, "set output\n");
     }
@@ -157,16 +232,26 @@ static acbb_status xy_render(const sbuf *b, const char *paths[2], acbb_error *er
     return st;
 }
 
-acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
-                               const char *svg_path, int width, int height, acbb_error *err)
+acbb_status acbb_plot_xy_styled(const acbb_plot_xy *p, const acbb_plot_look *look,
+                                const char *png_path, const char *svg_path, int width,
+                                int height, acbb_error *err)
 {
     acbb_status st = xy_check(p, png_path, svg_path, width, height, err);
     if (st != ACBB_OK) return st;
+    for (size_t k = 0; look && k < look->n_key; k++)
+        if (look->key[k].label && has_control_char(look->key[k].label))
+            return acbb_error_set(err, ACBB_EINVAL, "x-y plot: a key label has a control character");
     const char *paths[2] = { png_path, svg_path };
     bool want[2] = { png_path != NULL, svg_path != NULL };
     sbuf b = { 0 };
-    st = xy_script(&b, p, want, width, height, err);
+    st = xy_script(&b, p, look, want, width, height, err);
     if (st == ACBB_OK) st = xy_render(&b, paths, err);
     free(b.p);
     return st;
+}
+
+acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
+                               const char *svg_path, int width, int height, acbb_error *err)
+{
+    return acbb_plot_xy_styled(p, NULL, png_path, svg_path, width, height, err);
 }
