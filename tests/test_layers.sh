@@ -118,10 +118,10 @@ check "no client calls acbb_sim_step (the one run loop is acbb_sim_drive)" "$ste
     "${clients[@]}"
 check "no engine file but src/run/sim.c calls acbb_sim_step" "$step" "${others[@]}"
 check "the engine does not include ncurses" "$curses" "${engine[@]}"
-# src/io/outfile.c alone may name stdout: the atomic writer's "-" target is
+# src/base/outfile.c alone may name stdout: the atomic writer's "-" target is
 # the caller's stdout (outfile.h); it writes only what a client hands it.
 quiet=()
-for f in "${engine[@]}"; do [ "$f" = src/io/outfile.c ] || quiet+=("$f"); done
+for f in "${engine[@]}"; do [ "$f" = src/base/outfile.c ] || quiet+=("$f"); done
 check "the engine does not print (printf, puts, stdout/stderr, fd 1/2; outfile.c's \"-\" aside)" \
     "$print" "${quiet[@]}"
 
