@@ -53,6 +53,11 @@ def home(obj, ranks):
     return 'client', obj[:-2] if obj.endswith('.o') else obj
 
 
+def floor(where, ranks):
+    """The rank of a (folder, file); a client ranks above every folder."""
+    return ranks.get(where[0], max(ranks.values()) + 1)
+
+
 def reach(edges, nodes):
     """For each node, the set of nodes it reaches (6 folders: closure)."""
     out = {a: set(edges[a]) for a in nodes}
@@ -81,7 +86,11 @@ def check(text, ranks):
         if typ == 'U':
             refs[where].add(sym)
         else:
-            defs.setdefault(sym, where)
+            # a weak or common symbol may be defined in several objects:
+            # keep the lowest (the engine's below any client's)
+            old = defs.get(sym)
+            if old is None or floor(where, ranks) < floor(old, ranks):
+                defs[sym] = where
     edges = defaultdict(dict)   # folder -> {folder: an example reference}
     for (d, f), syms in refs.items():
         if d not in ranks:

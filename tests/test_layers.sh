@@ -237,6 +237,10 @@ t $? "symbols scanner: a cycle (physics calls scene, scene calls physics)"
 t $? "symbols scanner: the engine calls a client symbol"
 [ "$(inject 'lib.a[src_gui_x.c.o]: acbb_x T 0 10')" = "unmapped: src_gui_x.c.o" ]
 t $? "symbols scanner: an object of no ranked folder"
+[ -z "$(inject 'lib.a[src_batch_fp.c.o]: acbb_w W 0 1
+lib.a[src_base_status.c.o]: acbb_w W 0 1
+lib.a[src_physics_net.c.o]: acbb_w U')" ]
+t $? "symbols scanner: a weak symbol defined in two floors counts as the lower one's"
 if [ -n "$LIB" ] && [ -n "$EXE" ]; then
     found=$(layer_symbols "$LIB" "$EXE" 2>"$TMP/count")
     rc=$?
