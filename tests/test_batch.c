@@ -343,7 +343,7 @@ static void test_modes(void)
 int main(void)
 {
     /* No gsl_set_error_handler_off here: the engine turns GSL's aborting
-     * handler off itself while it works (src/physics/gsl_quiet.h). */
+     * handler off itself while it works (src/base/gsl_quiet.h). */
     acbb_scene base = load("presets/7008C.ini");
     acbb_error err = { { 0 } };
     if (acbb_scene_set(&base, "fidelity.model", "quasi-static", &err) != ACBB_OK) {

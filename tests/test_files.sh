@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Writes never destroy (issue "Nothing lost"): every file acbb writes goes
-# through one atomic path (src/io/outfile.c); plots reach gnuplot with no file
+# through one atomic path (src/base/outfile.c); plots reach gnuplot with no file
 # name in its script. $1 = the acbb binary.
 . "$(dirname "$0")/tap.sh"
 ACBB=$1

@@ -2,7 +2,7 @@
  *
  * GSL's handler is process-wide and its default aborts. The library turns
  * it off only while one of its calls works and puts the host's back after
- * (src/physics/gsl_quiet.h). Checked here from the host's side:
+ * (src/base/gsl_quiet.h). Checked here from the host's side:
  * - with GSL's default (aborting) handler restored, a library call whose
  *   root bracket fails inside GSL (acbb_nu100_from_vi with a NaN viscosity
  *   index: gsl_root_fsolver_set meets a NaN end, GSL_EBADFUNC) returns NaN

@@ -8,10 +8,15 @@
 # (4) no engine message names a CLI flag (--set, --grid, ...): the TUI shows
 # the same messages. Comments are blanked first (and, for 1-2, string
 # literals), so prose that names a function does not count; every hit is
-# reported as file:line.
-# Run from the source root (meson's workdir); optional $1: another root.
+# reported as file:line; (5) src/ folders include only their own or lower
+# folders' internal headers; (6) the same order on symbols: what each built
+# object references against what the others define (layer_symbols.py).
+# usage: test_layers.sh [ROOT [LIB EXE]]: ROOT the source root (default:
+# this script's); LIB, EXE the built libacbb.a and acbb (meson passes them;
+# without them (6) checks its own scanner only).
 set -u
 cd "${1:-$(dirname "$0")/..}" || exit 1
+LIB=${2:-} EXE=${3:-}
 . tests/tap.sh
 
 # strip_all DIR KEEP FILE...: each FILE with comments (and, KEEP=0, string
@@ -118,10 +123,10 @@ check "no client calls acbb_sim_step (the one run loop is acbb_sim_drive)" "$ste
     "${clients[@]}"
 check "no engine file but src/run/sim.c calls acbb_sim_step" "$step" "${others[@]}"
 check "the engine does not include ncurses" "$curses" "${engine[@]}"
-# src/io/outfile.c alone may name stdout: the atomic writer's "-" target is
+# src/base/outfile.c alone may name stdout: the atomic writer's "-" target is
 # the caller's stdout (outfile.h); it writes only what a client hands it.
 quiet=()
-for f in "${engine[@]}"; do [ "$f" = src/io/outfile.c ] || quiet+=("$f"); done
+for f in "${engine[@]}"; do [ "$f" = src/base/outfile.c ] || quiet+=("$f"); done
 check "the engine does not print (printf, puts, stdout/stderr, fd 1/2; outfile.c's \"-\" aside)" \
     "$print" "${quiet[@]}"
 
@@ -194,5 +199,58 @@ done
 [ -z "$bad_layer" ]
 t $? "src/ layers include only headers of their own or lower layers (base < physics < scene < run < batch < io)"
 [ -z "$bad_layer" ] || printf '%s' "$bad_layer" | sed 's/^/#   /'
+
+# (6) The order on calls: an include of a public header (acbb/status.h,
+# acbb/scene.h) crosses folders unseen by (5), a call through it leaves an
+# undefined symbol in the caller's object. layer_symbols.py maps each
+# object to its folder and lists references upward, into a client (cli/,
+# ui/), cycles between folders and objects of no ranked folder.
+ranks=$(for d in "${!rank[@]}"; do printf '%s=%s,' "$d" "${rank[$d]}"; done)
+ranks=${ranks%,}
+layer_symbols() { python3 tests/layer_symbols.py "$ranks" "$@"; }
+# Self-test on synthetic `nm -A -P` text: a clean tree (base < physics <
+# scene < run < batch, a CLI on top) and one injection of each kind.
+clean='lib.a[src_base_status.c.o]: acbb_error_set T 0 10
+lib.a[src_physics_net.c.o]: acbb_error_set U
+lib.a[src_physics_net.c.o]: acbb_net T 0 10
+lib.a[src_scene_rules.c.o]: acbb_net U
+lib.a[src_scene_rules.c.o]: acbb_rule T 0 10
+lib.a[src_scene_rules.c.o]: static_helper t 20 10
+lib.a[src_run_sim.c.o]: acbb_rule U
+lib.a[src_run_sim.c.o]: acbb_sim_run T 0 10
+lib.a[src_batch_fp.c.o]: acbb_fp T 0 10
+lib.a[src_batch_fp.c.o]: malloc U
+b/acbb.p/cli_main.c.o: acbb_sim_run U
+b/acbb.p/cli_main.c.o: cli_flag T 0 10
+b/acbb.p/ui_draw.c.o: cli_flag U'
+inject() { printf '%s\n%s\n' "$clean" "$1" > "$TMP/nm.txt"; layer_symbols --nm "$TMP/nm.txt" 2>"$TMP/count"; }
+[ -z "$(inject '')" ] && [ "$(cat "$TMP/count")" = "engine 5 client 2" ]
+t $? "symbols scanner: a clean synthetic tree passes (5 engine, 2 client objects)"
+[ "$(inject 'lib.a[src_scene_rules.c.o]: acbb_fp U')" = \
+    "upward: scene/rules.c -> acbb_fp (batch/fp.c)" ]
+t $? "symbols scanner: an upward call through a public header (scene calls batch)"
+[ "$(inject 'lib.a[src_physics_net.c.o]: acbb_rule U')" = \
+    "cycle: physics <-> scene (physics/net.c -> acbb_rule (scene/rules.c); scene/rules.c -> acbb_net (physics/net.c))
+upward: physics/net.c -> acbb_rule (scene/rules.c)" ]
+t $? "symbols scanner: a cycle (physics calls scene, scene calls physics)"
+[ "$(inject 'lib.a[src_run_sim.c.o]: cli_flag U')" = "client: run/sim.c -> cli_flag (cli/main.c)" ]
+t $? "symbols scanner: the engine calls a client symbol"
+[ "$(inject 'lib.a[src_gui_x.c.o]: acbb_x T 0 10')" = "unmapped: src_gui_x.c.o" ]
+t $? "symbols scanner: an object of no ranked folder"
+[ -z "$(inject 'lib.a[src_batch_fp.c.o]: acbb_w W 0 1
+lib.a[src_base_status.c.o]: acbb_w W 0 1
+lib.a[src_physics_net.c.o]: acbb_w U')" ]
+t $? "symbols scanner: a weak symbol defined in two floors counts as the lower one's"
+if [ -n "$LIB" ] && [ -n "$EXE" ]; then
+    found=$(layer_symbols "$LIB" "$EXE" 2>"$TMP/count")
+    rc=$?
+    srcs=(src/*/*.c) csrcs=(cli/**/*.c ui/**/*.c)
+    [ $rc -eq 0 ] && [ -z "$found" ] && [ "$(cut -d' ' -f2 "$TMP/count")" = ${#srcs[@]} ] \
+        && [ "$(cut -d' ' -f4 "$TMP/count")" -ge ${#csrcs[@]} ]
+    t $? "built objects ($(cat "$TMP/count"); ${#srcs[@]} src/*/*.c, ${#csrcs[@]} cli/ ui/ .c) reference no symbol of a higher folder or a client, no cycle"
+    [ -z "$found" ] || printf '%s\n' "$found" | sed 's/^/#   /'
+else
+    skip "built objects reference no symbol of a higher folder or a client, no cycle" "no LIB EXE given"
+fi
 
 tap_done

@@ -3,7 +3,7 @@
  * named temp, a named temp from the start) gives the same file, with mode
  * 0666 & ~umask when new and the old mode when rewritten, and leaves no
  * temporary file after commit or abort. The ways are forced through the
- * internal flags (src/io/outfile_priv.h); once more in a child whose mount
+ * internal flags (src/base/outfile_priv.h); once more in a child whose mount
  * namespace has no /proc at all (unshare; skipped where not permitted). */
 #define _GNU_SOURCE /* unshare, CLONE_NEWNS */
 #include <dirent.h>

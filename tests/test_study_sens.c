@@ -274,7 +274,7 @@ static void test_cancel(const acbb_study *base)
 int main(void)
 {
     /* No gsl_set_error_handler_off here: the engine turns GSL's aborting
-     * handler off itself while it works (src/physics/gsl_quiet.h). */
+     * handler off itself while it works (src/base/gsl_quiet.h). */
     acbb_scene s = preset();
     acbb_study *base = run_study(&s);
     ok(acbb_study_n_failed(base) == 0, "the base study ran");

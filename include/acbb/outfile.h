@@ -60,7 +60,7 @@ void acbb_out_abort(acbb_out *o);
  * The descriptor is blocking once open. */
 int acbb_out_open_special(const char *path);
 
-/* ---- read-modify-write without lost edits (src/io/file_lock.c) ----
+/* ---- read-modify-write without lost edits (src/base/file_lock.c) ----
  * A caller that reads a file, changes it and writes it back (`acbb edit`,
  * the TUI's save) holds acbb_file_lock around the three steps and keeps an
  * acbb_file_stamp of what it read: if the stamp taken again before the
