@@ -703,6 +703,24 @@ static int inputs_ok(const acbb_net_inputs *in)
     return isfinite(in->omega_i) && isfinite(in->omega_m) && isfinite(in->T_cavity_C);
 }
 
+static double kappa_of(const acbb_material *m) { return m->k / (m->rho * m->cp); }
+
+void acbb_network_spot_add(acbb_net_inputs *in, const acbb_scene *s, int inner, double a, double b,
+                           double v_race, double v_ball)
+{
+    double gr = 1.0 / acbb_spot_r_moving(a, b, s->ring.k, kappa_of(&s->ring), v_race);
+    double gb = 1.0 / acbb_spot_r_moving(a, b, s->ball.k, kappa_of(&s->ball), v_ball);
+    if (!isfinite(gr) || !isfinite(gb)) return;
+    if (inner) { in->g_race_i += gr; in->g_ball_i += gb; }
+    else { in->g_race_o += gr; in->g_ball_o += gb; }
+}
+
+/* A summed spot conductance as a resistance, open when nothing conducts. */
+static double r_of_sum(double g)
+{
+    return g > 0.0 ? fmin(1.0 / g, R_OPEN) : R_OPEN;
+}
+
 acbb_status acbb_network_update(acbb_network *nw, const acbb_scene *s,
                                 const acbb_net_inputs *in)
 {
@@ -718,6 +736,13 @@ acbb_status acbb_network_update(acbb_network *nw, const acbb_scene *s,
     double ball_i = r_spot(s, in->a_i, in->b_i, &s->ball, in->v_ball_i, Zi);
     double race_o = cmv * r_spot(s, in->a_o, in->b_o, &s->ring, in->v_race_o, Zo);
     double ball_o = r_spot(s, in->a_o, in->b_o, &s->ball, in->v_ball_o, Zo);
+    if (s->contact_model == ACBB_CONTACT_MOVING && in->g_race_i + in->g_race_o > 0.0) {
+        /* each loaded ball's own moving spot, in parallel (the sums) */
+        race_i = cmv * r_of_sum(in->g_race_i);
+        ball_i = r_of_sum(in->g_ball_i);
+        race_o = cmv * r_of_sum(in->g_race_o);
+        ball_o = r_of_sum(in->g_ball_o);
+    }
 
     net_fluid f;
     net_edge cv[16];

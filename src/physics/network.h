@@ -43,9 +43,20 @@ typedef struct {
     /* surface speeds through the contact, m/s (mean over loaded balls);
      * used by thermal.contact_model = moving only */
     double v_race_i, v_ball_i, v_race_o, v_ball_o;
+    /* thermal.contact_model = moving: each body's spot conductances summed
+     * over the loaded balls, W/K (acbb_network_spot_add; 0 = none given).
+     * A sum of each ball's own spot, so a ball entering the load zone adds
+     * a conductance that starts at 0: the means above would jump. */
+    double g_race_i, g_ball_i, g_race_o, g_ball_o;
     double T_cavity_C;      /* current oil-air temperature (for properties), C */
     int n_loaded_i, n_loaded_o; /* balls in contact at each race; 0 = all Z */
 } acbb_net_inputs;
+
+/* Add one loaded contact (semi-axes a, b; race and ball surface speeds) of
+ * the inner (inner = 1) or outer race to in's moving-source conductance
+ * sums: 1 / acbb_spot_r_moving of each body (contact_heat.h). */
+void acbb_network_spot_add(acbb_net_inputs *in, const acbb_scene *s, int inner, double a, double b,
+                           double v_race, double v_ball);
 
 typedef struct {
     acbb_tnet *net;

@@ -153,15 +153,22 @@ void acbb_simx_network_inputs(const acbb_sim *sim, acbb_net_inputs *in)
     for (int j = 0; j < sim->ms.n; j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
         wm += b->kin.omega_m;
+        bool moving = sim->s.contact_model == ACBB_CONTACT_MOVING;
         if (b->ct_i.a > 0.0 && b->Qi > 1e-6) {
             in->a_i += b->ct_i.a; in->b_i += b->ct_i.b;
             in->v_race_i += b->kin.v_race_i; in->v_ball_i += b->kin.v_ball_i;
             in->n_loaded_i++;
+            if (moving)
+                acbb_network_spot_add(in, &sim->s, 1, b->ct_i.a, b->ct_i.b, b->kin.v_race_i,
+                                      b->kin.v_ball_i);
         }
         if (b->ct_o.a > 0.0 && b->Qo > 1e-6) {
             in->a_o += b->ct_o.a; in->b_o += b->ct_o.b;
             in->v_race_o += b->kin.v_race_o; in->v_ball_o += b->kin.v_ball_o;
             in->n_loaded_o++;
+            if (moving)
+                acbb_network_spot_add(in, &sim->s, 0, b->ct_o.a, b->ct_o.b, b->kin.v_race_o,
+                                      b->kin.v_ball_o);
         }
     }
     if (in->n_loaded_i > 0) {
