@@ -18,6 +18,7 @@
 #include "../cli/exit.h"
 #include "screens.h"
 #include "recover.h"
+#include "results.h"
 #include "screen_preload.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
@@ -96,6 +97,7 @@ static void open_now(acbb_app *a, const char *path)
     /* The last preset's results must not pose as this one's (issue 21 item 2):
      * the worker goes back to ambient with the new scene, idle. */
     acbb_app_post(a, ACBB_CMD_RESET, &a->ed.scene, 0, "reset");
+    acbb_results_drop(a); /* and so must every other screen's (issue 29 item 2) */
     a->has_base = 0;
     acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
     offer_recovery(a);
@@ -178,15 +180,12 @@ static void changed_key(acbb_app *a, int ch)
     }
 }
 
-/* A run is going on: q must not throw it away unasked (issue 21 item 6). */
-static int run_in_progress(const acbb_app *a)
-{
-    return a->st.phase == ACBB_WORKER_RUNNING || a->st.phase == ACBB_WORKER_PAUSED;
-}
-
+/* Work is going on (a run, or any screen's background job): q must not
+ * throw it away unasked (issue 21 item 6, issue 29 item 3). */
 static void request_quit(acbb_app *a)
 {
-    if (run_in_progress(a) && !(a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)) {
+    if (acbb_results_busy(a, NULL, NULL) &&
+        !(a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)) {
         a->mode = ACBB_MODE_CONFIRM;
         a->confirm.kind = ACBB_CONFIRM_QUIT_RUN;
         return;
@@ -405,7 +404,11 @@ static void confirm_key(acbb_app *a, int ch)
         if (ch == 'y' || ch == 'Y') {
             a->mode = ACBB_MODE_CONFIRM; /* keeps the question while asking on */
             request_quit(a);             /* unsaved edits are asked about next */
-        } else acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting: the run goes on");
+        } else {
+            const char *noun;
+            acbb_results_busy(a, NULL, &noun);
+            acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting: the %s goes on", noun[0] ? noun : "work");
+        }
     } else if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
         if (ch == 'y' || ch == 'Y') {
             acbb_recover_clear(&a->ed); /* the user chose to discard them */
@@ -468,8 +471,12 @@ static void draw_message(acbb_app *a)
             acbb_put(a, a->lay.status.y, 0, a->lay.status.w, ACBB_ROLE_DIM, "%s", a->prompt.shown);
         }
     } else if (a->mode == ACBB_MODE_CONFIRM) {
-        if (a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "A run is in progress. Quit and lose it? y = quit, n = stay");
+        if (a->confirm.kind == ACBB_CONFIRM_QUIT_RUN) {
+            const char *what;
+            acbb_results_busy(a, &what, NULL);
+            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s is in progress. Quit and lose it? y = quit, n = stay",
+                     what[0] ? what : "Work");
+        }
         else if (a->confirm.kind == ACBB_CONFIRM_QUIT)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
                      "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
@@ -506,13 +513,7 @@ static void draw_body(acbb_app *a)
 static void take_state(acbb_app *a)
 {
     acbb_worker_read(a->worker, &a->st, &a->hist);
-    acbb_bench_read(a->bench, &a->bst);
-    acbb_screen_accuracy_follow(a);
-    acbb_sweepjob_read(a->sweep, &a->swv);
-    acbb_screen_sweep_follow(a);
-    acbb_sensjob_read(a->sens, &a->snv);
-    acbb_screen_sensitivity_follow(a);
-    acbb_preload_take(a);
+    acbb_results_take(a);
     if (a->st.run_id != a->prog_run) {
         acbb_progress_reset(&a->prog);
         a->prog_run = a->st.run_id;

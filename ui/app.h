@@ -126,6 +126,10 @@ struct acbb_app {
     int bearing;                   /* a set's bearing the screens show (screen_set.c) */
     struct acbb_pmap_ui *pmap;     /* the Preload screen's job and result (screen_preload.c) */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
+    struct {                       /* results of a preset no longer open (results.c) */
+        unsigned long sweep, sens, bench; /* these runs read as never started */
+        int compare;               /* the TE/WTE comparison reads as never run */
+    } hide;
 };
 
 /* Options from the command line. */

@@ -133,6 +133,7 @@ const acbb_screen acbb_screen_compare = {
 void acbb_screen_compare_start(acbb_app *a)
 {
     acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
+    a->hide.compare = 0; /* this one belongs to the open preset */
     acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
 

@@ -37,6 +37,7 @@ struct acbb_pmap_ui {
     acbb_job_info info; /* the UI's copies, once per frame */
     pm_result view;
     unsigned long seen_run;
+    unsigned long hidden_run; /* a run of a preset no longer open (results.c) */
     acbb_pmap_opts next; /* what r runs: the ranges and limits as typed */
     int chosen;          /* the ranges were typed (else they follow the scene) */
 };
@@ -150,6 +151,10 @@ void acbb_preload_take(acbb_app *a)
 {
     struct acbb_pmap_ui *p = a->pmap;
     acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
+    if (p->info.run_id == p->hidden_run) { /* reads as never started */
+        memset(&p->info, 0, sizeof p->info);
+        memset(&p->view, 0, sizeof p->view);
+    }
     if (p->info.phase <= ACBB_JOB_RUNNING || p->info.run_id == p->seen_run) return;
     p->seen_run = p->info.run_id;
     int with = 0;
@@ -165,6 +170,19 @@ void acbb_preload_take(acbb_app *a)
                      p->view.o.n_speeds);
     else
         acbb_app_msg(a, ACBB_ROLE_ERROR, "preload map failed: %s", p->info.message);
+}
+
+void acbb_preload_drop(acbb_app *a)
+{
+    struct acbb_pmap_ui *p = a->pmap;
+    acbb_job_cancel(p->job);
+    acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
+    p->hidden_run = p->info.run_id;
+}
+
+int acbb_preload_running(const acbb_app *a)
+{
+    return a->pmap->info.phase == ACBB_JOB_RUNNING;
 }
 
 /* ---- ranges and limits ---- */

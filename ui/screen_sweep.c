@@ -318,9 +318,24 @@ static const char *first_failure(const acbb_sweep_view *v)
     return NULL;
 }
 
+/* The last sweep's points belong to its key and range: once s or e chose
+ * others they are not shown under the new heading (issue 29 item 2). */
+static int superseded(const acbb_app *a)
+{
+    char spec[192];
+    snprintf(spec, sizeof spec, "%s=%s", a->sw.key, a->sw.range);
+    return a->swv.job.phase > ACBB_JOB_RUNNING && strcmp(a->swv.spec, spec) != 0;
+}
+
 static void draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
+    if (superseded(a)) {
+        memset(&a->swv, 0, sizeof a->swv); /* this frame draws as before any sweep */
+        draw_heading(a, b);
+        acbb_put(a, b.y + 3, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "(no sweep of this key and range yet: r runs it)");
+        return;
+    }
     draw_heading(a, b);
     const char *path, *label;
     int m = recorded(a, &path, &label);
