@@ -195,8 +195,10 @@ typedef struct {
     double x0, x1;
 } acbb_chart_spec;
 void acbb_chart_draw(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp);
-/* The raster's cells at (y, x), each in the role of the series that drew it. */
-void acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles);
+/* The raster's cells at (y, x), each in the role of the series that drew
+ * it; where two share a cell one moves a row aside, else the shared mark
+ * is drawn (returns 1 then: the legend must name it). */
+int acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles);
 /* The Run screen's ring and ball temperatures chart. */
 void acbb_draw_temp_chart(acbb_app *a, acbb_rect r);
 /* 1 when the history ends with the converged run's steady solve. */
