@@ -3,7 +3,8 @@
 # to the scene and the key they were run on. A sweep's points are not
 # shown under another key's heading; opening another preset clears the
 # TE/WTE comparison, the sweep and the sensitivity analysis of the last
-# one; q asks while any background work runs, naming it.
+# one; q asks while any background work runs, naming it. The key hints
+# come back once the worker took a command (not hidden for a whole run).
 # Usage: test_tui_scene.sh PATH/TO/acbb   (cwd = repo root)
 set -u
 . "$(dirname "$0")/test_tui_lib.sh"
@@ -11,6 +12,9 @@ set -u
 cp "$ROOT/presets/7008C.ini" "$TMP/copy.ini"
 TUI_ARGS="--pace 0" start "env NO_COLOR=1" sc copy.ini
 wait_for "Idle at ambient"
+keys r
+wait_for "100% done" && wait_for "r run  space pause  x stop"
+ok $? "once the run is under way the key hints are back (issue 29 item 6)"
 keys 9 s C-u operating.axial_load_N Enter e C-u 200:1000:3 Enter r
 wait_for "done: 3/3 points, 0 failed"
 ok $? "a 3-point sweep of the axial load finishes"
@@ -19,7 +23,7 @@ wait_for "Sweep operating.radial_load_N" && wait_for "(no sweep of this key and 
     ! screen | grep -q "done: 3/3" && ! screen | grep -q "^ *1000 "
 ok $? "another key: the axial load's points are no longer shown under its heading"
 keys t
-wait_for "TE vs WTE comparison started"
+wait_for "TE vs WTE: the edited scene"
 wait_until sh -c "$T capture-pane -p -t $S | grep -q '^status  *[a-z]*  *[a-z]*' &&
     ! $T capture-pane -p -t $S | grep -q '^status .*running'"
 ok $? "t runs the TE/WTE comparison to its end"

@@ -56,6 +56,7 @@ void acbb_app_msg(acbb_app *a, acbb_role role, const char *fmt, ...)
     vsnprintf(a->msg, sizeof a->msg, fmt, ap);
     va_end(ap);
     a->msg_role = role;
+    a->msg_cmd = 0;
 }
 
 void acbb_app_prompt(acbb_app *a, acbb_prompt_kind kind, const char *label, const char *init)
@@ -125,6 +126,10 @@ void acbb_app_post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int wa
     }
     if (cmd == ACBB_CMD_START) a->start_cmd = seq;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s", what);
+    /* Once the worker took it, the status line (or the TE/WTE screen)
+     * shows what it did: the key hints come back rather than staying
+     * hidden for the whole run (issue 29 item 6). */
+    a->msg_cmd = seq;
 }
 
 static void pause_or_resume(acbb_app *a)
@@ -492,7 +497,7 @@ static void draw_message(acbb_app *a)
         else
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "Unsaved edits. Discard them and open %s? y/n",
                      a->confirm.path);
-    } else if (a->msg[0]) {
+    } else if (a->msg[0] && !(a->msg_cmd && a->st.cmd_done >= a->msg_cmd)) {
         acbb_put(a, r.y, r.x, r.w, a->msg_role, "%s", a->msg);
     } else {
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s", acbb_app_hint(a));

@@ -75,6 +75,7 @@ struct acbb_app {
     } browse;
     char msg[512];                 /* message line */
     acbb_role msg_role;
+    unsigned long msg_cmd;         /* the message announces this worker command (0: none) */
     char edit_error[512];          /* last refused value, shown in the editor */
     int pace_idx;
     char plot_dir[PATH_MAX];

@@ -7,8 +7,7 @@
 #define SETTLE_S (2 * WINDOW_MIN_S) /* wall time before any ETA */
 #define FRACTION_CAP 0.99 /* "100%" belongs to a run that has ended */
 #define SMOOTH_S 0.5      /* time constant of the predicted end's smoothing */
-#define STABLE_S 3.0      /* the prediction held this long before "LONG" */
-#define STABLE_TOL 0.25   /* ... within this share of itself */
+#define STABLE_S 3.0      /* the smoothed ETA stayed over LONG_S this long before "LONG" */
 #define LONG_S 60.0       /* a run with more than a minute left is long */
 
 void acbb_progress_reset(acbb_progress *p)
@@ -71,12 +70,11 @@ static void steady_eta(acbb_progress *p, double eta, double el)
     double end = el + eta;
     if (p->end_s < 0) {
         p->end_s = end;
-        p->stable_since = el;
     } else {
         p->end_s += (end - p->end_s) * (1.0 - exp(-dt / SMOOTH_S));
     }
-    if (fabs(end - p->end_s) > STABLE_TOL * p->end_s) p->stable_since = el;
     p->eta_s = fmax(0.0, p->end_s - el);
+    if (p->eta_s <= LONG_S) p->stable_since = el; /* long since then, if it stays so */
 }
 
 void acbb_progress_update(acbb_progress *p, double residual, double wall_s, double tol)

@@ -14,8 +14,9 @@
  * below the last one shown (a slowing decay re-estimates the end later,
  * and the bar went 64 % -> 33 %); the ETA follows the predicted end time
  * smoothed over SMOOTH_S of wall time, so one odd window does not make it
- * jump; and a run is called long only once that prediction has held for
- * STABLE_S (a plateau of the residual promised minutes to 8 s runs). */
+ * jump; and a run is called long only once that ETA has stayed over a
+ * minute for STABLE_S (a plateau of the residual promised minutes to 8 s
+ * runs). */
 #ifndef ACBB_UI_PROGRESS_H
 #define ACBB_UI_PROGRESS_H
 
@@ -28,7 +29,7 @@ typedef struct {
     double fraction;      /* 0..0.99 while running */
     double eta_s;         /* seconds left (smoothed); < 0 when unknown */
     double end_s;         /* smoothed predicted end, s of run wall time; < 0 unknown */
-    double stable_since;  /* elapsed s since which the raw end stayed near end_s */
+    double stable_since;  /* elapsed s since which the ETA shown stayed over a minute */
     double prev_el;       /* elapsed s at the last update */
     int n;                /* samples kept (oldest dropped by halving) */
     double t[ACBB_PROGRESS_SAMPLES], lr[ACBB_PROGRESS_SAMPLES];

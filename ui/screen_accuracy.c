@@ -84,10 +84,13 @@ static void export_plot(acbb_app *a)
     snprintf(title, sizeof title, "acbb bench accuracy %s (1 run per setting)", a->acc_scene);
     acbb_error err = { { 0 } };
     int written = 0;
-    if (acbb_export_accuracy(a->plot_dir, a->bst.rows, a->bst.n, title, &written, &err) != ACBB_OK)
+    char sfx[16];
+    if (acbb_export_accuracy(a->plot_dir, a->bst.rows, a->bst.n, title, sfx, sizeof sfx, &written, &err) !=
+        ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
     else
-        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d accuracy plots (PNG+SVG) to %s/", written, a->plot_dir);
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d accuracy plots (PNG+SVG) to %s/%s%s%s", written,
+                     a->plot_dir, sfx[0] ? " as accuracy" : "", sfx, sfx[0] ? " (earlier kept)" : "");
 }
 
 /* ---- heading ---- */

@@ -17,6 +17,7 @@
 #include "acbb/preload_map.h"
 #include "acbb/units.h"
 #include "screen_preload.h"
+#include "export.h"
 #include "screens.h"
 
 #define PM_SPEEDS 12    /* chart rows: the heading, the rows and the axis fit a 24-row terminal */
@@ -319,15 +320,8 @@ static void export_chart(acbb_app *a)
     };
     acbb_plot_xy px = { "preload window", "inner-ring speed, rpm", "preload, N", sr, 2 };
     char png[PATH_MAX + 32], svg[PATH_MAX + 32];
-    snprintf(png, sizeof png, "%.*s/preload_window.png", PATH_MAX, a->plot_dir);
-    snprintf(svg, sizeof svg, "%.*s/preload_window.svg", PATH_MAX, a->plot_dir);
     acbb_error err = { { 0 } };
-    if (mkdir(a->plot_dir, 0777) != 0 && errno != EEXIST) {
-        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: cannot create %s: %s", a->plot_dir,
-                     strerror(errno));
-        return;
-    }
-    if (acbb_plot_xy_files(&px, png, svg, 1000, 600, &err) != ACBB_OK)
+    if (acbb_export_xy(a->plot_dir, "preload_window", &px, 1000, 600, png, svg, sizeof png, &err) != ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
     else
         acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s", png, svg);

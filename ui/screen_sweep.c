@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "export.h"
 #include "screens.h"
 
 #define TABLE_W 27   /* the points' table at the right: "%10s %13s" + a margin */
@@ -354,6 +355,36 @@ static void draw(acbb_app *a)
     draw_table(a, table, m, unit);
 }
 
+/* ---- export ---- */
+
+/* g: the chart of the finished sweep, the points joined (issue 29 item 8:
+ * g exported the Run screen's plots instead). */
+static void export_plot(acbb_app *a)
+{
+    const char *path, *label;
+    int m = recorded(a, &path, &label);
+    double x[ACBB_WHATIF_MAX_POINTS], y[ACBB_WHATIF_MAX_POINTS], span[2];
+    size_t n = a->swv.job.phase > ACBB_JOB_RUNNING && m >= 0 ? curve(&a->swv, m, x, y, span) : 0;
+    if (n == 0) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "%s", a->swv.job.phase == ACBB_JOB_RUNNING
+                     ? "the sweep is still running" : "no swept point of this metric to plot (r runs a sweep)");
+        return;
+    }
+    char unit[16], xl[ACBB_SWEEP_KEY + 32], yl[160], title[PATH_MAX + 64], png[PATH_MAX + 32], svg[PATH_MAX + 32];
+    long fi = find_field(a->swv.key);
+    snprintf(xl, sizeof xl, "%s, %s", a->swv.key, fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
+    acbb_metric_unit(path, unit, sizeof unit);
+    snprintf(yl, sizeof yl, "%s, %s", label, unit);
+    snprintf(title, sizeof title, "%s: sweep of %s", acbb_editor_name(&a->ed), a->swv.key);
+    acbb_plot_series sr = { label, x, y, n, 1, 1, 1 };
+    acbb_plot_xy px = { title, xl, yl, &sr, 1 };
+    acbb_error err = { { 0 } };
+    if (acbb_export_xy(a->plot_dir, "sweep", &px, 1000, 600, png, svg, sizeof png, &err) != ACBB_OK)
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s", png, svg);
+}
+
 /* ---- keys ---- */
 
 static int cancel(acbb_app *a)
@@ -369,6 +400,7 @@ static int on_key(acbb_app *a, int ch)
     if (acbb_scroll_key(ch, page, (int)a->swv.total, &a->sw.top)) return 1;
     switch (ch) {
     case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
+    case 'g': export_plot(a); return 1;
     case 'x':
         if (!cancel(a)) acbb_app_msg(a, ACBB_ROLE_WARN, "no sweep running (r starts one)");
         return 1;
@@ -402,6 +434,7 @@ static const acbb_help_line help[] = {
     { "< > h l", "cycle the metric" },
     { "c", "type a metric (JSON path)" },
     { "r  Enter", "sweep the edited scene" },
+    { "g", "export the chart (PNG+SVG)" },
     { "x  Esc", "cancel the sweep" },
     { "j k PgUp/Dn", "scroll the points" },
     { NULL, NULL },
