@@ -461,6 +461,46 @@ const char *acbb_app_hint(const acbb_app *a)
     return h ? h : ACBB_RUN_HINT;
 }
 
+/* The question being asked, into buf. */
+static void confirm_text(acbb_app *a, char *buf, size_t n)
+{
+    const char *name = acbb_editor_name(&a->ed), *what;
+    switch (a->confirm.kind) {
+    case ACBB_CONFIRM_QUIT_RUN:
+        acbb_results_busy(a, &what, NULL);
+        snprintf(buf, n, "%s is in progress. Quit and lose it? y = quit, n = stay", what[0] ? what : "Work");
+        break;
+    case ACBB_CONFIRM_QUIT:
+        snprintf(buf, n, "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay", name);
+        break;
+    case ACBB_CONFIRM_CHANGED:
+        snprintf(buf, n, "%s changed on disk since it was read. r = reload it (drop my edits), "
+                 "o = overwrite, s = save elsewhere, n = cancel", name);
+        break;
+    case ACBB_CONFIRM_RECOVER:
+        snprintf(buf, n, "Unsaved edits of %s from an earlier session. Restore them? y/n", name);
+        break;
+    default:
+        snprintf(buf, n, "Unsaved edits. Discard them and open %s? y/n", a->confirm.path);
+    }
+}
+
+/* A question wider than the row takes the status line too (issue 29 item
+ * 7: at 80 columns its answers were cut off). */
+static void draw_confirm(acbb_app *a, acbb_rect r)
+{
+    char text[PATH_MAX + 256];
+    confirm_text(a, text, sizeof text);
+    if ((int)strlen(text) <= r.w) {
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s", text);
+        return;
+    }
+    int y = a->lay.status.y;
+    move(y, 0);
+    clrtoeol();
+    acbb_put_wrap(a, y, r.x, r.w, r.y - y + 1, ACBB_ROLE_WARN, text);
+}
+
 static void draw_message(acbb_app *a)
 {
     acbb_rect r = a->lay.message;
@@ -476,27 +516,7 @@ static void draw_message(acbb_app *a)
             acbb_put(a, a->lay.status.y, 0, a->lay.status.w, ACBB_ROLE_DIM, "%s", a->prompt.shown);
         }
     } else if (a->mode == ACBB_MODE_CONFIRM) {
-        if (a->confirm.kind == ACBB_CONFIRM_QUIT_RUN) {
-            const char *what;
-            acbb_results_busy(a, &what, NULL);
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s is in progress. Quit and lose it? y = quit, n = stay",
-                     what[0] ? what : "Work");
-        }
-        else if (a->confirm.kind == ACBB_CONFIRM_QUIT)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
-                     "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
-                     acbb_editor_name(&a->ed));
-        else if (a->confirm.kind == ACBB_CONFIRM_CHANGED)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s changed on disk since it was read. "
-                     "r = reload it (drop my edits), o = overwrite, s = save elsewhere, n = cancel",
-                     acbb_editor_name(&a->ed));
-        else if (a->confirm.kind == ACBB_CONFIRM_RECOVER)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
-                     "Unsaved edits of %s from an earlier session. Restore them? y/n",
-                     acbb_editor_name(&a->ed));
-        else
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "Unsaved edits. Discard them and open %s? y/n",
-                     a->confirm.path);
+        draw_confirm(a, r);
     } else if (a->msg[0] && !(a->msg_cmd && a->st.cmd_done >= a->msg_cmd)) {
         acbb_put(a, r.y, r.x, r.w, a->msg_role, "%s", a->msg);
     } else {
