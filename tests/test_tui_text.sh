@@ -4,7 +4,7 @@
 # answers; the life line shows a_ISO (why Lnm is 50 x L10r) and marks
 # lives at the reported cap with ">"; the Run screen's contact angles are
 # alpha_i/alpha_o (a_i is the Balls screen's semi-axis); the help has a
-# glossary of the short names.
+# glossary of the short names; the Edit screen's columns fit every name.
 # Usage: test_tui_text.sh PATH/TO/acbb   (cwd = repo root)
 set -u
 . "$(dirname "$0")/test_tui_lib.sh"
@@ -28,6 +28,11 @@ wait_for "contact ellipse semi-axes" && wait_for "contact angle at the"
 ok $? "the help has a glossary: a_i is a semi-axis, alpha_i an angle"
 keys Escape Escape 5
 wait_for "Enter edit"
+goto_field surroundings.housing_exterior
+wait_for "surroundings.housing_exterior: "
+screen | grep -q "^ surroundings housing_exterior           convective     fixed | derived" &&
+    screen | tr -d '\n' | grep -q "allowed: fixed | *derived | *convective"
+ok $? "Edit: the widest section and key stay in their columns; the info rows give the whole list of choices"
 goto_field operating.axial_load_N
 keys Enter C-u 900 Enter
 wait_for "[modified]"
