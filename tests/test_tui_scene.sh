@@ -1,6 +1,7 @@
 #!/bin/sh
 # Issue 29 items 2 and 3 (TAP, tmux, 80x24): every screen's results belong
-# to the scene and the key they were run on. A sweep's points are not
+# to the scene and the key they were run on. An edit hides them until
+# undone or rerun. A sweep's points are not
 # shown under another key's heading; opening another preset clears the
 # TE/WTE comparison, the sweep and the sensitivity analysis of the last
 # one; q asks while any background work runs, naming it. The key hints
@@ -18,6 +19,17 @@ ok $? "once the run is under way the key hints are back (issue 29 item 6)"
 keys 9 s C-u operating.axial_load_N Enter e C-u 200:1000:3 Enter r
 wait_for "done: 3/3 points, 0 failed"
 ok $? "a 3-point sweep of the axial load finishes"
+keys 5
+wait_for "Enter edit"
+goto_field operating.radial_load_N
+keys Enter C-u 13 Enter
+wait_for "[modified]"
+keys 9
+wait_for "(the last result is hidden: the scene was edited" && ! screen | grep -q "done: 3/3"
+ok $? "an edit of the scene hides the sweep run on the scene before it"
+keys u
+wait_for "done: 3/3 points, 0 failed"
+ok $? "undo brings it back"
 keys s C-u operating.radial_load_N Enter
 wait_for "Sweep operating.radial_load_N" && wait_for "(no sweep of this key and range yet: r runs it)" &&
     ! screen | grep -q "done: 3/3" && ! screen | grep -q "^ *1000 "

@@ -130,6 +130,8 @@ struct acbb_app {
     struct {                       /* results of a preset no longer open (results.c) */
         unsigned long sweep, sens, bench; /* these runs read as never started */
         int compare;               /* the TE/WTE comparison reads as never run */
+        acbb_scene ran_on[4];      /* the scene each job last started on (ACBB_RAN_* below PRELOAD) */
+        unsigned edited;           /* bit ACBB_RAN_*: its finished result is hidden, the scene was edited since */
     } hide;
 };
 

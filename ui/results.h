@@ -5,6 +5,16 @@
 #include <stddef.h>
 #include "app.h"
 
+/* The jobs whose scene is remembered (app.h hide.ran_on; the preload map
+ * keeps its own copy, screen_preload.c) and the bits of hide.edited. */
+enum { ACBB_RAN_SWEEP, ACBB_RAN_SENS, ACBB_RAN_BENCH, ACBB_RAN_COMPARE, ACBB_RAN_PRELOAD };
+
+/* A job (ACBB_RAN_*) was started on the edited scene: its result belongs to
+ * that scene and is hidden while the edited scene differs from it. */
+void acbb_results_ran(acbb_app *a, int which);
+/* Why job `which` shows no result when an edit hid it (for its idle
+ * text), else NULL. */
+const char *acbb_results_note(const acbb_app *a, int which);
 /* Another preset was opened: cancel the background work of the last one
  * and hide every screen's results of it. */
 void acbb_results_drop(acbb_app *a);

@@ -17,6 +17,7 @@
 #include "acbb/preload_map.h"
 #include "acbb/units.h"
 #include "screen_preload.h"
+#include "results.h"
 #include "export.h"
 #include "screens.h"
 
@@ -152,7 +153,9 @@ void acbb_preload_take(acbb_app *a)
 {
     struct acbb_pmap_ui *p = a->pmap;
     acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
-    if (p->info.run_id == p->hidden_run) { /* reads as never started */
+    int edited = p->info.phase > ACBB_JOB_RUNNING && acbb_editor_differs(&p->scene, &a->ed.scene);
+    if (edited) a->hide.edited |= 1u << ACBB_RAN_PRELOAD; /* results.c */
+    if (p->info.run_id == p->hidden_run || edited) { /* reads as never started */
         memset(&p->info, 0, sizeof p->info);
         memset(&p->view, 0, sizeof p->view);
     }
@@ -421,7 +424,8 @@ static void draw(acbb_app *a)
     draw_heading(a, b);
     const pm_result *v = &a->pmap->view;
     if (a->pmap->info.phase == ACBB_JOB_IDLE) {
-        acbb_put(a, b.y + 3, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "(no preload map yet: r runs one)");
+        const char *note = acbb_results_note(a, ACBB_RAN_PRELOAD);
+        acbb_put_wrap(a, b.y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note ? note : "(no preload map yet: r runs one)");
         return;
     }
     draw_limits(a, b.y + 2, b, &v->o);

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "export.h"
+#include "results.h"
 #include "screens.h"
 
 #define NUM_W 9        /* "at low", "at high" */
@@ -35,6 +36,7 @@ static void start(acbb_app *a)
         return;
     }
     a->sn.top = 0;
+    acbb_results_ran(a, ACBB_RAN_SENS);
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sensitivity of %s%s started on %s%s (x cancels)",
                  o.delta_te ? "TE-WTE " : "", o.metric, acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "");
@@ -85,6 +87,8 @@ static void draw_heading(acbb_app *a, acbb_rect b)
     case ACBB_JOB_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "< > metric  d TE-WTE  y Morris  r/Enter runs it on the edited scene");
+        if (acbb_results_note(a, ACBB_RAN_SENS))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_SENS));
         break;
     case ACBB_JOB_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, v->job.cancel_requested, v->job.started_s, v->done,

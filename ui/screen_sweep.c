@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "export.h"
+#include "results.h"
 #include "screens.h"
 
 #define TABLE_W 27   /* the points' table at the right: "%10s %13s" + a margin */
@@ -177,6 +178,7 @@ static void start(acbb_app *a)
         return;
     }
     a->sw.top = 0;
+    acbb_results_ran(a, ACBB_RAN_SWEEP);
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep started on %s%s: %s (x cancels)", acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "", spec);
 }
@@ -275,7 +277,8 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
                            .memo = &a->memo[4], .memo_key = a->swv.job.run_id * 64 + (unsigned)m,
                            .x_fixed = isfinite(span[0]), .x0 = span[0], .x1 = span[1] };
     if (a->swv.job.phase == ACBB_JOB_IDLE) {
-        acbb_put(a, r.y + 1, r.x + 2, r.w - 2, ACBB_ROLE_DIM, "(no sweep yet: r runs one)");
+        const char *note = acbb_results_note(a, ACBB_RAN_SWEEP);
+        acbb_put_wrap(a, r.y + 1, r.x + 2, r.w - 2, 3, ACBB_ROLE_DIM, note ? note : "(no sweep yet: r runs one)");
         return;
     }
     if (m < 0) {
