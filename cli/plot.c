@@ -241,6 +241,9 @@ int acbb_cli_plot(const acbb_cli_args *args)
     acbb_snapshot *snap = rc ? NULL : malloc(sizeof *snap);
     if (!rc && (!sc || !hist || !snap)) rc = ACBB_EXIT_INTERNAL;
     if (!rc) rc = acbb_cli_load_scene(args, sc);
+    /* A set's "all" takes its two plots as well (issue 29 item 8). */
+    if (!rc && last == PLOT_N_KINDS - 1 && first != last && sc->set_arrangement != ACBB_SET_SINGLE)
+        last = ACBB_PLOT_SET_TEMPERATURE;
     if (!rc) {
         int run_rc = run_recording(sc, hist, snap);
         /* A run that stopped early still has a last good state to show. */

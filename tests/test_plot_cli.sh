@@ -114,6 +114,13 @@ if [ "$plot_wired" -eq 1 ]; then
     t $? "five PNGs x-<kind>.png written ($good/5 valid)"
     [ ! -e "$TMP/x.png" ] && no_temps "$TMP"
     t $? "no x.png itself and no temp files"
+    # A set's "all" adds its two plots (issue 29 item 8); a single bearing's does not.
+    "$ACBB" plot presets/pair-DB-heated.ini --kind all --out "$TMP/s.png" 2>"$TMP/err"
+    code $? 0 "plot --kind all of a set"
+    is_png "$TMP/s-set-preload.png" && is_png "$TMP/s-set-temperature.png" && is_png "$TMP/s-losses.png"
+    t $? "a set's --kind all writes s-set-preload.png and s-set-temperature.png too"
+    [ ! -e "$TMP/x-set-preload.png" ]
+    t $? "a single bearing's --kind all has no set plots"
 
     # ---- gnuplot missing or failing ----
     env PATH=/nonexistent "$ACBB" plot "$PRESET" --out "$TMP/n.png" >/dev/null 2>"$TMP/err"

@@ -17,7 +17,7 @@ for f in presets/*.ini; do
     expect=$(sed -n 's/^; Expect: *\([a-z_]*\).*/\1/p' "$f" | head -n 1)
     grep -q '^; Look at:' "$f" && [ -n "$expect" ]
     t $? "$name: has a 'Look at:' paragraph and an 'Expect:' status ($expect)"
-    grep -A3 -x "  $name" "$TMP/list" | grep -q 'look at:'
+    grep -A6 -x "  $name" "$TMP/list" | grep -q 'look at:'
     t $? "$name: acbb presets shows what to look at"
     start=$(date +%s%N)
     "$ACBB" run "$f" --json >"$TMP/$(basename "$f" .ini).json" 2>/dev/null
@@ -57,6 +57,13 @@ t $? "warm-shaft: the net squeeze is positive and TE raises Qi over WTE"
 "$ACBB" run presets/te-wte-heavy.ini --json >"$TMP/hv.json" 2>/dev/null
 jq -e '.squeeze_um.net < 0' "$TMP/hv.json" >/dev/null
 t $? "te-wte-heavy: the net squeeze is negative (TE loosens at the seed's boundaries)"
+# A title is the header's whole first paragraph (issue 29 item 7): cut at
+# its first line, the rigid and the spring pair read the same.
+"$ACBB" presets 2>/dev/null | tr -s ' \n' '  ' >"$TMP/presets.txt"
+grep -q "pair-rigid-16k.ini The same DB pair .* held by rigid spacers (mounting.preload = displacement)" \
+    "$TMP/presets.txt" &&
+    grep -q "pair-spring-16k.ini The same DB pair .* held by a spring on the floating side" "$TMP/presets.txt"
+t $? "acbb presets: the rigid and spring pairs' titles run to the end of their first paragraph"
 
 # The README's preset table (issue 28 item 13: rows had drifted out of it)
 # names every preset, in one table: its rows are consecutive.

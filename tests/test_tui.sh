@@ -235,12 +235,15 @@ wait_file "$TMP/exit4" 10
 [ "$(cat "$TMP/exit4" 2>/dev/null)" = "EXIT=0" ]
 ok $? "q quits with exit status 0 after the benchmark"
 
-# Quit while a benchmark runs: the thread is cancelled and joined at once.
+# Quit while a benchmark runs: q asks first (issue 29 item 3), then the
+# thread is cancelled and joined at once.
 start "ACBB_TUI_ACCURACY_KNOBS=contact_grid" exit5
 wait_for "ready"
 keys b
 wait_for "running" 10
 keys q
+wait_for "The accuracy benchmark is in progress. Quit and lose it? y = quit, n = stay"
+keys y
 wait_file "$TMP/exit5"
 [ "$(cat "$TMP/exit5" 2>/dev/null)" = "EXIT=0" ]
 ok $? "q during a benchmark exits 0 (the thread cancelled and joined)"

@@ -106,6 +106,44 @@ static void test_progress(void)
        "progress: below tolerance the fraction stays < 1 (100%% belongs to a finished run)");
 }
 
+/* Issue 29 item 6: what the status bar shows is steady. */
+static void test_progress_steady(void)
+{
+    acbb_progress p;
+    /* The decay slows at 3 s (r = e^-t, then e^-(3 + (t-3)/10)): the end
+     * is re-estimated later, and elapsed / (elapsed + eta) falls. */
+    acbb_progress_reset(&p);
+    double last = 0.0, drop = 0.0;
+    for (double t = 0; t <= 12.0; t += 0.05) {
+        double lr = t < 3 ? -t : -3 - (t - 3) / 10;
+        acbb_progress_update(&p, exp(lr), t, exp(-20.0));
+        drop = fmax(drop, last - p.fraction);
+        last = p.fraction;
+    }
+    ok(drop == 0.0 && last > 0.0, "progress: the fraction shown never goes back when the decay slows");
+    /* One mode ending at 10 s with a 1 s plateau at 4 s (the residual
+     * stalls): the raw end jumps to minutes, the ETA shown moves little
+     * and LONG is never said. */
+    acbb_progress_reset(&p);
+    double eta_before = -1, eta_max = 0;
+    int said_long = 0;
+    for (double t = 0; t <= 9.0; t += 0.05) {
+        double lr = t < 4 ? -t : t < 5 ? -4 : -4 - (t - 5) * 6 / 5;
+        acbb_progress_update(&p, exp(lr), t, exp(-10.0));
+        if (t < 3.99) eta_before = p.eta_s;
+        else if (t < 5.5) eta_max = fmax(eta_max, p.eta_s);
+        said_long |= acbb_progress_long(&p);
+    }
+    ok(eta_before > 5.5 && eta_before < 6.5 && eta_max < 2 * eta_before + 1.0,
+       "progress: a stall of 1 s moves the ETA little (%.1f s before, at most %.1f s)", eta_before, eta_max);
+    ok(!said_long, "progress: a 10 s run with a stall is never called LONG");
+    /* One slow mode ending at 300 s: LONG once the estimate has held. */
+    acbb_progress_reset(&p);
+    for (double t = 0; t <= 8.0; t += 0.05) acbb_progress_update(&p, exp(-t / 30), t, exp(-10.0));
+    ok(acbb_progress_long(&p) && fabs(p.eta_s - 292.0) < 1.0,
+       "progress: a steady 300 s run is LONG (ETA %.1f s)", p.eta_s);
+}
+
 /* ---- chart raster ---- */
 
 /* Nice axes: hand-worked ranges, and an axis fed its own range plus new
@@ -135,6 +173,39 @@ static void test_nice(void)
     }
     ok(widen_only && plo <= 25.0 && phi >= 33.8, "nice: a growing series widens the axis only (%g..%g)",
        plo, phi);
+}
+
+/* Issue 29 item 6: a spring pair's preload, 300 N with 1e-5 N of solver
+ * noise, is a flat line on a 285..315 N axis, not spikes on 300.00004 N. */
+static void test_nice_noise(void)
+{
+    double lo, hi, step;
+    acbb_chart_nice(300.0, 300.00004, 5, &lo, &hi, &step);
+    ok(lo <= 285.0 && hi >= 315.0 && step >= 5.0,
+       "nice: 1e-5 N of noise at 300 N is a flat band (%g..%g step %g)", lo, hi, step);
+    acbb_chart_nice(300.0, 300.5, 5, &lo, &hi, &step);
+    ok(hi - lo < 1.0, "nice: a real 0.5 N change keeps its own axis (%g..%g)", lo, hi);
+}
+
+/* Issue 29 item 5: two curves in one cell are both kept. */
+static void test_chart_shared(void)
+{
+    static acbb_chart c;
+    const double x[2] = { 0, 1 }, y0[2] = { 0.0, 0.0 }, y1[2] = { 0.2, 0.2 }, y2[2] = { 1, 1 };
+    acbb_chart_init(&c, 4, 3, 0, 1, 0, 1);
+    acbb_chart_plot(&c, x, y0, 2, 0);
+    ok(!acbb_chart_any_shared(&c), "chart: one series shares no cell");
+    acbb_chart_plot(&c, x, y1, 2, 1); /* a different dot row, the same cell row */
+    acbb_chart_plot(&c, x, y2, 2, 2); /* the top row: alone */
+    ok(acbb_chart_shared(&c, 2, 0) && acbb_chart_shared(&c, 2, 3) && !acbb_chart_shared(&c, 0, 0) &&
+       acbb_chart_any_shared(&c), "chart: the cells both low curves drew in are shared, the top ones not");
+    /* The upper of the two (series 1, at 0.2) moves up into the empty
+     * middle row. */
+    int moved = -1, kept = -1;
+    ok(acbb_chart_offset(&c, 2, 0, &moved, &kept) == -1 && moved == 1 && kept == 0,
+       "chart: the upper curve of a shared cell moves a row up (moved %d, kept %d)", moved, kept);
+    acbb_chart_plot(&c, x, y0, 2, 2); /* a third curve on the lower row */
+    ok(acbb_chart_offset(&c, 2, 0, &moved, &kept) == 0, "chart: three curves in a cell: the shared mark");
 }
 
 static void test_chart(void)
@@ -467,6 +538,9 @@ int main(void)
     test_bench_frontier();
     test_layout();
     test_progress();
+    test_progress_steady();
+    test_nice_noise();
+    test_chart_shared();
     test_chart();
     test_nice();
     test_editor();

@@ -18,6 +18,7 @@
 #include "../cli/exit.h"
 #include "screens.h"
 #include "recover.h"
+#include "results.h"
 #include "screen_preload.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
@@ -55,6 +56,7 @@ void acbb_app_msg(acbb_app *a, acbb_role role, const char *fmt, ...)
     vsnprintf(a->msg, sizeof a->msg, fmt, ap);
     va_end(ap);
     a->msg_role = role;
+    a->msg_cmd = 0;
 }
 
 void acbb_app_prompt(acbb_app *a, acbb_prompt_kind kind, const char *label, const char *init)
@@ -96,6 +98,7 @@ static void open_now(acbb_app *a, const char *path)
     /* The last preset's results must not pose as this one's (issue 21 item 2):
      * the worker goes back to ambient with the new scene, idle. */
     acbb_app_post(a, ACBB_CMD_RESET, &a->ed.scene, 0, "reset");
+    acbb_results_drop(a); /* and so must every other screen's (issue 29 item 2) */
     a->has_base = 0;
     acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
     offer_recovery(a);
@@ -123,6 +126,10 @@ void acbb_app_post(acbb_app *a, acbb_worker_cmd cmd, const acbb_scene *s, int wa
     }
     if (cmd == ACBB_CMD_START) a->start_cmd = seq;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s", what);
+    /* Once the worker took it, the status line (or the TE/WTE screen)
+     * shows what it did: the key hints come back rather than staying
+     * hidden for the whole run (issue 29 item 6). */
+    a->msg_cmd = seq;
 }
 
 static void pause_or_resume(acbb_app *a)
@@ -178,15 +185,12 @@ static void changed_key(acbb_app *a, int ch)
     }
 }
 
-/* A run is going on: q must not throw it away unasked (issue 21 item 6). */
-static int run_in_progress(const acbb_app *a)
-{
-    return a->st.phase == ACBB_WORKER_RUNNING || a->st.phase == ACBB_WORKER_PAUSED;
-}
-
+/* Work is going on (a run, or any screen's background job): q must not
+ * throw it away unasked (issue 21 item 6, issue 29 item 3). */
 static void request_quit(acbb_app *a)
 {
-    if (run_in_progress(a) && !(a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)) {
+    if (acbb_results_busy(a, NULL, NULL) &&
+        !(a->mode == ACBB_MODE_CONFIRM && a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)) {
         a->mode = ACBB_MODE_CONFIRM;
         a->confirm.kind = ACBB_CONFIRM_QUIT_RUN;
         return;
@@ -405,7 +409,11 @@ static void confirm_key(acbb_app *a, int ch)
         if (ch == 'y' || ch == 'Y') {
             a->mode = ACBB_MODE_CONFIRM; /* keeps the question while asking on */
             request_quit(a);             /* unsaved edits are asked about next */
-        } else acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting: the run goes on");
+        } else {
+            const char *noun;
+            acbb_results_busy(a, NULL, &noun);
+            acbb_app_msg(a, ACBB_ROLE_NORMAL, "not quitting: the %s goes on", noun[0] ? noun : "work");
+        }
     } else if (a->confirm.kind == ACBB_CONFIRM_QUIT) {
         if (ch == 'y' || ch == 'Y') {
             acbb_recover_clear(&a->ed); /* the user chose to discard them */
@@ -453,6 +461,46 @@ const char *acbb_app_hint(const acbb_app *a)
     return h ? h : ACBB_RUN_HINT;
 }
 
+/* The question being asked, into buf. */
+static void confirm_text(acbb_app *a, char *buf, size_t n)
+{
+    const char *name = acbb_editor_name(&a->ed), *what;
+    switch (a->confirm.kind) {
+    case ACBB_CONFIRM_QUIT_RUN:
+        acbb_results_busy(a, &what, NULL);
+        snprintf(buf, n, "%s is in progress. Quit and lose it? y = quit, n = stay", what[0] ? what : "Work");
+        break;
+    case ACBB_CONFIRM_QUIT:
+        snprintf(buf, n, "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay", name);
+        break;
+    case ACBB_CONFIRM_CHANGED:
+        snprintf(buf, n, "%s changed on disk since it was read. r = reload it (drop my edits), "
+                 "o = overwrite, s = save elsewhere, n = cancel", name);
+        break;
+    case ACBB_CONFIRM_RECOVER:
+        snprintf(buf, n, "Unsaved edits of %s from an earlier session. Restore them? y/n", name);
+        break;
+    default:
+        snprintf(buf, n, "Unsaved edits. Discard them and open %s? y/n", a->confirm.path);
+    }
+}
+
+/* A question wider than the row takes the status line too (issue 29 item
+ * 7: at 80 columns its answers were cut off). */
+static void draw_confirm(acbb_app *a, acbb_rect r)
+{
+    char text[PATH_MAX + 256];
+    confirm_text(a, text, sizeof text);
+    if ((int)strlen(text) <= r.w) {
+        acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s", text);
+        return;
+    }
+    int y = a->lay.status.y;
+    move(y, 0);
+    clrtoeol();
+    acbb_put_wrap(a, y, r.x, r.w, r.y - y + 1, ACBB_ROLE_WARN, text);
+}
+
 static void draw_message(acbb_app *a)
 {
     acbb_rect r = a->lay.message;
@@ -468,24 +516,8 @@ static void draw_message(acbb_app *a)
             acbb_put(a, a->lay.status.y, 0, a->lay.status.w, ACBB_ROLE_DIM, "%s", a->prompt.shown);
         }
     } else if (a->mode == ACBB_MODE_CONFIRM) {
-        if (a->confirm.kind == ACBB_CONFIRM_QUIT_RUN)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "A run is in progress. Quit and lose it? y = quit, n = stay");
-        else if (a->confirm.kind == ACBB_CONFIRM_QUIT)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
-                     "Unsaved edits to %s. Quit anyway? y = quit, s = save and quit, n = stay",
-                     acbb_editor_name(&a->ed));
-        else if (a->confirm.kind == ACBB_CONFIRM_CHANGED)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "%s changed on disk since it was read. "
-                     "r = reload it (drop my edits), o = overwrite, s = save elsewhere, n = cancel",
-                     acbb_editor_name(&a->ed));
-        else if (a->confirm.kind == ACBB_CONFIRM_RECOVER)
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN,
-                     "Unsaved edits of %s from an earlier session. Restore them? y/n",
-                     acbb_editor_name(&a->ed));
-        else
-            acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_WARN, "Unsaved edits. Discard them and open %s? y/n",
-                     a->confirm.path);
-    } else if (a->msg[0]) {
+        draw_confirm(a, r);
+    } else if (a->msg[0] && !(a->msg_cmd && a->st.cmd_done >= a->msg_cmd)) {
         acbb_put(a, r.y, r.x, r.w, a->msg_role, "%s", a->msg);
     } else {
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s", acbb_app_hint(a));
@@ -506,13 +538,7 @@ static void draw_body(acbb_app *a)
 static void take_state(acbb_app *a)
 {
     acbb_worker_read(a->worker, &a->st, &a->hist);
-    acbb_bench_read(a->bench, &a->bst);
-    acbb_screen_accuracy_follow(a);
-    acbb_sweepjob_read(a->sweep, &a->swv);
-    acbb_screen_sweep_follow(a);
-    acbb_sensjob_read(a->sens, &a->snv);
-    acbb_screen_sensitivity_follow(a);
-    acbb_preload_take(a);
+    acbb_results_take(a);
     if (a->st.run_id != a->prog_run) {
         acbb_progress_reset(&a->prog);
         a->prog_run = a->st.run_id;

@@ -75,6 +75,7 @@ struct acbb_app {
     } browse;
     char msg[512];                 /* message line */
     acbb_role msg_role;
+    unsigned long msg_cmd;         /* the message announces this worker command (0: none) */
     char edit_error[512];          /* last refused value, shown in the editor */
     int pace_idx;
     char plot_dir[PATH_MAX];
@@ -126,6 +127,12 @@ struct acbb_app {
     int bearing;                   /* a set's bearing the screens show (screen_set.c) */
     struct acbb_pmap_ui *pmap;     /* the Preload screen's job and result (screen_preload.c) */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
+    struct {                       /* results of a preset no longer open (results.c) */
+        unsigned long sweep, sens, bench; /* these runs read as never started */
+        int compare;               /* the TE/WTE comparison reads as never run */
+        acbb_scene ran_on[4];      /* the scene each job last started on (ACBB_RAN_* below PRELOAD) */
+        unsigned edited;           /* bit ACBB_RAN_*: its finished result is hidden, the scene was edited since */
+    } hide;
 };
 
 /* Options from the command line. */
@@ -191,8 +198,10 @@ typedef struct {
     double x0, x1;
 } acbb_chart_spec;
 void acbb_chart_draw(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp);
-/* The raster's cells at (y, x), each in the role of the series that drew it. */
-void acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles);
+/* The raster's cells at (y, x), each in the role of the series that drew
+ * it; where two share a cell one moves a row aside, else the shared mark
+ * is drawn (returns 1 then: the legend must name it). */
+int acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles);
 /* The Run screen's ring and ball temperatures chart. */
 void acbb_draw_temp_chart(acbb_app *a, acbb_rect r);
 /* 1 when the history ends with the converged run's steady solve. */

@@ -23,8 +23,12 @@ void acbb_draw_title(acbb_app *a)
     x += 6;
     /* At 80 columns eight names leave no room for the scene's name (and its
      * unsaved-edit star), so then only the current tab keeps its name. */
-    char name[PATH_MAX + 8];
-    snprintf(name, sizeof name, "%s%s ", acbb_editor_name(&a->ed), a->ed.modified ? "*" : "");
+    char name[PATH_MAX + 40], which[32] = "";
+    /* A set: which bearing the Run, Nodes, Balls and Charts screens show,
+     * on every screen (issue 29 item 4); kept when a long name is cut. */
+    if (a->st.snap.n_bearings > 1)
+        snprintf(which, sizeof which, " bearing %d/%d", a->bearing, a->st.snap.n_bearings);
+    snprintf(name, sizeof name, "%s%s%s ", acbb_editor_name(&a->ed), a->ed.modified ? "*" : "", which);
     int compact = x + full_tabs_width() + (int)strlen(name) + 1 > r.x + r.w;
     for (int i = 0; i < acbb_screen_count; i++) {
         const acbb_screen *s = acbb_screens[i];
@@ -91,7 +95,7 @@ static void progress_tail(const acbb_app *a, double *f, char *tail, size_t n)
     switch (a->st.phase) {
     case ACBB_WORKER_RUNNING:
         if (a->prog.valid && a->prog.eta_s == 0.0) snprintf(tail, n, "%2.0f%% finishing", 100 * *f);
-        else if (a->prog.valid && a->prog.eta_s > 60.0) /* issue 20 item 8: say it is long */
+        else if (acbb_progress_long(&a->prog)) /* issue 20 item 8: say it is long, once sure (29.6) */
             snprintf(tail, n, "%2.0f%% eta %s LONG", 100 * *f, eta);
         else snprintf(tail, n, "%2.0f%% eta %s", 100 * *f, eta);
         break;

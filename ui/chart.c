@@ -26,6 +26,9 @@ void acbb_chart_init(acbb_chart *c, int w, int h, double xmin, double xmax, doub
     c->ymax = ymax;
     memset(c->dots, 0, sizeof c->dots);
     memset(c->owner, -1, sizeof c->owner);
+    memset(c->seen, 0, sizeof c->seen);
+    memset(c->top_s, -1, sizeof c->top_s);
+    memset(c->bot_s, -1, sizeof c->bot_s);
 }
 
 static void set_dot(acbb_chart *c, int dx, int dy, int series)
@@ -35,6 +38,16 @@ static void set_dot(acbb_chart *c, int dx, int dy, int series)
     int row = dy / 4, col = dx / 2;
     c->dots[row][col] |= braille_bit[dy % 4][dx % 2];
     c->owner[row][col] = (signed char)series;
+    c->seen[row][col] |= (unsigned char)(1u << (series & 7));
+    int r = dy % 4;
+    if (c->top_s[row][col] < 0 || r < c->top_dy[row][col]) {
+        c->top_s[row][col] = (signed char)series;
+        c->top_dy[row][col] = (unsigned char)r;
+    }
+    if (c->bot_s[row][col] < 0 || r > c->bot_dy[row][col]) {
+        c->bot_s[row][col] = (signed char)series;
+        c->bot_dy[row][col] = (unsigned char)r;
+    }
 }
 
 static int to_dx(const acbb_chart *c, double x)
@@ -106,11 +119,47 @@ int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf)
     return c->owner[row][col];
 }
 
+int acbb_chart_shared(const acbb_chart *c, int row, int col)
+{
+    unsigned m = c->seen[row][col];
+    return (m & (m - 1)) != 0;
+}
+
+int acbb_chart_any_shared(const acbb_chart *c)
+{
+    for (int row = 0; row < c->h; row++)
+        for (int col = 0; col < c->w; col++)
+            if (acbb_chart_shared(c, row, col)) return 1;
+    return 0;
+}
+
+int acbb_chart_offset(const acbb_chart *c, int row, int col, int *moved, int *kept)
+{
+    if (!acbb_chart_shared(c, row, col)) return 0;
+    unsigned m = c->seen[row][col];
+    int hi = c->top_s[row][col], lo = c->bot_s[row][col], n = 0;
+    for (unsigned b = m; b; b &= b - 1) n++;
+    if (n != 2 || hi == lo) return 0; /* three curves, or one above and below the other */
+    if (row > 0 && c->seen[row - 1][col] == 0) {
+        *moved = hi;
+        *kept = lo;
+        return -1;
+    }
+    if (row + 1 < c->h && c->seen[row + 1][col] == 0) {
+        *moved = lo;
+        *kept = hi;
+        return 1;
+    }
+    return 0;
+}
+
 const char *acbb_chart_mark(int series)
 {
     static const char *const marks[] = { "o", "+", "x", "#" };
     return marks[(series < 0 ? 0 : series) % 4];
 }
+
+#define FLAT_REL 1e-6 /* spread / value under which a series is flat */
 
 static double nice_step(double raw)
 {
@@ -123,7 +172,10 @@ void acbb_chart_nice(double lo, double hi, int ticks, double *nlo, double *nhi, 
 {
     if (!isfinite(lo) || !isfinite(hi)) lo = hi = 0.0;
     if (hi < lo) { double t = lo; lo = hi; hi = t; }
-    if (!(hi - lo > 1e-9 * fmax(1.0, fabs(hi)))) { /* flat: a unit-ish band around it */
+    /* Flat: a band around it. A spread under a millionth of the value is
+     * solver noise (a spring pair's preload moves 1e-5 N at 300 N): an
+     * axis fitted to it drew the noise as spikes (issue 29 item 6). */
+    if (!(hi - lo > FLAT_REL * fmax(1.0, fmax(fabs(lo), fabs(hi))))) {
         double pad = fabs(lo) > 0 ? 0.05 * fabs(lo) : 1.0;
         lo -= pad;
         hi += pad;

@@ -17,7 +17,17 @@ typedef struct {
     double xmin, xmax, ymin, ymax;
     unsigned char dots[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W];
     signed char owner[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W]; /* -1: empty */
+    unsigned char seen[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W]; /* bit s: series s drew here */
+    /* The series of the topmost and of the bottom-most dot in each cell
+     * (-1: empty), and those dots' rows 0..3: where two curves share a
+     * cell, which one runs above. */
+    signed char top_s[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W], bot_s[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W];
+    unsigned char top_dy[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W], bot_dy[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W];
 } acbb_chart;
+
+/* The mark of a cell two or more series drew in (issue 29 item 5): one
+ * colour or one mark per cell would hide all but the last series there. */
+#define ACBB_CHART_SHARED_MARK "&"
 
 /* Clear a w x h (clamped to the maxima) chart with the given ranges; a
  * degenerate range is widened so a flat line sits mid-height. */
@@ -27,6 +37,15 @@ void acbb_chart_init(acbb_chart *c, int w, int h, double xmin, double xmax, doub
 void acbb_chart_plot(acbb_chart *c, const double *x, const double *y, size_t n, int series);
 /* The glyph of cell (row, col) into buf (>= 8 bytes); returns the owner. */
 int acbb_chart_cell(const acbb_chart *c, int row, int col, int utf8, char *buf);
+/* 1 if two or more series drew in cell (row, col). */
+int acbb_chart_shared(const acbb_chart *c, int row, int col);
+/* 1 if any cell is shared. */
+int acbb_chart_any_shared(const acbb_chart *c);
+/* Where two curves share cell (row, col) (issue 29 item 5), the upper one
+ * is shown one row up when that cell is empty, else the lower one a row
+ * down: returns -1 (up) or +1 (down) with the moved series in *moved and
+ * the one left in *kept; 0 when neither can move (the shared mark then). */
+int acbb_chart_offset(const acbb_chart *c, int row, int col, int *moved, int *kept);
 /* The cell (row, col) holding the dot that acbb_chart_plot draws for the
  * point (x, y); 0 (row/col unchanged) if the point is non-finite or outside
  * the ranges. Lets a caller write a marker where a point was plotted. */

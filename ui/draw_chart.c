@@ -49,28 +49,82 @@ static void ranges(const acbb_chart_spec *sp, int yticks, int xticks, double r[4
     }
 }
 
-/* Title row: the title with its unit, then each series' latest value in
- * its colour (a legend when there are several). */
-static void title_row(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp)
+/* One legend entry: the swatch (a line in colour, the series' mark
+ * without; `tight`: one cell of it and one space after the text), then the
+ * text. Returns the next column. */
+static int legend_item(acbb_app *a, int y, int col, int end, int s, const char *text, int tight)
 {
-    char head[160];
+    const char *sw = s < 0 ? ACBB_CHART_SHARED_MARK : a->term.colour ? a->term.g.hline : acbb_chart_mark(s);
+    acbb_role role = s < 0 ? ACBB_ROLE_NORMAL : series_role[s % 3];
+    acbb_put(a, y, col, 2, role, tight ? "%s" : "%s%s", sw, sw);
+    col += tight ? 2 : 3;
+    acbb_put(a, y, col, end - col, role, "%s", text);
+    return col + (int)strlen(text) + (tight ? 1 : 2);
+}
+
+/* Length of the words the names all start with ("bearing " of "bearing 0"
+ * and "bearing 1"), 0 if none or only one name. */
+static size_t common_words(const char *const *names, int n)
+{
+    if (n < 2) return 0;
+    size_t k = 0, words = 0;
+    for (;; k++) {
+        char ch = names[0][k];
+        for (int s = 1; s < n; s++)
+            if (names[s][k] != ch) return words;
+        if (ch == '\0') return words;
+        if (ch == ' ') words = k + 1;
+    }
+}
+
+/* The legend's texts at a level: 2 = name and latest value, 1 = name,
+ * 0 = the names less their common words (put once before them, *pre).
+ * Returns the columns they take after the title. */
+static int legend_texts(const acbb_chart_spec *sp, int ns, int level, int shared, char item[3][96],
+                        size_t *pre)
+{
+    *pre = level == 0 ? common_words(sp->names, ns) : 0;
+    int swatch = ns > 1 || shared ? 3 - (level == 0) : 0, need = *pre ? (int)*pre : 0;
+    for (int s = 0; s < ns; s++) {
+        double v = sp->ys[s][sp->n - 1];
+        if (level == 2 && isfinite(v)) snprintf(item[s], sizeof item[s], "%s %.2f", sp->names[s], v);
+        else snprintf(item[s], sizeof item[s], "%s", sp->names[s] + *pre);
+        need += swatch + (int)strlen(item[s]) + 2 - (level == 0);
+    }
+    return need + (shared ? 9 - 2 * (level == 0) : 0) - 2 + (level == 0);
+}
+
+/* Title row: the title with its unit, then a legend naming every series
+ * drawn (issue 29 item 4): with each latest value when they all fit, else
+ * the names, else the names less their common words; "&& both" where
+ * curves share cells (the mark drawn there). */
+static void title_row(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp, int shared)
+{
+    char head[160], item[3][96];
     snprintf(head, sizeof head, "%s [%s]", sp->title, sp->yunit);
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%s", head);
-    int col = r.x + (int)strlen(head) + 2;
-    for (int s = 0; s < sp->nser && sp->n > 0; s++) {
-        if (!isfinite(sp->ys[s][sp->n - 1])) continue;
-        char item[96];
-        snprintf(item, sizeof item, "%s %.2f", sp->names[s], sp->ys[s][sp->n - 1]);
-        int need = (int)strlen(item) + (sp->nser > 1 ? 2 : 0) + 2;
-        if (col + need > r.x + r.w) break;
-        if (sp->nser > 1) { /* legend swatch: a line in colour, the series' mark without */
-            const char *sw = a->term.colour ? a->term.g.hline : acbb_chart_mark(s);
-            acbb_put(a, r.y, col, 2, series_role[s % 3], "%s%s", sw, sw);
-            col += 3;
-        }
-        acbb_put(a, r.y, col, r.x + r.w - col, series_role[s % 3], "%s", item);
-        col += (int)strlen(item) + 2;
+    int col = r.x + (int)strlen(head) + 2, end = r.x + r.w, ns = sp->nser < 3 ? sp->nser : 3;
+    if (sp->n == 0) return;
+    size_t pre = 0;
+    int level = 2;
+    for (; level > 0; level--)
+        if (col + legend_texts(sp, ns, level, shared, item, &pre) <= end) break;
+    if (level == 0) legend_texts(sp, ns, 0, shared, item, &pre);
+    int tight = level == 0;
+    if (pre) {
+        acbb_put(a, r.y, col, end - col, ACBB_ROLE_NORMAL, "%.*s", (int)pre, sp->names[0]);
+        col += (int)pre;
     }
+    for (int s = 0; s < ns; s++) {
+        int w = (ns > 1 || shared ? 3 - tight : 0) + (int)strlen(item[s]);
+        if (col + w > end) break;
+        if (ns > 1 || shared) col = legend_item(a, r.y, col, end, s, item[s], tight);
+        else {
+            acbb_put(a, r.y, col, end - col, series_role[0], "%s", item[s]);
+            col += (int)strlen(item[s]) + 2;
+        }
+    }
+    if (shared && col + 7 - 2 * tight <= end) legend_item(a, r.y, col, end, -1, "both", tight);
 }
 
 /* y tick labels (with unit) down the left, one per distinct row. */
@@ -115,27 +169,62 @@ static void x_labels(acbb_app *a, int y, int x0, int pw, const acbb_chart_spec *
         acbb_put(a, y, unit_at - 18, 17, ACBB_ROLE_NORMAL, "* = steady solve");
 }
 
-void acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles)
+/* The glyph series s leaves in an empty cell next to a shared one it was
+ * moved out of: its mark without colour, else dots on the side facing its
+ * curve (the bottom ones above the shared cell, the top ones below). */
+static const char *moved_glyph(const acbb_app *a, int s, int dir)
 {
+    if (!a->term.colour) return acbb_chart_mark(s);
+    if (a->term.g.utf8) return dir < 0 ? "\xe2\xa3\x80" : "\xe2\xa0\x89"; /* U+28C0, U+2809 */
+    return dir < 0 ? "." : "'";
+}
+
+int acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_role *roles, int nroles)
+{
+    int amp = 0;
+    static char glyph[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W][8];
+    static signed char who[ACBB_CHART_MAX_H][ACBB_CHART_MAX_W]; /* role index; -1 normal */
+    for (int row = 0; row < c->h; row++)
+        for (int col = 0; col < c->w; col++) {
+            int owner = acbb_chart_cell(c, row, col, a->term.g.utf8, glyph[row][col]);
+            /* Without colour the dots cannot say whose they are: the mark does. */
+            if (owner >= 0 && !a->term.colour) strcpy(glyph[row][col], acbb_chart_mark(owner));
+            who[row][col] = (signed char)owner;
+        }
+    /* Where several series drew, one colour or mark would hide the others
+     * (issue 29 item 5): the upper curve moves a row up (or the lower one
+     * down) into an empty cell; where none is free, the shared mark. */
+    for (int row = 0; row < c->h; row++)
+        for (int col = 0; col < c->w; col++) {
+            if (!acbb_chart_shared(c, row, col)) continue;
+            int moved, kept, d = acbb_chart_offset(c, row, col, &moved, &kept);
+            if (d != 0 && who[row + d][col] < 0) {
+                strcpy(glyph[row + d][col], moved_glyph(a, moved, d));
+                who[row + d][col] = (signed char)moved;
+                who[row][col] = (signed char)kept;
+                if (!a->term.colour) strcpy(glyph[row][col], acbb_chart_mark(kept));
+            } else {
+                strcpy(glyph[row][col], ACBB_CHART_SHARED_MARK);
+                who[row][col] = -1;
+                amp = 1;
+            }
+        }
     for (int row = 0; row < c->h; row++) {
         move(y + row, x);
         for (int col = 0; col < c->w; col++) {
-            char g[8];
-            int owner = acbb_chart_cell(c, row, col, a->term.g.utf8, g);
-            /* Without colour the dots cannot say whose they are: the mark does. */
-            if (owner >= 0 && !a->term.colour) strcpy(g, acbb_chart_mark(owner));
-            acbb_role_on(a, owner >= 0 ? roles[owner % nroles] : ACBB_ROLE_NORMAL);
-            addstr(g);
+            acbb_role_on(a, who[row][col] >= 0 ? roles[who[row][col] % nroles] : ACBB_ROLE_NORMAL);
+            addstr(glyph[row][col]);
         }
     }
     acbb_role_on(a, ACBB_ROLE_NORMAL);
+    return amp;
 }
 
 void acbb_chart_draw(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp)
 {
     if (r.h < 4 || r.w < 24) return;
-    title_row(a, r, sp);
     if (sp->n == 0) {
+        title_row(a, r, sp, 0);
         acbb_put(a, r.y + 1, r.x + 2, r.w - 2, ACBB_ROLE_NORMAL, "(no data yet: r starts a run)");
         return;
     }
@@ -148,7 +237,8 @@ void acbb_chart_draw(acbb_app *a, acbb_rect r, const acbb_chart_spec *sp)
     /* The steady solve is a point, not the end of the transient's line. */
     size_t line_n = sp->polish && sp->n > 1 ? sp->n - 1 : sp->n;
     for (int s = 0; s < sp->nser; s++) acbb_chart_plot(c, sp->x, sp->ys[s], line_n, s);
-    acbb_chart_blit(a, c, r.y + 1, r.x + lw, series_role, 3);
+    int amp = acbb_chart_blit(a, c, r.y + 1, r.x + lw, series_role, 3);
+    title_row(a, r, sp, amp);
     for (int s = 0; sp->polish && s < sp->nser && line_n < sp->n; s++) {
         int row, col;
         if (acbb_chart_locate(c, sp->x[sp->n - 1], sp->ys[s][sp->n - 1], &row, &col))

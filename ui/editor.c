@@ -6,7 +6,7 @@
 
 #define ACBB_EDITOR_LOCK_S 5.0 /* the TUI waits this long for another save */
 
-static int scenes_differ(const acbb_scene *a, const acbb_scene *b)
+int acbb_editor_differs(const acbb_scene *a, const acbb_scene *b)
 {
     /* Field by field as text: struct padding makes memcmp unreliable, and
      * the text is what the file would hold. */
@@ -21,7 +21,7 @@ static int scenes_differ(const acbb_scene *a, const acbb_scene *b)
 
 static void refresh_modified(acbb_editor *e)
 {
-    e->modified = scenes_differ(&e->scene, &e->saved);
+    e->modified = acbb_editor_differs(&e->scene, &e->saved);
 }
 
 void acbb_editor_init(acbb_editor *e)
@@ -77,7 +77,7 @@ acbb_status acbb_editor_set(acbb_editor *e, size_t i, const char *text, acbb_err
     acbb_status rc = acbb_scene_set(&trial, key, text, err);
     if (rc != ACBB_OK) return rc;
     /* Re-entering the current value is not an edit. */
-    if (!scenes_differ(&trial, &e->scene)) return ACBB_OK;
+    if (!acbb_editor_differs(&trial, &e->scene)) return ACBB_OK;
     push_undo(e);
     e->scene = trial;
     refresh_modified(e);

@@ -53,6 +53,9 @@ int acbb_editor_undo(acbb_editor *e);
 acbb_status acbb_editor_save(acbb_editor *e, const char *path, acbb_error *err);
 /* Save to the current path even though it changed on disk. */
 acbb_status acbb_editor_overwrite(acbb_editor *e, acbb_error *err);
+/* 1 if two scenes differ in any field as the preset file would write it
+ * (struct padding makes memcmp unreliable). */
+int acbb_editor_differs(const acbb_scene *a, const acbb_scene *b);
 /* Base name of the path for titles ("(default)" without one). */
 const char *acbb_editor_name(const acbb_editor *e);
 

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "acc_chart.h"
+#include "results.h"
 #include "screens.h"
 #include "export.h"
 
@@ -33,6 +34,7 @@ void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic)
     snprintf(a->acc_scene, sizeof a->acc_scene, "%s%s", acbb_editor_name(&a->ed),
              a->ed.modified ? "*" : "");
     a->acc_top = 0;
+    acbb_results_ran(a, ACBB_RAN_BENCH);
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "accuracy benchmark started: %zu settings%s (x cancels)",
                  acbb_accuracy_plan_size(&o), with_dynamic ? " with the dynamic level" : "");
 }
@@ -84,10 +86,13 @@ static void export_plot(acbb_app *a)
     snprintf(title, sizeof title, "acbb bench accuracy %s (1 run per setting)", a->acc_scene);
     acbb_error err = { { 0 } };
     int written = 0;
-    if (acbb_export_accuracy(a->plot_dir, a->bst.rows, a->bst.n, title, &written, &err) != ACBB_OK)
+    char sfx[16];
+    if (acbb_export_accuracy(a->plot_dir, a->bst.rows, a->bst.n, title, sfx, sizeof sfx, &written, &err) !=
+        ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
     else
-        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d accuracy plots (PNG+SVG) to %s/", written, a->plot_dir);
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d accuracy plots (PNG+SVG) to %s/%s%s%s", written,
+                     a->plot_dir, sfx[0] ? " as accuracy" : "", sfx, sfx[0] ? " (earlier kept)" : "");
 }
 
 /* ---- heading ---- */
@@ -105,6 +110,8 @@ static void draw_heading(acbb_app *a)
     case ACBB_BENCH_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "b runs it on the edited scene, one run per setting; B adds the dynamic level");
+        if (acbb_results_note(a, ACBB_RAN_BENCH))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_BENCH));
         break;
     case ACBB_BENCH_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, s->cancel_requested, s->started_s, s->done, s->total,

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "acbb/units.h"
+#include "results.h"
 #include "screens.h"
 
 typedef struct {
@@ -71,6 +72,8 @@ static void draw(acbb_app *a)
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER,
              "TE vs WTE: the edited scene with thermal expansion on / off   t: run");
     if (c->phase == ACBB_CMP_NONE) {
+        const char *note = acbb_results_note(a, ACBB_RAN_COMPARE);
+        if (note) acbb_put_wrap(a, y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note);
         acbb_put(a, y + 1, b.x + 2, b.w - 2, ACBB_ROLE_NORMAL,
                  "Press t to run both variants to steady state.");
         return;
@@ -133,6 +136,8 @@ const acbb_screen acbb_screen_compare = {
 void acbb_screen_compare_start(acbb_app *a)
 {
     acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
+    a->hide.compare = 0; /* this one belongs to the open preset */
+    acbb_results_ran(a, ACBB_RAN_COMPARE);
     acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
 

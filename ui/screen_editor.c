@@ -9,7 +9,7 @@
 #include "screens.h"
 #include "acbb/preset_info.h"
 
-#define INFO_ROWS 4 /* help of the selected field (2 rows, 1 when a refusal takes 3) */
+#define INFO_ROWS 4 /* help and range of the selected field (1 row when a refusal takes 3) */
 
 static int list_rows(const acbb_app *a)
 {
@@ -23,6 +23,26 @@ static void keep_visible(acbb_app *a)
     size_t rows = (size_t)list_rows(a);
     if (e->cursor < e->top) e->top = e->cursor;
     if (e->cursor >= e->top + rows) e->top = e->cursor - rows + 1;
+}
+
+/* Columns wide enough for every section and key name (issue 29 item 7:
+ * "surroundings" pushed its row out of line); a range or list of choices
+ * longer than the rest of the row ends in an ellipsis (the info rows
+ * below give it whole). */
+#define SECTION_W 12
+#define KEY_W 26
+#define VALUE_W 14
+
+static void put_row(acbb_app *a, int y, acbb_role role, int changed, const acbb_field_info *f,
+                    const char *val, const char *range)
+{
+    acbb_rect b = a->lay.body;
+    int x = b.x + 1 + SECTION_W + 1 + KEY_W + 1 + VALUE_W + 1, room = b.x + b.w - x;
+    acbb_put(a, y, b.x, b.w, role, "%c%-*s %-*s %-*s", changed ? '*' : ' ', SECTION_W, f->section, KEY_W,
+             f->key, VALUE_W, val);
+    if (room <= 0) return;
+    if ((int)strlen(range) <= room) acbb_put(a, y, x, room, role, "%s", range);
+    else acbb_put(a, y, x, room, role, "%.*s%s", room - 1, range, a->term.g.ellipsis);
 }
 
 static void draw(acbb_app *a)
@@ -47,15 +67,16 @@ static void draw(acbb_app *a)
             acbb_role_on(a, role);
             mvhline(b.y + 1 + r, b.x, ' ', b.w);
         }
-        acbb_put(a, b.y + 1 + r, b.x, b.w, role, "%c%-10s %-27s %-14s %s",
-                 strcmp(val, was) != 0 ? '*' : ' ', f->section, f->key, val, range);
+        put_row(a, b.y + 1 + r, role, strcmp(val, was) != 0, f, val, range);
     }
     const acbb_field_info *f = acbb_scene_field(e->cursor);
     int y = b.y + 1 + rows;
-    int help_rows = a->edit_error[0] ? 1 : 2;
+    int help_rows = a->edit_error[0] ? 1 : INFO_ROWS;
     if (f) {
-        char text[1024];
-        snprintf(text, sizeof text, "%s.%s: %s", f->section, f->key, f->help);
+        char text[1024], range[192];
+        acbb_scene_field_range(e->cursor, range, sizeof range);
+        /* The whole range or list of choices: a row may have to cut it. */
+        snprintf(text, sizeof text, "%s.%s: %s; allowed: %s", f->section, f->key, f->help, range);
         acbb_put_wrap(a, y, b.x, b.w, help_rows, ACBB_ROLE_NORMAL, text);
     }
     if (a->edit_error[0]) {

@@ -10,7 +10,7 @@
 
 #define COL_W 40
 #define WHAT_W (COL_W - 15) /* " %-12s %s" leaves this for the text */
-#define HELP_MAX 160
+#define HELP_MAX 240
 
 static const acbb_help_line global_help[] = {
     { "Tab  S-Tab", "next / previous screen" },
@@ -40,6 +40,32 @@ static const acbb_help_line run_help[] = {
     { "b  B", "accuracy benchmark (B with the dynamic level)" },
     { "t", "TE vs WTE to steady state" },
     { "g", "export PNG+SVG (gnuplot) of the run" },
+    { NULL, NULL },
+};
+
+/* What the screens' short names mean (issue 29 item 7: a_i was an angle
+ * on one screen and a semi-axis on another, and no screen said). */
+static const acbb_help_line glossary[] = {
+    { "TE  WTE", "with / without thermal expansion" },
+    { "IR  OR", "inner ring / outer ring" },
+    { "Qi  Qo", "ball load on the inner / outer race, N" },
+    { "alpha_i _o", "contact angle at the inner / outer race" },
+    { "a_i  b_i", "contact ellipse semi-axes at the inner race (a_o b_o: outer)" },
+    { "pi  po", "peak Hertz contact pressure, inner / outer" },
+    { "P_L P_t P_s", "losses: lubricant shear, slip (traction), spin" },
+    { "P_r  P_v", "losses: rolling hysteresis, drag in the oil-air" },
+    { "rise", "temperature above ambient" },
+    { "res", "residual: largest |dT/dt| in K/s; steady state below the tolerance" },
+    { "C", "basic dynamic load rating" },
+    { "L10r", "rating life 90 % of bearings reach, h" },
+    { "Lnm", "modified life = a1 a_ISO L10r, h" },
+    { "a_ISO", "life modification factor (lubrication, contamination), at most 50" },
+    { "kappa", "viscosity ratio: the oil's at running temperature / the one needed" },
+    { "s0", "static safety: static load rating / largest static load" },
+    { "edge  EDGE", "margin of the contact ellipse to the shoulder; EDGE: over it" },
+    { ">1e+09 h", "a life longer than the largest reported" },
+    { "LONG", "the run needs over a minute more (steady estimate)" },
+    { "&", "chart: two or more curves in one cell" },
     { NULL, NULL },
 };
 
@@ -127,6 +153,8 @@ static void build(help_rows *h)
         add(h, title, NULL);
         add_lines(h, s->help);
     }
+    add(h, "Glossary", NULL);
+    add_lines(h, glossary);
 }
 
 void acbb_screen_help_draw(acbb_app *a)

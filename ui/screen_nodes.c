@@ -25,8 +25,13 @@ static void draw(acbb_app *a)
             if (i >= s->n_nodes) return;
             const char *name = s->node_names ? s->node_names[i] : "?";
             acbb_role role = i == a->node_hit ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL;
-            acbb_put(a, b.y + 1 + r, b.x + c * cw, cw - 1, role, "%-25.25s%7.2f%+7.2f",
-                     name, s->T[i], s->T[i] - amb);
+            /* A name longer than its column ends in an ellipsis, not silently
+             * cut (issue 29 item 7); / finds a node by any part of it. */
+            int nw = cw - 1 - 14, x = b.x + c * cw; /* " 123.45 +12.34" */
+            if (nw < 8) nw = 8;
+            if ((int)strlen(name) <= nw) acbb_put(a, b.y + 1 + r, x, nw, role, "%s", name);
+            else acbb_put(a, b.y + 1 + r, x, nw, role, "%.*s%s", nw - 1, name, a->term.g.ellipsis);
+            acbb_put(a, b.y + 1 + r, x + nw, cw - 1 - nw, role, " %6.2f %+6.2f", s->T[i], s->T[i] - amb);
         }
     }
 }

@@ -100,9 +100,14 @@ void acbb_screen_plot_export(acbb_app *a)
         acbb_app_msg(a, ACBB_ROLE_WARN, "nothing to plot yet: r runs the scene, then g exports it");
         return;
     }
-    if (acbb_export_plots(a->plot_dir, &a->hist, &a->st.snap, title, &written, &err) != ACBB_OK)
+    char sfx[16];
+    if (acbb_export_plots(a->plot_dir, &a->hist, &a->st.snap, title, sfx, sizeof sfx, &written, &err) !=
+        ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
-    else
+    else if (!sfx[0])
         acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d plots (PNG+SVG) to %s/", written, a->plot_dir);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %d plots (PNG+SVG) to %s/ named *%s (earlier kept)", written,
+                     a->plot_dir, sfx);
 }
 

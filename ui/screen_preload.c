@@ -17,6 +17,8 @@
 #include "acbb/preload_map.h"
 #include "acbb/units.h"
 #include "screen_preload.h"
+#include "results.h"
+#include "export.h"
 #include "screens.h"
 
 #define PM_SPEEDS 12    /* chart rows: the heading, the rows and the axis fit a 24-row terminal */
@@ -37,6 +39,7 @@ struct acbb_pmap_ui {
     acbb_job_info info; /* the UI's copies, once per frame */
     pm_result view;
     unsigned long seen_run;
+    unsigned long hidden_run; /* a run of a preset no longer open (results.c) */
     acbb_pmap_opts next; /* what r runs: the ranges and limits as typed */
     int chosen;          /* the ranges were typed (else they follow the scene) */
 };
@@ -150,6 +153,12 @@ void acbb_preload_take(acbb_app *a)
 {
     struct acbb_pmap_ui *p = a->pmap;
     acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
+    int edited = p->info.phase > ACBB_JOB_RUNNING && acbb_editor_differs(&p->scene, &a->ed.scene);
+    if (edited) a->hide.edited |= 1u << ACBB_RAN_PRELOAD; /* results.c */
+    if (p->info.run_id == p->hidden_run || edited) { /* reads as never started */
+        memset(&p->info, 0, sizeof p->info);
+        memset(&p->view, 0, sizeof p->view);
+    }
     if (p->info.phase <= ACBB_JOB_RUNNING || p->info.run_id == p->seen_run) return;
     p->seen_run = p->info.run_id;
     int with = 0;
@@ -165,6 +174,19 @@ void acbb_preload_take(acbb_app *a)
                      p->view.o.n_speeds);
     else
         acbb_app_msg(a, ACBB_ROLE_ERROR, "preload map failed: %s", p->info.message);
+}
+
+void acbb_preload_drop(acbb_app *a)
+{
+    struct acbb_pmap_ui *p = a->pmap;
+    acbb_job_cancel(p->job);
+    acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
+    p->hidden_run = p->info.run_id;
+}
+
+int acbb_preload_running(const acbb_app *a)
+{
+    return a->pmap->info.phase == ACBB_JOB_RUNNING;
 }
 
 /* ---- ranges and limits ---- */
@@ -301,15 +323,8 @@ static void export_chart(acbb_app *a)
     };
     acbb_plot_xy px = { "preload window", "inner-ring speed, rpm", "preload, N", sr, 2 };
     char png[PATH_MAX + 32], svg[PATH_MAX + 32];
-    snprintf(png, sizeof png, "%.*s/preload_window.png", PATH_MAX, a->plot_dir);
-    snprintf(svg, sizeof svg, "%.*s/preload_window.svg", PATH_MAX, a->plot_dir);
     acbb_error err = { { 0 } };
-    if (mkdir(a->plot_dir, 0777) != 0 && errno != EEXIST) {
-        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: cannot create %s: %s", a->plot_dir,
-                     strerror(errno));
-        return;
-    }
-    if (acbb_plot_xy_files(&px, png, svg, 1000, 600, &err) != ACBB_OK)
+    if (acbb_export_xy(a->plot_dir, "preload_window", &px, 1000, 600, png, svg, sizeof png, &err) != ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
     else
         acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s", png, svg);
@@ -409,7 +424,8 @@ static void draw(acbb_app *a)
     draw_heading(a, b);
     const pm_result *v = &a->pmap->view;
     if (a->pmap->info.phase == ACBB_JOB_IDLE) {
-        acbb_put(a, b.y + 3, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "(no preload map yet: r runs one)");
+        const char *note = acbb_results_note(a, ACBB_RAN_PRELOAD);
+        acbb_put_wrap(a, b.y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note ? note : "(no preload map yet: r runs one)");
         return;
     }
     draw_limits(a, b.y + 2, b, &v->o);

@@ -16,5 +16,9 @@ int acbb_preload_wake_fd(const acbb_app *a);
 void acbb_preload_drain(acbb_app *a);
 /* Once per frame: copy the published result, announce the end of a run. */
 void acbb_preload_take(acbb_app *a);
+/* Another preset was opened: cancel a running map, hide the last result. */
+void acbb_preload_drop(acbb_app *a);
+/* 1 while a map runs (as of the last frame). */
+int acbb_preload_running(const acbb_app *a);
 
 #endif

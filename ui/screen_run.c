@@ -9,6 +9,7 @@
 #include <string.h>
 #include "acbb/schedule.h"
 #include "acbb/units.h"
+#include "acbb/life.h"
 #include "screens.h"
 
 /* The network node that the snapshot's T_outer_ring reads: the one whose
@@ -159,8 +160,9 @@ static void mech_panel(acbb_app *a, acbb_rect r)
     char item[6][288];
     ball_item(a, item[0], sizeof item[0], "Qi", offsetof(acbb_ball_view, Qi), 1, " N");
     ball_item(a, item[1], sizeof item[1], "Qo", offsetof(acbb_ball_view, Qo), 1, " N");
-    ball_item(a, item[2], sizeof item[2], "a_i", offsetof(acbb_ball_view, alpha_i), R2D, a->term.g.deg);
-    ball_item(a, item[3], sizeof item[3], "a_o", offsetof(acbb_ball_view, alpha_o), R2D, a->term.g.deg);
+    /* alpha, not a: a_i is the contact ellipse's semi-axis on the Balls screen. */
+    ball_item(a, item[2], sizeof item[2], "alpha_i", offsetof(acbb_ball_view, alpha_i), R2D, a->term.g.deg);
+    ball_item(a, item[3], sizeof item[3], "alpha_o", offsetof(acbb_ball_view, alpha_o), R2D, a->term.g.deg);
     snprintf(item[4], sizeof item[4], "growth um: ball %.2f IR %.2f OR %.2f", s->exp_ball * UM,
              (s->exp_inner + s->exp_inner_cen) * UM, s->exp_outer * UM);
     snprintf(item[5], sizeof item[5], "Fx %.0f N dx %.2f um heat %.2f/%.2f W", s->reaction_x,
@@ -220,30 +222,42 @@ void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role
     schedule_text(a, buf, n);
 }
 
+/* A life in hours, "%.3g"; ">1e+09" at the cap lives are reported as
+ * (ACBB_LIFE_CAP_H: the true life is longer, issue 29 item 7). */
+static void fmt_life(double h, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s%.3g", h >= ACBB_LIFE_CAP_H ? ">" : "", h);
+}
+
 /* One line of rating life and static safety (MODEL.md 15, life.h) of the
  * bearing shown (a set's chosen one: the worker publishes its snapshot):
- * C, L10r, Lnm, s0 and the shoulder margin, single-spaced when 80 columns
- * need it; a_ISO and kappa after them when the row has room (never cut
- * inside a number). */
+ * C, L10r, Lnm, s0 and the shoulder margin, then a_ISO and kappa (Lnm =
+ * a1 a_ISO L10r, so a_ISO says why Lnm is 50 x L10r at its cap). The
+ * widest form that fits: double-spaced with both, single-spaced with
+ * both, with a_ISO alone, without them (never cut inside a number). */
 static int life_line(acbb_app *a, int y, acbb_rect r)
 {
     const acbb_life *L = &a->st.snap.life;
     if (r.h < 6) return 0;
-    char who[16] = "", edge[48], line[256];
+    char who[16] = "", edge[48], line[256], l10[24], lnm[24];
     if (a->st.snap.n_bearings > 1) snprintf(who, sizeof who, " b%d", a->bearing);
     if (L->edge_ball < 0) snprintf(edge, sizeof edge, "edge -");
     else snprintf(edge, sizeof edge, "%s %.1f deg", L->edge_loaded ? "EDGE" : "edge", L->edge_margin_deg);
-    int n = 0;
-    for (int gap = 2; gap >= 1; gap--) {
-        n = snprintf(line, sizeof line, "Life%s: C %.3g kN%s%*sL10r %.3g h%*sLnm %.3g h%*ss0 %.3g%*s%s",
-                     who, L->C * 1e-3, L->estimated ? " est." : "", gap, "", L->L10r_h, gap, "",
-                     L->Lnmr_h, gap, "", L->s0_min, gap, "", edge);
+    fmt_life(L->L10r_h, l10, sizeof l10);
+    fmt_life(L->Lnmr_h, lnm, sizeof lnm);
+    static const struct { int gap, extra; } forms[] = { { 2, 2 }, { 1, 2 }, { 1, 1 }, { 2, 0 }, { 1, 0 } };
+    for (size_t f = 0; f < sizeof forms / sizeof forms[0]; f++) {
+        int gap = forms[f].gap;
+        int n = snprintf(line, sizeof line, "Life%s: C %.3g kN%s%*sL10r %s h%*sLnm %s h%*ss0 %.3g%*s%s", who,
+                         L->C * 1e-3, L->estimated ? " est." : "", gap, "", l10, gap, "", lnm, gap, "",
+                         L->s0_min, gap, "", edge);
+        if (n > 0 && forms[f].extra > 0 && (size_t)n < sizeof line)
+            n += snprintf(line + n, sizeof line - (size_t)n, "%*sa_ISO %.3g", gap, "", L->a_iso);
+        if (n > 0 && forms[f].extra > 1 && (size_t)n < sizeof line)
+            n += snprintf(line + n, sizeof line - (size_t)n, "%*skappa %.3g%s", gap, "", L->kappa,
+                          L->kappa_clamped ? " (<0.1: a_ISO at 0.1)" : "");
         if (n <= r.w) break;
     }
-    if (n >= 0 && (size_t)n < sizeof line)
-        snprintf(line + n, sizeof line - (size_t)n, "  a_ISO %.3g  kappa %.3g%s", L->a_iso,
-                 L->kappa, L->kappa_clamped ? " < 0.1: a_ISO at 0.1" : "");
-    if ((int)strlen(line) > r.w && n >= 0 && (size_t)n < sizeof line) line[n] = '\0';
     acbb_put(a, y, r.x, r.w, L->edge_loaded ? ACBB_ROLE_ERROR : ACBB_ROLE_NORMAL, "%s", line);
     return 1;
 }

@@ -10,6 +10,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "export.h"
+#include "results.h"
 #include "screens.h"
 
 #define NUM_W 9        /* "at low", "at high" */
@@ -34,6 +36,7 @@ static void start(acbb_app *a)
         return;
     }
     a->sn.top = 0;
+    acbb_results_ran(a, ACBB_RAN_SENS);
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sensitivity of %s%s started on %s%s (x cancels)",
                  o.delta_te ? "TE-WTE " : "", o.metric, acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "");
@@ -84,6 +87,8 @@ static void draw_heading(acbb_app *a, acbb_rect b)
     case ACBB_JOB_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "< > metric  d TE-WTE  y Morris  r/Enter runs it on the edited scene");
+        if (acbb_results_note(a, ACBB_RAN_SENS))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_SENS));
         break;
     case ACBB_JOB_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, v->job.cancel_requested, v->job.started_s, v->done,
@@ -213,6 +218,33 @@ static void draw(acbb_app *a)
     draw_table(a, t);
 }
 
+/* ---- export ---- */
+
+/* g: the tornado chart of the finished run, as `acbb sensitivity --plot`
+ * draws it (issue 29 item 8: g exported the Run screen's plots instead). */
+static void export_plot(acbb_app *a)
+{
+    const acbb_sens_view *v = &a->snv;
+    if (!v->have_result || v->res.n == 0) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "%s", v->job.phase == ACBB_JOB_RUNNING
+                     ? "the sensitivity run is still running" : "no sensitivity result to plot (r runs one)");
+        return;
+    }
+    acbb_tornado_bar bars[ACBB_SENS_MAX];
+    for (size_t i = 0; i < v->res.n; i++)
+        bars[i] = (acbb_tornado_bar){ v->res.rows[i].in.key, v->res.rows[i].ok_lo ? v->res.rows[i].y_lo : NAN,
+                                      v->res.rows[i].ok_hi ? v->res.rows[i].y_hi : NAN };
+    char metric[ACBB_SENS_METRIC + 16], title[PATH_MAX + 160], png[PATH_MAX + 32], svg[PATH_MAX + 32];
+    snprintf(metric, sizeof metric, "%s%s", v->res.metric, v->res.delta_te ? " (TE - WTE)" : "");
+    snprintf(title, sizeof title, "%s: %s over each plausible range", acbb_editor_name(&a->ed), metric);
+    acbb_error err = { { 0 } };
+    if (acbb_export_tornado(a->plot_dir, "sensitivity", bars, v->res.n, v->res.ok0 ? v->res.y0 : NAN, title,
+                            metric, png, svg, sizeof png, &err) != ACBB_OK)
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s", png, svg);
+}
+
 /* ---- keys ---- */
 
 static int on_key(acbb_app *a, int ch)
@@ -221,6 +253,7 @@ static int on_key(acbb_app *a, int ch)
     if (acbb_scroll_key(ch, page, (int)a->snv.res.n, &a->sn.top)) return 1;
     switch (ch) {
     case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
+    case 'g': export_plot(a); return 1;
     case 'x':
         if (!cancel(a)) acbb_app_msg(a, ACBB_ROLE_WARN, "no sensitivity run (r starts one)");
         return 1;
@@ -258,6 +291,7 @@ static const acbb_help_line help[] = {
     { "c", "type a metric (JSON path)" },
     { "d", "metric TE - WTE on/off" },
     { "y", "Morris off/r=4/r=10 (mu* sigma)" },
+    { "g", "export the tornado chart (PNG+SVG)" },
     { "j k PgUp/Dn", "scroll the table" },
     { NULL, NULL },
 };

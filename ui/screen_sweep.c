@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "export.h"
+#include "results.h"
 #include "screens.h"
 
 #define TABLE_W 27   /* the points' table at the right: "%10s %13s" + a margin */
@@ -176,6 +178,7 @@ static void start(acbb_app *a)
         return;
     }
     a->sw.top = 0;
+    acbb_results_ran(a, ACBB_RAN_SWEEP);
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep started on %s%s: %s (x cancels)", acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "", spec);
 }
@@ -274,7 +277,8 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
                            .memo = &a->memo[4], .memo_key = a->swv.job.run_id * 64 + (unsigned)m,
                            .x_fixed = isfinite(span[0]), .x0 = span[0], .x1 = span[1] };
     if (a->swv.job.phase == ACBB_JOB_IDLE) {
-        acbb_put(a, r.y + 1, r.x + 2, r.w - 2, ACBB_ROLE_DIM, "(no sweep yet: r runs one)");
+        const char *note = acbb_results_note(a, ACBB_RAN_SWEEP);
+        acbb_put_wrap(a, r.y + 1, r.x + 2, r.w - 2, 3, ACBB_ROLE_DIM, note ? note : "(no sweep yet: r runs one)");
         return;
     }
     if (m < 0) {
@@ -318,9 +322,24 @@ static const char *first_failure(const acbb_sweep_view *v)
     return NULL;
 }
 
+/* The last sweep's points belong to its key and range: once s or e chose
+ * others they are not shown under the new heading (issue 29 item 2). */
+static int superseded(const acbb_app *a)
+{
+    char spec[192];
+    snprintf(spec, sizeof spec, "%s=%s", a->sw.key, a->sw.range);
+    return a->swv.job.phase > ACBB_JOB_RUNNING && strcmp(a->swv.spec, spec) != 0;
+}
+
 static void draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
+    if (superseded(a)) {
+        memset(&a->swv, 0, sizeof a->swv); /* this frame draws as before any sweep */
+        draw_heading(a, b);
+        acbb_put(a, b.y + 3, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "(no sweep of this key and range yet: r runs it)");
+        return;
+    }
     draw_heading(a, b);
     const char *path, *label;
     int m = recorded(a, &path, &label);
@@ -339,6 +358,36 @@ static void draw(acbb_app *a)
     draw_table(a, table, m, unit);
 }
 
+/* ---- export ---- */
+
+/* g: the chart of the finished sweep, the points joined (issue 29 item 8:
+ * g exported the Run screen's plots instead). */
+static void export_plot(acbb_app *a)
+{
+    const char *path, *label;
+    int m = recorded(a, &path, &label);
+    double x[ACBB_WHATIF_MAX_POINTS], y[ACBB_WHATIF_MAX_POINTS], span[2];
+    size_t n = a->swv.job.phase > ACBB_JOB_RUNNING && m >= 0 ? curve(&a->swv, m, x, y, span) : 0;
+    if (n == 0) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "%s", a->swv.job.phase == ACBB_JOB_RUNNING
+                     ? "the sweep is still running" : "no swept point of this metric to plot (r runs a sweep)");
+        return;
+    }
+    char unit[16], xl[ACBB_SWEEP_KEY + 32], yl[160], title[PATH_MAX + 64], png[PATH_MAX + 32], svg[PATH_MAX + 32];
+    long fi = find_field(a->swv.key);
+    snprintf(xl, sizeof xl, "%s, %s", a->swv.key, fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
+    acbb_metric_unit(path, unit, sizeof unit);
+    snprintf(yl, sizeof yl, "%s, %s", label, unit);
+    snprintf(title, sizeof title, "%s: sweep of %s", acbb_editor_name(&a->ed), a->swv.key);
+    acbb_plot_series sr = { label, x, y, n, 1, 1, 1 };
+    acbb_plot_xy px = { title, xl, yl, &sr, 1 };
+    acbb_error err = { { 0 } };
+    if (acbb_export_xy(a->plot_dir, "sweep", &px, 1000, 600, png, svg, sizeof png, &err) != ACBB_OK)
+        acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
+    else
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s", png, svg);
+}
+
 /* ---- keys ---- */
 
 static int cancel(acbb_app *a)
@@ -354,6 +403,7 @@ static int on_key(acbb_app *a, int ch)
     if (acbb_scroll_key(ch, page, (int)a->swv.total, &a->sw.top)) return 1;
     switch (ch) {
     case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
+    case 'g': export_plot(a); return 1;
     case 'x':
         if (!cancel(a)) acbb_app_msg(a, ACBB_ROLE_WARN, "no sweep running (r starts one)");
         return 1;
@@ -387,6 +437,7 @@ static const acbb_help_line help[] = {
     { "< > h l", "cycle the metric" },
     { "c", "type a metric (JSON path)" },
     { "r  Enter", "sweep the edited scene" },
+    { "g", "export the chart (PNG+SVG)" },
     { "x  Esc", "cancel the sweep" },
     { "j k PgUp/Dn", "scroll the points" },
     { NULL, NULL },

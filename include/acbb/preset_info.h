@@ -1,5 +1,5 @@
 /* acbb — what a preset says about itself, for the teaching library: its
- * header comment holds a title (the first comment line), a "Look at:"
+ * header comment holds a title (the first paragraph), a "Look at:"
  * paragraph (what to watch, for `acbb presets` and the TUI) and an
  * "Expect: STATUS" line (the run's documented end: converged, runaway, ...;
  * tests/test_presets.sh holds every shipped preset to it).
@@ -15,7 +15,7 @@ extern "C" {
 #endif
 
 typedef struct {
-    char title[160];     /* first comment line, "" if none */
+    char title[512];     /* the first paragraph joined into one line, "" if none */
     char look_at[1024];  /* the "Look at:" paragraph joined into one line, "" if none */
     char expect[32];     /* the status after "Expect:", "" if none */
 } acbb_preset_info;

@@ -40,26 +40,35 @@ acbb_status acbb_preset_info_read(const char *path, acbb_preset_info *out, acbb_
     FILE *f = fopen(path, "r");
     if (!f) return acbb_error_set(err, ACBB_EIO, "%s: cannot read: %s", path, strerror(errno));
     char line[512];
-    int in_look = 0;
+    int in_look = 0, in_title = 0;
     while (fgets(line, sizeof line, f)) {
         char *t = comment_text(line);
         if (!t) {
             if (is_blank(line)) continue;
             break; /* the first key or section ends the header */
         }
+        int keyword = strncmp(t, "Look at:", 8) == 0 || strncmp(t, "Expect:", 7) == 0;
         if (!out->title[0] && t[0]) {
             snprintf(out->title, sizeof out->title, "%s", t);
+            in_title = 1;
+        } else if (in_title && t[0] && !keyword) {
+            /* The title is the whole first paragraph: cut after its first
+             * line, pair-rigid-16k and pair-spring-16k read the same
+             * (issue 29 item 7). */
+            join(out->title, sizeof out->title, t);
         } else if (strncmp(t, "Look at:", 8) == 0) {
             in_look = 1;
             join(out->look_at, sizeof out->look_at, t + 8 + strspn(t + 8, " "));
         } else if (strncmp(t, "Expect:", 7) == 0) {
             in_look = 0;
+            in_title = 0;
             sscanf(t + 7, " %31s", out->expect);
         } else if (in_look && t[0]) {
             join(out->look_at, sizeof out->look_at, t);
         } else {
             in_look = 0;
         }
+        if (!t[0] || keyword) in_title = 0;
     }
     fclose(f);
     return ACBB_OK;
