@@ -33,13 +33,24 @@ static void keep_visible(acbb_app *a)
 #define KEY_W 26
 #define VALUE_W 14
 
+/* The row's mark: '*' changed since the save, '~' no effect in the scene
+ * as set (issue 29 item 1: the info rows say why and what makes it act),
+ * '!' both. */
+static char row_mark(const acbb_app *a, int changed, const acbb_field_info *f)
+{
+    char key[96];
+    snprintf(key, sizeof key, "%s.%s", f->section, f->key);
+    int off = acbb_scene_key_inactive(&a->ed.scene, key, NULL);
+    return off ? (changed ? '!' : '~') : changed ? '*' : ' ';
+}
+
 static void put_row(acbb_app *a, int y, acbb_role role, int changed, const acbb_field_info *f,
                     const char *val, const char *range)
 {
     acbb_rect b = a->lay.body;
     int x = b.x + 1 + SECTION_W + 1 + KEY_W + 1 + VALUE_W + 1, room = b.x + b.w - x;
-    acbb_put(a, y, b.x, b.w, role, "%c%-*s %-*s %-*s", changed ? '*' : ' ', SECTION_W, f->section, KEY_W,
-             f->key, VALUE_W, val);
+    acbb_put(a, y, b.x, b.w, role, "%c%-*s %-*s %-*s", row_mark(a, changed, f), SECTION_W, f->section,
+             KEY_W, f->key, VALUE_W, val);
     if (room <= 0) return;
     if ((int)strlen(range) <= room) acbb_put(a, y, x, room, role, "%s", range);
     else acbb_put(a, y, x, room, role, "%.*s%s", room - 1, range, a->term.g.ellipsis);
@@ -76,7 +87,14 @@ static void draw(acbb_app *a)
         char text[1024], range[192];
         acbb_scene_field_range(e->cursor, range, sizeof range);
         /* The whole range or list of choices: a row may have to cut it. */
-        snprintf(text, sizeof text, "%s.%s: %s; allowed: %s", f->section, f->key, f->help, range);
+        char key[96];
+        acbb_inactive_effect in;
+        snprintf(key, sizeof key, "%s.%s", f->section, f->key);
+        if (acbb_scene_key_inactive(&e->scene, key, &in))
+            snprintf(text, sizeof text, "%s: NO EFFECT here: %s. %s; allowed: %s", key, in.why,
+                     f->help, range);
+        else
+            snprintf(text, sizeof text, "%s: %s; allowed: %s", key, f->help, range);
         acbb_put_wrap(a, y, b.x, b.w, help_rows, ACBB_ROLE_NORMAL, text);
     }
     if (a->edit_error[0]) {

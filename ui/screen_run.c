@@ -270,6 +270,14 @@ static void state_and_chart(acbb_app *a, acbb_rect r)
     acbb_role role;
     acbb_run_state_text(a, text, sizeof text, &role);
     int used = acbb_put_wrap(a, r.y, r.x, r.w, 3, role, text);
+    /* With a baseline pinned, an input the running scene cannot feel
+     * explains a change of 0 (issue 29 item 1: preload_N under a force
+     * preload showed +0.00 everywhere, silently). */
+    acbb_inactive_effect in[4];
+    if (a->has_base && r.h > 8 && acbb_scene_inactive_effects(&a->st.scene, in, 4) > 0) {
+        snprintf(text, sizeof text, "note: %s has no effect here: %s", in[0].key, in[0].why);
+        used += acbb_put_wrap(a, r.y + used, r.x, r.w, 2, ACBB_ROLE_WARN, text);
+    }
     used += life_line(a, r.y + used, r);
     acbb_rect c = { r.y + used, r.x, r.h - used, r.w };
     acbb_draw_temp_chart(a, c);
