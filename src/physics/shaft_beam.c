@@ -2,8 +2,8 @@
  * stiffness (docs/spindle.md "Mechanics").
  *
  * The bending element is the two-node element with interdependent
- * interpolation (Przemieniecki, Theory of Matrix Structural Analysis, 1968,
- * section 5.6; Reddy, Comput. Methods Appl. Mech. Eng. 149 (1997) 113-132):
+ * interpolation (Przemieniecki, Theory of Matrix Structural Analysis, 1968;
+ * Reddy, Comput. Methods Appl. Mech. Eng. 149 (1997) 113-132):
  * its cubic/quadratic fields solve the homogeneous Timoshenko equations, so
  * nodal values under point loads are exact for any mesh and there is no
  * shear locking. The shear coefficient is Cowper's (shaft_section.c). */
