@@ -212,7 +212,18 @@ static void test_uniform_growth(void)
              "radial growth of the shaft at the fixed bearing = alpha dT D/2");
     is_close(r.growth_radial_housing[1], 11e-6 * 40.0 * 0.05, 1e-10, 0.0,
              "radial growth of the housing bore at the rear bearing = alpha dT d/2");
+    is_close(r.shift_axial[1], 40.0 * (12.5e-6 * 0.17 + 11.0e-6 * 0.03 - 11e-6 * 0.2), 1e-10,
+             0.0, "rear bearing: shaft growth - housing growth from the fixed bearing");
+    ok(r.shift_axial[0] == 0.0, "no shift at the fixed bearing");
     is_close(out_total(&r), 0.0, 0.0, 1e-9, "no heat, no flow");
+    double rear = r.shift_axial[1];
+    acbb_spindle_thermal_free(sp);
+    d.fixed_station = 1;
+    acbb_spindle_thermal_build(&d, &sp, &err);
+    acbb_spindle_thermal_steady(sp, &none, &err);
+    acbb_spindle_thermal_results(sp, &r);
+    is_close(r.shift_axial[0], -rear, 1e-10, 0.0,
+             "rear bearing located: the front station shifts the other way");
     acbb_spindle_thermal_free(sp);
 }
 

@@ -78,6 +78,11 @@ typedef struct {
     double storage_rate;            /* sum C dT/dt of the last step (0 after steady), W */
     double T_coolant_out;           /* C (T_in without coolant) */
     double growth_axial;            /* nose moves forward (away from the fixed bearing), m */
+    /* axial shift of the shaft against the housing at each station, both
+     * located at the fixed bearing: shaft growth minus housing growth
+     * between the two, m (positive: the shaft's point moves rearwards,
+     * +x, relative to the housing's; 0 at the fixed bearing) */
+    double shift_axial[ACBB_SPINDLE_MAX_STATIONS];
     double growth_radial_shaft[ACBB_SPINDLE_MAX_STATIONS];   /* shaft radius, m */
     double growth_radial_housing[ACBB_SPINDLE_MAX_STATIONS]; /* housing bore radius, m */
     double T_station[ACBB_SPINDLE_MAX_STATIONS];             /* bearing nodes, C */

@@ -167,12 +167,24 @@ static double flow_into(const acbb_spindle_thermal *sp, int node, int lo, int hi
     return f;
 }
 
+/* Axial displacement at x of a chain located at xf: its growth between
+ * the two, signed by the side of xf that x is on. */
+static double axial_at(const acbb_axial_chain *c, const double *T, double T_ref, double xf,
+                       double x)
+{
+    double g = acbb_axial_chain_growth(c, T, T_ref, fmin(x, xf), fmax(x, xf));
+    return x >= xf ? g : -g;
+}
+
 static void growth(const acbb_spindle_thermal *sp, acbb_spindle_thermal_result *r)
 {
     const acbb_spindle_thermal_def *d = &sp->def;
-    r->growth_axial = acbb_axial_chain_growth(&sp->sc, sp->T, d->T_ref, 0.0,
-                                              d->station[d->fixed_station].x);
+    double xf = d->station[d->fixed_station].x;
+    r->growth_axial = acbb_axial_chain_growth(&sp->sc, sp->T, d->T_ref, 0.0, xf);
     for (int k = 0; k < d->n_station; k++) {
+        double x = d->station[k].x;
+        r->shift_axial[k] = axial_at(&sp->sc, sp->T, d->T_ref, xf, x) -
+                            axial_at(&sp->hc, sp->T, d->T_ref, xf, x);
         int i = acbb_axial_chain_cell_at(&sp->sc, d->station[k].x);
         int j = acbb_axial_chain_cell_at(&sp->hc, d->station[k].x);
         const acbb_shaft_seg *s = sp->sc.seg[i], *hs = sp->hc.seg[j];
