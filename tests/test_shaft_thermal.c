@@ -149,6 +149,10 @@ static void test_steady_balance(void)
         prev = T;
     }
     ok(rising && prev == r.T_coolant_out, "coolant warms along the jacket to %.3f C", prev);
+    is_close(r.Q_to_shaft[0] + r.Q_to_housing[0], 80.0, 1e-9, 0.0,
+             "front bearing: its heat leaves to shaft + housing");
+    is_close(r.Q_to_shaft[1] + r.Q_to_housing[1], 40.0, 1e-9, 0.0,
+             "rear bearing: its heat leaves to shaft + housing");
     ok(r.T_station[0] > r.T_coolant_out && r.growth_axial > 0.0,
        "bearings above the coolant; the nose grows forward (%.3g um)", r.growth_axial * 1e6);
     acbb_spindle_thermal_free(sp);

@@ -86,6 +86,8 @@ typedef struct {
     double growth_radial_shaft[ACBB_SPINDLE_MAX_STATIONS];   /* shaft radius, m */
     double growth_radial_housing[ACBB_SPINDLE_MAX_STATIONS]; /* housing bore radius, m */
     double T_station[ACBB_SPINDLE_MAX_STATIONS];             /* bearing nodes, C */
+    double Q_to_shaft[ACBB_SPINDLE_MAX_STATIONS];   /* bearing node -> shaft, W */
+    double Q_to_housing[ACBB_SPINDLE_MAX_STATIONS]; /* bearing node -> housing, W */
 } acbb_spindle_thermal_result;
 
 typedef enum {

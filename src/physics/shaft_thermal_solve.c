@@ -192,6 +192,8 @@ static void growth(const acbb_spindle_thermal *sp, acbb_spindle_thermal_result *
         r->growth_radial_housing[k] =
             hs->alpha * (sp->T[sp->hc.first + j] - d->T_ref) * 0.5 * hs->d_bore;
         r->T_station[k] = sp->T[sp->st0 + k];
+        r->Q_to_shaft[k] = -flow_into(sp, sp->st0 + k, sp->sc.first, sp->sc.first + sp->sc.n);
+        r->Q_to_housing[k] = -flow_into(sp, sp->st0 + k, sp->hc.first, sp->hc.first + sp->hc.n);
     }
 }
 
