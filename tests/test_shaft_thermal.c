@@ -158,6 +158,32 @@ static void test_steady_balance(void)
     acbb_spindle_thermal_free(sp);
 }
 
+/* Jacket cells on housing cells one to one (the first housing segment,
+ * 6 cells): each coolant cell's balance, upwind,
+ * m_dot c_p (Tc_m - Tc_{m-1}) = (hA/6) (T_housing,m - Tc_m), Tc_{-1} = T_in. */
+static void test_coolant_cells(void)
+{
+    acbb_shaft_seg hs[2];
+    acbb_spindle_station st[2];
+    acbb_spindle_thermal_def d = spindle_def(hs, st);
+    d.jacket = (acbb_span){0.03, 0.23};
+    d.n_cool = 6;
+    acbb_spindle_thermal *sp = NULL;
+    acbb_error err = {{0}};
+    acbb_spindle_thermal_build(&d, &sp, &err);
+    ok(acbb_spindle_thermal_steady(sp, &HEAT, &err) == ACBB_OK, "aligned jacket solves");
+    double W = d.m_dot * d.c_p, G = d.hA / 6.0, prev = d.T_in, worst = 0.0, Tc, Th;
+    for (int m = 0; m < 6; m++) {
+        acbb_spindle_thermal_cell(sp, ACBB_SPINDLE_COOLANT, m, NULL, &Tc);
+        acbb_spindle_thermal_cell(sp, ACBB_SPINDLE_HOUSING, m, NULL, &Th);
+        worst = fmax(worst, fabs(W * (Tc - prev) - G * (Th - Tc)) / (G * fabs(Th - Tc)));
+        prev = Tc;
+    }
+    ok(worst < 1e-9, "each coolant cell: m_dot c_p (Tc_m - Tc_m-1) = G (T_wall - Tc_m) "
+       "(worst %.2g)", worst);
+    acbb_spindle_thermal_free(sp);
+}
+
 /* Backward Euler conserves energy step by step: Q_in = outflows +
  * m_dot c_p (T_out - T_in) + sum C dT/dt; and it reaches the steady state. */
 static void test_transient(void)
@@ -265,6 +291,7 @@ int main(void)
     test_rod();
     test_fin();
     test_steady_balance();
+    test_coolant_cells();
     test_transient();
     test_uniform_growth();
     test_checks();

@@ -168,7 +168,7 @@ static acbb_status add_gap(acbb_spindle_thermal *sp)
         for (int j = 0; j < sp->hc.n; j++) {
             double lo = fmax(fmax(sp->sc.x0[i], sp->hc.x0[j]), g0);
             double hi = fmin(fmin(sp->sc.x1[i], sp->hc.x1[j]), g1);
-            if (hi <= lo) continue;
+            if (hi - lo <= 1e-12 * (g1 - g0)) continue;   /* disjoint up to round-off */
             acbb_status st = add_G(sp->net, sp->sc.first + i, sp->hc.first + j,
                                    d->G_gap * (hi - lo) / (g1 - g0));
             if (st != ACBB_OK) return st;
@@ -185,9 +185,11 @@ static acbb_status add_coolant(acbb_spindle_thermal *sp)
         double c0, c1;
         acbb_spindle_cool_cell(sp, m, &c0, &c1);
         acbb_status st = acbb_tnet_set_fixed(sp->net, sp->cool0 + m, d->T_in);
-        for (int j = 0; j < sp->hc.n && st == ACBB_OK; j++)
-            st = add_G(sp->net, sp->cool0 + m, sp->hc.first + j,
-                       d->hA * acbb_overlap(c0, c1, sp->hc.x0[j], sp->hc.x1[j]) / Lj);
+        for (int j = 0; j < sp->hc.n && st == ACBB_OK; j++) {
+            double ov = acbb_overlap(c0, c1, sp->hc.x0[j], sp->hc.x1[j]);
+            if (ov > 1e-12 * Lj)   /* cells that only touch share no wall */
+                st = add_G(sp->net, sp->cool0 + m, sp->hc.first + j, d->hA * ov / Lj);
+        }
         if (st != ACBB_OK) return st;
     }
     return ACBB_OK;
