@@ -16,12 +16,14 @@
 #define BW 5                      /* half bandwidth with 3 DOF per node */
 #define NB (2 * BW + 1)           /* stored band width of the structural K */
 #define MAX_ITER 50
+#define MAX_HALF 12              /* step halvings in the line search */
 
 struct acbb_shaft_beam {
     int n_nodes, n_dof;
     double *x;                    /* node positions, m */
     double *Ks;                   /* structural K: Ks[i*NB + BW + j - i] = K(i,j) */
     double *d;                    /* displacements (3 per node) */
+    double *d_old;                /* start of the current Newton step */
     double *diag_scale;           /* max diagonal per DOF kind (singularity test) */
     int n_sup;
     acbb_shaft_support sup[ACBB_SHAFT_MAX_SUPPORTS];
@@ -104,12 +106,13 @@ static acbb_status alloc_beam(acbb_shaft_beam *b, int n_nodes)
     b->n_dof = (int)nd;
     b->Ks = calloc(nd * NB, sizeof *b->Ks);
     b->d = calloc(nd, sizeof *b->d);
+    b->d_old = calloc(nd, sizeof *b->d_old);
     b->diag_scale = calloc(3, sizeof *b->diag_scale);
     b->AB = gsl_matrix_alloc(nd, 3 * BW + 1);
     b->piv = gsl_vector_uint_alloc(nd);
     b->rhs = gsl_vector_alloc(nd);
     b->dx = gsl_vector_alloc(nd);
-    return (b->Ks && b->d && b->diag_scale && b->AB && b->piv && b->rhs && b->dx)
+    return (b->Ks && b->d && b->d_old && b->diag_scale && b->AB && b->piv && b->rhs && b->dx)
                ? ACBB_OK : ACBB_ENOMEM;
 }
 
@@ -169,6 +172,7 @@ void acbb_shaft_beam_free(acbb_shaft_beam *b)
     free(b->x);
     free(b->Ks);
     free(b->d);
+    free(b->d_old);
     free(b->diag_scale);
     if (b->AB) gsl_matrix_free(b->AB);
     if (b->piv) gsl_vector_uint_free(b->piv);
@@ -270,23 +274,47 @@ static acbb_status load_vector(const acbb_shaft_beam *b, const acbb_shaft_load *
     return ACBB_OK;
 }
 
+/* Backtracking along the Newton step dx from d_old: halve until the
+ * residual (max norm, from linearise, which also leaves the next tangent)
+ * does not grow, at most MAX_HALF times. Plain Newton overshoots from the
+ * flat part of a softening support. When no fraction lowers the residual
+ * (round-off next to the solution) the full step is taken, as plain Newton. */
+static acbb_status line_search(acbb_shaft_beam *b, const double *F, double r0)
+{
+    const double *dx = gsl_vector_const_ptr(b->dx, 0);
+    double lam = 1.0;
+    for (int h = 0; h <= MAX_HALF; h++, lam *= 0.5) {
+        for (int i = 0; i < b->n_dof; i++) b->d[i] = b->d_old[i] + lam * dx[i];
+        acbb_status st = linearise(b, F);
+        double r1 = inf_norm(gsl_vector_const_ptr(b->rhs, 0), b->n_dof);
+        if (st == ACBB_OK && isfinite(r1) && r1 <= r0) return ACBB_OK;
+    }
+    for (int i = 0; i < b->n_dof; i++) b->d[i] = b->d_old[i] + dx[i];
+    return linearise(b, F);
+}
+
 static acbb_status newton(acbb_shaft_beam *b, const double *F, int *iters, acbb_error *err)
 {
-    for (int it = 1; it <= MAX_ITER; it++) {
-        acbb_status st = linearise(b, F);
-        if (st != ACBB_OK)
-            return acbb_error_set(err, st, "shaft: a support's reaction failed (%s)",
-                                  acbb_status_name(st));
+    acbb_status st = linearise(b, F);
+    for (int it = 1; it <= MAX_ITER && st == ACBB_OK; it++) {
         if ((st = factor(b, err)) != ACBB_OK) return st;
+        double r0 = inf_norm(gsl_vector_const_ptr(b->rhs, 0), b->n_dof);
         gsl_linalg_LU_band_solve(BW, BW, b->AB, b->piv, b->rhs, b->dx);
         const double *dx = gsl_vector_const_ptr(b->dx, 0);
-        for (int i = 0; i < b->n_dof; i++) b->d[i] += dx[i];
+        memcpy(b->d_old, b->d, (size_t)b->n_dof * sizeof *b->d);
         double step = inf_norm(dx, b->n_dof), size = inf_norm(b->d, b->n_dof);
-        if (!isfinite(size))
-            return acbb_error_set(err, ACBB_NONFINITE, "shaft: displacements not finite");
         *iters = it;
-        if (step <= 1e-11 * size) return ACBB_OK;
+        if (!isfinite(step))
+            return acbb_error_set(err, ACBB_NONFINITE, "shaft: displacements not finite");
+        if (step <= 1e-11 * fmax(size, step)) {   /* converged: take the last full step */
+            for (int i = 0; i < b->n_dof; i++) b->d[i] += dx[i];
+            return ACBB_OK;
+        }
+        st = line_search(b, F, r0);
     }
+    if (st != ACBB_OK)
+        return acbb_error_set(err, st, "shaft: a support's reaction failed (%s)",
+                              acbb_status_name(st));
     return acbb_error_set(err, ACBB_DIVERGED, "shaft: no static equilibrium after %d Newton "
                           "iterations", MAX_ITER);
 }

@@ -61,9 +61,10 @@ acbb_status acbb_shaft_beam_build(const acbb_shaft_seg *seg, int n_seg,
                                   acbb_shaft_beam **out, acbb_error *err);
 void acbb_shaft_beam_free(acbb_shaft_beam *b);
 
-/* Static equilibrium under the loads, Newton from the last solution (zero
- * after build); ACBB_DIVERGED after 50 iterations, ACBB_SINGULAR when the
- * supports leave a rigid-body motion free. */
+/* Static equilibrium under the loads, Newton (steps halved until the
+ * residual does not grow) from the last solution (zero after build);
+ * ACBB_DIVERGED after 50 iterations, ACBB_SINGULAR when the supports leave
+ * a rigid-body motion free. */
 acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loads,
                                   int n_loads, acbb_shaft_result *res, acbb_error *err);
 
