@@ -210,6 +210,38 @@ static void test_damped_newton(void)
     acbb_shaft_beam_free(b);
 }
 
+/* A linear support whose reaction fails from its third call on. */
+static acbb_status failing(void *ctx, const double d[3], double f[3], double K[9])
+{
+    int *calls = ctx;
+    memset(K, 0, 9 * sizeof *K);
+    for (int i = 0; i < 3; i++) {
+        K[4 * i] = 1e8;
+        f[i] = -1e8 * d[i] * (1.0 + d[i] * 1e3);
+    }
+    return ++*calls >= 3 ? ACBB_NONFINITE : ACBB_OK;
+}
+
+static void test_failed_solve_resets(void)
+{
+    int calls = 0;
+    acbb_shaft_seg s = seg(0.4, 0.05, 0.02);
+    acbb_shaft_support sup[2] = {{.x = 0.1, .fn = failing, .ctx = &calls},
+                                 {.x = 0.3, .k_radial = 1e8}};
+    acbb_shaft_load ld = {.x = 0.0, .F_radial = 1000.0};
+    acbb_shaft_beam *b = NULL;
+    acbb_shaft_result r;
+    acbb_error err = {{0}};
+    acbb_shaft_beam_build(&s, 1, sup, 2, 4, NULL, 0, &b, &err);
+    ok(acbb_shaft_beam_solve(b, &ld, 1, &r, &err) == ACBB_NONFINITE,
+       "a support's failure is the solve's status");
+    has_substr(err.msg, "a support's reaction failed (nonfinite)", "message names it");
+    double d[3] = {1, 1, 1};
+    acbb_shaft_beam_node(b, 0, NULL, d);
+    ok(d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0, "a failed solve leaves no trial behind");
+    acbb_shaft_beam_free(b);
+}
+
 static void test_statuses(void)
 {
     acbb_shaft_seg s = seg(0.4, 0.05, 0.02);
@@ -246,6 +278,7 @@ int main(void)
     test_cowper();
     test_nonlinear_support();
     test_damped_newton();
+    test_failed_solve_resets();
     test_statuses();
     return done_testing();
 }

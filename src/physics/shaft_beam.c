@@ -358,6 +358,8 @@ acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loa
     acbb_status st = load_vector(b, loads, n_loads, F, err);
     if (st == ACBB_OK) st = newton(b, F, &res->iterations, err);
     free(F);
+    if (st != ACBB_OK)   /* no failed trial as the next warm start */
+        memset(b->d, 0, (size_t)b->n_dof * sizeof *b->d);
     if (st == ACBB_OK) st = results(b, res, err);
     return st;
 }

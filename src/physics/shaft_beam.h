@@ -62,7 +62,8 @@ acbb_status acbb_shaft_beam_build(const acbb_shaft_seg *seg, int n_seg,
 void acbb_shaft_beam_free(acbb_shaft_beam *b);
 
 /* Static equilibrium under the loads, Newton (steps halved until the
- * residual does not grow) from the last solution (zero after build);
+ * residual does not grow) from the last solution (zero after build or a
+ * failed solve);
  * ACBB_DIVERGED after 50 iterations, ACBB_SINGULAR when the supports leave
  * a rigid-body motion free. */
 acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loads,
