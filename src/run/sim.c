@@ -211,9 +211,10 @@ static acbb_status polish_step(void *ctx, double relax, double *res, double *tur
     }
     memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
     sim->polishing = 1;
-    sim->polish_damped = relax < 1.0;
+    sim->polish_relax = relax;
     rc = acbb_simx_evaluate(sim, err);
-    sim->polishing = sim->polish_damped = 0;
+    sim->polishing = 0;
+    sim->polish_relax = 1.0;
     if (rc != ACBB_OK) restore(sim, sim->keep);
     return rc;
 }
@@ -690,6 +691,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
     sim->cancel = o->cancel;
+    sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     double t0 = acbb_now_ms();
     acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)

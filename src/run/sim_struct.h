@@ -72,7 +72,7 @@ struct acbb_sim {
     int growth_count;
     int transient_pass;        /* 1 while evaluating inside a transient step */
     int polishing;             /* 1 while evaluating inside the steady polish */
-    int polish_damped;         /* 1 while evaluating a damped polish step (relax < 1) */
+    double polish_relax;       /* the polish step's relaxation while it evaluates, else 1 */
     long iter;
     int quiet;
     acbb_run_state state;

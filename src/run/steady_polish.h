@@ -75,8 +75,10 @@ typedef struct {
  * (1.6 N inner, 29 N outer, mostly their centrifugal force) swing in
  * speed and load from one Level-2 pass to the next (factor about -0.94 a
  * pass); with one pass per undamped step the polish's residual fell only
- * 3.4 % a step and reversed every step, 0.55 K to 3.9e-4 K in 100. Damped
- * steps converge the Level-2 passes further (sim_eval.c mechanics()).
+ * 3.4 % a step and reversed every step, 0.55 K to 3.9e-4 K in 100. A
+ * damped step relaxes those speeds and tractions by its relaxation too
+ * (sim_eval.c level2_pass()): relaxing the temperatures alone left the
+ * 6232 reversing every step at 1/64.
  *
  * `resolution_K` is how finely the map resolves its fixed point: the
  * losses behind it are resolved to a relative tolerance (the mechanics'),
