@@ -178,6 +178,46 @@ static void test_skip(void)
     acbb_mech_free(f.m);
 }
 
+/* A damped steady polish step under-relaxes an update (acbb_qd_relax):
+ * speeds halfway at w = 0.5, tractions halfway per unit load (the ring
+ * equilibrium scales them with the load), kept at the new load; a ball
+ * without Level-2 results before is left as solved. */
+static void test_relax(void)
+{
+    ball_fixture f;
+    acbb_scene_default(&f.s);
+    if (!ok(fixture_setup(&f, 15000, 1000), "15000 rpm, 1000 N")) return;
+    acbb_qd *qd;
+    acbb_qd_new(f.s.contact_grid, &qd);
+    double change;
+    acbb_error err = { "" };
+    acbb_ball_state *b = &f.st.ball[0];
+    acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err);
+    acbb_ball_state b0 = *b;
+    acbb_qd_kept kept[ACBB_MAX_BALLS];
+    acbb_qd_keep(&f.st, kept);
+    b->Qi *= 1.2;
+    acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err);
+    acbb_ball_state b1 = *b;
+    acbb_qd_relax(&f.st, kept, 0.5);
+    double dw = 0.0, dt = 0.0;
+    for (int d = 0; d < 4; d++)
+        dw = fmax(dw, fabs(b->qd_w[d] - 0.5 * (b0.qd_w[d] + b1.qd_w[d])) / f.wi);
+    for (int d = 0; d < 3; d++) {
+        double ti = 0.5 * b1.tr_Qi * (b0.tr_i[d] / b0.tr_Qi + b1.tr_i[d] / b1.tr_Qi);
+        double to = 0.5 * b1.tr_Qo * (b0.tr_o[d] / b0.tr_Qo + b1.tr_o[d] / b1.tr_Qo);
+        dt = fmax(dt, fmax(fabs(b->tr_i[d] - ti), fabs(b->tr_o[d] - to)) / b1.tr_Qi);
+    }
+    ok(b1.qd_w[0] != b0.qd_w[0] && dw < 1e-15 && dt < 1e-15 && b->tr_Qi == b1.tr_Qi,
+       "relax 0.5: speeds (%.2g of omega_i off) and tractions per load (%.2g) halfway", dw, dt);
+    kept[0].valid = 0;
+    acbb_ball_state bs = *b;
+    acbb_qd_relax(&f.st, kept, 0.5);
+    ok(memcmp(bs.qd_w, b->qd_w, sizeof bs.qd_w) == 0, "a ball kept without results: as solved");
+    acbb_qd_free(qd);
+    acbb_mech_free(f.m);
+}
+
 /* Combined load: balls without a Jacobian of their own (the set-up's
  * first pass) start from their neighbour's root; every distinct ball
  * still satisfies its balances, and ball 3 has the speeds a cold solve of
@@ -222,5 +262,6 @@ int main(void)
     test_guards();
     test_skip();
     test_neighbour_start();
+    test_relax();
     return done_testing();
 }

@@ -20,9 +20,10 @@ typedef struct {
     double noise;       /* the fixed point alternates between two values 2 noise apart */
     int steps;
     double relax_seen[128];
+    double move[NMAX]; /* the last undamped move (acbb_polish_turn) */
 } linmap;
 
-static acbb_status step(void *ctx, double relax, double *res, acbb_error *err)
+static acbb_status step(void *ctx, double relax, double *res, double *turn, acbb_error *err)
 {
     linmap *m = ctx;
     if (++m->steps == m->fail_at) return acbb_error_set(err, ACBB_CANCELLED, "stopped here");
@@ -30,11 +31,14 @@ static acbb_status step(void *ctx, double relax, double *res, acbb_error *err)
     *res = 0.0;
     if (m->steps == 2) m->xs[0] += m->jump;
     m->xs[0] += (m->steps % 2 ? 2.0 : -2.0) * m->noise;
+    double xn[NMAX];
     for (int i = 0; i < m->n; i++) {
         double r = m->g[i] * (m->x[i] - m->xs[i]) + m->xs[i] - m->x[i]; /* F(x) - x */
         *res = fmax(*res, fabs(r));
-        m->x[i] += relax * r;
+        xn[i] = m->x[i] + relax * r;
     }
+    *turn = acbb_polish_turn(m->move, m->x, xn, relax, m->n);
+    memcpy(m->x, xn, sizeof(double) * (size_t)m->n);
     return ACBB_OK;
 }
 
@@ -218,6 +222,49 @@ static void test_diverged(void)
     }
 }
 
+/* The cosine between successive undamped moves, by hand: (1, 0) then
+ * (-1, 1) / 0.5 at relaxation 0.5 is -1 / sqrt(2); the first move has
+ * nothing to turn from (0). */
+static void test_turn(void)
+{
+    double prev[2] = { 0.0, 0.0 }, T[2] = { 10.0, 20.0 };
+    const double T1[2] = { 11.0, 20.0 }, T2[2] = { 10.5, 20.5 };
+    double c1 = acbb_polish_turn(prev, T, T1, 1.0, 2);
+    double c2 = acbb_polish_turn(prev, T1, T2, 0.5, 2);
+    ok(c1 == 0.0 && fabs(c2 + 1.0 / sqrt(2.0)) < 1e-15 && prev[0] == -1.0 && prev[1] == 1.0,
+       "turn: first move 0 (%g), then -1/sqrt(2) (%.17g), the undamped move kept", c1, c2);
+}
+
+/* A slow overshoot (acbb new 6232 under the reference profile: gain
+ * -0.966, the residual shrank 3.4 % a step and was 3.9e-4 K after the
+ * cap, undamped): moves that reverse and shrink by more than 1/3 a step,
+ * too slowly to reach 1e-9 K within the cap, are damped; one halving
+ * gives 1 - 0.5 + 0.5 (-0.966) = 0.017 a step. An overshoot fast enough
+ * (-0.5) and a slow monotone approach (+0.966, which damping only slows)
+ * keep plain Picard. */
+static void test_slow_overshoot(void)
+{
+    linmap m = map1(-0.966, 40.55);
+    acbb_polish_result r;
+    acbb_error err = { "" };
+    acbb_status rc = acbb_polish_iterate(step, &m, RESOLUTION, &r, &err);
+    ok(rc == ACBB_OK && r.relax == 0.5 && r.iterations < 20 && dist(&m) < RESOLUTION,
+       "g = -0.966: converges at relaxation %g (want 0.5) in %d steps, %.2g K off: %s", r.relax,
+       r.iterations, dist(&m), rc == ACBB_OK ? "ok" : err.msg);
+    m = map1(-0.5, 40.55);
+    rc = acbb_polish_iterate(step, &m, RESOLUTION, &r, &err);
+    int all_one = 1;
+    for (int k = 1; k <= m.steps; k++) all_one = all_one && m.relax_seen[k] == 1.0;
+    ok(rc == ACBB_OK && all_one && dist(&m) < ACBB_POLISH_TOL_K,
+       "g = -0.5: plain Picard to %g K in %d steps (relaxation 1 throughout: %d)",
+       ACBB_POLISH_TOL_K, r.iterations, all_one);
+    m = map1(0.966, 40.55);
+    rc = acbb_polish_iterate(step, &m, RESOLUTION, &r, &err);
+    ok(rc == ACBB_DIVERGED && r.relax == 1.0,
+       "g = +0.966: not damped (relaxation %g), %s after %d steps", r.relax,
+       acbb_status_name(rc), r.iterations);
+}
+
 /* A step that fails ends the polish with its status and message. */
 static void test_step_failure(void)
 {
@@ -241,5 +288,7 @@ int main(void)
     test_dynamic_resolution();
     test_diverged();
     test_step_failure();
+    test_turn();
+    test_slow_overshoot();
     return done_testing();
 }

@@ -359,3 +359,31 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
     acbb_mech_spread(st);
     return ACBB_OK;
 }
+
+void acbb_qd_keep(const acbb_mech_state *st, acbb_qd_kept *k)
+{
+    for (int j = 0; j < acbb_mech_distinct(st); j++) {
+        const acbb_ball_state *b = &st->ball[j];
+        k[j].valid = b->traction_valid && b->tr_Qi > 0.0 && b->tr_Qo > 0.0;
+        if (!k[j].valid) continue;
+        memcpy(k[j].w, b->qd_w, sizeof k[j].w);
+        for (int d = 0; d < 3; d++) {
+            k[j].ti[d] = b->tr_i[d] / b->tr_Qi;
+            k[j].to[d] = b->tr_o[d] / b->tr_Qo;
+        }
+    }
+}
+
+void acbb_qd_relax(acbb_mech_state *st, const acbb_qd_kept *k, double w)
+{
+    for (int j = 0; j < acbb_mech_distinct(st); j++) {
+        acbb_ball_state *b = &st->ball[j];
+        if (!k[j].valid || !b->traction_valid) continue;
+        for (int d = 0; d < 4; d++) b->qd_w[d] = k[j].w[d] + w * (b->qd_w[d] - k[j].w[d]);
+        for (int d = 0; d < 3; d++) {
+            b->tr_i[d] = b->tr_Qi * (k[j].ti[d] + w * (b->tr_i[d] / b->tr_Qi - k[j].ti[d]));
+            b->tr_o[d] = b->tr_Qo * (k[j].to[d] + w * (b->tr_o[d] / b->tr_Qo - k[j].to[d]));
+        }
+    }
+    acbb_mech_spread(st);
+}

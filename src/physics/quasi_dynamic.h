@@ -36,4 +36,20 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
                            const acbb_mixture *mix, acbb_mech_state *st, double *change,
                            acbb_error *err);
 
+/* A ball's Level-2 results before an update: speeds qd_w and tractions
+ * per unit contact load (the ring equilibrium scales them with the load,
+ * mechanics.c ball_friction). */
+typedef struct {
+    double w[4], ti[3], to[3];
+    int valid;
+} acbb_qd_kept;
+
+/* Keep the Level-2 results of st's distinct balls into k[0..distinct). */
+void acbb_qd_keep(const acbb_mech_state *st, acbb_qd_kept *k);
+
+/* Under-relax an update (a damped steady polish step, steady_polish.h):
+ * each distinct ball solved before and after moves only the fraction w of
+ * the way from its kept speeds and tractions to the new ones. */
+void acbb_qd_relax(acbb_mech_state *st, const acbb_qd_kept *k, double w);
+
 #endif

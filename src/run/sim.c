@@ -183,12 +183,14 @@ typedef struct {
     acbb_sim *sim;
     checkpoint *best;
     double best_res;
+    double move[ACBB_MAX_NODES]; /* the last undamped move (acbb_polish_turn) */
 } polish_ctx;
 
 /* One polish iteration (steady_polish.h): the direct steady solve, the
  * move by `relax`, the evaluation there; a failed evaluation keeps the
  * last evaluated iterate. */
-static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error *err)
+static acbb_status polish_step(void *ctx, double relax, double *res, double *turn,
+                               acbb_error *err)
 {
     polish_ctx *p = ctx;
     acbb_sim *sim = p->sim;
@@ -201,6 +203,7 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
         return acbb_error_set(err, ACBB_NONFINITE, "non-finite temperature in the steady "
                               "solve; last good state kept");
     *res = dT / relax; /* the undamped move (relax is 1 or a power of 1/2) */
+    *turn = acbb_polish_turn(p->move, sim->T, Tn, relax, sim->nw.n);
     save(sim, sim->keep);
     if (*res < p->best_res) { /* *res is the residual of the state before the move */
         save(sim, p->best);
@@ -208,8 +211,10 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
     }
     memcpy(sim->T, Tn, sizeof(double) * sim->nw.n);
     sim->polishing = 1;
+    sim->polish_relax = relax;
     rc = acbb_simx_evaluate(sim, err);
     sim->polishing = 0;
+    sim->polish_relax = 1.0;
     if (rc != ACBB_OK) restore(sim, sim->keep);
     return rc;
 }
@@ -219,7 +224,7 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
  * smallest residual. */
 static acbb_status polish(acbb_sim *sim, acbb_error *err)
 {
-    polish_ctx p = { sim, malloc(sizeof(checkpoint)), INFINITY };
+    polish_ctx p = { sim, malloc(sizeof(checkpoint)), INFINITY, { 0 } };
     if (!p.best) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     acbb_polish_result r;
     acbb_status rc = acbb_polish_iterate(polish_step, &p,
@@ -686,6 +691,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
     sim->cancel = o->cancel;
+    sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     double t0 = acbb_now_ms();
     acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)

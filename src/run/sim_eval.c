@@ -213,6 +213,29 @@ static acbb_status mech_solve(acbb_sim *sim, acbb_error *err)
     return acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, err);
 }
 
+/* One Level-2 pass over the distinct balls, its update under-relaxed by
+ * `relax`: a damped polish step (steady_polish.h) moves the speeds and
+ * tractions it carries from one evaluation to the next (one pass each, as
+ * below) by its relaxation, as it moves the temperatures; undamped, speeds
+ * a pass behind are an undamped part of the iterate (acbb new 6232: two
+ * balls at the load zone's edge swing about -0.94 a pass, and kept the
+ * polish reversing every step at any relaxation of the temperatures). */
+static acbb_status level2_pass(acbb_sim *sim, const acbb_oil_state *oi, const acbb_oil_state *oo,
+                               const acbb_mixture *mix, double relax, double *change,
+                               acbb_error *err)
+{
+    acbb_qd_kept kept[ACBB_MAX_BALLS];
+    sim->work.traction_solves++;
+    /* Skipping pays only when many distinct balls are solved; with
+     * one (pure thrust) it would only perturb the transient path. */
+    acbb_qd_set_skip(sim->qd, skip_tol(sim, QD_SKIP_TOL));
+    if (relax < 1.0) acbb_qd_keep(&sim->ms, kept);
+    acbb_status rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
+                                    sim->s.inner_speed, oi, oo, mix, &sim->ms, change, err);
+    if (rc == ACBB_OK && relax < 1.0) acbb_qd_relax(&sim->ms, kept, relax);
+    return rc;
+}
+
 /* Equilibrium, and at the quasi-dynamic level the ball speeds from
  * traction equilibrium, iterated a few passes (the remaining mismatch
  * shrinks over the thermal steps; the final polish converges it). */
@@ -240,14 +263,8 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
         if ((rc = acbb_simx_stop_check(sim, err)) != ACBB_OK) return rc;
         if (sim->dyn)
             rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
-        else {
-            sim->work.traction_solves++;
-            /* Skipping pays only when many distinct balls are solved; with
-             * one (pure thrust) it would only perturb the transient path. */
-            acbb_qd_set_skip(sim->qd, skip_tol(sim, QD_SKIP_TOL));
-            rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
-                                sim->s.inner_speed, &oi, &oo, &mix, &sim->ms, &change, err);
-        }
+        else
+            rc = level2_pass(sim, &oi, &oo, &mix, many ? sim->polish_relax : 1.0, &change, err);
         if (rc != ACBB_OK) return rc;
         rc = mech_solve(sim, err);
         if (rc != ACBB_OK || change < QD_TOL) return rc;

@@ -299,10 +299,17 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
     }
 }
 
+/* The set's polish: the set and its last undamped move (acbb_polish_turn). */
+typedef struct {
+    acbb_set_sim *ss;
+    double move[ACBB_SET_NMAX];
+} polish_ctx;
+
 /* One polish iteration (steady_polish.h), as sim.c's for one bearing. */
-static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error *err)
+static acbb_status polish_step(void *ctx, double relax, double *res, double *turn,
+                               acbb_error *err)
 {
-    acbb_set_sim *ss = ctx;
+    acbb_set_sim *ss = ((polish_ctx *)ctx)->ss;
     double Tn[ACBB_SET_NMAX], dT, dTs;
     acbb_status rc = stop_check(ss, err);
     if (rc != ACBB_OK) return rc;
@@ -312,6 +319,7 @@ static acbb_status polish_step(void *ctx, double relax, double *res, acbb_error 
         return acbb_error_set(err, ACBB_NONFINITE, "non-finite temperature in the steady "
                               "solve; last good state kept");
     *res = dT / relax; /* the undamped move (relax is 1 or a power of 1/2) */
+    *turn = acbb_polish_turn(((polish_ctx *)ctx)->move, ss->T, Tn, relax, ss->ns.n);
     save(ss);
     memcpy(ss->T, Tn, sizeof(double) * (size_t)ss->ns.n);
     if ((rc = evaluate(ss, 0, 1, err)) != ACBB_OK) restore(ss);
@@ -323,7 +331,8 @@ static acbb_status polish(acbb_set_sim *ss, acbb_error *err)
 {
     acbb_polish_result r;
     double resolution = acbb_polish_resolution(acbb_polish_loss_rtol(&ss->s), ss->T, ss->ns.n);
-    acbb_status rc = acbb_polish_iterate(polish_step, ss, resolution, &r, err);
+    polish_ctx p = { ss, { 0 } };
+    acbb_status rc = acbb_polish_iterate(polish_step, &p, resolution, &r, err);
     if (rc == ACBB_DIVERGED && r.iterations == ACBB_POLISH_ITERS) {
         size_t n = strlen(err->msg);
         snprintf(err->msg + n, sizeof err->msg - n, "; last state kept");

@@ -72,6 +72,7 @@ struct acbb_sim {
     int growth_count;
     int transient_pass;        /* 1 while evaluating inside a transient step */
     int polishing;             /* 1 while evaluating inside the steady polish */
+    double polish_relax;       /* the polish step's relaxation while it evaluates, else 1 */
     long iter;
     int quiet;
     acbb_run_state state;

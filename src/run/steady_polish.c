@@ -4,7 +4,8 @@
  * contracts keeps plain Picard (the path, and so every result, of the
  * presets that converged before stays bit for bit, and modes with a gain
  * near +1 are not slowed down), and halving on growth damps any gain
- * below -1, where a fixed 0.5 fails below -3. */
+ * below -1, where a fixed 0.5 fails below -3, and on reversing moves that
+ * shrink too slowly to converge within the cap (a gain near -1). */
 #include <math.h>
 #include "steady_polish.h"
 #include "dynamic.h"
@@ -24,11 +25,46 @@ double acbb_polish_resolution(double mech_tol, const double *T, int n)
     return fmax(mech_tol, ACBB_POLISH_REUSE_TOL) * (hi - lo);
 }
 
+double acbb_polish_turn(double *prev, const double *T, const double *Tn, double relax, int n)
+{
+    double dot = 0.0, pp = 0.0, mm = 0.0;
+    for (int i = 0; i < n; i++) {
+        double m = (Tn[i] - T[i]) / relax;
+        dot += m * prev[i];
+        pp += prev[i] * prev[i];
+        mm += m * m;
+        prev[i] = m;
+    }
+    return pp > 0.0 && mm > 0.0 ? dot / sqrt(pp * mm) : 0.0;
+}
+
+/* The tolerance of a polish at relaxation `relax` (steady_polish.h). */
+static double tolerance(double relax, double resolution_K)
+{
+    return relax < 1.0 ? fmax(resolution_K, ACBB_POLISH_TOL_K) : ACBB_POLISH_TOL_K;
+}
+
 /* Converged: to the round-off tolerance when undamped, else to the map's
  * resolution (steady_polish.h). */
 static int converged(const acbb_polish_result *r, double resolution_K)
 {
     return r->residual < ACBB_POLISH_TOL_K || (r->relax < 1.0 && r->residual < resolution_K);
+}
+
+/* Whether the last residual, after `prev`, asks to halve the relaxation
+ * (steady_polish.h): growth or a standstill (|rho| >= 1), or a reversing
+ * move whose ratio rho < -1/3 (halving shrinks |rho|) would not reach the
+ * tolerance within the cap at its rate. Growth below the noise band is
+ * not judged. */
+static int overshoots(const acbb_polish_result *r, double prev, double turn,
+                      double resolution_K)
+{
+    if (r->residual <= ACBB_POLISH_NOISE_FACTOR * resolution_K) return 0;
+    if (r->residual >= prev) return 1;
+    double ratio = r->residual / prev;
+    int left = ACBB_POLISH_ITERS - r->iterations;
+    return turn < 0.0 && ratio > 1.0 / 3.0
+           && r->residual * pow(ratio, left) >= tolerance(r->relax, resolution_K);
 }
 
 acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolution_K,
@@ -47,12 +83,11 @@ acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolut
             rc = acbb_error_set(err, ACBB_DIVERGED, "the steady iteration did not converge: "
                                 "residual %.3g K after %d iterations (relaxation %g, tolerance "
                                 "%.3g K)", r.residual, r.iterations, r.relax,
-                                r.relax < 1.0 ? fmax(resolution_K, ACBB_POLISH_TOL_K)
-                                              : ACBB_POLISH_TOL_K);
+                                tolerance(r.relax, resolution_K));
             break;
         }
-        double w = r.relax;
-        if ((rc = step(ctx, w, &r.residual, err)) != ACBB_OK) break;
+        double w = r.relax, turn = 0.0;
+        if ((rc = step(ctx, w, &r.residual, &turn, err)) != ACBB_OK) break;
         r.iterations++;
         if (converged(&r, resolution_K)) break;
         /* This residual judges the previous move's relaxation: halve only
@@ -61,9 +96,8 @@ acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolut
          * (sim.c: every ball recomputed; a set: its joined network's
          * resistances, lagged in the transient, synced), so the first
          * residual is not comparable. An equal residual (a gain of -1, a
-         * two-state cycle) is no progress either. */
-        if (r.iterations > 2 && r.residual >= prev
-            && r.residual > ACBB_POLISH_NOISE_FACTOR * resolution_K && made_by == r.relax)
+         * two-state cycle) is no progress either, nor is a slow one. */
+        if (r.iterations > 2 && made_by == r.relax && overshoots(&r, prev, turn, resolution_K))
             r.relax = fmax(0.5 * r.relax, ACBB_POLISH_RELAX_MIN);
         prev = r.residual;
         made_by = w;

@@ -40,10 +40,18 @@ double acbb_polish_resolution(double mech_tol, const double *T, int n);
 
 /* One iteration at relaxation `relax` (0 < relax <= 1): from the current
  * state T the direct steady solve T_s, *res = max_n |T_s - T| (K, the
- * undamped residual), the move T += relax (T_s - T) and the evaluation
- * there. Any status but ACBB_OK ends the polish with it; the callee keeps
- * its last good state then. */
-typedef acbb_status (*acbb_polish_step)(void *ctx, double relax, double *res, acbb_error *err);
+ * undamped residual), *turn = the cosine between this undamped move
+ * T_s - T and the previous one (acbb_polish_turn; < 0: the map
+ * overshoots, its gain is negative), the move T += relax (T_s - T) and the
+ * evaluation there. Any status but ACBB_OK ends the polish with it; the
+ * callee keeps its last good state then. */
+typedef acbb_status (*acbb_polish_step)(void *ctx, double relax, double *res, double *turn,
+                                        acbb_error *err);
+
+/* The cosine between the undamped move (Tn - T) / relax of n nodes and
+ * prev[0..n) (0 when either is zero: the first step), and that move into
+ * prev for the next step. */
+double acbb_polish_turn(double *prev, const double *T, const double *Tn, double relax, int n);
 
 typedef struct {
     int iterations;  /* steps taken */
@@ -56,6 +64,21 @@ typedef struct {
  * relaxation whenever the residual grows above ACBB_POLISH_NOISE_FACTOR
  * times `resolution_K` (a gain
  * g < -1 becomes 1 - w + w g, inside the unit circle once w < 2 / (1 - g)).
+ *
+ * Halve too on an overshoot that contracts too slowly: moves that reverse
+ * (turn < 0) with residuals shrinking by a ratio r = |rho| > 1/3 a step
+ * (rho = 1 - w + w g < -1/3, where halving w, which makes rho (1 + rho) / 2,
+ * shrinks |rho|) that at that rate would not reach the tolerance within
+ * the cap. A polish that converges undamped within the cap keeps its path
+ * bit for bit. The case: `acbb new 6232` (deep groove, 11 kN radial at
+ * 800 rpm, reference profile), whose two balls at the load zone's edge
+ * (1.6 N inner, 29 N outer, mostly their centrifugal force) swing in
+ * speed and load from one Level-2 pass to the next (factor about -0.94 a
+ * pass); with one pass per undamped step the polish's residual fell only
+ * 3.4 % a step and reversed every step, 0.55 K to 3.9e-4 K in 100. A
+ * damped step relaxes those speeds and tractions by its relaxation too
+ * (sim_eval.c level2_pass()): relaxing the temperatures alone left the
+ * 6232 reversing every step at 1/64.
  *
  * `resolution_K` is how finely the map resolves its fixed point: the
  * losses behind it are resolved to a relative tolerance (the mechanics'),
