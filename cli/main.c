@@ -137,8 +137,11 @@ const acbb_cli_command acbb_cli_commands[] = {
       "it a limit fails (--max-rise, --min-life, --min-s0) or the run runs away.\n"
       "--spring: a constant-force preload instead (a rigid one's inner contact load\n"
       "grows with speed, so on it the balls seldom skid; see preload-window-spring).\n"
-      "--csv: speed_rpm, preload_N, status, verdict and the limits' values per cell.\n",
+      "--csv: operating.inner_speed_rpm, mounting.preload_N, status, verdict and the\n"
+      "limits' values per cell (skid_ratio, temp_rise_K, life.Lnmr_h, life.s0_min);\n"
+      "--json: the same cells and each speed's window as one document.\n",
       SCENE_OPTS | O(SPEEDS) | O(PRELOADS) | O(MAX_RISE) | O(MIN_LIFE) | O(MIN_S0) | O(CSV) |
+      O(JSON) |
       O(SPRING) |
       O(PLOT) | O(JOBS), 1, 1, 0, acbb_cli_cmd_preload_map },
     { "presets", NULL, "[DIR]", "the preset search path and the presets in it",

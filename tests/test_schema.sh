@@ -93,6 +93,9 @@ t $? "merge: the merged file's header and records conform"
 "$ACBB" sweep presets/7008C.ini --param operating.axial_load_N --values 100,200 --json \
     >"$TMP/sw.json" 2>/dev/null && $CHECK --def sweep_point --each "$TMP/sw.json"
 t $? "sweep --json: each point conforms (sweep_point)"
+"$ACBB" preload-map presets/7008C.ini --speeds 8000:12000:2 --preloads 100:300:2 --max-rise 30 \
+    --json >"$TMP/pm.json" 2>/dev/null && $CHECK --def preload_map "$TMP/pm.json"
+t $? "preload-map --json conforms (preload_map)"
 "$ACBB" report presets/7008C.ini --json >"$TMP/rep.json" 2>/dev/null &&
     $CHECK --def report_item --each "$TMP/rep.json"
 t $? "report --json: each item conforms (report_item)"
