@@ -93,6 +93,12 @@ t $? "merge: the merged file's header and records conform"
 "$ACBB" sweep presets/7008C.ini --param operating.axial_load_N --values 100,200 --json \
     >"$TMP/sw.json" 2>/dev/null && $CHECK --def sweep_point --each "$TMP/sw.json"
 t $? "sweep --json: each point conforms (sweep_point)"
+"$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --metric life.Lnmr_h \
+    --jsonl "$TMP/mt.jsonl" --csv "$TMP/mt.csv" >/dev/null 2>&1
+head -1 "$TMP/mt.jsonl" >"$TMP/mt_head.json" && tail -n +2 "$TMP/mt.jsonl" >"$TMP/mt_rec.jsonl" &&
+    $CHECK --def sweep_header "$TMP/mt_head.json" "$TMP/mt.csv.json" &&
+    $CHECK --def sweep_record --lines "$TMP/mt_rec.jsonl"
+t $? "sweep --metric: the header (metrics), the CSV's sidecar and the records conform"
 "$ACBB" preload-map presets/7008C.ini --speeds 8000:12000:2 --preloads 100:300:2 --max-rise 30 \
     --json >"$TMP/pm.json" 2>/dev/null && $CHECK --def preload_map "$TMP/pm.json"
 t $? "preload-map --json conforms (preload_map)"
