@@ -89,10 +89,11 @@ for sig in INT TERM; do
         --grid operating.axial_load_N=50:1000:4000 --jsonl "$TMP/s.jsonl" --csv "$TMP/s.csv"
     code $rc 3 "sweep --grid, $S"
     said "sweep --grid, $S" sweep $S
-    # (after the sweep header line; the CSV has it and the column header)
+    # (after the sweep header line; the CSV has the column header, its
+    # header line is in s.csv.json)
     k=$(jq -s 'map(select(has("index"))) | length' "$TMP/s.jsonl")
     [ "${k:-0}" -ge 1 ] && [ "$(jq -s 'map(select(has("index"))) | [.[].index] | unique | length' "$TMP/s.jsonl")" = "$k" ] &&
-        [ "$(($(wc -l <"$TMP/s.csv") - 2))" -eq "$k" ]
+        [ "$(($(wc -l <"$TMP/s.csv") - 1))" -eq "$k" ]
     t $? "sweep --grid, $S: $k finished points, each once, in the JSONL and the CSV"
     jqt "$TMP/s.jsonl" '.status == "converged"' "sweep --grid, $S: every record is a finished point"
     "$ACBB" sweep "$P/7008C.ini" --grid operating.axial_load_N=50:1000:4000 \

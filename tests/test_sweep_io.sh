@@ -225,6 +225,9 @@ sweep --shard 2/2 --csv "$TMP/p2.csv" 2>>"$TMP/log"
 "$ACBB" merge "$TMP/pm.csv" "$TMP/p2.csv" "$TMP/p1.csv" 2>>"$TMP/log" &&
     cmp -s "$TMP/pm.csv" "$TMP/canon.csv" && cmp -s "$TMP/pm.csv.json" "$TMP/canon.csv.json"
 t $? "plain CSV shards merge into the canonical CSV and its sidecar"
+sweep --jsonl "$TMP/same.csv.json" --csv "$TMP/same.csv" 2>"$TMP/err"
+code $? 2 "--jsonl FILE.csv.json with --csv FILE.csv (the header file) is refused"
+[ ! -e "$TMP/same.csv" ] && [ ! -e "$TMP/same.csv.json" ]; t $? "... before any file is made"
 
 # ---- --metric: any acbb metrics path in the records (issue 28 item 8) ----
 M="--metric life.Lnmr_h --metric balls[2].pmax_i_GPa --metric T_cavity_C"
