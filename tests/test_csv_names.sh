@@ -2,7 +2,9 @@
 # One name per quantity and 17 digits in every CSV (issue 28 item 7): the
 # `bench accuracy` and `study` CSVs name their columns as `acbb metrics`
 # and the scene keys do, in the same units, and print the doubles
-# themselves (the run JSON's). TAP. $1 = the acbb binary; cwd = repository
+# themselves (the run JSON's); the run JSON gives each input once
+# (schema 4: scene.keys alone), and a schema-3 document still serves as a
+# --baseline. TAP. $1 = the acbb binary; cwd = repository
 # root. (The preload map's CSV and JSON: test_life_cli.sh; the sweep's:
 # test_sweep_io.sh.)
 set -u
@@ -15,6 +17,19 @@ P=presets/7008C.ini
 
 "$ACBB" run $P --json >"$TMP/run.json" 2>/dev/null
 "$ACBB" metrics >"$TMP/metrics"
+
+# ---- the run JSON: each input once ----
+jq -e '.schema_version == 4 and (.scene | keys == ["keys"])
+    and .scene.keys["operating.axial_load_N"] == 1000 and .scene.keys["fidelity.model"] == "quasi-dynamic"' \
+    "$TMP/run.json" >/dev/null
+t $? "run JSON: schema_version 4, scene holds keys alone (no copies of five inputs beside them)"
+# a schema-3 document (the copies beside keys) as the baseline
+jq '.schema_version = 3 | .scene += {inner_speed_rpm: 15000, axial_load_N: 1000, radial_load_N: 0,
+    thermal_expansion: true, model: "quasi-dynamic"}' "$TMP/run.json" >"$TMP/v3.json"
+"$ACBB" run $P --set operating.axial_load_N=500 --baseline "$TMP/v3.json" --json >"$TMP/vs.json" 2>/dev/null
+jq -e '[.vs_baseline[] | select(.path | startswith("scene"))] == [{"path": "scene.keys.operating.axial_load_N",
+    "baseline": 1000, "now": 500, "change": -500, "change_pct": -50}]' "$TMP/vs.json" >/dev/null
+t $? "a schema-3 run document serves as --baseline: the input named once, by its key"
 
 # ---- bench accuracy ----
 "$ACBB" bench accuracy $P --knobs contact_grid --repeat 1 --csv "$TMP/acc.csv" >/dev/null 2>&1

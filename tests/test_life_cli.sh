@@ -19,7 +19,7 @@ jq -e '.life | (.C_N > 0) and (.C0_N > 0) and (.L10r_h > 0) and (.Lnmr_h > 0) an
        and (.estimated == false) and (.s0_contact | test("^(inner|outer) ball [0-9]+$"))' \
     "$TMP/run.json" >/dev/null
 t $? "life: C_N C0_N L10r_h Lnmr_h a_iso kappa s0_min edge_loaded (bool), the worst contact named"
-jq -e '(.life.L10r_h - .life.L10r_Mrev * 1e6 / (60 * .scene.inner_speed_rpm)) | fabs < 1e-6 * 1e9' \
+jq -e '(.life.L10r_h - .life.L10r_Mrev * 1e6 / (60 * .scene.keys["operating.inner_speed_rpm"])) | fabs < 1e-6 * 1e9' \
     "$TMP/run.json" >/dev/null
 t $? "L10r_h is L10r_Mrev at the scene's speed"
 "$ACBB" metrics >"$TMP/metrics"
@@ -78,7 +78,7 @@ import csv, json, sys
 d = json.load(open(sys.argv[1]))
 rows = list(csv.DictReader(open(sys.argv[2])))
 cells = d["preload_map"]["cells"]
-assert d["schema_version"] >= 3 and len(cells) == len(rows) == 9 and len(d["preload_map"]["rows"]) == 3
+assert d["schema_version"] >= 4 and len(cells) == len(rows) == 9 and len(d["preload_map"]["rows"]) == 3
 for c, r in zip(cells, rows):
     assert list(c) == list(r), (list(c), list(r))
     for k, v in c.items():

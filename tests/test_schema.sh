@@ -43,8 +43,8 @@ done
 # one checker process for all (python's start-up, not the check, is the cost)
 $CHECK "$TMP"/runs/*.json 2>"$TMP/bad"
 t $? "acbb run --json of every preset ($(ls presets/*.ini | wc -l)) conforms to the schema $(head -3 "$TMP/bad" | tr '\n' ' ')"
-jq -e '.schema_version == 3' "$TMP/runs/7008C.json" >/dev/null
-t $? "the run document says schema_version 3"
+jq -e '.schema_version == 4' "$TMP/runs/7008C.json" >/dev/null
+t $? "the run document says schema_version 4"
 # 17 significant digits: the printed number is the double itself
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); v=d["time_s"]; assert repr(v) == repr(float("%.17g" % v)) and len(json.dumps(d["losses_W"]["total"]).replace(".","").lstrip("0")) > 11' "$TMP/runs/7008C.json"
 t $? "numbers are printed with full precision (more than 10 digits)"
@@ -76,7 +76,7 @@ jq -e --slurpfile b "$TMP/runs/7008C.json" '
     | ($r.change_pct - 100 * ($r.now - $r.baseline) / $rise) | fabs < 1e-9' "$TMP/vs.json" >/dev/null
 t $? "--baseline: temperature change_pct is of the rise above ambient ($(jq '.vs_baseline[] | select(.path == "temperature_C.outer_ring") | .change_pct' "$TMP/vs.json") %)"
 
-# every other kind of JSON document (issue 21 item 10): schema_version 3 and
+# every other kind of JSON document (issue 21 item 10): schema_version 4 and
 # the schema's $defs entry for its kind
 "$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --jsonl "$TMP/s.jsonl" \
     >/dev/null 2>&1

@@ -163,7 +163,7 @@ for sig in INT TERM; do
     jqt "$TMP/out" '.status == "cancelled" and .signal == "'$S'"' \
         "report, $S: JSON status cancelled"
     python3 "$(dirname "$0")/schema_check.py" docs/schema/acbb.schema.json --def cancelled "$TMP/out"
-    t $? "report, $S: the cancelled document conforms to the schema (schema_version 3)"
+    t $? "report, $S: the cancelled document conforms to the schema (schema_version 4)"
     [ ! -e "$TMP/r.md" ]
     t $? "report, $S: no --md file"
 
@@ -181,8 +181,8 @@ for sig in INT TERM; do
         --morris 1000 --json --csv "$TMP/sens.csv"
     code $rc 3 "sensitivity, $S"
     said "sensitivity, $S" sensitivity $S
-    jqt "$TMP/out" '.status == "cancelled" and .schema_version == 3' \
-        "sensitivity, $S: JSON status cancelled, schema_version 3"
+    jqt "$TMP/out" '.status == "cancelled" and .schema_version == 4' \
+        "sensitivity, $S: JSON status cancelled, schema_version 4"
     [ ! -e "$TMP/sens.csv" ]
     t $? "sensitivity, $S: no --csv file"
 
