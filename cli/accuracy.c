@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/accuracy.h"
+#include "acbb/units.h"
 #include "acbb/plot.h"
 #include "acbb/scene.h"
 #include "accuracy.h"
@@ -202,19 +203,23 @@ static void print_frontier(const acbb_accuracy_row *rows, size_t n)
 
 static void csv_num(FILE *f, double x)
 {
-    if (isfinite(x)) fprintf(f, ",%.10g", x);
+    if (isfinite(x)) fprintf(f, ",%.17g", x);
     else fputc(',', f);
 }
 
 static void csv_rows(FILE *f, const acbb_accuracy_row *rows, size_t n)
 {
-    fputs("knob,key,value,is_reference,is_default,status,iterations,wall_ms,loss_W,"
-          "dT_outer_K,Qi_N,alpha_i_rad,slide_i_m_s,e_loss,e_T,e_Qi,e_alpha,e_slide,work\n", f);
+    /* The results by their `acbb metrics` names and units (issue 28 item 7:
+     * they were loss_W, Qi_N, alpha_i_rad, slide_i_m_s); the angle in
+     * degrees as the output table computes it (SI / ACBB_DEG). */
+    fputs("knob,key,value,is_reference,is_default,status,iterations,wall_ms,losses_W.total,"
+          "dT_outer_K,balls[0].Qi_N,balls[0].alpha_i_deg,balls[0].slide_i_mps,e_loss,e_T,e_Qi,"
+          "e_alpha,e_slide,work\n", f);
     for (size_t i = 0; i < n; i++) {
         const acbb_accuracy_row *r = &rows[i];
         fprintf(f, "%s,%s,%s,%d,%d,%s,%ld", acbb_accuracy_knob_name(r->knob), r->key, r->value,
                 r->is_reference, r->is_default, row_status(r), r->iterations);
-        const double v[] = { r->wall_ms, r->loss, r->dT_outer, r->Qi, r->alpha_i, r->slide_i,
+        const double v[] = { r->wall_ms, r->loss, r->dT_outer, r->Qi, r->alpha_i / ACBB_DEG, r->slide_i,
                              r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide, r->work };
         for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) csv_num(f, v[k]);
         fputc('\n', f);

@@ -14,8 +14,9 @@
  * of model, contact_grid, hertz, mech_tol, steady_tol, thermal, network;
  * --models the model levels tried (static, quasi-static, quasi-dynamic,
  * dynamic; default all that acbb_sim_new accepts — dynamic can be slow).
- * --csv writes one row per setting (errors as fractions, %.10g, empty field
- * for an undefined number) atomically (include/acbb/outfile.h). --plot
+ * --csv writes one row per setting (results by their `acbb metrics` names,
+ * errors as fractions, %.17g, empty field for an undefined number)
+ * atomically (include/acbb/outfile.h). --plot
  * draws error vs wall time (log-log, one point set per knob) with gnuplot.
  *
  * Exit status: 0 every setting converged; 2 bad input (preset, --set,

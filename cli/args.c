@@ -92,6 +92,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
                            "--branches the run and the other branch share it" },
     [CLI_OPT_BASH_COMPLETION] = { "bash-completion", NULL,
                                   "print the bash completion script made from the command table" },
+    [CLI_OPT_CSV_HEADER] = { "csv-header", NULL,
+                             "the sweep's header as a first CSV line '# {...}' instead of in "
+                             "FILE.json beside the CSV" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions
@@ -211,6 +214,9 @@ static int parse_option(const acbb_cli_command *c, int argc, char **argv, int *i
         if (k == CLI_OPT_GRID && a->n_grids == CLI_MAX_GRIDS)
             return bad(c, "too many --grid (at most 8): ", val);
         if (k == CLI_OPT_GRID) a->grids[a->n_grids++] = val;
+        if (k == CLI_OPT_METRIC && a->n_metrics == CLI_MAX_METRICS)
+            return bad(c, "too many --metric (at most 16): ", val);
+        if (k == CLI_OPT_METRIC) a->metrics[a->n_metrics++] = val;
         a->val[k] = val;
         return 0;
     }

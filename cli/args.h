@@ -6,7 +6,7 @@
  * text can never drift from what the parser accepts.
  *
  * Accepted forms: `--name`, `--name value`, `--name=value`, `-h`; `--`
- * ends the options. --set and --grid may repeat; for every other option the last one
+ * ends the options. --set, --grid and --metric may repeat; for every other option the last one
  * wins. An unknown option is refused with exit 2 and, when a known one is
  * close (edit distance), "did you mean --x?". No user text ever reaches a
  * shell. */
@@ -32,6 +32,7 @@ typedef enum {
     CLI_OPT_SPRING,
     CLI_OPT_MAX_WALL,
     CLI_OPT_BASH_COMPLETION,
+    CLI_OPT_CSV_HEADER,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 
@@ -52,6 +53,7 @@ typedef struct {
 #define CLI_MAX_POS 1024              /* `acbb merge OUT IN...` */
 #define CLI_PATH_MAX 4096
 #define CLI_MAX_GRIDS 8                /* ACBB_SWEEP_MAX_DIMS */
+#define CLI_MAX_METRICS 16             /* `sweep --metric`: ACBB_CLI_SWEEP_METRICS */
 
 /* What the parser hands a command. Values point into argv. */
 typedef struct {
@@ -64,6 +66,8 @@ typedef struct {
     size_t n_sets;
     const char *grids[CLI_MAX_GRIDS];  /* every --grid, in order */
     size_t n_grids;
+    const char *metrics[CLI_MAX_METRICS]; /* every --metric, in order */
+    size_t n_metrics;
     const char *preset;                /* the PRESET positional, resolved */
     char preset_buf[CLI_PATH_MAX];
 } acbb_cli_args;

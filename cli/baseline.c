@@ -191,7 +191,6 @@ static void print_table(const cJSON *rows, const char *path)
         cJSON_ArrayForEach(r, rows) {
             const char *p = cJSON_GetObjectItem(r, "path")->valuestring;
             bool input = strncmp(p, "scene.keys.", 11) == 0;
-            if (strncmp(p, "scene.", 6) == 0 && !input) continue; /* the short echo repeats it */
             bool brief = strncmp(p, "balls[", 6) != 0 || strncmp(p, "balls[0]", 8) == 0;
             if (input == (pass == 0) && brief && !strstr(p, "nodes[")) print_row(r);
         }

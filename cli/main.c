@@ -67,9 +67,15 @@ const acbb_cli_command acbb_cli_commands[] = {
       "wall_limit point runs again). One sweep per file: a second is refused (2).\n"
       "A grid value its key refuses (a typo) is refused (2) before anything runs.\n"
       "Shards: --shard K/N on N machines, then `acbb merge`. --param/--values alone:\n"
-      "one dimension, printed as a table (or --json, --csv) at the end.\n",
+      "one dimension, printed as a table (or --json, --csv) at the end.\n"
+      "--csv FILE: a plain CSV (the column names first); the sweep's header (scene,\n"
+      "grid, fingerprint) goes to FILE.json beside it, or, with --csv-header, on a\n"
+      "first line '# {...}' of the CSV. --metric PATH (repeatable, `acbb metrics`)\n"
+      "adds that result to every record; it is part of the sweep (a resume with\n"
+      "other metrics is refused).\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
-      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT) | O(MAX_WALL), 1, 1, 0, acbb_cli_cmd_sweep },
+      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT) | O(MAX_WALL) | O(METRIC) | O(CSV_HEADER), 1, 1,
+      0, acbb_cli_cmd_sweep },
     { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
       "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"
@@ -138,8 +144,11 @@ const acbb_cli_command acbb_cli_commands[] = {
       "it a limit fails (--max-rise, --min-life, --min-s0) or the run runs away.\n"
       "--spring: a constant-force preload instead (a rigid one's inner contact load\n"
       "grows with speed, so on it the balls seldom skid; see preload-window-spring).\n"
-      "--csv: speed_rpm, preload_N, status, verdict and the limits' values per cell.\n",
+      "--csv: operating.inner_speed_rpm, mounting.preload_N, status, verdict and the\n"
+      "limits' values per cell (skid_ratio, temp_rise_K, life.Lnmr_h, life.s0_min);\n"
+      "--json: the same cells and each speed's window as one document.\n",
       SCENE_OPTS | O(SPEEDS) | O(PRELOADS) | O(MAX_RISE) | O(MIN_LIFE) | O(MIN_S0) | O(CSV) |
+      O(JSON) |
       O(SPRING) |
       O(PLOT) | O(JOBS), 1, 1, 0, acbb_cli_cmd_preload_map },
     { "presets", NULL, "[DIR]", "the preset search path and the presets in it",

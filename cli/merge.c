@@ -42,6 +42,8 @@ typedef struct {
     cJSON *header;             /* the first input's header object */
     const char *header_path;
     acbb_sweep *g;             /* the grid it describes */
+    acbb_cli_metrics metrics;  /* and its --metric columns */
+    int csv_header;            /* CSV: the first input's header was its first line */
     char fp[17];
 } merge_set;
 
@@ -49,6 +51,7 @@ typedef struct {
     const char *path;
     long lineno;
     int has_wall;              /* CSV: the input carries wall_ms last */
+    int plain;                 /* CSV: no header line (the sidecar IN.json) */
 } merge_in;
 
 static int add_rec(merge_set *m, size_t index, int retried, char *text)
@@ -103,11 +106,30 @@ static int refuse(const merge_in *in, const char *why)
     return ACBB_EXIT_INPUT;
 }
 
-/* Line 1: the header; the first input's becomes the reference. */
+/* A plain CSV (its first line the column header, issue 28 item 8): the
+ * header from its sidecar IN.json. */
+static int is_plain_csv(const char *line) { return strncmp(line, "index,fingerprint,", 18) == 0; }
+
+static cJSON *sidecar_header(merge_in *in)
+{
+    int missing = 0;
+    cJSON *h = strcmp(in->path, "-") ? acbb_cli_sweep_sidecar_read(in->path, &missing) : NULL;
+    if (!h)
+        fprintf(stderr, "acbb: merge: %s: a plain sweep CSV whose header %s" ACBB_CLI_SIDECAR_EXT
+                " is %s (the sweep writes it beside the CSV; keep the two together)\n",
+                in->path, strcmp(in->path, "-") ? in->path : "FILE",
+                missing || !strcmp(in->path, "-") ? "missing" : "not a sweep header");
+    return h;
+}
+
+/* Line 1: the header (of a plain CSV: its sidecar's); the first input's
+ * becomes the reference. */
 static int header_line(merge_set *m, merge_in *in, const char *line)
 {
-    acbb_cli_rec_format fmt = line[0] == '#' ? ACBB_CLI_REC_CSV : ACBB_CLI_REC_JSONL;
-    cJSON *h = acbb_cli_sweep_header_parse(line, fmt);
+    int plain = is_plain_csv(line);
+    acbb_cli_rec_format fmt = line[0] == '#' || plain ? ACBB_CLI_REC_CSV : ACBB_CLI_REC_JSONL;
+    cJSON *h = plain ? sidecar_header(in) : acbb_cli_sweep_header_parse(line, fmt);
+    if (!h && plain) return ACBB_EXIT_INPUT;
     if (!h) {
         char why[160];
         snprintf(why, sizeof why, "no sweep header (an acbb sweep output of record format %d "
@@ -120,8 +142,10 @@ static int header_line(merge_set *m, merge_in *in, const char *line)
         const cJSON *fp = cJSON_GetObjectItemCaseSensitive(h, "fingerprint");
         m->g = acbb_cli_sweep_from_header(h);
         if (!m->g) return cJSON_Delete(h), refuse(in, "the header's grid is not a grid");
+        if (acbb_cli_sweep_metrics_of_header(h, &m->metrics) != 0)
+            return cJSON_Delete(h), refuse(in, "the header's metrics are not metrics");
         snprintf(m->fp, sizeof m->fp, "%s", fp->valuestring);
-        m->header = h, m->header_path = in->path, m->fmt = fmt;
+        m->header = h, m->header_path = in->path, m->fmt = fmt, m->csv_header = !plain;
         return 0;
     }
     if (fmt != m->fmt) rc = refuse(in, "JSONL and CSV cannot be merged into one file");
@@ -142,7 +166,7 @@ static int columns_line(const merge_set *m, merge_in *in, const char *line)
         size_t cap = 0;
         FILE *h = open_memstream(&want, &cap);
         if (!h) return ACBB_EXIT_INTERNAL;
-        acbb_cli_sweep_csv_header(h, m->g, wall);
+        acbb_cli_sweep_csv_header(h, m->g, &m->metrics, wall);
         fclose(h);
         int same = strcmp(line, want) == 0;
         free(want);
@@ -155,7 +179,8 @@ static int record_line(merge_set *m, merge_in *in, const char *line)
 {
     size_t index = 0;
     const char *why = "";
-    if (acbb_cli_sweep_check_record(line, m->fmt, m->g, m->fp, in->has_wall, &index, &why)) {
+    if (acbb_cli_sweep_check_record(line, m->fmt, m->g, &m->metrics, m->fp, in->has_wall, &index,
+                                    &why)) {
         char msg[160];
         snprintf(msg, sizeof msg, "not a record of this sweep: %s", why);
         return refuse(in, msg);
@@ -195,8 +220,12 @@ static int read_input(merge_set *m, const char *path)
                     in.lineno);
             break;
         }
-        if (in.lineno == 1) rc = header_line(m, &in, line);
-        else if (in.lineno == 2 && m->fmt == ACBB_CLI_REC_CSV) rc = columns_line(m, &in, line);
+        if (in.lineno == 1) {
+            in.plain = is_plain_csv(line); /* its column line first, the header beside */
+            rc = header_line(m, &in, line);
+            if (!rc && in.plain) rc = columns_line(m, &in, line);
+        } else if (in.lineno == 2 && m->fmt == ACBB_CLI_REC_CSV && !in.plain)
+            rc = columns_line(m, &in, line);
         else rc = record_line(m, &in, line);
     }
     if (in.lineno == 0) fprintf(stderr, "acbb: merge: %s: empty, skipped\n", path);
@@ -214,16 +243,34 @@ static int by_index(const void *a, const void *b)
     return x->seq < y->seq ? -1 : x->seq > y->seq;
 }
 
-static void write_header(FILE *f, const merge_set *m)
+static void header_object(FILE *f, const merge_set *m, const char *prefix)
 {
     cJSON *top = cJSON_CreateObject();
     cJSON_AddNumberToObject(top, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddItemToObject(top, "acbb_sweep", cJSON_Duplicate(m->header, 1));
     char *text = cJSON_PrintUnformatted(top);
     cJSON_Delete(top);
-    fprintf(f, "%s%s\n", m->fmt == ACBB_CLI_REC_CSV ? "# " : "", text ? text : "{}");
+    fprintf(f, "%s%s\n", prefix, text ? text : "{}");
     cJSON_free(text);
-    if (m->fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, m->g, 0);
+}
+
+/* The merged CSV takes the first input's form: plain with the sidecar
+ * OUT.json (committed first; none for stdout), or the header line. */
+static int write_header(FILE *f, const merge_set *m, const char *out)
+{
+    int plain = m->fmt == ACBB_CLI_REC_CSV && !m->csv_header;
+    if (!plain) header_object(f, m, m->fmt == ACBB_CLI_REC_CSV ? "# " : "");
+    if (m->fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, m->g, &m->metrics, 0);
+    if (!plain || strcmp(out, "-") == 0) return 0;
+    char side[4200];
+    if (snprintf(side, sizeof side, "%s" ACBB_CLI_SIDECAR_EXT, out) >= (int)sizeof side) {
+        fprintf(stderr, "acbb: merge: %s: path too long for its header file\n", out);
+        return ACBB_EXIT_INPUT;
+    }
+    acbb_cli_file file = { 0 };
+    int rc = acbb_cli_file_open(&file, side);
+    if (!rc) header_object(file.out.f, m, ""), rc = acbb_cli_file_close(&file);
+    return rc;
 }
 
 /* Points of the grid without a record: exit 3 (the merged file is written,
@@ -259,7 +306,10 @@ static int write_merged(const char *out, merge_set *m)
     acbb_cli_file file = { 0 };
     int rc = acbb_cli_file_open(&file, out);
     if (rc) return rc;
-    write_header(file.out.f, m);
+    if ((rc = write_header(file.out.f, m, out)) != 0) {
+        acbb_out_abort(file.handle);
+        return rc;
+    }
     size_t kept = 0, dup = 0;
     for (size_t i = 0; i < m->n; i++) {
         if (i > 0 && m->recs[i].index == m->recs[i - 1].index) {
@@ -272,6 +322,14 @@ static int write_merged(const char *out, merge_set *m)
     rc = acbb_cli_file_close(&file);
     if (dup) fprintf(stderr, "acbb: merge: %zu repeated records dropped\n", dup);
     return rc ? rc : missing(m, kept);
+}
+
+/* A CSV column line whose last column is wall_ms. */
+static int ends_with_wall(const char *line)
+{
+    size_t len = strlen(line);
+    return (len >= 8 && strcmp(line + len - 8, ",wall_ms") == 0) ||
+           (len >= 9 && strcmp(line + len - 9, ",wall_ms\n") == 0);
 }
 
 /* OUT is a sweep's own output, not a merge's: its column line (CSV) or
@@ -289,15 +347,16 @@ static int out_is_shard(const char *path)
     int yes = 0;
     acbb_cli_rec_format fmt = ACBB_CLI_REC_JSONL;
     for (long n = 1; n <= 2 && getline(&line, &cap, f) > 0; n++) {
-        if (n == 1) {
+        if (n == 1 && is_plain_csv(line)) { /* the column line is this one */
+            yes = ends_with_wall(line);
+            break;
+        } else if (n == 1) {
             fmt = line[0] == '#' ? ACBB_CLI_REC_CSV : ACBB_CLI_REC_JSONL;
             cJSON *h = acbb_cli_sweep_header_parse(line, fmt);
             cJSON_Delete(h);
             if (!h) break;
         } else if (fmt == ACBB_CLI_REC_CSV) {
-            size_t len = strlen(line);
-            yes = len >= 8 && strncmp(line + len - 8, ",wall_ms", 8) == 0;
-            yes = yes || (len >= 9 && strcmp(line + len - 9, ",wall_ms\n") == 0);
+            yes = ends_with_wall(line);
         } else {
             cJSON *o = cJSON_Parse(line);
             yes = cJSON_GetObjectItemCaseSensitive(o, "wall_ms") != NULL;

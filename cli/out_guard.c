@@ -218,6 +218,14 @@ static size_t collect(const acbb_cli_args *a, char *study_preset, acbb_cli_named
     for (size_t k = 0; k < sizeof outs / sizeof *outs; k++)
         if (a->val[outs[k]] && a->val[outs[k]][0])
             out[n_out++] = (acbb_cli_named_path){ a->val[outs[k]], out_names[k] };
+    /* a sweep's plain CSV has its header beside it (cli/sweep.h): --jsonl
+     * X.csv.json --csv X.csv would write one file twice */
+    static char side[CLI_PATH_MAX];
+    const char *csv = a->val[CLI_OPT_CSV];
+    if (strcmp(a->cmd, "sweep") == 0 && csv && csv[0] && strcmp(csv, "-") != 0 &&
+        !a->val[CLI_OPT_CSV_HEADER] &&
+        snprintf(side, sizeof side, "%s.json", csv) < (int)sizeof side)
+        out[n_out++] = (acbb_cli_named_path){ side, "the --csv header file (FILE.json)" };
     return n_out + plot_siblings(a, out + n_out);
 }
 

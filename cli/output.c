@@ -718,7 +718,8 @@ static void study_csv_point(acbb_cli_out *o, const acbb_cli_point *p)
 void acbb_cli_study_csv(acbb_cli_out *o, const acbb_cli_point *pts,
                         const acbb_cli_study_block *blocks, size_t nb)
 {
-    fputs("sweep,inner_speed_rpm,axial_load_N", o->f);
+    /* the scene keys by their full names, as sweeps name them (issue 28 item 7) */
+    fputs("sweep,operating.inner_speed_rpm,operating.axial_load_N", o->f);
     const char *mode[2] = { "te", "wte" };
     for (int m = 0; m < 2; m++) {
         fprintf(o->f, ",%s_status,%s_iterations", mode[m], mode[m]);

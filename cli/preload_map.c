@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "common.h"
 #include "exit.h"
+#include "preload_map_out.h"
 #include "progress.h"
 
 static int bad(const char *msg, const char *opt, const char *val)
@@ -63,20 +64,6 @@ static int options(const acbb_cli_args *a, acbb_pmap_opts *o)
     o->jobs = (int)jobs;
     o->spring = a->val[CLI_OPT_SPRING] != NULL;
     return rc;
-}
-
-static void csv(FILE *f, const acbb_pmap_cell *c, size_t n)
-{
-    fputs("speed_rpm,preload_N,status,verdict,skid_ratio,temp_rise_K,Lnmr_h,s0_min\n", f);
-    for (size_t i = 0; i < n; i++) {
-        fprintf(f, "%.10g,%.10g,%s,%s", c[i].speed_rpm, c[i].preload_N, c[i].status_name,
-                acbb_pmap_verdict(&c[i]));
-        if (c[i].have)
-            fprintf(f, ",%.10g,%.10g,%.10g,%.10g\n", c[i].skid, c[i].rise_K, c[i].Lnmr_h,
-                    c[i].s0_min);
-        else
-            fputs(",,,,\n", f);
-    }
 }
 
 static void table(const acbb_pmap_opts *o, const acbb_pmap_cell *c, const acbb_pmap_row *r)
@@ -151,12 +138,14 @@ static int outputs(const acbb_cli_args *a, const acbb_pmap_opts *o, const acbb_p
         acbb_cli_file f = { 0 };
         rc = acbb_cli_file_open(&f, a->val[CLI_OPT_CSV]);
         if (!rc) {
-            csv(f.out.f, c, (size_t)o->n_speeds * o->n_preloads);
+            acbb_cli_pmap_csv(f.out.f, c, (size_t)o->n_speeds * o->n_preloads);
             rc = acbb_cli_file_close(&f);
         }
     }
     if (!rc && a->val[CLI_OPT_PLOT]) rc = chart(a->val[CLI_OPT_PLOT], o, r);
-    if (a->val[CLI_OPT_CSV] && !strcmp(a->val[CLI_OPT_CSV], "-")) return rc;
+    if (a->val[CLI_OPT_JSON] && acbb_cli_pmap_json(stdout, o, c, r) != 0) rc = ACBB_EXIT_INTERNAL;
+    if (a->val[CLI_OPT_JSON] || (a->val[CLI_OPT_CSV] && !strcmp(a->val[CLI_OPT_CSV], "-")))
+        return acbb_cli_worst(rc, acbb_cli_stdout_check(0));
     table(o, c, r);
     return acbb_cli_worst(rc, acbb_cli_stdout_check(0));
 }
@@ -185,6 +174,8 @@ int acbb_cli_cmd_preload_map(const acbb_cli_args *a)
     int rc = options(a, &o);
     if (!rc) rc = acbb_cli_load_scene(a, &base);
     if (rc) return rc;
+    if (a->val[CLI_OPT_JSON] && a->val[CLI_OPT_CSV] && !strcmp(a->val[CLI_OPT_CSV], "-"))
+        return bad("stdout holds one document: --json, or --csv -, not both", "csv", "-");
     if (a->val[CLI_OPT_PLOT]) {
         int fmt = acbb_plot_format_from_name(a->val[CLI_OPT_PLOT]);
         if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)

@@ -99,6 +99,21 @@ bad:
     return ACBB_EXIT_INPUT;
 }
 
+/* Every --metric in its canonical form (sweep_metric.c); refused before
+ * anything runs (exit 2). */
+static int parse_metrics(const acbb_cli_args *a, acbb_cli_metrics *m)
+{
+    m->n = 0;
+    for (size_t i = 0; i < a->n_metrics; i++) {
+        char msg[300];
+        if (acbb_cli_sweep_metric_add(m, a->metrics[i], msg, sizeof msg) != 0) {
+            fprintf(stderr, "acbb: sweep: --metric %s: %s\n", a->metrics[i], msg);
+            return ACBB_EXIT_INPUT;
+        }
+    }
+    return 0;
+}
+
 /* "K/N", 1 <= K <= N. */
 static int parse_shard(const acbb_cli_args *a, acbb_sweep_opts *o)
 {
@@ -283,6 +298,8 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
                           .done = on_point,
                           .transient = a->val[CLI_OPT_TRANSIENT] != NULL };
     if (!rc) rc = parse_shard(a, &o);
+    acbb_cli_metrics metrics;
+    if (!rc) rc = parse_metrics(a, &metrics);
     acbb_sweep *g = NULL;
     if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;
     if (!rc) rc = build_grid(a, g);
@@ -296,9 +313,11 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     sweep_run s = { .grid = g, .total = acbb_sweep_n_points(g), .base = &base,
                     .progress = acbb_cli_progress_wanted(stderr) };
     o.ctx = &s;
-    acbb_cli_sweep_id_init(&s.id, g, &base, o.transient);
+    acbb_cli_sweep_id_init(&s.id, g, &base, o.transient, &metrics);
+    s.id.csv_header = a->val[CLI_OPT_CSV_HEADER] != NULL;
+    /* --metric and --csv-header are options of the records: they ask for them */
     bool legacy = a->n_grids == 0 && !a->val[CLI_OPT_JSONL] && !a->val[CLI_OPT_SHARD] &&
-                  !a->val[CLI_OPT_MAX_POINTS];
+                  !a->val[CLI_OPT_MAX_POINTS] && metrics.n == 0 && !s.id.csv_header;
     /* SIGINT / SIGTERM stop the sweep within a step; what finished is
      * kept (progress.h). */
     o.cancel = acbb_cli_interrupt_begin();

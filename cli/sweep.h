@@ -6,15 +6,19 @@
  * - JSONL: a header line {"acbb_sweep":{format, fingerprint, mode, grid
  *   (key: [values]), scene (key: value of every key the grid does not
  *   vary but fidelity.max_wall_s, and schedule.rows: the rows as one
- *   text)}}, then one object per line, keys in this order: index,
- *   fingerprint, grid (key: value, a number when the value reads as one),
- *   status, message, iterations, the scalars (acbb_cli_sweep_scalars; null
- *   when the point never ran), wall_ms. Printed by cJSON (numbers
+ *   text), metrics (the --metric paths, when given)}}, then one object per
+ *   line, keys in this order: index, fingerprint, grid (key: value, a
+ *   number when the value reads as one), status, message, iterations, the
+ *   scalars (acbb_cli_sweep_scalars; null when the point never ran), the
+ *   --metric paths, wall_ms. Printed by cJSON (numbers
  *   round-trip exactly).
- * - CSV: the same header object on a first line "# {...}", the column
- *   header "index,fingerprint,<grid keys>,status,iterations,<scalars>,
- *   message,wall_ms"; numbers %.10g, an empty field for a point that never
- *   ran, the message always quoted.
+ * - CSV: the column header "index,fingerprint,<grid keys>,status,
+ *   iterations,<scalars>,<--metric paths>,message,wall_ms" first, so csv
+ *   readers take it as the header (issue 28 item 8); the header object in
+ *   the sidecar PATH.json (the JSONL's first line, written before the CSV),
+ *   or, with --csv-header, on a first line "# {...}" (the form before issue
+ *   28; stdout, FIFOs and devices have no sidecar). Numbers %.17g, an empty
+ *   field for a point that never ran, the message always quoted.
  * - The fingerprint (include/acbb/sweep.h, acbb_sweep_fingerprint, 16 hex
  *   digits) names the record format ACBB_SWEEP_FORMAT, the run mode, the
  *   scene and the grid: `acbb merge` and a resumed sweep refuse a header
@@ -43,15 +47,40 @@ size_t acbb_cli_sweep_n_scalars(void);
 
 typedef enum { ACBB_CLI_REC_JSONL, ACBB_CLI_REC_CSV } acbb_cli_rec_format;
 
+/* ---- sweep_metric.c: `--metric PATH`, results added to every record ---- */
+#define ACBB_CLI_SWEEP_METRICS 16
+#define ACBB_CLI_METRIC_NAME 64
+typedef struct {
+    size_t n;
+    char path[ACBB_CLI_SWEEP_METRICS][ACBB_CLI_METRIC_NAME]; /* canonical run JSON paths */
+} acbb_cli_metrics;
+/* Add `path` (an `acbb metrics` path or old name) in its canonical form;
+ * 0, or -1 with the reason in msg (unknown, already a fixed column, twice). */
+int acbb_cli_sweep_metric_add(acbb_cli_metrics *m, const char *path, char *msg, size_t mn);
+/* The metric's value in snap (JSON units); NAN with *expected = 1 when it
+ * has none on purpose (snap NULL, a ball it does not have, a failed probe,
+ * set.* of one bearing), *expected = 0 otherwise. */
+double acbb_cli_sweep_metric_value(const acbb_snapshot *snap, const char *path, int *expected);
+struct cJSON;
+/* The metrics a header lists ("metrics": [...], absent: none); -1 when
+ * the list is not one a sweep writes. */
+int acbb_cli_sweep_metrics_of_header(const struct cJSON *h, acbb_cli_metrics *m);
+
 /* The sweep an output belongs to (sweep_id.c). */
 typedef struct {
     const acbb_sweep *g;
     const acbb_scene *base;
     int transient;
-    char fp[17];               /* acbb_sweep_fingerprint, 16 hex digits */
+    int csv_header;            /* CSV: the header on a first line "# {...}" (--csv-header),
+                                  not in the sidecar PATH.json */
+    acbb_cli_metrics metrics;  /* --metric */
+    char fp[17];               /* acbb_sweep_fingerprint (and the metrics), 16 hex digits */
 } acbb_cli_sweep_id;
+/* The id of a sweep; metrics may be NULL (none). With metrics the
+ * fingerprint goes on over "metrics=PATH" lines: a sweep without --metric
+ * keeps the fingerprint it always had. */
 void acbb_cli_sweep_id_init(acbb_cli_sweep_id *id, const acbb_sweep *g, const acbb_scene *base,
-                            int transient);
+                            int transient, const acbb_cli_metrics *metrics);
 
 /* One record (with its newline) into f; returns the count of non-finite
  * numbers met (written as null / empty). */
@@ -60,7 +89,8 @@ long acbb_cli_sweep_record(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_swee
 /* The header line (CSV: and the column header) an output starts with. */
 void acbb_cli_sweep_header(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
                            int with_wall);
-void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall);
+void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, const acbb_cli_metrics *m,
+                               int with_wall);
 
 /* The same, as text in memory (malloc'd, *len bytes; NULL: out of memory):
  * a record is handed to write(2) whole (sweep_sink.c). */
@@ -119,6 +149,12 @@ int acbb_cli_sink_close(acbb_cli_sink *o);
 typedef struct cJSON cJSON;
 /* The header object of an output line, or NULL when the line is none. */
 cJSON *acbb_cli_sweep_header_parse(const char *line, acbb_cli_rec_format fmt);
+/* A plain CSV's sidecar, CSV_PATH.json (issue 28 item 8): the header line
+ * of the JSONL, written (atomically) before the CSV's first byte, so a CSV
+ * with bytes in it has one. Its header object, or NULL (*missing: no such
+ * file; else not a header). */
+#define ACBB_CLI_SIDECAR_EXT ".json"
+cJSON *acbb_cli_sweep_sidecar_read(const char *csv_path, int *missing);
 /* This sweep's header object (owned by the caller, cJSON_Delete). */
 cJSON *acbb_cli_sweep_header_of(const acbb_cli_sweep_id *id);
 /* The number of differences between two headers, listed in msg
@@ -130,7 +166,8 @@ acbb_sweep *acbb_cli_sweep_from_header(const cJSON *h);
  * range, fingerprint equal, grid values those of the index, numbers finite,
  * CSV: every field in place. 0, or -1 with *why. */
 int acbb_cli_sweep_check_record(const char *line, acbb_cli_rec_format fmt, const acbb_sweep *g,
-                                const char *fp, int with_wall, size_t *index, const char **why);
+                                const acbb_cli_metrics *m, const char *fp, int with_wall,
+                                size_t *index, const char **why);
 /* Point index's grid as a JSON object (key: value). */
 cJSON *acbb_cli_sweep_grid_json(const acbb_sweep *g, size_t index);
 

@@ -9,16 +9,24 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/json.h"
+#include "acbb/outfile.h"
 #include "sweep.h"
 
 void acbb_cli_sweep_id_init(acbb_cli_sweep_id *id, const acbb_sweep *g, const acbb_scene *base,
-                            int transient)
+                            int transient, const acbb_cli_metrics *metrics)
 {
+    memset(id, 0, sizeof *id);
     id->g = g;
     id->base = base;
     id->transient = transient;
-    snprintf(id->fp, sizeof id->fp, "%016llx",
-             (unsigned long long)acbb_sweep_fingerprint(g, base, transient));
+    if (metrics) id->metrics = *metrics;
+    uint64_t h = acbb_sweep_fingerprint(g, base, transient);
+    for (size_t k = 0; k < id->metrics.n; k++) {
+        h = acbb_hash64("metrics=", 8, h);
+        h = acbb_hash64(id->metrics.path[k], strlen(id->metrics.path[k]), h);
+        h = acbb_hash64("\n", 1, h);
+    }
+    snprintf(id->fp, sizeof id->fp, "%016llx", (unsigned long long)h);
 }
 
 /* {"format":2,"fingerprint":..,"mode":..,"grid":{k:[v..]},"scene":{k:v..}} */
@@ -47,6 +55,11 @@ static cJSON *header_json(const acbb_cli_sweep_id *id)
     cJSON_AddStringToObject(sc, ACBB_SWEEP_SCHEDULE_KEY, rows);
     cJSON_AddItemToObject(h, "grid", grid);
     cJSON_AddItemToObject(h, "scene", sc);
+    if (id->metrics.n) { /* absent without --metric: the header it always had */
+        cJSON *m = cJSON_AddArrayToObject(h, "metrics");
+        for (size_t k = 0; m && k < id->metrics.n; k++)
+            cJSON_AddItemToArray(m, cJSON_CreateString(id->metrics.path[k]));
+    }
     cJSON *top = cJSON_CreateObject();
     cJSON_AddNumberToObject(top, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddItemToObject(top, "acbb_sweep", h);
@@ -56,12 +69,14 @@ static cJSON *header_json(const acbb_cli_sweep_id *id)
 void acbb_cli_sweep_header(FILE *f, acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
                            int with_wall)
 {
-    cJSON *h = header_json(id);
-    char *text = cJSON_PrintUnformatted(h);
-    cJSON_Delete(h);
-    fprintf(f, "%s%s\n", fmt == ACBB_CLI_REC_CSV ? "# " : "", text ? text : "{}");
-    cJSON_free(text);
-    if (fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, id->g, with_wall);
+    if (fmt == ACBB_CLI_REC_JSONL || id->csv_header) {
+        cJSON *h = header_json(id);
+        char *text = cJSON_PrintUnformatted(h);
+        cJSON_Delete(h);
+        fprintf(f, "%s%s\n", fmt == ACBB_CLI_REC_CSV ? "# " : "", text ? text : "{}");
+        cJSON_free(text);
+    }
+    if (fmt == ACBB_CLI_REC_CSV) acbb_cli_sweep_csv_header(f, id->g, &id->metrics, with_wall);
 }
 
 char *acbb_cli_sweep_header_text(acbb_cli_rec_format fmt, const acbb_cli_sweep_id *id,
@@ -91,6 +106,24 @@ cJSON *acbb_cli_sweep_header_parse(const char *line, acbb_cli_rec_format fmt)
         return h;
     cJSON_Delete(h);
     return NULL;
+}
+
+cJSON *acbb_cli_sweep_sidecar_read(const char *csv_path, int *missing)
+{
+    char side[4200];
+    *missing = 1;
+    if (snprintf(side, sizeof side, "%s" ACBB_CLI_SIDECAR_EXT, csv_path) >= (int)sizeof side)
+        return NULL;
+    FILE *f = fopen(side, "r");
+    if (!f) return NULL;
+    *missing = 0;
+    char *line = NULL;
+    size_t cap = 0;
+    cJSON *h = getline(&line, &cap, f) > 0 ? acbb_cli_sweep_header_parse(line, ACBB_CLI_REC_JSONL)
+                                           : NULL;
+    free(line);
+    fclose(f);
+    return h;
 }
 
 cJSON *acbb_cli_sweep_header_of(const acbb_cli_sweep_id *id)
@@ -137,11 +170,13 @@ int acbb_cli_sweep_header_diff(const cJSON *a, const cJSON *b, char *msg, size_t
     size_t len = 0;
     int count = 0;
     msg[0] = '\0';
-    static const char *const top[] = { "format", "mode" };
-    for (size_t k = 0; k < 2; k++) {
+    static const char *const top[] = { "format", "mode", "metrics" };
+    for (size_t k = 0; k < 3; k++) {
         const cJSON *x = cJSON_GetObjectItemCaseSensitive(a, top[k]);
         const cJSON *y = cJSON_GetObjectItemCaseSensitive(b, top[k]);
-        if (!x || !y || !cJSON_Compare(x, y, 1)) say(msg, n, &len, &count, top[k], x, y);
+        int optional = k == 2; /* metrics: absent in both is the same */
+        if ((x || y || !optional) && (!x || !y || !cJSON_Compare(x, y, 1)))
+            say(msg, n, &len, &count, top[k], x, y);
     }
     diff_members(cJSON_GetObjectItemCaseSensitive(a, "grid"),
                  cJSON_GetObjectItemCaseSensitive(b, "grid"), "grid ", msg, n, &len, &count);
@@ -269,11 +304,11 @@ static int csv_field(const char *s, size_t *at, size_t *start, size_t *len)
     return 1;
 }
 
-static int check_csv(const char *line, const acbb_sweep *g, const char *fp, int with_wall,
-                     size_t *index, const char **why)
+static int check_csv(const char *line, const acbb_sweep *g, const acbb_cli_metrics *m,
+                     const char *fp, int with_wall, size_t *index, const char **why)
 {
     size_t dims = acbb_sweep_n_dims(g);
-    size_t n_cols = 1 + 1 + dims + 2 + acbb_cli_sweep_n_scalars() + 1 + (size_t)with_wall;
+    size_t n_cols = 1 + 1 + dims + 2 + acbb_cli_sweep_n_scalars() + m->n + 1 + (size_t)with_wall;
     size_t at = 0, st, len, col = 0;
     *why = "a field is out of place";
     for (; csv_field(line, &at, &st, &len); col++) {
@@ -319,8 +354,9 @@ int acbb_cli_sweep_record_retried(const char *line, acbb_cli_rec_format fmt,
 }
 
 int acbb_cli_sweep_check_record(const char *line, acbb_cli_rec_format fmt, const acbb_sweep *g,
-                                const char *fp, int with_wall, size_t *index, const char **why)
+                                const acbb_cli_metrics *m, const char *fp, int with_wall,
+                                size_t *index, const char **why)
 {
-    return fmt == ACBB_CLI_REC_CSV ? check_csv(line, g, fp, with_wall, index, why)
+    return fmt == ACBB_CLI_REC_CSV ? check_csv(line, g, m, fp, with_wall, index, why)
                                    : check_jsonl(line, g, fp, index, why);
 }

@@ -141,6 +141,13 @@ static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_
         cJSON_AddItemToObject(o, names[k], acbb_cli_json_number(v[k]));
         nonfinite += checked && !isfinite(v[k]);
     }
+    for (size_t k = 0; k < id->metrics.n; k++) {
+        int expected = 1;
+        double x = acbb_cli_sweep_metric_value(r->have_snap ? &r->snap : NULL,
+                                               id->metrics.path[k], &expected);
+        cJSON_AddItemToObject(o, id->metrics.path[k], acbb_cli_json_number(x));
+        nonfinite += !expected && !isfinite(x);
+    }
     cJSON_AddItemToObject(o, "wall_ms", acbb_cli_json_number(r->wall_ms));
     char *text = cJSON_PrintUnformatted(o);
     cJSON_Delete(o);
@@ -188,6 +195,14 @@ static long record_csv(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_re
         else nonfinite += checked && (set || !is_set_col(names[k]));
         fputc(',', f);
     }
+    for (size_t k = 0; k < id->metrics.n; k++) {
+        int expected = 1;
+        double x = acbb_cli_sweep_metric_value(r->have_snap ? &r->snap : NULL,
+                                               id->metrics.path[k], &expected);
+        if (isfinite(x)) fprintf(f, "%.17g", x);
+        else nonfinite += !expected;
+        fputc(',', f);
+    }
     csv_text(f, message_text(r));
     fprintf(f, ",%.17g\n", r->wall_ms);
     return nonfinite;
@@ -213,7 +228,8 @@ char *acbb_cli_sweep_record_text(acbb_cli_rec_format fmt, const acbb_cli_sweep_i
     return text;
 }
 
-void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall)
+void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, const acbb_cli_metrics *m,
+                               int with_wall)
 {
     char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
     double v[ACBB_CLI_SWEEP_SCALARS];
@@ -222,6 +238,7 @@ void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, int with_wall)
     for (size_t d = 0; d < acbb_sweep_n_dims(g); d++) fprintf(f, ",%s", acbb_sweep_key(g, d));
     fputs(",status,iterations", f);
     for (size_t k = 0; k < n; k++) fprintf(f, ",%s", names[k]);
+    for (size_t k = 0; k < m->n; k++) fprintf(f, ",%s", m->path[k]);
     fprintf(f, ",message%s\n", with_wall ? ",wall_ms" : "");
 }
 
@@ -250,12 +267,52 @@ static int header_prefix(const acbb_cli_sweep_id *id, acbb_cli_rec_format fmt, s
     return yes;
 }
 
+/* The CSV column line `cols` (n bytes, lineno): 0 this sweep's; 1 a
+ * prefix of it that the writer did not finish; -1 another, said. */
+static int resume_columns(const char *path, const acbb_cli_sweep_id *id, const char *cols,
+                          ssize_t n, long lineno)
+{
+    char *mine = NULL;
+    size_t mcap = 0;
+    int rc = 0;
+    FILE *h = open_memstream(&mine, &mcap);
+    if (h) acbb_cli_sweep_csv_header(h, id->g, &id->metrics, 1), fclose(h);
+    if (mine && (n <= 0 || (cols[n - 1] != '\n' && strncmp(cols, mine, (size_t)n) == 0)))
+        rc = 1; /* killed before the column line was whole */
+    else if (!mine || strcmp(cols, mine) != 0) {
+        fprintf(stderr, "acbb: sweep: %s:%ld: not this sweep's column header; not resuming "
+                "(write to another file)\n", path, lineno);
+        rc = -1;
+    }
+    free(mine);
+    return rc;
+}
+
+/* A CSV whose header form (sidecar or first line, --csv-header) is not
+ * the one asked for: said, so the user adds or drops the option. */
+static int other_form(const char *path, const acbb_cli_sweep_id *id, const char *line)
+{
+    int headed = strncmp(line, "# ", 2) == 0;
+    if (headed == id->csv_header) return 0;
+    fprintf(stderr, "acbb: sweep: %s: %s; not resuming (run the same command %s, or write to "
+            "another file)\n", path,
+            headed ? "its first line is the sweep's header (written with --csv-header)"
+                   : "a plain CSV (the sweep's header beside it, in .json)",
+            headed ? "with --csv-header" : "without --csv-header");
+    return -1;
+}
+
 /* The first line(s) of an existing output: 0 this sweep's header; 1 this
  * sweep's header cut short (the CSV column line unfinished); -1 another
- * sweep's, with a message naming what differs. */
+ * sweep's, with a message naming what differs. A plain CSV (no
+ * --csv-header) starts with its column line: its header, the sidecar, was
+ * checked when the file was opened (sweep_sink.c). */
 static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
                          const acbb_cli_sweep_id *id, const char *line, long *lineno)
 {
+    if (fmt == ACBB_CLI_REC_CSV && other_form(path, id, line)) return -1;
+    if (fmt == ACBB_CLI_REC_CSV && !id->csv_header)
+        return resume_columns(path, id, line, (ssize_t)strlen(line), *lineno);
     cJSON *got = acbb_cli_sweep_header_parse(line, fmt), *want = acbb_cli_sweep_header_of(id);
     char diff[400];
     int rc = -1;
@@ -272,21 +329,12 @@ static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
     cJSON_Delete(want);
     if (rc || fmt != ACBB_CLI_REC_CSV) return rc;
     /* CSV: the column header follows. */
-    char *cols = NULL, *mine = NULL;
-    size_t cap = 0, mcap = 0;
-    FILE *h = open_memstream(&mine, &mcap);
-    if (h) acbb_cli_sweep_csv_header(h, id->g, 1), fclose(h);
+    char *cols = NULL;
+    size_t cap = 0;
     ++*lineno;
     ssize_t n = getline(&cols, &cap, f);
-    if (mine && (n <= 0 || (cols[n - 1] != '\n' && strncmp(cols, mine, (size_t)n) == 0)))
-        rc = 1; /* killed before the column line was whole */
-    else if (!mine || strcmp(cols, mine) != 0) {
-        fprintf(stderr, "acbb: sweep: %s:%ld: not this sweep's column header; not resuming "
-                "(write to another file)\n", path, *lineno);
-        rc = -1;
-    }
+    rc = resume_columns(path, id, cols ? cols : "", n, *lineno);
     free(cols);
-    free(mine);
     return rc;
 }
 
@@ -297,7 +345,7 @@ static int resume_record(const char *line, const char *path, long lineno,
 {
     size_t index = 0;
     const char *why = "";
-    if (acbb_cli_sweep_check_record(line, fmt, id->g, id->fp, 1, &index, &why) != 0) {
+    if (acbb_cli_sweep_check_record(line, fmt, id->g, &id->metrics, id->fp, 1, &index, &why) != 0) {
         fprintf(stderr, "acbb: sweep: %s:%ld: not a record of this sweep (%s); not "
                 "resuming (write to another file)\n", path, lineno, why);
         return ACBB_EXIT_INPUT;

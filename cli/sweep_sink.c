@@ -11,7 +11,10 @@
  *   full, `ulimit -f`, a closed pipe) a regular file is cut back to its
  *   last whole record (ftruncate), the sink stops taking records and the
  *   sweep stops (acbb_cli_interrupt_stop): the file can be resumed as is
- *   once there is room, and the command exits 4 naming the file. */
+ *   once there is room, and the command exits 4 naming the file.
+ * - A plain CSV's header lives in the sidecar PATH.json (sweep.h), written
+ *   whole before the CSV's first byte and checked before a CSV with bytes
+ *   in it is resumed. */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -19,7 +22,9 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cjson/cJSON.h>
 #include "acbb/outfile.h"
+#include "common.h"
 #include "exit.h"
 #include "progress.h"
 #include "sweep.h"
@@ -55,6 +60,61 @@ static int put_header(acbb_cli_sink *o, const acbb_cli_sweep_id *id)
     acbb_cli_sink_put(o, text, len);
     free(text);
     return 0;
+}
+
+/* A plain CSV (no --csv-header) keeps its sweep's header in the sidecar
+ * PATH.json (sweep.h). A CSV with bytes in it was started after its
+ * sidecar was committed: the sidecar must be there and be this sweep's, or
+ * the CSV is not resumed (its records' fingerprint alone could not say
+ * what differs). */
+static int sidecar_check(const acbb_cli_sink *o, const acbb_cli_sweep_id *id)
+{
+    struct stat st;
+    char first[2];
+    if (fstat(o->fd, &st) != 0 || st.st_size == 0) return 0;
+    /* a header line first: the resume says it was written with --csv-header */
+    if (pread(o->fd, first, 2, 0) == 2 && memcmp(first, "# ", 2) == 0) return 0;
+    int missing = 0, rc = ACBB_EXIT_INPUT;
+    cJSON *got = acbb_cli_sweep_sidecar_read(o->path, &missing), *want = acbb_cli_sweep_header_of(id);
+    char diff[400];
+    if (!got && missing)
+        fprintf(stderr, "acbb: sweep: %s: its header %s" ACBB_CLI_SIDECAR_EXT " is missing (a "
+                "plain sweep CSV keeps the sweep's header there; --csv-header: on its first "
+                "line); not resuming (write to another file)\n", o->path, o->path);
+    else if (!got)
+        fprintf(stderr, "acbb: sweep: %s" ACBB_CLI_SIDECAR_EXT ": not a sweep header; not "
+                "resuming %s (write to another file)\n", o->path, o->path);
+    else if (acbb_cli_sweep_header_diff(got, want, diff, sizeof diff))
+        fprintf(stderr, "acbb: sweep: %s: written by another sweep (its header %s"
+                ACBB_CLI_SIDECAR_EXT "); not resuming (write to another file). Differs (file vs "
+                "now): %s\n", o->path, o->path, diff);
+    else
+        rc = 0;
+    cJSON_Delete(got);
+    cJSON_Delete(want);
+    return rc;
+}
+
+/* The sidecar, committed whole (acbb_cli_file: a temporary renamed in
+ * place) before the CSV's first byte. */
+static int sidecar_write(const acbb_cli_sink *o, const acbb_cli_sweep_id *id)
+{
+    char side[4200];
+    if (snprintf(side, sizeof side, "%s" ACBB_CLI_SIDECAR_EXT, o->path) >= (int)sizeof side) {
+        fprintf(stderr, "acbb: sweep: %s: path too long for its header file\n", o->path);
+        return ACBB_EXIT_INPUT;
+    }
+    size_t len = 0;
+    char *text = acbb_cli_sweep_header_text(ACBB_CLI_REC_JSONL, id, 1, &len);
+    if (!text) return ACBB_EXIT_INTERNAL;
+    acbb_cli_file file = { 0 };
+    int rc = acbb_cli_file_open(&file, side);
+    if (!rc) {
+        fwrite(text, 1, len, file.out.f);
+        rc = acbb_cli_file_close(&file);
+    }
+    free(text);
+    return rc;
 }
 
 /* A FIFO or device: written from the header on, nothing to resume (reading
@@ -109,9 +169,11 @@ int acbb_cli_sink_open(acbb_cli_sink *o, const char *path, acbb_cli_rec_format f
     o->own = 1;
     o->regular = 1;
     o->fd = fileno(o->f);
-    int have_header = 0;
+    int have_header = 0, sidecar = fmt == ACBB_CLI_REC_CSV && !id->csv_header;
     int rc = lock_file(o);
+    if (!rc && sidecar) rc = sidecar_check(o, id);
     if (!rc) rc = acbb_cli_sweep_resume(o->f, path, fmt, id, count, found, &have_header);
+    if (!rc && sidecar && !have_header) rc = sidecar_write(o, id);
     if (rc) return rc;
     /* Writes go to the descriptor (O_APPEND) from here on. */
     o->good_end = (long long)lseek(o->fd, 0, SEEK_END);

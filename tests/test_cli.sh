@@ -34,7 +34,7 @@ jqt "$TMP/run.json" '(.temperature_C.nodes | length) > 0 and ([.temperature_C.no
     "every node temperature >= ambient"
 jqt "$TMP/run.json" '.expansion_um | ((.inner_ring - .inner_thermal - .inner_centrifugal) | abs) <= 1e-6 * (.inner_ring | abs) + 1e-9' \
     "expansion: inner_ring = inner_thermal + inner_centrifugal"
-jqt "$TMP/run.json" '.scene.inner_speed_rpm == 15000 and .scene.axial_load_N == 1000 and .scene.thermal_expansion == true' \
+jqt "$TMP/run.json" '.scene.keys["operating.inner_speed_rpm"] == 15000 and .scene.keys["operating.axial_load_N"] == 1000 and .scene.keys["effects.thermal_expansion"] == "on"' \
     "scene echoes the preset operating point (15000 rpm, 1000 N, TE)"
 jqt "$TMP/run.json" '[.balls[] | .Qo_N >= .Qi_N * 0.5 and .alpha_i_deg > 0 and .alpha_o_deg > 0] | all' \
     "balls: positive contact angles, sane Qo"
@@ -44,7 +44,7 @@ jqt "$TMP/run.json" '[.balls[] | .Qo_N >= .Qi_N * 0.5 and .alpha_i_deg > 0 and .
 # friction available (boundary friction mu_bd = 0.1 times the loads).
 jqt "$TMP/run.json" '([.balls[] | .Qi_N * (.alpha_i_deg * 3.141592653589793 / 180 | sin)] | add) as $fx
     | ([.balls[] | .Qi_N] | add) as $q
-    | (($fx - .scene.axial_load_N) | abs) <= 0.1 * $q and $fx > 0.9 * .scene.axial_load_N' \
+    | (($fx - .scene.keys["operating.axial_load_N"]) | abs) <= 0.1 * $q and $fx > 0.9 * .scene.keys["operating.axial_load_N"]' \
     "inner-ring equilibrium: sum Qi sin(alpha_i) = axial load within the friction bound"
 
 # ---- plain summary ----
@@ -66,7 +66,7 @@ t $? "combined-load output fits 80 columns"
 "$ACBB" run "$PRESET" --json --set operating.radial_load_N=300 >"$TMP/rad.json" 2>"$TMP/err"
 jqt "$TMP/rad.json" '([.balls[] | .Qi_N * (.alpha_i_deg * 3.141592653589793 / 180 | cos)
     * (.psi_deg * 3.141592653589793 / 180 | cos)] | add) as $fr
-    | (($fr - .scene.radial_load_N) | abs) <= 1e-3 * .scene.axial_load_N' \
+    | (($fr - .scene.keys["operating.radial_load_N"]) | abs) <= 1e-3 * .scene.keys["operating.axial_load_N"]' \
     "radial equilibrium: sum Qi cos(alpha_i) cos(psi) = radial load"
 jqt "$TMP/rad.json" '([.balls[].Qi_N] | max) > ([.balls[].Qi_N] | min) * 1.01' \
     "radial load spreads the ball loads"
@@ -101,7 +101,7 @@ t $? "csv: every row's total equals the sum of its eight losses"
 # ---- --set ----
 "$ACBB" run "$PRESET" --json --set operating.axial_load_N=200 >"$TMP/200.json" 2>"$TMP/err"
 code $? 0 "run --set operating.axial_load_N=200 exits 0"
-jq -e --slurpfile hi "$TMP/run.json" '.balls[0].Qi_N < $hi[0].balls[0].Qi_N and .scene.axial_load_N == 200' \
+jq -e --slurpfile hi "$TMP/run.json" '.balls[0].Qi_N < $hi[0].balls[0].Qi_N and .scene.keys["operating.axial_load_N"] == 200' \
     "$TMP/200.json" >/dev/null 2>&1
 t $? "--set axial 200 N gives a smaller Qi than 1000 N"
 
@@ -173,7 +173,7 @@ jq -e --slurpfile te "$TMP/run.json" '
     ($te[0].expansion_um) as $e
     | (($e.inner_ring - $e.outer_ring) * ($te[0].balls[0].alpha_i_deg * 3.141592653589793 / 180 | cos)
        + 2 * $e.ball) as $squeeze
-    | .scene.thermal_expansion == false
+    | .scene.keys["effects.thermal_expansion"] == "off"
       and (($te[0].balls[0].Qi_N - .balls[0].Qi_N) * $squeeze > 0)' \
     "$TMP/wte.json" >/dev/null 2>&1
 t $? "TE - WTE inner load has the sign of the net expansion squeeze (1000 N)"
@@ -488,7 +488,7 @@ if [ -n "$BUILD" ] && command -v meson >/dev/null 2>&1; then
     (cd "$TMP/elsewhere" && XDG_CONFIG_HOME="$TMP/xdg-user" "$INST" run 7008C --json) \
         >"$TMP/urun.json" 2>"$TMP/err"
     code $? 0 "run 7008C with a user preset of that name"
-    jqt "$TMP/urun.json" '.status == "converged" and .scene.axial_load_N == 200' \
+    jqt "$TMP/urun.json" '.status == "converged" and .scene.keys["operating.axial_load_N"] == 200' \
         "the user's 7008C (200 N) shadows the installed one (1000 N)"
     (cd "$TMP/elsewhere" && XDG_CONFIG_HOME="$TMP/xdg-user" "$INST" presets) >"$TMP/upresets.txt" 2>&1
     has "$TMP/upresets.txt" "(shadowed by $TMP/xdg-user/acbb/presets)" \
@@ -569,7 +569,7 @@ grep -q '^  losses_W.total .*-' "$TMP/what.txt"
 t $? "a lower load lowers the total loss (negative change)"
 "$ACBB" run presets/7008C.ini --set operating.axial_load_N=500 --baseline "$TMP/csv.json" \
     --json >"$TMP/what.json" 2>"$TMP/err"
-jq -e '[.vs_baseline[] | select(.path == "scene.axial_load_N")][0].change == -500
+jq -e '[.vs_baseline[] | select(.path == "scene.keys.operating.axial_load_N")][0].change == -500
     and (.losses_W.total > 0)' "$TMP/what.json" >/dev/null
 t $? "JSON: the run with a vs_baseline array of changes"
 printf 'not json' >"$TMP/bad.json"

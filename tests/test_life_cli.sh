@@ -19,7 +19,7 @@ jq -e '.life | (.C_N > 0) and (.C0_N > 0) and (.L10r_h > 0) and (.Lnmr_h > 0) an
        and (.estimated == false) and (.s0_contact | test("^(inner|outer) ball [0-9]+$"))' \
     "$TMP/run.json" >/dev/null
 t $? "life: C_N C0_N L10r_h Lnmr_h a_iso kappa s0_min edge_loaded (bool), the worst contact named"
-jq -e '(.life.L10r_h - .life.L10r_Mrev * 1e6 / (60 * .scene.inner_speed_rpm)) | fabs < 1e-6 * 1e9' \
+jq -e '(.life.L10r_h - .life.L10r_Mrev * 1e6 / (60 * .scene.keys["operating.inner_speed_rpm"])) | fabs < 1e-6 * 1e9' \
     "$TMP/run.json" >/dev/null
 t $? "L10r_h is L10r_Mrev at the scene's speed"
 "$ACBB" metrics >"$TMP/metrics"
@@ -66,8 +66,29 @@ has "$TMP/err" "life.reliability_pct" "  the message names the key"
 "$ACBB" preload-map presets/preload-window.ini --speeds 8000:24000:3 --preloads 1:601:3 \
     --max-rise 20 --set physics.profile=seed --csv "$TMP/map.csv" >"$TMP/map.txt" 2>"$TMP/err"
 code $? 0 "preload-map runs"
-head -n 1 "$TMP/map.csv" | grep -q -x 'speed_rpm,preload_N,status,verdict,skid_ratio,temp_rise_K,Lnmr_h,s0_min'
-t $? "CSV columns: speed_rpm, preload_N, status, verdict and the limits' values"
+head -n 1 "$TMP/map.csv" | grep -q -x 'operating.inner_speed_rpm,mounting.preload_N,status,verdict,skid_ratio,temp_rise_K,life.Lnmr_h,life.s0_min'
+t $? "CSV columns: the scene keys, status, verdict and the limits' values as acbb metrics names them (issue 28 item 7)"
+awk -F, 'NR > 1 && $7 != "" { n = $7; gsub(/[-.]|e.*/, "", n); sub(/^0+/, "", n); if (length(n) > 10) long = 1 } END { exit !long }' "$TMP/map.csv"
+t $? "CSV numbers carry 17 significant digits (more than 10)"
+"$ACBB" preload-map presets/preload-window.ini --speeds 8000:24000:3 --preloads 1:601:3 \
+    --max-rise 20 --set physics.profile=seed --json >"$TMP/map.json" 2>"$TMP/err"
+code $? 0 "preload-map --json runs"
+python3 - "$TMP/map.json" "$TMP/map.csv" <<'PY'
+import csv, json, sys
+d = json.load(open(sys.argv[1]))
+rows = list(csv.DictReader(open(sys.argv[2])))
+cells = d["preload_map"]["cells"]
+assert d["schema_version"] >= 4 and len(cells) == len(rows) == 9 and len(d["preload_map"]["rows"]) == 3
+for c, r in zip(cells, rows):
+    assert list(c) == list(r), (list(c), list(r))
+    for k, v in c.items():
+        assert (v == float(r[k]) if isinstance(v, float) or isinstance(v, int) else
+                (v is None and r[k] == "") or v == r[k]), (k, v, r[k])
+assert d["preload_map"]["limits"]["max_rise_K"] == 20 and d["preload_map"]["limits"]["min_s0"] is None
+PY
+t $? "--json: the CSV's cells (same names, the same doubles), each speed's row and the limits"
+"$ACBB" preload-map presets/7008C.ini --speeds 4000:4000:1 --preloads 100:100:1 --json --csv - >/dev/null 2>"$TMP/err"
+code $? 2 "--json with --csv - (one stdout) refused"
 [ "$(($(wc -l <"$TMP/map.csv") - 1))" -eq 9 ]; t $? "one row per cell (3 x 3)"
 awk -F, 'NR > 1 && ($3 !~ /^(converged|runaway|not_converged|diverged|contact_lost|nonfinite|cancelled|[a-z_]+)$/ ||
     $4 !~ /^(ok|skid|hot|short_life|low_s0|runaway|failed)$/) { bad = 1 } END { exit bad }' "$TMP/map.csv"

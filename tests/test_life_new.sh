@@ -33,7 +33,7 @@ d=$1; dir=$2; acbb=$3
 "$acbb" run "$dir/$d.ini" --json >"$dir/$d.json" 2>>"$dir/$d.err"
 jq -r --arg d "$d" '
   (.scene.keys["bearing.pitch_diameter_mm"] | tonumber) as $dm
-  | (.scene.inner_speed_rpm * $dm) as $ndm
+  | (.scene.keys["operating.inner_speed_rpm"] * $dm) as $ndm
   | [$d, .status,
      (if .status != "converged" then "not converged: " + .message
       elif (.life.estimated | not) then "life not marked estimated"

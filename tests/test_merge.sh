@@ -23,7 +23,7 @@ head -1 "$TMP/a.jsonl" | jq -e '.acbb_sweep.format == 4 and (.acbb_sweep.fingerp
 t $? "the header: format 4, a 16-digit fingerprint, every scene key the grid does not vary"
 fp=$(head -1 "$TMP/a.jsonl" | jq -r .acbb_sweep.fingerprint)
 jq -s -e --arg fp "$fp" '.[1:] | length == 4 and all(.[]; .fingerprint == $fp)' "$TMP/a.jsonl" >/dev/null 2>&1 &&
-    [ "$(awk -F, -v fp="$fp" 'NR > 2 && $2 != fp { bad = 1 } END { print bad + 0 }' "$TMP/a.csv")" = 0 ]
+    [ "$(awk -F, -v fp="$fp" 'NR > 1 && $2 != fp { bad = 1 } END { print bad + 0 }' "$TMP/a.csv")" = 0 ]
 t $? "every JSONL and CSV record carries the header's fingerprint"
 
 # Another preset value, another --set, another grid, another mode.
@@ -69,6 +69,7 @@ bad_jsonl "3s/\"fingerprint\":\"$fp\"/\"fingerprint\":\"0000000000000000\"/" 'an
 bad_jsonl '3s/"temperature_C.ball":[-0-9.e]*/"temperature_C.ball":1e999/' 'a number 1e999'
 bad_csv() {
     sed "$1" "$TMP/a.csv" >"$TMP/b.csv"
+    cp "$TMP/a.csv.json" "$TMP/b.csv.json" # its header: the records alone are refused
     "$ACBB" merge "$TMP/o" "$TMP/b.csv" 2>"$TMP/err"
     code $? 2 "merge refuses a CSV row with $2"
 }
@@ -84,7 +85,7 @@ code $? 0 "the untouched CSV merges"
 
 # A resumed sweep refuses another scene, naming the key.
 cp "$TMP/s1.jsonl" "$TMP/res.jsonl"
-cp "$TMP/s1.csv" "$TMP/res.csv"
+cp "$TMP/s1.csv" "$TMP/res.csv" && cp "$TMP/s1.csv.json" "$TMP/res.csv.json"
 # shellcheck disable=SC2086
 "$ACBB" sweep presets/combined-load.ini $G --jsonl "$TMP/res.jsonl" >/dev/null 2>"$TMP/err"
 code $? 2 "resuming with another preset exits 2"

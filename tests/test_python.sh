@@ -56,7 +56,7 @@ has "$TMP/out" "text True" "as text with a settings dict: the CLI's JSON with --
 ACBB_LIB=$LIB py <<'PY' >"$TMP/out"
 import acbb
 r = acbb.run("presets/7008C.ini", ["operating.inner_speed_rpm=9000"])
-print("env", r["scene"]["inner_speed_rpm"])
+print("env", r["scene"]["keys"]["operating.inner_speed_rpm"])
 PY
 has "$TMP/out" "env 9000" "ACBB_LIB finds the library; a settings list"
 
@@ -126,7 +126,7 @@ import acbb
 lib = sys.argv[2]
 print("version", acbb.__version__)
 r = acbb.run("7008C", lib=lib)
-print("byname", r["status"], r["scene"]["inner_speed_rpm"])
+print("byname", r["status"], r["scene"]["keys"]["operating.inner_speed_rpm"])
 try:
     acbb.run("[operating]\naxial_load_N = 100\0 junk\n", lib=lib)
     print("nul ran")
@@ -143,9 +143,9 @@ except acbb.AcbbError as e:
 PY
 has "$TMP/out" "version $("$ACBB" --version | awk '{ print $2 }')" "acbb.__version__ is acbb --version's"
 has "$TMP/out" "byname converged 15000" "a preset by name (7008C) is found as the CLI finds it"
-has "$TMP/out" "nul bad_input |<text>:2: NUL byte in line 2 (a preset is plain text)| 3" \
+has "$TMP/out" "nul bad_input |<text>:2: NUL byte in line 2 (a preset is plain text)| 4" \
     "a NUL byte in the text is refused with the CLI's message (it used to cut the text and run)"
-has "$TMP/out" "refusal schema_version 3" "a bad_input document carries schema_version"
+has "$TMP/out" "refusal schema_version 4" "a bad_input document carries schema_version"
 has "$TMP/out" "missing bad_input cannot open preset no-such-preset" "an unknown name is said"
 
 # An ill-posed scene: the CLI's status and message (bad_input, exit 2).
@@ -190,7 +190,7 @@ for ((i = 0; i < 600; i++)); do
 done
 kill -INT $pid
 wait $pid
-has "$TMP/out" "cancelled True cancelled 3" \
+has "$TMP/out" "cancelled True cancelled 4" \
     "SIGINT stops a running call: acbb.Cancelled, a KeyboardInterrupt, with the cancelled document"
 
 tap_done

@@ -43,8 +43,8 @@ done
 # one checker process for all (python's start-up, not the check, is the cost)
 $CHECK "$TMP"/runs/*.json 2>"$TMP/bad"
 t $? "acbb run --json of every preset ($(ls presets/*.ini | wc -l)) conforms to the schema $(head -3 "$TMP/bad" | tr '\n' ' ')"
-jq -e '.schema_version == 3' "$TMP/runs/7008C.json" >/dev/null
-t $? "the run document says schema_version 3"
+jq -e '.schema_version == 4' "$TMP/runs/7008C.json" >/dev/null
+t $? "the run document says schema_version 4"
 # 17 significant digits: the printed number is the double itself
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); v=d["time_s"]; assert repr(v) == repr(float("%.17g" % v)) and len(json.dumps(d["losses_W"]["total"]).replace(".","").lstrip("0")) > 11' "$TMP/runs/7008C.json"
 t $? "numbers are printed with full precision (more than 10 digits)"
@@ -76,7 +76,7 @@ jq -e --slurpfile b "$TMP/runs/7008C.json" '
     | ($r.change_pct - 100 * ($r.now - $r.baseline) / $rise) | fabs < 1e-9' "$TMP/vs.json" >/dev/null
 t $? "--baseline: temperature change_pct is of the rise above ambient ($(jq '.vs_baseline[] | select(.path == "temperature_C.outer_ring") | .change_pct' "$TMP/vs.json") %)"
 
-# every other kind of JSON document (issue 21 item 10): schema_version 3 and
+# every other kind of JSON document (issue 21 item 10): schema_version 4 and
 # the schema's $defs entry for its kind
 "$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --jsonl "$TMP/s.jsonl" \
     >/dev/null 2>&1
@@ -93,6 +93,15 @@ t $? "merge: the merged file's header and records conform"
 "$ACBB" sweep presets/7008C.ini --param operating.axial_load_N --values 100,200 --json \
     >"$TMP/sw.json" 2>/dev/null && $CHECK --def sweep_point --each "$TMP/sw.json"
 t $? "sweep --json: each point conforms (sweep_point)"
+"$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --metric life.Lnmr_h \
+    --jsonl "$TMP/mt.jsonl" --csv "$TMP/mt.csv" >/dev/null 2>&1
+head -1 "$TMP/mt.jsonl" >"$TMP/mt_head.json" && tail -n +2 "$TMP/mt.jsonl" >"$TMP/mt_rec.jsonl" &&
+    $CHECK --def sweep_header "$TMP/mt_head.json" "$TMP/mt.csv.json" &&
+    $CHECK --def sweep_record --lines "$TMP/mt_rec.jsonl"
+t $? "sweep --metric: the header (metrics), the CSV's sidecar and the records conform"
+"$ACBB" preload-map presets/7008C.ini --speeds 8000:12000:2 --preloads 100:300:2 --max-rise 30 \
+    --json >"$TMP/pm.json" 2>/dev/null && $CHECK --def preload_map "$TMP/pm.json"
+t $? "preload-map --json conforms (preload_map)"
 "$ACBB" report presets/7008C.ini --json >"$TMP/rep.json" 2>/dev/null &&
     $CHECK --def report_item --each "$TMP/rep.json"
 t $? "report --json: each item conforms (report_item)"

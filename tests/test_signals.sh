@@ -89,10 +89,11 @@ for sig in INT TERM; do
         --grid operating.axial_load_N=50:1000:4000 --jsonl "$TMP/s.jsonl" --csv "$TMP/s.csv"
     code $rc 3 "sweep --grid, $S"
     said "sweep --grid, $S" sweep $S
-    # (after the sweep header line; the CSV has it and the column header)
+    # (after the sweep header line; the CSV has the column header, its
+    # header line is in s.csv.json)
     k=$(jq -s 'map(select(has("index"))) | length' "$TMP/s.jsonl")
     [ "${k:-0}" -ge 1 ] && [ "$(jq -s 'map(select(has("index"))) | [.[].index] | unique | length' "$TMP/s.jsonl")" = "$k" ] &&
-        [ "$(($(wc -l <"$TMP/s.csv") - 2))" -eq "$k" ]
+        [ "$(($(wc -l <"$TMP/s.csv") - 1))" -eq "$k" ]
     t $? "sweep --grid, $S: $k finished points, each once, in the JSONL and the CSV"
     jqt "$TMP/s.jsonl" '.status == "converged"' "sweep --grid, $S: every record is a finished point"
     "$ACBB" sweep "$P/7008C.ini" --grid operating.axial_load_N=50:1000:4000 \
@@ -162,7 +163,7 @@ for sig in INT TERM; do
     jqt "$TMP/out" '.status == "cancelled" and .signal == "'$S'"' \
         "report, $S: JSON status cancelled"
     python3 "$(dirname "$0")/schema_check.py" docs/schema/acbb.schema.json --def cancelled "$TMP/out"
-    t $? "report, $S: the cancelled document conforms to the schema (schema_version 3)"
+    t $? "report, $S: the cancelled document conforms to the schema (schema_version 4)"
     [ ! -e "$TMP/r.md" ]
     t $? "report, $S: no --md file"
 
@@ -180,8 +181,8 @@ for sig in INT TERM; do
         --morris 1000 --json --csv "$TMP/sens.csv"
     code $rc 3 "sensitivity, $S"
     said "sensitivity, $S" sensitivity $S
-    jqt "$TMP/out" '.status == "cancelled" and .schema_version == 3' \
-        "sensitivity, $S: JSON status cancelled, schema_version 3"
+    jqt "$TMP/out" '.status == "cancelled" and .schema_version == 4' \
+        "sensitivity, $S: JSON status cancelled, schema_version 4"
     [ ! -e "$TMP/sens.csv" ]
     t $? "sensitivity, $S: no --csv file"
 

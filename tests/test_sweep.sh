@@ -40,8 +40,8 @@ jq -s -e 'def abs: if . < 0 then -. else . end; .[1:] | all(.[]; .status == "con
       + ."losses_W.drag" + ."losses_W.cage" - ."losses_W.total")
      | abs) <= 1e-9 * ."losses_W.total")' "$TMP/one.jsonl" >/dev/null 2>&1
 t $? "every point converged; the loss columns sum to losses_W.total"
-[ "$(wc -l <"$TMP/one.csv")" -eq 10 ] && sed -n 2p "$TMP/one.csv" | grep -q '^index,fingerprint,operating.axial_load_N,operating.inner_speed_rpm,effects.thermal_expansion,status,.*,message,wall_ms$'
-t $? "CSV: header (grid keys, ..., wall_ms) + 8 rows"
+[ "$(wc -l <"$TMP/one.csv")" -eq 9 ] && sed -n 1p "$TMP/one.csv" | grep -q '^index,fingerprint,operating.axial_load_N,operating.inner_speed_rpm,effects.thermal_expansion,status,.*,message,wall_ms$'
+t $? "CSV: the column header first (grid keys, ..., wall_ms) + 8 rows (issue 28 item 8)"
 
 # The same point alone, through acbb run: the sweep changes nothing else.
 # A sweep point is the steady solve (include/acbb/sweep.h), so the run
@@ -113,7 +113,7 @@ cmp -s "$TMP/merged.jsonl" "$TMP/canon.jsonl"
 t $? "JSONL: merged shards == one-machine canonical output, byte for byte"
 "$ACBB" merge "$TMP/canon.csv" "$TMP/one.csv" 2>>"$TMP/err"
 "$ACBB" merge "$TMP/merged.csv" "$TMP/s2.csv" "$TMP/s3.csv" "$TMP/s1.csv" 2>>"$TMP/err"
-cmp -s "$TMP/merged.csv" "$TMP/canon.csv" && [ "$(wc -l <"$TMP/canon.csv")" -eq 10 ]
+cmp -s "$TMP/merged.csv" "$TMP/canon.csv" && [ "$(wc -l <"$TMP/canon.csv")" -eq 9 ]
 t $? "CSV: merged shards == one-machine canonical output, byte for byte"
 "$ACBB" merge "$TMP/bad" "$TMP/s1.jsonl" "$TMP/s1.csv" 2>"$TMP/err"
 code $? 2 "merge refuses JSONL mixed with CSV"
@@ -129,7 +129,7 @@ for f in part.jsonl part.csv; do
 done
 sweep --jsonl "$TMP/part.jsonl" --csv "$TMP/part.csv" --jobs 2
 code $? 0 "the resumed sweep exits 0"
-[ "$(wc -l <"$TMP/part.jsonl")" -eq 9 ] && [ "$(wc -l <"$TMP/part.csv")" -eq 10 ]
+[ "$(wc -l <"$TMP/part.jsonl")" -eq 9 ] && [ "$(wc -l <"$TMP/part.csv")" -eq 9 ]
 t $? "resumed: 8 records, none twice (the cut one re-run)"
 "$ACBB" merge "$TMP/res.jsonl" "$TMP/part.jsonl" 2>>"$TMP/err"
 cmp -s "$TMP/res.jsonl" "$TMP/canon.jsonl"
@@ -188,7 +188,7 @@ jq -s -e '.[1:] | group_by(.grid["mounting.preload_N"]) | all(.[];
     sort_by(.grid["operating.inner_speed_rpm"]) | map(.["set.preload_N"])
     | . as $p | [range(1; length)] | all(.[]; $p[.] > $p[. - 1]))' "$TMP/pair.jsonl" >/dev/null 2>&1
 t $? "the set's preload rises with speed at each assembly preload"
-col=$(sed -n 2p "$TMP/pair.csv" | tr , '\n' | grep -nx 'set.preload_N' | cut -d: -f1)
+col=$(sed -n 1p "$TMP/pair.csv" | tr , '\n' | grep -nx 'set.preload_N' | cut -d: -f1)
 want=$(jq -s '.[1:] | map(select(.index == 5))[0]["set.preload_N"]' "$TMP/pair.jsonl")
 got=$(awk -F, -v c="$col" '$1 == "5" { print $c }' "$TMP/pair.csv")
 [ -n "$col" ] && awk -v a="$got" -v b="$want" 'BEGIN { d = a - b; exit !(d < 1e-6 * b && d > -1e-6 * b) }'
@@ -197,7 +197,7 @@ t $? "CSV column set.preload_N (column $col) = the JSONL value ($got)"
 "$ACBB" sweep "$PRESET" --grid operating.axial_load_N=300 --jsonl "$TMP/one1.jsonl" \
     --csv "$TMP/one1.csv" >"$TMP/out" 2>"$TMP/err"
 tail -1 "$TMP/one1.jsonl" | jq -e '[keys[] | select(startswith("set."))] | length == 0' >/dev/null 2>&1 &&
-    [ "$(awk -F, -v c="$col" 'NR == 3 { print $c }' "$TMP/one1.csv")" = "" ]
+    [ "$(awk -F, -v c="$col" 'NR == 2 { print $c }' "$TMP/one1.csv")" = "" ]
 t $? "a single bearing's records: no set keys (JSONL), empty set columns (CSV)"
 
 # ---- bad grids are refused before anything runs ----

@@ -25,9 +25,16 @@ G="--set fidelity.model=quasi-static --grid operating.axial_load_N=200,800
 sweep() { "$ACBB" sweep "$PRESET" $G "$@"; }
 sweep --jsonl "$TMP/one.jsonl" --csv "$TMP/one.csv" 2>"$TMP/err"
 code $? 0 "the uninterrupted 8-point sweep"
+# csvh: a CSV with its header on a first line (--csv-header; the form
+# before issue 28 item 8), csv: plain, its header in the sidecar FILE.json
+sweep --csv-header --csv "$TMP/one.csvh" 2>>"$TMP/log"
+code $? 0 "... and with --csv-header"
 "$ACBB" merge "$TMP/canon.jsonl" "$TMP/one.jsonl" 2>>"$TMP/log" &&
-    "$ACBB" merge "$TMP/canon.csv" "$TMP/one.csv" 2>>"$TMP/log"
+    "$ACBB" merge "$TMP/canon.csv" "$TMP/one.csv" 2>>"$TMP/log" &&
+    "$ACBB" merge "$TMP/canon.csvh" "$TMP/one.csvh" 2>>"$TMP/log"
 t $? "its canonical forms"
+# the option that writes format f to file $1
+out() { case $f in csvh) echo "--csv-header --csv $1" ;; *) echo "--$f $1" ;; esac; }
 
 # ---- one writer per file (item 3) ----
 # A long sweep (100000 points on one worker) holds big.jsonl; once its
@@ -68,10 +75,11 @@ t $? "two shards at once, two files: both run, merged == canonical"
 # fails with ENOSPC; the block size of ulimit -f differs between shells.
 (ulimit -f 1 && head -c 4096 /dev/zero >"$TMP/blk") 2>/dev/null
 BLK=$(wc -c <"$TMP/blk")
-for f in jsonl csv; do
-    hl=1; [ $f = csv ] && hl=2
+for f in jsonl csvh; do
+    hl=1; [ $f = csvh ] && hl=2
     lim=$(($(head -n $((hl + 3)) "$TMP/one.$f" | wc -c) / BLK)) # within the 3rd record
-    (ulimit -f "$lim" && sweep --$f "$TMP/full.$f" --jobs 1) >/dev/null 2>"$TMP/err"
+    # shellcheck disable=SC2046
+    (ulimit -f "$lim" && sweep $(out "$TMP/full.$f") --jobs 1) >/dev/null 2>"$TMP/err"
     code $? 4 "$f: a write past the file size limit exits 4"
     has "$TMP/err" "cannot write $TMP/full.$f: File too large; the file ends with its last whole record" \
         "... naming the file, the error and what is kept"
@@ -80,20 +88,35 @@ for f in jsonl csv; do
     kept=$(($(wc -l <"$TMP/full.$f") - hl))
     [ "$kept" -ge 1 ] && [ "$kept" -lt 8 ]
     t $? "... $kept of the 8 records written before the failure"
-    sweep --$f "$TMP/full.$f" 2>"$TMP/err"
+    # shellcheck disable=SC2046
+    sweep $(out "$TMP/full.$f") 2>"$TMP/err"
     code $? 0 "$f: the same command with room resumes"
     "$ACBB" merge "$TMP/fullm.$f" "$TMP/full.$f" 2>>"$TMP/log" && cmp -s "$TMP/fullm.$f" "$TMP/canon.$f"
     t $? "$f: ... and equals the uninterrupted sweep (canonical form)"
 done
 
+# A plain CSV's sidecar is committed before the CSV's first byte: a write
+# limit below the sidecar's size stops the sweep with an empty CSV, which
+# the same command with room starts over.
+(ulimit -f 1 && sweep --csv "$TMP/tiny.csv" --jobs 1) >/dev/null 2>"$TMP/err"
+rc=$?
+[ "$rc" -ne 0 ] && [ ! -s "$TMP/tiny.csv" ] && [ ! -e "$TMP/tiny.csv.json" ]
+t $? "csv: a sidecar that cannot be written: exit $rc, no CSV bytes, no sidecar"
+sweep --csv "$TMP/tiny.csv" 2>"$TMP/err" && "$ACBB" merge "$TMP/tinym.csv" "$TMP/tiny.csv" 2>>"$TMP/log" &&
+    cmp -s "$TMP/tinym.csv" "$TMP/canon.csv"
+t $? "... the same command with room runs it whole"
+
 # ---- a header cut short (a kill while it was written) ----
 # Cut inside the CSV column line (the header crossing a 4 KiB stdio
-# buffer left line 1 whole), inside line 1 (at 4096), inside the JSONL header.
-l1=$(head -1 "$TMP/one.csv" | wc -c)
-for cut in csv:$((l1 + 40)) csv:4096 jsonl:4096 jsonl:100; do
+# buffer left line 1 whole), inside line 1 (at 4096), inside the JSONL
+# header; a plain CSV inside its column line (its sidecar whole beside it).
+l1=$(head -1 "$TMP/one.csvh" | wc -c)
+cp "$TMP/one.csv.json" "$TMP/cut.csv.json"
+for cut in csvh:$((l1 + 40)) csvh:4096 jsonl:4096 jsonl:100 csv:100; do
     f=${cut%%:*} at=${cut#*:}
     head -c "$at" "$TMP/one.$f" >"$TMP/cut.$f"
-    sweep --$f "$TMP/cut.$f" 2>"$TMP/err"
+    # shellcheck disable=SC2046
+    sweep $(out "$TMP/cut.$f") 2>"$TMP/err"
     code $? 0 "$f header cut at byte $at: the sweep resumes (no records yet: header written again)"
     "$ACBB" merge "$TMP/cutm.$f" "$TMP/cut.$f" 2>>"$TMP/log" && cmp -s "$TMP/cutm.$f" "$TMP/canon.$f"
     t $? "... and equals the uninterrupted sweep"
@@ -165,5 +188,89 @@ code $? 2 "... a CSV shard too"
 code $? 0 "an earlier merge's output may be merged over"
 cmp -s "$TMP/half.jsonl" "$TMP/canon.jsonl"
 t $? "... giving the canonical form"
+
+# ---- a plain CSV, its header beside it (issue 28 item 8) ----
+head -1 "$TMP/one.csv" | grep -q '^index,fingerprint,operating.axial_load_N,operating.inner_speed_rpm,status,'
+t $? "the CSV's first line is its column header (csv readers, pandas, spreadsheets take it as such)"
+python3 -c 'import csv, sys; r = list(csv.DictReader(open(sys.argv[1])))
+assert len(r) == 8 and all(x["status"] == "converged" and float(x["losses_W.total"]) > 0 for x in r)' "$TMP/one.csv"
+t $? "... Python's csv reads 8 records by name"
+[ "$(cat "$TMP/one.csv.json")" = "$(head -1 "$TMP/one.jsonl")" ]
+t $? "the sidecar one.csv.json holds the header line of the JSONL"
+[ "$(sed 1d "$TMP/canon.csv")" = "$(sed '1,2d' "$TMP/canon.csvh")" ] &&
+    [ "$(head -1 "$TMP/canon.csvh")" = "# $(cat "$TMP/canon.csv.json")" ]
+t $? "--csv-header: the same records, the header on a first line '# {...}' (merged: the same header)"
+cp "$TMP/one.csv" "$TMP/noside.csv"
+sweep --csv "$TMP/noside.csv" 2>"$TMP/err"
+code $? 2 "a plain CSV without its sidecar is not resumed"
+has "$TMP/err" "noside.csv: its header $TMP/noside.csv.json is missing" "... naming the missing file"
+cmp -s "$TMP/noside.csv" "$TMP/one.csv"
+t $? "... and the CSV is left as it was"
+"$ACBB" merge "$TMP/nosidem.csv" "$TMP/noside.csv" 2>"$TMP/err"
+code $? 2 "merge refuses a plain CSV without its sidecar"
+has "$TMP/err" "noside.csv.json is missing" "... saying which file is missing"
+cp "$TMP/one.csv" "$TMP/form.csv" && cp "$TMP/one.csv.json" "$TMP/form.csv.json"
+sweep --csv-header --csv "$TMP/form.csv" 2>"$TMP/err"
+code $? 2 "a plain CSV resumed with --csv-header is refused"
+has "$TMP/err" "run the same command without --csv-header" "... saying what to do"
+sweep --csv "$TMP/one.csvh" 2>"$TMP/err"
+code $? 2 "a --csv-header CSV resumed without it is refused"
+has "$TMP/err" "run the same command with --csv-header" "... saying what to do"
+sweep --csv "$TMP/one.csv" 2>"$TMP/err"
+code $? 0 "a plain CSV with its sidecar resumes (nothing left to run)"
+[ "$(cat "$TMP/one.csv.json")" = "$(head -1 "$TMP/one.jsonl")" ]
+t $? "... its sidecar unchanged"
+sweep --shard 1/2 --csv "$TMP/p1.csv" 2>>"$TMP/log"
+sweep --shard 2/2 --csv "$TMP/p2.csv" 2>>"$TMP/log"
+"$ACBB" merge "$TMP/pm.csv" "$TMP/p2.csv" "$TMP/p1.csv" 2>>"$TMP/log" &&
+    cmp -s "$TMP/pm.csv" "$TMP/canon.csv" && cmp -s "$TMP/pm.csv.json" "$TMP/canon.csv.json"
+t $? "plain CSV shards merge into the canonical CSV and its sidecar"
+sweep --jsonl "$TMP/same.csv.json" --csv "$TMP/same.csv" 2>"$TMP/err"
+code $? 2 "--jsonl FILE.csv.json with --csv FILE.csv (the header file) is refused"
+[ ! -e "$TMP/same.csv" ] && [ ! -e "$TMP/same.csv.json" ]; t $? "... before any file is made"
+
+# ---- --metric: any acbb metrics path in the records (issue 28 item 8) ----
+M="--metric life.Lnmr_h --metric balls[2].pmax_i_GPa --metric T_cavity_C"
+# shellcheck disable=SC2086
+sweep --max-points 1 $M --jsonl "$TMP/m.jsonl" 2>"$TMP/err"
+code $? 2 "--metric of a fixed column (T_cavity_C = temperature_C.cavity) is refused"
+has "$TMP/err" "--metric T_cavity_C: temperature_C.cavity is already in every record" "... naming it"
+sweep --metric life.Lnmr --jsonl "$TMP/m.jsonl" 2>"$TMP/err"
+code $? 2 "an unknown --metric is refused before anything runs"
+[ ! -e "$TMP/m.jsonl" ]; t $? "... no file made"
+M="--metric life_Lnmr_h --metric balls[2].pmax_i_GPa"
+# shellcheck disable=SC2086
+sweep $M --jsonl "$TMP/m.jsonl" --csv "$TMP/m.csv" 2>"$TMP/err"
+code $? 0 "a sweep with --metric runs"
+head -1 "$TMP/m.jsonl" | jq -e '.acbb_sweep.metrics == ["life.Lnmr_h", "balls[2].pmax_i_GPa"]' >/dev/null
+t $? "the header lists the metrics, canonical (life_Lnmr_h is life.Lnmr_h)"
+[ "$(head -1 "$TMP/m.jsonl" | jq -r .acbb_sweep.fingerprint)" != "$(head -1 "$TMP/one.jsonl" | jq -r .acbb_sweep.fingerprint)" ]
+t $? "... and the fingerprint covers them"
+"$ACBB" run "$PRESET" --set fidelity.model=quasi-static --set operating.axial_load_N=800 \
+    --set operating.inner_speed_rpm=16000 --set fidelity.thermal_mode=steady --json >"$TMP/r.json" 2>/dev/null
+jq -s -e --slurpfile r "$TMP/r.json" '.[1:][] | select(.index == 7)
+    | .["life.Lnmr_h"] == $r[0].life.Lnmr_h and .["balls[2].pmax_i_GPa"] == $r[0].balls[2].pmax_i_GPa' \
+    "$TMP/m.jsonl" >/dev/null
+t $? "JSONL: point 7's metrics are the run JSON's (life.Lnmr_h, balls[2].pmax_i_GPa)"
+python3 - "$TMP/m.csv" "$TMP/m.jsonl" <<'PY'
+import csv, json, sys
+rows = {r["index"]: r for r in csv.DictReader(open(sys.argv[1]))}
+recs = [json.loads(x) for x in open(sys.argv[2])][1:]
+assert list(rows["0"])[-4:] == ["life.Lnmr_h", "balls[2].pmax_i_GPa", "message", "wall_ms"]
+for j in recs:
+    for k in ("life.Lnmr_h", "balls[2].pmax_i_GPa"):
+        assert float(rows[str(j["index"])][k]) == j[k], (k, j[k])
+PY
+t $? "CSV: the metric columns before message, the JSONL's doubles"
+sweep --metric life.Lnmr_h --jsonl "$TMP/m.jsonl" 2>"$TMP/err"
+code $? 2 "resuming with another --metric set is refused"
+has "$TMP/err" 'Differs (file vs now): metrics (["life.Lnmr_h","balls[2].pmax_i_GPa"] vs ["life.Lnmr_h"])' \
+    "... naming the metrics"
+# shellcheck disable=SC2086
+sweep $M --jsonl "$TMP/m.jsonl" --csv "$TMP/m.csv" 2>"$TMP/err"
+code $? 0 "the same --metric set resumes"
+"$ACBB" merge "$TMP/mm.csv" "$TMP/m.csv" 2>>"$TMP/log" && "$ACBB" merge "$TMP/mm.jsonl" "$TMP/m.jsonl" 2>>"$TMP/log" &&
+    [ "$(wc -l <"$TMP/mm.csv")" -eq 9 ] && [ "$(wc -l <"$TMP/mm.jsonl")" -eq 9 ]
+t $? "... and merges (8 records each)"
 
 tap_done

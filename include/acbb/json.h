@@ -25,7 +25,7 @@ extern "C" {
 /* The version of the JSON documents' layout, their first key
  * "schema_version"; docs/schema/acbb.schema.json (`acbb schema`) describes
  * it. Bumped when a key is renamed or removed, not when one is added. */
-#define ACBB_JSON_SCHEMA_VERSION 3
+#define ACBB_JSON_SCHEMA_VERSION 4
 
 #define ACBB_JSON_DEPTH 8        /* deepest nesting; deeper is a bug (counted in misuse) */
 

@@ -40,12 +40,8 @@ static void scene(acbb_json *j, const acbb_scene *sc0)
     acbb_lubricant_apply(&r);
     const acbb_scene *sc = &r;
     acbb_json_open(j, "scene", '{', false);
-    acbb_json_num(j, "inner_speed_rpm", acbb_rads_to_rpm(sc->inner_speed));
-    acbb_json_num(j, "axial_load_N", sc->axial_load);
-    acbb_json_num(j, "radial_load_N", sc->radial_load);
-    acbb_json_bool(j, "thermal_expansion", sc->thermal_expansion);
-    acbb_json_str(j, "model", acbb_model_level_name(sc->model));
-    /* Every key of the schema in preset units: the run's full input. */
+    /* Every key of the schema in preset units: the run's full input, each
+     * once (schema 4 dropped the headline copies beside it, issue 28 item 7). */
     acbb_json_open(j, "keys", '{', false);
     for (size_t i = 0; i < acbb_scene_field_count(); i++) {
         const acbb_field_info *fi = acbb_scene_field(i);

@@ -151,7 +151,7 @@ static int resume_sweep(void)
     if (acbb_sweep_add(res_grid, "operating.axial_load_N=100,200", &err) != ACBB_OK ||
         acbb_sweep_add(res_grid, "effects.thermal_expansion=on,off", &err) != ACBB_OK)
         return -1;
-    acbb_cli_sweep_id_init(&res_id, res_grid, &res_scene, 0);
+    acbb_cli_sweep_id_init(&res_id, res_grid, &res_scene, 0, NULL);
     return 0;
 }
 
@@ -175,6 +175,9 @@ acbb_fuzz_outcome acbb_fuzz_resume(const uint8_t *data, size_t size, char *why, 
     snprintf(path, sizeof path, "%s/resume", dir);
     if (put(path, data, size) != 0) return broken(why, n, "cannot write the input", 0);
     acbb_cli_rec_format fmt = size && data[0] == '#' ? ACBB_CLI_REC_CSV : ACBB_CLI_REC_JSONL;
+    /* A CSV input carries its header on its first line (--csv-header): a
+     * plain CSV's would be in a sidecar, which a one-file input has not. */
+    res_id.csv_header = fmt == ACBB_CLI_REC_CSV;
     size_t found = 0, found2 = 0, la = 0, lb = 0;
     int crc = 0, crc2 = 0;
     int rc = resume_once(path, fmt, &found, &crc);

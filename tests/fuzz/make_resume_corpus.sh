@@ -1,6 +1,7 @@
 #!/bin/sh
 # Rebuilds the `ok-*` files of tests/fuzz/corpus/resume from a live sweep
-# (the one tests/fuzz/fuzz_cli.c reads every resume input as). A sweep
+# (the one tests/fuzz/fuzz_cli.c reads every resume input as; CSV with
+# --csv-header: a one-file input has no sidecar). A sweep
 # file's header holds every resolved scene key, so a new preset key or a
 # new output column changes it: run this after adding one.
 #   tests/fuzz/make_resume_corpus.sh build/acbb      (from the repository root)
@@ -11,7 +12,7 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 "$ACBB" sweep presets/7008C.ini --set fidelity.model=quasi-static \
     --grid operating.axial_load_N=100,200 --grid effects.thermal_expansion=on,off \
-    --jobs 1 --jsonl "$T/w.jsonl" --csv "$T/w.csv" >/dev/null 2>&1
+    --jobs 1 --jsonl "$T/w.jsonl" --csv-header --csv "$T/w.csv" >/dev/null 2>&1
 cp "$T/w.jsonl" "$D/ok-whole.jsonl"
 cp "$T/w.csv" "$D/ok-whole.csv"
 python3 - "$T" "$D" <<'PY'
