@@ -45,6 +45,10 @@ ok $? "outer-ring temperature changes during the run ($a_t -> $b_t)"
 ok $? "total loss changes during the run ($a_p -> $b_p)"
 
 $T resize-window -t "$S" -x 100 -y 30
+# Wait for the relayout itself: "running" was on the pane before the
+# resize too, so waiting for it read the old 80-column title under load.
+title_wide() { [ "$(screen | head -1 | awk '{print length($0)}')" -ge 95 ]; }
+wait_until title_wide
 wait_for "running"
 w=$(screen | head -1 | awk '{print length($0)}')
 [ "${w:-0}" -ge 95 ] && [ "$(screen | wc -l)" -eq 30 ]
