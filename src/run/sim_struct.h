@@ -74,6 +74,7 @@ struct acbb_sim {
     int polishing;             /* 1 while evaluating inside the steady polish */
     long iter;
     int quiet;
+    acbb_relax_ctl steady_relax; /* the steady solve's relaxation (steady_polish.h) */
     acbb_run_state state;
     acbb_status status;
     char msg[256];
