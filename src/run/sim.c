@@ -381,8 +381,13 @@ static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
     if (unbalanced(sim)) return;
-    sim->K_axial = axial_stiffness(sim);
-    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
+    if (sim->skip_stiffness) { /* asked for none: reported missing (acbb_sim_opts) */
+        sim->K_axial = NAN;
+        sim->K_ring = (acbb_stiffness){ NAN, NAN, NAN };
+    } else {
+        sim->K_axial = axial_stiffness(sim);
+        acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
+    }
     sim->state = ACBB_RUN_CONVERGED;
     snprintf(sim->msg, sizeof sim->msg, "%s", what);
 }
@@ -657,7 +662,7 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
-    acbb_sim_opts o = { sim->cancel, sim->threads };
+    acbb_sim_opts o = { .cancel = sim->cancel, .threads = sim->threads };
     acbb_status rc = acbb_set_sim_new(s, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
     sim->state = acbb_set_sim_outcome(sim->set, &sim->status, &sim->iter);
@@ -676,6 +681,7 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
     }
     sim->cancel = o->cancel;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
+    sim->skip_stiffness = o->skip_stiffness;
     double t0 = acbb_now_ms();
     acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
                                                            : sim_init(sim, s, NULL, err);
@@ -701,7 +707,7 @@ void acbb_sim_free(acbb_sim *sim)
 static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     acbb_sim *fresh;
-    acbb_sim_opts o = { sim->cancel, sim->threads };
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
     acbb_status rc = acbb_sim_create(s, &o, &fresh, err);
     if (rc != ACBB_OK) return rc; /* the running sim is untouched */
     acbb_sim old = *sim;
@@ -722,6 +728,7 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
     if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
+    fresh->skip_stiffness = sim->skip_stiffness;
     acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);
