@@ -89,6 +89,13 @@ void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
     m->hertz_tol = angle_tol > 0.0 ? angle_tol : 0.0;
 }
 
+void acbb_mech_set_loads(acbb_mech *m, double Fx, double Fz, double My)
+{
+    m->Fx = Fx;
+    m->Fz = Fz;
+    m->My = My;
+}
+
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)
 {
     m->fix_axial = fixed;
