@@ -108,22 +108,25 @@ static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, doubl
     b->alpha_i = atan2(xi, zi);
     b->Qo = b->hc_o.Kc * pos15(b->delta_o);
     b->Qi = b->hc_i.Kc * pos15(b->delta_i);
+    /* The angles' sines and cosines are the geometry's ratios (one set for
+     * the kinematics and the balance, issue 30 lever 4). */
+    acbb_kin_angles an = { b->alpha_o, xi / Li, zi / Li, X1 / Lo, X2 / Lo };
+    if (!(Li > 0.0 && Lo > 0.0))
+        an = (acbb_kin_angles){ b->alpha_o, sin(b->alpha_i), cos(b->alpha_i), sin(b->alpha_o),
+                                cos(b->alpha_o) };
     int qd = b->traction_valid;
     if (qd)
-        acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega, b->qd_w[0],
-                                   b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
+        acbb_kinematics_from_omega_sc(&an, g->D, g->dm, m->omega, b->qd_w[0], b->qd_w[1],
+                                      b->qd_w[2], b->qd_w[3], &b->kin);
     else
-        acbb_kinematics_race_control(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega,
-                                     b->control, &b->kin);
+        acbb_kinematics_race_control_sc(&an, g->D, g->dm, m->omega, b->control, &b->kin);
     double wm = b->kin.omega_m;
     b->Fc = m->centrifugal ? g->mass * (g->Re_o + X2) * wm * wm : 0.0;
     b->Mg = m->gyroscopic ? g->J * wm * b->kin.wz : 0.0;
     double f[4];
     ball_friction(m, b, f);
-    double si = sin(b->alpha_i), ci = cos(b->alpha_i);
-    double so = sin(b->alpha_o), co = cos(b->alpha_o);
-    *r1 = b->Qi * si - b->Qo * so + f[0] + f[2];
-    *r2 = b->Qi * ci - b->Qo * co + b->Fc + f[1] + f[3];
+    *r1 = b->Qi * an.si - b->Qo * an.so + f[0] + f[2];
+    *r2 = b->Qi * an.ci - b->Qo * an.co + b->Fc + f[1] + f[3];
 }
 
 /* The ball unknowns are polar about the OR groove centre: the angle a and
