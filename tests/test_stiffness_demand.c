@@ -10,6 +10,7 @@
 #include "tap.h"
 #include "acbb/sim.h"
 #include "acbb/sensitivity.h"
+#include "acbb/sweep.h"
 
 static acbb_status run(const acbb_scene *s, int skip, acbb_snapshot *snap)
 {
@@ -57,6 +58,45 @@ static void test_sensitivity(acbb_scene *s)
     }
 }
 
+/* A sweep with skip_stiffness: its points' stiffness missing, their
+ * losses those of the sweep without it. */
+typedef struct {
+    double loss[2];
+    unsigned failed[2];
+} sweep_seen;
+
+static void on_point(void *ctx, const acbb_sweep_result *r)
+{
+    sweep_seen *w = ctx;
+    if (r->index < 2) {
+        w->loss[r->index] = r->snap.losses.total;
+        w->failed[r->index] = r->snap.stiffness_failed;
+    }
+}
+
+static void test_sweep(const acbb_scene *s)
+{
+    acbb_sweep *g = NULL;
+    acbb_error err = { "" };
+    int built = acbb_sweep_new(&g) == ACBB_OK
+                && acbb_sweep_add(g, "operating.axial_load_N=300,600", &err) == ACBB_OK;
+    sweep_seen seen[2];
+    memset(seen, 0, sizeof seen);
+    for (int skip = 0; skip < 2 && built; skip++) {
+        acbb_sweep_opts o = { .jobs = 1, .done = on_point, .ctx = &seen[skip],
+                              .skip_stiffness = skip };
+        built = acbb_sweep_run(g, s, &o, NULL) == ACBB_OK;
+    }
+    ok(built, "two sweeps of two points ran (%s)", err.msg);
+    ok(seen[0].failed[0] == 0 && seen[0].failed[1] == 0 && seen[1].failed[0] == 0xfu
+       && seen[1].failed[1] == 0xfu, "sweep: stiffness computed by default, missing when "
+       "skipped (bits %#x %#x)", seen[1].failed[0], seen[1].failed[1]);
+    ok(seen[0].loss[0] == seen[1].loss[0] && seen[0].loss[1] == seen[1].loss[1]
+       && seen[0].loss[0] > 0, "sweep: the same losses (%.17g W, %.17g W)", seen[1].loss[0],
+       seen[1].loss[1]);
+    acbb_sweep_free(g);
+}
+
 int main(void)
 {
     acbb_scene s;
@@ -64,5 +104,6 @@ int main(void)
     ok(acbb_scene_load("presets/7008C.ini", &s, &err) == ACBB_OK, "preset: %s", err.msg);
     test_skip(&s);
     test_sensitivity(&s);
+    test_sweep(&s);
     return done_testing();
 }
