@@ -669,9 +669,13 @@ static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st, int *r
     return ACBB_OK;
 }
 
+/* The solved balls' contacts; the others are copies of theirs (the last
+ * solve_balls spread them: the same inputs, so the same bits), not
+ * recomputed (issue 30 lever 4: 21 balls of a pure-thrust ring). */
 static void finish_contacts(const acbb_mech *m, acbb_mech_state *st)
 {
-    for (int j = 0; j < st->n; j++) {
+    int nb = acbb_mech_distinct(st);
+    for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         acbb_hertz_from_load(&b->hc_i, b->Qi, &b->ct_i);
         acbb_hertz_from_load(&b->hc_o, b->Qo, &b->ct_o);
@@ -679,6 +683,13 @@ static void finish_contacts(const acbb_mech *m, acbb_mech_state *st)
             b->control = acbb_race_control_choose(b->Qi, b->ct_i.a, b->hc_i.E, b->Qo,
                                                   b->ct_o.a, b->hc_o.E, b->alpha_i,
                                                   b->alpha_o, b->control);
+    }
+    for (int j = nb; j < st->n; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        const acbb_ball_state *src = &st->ball[acbb_mech_source(st, j)];
+        b->ct_i = src->ct_i;
+        b->ct_o = src->ct_o;
+        b->control = src->control;
     }
 }
 
