@@ -7,6 +7,7 @@
  * case where every ball is identical, GSL hybrids otherwise). The ball
  * problem is a hand-written damped Newton (see ball_newton for why). */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
@@ -717,13 +718,26 @@ static void prescribed_state(const acbb_mech *m, acbb_mech_state *w)
     w->dy = w->thz = 0.0;
 }
 
+/* The rest of the solve's working copy w of st once w's header (and so
+ * its symmetry) is set: the balls solved in st or in w, and every ball's
+ * azimuth. The other balls are images that every solve_balls spreads
+ * before anything reads them (issue 30 lever 4: a pure-thrust ring copies
+ * one ball of 21 in). */
+static void copy_balls_in(acbb_mech_state *w, const acbb_mech_state *st)
+{
+    int nb = acbb_mech_distinct(w), ns = acbb_mech_distinct(st);
+    if (ns > nb) nb = ns;
+    memcpy(w->ball, st->ball, sizeof st->ball[0] * (size_t)nb);
+    for (int j = nb; j < st->n; j++) w->ball[j].psi = st->ball[j].psi;
+}
+
 acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
                             acbb_mech_state *st, acbb_error *err)
 {
     static const char *what = "mechanics";
     acbb_mech_state *w = malloc(sizeof *w);
     if (!w) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
-    acbb_mech_state_copy(w, st);
+    memcpy(w, st, offsetof(acbb_mech_state, ball));
     m->omega = omega_i;
     if (e) m->e_copy = *e;
     m->e = e ? &m->e_copy : NULL;
@@ -731,7 +745,8 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (m->prescribed) prescribed_state(m, w);
     if (m->hold_radial) w->dz = m->dz_hold;
     if (m->hold_tilt) w->thy = m->thy_hold;
-    for (int j = 0; j < w->n; j++) {
+    copy_balls_in(w, st);
+    for (int j = 0; j < acbb_mech_distinct(w); j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
     }
