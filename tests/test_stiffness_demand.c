@@ -97,6 +97,37 @@ static void test_sweep(const acbb_scene *s)
     acbb_sweep_free(g);
 }
 
+/* A set's members skip theirs too (the preload map's pairs); the set's
+ * state is the same. */
+static void test_set(void)
+{
+    acbb_scene s;
+    acbb_error err = { "" };
+    ok(acbb_scene_load("presets/pair-DB-heated.ini", &s, &err) == ACBB_OK, "pair: %s", err.msg);
+    static acbb_snapshot a, b, ma, mb;
+    unsigned flags[2] = { 0, 0 };
+    for (int skip = 0; skip < 2; skip++) {
+        acbb_sim *sim = NULL;
+        acbb_status rc = acbb_sim_create(&s, &(acbb_sim_opts){ .skip_stiffness = skip }, &sim,
+                                         &err);
+        if (rc == ACBB_OK) rc = acbb_sim_run(sim);
+        if (rc == ACBB_OK) {
+            acbb_sim_snapshot(sim, skip ? &b : &a);
+            acbb_sim_bearing_snapshot(sim, 0, skip ? &mb : &ma);
+            flags[skip] = (skip ? &mb : &ma)->stiffness_failed;
+        }
+        ok(rc == ACBB_OK, "pair, skip %d: %s", skip, acbb_status_name(rc));
+        acbb_sim_free(sim);
+    }
+    ok(flags[0] == 0 && flags[1] == 0xfu && ma.stiffness_axial > 0,
+       "pair: the members' stiffness computed by default, missing when skipped (%#x, %#x)",
+       flags[0], flags[1]);
+    int same = a.losses.total == b.losses.total && a.n_nodes == b.n_nodes;
+    for (int i = 0; i < a.n_nodes && same; i++) same = a.T[i] == b.T[i];
+    ok(same, "pair: the same state bit for bit (%.17g W, %.17g W)", a.losses.total,
+       b.losses.total);
+}
+
 int main(void)
 {
     acbb_scene s;
@@ -105,5 +136,6 @@ int main(void)
     test_skip(&s);
     test_sensitivity(&s);
     test_sweep(&s);
+    test_set();
     return done_testing();
 }

@@ -377,17 +377,24 @@ static int unbalanced(acbb_sim *sim)
     return 1;
 }
 
+/* The end-of-run stiffness, unless the caller asked for none (then
+ * reported missing: acbb_sim_opts.skip_stiffness). */
+static void stiffness(acbb_sim *sim)
+{
+    if (sim->skip_stiffness) {
+        sim->K_axial = NAN;
+        sim->K_ring = (acbb_stiffness){ NAN, NAN, NAN };
+        return;
+    }
+    sim->K_axial = axial_stiffness(sim);
+    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
+}
+
 static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
     if (unbalanced(sim)) return;
-    if (sim->skip_stiffness) { /* asked for none: reported missing (acbb_sim_opts) */
-        sim->K_axial = NAN;
-        sim->K_ring = (acbb_stiffness){ NAN, NAN, NAN };
-    } else {
-        sim->K_axial = axial_stiffness(sim);
-        acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
-    }
+    stiffness(sim);
     sim->state = ACBB_RUN_CONVERGED;
     snprintf(sim->msg, sizeof sim->msg, "%s", what);
 }
@@ -662,7 +669,7 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
-    acbb_sim_opts o = { .cancel = sim->cancel, .threads = sim->threads };
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
     acbb_status rc = acbb_set_sim_new(s, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
     sim->state = acbb_set_sim_outcome(sim->set, &sim->status, &sim->iter);
@@ -864,7 +871,6 @@ void acbb_simm_publish(acbb_sim *b, const acbb_set_run *r)
 
 void acbb_simm_stiffness(acbb_sim *b, double *K_axial)
 {
-    b->K_axial = axial_stiffness(b);
-    acbb_ring_stiffness(&b->s, &b->exp, b->ms.dx, &b->ms, &b->K_ring);
+    stiffness(b);
     *K_axial = b->K_axial;
 }
