@@ -61,7 +61,8 @@ static acbb_status solve_point(acbb_mech *m, const acbb_scene *s, const acbb_exp
  * solve starts from the first's ring Jacobian (mechanics.c ring_broyden)
  * instead of building its own (issue 30 lever 2). */
 static double difference(acbb_scene *s, double *load, double h, const acbb_expansion *e,
-                         double dx_held, const acbb_mech_state *warm, int probe)
+                         double dx_held, const acbb_mech_state *warm,
+                         const acbb_mech_state *start, int probe)
 {
     double v = *load, r[2] = { 0, 0 };
     acbb_mech *m = NULL;
@@ -71,7 +72,7 @@ static double difference(acbb_scene *s, double *load, double h, const acbb_expan
         *load = v + (k ? -h : h);
         if (k == 0) rc = probe_mech(s, dx_held, warm, probe, &m);
         else acbb_mech_set_loads(m, s->axial_load, s->radial_load, s->moment_load);
-        if (rc == ACBB_OK) rc = solve_point(m, s, e, warm, st);
+        if (rc == ACBB_OK) rc = solve_point(m, s, e, start, st);
         if (rc == ACBB_OK) r[k] = probe != PROBE_RADIAL ? st->thy : st->dz;
     }
     acbb_mech_free(m);
@@ -89,12 +90,27 @@ acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, do
      * radius): small against the loads, large against solver noise. */
     double h = fmax(0.01 * fabs(s->axial_load), 1.0);
     double hm = h * 0.5 * s->pitch_diameter;
-    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, PROBE_RADIAL);
+    /* Every probe starts from the race-control equilibrium at the
+     * operating point's loads, solved once: the probes then move by
+     * their nudge only, not also from the run's ball model to this one. */
+    acbb_mech_state *start = warm ? malloc(sizeof *start) : NULL;
+    acbb_mech *m0 = NULL;
+    if (start && probe_mech(s, dx_held, NULL, -1, &m0) == ACBB_OK) {
+        warm_start(m0, warm, start);
+        if (acbb_mech_solve(m0, s->inner_speed, e, start, NULL) != ACBB_OK) {
+            free(start);
+            start = NULL;
+        }
+    }
+    acbb_mech_free(m0);
+    const acbb_mech_state *from = start ? start : warm;
+    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, from, PROBE_RADIAL);
     /* The tilt probes solve the tilt whatever mounting.tilt says: held
      * describes the operating point, the probe asks how the ring would
      * tilt under a moment (README: both tilt stiffnesses are reported). */
     t.tilt = ACBB_TILT_FREE;
-    out->tilt = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT);
-    out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT_HELD);
+    out->tilt = difference(&t, &t.moment_load, hm, e, dx_held, warm, from, PROBE_TILT);
+    out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, from, PROBE_TILT_HELD);
+    free(start);
     return ACBB_OK;
 }
