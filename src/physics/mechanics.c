@@ -618,7 +618,7 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
     if (m->dof_thy) x0[k++] = st->thy / MRAD;
     /* Held-displacement solves (sim.c's axial stiffness, a 0.3 nm central
      * difference; displacement preload) keep the hybrid path's noise. */
-    if (!m->fix_axial && ring_broyden(m, n, x0))
+    if ((!m->fix_axial || m->broyden_held) && ring_broyden(m, n, x0))
         return ACBB_OK;
     m->inner_status = ACBB_OK;
     gsl_vector_view xv = gsl_vector_view_array(x0, n);

@@ -18,6 +18,7 @@ struct acbb_mech {
     acbb_geom_mode geom;
     double tol;
     double hertz_tol;           /* rad: constants kept below this angle move (0: 1e-11) */
+    int broyden_held;           /* 1: held-displacement ring solves by Broyden first too */
     double mu;                  /* friction available for the gyroscopic moment */
     double Fx, Fz, My;          /* applied loads on the IR */
     int fix_axial;

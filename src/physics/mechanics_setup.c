@@ -89,6 +89,8 @@ void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
     m->hertz_tol = angle_tol > 0.0 ? angle_tol : 0.0;
 }
 
+void acbb_mech_broyden_held(acbb_mech *m, int on) { m->broyden_held = on; }
+
 void acbb_mech_set_loads(acbb_mech *m, double Fx, double Fz, double My)
 {
     m->Fx = Fx;

@@ -35,6 +35,7 @@ static acbb_status probe_mech(const acbb_scene *s, double dx_held, const acbb_me
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT) acbb_mech_fix_axial(m, 1, dx_held);
     if (probe == PROBE_TILT_HELD) acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
     if (probe == PROBE_RADIAL) acbb_mech_hold_tilt(m, warm ? warm->thy : 0.0);
+    acbb_mech_broyden_held(m, 1);
     *out = m;
     return ACBB_OK;
 }
