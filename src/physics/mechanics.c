@@ -718,26 +718,26 @@ static void prescribed_state(const acbb_mech *m, acbb_mech_state *w)
     w->dy = w->thz = 0.0;
 }
 
-/* The rest of the solve's working copy w of st once w's header (and so
- * its symmetry) is set: the balls solved in st or in w, and every ball's
- * azimuth. The other balls are images that every solve_balls spreads
- * before anything reads them (issue 30 lever 4: a pure-thrust ring copies
- * one ball of 21 in). */
-static void copy_balls_in(acbb_mech_state *w, const acbb_mech_state *st)
+/* What a failed solve puts back: st's header and the balls it solves
+ * (`keep`, saved before the solve); the other balls are their images
+ * (acbb_mech_spread), as they were. */
+static void put_back(acbb_mech_state *st, const acbb_mech_state *keep)
 {
-    int nb = acbb_mech_distinct(w), ns = acbb_mech_distinct(st);
-    if (ns > nb) nb = ns;
-    memcpy(w->ball, st->ball, sizeof st->ball[0] * (size_t)nb);
-    for (int j = nb; j < st->n; j++) w->ball[j].psi = st->ball[j].psi;
+    memcpy(st, keep, offsetof(acbb_mech_state, ball));
+    memcpy(st->ball, keep->ball, sizeof st->ball[0] * (size_t)acbb_mech_distinct(keep));
+    acbb_mech_spread(st);
 }
 
 acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
                             acbb_mech_state *st, acbb_error *err)
 {
     static const char *what = "mechanics";
-    acbb_mech_state *w = malloc(sizeof *w);
-    if (!w) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
-    memcpy(w, st, offsetof(acbb_mech_state, ball));
+    /* Solved in place (issue 30 lever 4: no copy of every ball record in
+     * and out); a failure puts back what it changed. */
+    acbb_mech_state *keep = malloc(sizeof *keep), *w = st;
+    if (!keep) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
+    memcpy(keep, st, offsetof(acbb_mech_state, ball));
+    memcpy(keep->ball, st->ball, sizeof st->ball[0] * (size_t)acbb_mech_distinct(st));
     m->omega = omega_i;
     if (e) m->e_copy = *e;
     m->e = e ? &m->e_copy : NULL;
@@ -745,7 +745,6 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (m->prescribed) prescribed_state(m, w);
     if (m->hold_radial) w->dz = m->dz_hold;
     if (m->hold_tilt) w->thy = m->thy_hold;
-    copy_balls_in(w, st);
     for (int j = 0; j < acbb_mech_distinct(w); j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
@@ -778,15 +777,15 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
             rc = ACBB_CONTACT_LOST;
     }
     if (rc != ACBB_OK) {
-        free(w);
+        put_back(st, keep);
+        free(keep);
         return acbb_error_set(err, rc, "%s: equilibrium %s at %.0f rpm", what,
                               rc == ACBB_CONTACT_LOST ? "lost every inner contact"
                                                       : "did not converge",
                               omega_i * 30.0 / M_PI);
     }
     finish_contacts(m, w);
-    acbb_mech_state_copy(st, w);
-    free(w);
+    free(keep);
     return ACBB_OK;
 }
 
