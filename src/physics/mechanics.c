@@ -70,8 +70,10 @@ static double gyro_friction(double F, double cap)
 /* Meridional friction forces on the ball (x', z'): f[0..1] at the inner
  * contact, f[2..3] at the outer one. Race control: the gyroscopic moment
  * split by zeta along the major-axis tangents t_i = (cos ai, -sin ai),
- * outer opposite; quasi-dynamic: the traction resultants. */
-static void ball_friction(const acbb_mech *m, const acbb_ball_state *b, double f[4])
+ * outer opposite; quasi-dynamic: the traction resultants. `a`: the contact
+ * angles' sines and cosines (the caller's, issue 30 lever 4). */
+static void ball_friction(const acbb_mech *m, const acbb_ball_state *b,
+                          const acbb_kin_angles *a, double f[4])
 {
     if (b->traction_valid) {
         /* Traction scales with the contact load while the equilibrium moves
@@ -85,10 +87,10 @@ static void ball_friction(const acbb_mech *m, const acbb_ball_state *b, double f
     double zi, zo, mg = b->Mg / m->g.D;
     zeta_split(b->control, m->race, &zi, &zo);
     double fi = gyro_friction(zi * mg, m->mu * b->Qi), fo = gyro_friction(zo * mg, m->mu * b->Qo);
-    f[0] = fi * cos(b->alpha_i);
-    f[1] = -fi * sin(b->alpha_i);
-    f[2] = -fo * cos(b->alpha_o);
-    f[3] = fo * sin(b->alpha_o);
+    f[0] = fi * a->ci;
+    f[1] = -fi * a->si;
+    f[2] = -fo * a->co;
+    f[3] = fo * a->so;
 }
 
 /* Evaluate the ball at (X1, X2): loads, angles, kinematics, body forces.
@@ -125,7 +127,7 @@ static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, doubl
     b->Fc = m->centrifugal ? g->mass * (g->Re_o + X2) * wm * wm : 0.0;
     b->Mg = m->gyroscopic ? g->J * wm * b->kin.wz : 0.0;
     double f[4];
-    ball_friction(m, b, f);
+    ball_friction(m, b, &an, f);
     *r1 = b->Qi * an.si - b->Qo * an.so + f[0] + f[2];
     *r2 = b->Qi * an.ci - b->Qo * an.co + b->Fc + f[1] + f[3];
 }
@@ -391,13 +393,33 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, int j, double A1
 }
 
 /* Groove-centre offsets of ball j for ring displacements (MODEL.md 3). */
+/* The ring's offsets at a ball of azimuth psi, from cp = cos psi and
+ * sp = sin psi. */
+static void ring_offsets_cs(const acbb_mech *m, const acbb_mech_state *st, double cp,
+                            double sp, double *A1, double *A2)
+{
+    const acbb_geometry *g = &m->g;
+    *A1 = g->A0 * sin(g->alpha0) + st->dx + g->Re_i * (st->thy * cp + st->thz * sp);
+    *A2 = g->A0 * cos(g->alpha0) + st->dz * cp - st->dy * sp;
+}
+
 static void ring_offsets(const acbb_mech *m, const acbb_mech_state *st, double psi,
                          double *A1, double *A2)
 {
-    const acbb_geometry *g = &m->g;
-    *A1 = g->A0 * sin(g->alpha0) + st->dx
-        + g->Re_i * (st->thy * cos(psi) + st->thz * sin(psi));
-    *A2 = g->A0 * cos(g->alpha0) + st->dz * cos(psi) - st->dy * sin(psi);
+    ring_offsets_cs(m, st, cos(psi), sin(psi), A1, A2);
+}
+
+/* cos and sin of solved ball j's azimuth, kept while it stays (issue 30
+ * lever 4); the same values as computing them. */
+static void psi_trig(acbb_mech *m, int j, double psi, double *cp, double *sp)
+{
+    if (m->psi_key[j] != psi) {
+        m->psi_key[j] = psi;
+        m->psi_cos[j] = cos(psi);
+        m->psi_sin[j] = sin(psi);
+    }
+    *cp = m->psi_cos[j];
+    *sp = m->psi_sin[j];
 }
 
 /* Solve every distinct ball and sum the ring reactions, each ball weighted
@@ -409,24 +431,30 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
     st->Fx = st->Fy = st->Fz = st->My = st->Mz = 0.0;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
-        double A1, A2;
-        ring_offsets(m, st, b->psi, &A1, &A2);
+        double A1, A2, cp, sp;
+        psi_trig(m, j, b->psi, &cp, &sp);
+        ring_offsets_cs(m, st, cp, sp, &A1, &A2);
         acbb_status rc = ball_solve(m, b, j, A1, A2);
         if (rc != ACBB_OK)
             return rc;
         double f[4];
-        ball_friction(m, b, f);
-        double si = sin(b->alpha_i), ci = cos(b->alpha_i);
+        acbb_kin_angles an = { b->alpha_o, sin(b->alpha_i), cos(b->alpha_i), 0.0, 0.0 };
+        if (!b->traction_valid) { /* race control's friction needs the outer angle too */
+            an.so = sin(b->alpha_o);
+            an.co = cos(b->alpha_o);
+        }
+        ball_friction(m, b, &an, f);
+        double si = an.si, ci = an.ci;
         double ax = b->Qi * si + f[0];
         double rad = b->Qi * ci + f[1];
         double w = acbb_mech_weight(st, j);
         st->Fx += w * ax;
-        st->Fz += w * rad * cos(b->psi);
-        st->Fy -= w * rad * sin(b->psi);
+        st->Fz += w * rad * cp;
+        st->Fy -= w * rad * sp;
         /* Friction along the major-axis tangent acts at the groove radius. */
         double mom = g->Re_i * ax - (f[0] * ci - f[1] * si) * g->f_i * g->D;
-        st->My += w * mom * cos(b->psi);
-        st->Mz += w * mom * sin(b->psi);
+        st->My += w * mom * cp;
+        st->Mz += w * mom * sp;
     }
     /* The odd sums cancel between mirror images (and all but Fx under
      * pure thrust): set exactly, not left at round-off. */

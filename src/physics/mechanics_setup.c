@@ -14,6 +14,7 @@
 acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
 {
     acbb_mech *m = calloc(1, sizeof *m);
+    for (int j = 0; m && j < ACBB_MAX_BALLS; j++) m->psi_key[j] = NAN;
     if (!m) return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
     acbb_geometry_init(s, &m->g);
     if (m->g.Z > ACBB_MAX_BALLS) {
