@@ -313,9 +313,15 @@ static void modes(const char *path, double tol)
 
 static void test_modes(void)
 {
-    /* Measured: 4.7e-9 (7008C) and 1.6e-9 (combined-load), the total loss. */
-    modes("presets/7008C.ini", 1e-8);
-    modes("presets/combined-load.ini", 1e-8);
+    /* Each run's losses are resolved to the mechanics' tolerance
+     * (fidelity.mech_tol = 1e-8 relative, its ball solves warm-started
+     * along a different path), so two converged runs agree to twice it.
+     * Measured: 4.7e-9 (7008C) and 1.6e-9 (combined-load) in a debug
+     * build, 8.6e-9 for combined-load in a release build; 1.2e-8 since
+     * issue 30's envelope Cholesky and contact-angle ratios moved the
+     * round-off. */
+    modes("presets/7008C.ini", 2e-8);
+    modes("presets/combined-load.ini", 2e-8);
     /* Not equivalent for a runaway scene (batch.h). */
     static batch_case tr, sd;
     acbb_scene s = load("presets/runaway-rigid-preload.ini");

@@ -340,7 +340,7 @@ static int dynamic_steps(int threads, acbb_snapshot *snap)
     s.radial_load = 500.0;
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    if (acbb_sim_create(&s, &(acbb_sim_opts){ NULL, threads }, &sim, &err) != ACBB_OK) {
+    if (acbb_sim_create(&s, &(acbb_sim_opts){ .threads = threads }, &sim, &err) != ACBB_OK) {
         printf("# %s\n", err.msg);
         return 0;
     }

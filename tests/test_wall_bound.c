@@ -54,7 +54,7 @@ static acbb_set_sim *new_set(const char *model)
     acbb_error err = { { 0 } };
     if (!load("presets/pair-DB-heated.ini", model, &s)) return NULL;
     if (!strcmp(model, "dynamic")) acbb_scene_set(&s, "fidelity.contact_grid", "3", &err);
-    if (acbb_set_sim_new(&s, &(acbb_sim_opts){ NULL, 1 }, &ss, &err) != ACBB_OK)
+    if (acbb_set_sim_new(&s, &(acbb_sim_opts){ .cancel = NULL, .threads = 1 }, &ss, &err) != ACBB_OK)
         printf("# pair-DB-heated, %s: %s\n", model, err.msg);
     return ss;
 }

@@ -99,6 +99,7 @@ typedef struct {
     acbb_batch_step_fn step;    /* may be NULL */
     acbb_batch_done_fn done;    /* may be NULL */
     void *ctx;                  /* passed to scene, step and done */
+    int skip_stiffness;         /* acbb_sim_opts.skip_stiffness of every run */
 } acbb_batch_opts;
 
 typedef struct {

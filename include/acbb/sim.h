@@ -196,6 +196,11 @@ acbb_status acbb_sim_new_ctl(const acbb_scene *s, const acbb_atomic_int *cancel,
 typedef struct {
     const acbb_atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
     int threads;
+    /* 1: a caller that reads no stiffness skips the end-of-run stiffness
+     * probes of a single bearing (a third of a steady run): the snapshot
+     * then has stiffness_failed with every ACBB_STIFF_* bit and the values
+     * 0. 0 (the default): computed, as `acbb run` reports them. */
+    int skip_stiffness;
 } acbb_sim_opts;
 /* GSL's error handler: the engine checks GSL's statuses itself, so while
  * an acbb_sim_* call (create, restart, step, drive, run) works the

@@ -101,6 +101,10 @@ typedef struct {
     acbb_sweep_done_fn done;
     void *ctx;
     int transient;                 /* 1: each point's transient as its scene says */
+    /* 1: no end-of-run stiffness probes (acbb_sim_opts.skip_stiffness),
+     * a third of a steady point: for a caller whose records need no
+     * stiffness (their stiffness values are then missing). */
+    int skip_stiffness;
 } acbb_sweep_opts;
 
 /* Run the points of the shard not skipped, lowest index first. Returns

@@ -222,7 +222,7 @@ static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel, in
 {
     acbb_sim *sim = NULL;
     double t0 = acbb_now_ms();
-    acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ cancel, threads }, &sim, err);
+    acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ .cancel = cancel, .threads = threads }, &sim, err);
     if (st != ACBB_OK) {
         *ms = acbb_now_ms() - t0;
         *have_snap = 0;

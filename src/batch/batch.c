@@ -124,8 +124,8 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     acbb_status st = o->scene(o->ctx, i, &w->scene, &mode, &err);
     if (st == ACBB_OK) {
         apply_mode(&w->scene, mode);
-        st = acbb_sim_create(&w->scene, &(acbb_sim_opts){ o->cancel, pl->sim_threads }, &sim,
-                             &err);
+        acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness };
+        st = acbb_sim_create(&w->scene, &so, &sim, &err);
     }
     if (st == ACBB_OK) {
         step_ctx sc = { o, i };

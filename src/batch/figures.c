@@ -93,7 +93,7 @@ acbb_status acbb_figures_record(const acbb_study_runs *runs, int jobs, const ato
     in->runs = runs;
     double t0 = acbb_now_ms();
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = rec_scene, .step = rec_step,
-                          .done = rec_done, .ctx = &j };
+                          .done = rec_done, .ctx = &j, .skip_stiffness = 1 }; /* none plotted */
     acbb_status st = acbb_batch_run(ACBB_STUDY_NPTS, &o, NULL);
     free(j.snap);
     in->wall_ms = acbb_now_ms() - t0;

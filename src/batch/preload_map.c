@@ -192,7 +192,7 @@ acbb_status acbb_preload_map(const acbb_scene *base, const acbb_pmap_opts *o,
     }
     acbb_batch_opts bo = { .jobs = o->jobs, .cancel = o->cancel, .mode = ACBB_BATCH_TRANSIENT,
                            .scene = cell_scene, .step = set ? set_final : NULL,
-                           .done = cell_done, .ctx = &c };
+                           .done = cell_done, .ctx = &c, .skip_stiffness = 1 }; /* none read */
     rc = acbb_batch_run(n, &bo, NULL);
     free(c.set_done);
     rows_of(o, cells, rows);

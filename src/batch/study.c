@@ -111,8 +111,10 @@ void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
     study_batch b = { .pts = pts, .n = n, .progress = progress, .ctx = ctx };
+    /* No study item reads a stiffness (issue 30 lever 2: skip the probes). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
-                          .step = point_step, .done = point_done, .ctx = &b };
+                          .step = point_step, .done = point_done, .ctx = &b,
+                          .skip_stiffness = 1 };
     acbb_batch_run(n, &o, NULL);
 }
 

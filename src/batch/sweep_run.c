@@ -93,7 +93,7 @@ acbb_status acbb_sweep_run(const acbb_sweep *g, const acbb_scene *base,
                       .mode = o->transient || grid_sets_mode(g) ? ACBB_BATCH_AS_SCENE
                                                                 : ACBB_BATCH_STEADY };
     acbb_batch_opts bo = { .jobs = o->jobs, .cancel = o->cancel, .scene = point_scene,
-                           .done = point_done, .ctx = &b };
+                           .done = point_done, .ctx = &b, .skip_stiffness = o->skip_stiffness };
     acbb_status st = acbb_batch_run(n_todo, &bo, NULL);
     free(todo);
     free(r);

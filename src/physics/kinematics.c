@@ -2,26 +2,46 @@
 #include <math.h>
 #include "kinematics.h"
 
+static acbb_kin_angles angles(double alpha_i, double alpha_o)
+{
+    return (acbb_kin_angles){ alpha_o, sin(alpha_i), cos(alpha_i), sin(alpha_o), cos(alpha_o) };
+}
+
 void acbb_kinematics_race_control(double alpha_i, double alpha_o, double D, double dm,
                                   double omega_i, acbb_control control, acbb_kin *k)
 {
-    double g = D / dm; /* gamma' */
-    double si = sin(alpha_i), ci = cos(alpha_i), so = sin(alpha_o), co = cos(alpha_o);
-    double tb = control == ACBB_CONTROL_OUTER ? so / (co + g) : si / (ci - g);
-    double beta = atan(tb);
-    double ratio = 1.0 / (1.0 + (1.0 + g * co) * (ci + tb * si)
-                                    / ((1.0 - g * ci) * (co + tb * so)));
-    double wm = ratio * omega_i;
-    double wR = wm * (1.0 + g * co) / (g * cos(alpha_o - beta));
-    acbb_kinematics_from_omega(alpha_i, alpha_o, D, dm, omega_i, wm, -wR * cos(beta), 0.0,
-                               wR * sin(beta), k);
+    acbb_kin_angles a = angles(alpha_i, alpha_o);
+    acbb_kinematics_race_control_sc(&a, D, dm, omega_i, control, k);
 }
 
 void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double dm,
                                 double omega_i, double omega_m, double wx, double wy,
                                 double wz, acbb_kin *k)
 {
-    double si = sin(alpha_i), ci = cos(alpha_i), so = sin(alpha_o), co = cos(alpha_o);
+    acbb_kin_angles a = angles(alpha_i, alpha_o);
+    acbb_kinematics_from_omega_sc(&a, D, dm, omega_i, omega_m, wx, wy, wz, k);
+}
+
+void acbb_kinematics_race_control_sc(const acbb_kin_angles *a, double D, double dm,
+                                     double omega_i, acbb_control control, acbb_kin *k)
+{
+    double g = D / dm; /* gamma' */
+    double si = a->si, ci = a->ci, so = a->so, co = a->co;
+    double tb = control == ACBB_CONTROL_OUTER ? so / (co + g) : si / (ci - g);
+    double beta = atan(tb);
+    double ratio = 1.0 / (1.0 + (1.0 + g * co) * (ci + tb * si)
+                                    / ((1.0 - g * ci) * (co + tb * so)));
+    double wm = ratio * omega_i;
+    double wR = wm * (1.0 + g * co) / (g * cos(a->alpha_o - beta));
+    acbb_kinematics_from_omega_sc(a, D, dm, omega_i, wm, -wR * cos(beta), 0.0,
+                                  wR * sin(beta), k);
+}
+
+void acbb_kinematics_from_omega_sc(const acbb_kin_angles *a, double D, double dm,
+                                   double omega_i, double omega_m, double wx, double wy,
+                                   double wz, acbb_kin *k)
+{
+    double si = a->si, ci = a->ci, so = a->so, co = a->co;
     double rm = 0.5 * dm, wm = omega_m;
     k->omega_m = wm;
     k->wx = wx;

@@ -31,6 +31,19 @@ void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double
                                 double omega_i, double omega_m, double wx, double wy,
                                 double wz, acbb_kin *k);
 
+/* The same from the angles' sines and cosines, which a caller that has
+ * them (mechanics.c ball_eval: the ratios of the contact geometry) passes
+ * instead of recomputing them in each (issue 30 lever 4). */
+typedef struct {
+    double alpha_o;        /* rad (the race-control beta needs it) */
+    double si, ci, so, co; /* sin, cos of alpha_i and alpha_o */
+} acbb_kin_angles;
+void acbb_kinematics_race_control_sc(const acbb_kin_angles *a, double D, double dm,
+                                     double omega_i, acbb_control control, acbb_kin *k);
+void acbb_kinematics_from_omega_sc(const acbb_kin_angles *a, double D, double dm,
+                                   double omega_i, double omega_m, double wx, double wy,
+                                   double wz, acbb_kin *k);
+
 /* Jones' criterion with a +-5 % hysteresis band around the previous choice. */
 acbb_control acbb_race_control_choose(double Qi, double ai, double Ei, double Qo, double ao,
                                       double Eo, double alpha_i, double alpha_o,

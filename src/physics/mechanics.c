@@ -7,6 +7,7 @@
  * case where every ball is identical, GSL hybrids otherwise). The ball
  * problem is a hand-written damped Newton (see ball_newton for why). */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
@@ -69,8 +70,10 @@ static double gyro_friction(double F, double cap)
 /* Meridional friction forces on the ball (x', z'): f[0..1] at the inner
  * contact, f[2..3] at the outer one. Race control: the gyroscopic moment
  * split by zeta along the major-axis tangents t_i = (cos ai, -sin ai),
- * outer opposite; quasi-dynamic: the traction resultants. */
-static void ball_friction(const acbb_mech *m, const acbb_ball_state *b, double f[4])
+ * outer opposite; quasi-dynamic: the traction resultants. `a`: the contact
+ * angles' sines and cosines (the caller's, issue 30 lever 4). */
+static void ball_friction(const acbb_mech *m, const acbb_ball_state *b,
+                          const acbb_kin_angles *a, double f[4])
 {
     if (b->traction_valid) {
         /* Traction scales with the contact load while the equilibrium moves
@@ -84,10 +87,10 @@ static void ball_friction(const acbb_mech *m, const acbb_ball_state *b, double f
     double zi, zo, mg = b->Mg / m->g.D;
     zeta_split(b->control, m->race, &zi, &zo);
     double fi = gyro_friction(zi * mg, m->mu * b->Qi), fo = gyro_friction(zo * mg, m->mu * b->Qo);
-    f[0] = fi * cos(b->alpha_i);
-    f[1] = -fi * sin(b->alpha_i);
-    f[2] = -fo * cos(b->alpha_o);
-    f[3] = fo * sin(b->alpha_o);
+    f[0] = fi * a->ci;
+    f[1] = -fi * a->si;
+    f[2] = -fo * a->co;
+    f[3] = fo * a->so;
 }
 
 /* Evaluate the ball at (X1, X2): loads, angles, kinematics, body forces.
@@ -108,22 +111,25 @@ static void ball_eval(const ball_ctx *c, double X1, double X2, double *r1, doubl
     b->alpha_i = atan2(xi, zi);
     b->Qo = b->hc_o.Kc * pos15(b->delta_o);
     b->Qi = b->hc_i.Kc * pos15(b->delta_i);
+    /* The angles' sines and cosines are the geometry's ratios (one set for
+     * the kinematics and the balance, issue 30 lever 4). */
+    acbb_kin_angles an = { b->alpha_o, xi / Li, zi / Li, X1 / Lo, X2 / Lo };
+    if (!(Li > 0.0 && Lo > 0.0))
+        an = (acbb_kin_angles){ b->alpha_o, sin(b->alpha_i), cos(b->alpha_i), sin(b->alpha_o),
+                                cos(b->alpha_o) };
     int qd = b->traction_valid;
     if (qd)
-        acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega, b->qd_w[0],
-                                   b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
+        acbb_kinematics_from_omega_sc(&an, g->D, g->dm, m->omega, b->qd_w[0], b->qd_w[1],
+                                      b->qd_w[2], b->qd_w[3], &b->kin);
     else
-        acbb_kinematics_race_control(b->alpha_i, b->alpha_o, g->D, g->dm, m->omega,
-                                     b->control, &b->kin);
+        acbb_kinematics_race_control_sc(&an, g->D, g->dm, m->omega, b->control, &b->kin);
     double wm = b->kin.omega_m;
     b->Fc = m->centrifugal ? g->mass * (g->Re_o + X2) * wm * wm : 0.0;
     b->Mg = m->gyroscopic ? g->J * wm * b->kin.wz : 0.0;
     double f[4];
-    ball_friction(m, b, f);
-    double si = sin(b->alpha_i), ci = cos(b->alpha_i);
-    double so = sin(b->alpha_o), co = cos(b->alpha_o);
-    *r1 = b->Qi * si - b->Qo * so + f[0] + f[2];
-    *r2 = b->Qi * ci - b->Qo * co + b->Fc + f[1] + f[3];
+    ball_friction(m, b, &an, f);
+    *r1 = b->Qi * an.si - b->Qo * an.so + f[0] + f[2];
+    *r2 = b->Qi * an.ci - b->Qo * an.co + b->Fc + f[1] + f[3];
 }
 
 /* The ball unknowns are polar about the OR groove centre: the angle a and
@@ -387,13 +393,33 @@ static acbb_status ball_solve(acbb_mech *m, acbb_ball_state *b, int j, double A1
 }
 
 /* Groove-centre offsets of ball j for ring displacements (MODEL.md 3). */
+/* The ring's offsets at a ball of azimuth psi, from cp = cos psi and
+ * sp = sin psi. */
+static void ring_offsets_cs(const acbb_mech *m, const acbb_mech_state *st, double cp,
+                            double sp, double *A1, double *A2)
+{
+    const acbb_geometry *g = &m->g;
+    *A1 = g->A0 * sin(g->alpha0) + st->dx + g->Re_i * (st->thy * cp + st->thz * sp);
+    *A2 = g->A0 * cos(g->alpha0) + st->dz * cp - st->dy * sp;
+}
+
 static void ring_offsets(const acbb_mech *m, const acbb_mech_state *st, double psi,
                          double *A1, double *A2)
 {
-    const acbb_geometry *g = &m->g;
-    *A1 = g->A0 * sin(g->alpha0) + st->dx
-        + g->Re_i * (st->thy * cos(psi) + st->thz * sin(psi));
-    *A2 = g->A0 * cos(g->alpha0) + st->dz * cos(psi) - st->dy * sin(psi);
+    ring_offsets_cs(m, st, cos(psi), sin(psi), A1, A2);
+}
+
+/* cos and sin of solved ball j's azimuth, kept while it stays (issue 30
+ * lever 4); the same values as computing them. */
+static void psi_trig(acbb_mech *m, int j, double psi, double *cp, double *sp)
+{
+    if (m->psi_key[j] != psi) {
+        m->psi_key[j] = psi;
+        m->psi_cos[j] = cos(psi);
+        m->psi_sin[j] = sin(psi);
+    }
+    *cp = m->psi_cos[j];
+    *sp = m->psi_sin[j];
 }
 
 /* Solve every distinct ball and sum the ring reactions, each ball weighted
@@ -405,24 +431,30 @@ static acbb_status solve_balls(acbb_mech *m, acbb_mech_state *st)
     st->Fx = st->Fy = st->Fz = st->My = st->Mz = 0.0;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
-        double A1, A2;
-        ring_offsets(m, st, b->psi, &A1, &A2);
+        double A1, A2, cp, sp;
+        psi_trig(m, j, b->psi, &cp, &sp);
+        ring_offsets_cs(m, st, cp, sp, &A1, &A2);
         acbb_status rc = ball_solve(m, b, j, A1, A2);
         if (rc != ACBB_OK)
             return rc;
         double f[4];
-        ball_friction(m, b, f);
-        double si = sin(b->alpha_i), ci = cos(b->alpha_i);
+        acbb_kin_angles an = { b->alpha_o, sin(b->alpha_i), cos(b->alpha_i), 0.0, 0.0 };
+        if (!b->traction_valid) { /* race control's friction needs the outer angle too */
+            an.so = sin(b->alpha_o);
+            an.co = cos(b->alpha_o);
+        }
+        ball_friction(m, b, &an, f);
+        double si = an.si, ci = an.ci;
         double ax = b->Qi * si + f[0];
         double rad = b->Qi * ci + f[1];
         double w = acbb_mech_weight(st, j);
         st->Fx += w * ax;
-        st->Fz += w * rad * cos(b->psi);
-        st->Fy -= w * rad * sin(b->psi);
+        st->Fz += w * rad * cp;
+        st->Fy -= w * rad * sp;
         /* Friction along the major-axis tangent acts at the groove radius. */
         double mom = g->Re_i * ax - (f[0] * ci - f[1] * si) * g->f_i * g->D;
-        st->My += w * mom * cos(b->psi);
-        st->Mz += w * mom * sin(b->psi);
+        st->My += w * mom * cp;
+        st->Mz += w * mom * sp;
     }
     /* The odd sums cancel between mirror images (and all but Fx under
      * pure thrust): set exactly, not left at round-off. */
@@ -614,7 +646,7 @@ static acbb_status solve_ring(acbb_mech *m, acbb_mech_state *st)
     if (m->dof_thy) x0[k++] = st->thy / MRAD;
     /* Held-displacement solves (sim.c's axial stiffness, a 0.3 nm central
      * difference; displacement preload) keep the hybrid path's noise. */
-    if (!m->fix_axial && ring_broyden(m, n, x0))
+    if ((!m->fix_axial || m->broyden_held) && ring_broyden(m, n, x0))
         return ACBB_OK;
     m->inner_status = ACBB_OK;
     gsl_vector_view xv = gsl_vector_view_array(x0, n);
@@ -666,9 +698,13 @@ static acbb_status refresh_hertz(const acbb_mech *m, acbb_mech_state *st, int *r
     return ACBB_OK;
 }
 
+/* The solved balls' contacts; the others are copies of theirs (the last
+ * solve_balls spread them: the same inputs, so the same bits), not
+ * recomputed (issue 30 lever 4: 21 balls of a pure-thrust ring). */
 static void finish_contacts(const acbb_mech *m, acbb_mech_state *st)
 {
-    for (int j = 0; j < st->n; j++) {
+    int nb = acbb_mech_distinct(st);
+    for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         acbb_hertz_from_load(&b->hc_i, b->Qi, &b->ct_i);
         acbb_hertz_from_load(&b->hc_o, b->Qo, &b->ct_o);
@@ -676,6 +712,13 @@ static void finish_contacts(const acbb_mech *m, acbb_mech_state *st)
             b->control = acbb_race_control_choose(b->Qi, b->ct_i.a, b->hc_i.E, b->Qo,
                                                   b->ct_o.a, b->hc_o.E, b->alpha_i,
                                                   b->alpha_o, b->control);
+    }
+    for (int j = nb; j < st->n; j++) {
+        acbb_ball_state *b = &st->ball[j];
+        const acbb_ball_state *src = &st->ball[acbb_mech_source(st, j)];
+        b->ct_i = src->ct_i;
+        b->ct_o = src->ct_o;
+        b->control = src->control;
     }
 }
 
@@ -703,13 +746,26 @@ static void prescribed_state(const acbb_mech *m, acbb_mech_state *w)
     w->dy = w->thz = 0.0;
 }
 
+/* What a failed solve puts back: st's header and the balls it solves
+ * (`keep`, saved before the solve); the other balls are their images
+ * (acbb_mech_spread), as they were. */
+static void put_back(acbb_mech_state *st, const acbb_mech_state *keep)
+{
+    memcpy(st, keep, offsetof(acbb_mech_state, ball));
+    memcpy(st->ball, keep->ball, sizeof st->ball[0] * (size_t)acbb_mech_distinct(keep));
+    acbb_mech_spread(st);
+}
+
 acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *e,
                             acbb_mech_state *st, acbb_error *err)
 {
     static const char *what = "mechanics";
-    acbb_mech_state *w = malloc(sizeof *w);
-    if (!w) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
-    acbb_mech_state_copy(w, st);
+    /* Solved in place (issue 30 lever 4: no copy of every ball record in
+     * and out); a failure puts back what it changed. */
+    acbb_mech_state *keep = malloc(sizeof *keep), *w = st;
+    if (!keep) return acbb_error_set(err, ACBB_ENOMEM, "%s: out of memory", what);
+    memcpy(keep, st, offsetof(acbb_mech_state, ball));
+    memcpy(keep->ball, st->ball, sizeof st->ball[0] * (size_t)acbb_mech_distinct(st));
     m->omega = omega_i;
     if (e) m->e_copy = *e;
     m->e = e ? &m->e_copy : NULL;
@@ -717,7 +773,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (m->prescribed) prescribed_state(m, w);
     if (m->hold_radial) w->dz = m->dz_hold;
     if (m->hold_tilt) w->thy = m->thy_hold;
-    for (int j = 0; j < w->n; j++) {
+    for (int j = 0; j < acbb_mech_distinct(w); j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
     }
@@ -749,15 +805,15 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
             rc = ACBB_CONTACT_LOST;
     }
     if (rc != ACBB_OK) {
-        free(w);
+        put_back(st, keep);
+        free(keep);
         return acbb_error_set(err, rc, "%s: equilibrium %s at %.0f rpm", what,
                               rc == ACBB_CONTACT_LOST ? "lost every inner contact"
                                                       : "did not converge",
                               omega_i * 30.0 / M_PI);
     }
     finish_contacts(m, w);
-    acbb_mech_state_copy(st, w);
-    free(w);
+    free(keep);
     return ACBB_OK;
 }
 

@@ -158,6 +158,18 @@ void acbb_mech_state_copy(acbb_mech_state *dst, const acbb_mech_state *src);
  * independent solve (stiffness) must. */
 void acbb_mech_set_transient(acbb_mech *m, double angle_tol);
 
+/* 1: a ring solve with the axial displacement held tries Broyden from
+ * the last ring Jacobian first, as a free one does; 0 (default): GSL's
+ * hybrid at once, whose noise the 0.3 nm axial-stiffness difference and
+ * the displacement preload's runs were measured with. For the radial
+ * and tilt stiffness probes (a 1 % load nudge; issue 30 lever 2). */
+void acbb_mech_broyden_held(acbb_mech *m, int on);
+
+/* New applied loads (N, N, N m) for the next solves, the unknowns kept:
+ * for loads whose radial load and moment are nonzero as the built ones
+ * were (a stiffness probe's other end); its Jacobians stay. */
+void acbb_mech_set_loads(acbb_mech *m, double Fx, double Fz, double My);
+
 /* Fix the axial displacement (displacement-controlled preload) or free it. */
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx);
 

@@ -18,6 +18,7 @@ struct acbb_mech {
     acbb_geom_mode geom;
     double tol;
     double hertz_tol;           /* rad: constants kept below this angle move (0: 1e-11) */
+    int broyden_held;           /* 1: held-displacement ring solves by Broyden first too */
     double mu;                  /* friction available for the gyroscopic moment */
     double Fx, Fz, My;          /* applied loads on the IR */
     int fix_axial;
@@ -35,6 +36,9 @@ struct acbb_mech {
     int ring_J_ok[MAX_RING_DOF + 1];
     double ball_J[ACBB_MAX_BALLS][4]; /* last ball Jacobians (chord steps, transient mode) */
     int ball_J_ok[ACBB_MAX_BALLS];
+    /* cos and sin of each solved ball's azimuth psi_key[j] (solve_balls:
+     * six per ball and ring evaluation, the azimuths fixed; NAN: none) */
+    double psi_key[ACBB_MAX_BALLS], psi_cos[ACBB_MAX_BALLS], psi_sin[ACBB_MAX_BALLS];
     double kept_J[ACBB_MAX_BALLS][4]; /* ball_J before the probes (acbb_mech_probing) */
     int kept_J_ok[ACBB_MAX_BALLS];
     gsl_root_fsolver *brent;

@@ -14,6 +14,7 @@
 acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
 {
     acbb_mech *m = calloc(1, sizeof *m);
+    for (int j = 0; m && j < ACBB_MAX_BALLS; j++) m->psi_key[j] = NAN;
     if (!m) return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
     acbb_geometry_init(s, &m->g);
     if (m->g.Z > ACBB_MAX_BALLS) {
@@ -87,6 +88,15 @@ const acbb_geometry *acbb_mech_geometry(const acbb_mech *m) { return &m->g; }
 void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
 {
     m->hertz_tol = angle_tol > 0.0 ? angle_tol : 0.0;
+}
+
+void acbb_mech_broyden_held(acbb_mech *m, int on) { m->broyden_held = on; }
+
+void acbb_mech_set_loads(acbb_mech *m, double Fx, double Fz, double My)
+{
+    m->Fx = Fx;
+    m->Fz = Fz;
+    m->My = My;
 }
 
 void acbb_mech_fix_axial(acbb_mech *m, int fixed, double dx)

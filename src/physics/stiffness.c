@@ -25,46 +25,59 @@ static void warm_start(const acbb_mech *m, const acbb_mech_state *warm, acbb_mec
  * probes leave the ring free radially or hold it (issue 18). */
 enum { PROBE_RADIAL, PROBE_TILT, PROBE_TILT_HELD };
 
-/* delta_z and theta_y of the equilibrium of scene s. */
-static acbb_status solve_point(const acbb_scene *s, const acbb_expansion *e, double dx_held,
-                               const acbb_mech_state *warm, int probe, double *dz, double *thy)
+/* The probe's mechanics for scene s: its holds set. */
+static acbb_status probe_mech(const acbb_scene *s, double dx_held, const acbb_mech_state *warm,
+                              int probe, acbb_mech **out)
 {
     acbb_mech *m = NULL;
-    acbb_mech_state *st = malloc(sizeof *st);
-    acbb_status rc = st ? acbb_mech_new(s, &m, NULL) : ACBB_ENOMEM;
-    if (rc == ACBB_OK && s->preload == ACBB_PRELOAD_DISPLACEMENT)
-        acbb_mech_fix_axial(m, 1, dx_held);
-    if (rc == ACBB_OK && probe == PROBE_TILT_HELD)
-        acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
-    if (rc == ACBB_OK && probe == PROBE_RADIAL) acbb_mech_hold_tilt(m, warm ? warm->thy : 0.0);
+    acbb_status rc = acbb_mech_new(s, &m, NULL);
+    if (rc != ACBB_OK) return rc;
+    if (s->preload == ACBB_PRELOAD_DISPLACEMENT) acbb_mech_fix_axial(m, 1, dx_held);
+    if (probe == PROBE_TILT_HELD) acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
+    if (probe == PROBE_RADIAL) acbb_mech_hold_tilt(m, warm ? warm->thy : 0.0);
+    acbb_mech_broyden_held(m, 1);
+    *out = m;
+    return ACBB_OK;
+}
+
+/* The equilibrium st of m (built for scene s, whose load is nudged) from
+ * `warm`, else by continuation from rest. */
+static acbb_status solve_point(acbb_mech *m, const acbb_scene *s, const acbb_expansion *e,
+                               const acbb_mech_state *warm, acbb_mech_state *st)
+{
+    acbb_status rc = ACBB_OK;
     int cold = 1;
-    if (rc == ACBB_OK && warm) {
+    if (warm) {
         warm_start(m, warm, st);
         cold = acbb_mech_solve(m, s->inner_speed, e, st, NULL) != ACBB_OK;
     }
-    if (rc == ACBB_OK && cold) rc = acbb_mech_init_state(m, st, NULL);
+    if (cold) rc = acbb_mech_init_state(m, st, NULL);
     for (int k = 1; k <= 4 && rc == ACBB_OK && cold; k++)
         rc = acbb_mech_solve(m, s->inner_speed * k / 4.0, k == 4 ? e : NULL, st, NULL);
-    if (rc == ACBB_OK) {
-        *dz = st->dz;
-        *thy = st->thy;
-    }
-    acbb_mech_free(m);
-    free(st);
     return rc;
 }
 
-/* Central difference of the response to a load nudged by +-h around v. */
+/* Central difference of the response to a load nudged by +-h around v.
+ * Both ends on one mechanics (the loads are set per end): the second
+ * solve starts from the first's ring Jacobian (mechanics.c ring_broyden)
+ * instead of building its own (issue 30 lever 2). */
 static double difference(acbb_scene *s, double *load, double h, const acbb_expansion *e,
-                         double dx_held, const acbb_mech_state *warm, int probe)
+                         double dx_held, const acbb_mech_state *warm,
+                         const acbb_mech_state *start, int probe)
 {
-    double v = *load, r[2] = { 0, 0 }, other;
-    acbb_status rc = ACBB_OK;
+    double v = *load, r[2] = { 0, 0 };
+    acbb_mech *m = NULL;
+    acbb_mech_state *st = malloc(sizeof *st);
+    acbb_status rc = st ? ACBB_OK : ACBB_ENOMEM;
     for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
         *load = v + (k ? -h : h);
-        rc = probe != PROBE_RADIAL ? solve_point(s, e, dx_held, warm, probe, &other, &r[k])
-                                   : solve_point(s, e, dx_held, warm, probe, &r[k], &other);
+        if (k == 0) rc = probe_mech(s, dx_held, warm, probe, &m);
+        else acbb_mech_set_loads(m, s->axial_load, s->radial_load, s->moment_load);
+        if (rc == ACBB_OK) rc = solve_point(m, s, e, start, st);
+        if (rc == ACBB_OK) r[k] = probe != PROBE_RADIAL ? st->thy : st->dz;
     }
+    acbb_mech_free(m);
+    free(st);
     *load = v;
     double K = 2.0 * h / (r[0] - r[1]);
     return rc == ACBB_OK && isfinite(K) ? K : NAN; /* NAN: the probe failed */
@@ -78,12 +91,27 @@ acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, do
      * radius): small against the loads, large against solver noise. */
     double h = fmax(0.01 * fabs(s->axial_load), 1.0);
     double hm = h * 0.5 * s->pitch_diameter;
-    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, PROBE_RADIAL);
+    /* Every probe starts from the race-control equilibrium at the
+     * operating point's loads, solved once: the probes then move by
+     * their nudge only, not also from the run's ball model to this one. */
+    acbb_mech_state *start = warm ? malloc(sizeof *start) : NULL;
+    acbb_mech *m0 = NULL;
+    if (start && probe_mech(s, dx_held, NULL, -1, &m0) == ACBB_OK) {
+        warm_start(m0, warm, start);
+        if (acbb_mech_solve(m0, s->inner_speed, e, start, NULL) != ACBB_OK) {
+            free(start);
+            start = NULL;
+        }
+    }
+    acbb_mech_free(m0);
+    const acbb_mech_state *from = start ? start : warm;
+    out->radial = difference(&t, &t.radial_load, h, e, dx_held, warm, from, PROBE_RADIAL);
     /* The tilt probes solve the tilt whatever mounting.tilt says: held
      * describes the operating point, the probe asks how the ring would
      * tilt under a moment (README: both tilt stiffnesses are reported). */
     t.tilt = ACBB_TILT_FREE;
-    out->tilt = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT);
-    out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, PROBE_TILT_HELD);
+    out->tilt = difference(&t, &t.moment_load, hm, e, dx_held, warm, from, PROBE_TILT);
+    out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, from, PROBE_TILT_HELD);
+    free(start);
     return ACBB_OK;
 }

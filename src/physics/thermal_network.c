@@ -7,18 +7,22 @@
  * with its own dirty flag, so alternating step/steady calls never force a
  * refactorisation. The matrices are dense (40-ish unknowns) symmetric
  * M-matrices, positive definite once every component touches a fixed node
- * or carries capacity (checked on the graph first): GSL's dense Cholesky
- * costs half a pivoted LU; no sparse solver is warranted. */
+ * or carries capacity (checked on the graph first). Their rows are sparse
+ * (a node has a few neighbours): an envelope Cholesky (skyline.h) skips
+ * the zeros left of each row's first coupling, 4x fewer instructions than
+ * GSL's dense one on the 46-node network (issue 30 lever 3). */
 #include <math.h>
 #include <stdlib.h>
-#include <gsl/gsl_linalg.h>
-#include <gsl/gsl_errno.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_vector.h>
 #include "thermal_network.h"
+#include "skyline.h"
 
 /* One cached factorisation (transient or steady). The n x n buffer is
  * allocated once in acbb_tnet_new and used through an nf x nf view. */
 typedef struct {
     gsl_matrix *lu;          /* n x n storage, top-left nf x nf in use (Cholesky factor) */
+    int *first;              /* n-long: each factor row's envelope start (skyline.h) */
     int dirty;               /* matrix inputs changed since factorisation */
     int valid;               /* a successful factorisation is stored */
     double dt;               /* transient only: dt of the stored factors */
@@ -69,10 +73,12 @@ acbb_tnet *acbb_tnet_new(int n_nodes)
     net->good = calloc(n + 1, sizeof *net->good);
     net->tr.lu = gsl_matrix_alloc(n, n);
     net->st.lu = gsl_matrix_alloc(n, n);
+    net->tr.first = calloc(n, sizeof *net->tr.first);
+    net->st.first = calloc(n, sizeof *net->st.first);
     net->rhs = gsl_vector_alloc(n);
     net->x = gsl_vector_alloc(n);
     if (!net->C || !net->fixed || !net->Tfix || !net->fidx || !net->parent || !net->good ||
-        !net->tr.lu || !net->st.lu || !net->rhs || !net->x) {
+        !net->tr.lu || !net->st.lu || !net->tr.first || !net->st.first || !net->rhs || !net->x) {
         acbb_tnet_free(net);
         return NULL;
     }
@@ -95,6 +101,8 @@ void acbb_tnet_free(acbb_tnet *net)
     free(net->R);
     if (net->tr.lu) gsl_matrix_free(net->tr.lu);
     if (net->st.lu) gsl_matrix_free(net->st.lu);
+    free(net->tr.first);
+    free(net->st.first);
     if (net->rhs) gsl_vector_free(net->rhs);
     if (net->x) gsl_vector_free(net->x);
     free(net);
@@ -263,12 +271,8 @@ static acbb_status factorise(acbb_tnet *net, tn_factor *f, double inv_dt)
         }
     }
     net->n_fact++;
-    if (gsl_linalg_cholesky_decomp1(&A.matrix) != GSL_SUCCESS)
+    if (!acbb_skyline_factor(A.matrix.data, nf, (int)A.matrix.tda, f->first))
         return ACBB_SINGULAR;
-    for (int i = 0; i < nf; i++) {
-        double u = gsl_matrix_get(&A.matrix, (size_t)i, (size_t)i);
-        if (!(fabs(u) > 0.0) || !isfinite(u)) return ACBB_SINGULAR;
-    }
     f->dirty = 0;
     f->valid = 1;
     return ACBB_OK;
@@ -293,8 +297,8 @@ static acbb_status solve_scatter(acbb_tnet *net, tn_factor *f, double *T)
         gsl_matrix_view A = gsl_matrix_submatrix(f->lu, 0, 0, (size_t)nf, (size_t)nf);
         gsl_vector_view b = gsl_vector_subvector(net->rhs, 0, (size_t)nf);
         gsl_vector_view x = gsl_vector_subvector(net->x, 0, (size_t)nf);
-        if (gsl_linalg_cholesky_solve(&A.matrix, &b.vector, &x.vector) != GSL_SUCCESS)
-            return ACBB_SINGULAR;
+        acbb_skyline_solve(A.matrix.data, nf, (int)A.matrix.tda, f->first, b.vector.data,
+                           x.vector.data);
         for (int i = 0; i < nf; i++)
             if (!isfinite(gsl_vector_get(&x.vector, (size_t)i))) return ACBB_NONFINITE;
     }

@@ -129,17 +129,26 @@ void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
     }
 }
 
-/* d tau / d mag of point_tau: the Eyring branch below its cap (the
- * asperity part phi_a mu p does not depend on the slip). */
-static inline double point_dtau(const acbb_scene *s, const acbb_traction_contact *tc, int k,
-                                double mag)
+/* point_tau and its slip derivative d tau / d mag at once, for the
+ * Eyring law (the Jacobian's only law): one asinh per point instead of
+ * one for each (issue 30 lever 4), the same operations as
+ * acbb_eyring_capped, so the same bits. The derivative is the Eyring
+ * branch's below its cap (the asperity part phi_a mu p does not depend on
+ * the slip). */
+static inline double point_tau_dtau(const acbb_scene *s, const acbb_traction_contact *tc,
+                                    int k, double mag, double *dtau)
 {
-    if (!(tc->phi_f > 0.0)) return 0.0;
-    double te = s->tau_eyring, tn = tc->eta[k] * (mag / tc->H);
-    if (!(tc->tlim[k] > 0.0) || !(tn > 0.0)) return 0.0;
-    double x = tn / te;
-    if (!(te * asinh(x) < tc->tlim[k])) return 0.0;
-    return tc->phi_f * (tc->eta[k] / tc->H) / sqrt(1.0 + x * x);
+    double tau = tc->tb[k];
+    *dtau = 0.0;
+    if (!(tc->phi_f > 0.0)) return tau;
+    double te = s->tau_eyring, eta = tc->eta[k], tn = eta * (mag / tc->H), fl = 0.0;
+    if (tc->tlim[k] > 0.0 && tn > 0.0) {
+        double x = tn / te;
+        fl = te * asinh(x);
+        if (fl < tc->tlim[k]) *dtau = tc->phi_f * (eta / tc->H) / sqrt(1.0 + x * x);
+        else fl = tc->tlim[k];
+    }
+    return tau + tc->phi_f * fl;
 }
 
 int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
@@ -153,10 +162,10 @@ int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
     for (int k = 0; k < tc->np; k++) {
         const double *P = tc->P + 3 * k, *n = tc->n;
         double sl[3], mag = point_slip(tc, k, wb, race, sl);
-        double tau = point_tau(s, tc, k, mag), R2 = mag * mag + tc->s_reg * tc->s_reg;
-        double R = sqrt(R2), g = -tau * tc->w[k] / R;
+        double dtau, tau = point_tau_dtau(s, tc, k, mag, &dtau);
+        double R2 = mag * mag + tc->s_reg * tc->s_reg, R = sqrt(R2), g = -tau * tc->w[k] / R;
         /* dg/dmag of g = -tau(mag) w / sqrt(mag^2 + s_reg^2). */
-        double dg = -tc->w[k] * (point_dtau(s, tc, k, mag) / R - tau * mag / (R2 * R));
+        double dg = -tc->w[k] * (dtau / R - tau * mag / (R2 * R));
         double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
         cross(P, f, m);
         /* Slip derivatives: d/dwb_j = e_j x P, d/drace = -(e_x x pos),

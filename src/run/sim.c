@@ -149,7 +149,11 @@ static acbb_status steady_step(acbb_sim *sim, double relax, double *Tn, double *
     sim->work.network_solves++;
     acbb_status rc = acbb_tnet_steady(sim->nw.net, sim->q, Tn);
     if (rc != ACBB_OK) return rc;
-    /* Under-relaxed Picard (MODEL.md section 9, 0.5 in steady mode). */
+    /* Relaxed Picard (MODEL.md section 9). The steady solve's relaxation
+     * is the polish's rule (steady_polish.h), not MODEL.md's fixed 0.5:
+     * the map contracts about 25x per iteration on the 7008C, so 0.5
+     * only slowed it (33 -> 11 iterations undamped, issue 30 lever 1),
+     * and halving on a growing residual still damps an overshooting map. */
     for (int i = 0; i < n; i++) Tn[i] = sim->T[i] + relax * (Tn[i] - sim->T[i]);
     *dT = max_change(Tn, sim->T, n);
     return ACBB_OK;
@@ -317,7 +321,8 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
         /* each retry evaluates again (issue 26 item 7; the state is the kept one here) */
         acbb_status rc = acbb_simx_stop_check(sim, err);
         if (rc != ACBB_OK) return rc;
-        rc = steady_mode ? steady_step(sim, 0.5, Tn, dT) : thermal_step(sim, Tn, dT, dTs);
+        double w = sim->steady_relax.relax;
+        rc = steady_mode ? steady_step(sim, w, Tn, dT) : thermal_step(sim, Tn, dT, dTs);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
         if (!acbb_snap_all_finite(Tn, sim->nw.n))
@@ -330,8 +335,10 @@ static acbb_status advance(acbb_sim *sim, int steady_mode, double *dT, double *d
         sim->transient_pass = 0;
         if (rc != ACBB_OK) {
             restore(sim, sim->keep);
+            if (steady_mode && acbb_relax_reject(&sim->steady_relax, rc)) continue;
             return rc;
         }
+        if (steady_mode) acbb_relax_judge(&sim->steady_relax, w, *dT / w, 0.0);
         double dP = fabs(sim->loss.total - sim->keep->loss.total) / fmax(sim->loss.total, 1e-12);
         if (steady_mode || dP <= 0.05 || sim->dt <= DT_MIN)
             return ACBB_OK;
@@ -377,12 +384,24 @@ static int unbalanced(acbb_sim *sim)
     return 1;
 }
 
+/* The end-of-run stiffness, unless the caller asked for none (then
+ * reported missing: acbb_sim_opts.skip_stiffness). */
+static void stiffness(acbb_sim *sim)
+{
+    if (sim->skip_stiffness) {
+        sim->K_axial = NAN;
+        sim->K_ring = (acbb_stiffness){ NAN, NAN, NAN };
+        return;
+    }
+    sim->K_axial = axial_stiffness(sim);
+    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
+}
+
 static void converge(acbb_sim *sim, const char *what)
 {
     finish_energy(sim);
     if (unbalanced(sim)) return;
-    sim->K_axial = axial_stiffness(sim);
-    acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
+    stiffness(sim);
     sim->state = ACBB_RUN_CONVERGED;
     snprintf(sim->msg, sizeof sim->msg, "%s", what);
 }
@@ -454,7 +473,7 @@ static acbb_status step_body(acbb_sim *sim)
     }
     double dP = fabs(sim->loss.total - sim->prev_total) / fmax(sim->loss.total, 1e-12);
     sim->prev_total = sim->loss.total;
-    int quiet = steady_mode ? dT < 1e-7 && dP < 1e-9
+    int quiet = steady_mode ? dT < ACBB_STEADY_QUIET_K && dP < 1e-9
                             : sim->residual < sim->s.steady_tol && dP < 1e-4;
     sim->quiet = quiet && !scheduled ? sim->quiet + 1 : 0;
     /* Grow while the losses barely move and nodes move < 0.5 K. */
@@ -636,6 +655,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
                               "during the set-up, before the first state", s->max_wall_s);
     if (rc != ACBB_OK) return rc;
     sim->dt = s->time_step;
+    acbb_relax_start(&sim->steady_relax);
     sim->reported = -1;
     sim->state = ACBB_RUN_RUNNING;
     sim->status = ACBB_OK;
@@ -674,7 +694,7 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
-    acbb_sim_opts o = { sim->cancel, sim->threads };
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
     acbb_status rc = acbb_set_sim_new(s, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
     sim->state = acbb_set_sim_outcome(sim->set, &sim->status, &sim->iter);
@@ -693,6 +713,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
     sim->cancel = o->cancel;
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
+    sim->skip_stiffness = o->skip_stiffness;
     double t0 = acbb_now_ms();
     acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
                                                            : sim_init(sim, s, NULL, err);
@@ -727,7 +748,7 @@ void acbb_sim_free(acbb_sim *sim)
 static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     acbb_sim *fresh;
-    acbb_sim_opts o = { sim->cancel, sim->threads };
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
     acbb_status rc = acbb_sim_create(s, &o, &fresh, err);
     if (rc != ACBB_OK) return rc; /* the running sim is untouched */
     acbb_sim old = *sim;
@@ -748,6 +769,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
+    fresh->skip_stiffness = sim->skip_stiffness;
     acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);
@@ -892,7 +914,6 @@ void acbb_simm_publish(acbb_sim *b, const acbb_set_run *r)
 
 void acbb_simm_stiffness(acbb_sim *b, double *K_axial)
 {
-    b->K_axial = axial_stiffness(b);
-    acbb_ring_stiffness(&b->s, &b->exp, b->ms.dx, &b->ms, &b->K_ring);
+    stiffness(b);
     *K_axial = b->K_axial;
 }

@@ -278,7 +278,8 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
         /* each retry evaluates the whole set again (the state is the kept one here) */
         acbb_status rc = stop_check(ss, err);
         if (rc != ACBB_OK) return rc;
-        rc = thermal(ss, steady, 0.5, Tn, dT, dTs);
+        double w = ss->steady_relax.relax;
+        rc = thermal(ss, steady, w, Tn, dT, dTs);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "thermal network: %s", acbb_status_name(rc));
         if (!acbb_snap_all_finite(Tn, ss->ns.n))
@@ -290,8 +291,10 @@ static acbb_status advance(acbb_set_sim *ss, int steady, double *dT, double *dTs
         rc = evaluate(ss, !steady, 0, err);
         if (rc != ACBB_OK) {
             restore(ss);
+            if (steady && acbb_relax_reject(&ss->steady_relax, rc)) continue;
             return rc;
         }
+        if (steady) acbb_relax_judge(&ss->steady_relax, w, *dT / w, 0.0);
         double dP = fabs(ss->total - before) / fmax(ss->total, 1e-12);
         if (steady || dP <= 0.05 || ss->run.dt <= DT_MIN) return ACBB_OK;
         restore(ss);
@@ -590,6 +593,7 @@ acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_s
     }
     ss->run.state = ACBB_RUN_RUNNING;
     ss->run.dt = s->time_step;
+    acbb_relax_start(&ss->steady_relax);
     snprintf(ss->run.msg, sizeof ss->run.msg, "running");
     ss->prev_F = acbb_set_mech_preload(&ss->sm);
     publish(ss);

@@ -75,6 +75,7 @@ struct acbb_sim {
     double polish_relax;       /* the polish step's relaxation while it evaluates, else 1 */
     long iter;
     int quiet;
+    acbb_relax_ctl steady_relax; /* the steady solve's relaxation (steady_polish.h) */
     acbb_run_state state;
     acbb_status status;
     char msg[256];
@@ -85,6 +86,7 @@ struct acbb_sim {
     acbb_stiffness K_ring;     /* radial and tilt stiffness at the converged state */
     int fixed_axial;           /* displacement preload: dx held at fixed_dx */
     int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */
+    int skip_stiffness;        /* acbb_sim_opts.skip_stiffness */
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
     acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */

@@ -67,6 +67,37 @@ static int overshoots(const acbb_polish_result *r, double prev, double turn,
            && r->residual * pow(ratio, left) >= tolerance(r->relax, resolution_K);
 }
 
+void acbb_relax_start(acbb_relax_ctl *c)
+{
+    c->relax = 1.0;
+    c->prev = INFINITY;
+    c->made_by = 1.0;
+    c->judged = 0;
+}
+
+/* This residual judges the previous move's relaxation: halve only if that
+ * move was made at the relaxation still in force, and not on the second
+ * residual: the first step changes the map itself (sim.c: every ball
+ * recomputed; a set: its joined network's resistances, lagged in the
+ * transient, synced), so the first residual is not comparable. An equal
+ * residual (a gain of -1, a two-state cycle) is no progress either. */
+void acbb_relax_judge(acbb_relax_ctl *c, double w, double residual, double floor_K)
+{
+    c->judged++;
+    if (c->judged > 2 && residual >= c->prev && residual > floor_K && c->made_by == c->relax)
+        c->relax = fmax(0.5 * c->relax, ACBB_POLISH_RELAX_MIN);
+    c->prev = residual;
+    c->made_by = w;
+}
+
+int acbb_relax_reject(acbb_relax_ctl *c, acbb_status rc)
+{
+    if ((rc != ACBB_CONTACT_LOST && rc != ACBB_DIVERGED) || c->relax <= ACBB_POLISH_RELAX_MIN)
+        return 0;
+    c->relax = fmax(0.5 * c->relax, ACBB_POLISH_RELAX_MIN);
+    return 1;
+}
+
 acbb_status acbb_polish_iterate(acbb_polish_step step, void *ctx, double resolution_K,
                                 acbb_polish_result *out, acbb_error *err)
 {

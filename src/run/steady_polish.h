@@ -53,6 +53,37 @@ typedef acbb_status (*acbb_polish_step)(void *ctx, double relax, double *res, do
  * prev for the next step. */
 double acbb_polish_turn(double *prev, const double *T, const double *Tn, double relax, int n);
 
+/* The steady solve (sim.c, sim_set.c) is quiet once a move is below this
+ * (K) with the losses still to 1e-9 relative, three times running. It
+ * judges every growing residual (floor 0): undamped, its residuals and
+ * losses can wander in the mechanics' noise band and never turn quiet
+ * (a slow growth, gain about -1.2, from 5e-8 K to 1e-6 K at mech_tol
+ * 1e-6; or a six-step cycle of the losses between 1e-9 and 5e-9 at
+ * 200 N), where halving the relaxation settles them. */
+#define ACBB_STEADY_QUIET_K 1e-7
+
+/* The relaxation rule shared by the polish and the steady solve (issue
+ * 30 lever 1): start undamped, halve when the undamped residual grows
+ * (see acbb_polish_iterate). Fill with acbb_relax_start. */
+typedef struct {
+    double relax;   /* the relaxation in force */
+    double prev;    /* the last residual judged, K */
+    double made_by; /* relaxation of the move that led to the last state */
+    int judged;     /* residuals judged so far */
+} acbb_relax_ctl;
+
+void acbb_relax_start(acbb_relax_ctl *c);
+
+/* Judge `residual` (the undamped move, K, of the state a move at
+ * relaxation `w` led to); halve c->relax if it grew above `floor_K`. */
+void acbb_relax_judge(acbb_relax_ctl *c, double w, double residual, double floor_K);
+
+/* A steady move whose evaluation failed with `rc` (the mechanics lost
+ * its contacts or did not converge at the state the move reached) is
+ * rejected and retried at half the relaxation, as the transient halves
+ * its step: 1 if so (c->relax halved), 0 if `rc` is final. */
+int acbb_relax_reject(acbb_relax_ctl *c, acbb_status rc);
+
 typedef struct {
     int iterations;  /* steps taken */
     double residual; /* the last step's undamped residual, K */
