@@ -228,7 +228,8 @@ static int cmd_tui(const acbb_cli_args *a)
     const char *want = a->n_pos ? a->pos[0] : "7008C";
     acbb_tui_args t = { .pace = a->val[CLI_OPT_PACE], .plot_dir = a->val[CLI_OPT_PLOT_DIR],
                         .no_mouse = a->val[CLI_OPT_NO_MOUSE] != NULL,
-                        .exit_after_steady = a->val[CLI_OPT_EXIT_AFTER_STEADY] != NULL };
+                        .exit_after_steady = a->val[CLI_OPT_EXIT_AFTER_STEADY] != NULL,
+                        .installed = acbb_cli_preset_installed };
     if (acbb_cli_resolve_preset(want, path, sizeof path, false) == 0) t.preset = path;
     else if (a->n_pos) t.preset = want;   /* the TUI reports it */
     return acbb_tui_main(&t);

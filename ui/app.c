@@ -153,6 +153,15 @@ static void change_pace(acbb_app *a, int dir)
 static void save(acbb_app *a, const char *path)
 {
     acbb_error err = { { 0 } };
+    char dir[PATH_MAX];
+    const char *target = path ? path : a->ed.path;
+    if (a->installed && target[0] && a->installed(target, dir, sizeof dir)) {
+        /* An installed preset is every user's (issue 26 item 6, as `acbb
+         * edit`): save as a file of one's own instead. */
+        acbb_app_prompt(a, ACBB_PROMPT_SAVE_AS, "installed preset, shared by every user: save as: ",
+                        "my-preset.ini");
+        return;
+    }
     if (acbb_editor_save(&a->ed, path, &err) != ACBB_OK && a->ed.conflict) {
         a->mode = ACBB_MODE_CONFIRM; /* changed on disk: reload / overwrite / elsewhere */
         a->confirm.kind = ACBB_CONFIRM_CHANGED;
@@ -769,6 +778,7 @@ int acbb_app_run(const acbb_app_options *opt)
     a->pace_idx = pace_index(opt->pace < 0 ? PACE_DEFAULT : opt->pace);
     a->acc_knobs = opt->acc_knobs;
     snprintf(a->plot_dir, sizeof a->plot_dir, "%s", opt->plot_dir ? opt->plot_dir : "./acbb-plots");
+    a->installed = opt->installed;
     load_initial(a, opt->preset);
 
     if (acbb_term_open(&a->term, &err) != ACBB_OK) {

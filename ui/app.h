@@ -79,6 +79,7 @@ struct acbb_app {
     char edit_error[512];          /* last refused value, shown in the editor */
     int pace_idx;
     char plot_dir[PATH_MAX];
+    bool (*installed)(const char *path, char *dir, size_t n); /* NULL: none */
     int node_top, ball_top, help_top;
     int balls_contact;          /* Balls screen: 1 = Hertz columns (pmax, a, b), 0 = kinematics */
     int chart_by_time;             /* charts: x = simulated time (1) or iteration (0) */
@@ -143,6 +144,7 @@ typedef struct {
     int exit_after_steady;
     unsigned acc_knobs;            /* accuracy plan knob mask (0 = all) */
     int no_mouse;                  /* --no-mouse: never ask the terminal for mouse reports */
+    bool (*installed)(const char *path, char *dir, size_t n); /* acbb_tui_args's */
 } acbb_app_options;
 
 /* Run the TUI until the user quits; returns the exit code. */

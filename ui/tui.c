@@ -38,7 +38,7 @@ static int parse_knobs(const char *text, unsigned *mask)
 int acbb_tui_main(const acbb_tui_args *args)
 {
     acbb_app_options o = { .pace = -1, .preset = args->preset, .plot_dir = args->plot_dir,
-                           .no_mouse = args->no_mouse };
+                           .no_mouse = args->no_mouse, .installed = args->installed };
     const char *knobs = getenv("ACBB_TUI_ACCURACY_KNOBS");
     if (knobs && knobs[0] && parse_knobs(knobs, &o.acc_knobs) != 0) return ACBB_EXIT_INPUT;
     const char *env = getenv("ACBB_TUI_EXIT_AFTER_STEADY");
