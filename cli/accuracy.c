@@ -20,6 +20,7 @@
 #include "common.h"
 #include "exit.h"
 #include "progress.h"
+#include "say.h"
 
 #define ACC_PLOT_W 2067 /* "full": 17.5 cm at 300 dpi (plot.h) */
 #define ACC_PLOT_H 1300
@@ -36,7 +37,7 @@ typedef struct {
 
 static int bad_usage(const char *what, const char *arg)
 {
-    fprintf(stderr, "acbb: bench accuracy: %s%s\ntry `acbb help bench accuracy`\n", what,
+    acbb_cli_say("bench accuracy: %s%s\ntry `acbb help bench accuracy`\n", what,
             arg ? arg : "");
     return ACBB_EXIT_INPUT;
 }
@@ -64,7 +65,7 @@ static int parse_list(const char *opt, const char *text, int (*lookup)(const cha
          tok = strtok_r(NULL, ",", &save)) {
         int k = lookup(tok);
         if (k < 0) {
-            fprintf(stderr, "acbb: bench accuracy: %s: unknown name '%s'\n"
+            acbb_cli_say("bench accuracy: %s: unknown name '%s'\n"
                     "try `acbb help bench accuracy`\n", opt, tok);
             return ACBB_EXIT_INPUT;
         }
@@ -248,7 +249,7 @@ static int write_plot(const char *path, const char *preset, const acbb_accuracy_
     acbb_status st = acbb_plot_accuracy_file(rows, n, fmt, path, ACC_PLOT_W, ACC_PLOT_H, preset,
                                              &err);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: %s — plot not written\n", err.msg[0] ? err.msg : acbb_status_name(st));
+    acbb_cli_say("%s — plot not written\n", err.msg[0] ? err.msg : acbb_status_name(st));
     return ACBB_EXIT_INTERNAL;
 }
 
@@ -300,7 +301,7 @@ static int run_bench(const acc_args *a, const acbb_scene *base)
         return rc;
     }
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        acbb_cli_say("bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         free(rows);
         return acbb_cli_exit_for(st);
     }
@@ -309,7 +310,7 @@ static int run_bench(const acc_args *a, const acbb_scene *base)
     print_frontier(rows, n);
     int rc = 0;
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "acbb: cannot write to stdout\n");
+        acbb_cli_say("cannot write to stdout\n");
         rc = ACBB_EXIT_INTERNAL;
     }
     if (a->csv) rc = acbb_cli_worst(rc, write_csv(a->csv, rows, n));

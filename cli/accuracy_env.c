@@ -12,6 +12,7 @@
 #include "common.h"
 #include "exit.h"
 #include "progress.h"
+#include "say.h"
 
 static void label_of(const acbb_envelope_row *r, char *buf, size_t n)
 {
@@ -129,7 +130,7 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
         return acbb_cli_cancelled("bench accuracy", "no table written (it would be partial)");
     }
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
+        acbb_cli_say("bench accuracy: %s\n", err.msg[0] ? err.msg : acbb_status_name(st));
         free(rows);
         return acbb_cli_exit_for(st);
     }

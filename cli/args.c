@@ -5,6 +5,7 @@
 #include "args.h"
 #include "exit.h"
 #include "presets.h"
+#include "say.h"
 
 const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_SET] = { "set", "KEY=VALUE",
@@ -161,7 +162,7 @@ static int unknown_option(const acbb_cli_command *c, const char *arg, size_t len
         if (strlen(acbb_cli_options[k].name) != len ||
             strncmp(acbb_cli_options[k].name, arg, len) != 0)
             continue;
-        fprintf(stderr, "acbb: %s: --%.*s is not an option of this command\n", c->name,
+        acbb_cli_say("%s: --%.*s is not an option of this command\n", c->name,
                 (int)len, arg);
         print_try(c);
         return ACBB_EXIT_INPUT;
@@ -174,7 +175,7 @@ static int unknown_option(const acbb_cli_command *c, const char *arg, size_t len
         size_t d = acbb_cli_distance(arg, len, n, strlen(n));
         if (d < best) best = d, pick = k;
     }
-    fprintf(stderr, "acbb: %s: unknown option --%.*s", c->name, (int)len, arg);
+    acbb_cli_say("%s: unknown option --%.*s", c->name, (int)len, arg);
     /* Near enough: 1 edit in a short name, up to 3 in a long one. */
     size_t limit = 1 + len / 4 > 3 ? 3 : 1 + len / 4;
     if (pick >= 0 && best <= limit)
@@ -186,7 +187,7 @@ static int unknown_option(const acbb_cli_command *c, const char *arg, size_t len
 
 static int bad(const acbb_cli_command *c, const char *what, const char *arg)
 {
-    fprintf(stderr, "acbb: %s: %s%s\n", c->name, what, arg ? arg : "");
+    acbb_cli_say("%s: %s%s\n", c->name, what, arg ? arg : "");
     print_try(c);
     return ACBB_EXIT_INPUT;
 }
@@ -226,7 +227,7 @@ static int parse_option(const acbb_cli_command *c, int argc, char **argv, int *i
 static int check_positionals(const acbb_cli_command *c, acbb_cli_args *a)
 {
     if (a->n_pos < c->min_pos) {
-        fprintf(stderr, "acbb: %s: missing %s\n", a->cmd, c->args);
+        acbb_cli_say("%s: missing %s\n", a->cmd, c->args);
         print_try(c);
         return ACBB_EXIT_INPUT;
     }
@@ -324,7 +325,7 @@ int acbb_cli_count(const acbb_cli_args *a, acbb_cli_opt o, long dflt, long lo, l
     errno = 0;
     long v = strtol(text, &end, 10);
     if (errno || end == text || *end || v < lo || v > hi) {
-        fprintf(stderr, "acbb: %s: --%s %s: expected a whole number %ld..%ld\n", a->cmd,
+        acbb_cli_say("%s: --%s %s: expected a whole number %ld..%ld\n", a->cmd,
                 acbb_cli_options[o].name, text, lo, hi);
         return ACBB_EXIT_INPUT;
     }

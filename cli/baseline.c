@@ -11,6 +11,7 @@
 #include "baseline.h"
 #include "exit.h"
 #include "output.h"
+#include "say.h"
 
 #define MAX_FILE (16 << 20)  /* a run's JSON is ~10 kB; refuse anything absurd */
 
@@ -40,10 +41,10 @@ static char *slurp(const char *path)
 static int unreadable(const char *path)
 {
     if (errno == EINVAL)
-        fprintf(stderr, "acbb: --baseline %s: not a regular file (a saved `acbb run --json`)\n",
+        acbb_cli_say("--baseline %s: not a regular file (a saved `acbb run --json`)\n",
                 path);
     else
-        fprintf(stderr, "acbb: --baseline %s: cannot read: %s\n", path, strerror(errno));
+        acbb_cli_say("--baseline %s: cannot read: %s\n", path, strerror(errno));
     return ACBB_EXIT_INPUT;
 }
 
@@ -205,7 +206,7 @@ int acbb_cli_baseline(const char *path, const acbb_scene *sc, const acbb_snapsho
     cJSON *was = cJSON_Parse(text);
     free(text);
     if (!cJSON_IsObject(was) || !cJSON_GetObjectItem(was, "losses_W")) {
-        fprintf(stderr, "acbb: --baseline %s: not the JSON of `acbb run --json`\n", path);
+        acbb_cli_say("--baseline %s: not the JSON of `acbb run --json`\n", path);
         cJSON_Delete(was);
         return ACBB_EXIT_INPUT;
     }

@@ -30,6 +30,7 @@
 #include "figures.h"
 #include "progress.h"
 #include "branches.h"
+#include "say.h"
 
 /* ---- driving a run ---- */
 
@@ -154,16 +155,16 @@ static int run_report(const acbb_cli_args *a, const char *preset, const acbb_sce
     if (snap->life.edge_loaded && !a->val[CLI_OPT_QUIET]) { /* MODEL.md 15: a named warning */
         char c[32];
         acbb_life_contact_name(snap->life.edge_ball, snap->life.edge_race, c, sizeof c);
-        fprintf(stderr, "acbb: warning: edge loading: the contact ellipse of %s passes its "
+        acbb_cli_say("warning: edge loading: the contact ellipse of %s passes its "
                 "shoulder by %.2f deg (life.inner_shoulder_mm, life.outer_shoulder_mm)\n", c,
                 -snap->life.edge_margin_deg);
     }
     if (snap->life.kappa_clamped && !a->val[CLI_OPT_QUIET]) /* ISO 281 9.3.2: 0.1 <= kappa */
-        fprintf(stderr, "acbb: warning: kappa %.3g is below 0.1, where ISO 281 does not define "
+        acbb_cli_say("warning: kappa %.3g is below 0.1, where ISO 281 does not define "
                 "a_ISO: a_ISO and L_nmr are taken at kappa 0.1 (life.kappa_clamped)\n",
                 snap->life.kappa);
     if (snap->state != ACBB_RUN_CONVERGED) {
-        fprintf(stderr, "acbb: %s: %s\n", acbb_run_status_name(snap), snap->message);
+        acbb_cli_say("%s: %s\n", acbb_run_status_name(snap), snap->message);
         rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
     }
     return rc;
@@ -179,7 +180,7 @@ static int start_sim(const acbb_scene *sc, bool json, const atomic_int *cancel,
     acbb_status st = acbb_sim_new_ctl(sc, cancel, sim, &err);
     acbb_cli_progress_end(prog);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+    acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
     if (json) {
         acbb_cli_out o;
         acbb_cli_out_init(&o, stdout);
@@ -204,7 +205,7 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     /* fidelity.preset / target: apply here, so the report shows the knobs used */
     acbb_fidelity_choice fc;
     if (acbb_fidelity_apply(&sc, &fc) && !a->val[CLI_OPT_QUIET])
-        fprintf(stderr, "acbb: %s\n", fc.note);
+        acbb_cli_say("%s\n", fc.note);
 
     acbb_cli_progress prog;
     acbb_cli_progress_init(&prog, stderr, sc.steady_tol);
@@ -267,7 +268,7 @@ int acbb_cli_cmd_check(const acbb_cli_args *a)
      * check compiles it too; no thermal step is taken. */
     acbb_status st = acbb_sim_check(&sc, &err);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         return acbb_cli_exit_for(st);
     }
     printf("%s: ok\n", a->preset);
@@ -392,7 +393,7 @@ static int bench_fail(const acbb_cli_point *pts, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         if (acbb_cli_point_ok(&pts[i])) continue;
-        fprintf(stderr, "acbb: bench: run %zu: %s: %s\n", i, acbb_cli_point_status(&pts[i]),
+        acbb_cli_say("bench: run %zu: %s: %s\n", i, acbb_cli_point_status(&pts[i]),
                 pts[i].have_snap ? pts[i].snap.message : pts[i].message);
     }
     return ACBB_EXIT_SOLVER;

@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include "common.h"
 #include "exit.h"
+#include "say.h"
 
 const char *acbb_cli_err_text(const acbb_error *err, acbb_status st)
 {
@@ -59,7 +60,7 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
     /* --max-wall is fidelity.max_wall_s, checked by the schema's range. */
     if (st == ACBB_OK && a->val[CLI_OPT_MAX_WALL] &&
         acbb_scene_set(sc, "fidelity.max_wall_s", a->val[CLI_OPT_MAX_WALL], &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: --max-wall %s: %s\n", a->val[CLI_OPT_MAX_WALL], err.msg);
+        acbb_cli_say("--max-wall %s: %s\n", a->val[CLI_OPT_MAX_WALL], err.msg);
         return ACBB_EXIT_INPUT;
     }
     if (st == ACBB_OK) {
@@ -67,23 +68,23 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc)
         acbb_inactive_effect in[8];
         size_t n = acbb_scene_inactive_effects(sc, in, 8);
         for (size_t i = 0; i < n; i++)
-            fprintf(stderr, "acbb: note: %s has no effect here: %s\n", in[i].key, in[i].why);
+            acbb_cli_say("note: %s has no effect here: %s\n", in[i].key, in[i].why);
         return 0;
     }
     const char *msg = acbb_cli_err_text(&err, st);
-    fprintf(stderr, "acbb: %s%s\n", acbb_cli_set_prefix(msg, a->sets, a->n_sets), msg);
+    acbb_cli_say("%s%s\n", acbb_cli_set_prefix(msg, a->sets, a->n_sets), msg);
     return acbb_cli_exit_for(st);
 }
 
 int acbb_cli_stdout_check(long nonfinite)
 {
     if (nonfinite) {
-        fprintf(stderr, "acbb: internal error: %ld non-finite values in the output\n",
+        acbb_cli_say("internal error: %ld non-finite values in the output\n",
                 nonfinite);
         return ACBB_EXIT_INTERNAL;
     }
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "acbb: cannot write to stdout\n");
+        acbb_cli_say("cannot write to stdout\n");
         return ACBB_EXIT_INTERNAL;
     }
     return 0;
@@ -96,7 +97,7 @@ int acbb_cli_file_open(acbb_cli_file *c, const char *path)
     c->path = path;
     acbb_status st = acbb_out_open(path, &c->handle, &f, &err);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         c->handle = NULL;
         return ACBB_EXIT_INPUT;
     }
@@ -112,11 +113,11 @@ int acbb_cli_file_close(acbb_cli_file *c)
     if (st != ACBB_OK) {
         /* Same rule for every output flag: a path that cannot be opened is
          * bad input (2), a write that fails once open (disk full) is 4. */
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         return ACBB_EXIT_INTERNAL;
     }
     if (c->out.nonfinite) {
-        fprintf(stderr, "acbb: internal error: %ld non-finite values in %s\n",
+        acbb_cli_say("internal error: %ld non-finite values in %s\n",
                 c->out.nonfinite, c->path);
         return ACBB_EXIT_INTERNAL;
     }

@@ -13,6 +13,7 @@
 #include "common.h"
 #include "exit.h"
 #include "presets.h"
+#include "say.h"
 
 #define EDIT_LOCK_S 30.0   /* wait this long for another acbb's save */
 #define EDIT_TRIES 3       /* re-reads when an unlocking writer keeps changing it */
@@ -25,14 +26,14 @@ static int edited_scene(const acbb_cli_args *a, const char *to, acbb_scene *sc)
     acbb_error err = { { 0 } };
     acbb_status st = acbb_sim_check(sc, &err);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: %s: not saved: %s\n", to, acbb_cli_err_text(&err, st));
+    acbb_cli_say("%s: not saved: %s\n", to, acbb_cli_err_text(&err, st));
     return acbb_cli_exit_for(st);
 }
 
 /* A failed save: a write error once open is 4, a refusal its status. */
 static int save_failed(const acbb_error *err, acbb_status st)
 {
-    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(err, st));
+    acbb_cli_say("%s\n", acbb_cli_err_text(err, st));
     return st == ACBB_EIO ? ACBB_EXIT_INTERNAL : acbb_cli_exit_for(st);
 }
 
@@ -60,7 +61,7 @@ static int edit_in_place(const acbb_cli_args *a)
     if (st == ACBB_OK)
         st = acbb_error_set(&err, ACBB_EIO, "%s: not saved: another program kept changing "
                             "it while the edits were applied", a->preset);
-    fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+    acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
     return acbb_cli_exit_for(st);
 }
 
@@ -81,7 +82,7 @@ static int locked(const acbb_cli_args *a, const char *target)
     acbb_file_lock *lock = NULL;
     acbb_status st = acbb_file_lock_take(target, EDIT_LOCK_S, &lock, &err);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         return acbb_cli_exit_for(st);
     }
     int rc = target == a->preset ? edit_in_place(a) : edit_to(a, target);
@@ -93,14 +94,14 @@ int acbb_cli_cmd_edit(const acbb_cli_args *a)
 {
     const char *out = a->val[CLI_OPT_OUT];
     if (a->n_sets == 0) {
-        fprintf(stderr, "acbb: edit: nothing to do (give --set section.key=value)\n");
+        acbb_cli_say("edit: nothing to do (give --set section.key=value)\n");
         return ACBB_EXIT_INPUT;
     }
     char dir[CLI_PATH_MAX];
     if (!out && acbb_cli_preset_installed(a->preset, dir, sizeof dir)) {
         acbb_cli_preset_dir dirs[CLI_MAX_PRESET_DIRS];
         size_t nd = acbb_cli_preset_dirs(dirs);
-        fprintf(stderr, "acbb: edit: %s is an installed preset (in %s), shared by every user: "
+        acbb_cli_say("edit: %s is an installed preset (in %s), shared by every user: "
                 "not edited; write your copy with --out FILE", a->preset, dir);
         if (nd && strcmp(dirs[0].role, "user") == 0)
             fprintf(stderr, " (your own presets, searched first: %s)", dirs[0].path);

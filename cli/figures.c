@@ -21,6 +21,7 @@
 #include "mountings.h"
 #include "plot.h"
 #include "progress.h"
+#include "say.h"
 
 #define FIG_W 1004 /* "column": 8.5 x 6.4 cm at 300 dpi (plot.h) */
 #define FIG_H 753
@@ -243,11 +244,11 @@ static int make_dir(const char *dir)
 {
     struct stat sb;
     if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "acbb: study: --out %s: %s\n", dir, strerror(errno));
+        acbb_cli_say("study: --out %s: %s\n", dir, strerror(errno));
         return ACBB_EXIT_INPUT;
     }
     if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
-        fprintf(stderr, "acbb: study: --out %s: not a directory\n", dir);
+        acbb_cli_say("study: --out %s: not a directory\n", dir);
         return ACBB_EXIT_INPUT;
     }
     return 0;
@@ -261,12 +262,12 @@ static int write_report(const fig_view *v)
     FILE *f = NULL;
     snprintf(path, sizeof path, "%s/REPORT.md", v->dir);
     if (acbb_out_open(path, &o, &f, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: study: %s\n", err.msg);
+        acbb_cli_say("study: %s\n", err.msg);
         return ACBB_EXIT_INPUT;
     }
     md_report(f, v);
     if (acbb_out_commit(o, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: study: %s\n", err.msg);
+        acbb_cli_say("study: %s\n", err.msg);
         return ACBB_EXIT_INTERNAL;
     }
     return 0;
@@ -282,7 +283,7 @@ static int summary(const fig_view *v, size_t n)
             ok++;
             continue;
         }
-        fprintf(stderr, "acbb: study: %s not written: %s\n", acbb_figure_table(&n)[i].id,
+        acbb_cli_say("study: %s not written: %s\n", acbb_figure_table(&n)[i].id,
                 v->res[i].message);
         if (v->res[i].status != ACBB_EINVAL) rc = ACBB_EXIT_INTERNAL;
     }
@@ -318,7 +319,7 @@ static int figures(const acbb_cli_args *a, acbb_study *st, acbb_study *const *by
     acbb_error serr = { { 0 } };
     if (a->val[CLI_OPT_SIZE] && (acbb_cli_parse_size(a->val[CLI_OPT_SIZE], &v.w, &v.h) ||
                                  acbb_plot_check_size(ACBB_PLOT_PNG, v.w, v.h, &serr) != ACBB_OK)) {
-        if (serr.msg[0]) fprintf(stderr, "acbb: study: --size: %s\n", serr.msg);
+        if (serr.msg[0]) acbb_cli_say("study: --size: %s\n", serr.msg);
         free(res);
         return ACBB_EXIT_INPUT;
     }
@@ -341,7 +342,7 @@ static int figures(const acbb_cli_args *a, acbb_study *st, acbb_study *const *by
         acbb_cli_progress_note(&prog, "study: recording the trajectories  (Ctrl-C stops)");
         ss = acbb_figures_record(v.runs, (int)jobs, cancel, &in, &err);
         if (ss != ACBB_OK && ss != ACBB_CANCELLED) {
-            fprintf(stderr, "acbb: study: %s\n", err.msg);
+            acbb_cli_say("study: %s\n", err.msg);
             rc = ACBB_EXIT_INTERNAL;
         }
     }
@@ -384,7 +385,7 @@ int acbb_cli_study_figures(const acbb_cli_args *a, long jobs)
         else by[m] = st;
     }
     if (ps == ACBB_OK) rc = figures(a, st, by, jobs);
-    else fputs("acbb: study: out of memory\n", stderr), rc = ACBB_EXIT_INTERNAL;
+    else acbb_cli_say("study: out of memory\n"), rc = ACBB_EXIT_INTERNAL;
     for (int m = 0; m < N_MOUNTINGS; m++)
         if (by[m] != st) acbb_study_free(by[m]);
     acbb_study_free(st);

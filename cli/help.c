@@ -6,6 +6,7 @@
 #include "args.h"
 #include "common.h"
 #include "exit.h"
+#include "say.h"
 
 /* The exit statuses (exit.h), for the overview and EXIT STATUS. */
 #define KILLED (-1)                   /* 128+N */
@@ -77,7 +78,7 @@ static const char *near_command(const char *name)
 int acbb_cli_unknown_command(const char *name)
 {
     const char *near = near_command(name);
-    fprintf(stderr, "acbb: unknown command '%s'", name);
+    acbb_cli_say("unknown command '%s'", name);
     if (near) fprintf(stderr, "; did you mean '%s'?", near);
     fputs("\n\n", stderr);
     acbb_cli_print_overview(stderr);

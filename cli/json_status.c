@@ -2,9 +2,8 @@
 /* acbb CLI — the bad_input JSON document (json_status.h).
  *
  * Exit 2 has dozens of sources (argument parsing, preset values, merge
- * inputs), each printing "acbb: ..." to stderr; catching the text once
- * here keeps every one of them a JSON document without touching them.
- * A thread tees the pipe so stderr stays live (progress, warnings). */
+ * inputs), each reporting through acbb_cli_say (say.h), which keeps the
+ * first error for the document here: one reporter, no stderr capture. */
 #include <cjson/cJSON.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,24 +13,8 @@
 #include "acbb/json.h"
 #include "exit.h"
 #include "json_status.h"
-
-static void *tee_main(void *arg)
-{
-    acbb_cli_json_status *t = arg;
-    char buf[1024];
-    ssize_t n;
-    while ((n = read(t->pipe_rd, buf, sizeof buf)) > 0) {
-        for (ssize_t off = 0; off < n;) {
-            ssize_t w = write(t->saved_fd, buf + off, (size_t)(n - off));
-            if (w <= 0) break;
-            off += w;
-        }
-        size_t room = sizeof t->start - 1 - t->len, take = (size_t)n < room ? (size_t)n : room;
-        memcpy(t->start + t->len, buf, take);
-        t->len += take;
-    }
-    return NULL;
-}
+#include "say.h"
+#include "say.h"
 
 /* stdout into an anonymous in-memory file until the end. */
 static void hold_stdout(acbb_cli_json_status *t)
@@ -55,51 +38,7 @@ void acbb_cli_json_status_begin(acbb_cli_json_status *t, int argc, char **argv)
     t->saved_out = t->held = -1;
     bool json = false;
     for (int i = 1; i < argc; i++) json |= strcmp(argv[i], "--json") == 0;
-    int p[2];
-    if (!json) return;
-    hold_stdout(t);
-    if (pipe(p) != 0) return;
-    /* Progress lines follow the real stderr, not the pipe (progress.c reads
-     * ACBB_PROGRESS first); an explicit setting wins. */
-    if (isatty(STDERR_FILENO)) setenv("ACBB_PROGRESS", "1", 0);
-    fflush(stderr);
-    t->saved_fd = dup(STDERR_FILENO);
-    if (t->saved_fd < 0 || dup2(p[1], STDERR_FILENO) < 0) {
-        if (t->saved_fd >= 0) close(t->saved_fd);
-        close(p[0]);
-        close(p[1]);
-        return;
-    }
-    close(p[1]);
-    t->pipe_rd = p[0];
-    if (pthread_create(&t->thread, NULL, tee_main, t) != 0) {
-        dup2(t->saved_fd, STDERR_FILENO);
-        close(t->saved_fd);
-        close(p[0]);
-        return;
-    }
-    t->active = true;
-}
-
-/* The message: the first error line, without the "acbb: " every error
- * starts with; a note or warning is not the error (issue 26 item 8). */
-static const char *error_line(char *s)
-{
-    const char *first = NULL;
-    for (char *line = s; *line;) {
-        char *end = line + strcspn(line, "\n");
-        bool more = *end != '\0';
-        *end = '\0';
-        if (!first) first = line;
-        if (strncmp(line, "acbb: ", 6) == 0 && !strstr(line, ": note: ") &&
-            !strstr(line, ": warning: ") && strncmp(line + 6, "note: ", 6) != 0 &&
-            strncmp(line + 6, "warning: ", 9) != 0)
-            return line + 6;
-        if (!more) break;
-        line = end + 1;
-    }
-    if (!first) return "bad input";
-    return strncmp(first, "acbb: ", 6) == 0 ? first + 6 : first;
+    if (json) hold_stdout(t);
 }
 
 /* What the command printed on stdout, NUL-terminated (malloc'd), or NULL. */
@@ -176,7 +115,7 @@ static int release_stdout(acbb_cli_json_status *t, int rc, const char *message)
     free(text);
     free(doc);
     if (bad && rc < ACBB_EXIT_INTERNAL) {
-        fprintf(stderr, "acbb: cannot write to stdout\n");
+        acbb_cli_say("cannot write to stdout\n");
         rc = ACBB_EXIT_INTERNAL;
     }
     return rc;
@@ -184,23 +123,9 @@ static int release_stdout(acbb_cli_json_status *t, int rc, const char *message)
 
 int acbb_cli_json_status_end(acbb_cli_json_status *t, int rc)
 {
-    const char *message = "bad input";
-    if (!t->active && t->held < 0) return rc; /* no --json */
-    if (t->active) {
-        fflush(stderr);
-        dup2(t->saved_fd, STDERR_FILENO); /* the pipe's last writer closes: EOF */
-        pthread_join(t->thread, NULL);
-        close(t->saved_fd);
-        close(t->pipe_rd);
-        t->active = false;
-        t->start[t->len] = '\0';
-        message = error_line(t->start);
-    }
-    if (t->held >= 0) return release_stdout(t, rc, message);
-    if (rc != ACBB_EXIT_INPUT) return rc;
-    char *doc = bad_input_doc(message);
-    if (doc) printf("%s\n", doc);
-    free(doc);
-    fflush(stdout);
-    return rc;
+    if (t->held < 0) return rc; /* no --json, or stdout could not be held */
+    /* The first error the command reported (say.h), not a note or warning
+     * (issue 26 item 8). */
+    const char *said = acbb_cli_said_error();
+    return release_stdout(t, rc, said ? said : "bad input");
 }

@@ -21,6 +21,7 @@
 #include "sweep.h"
 #include "json_status.h"
 #include "out_guard.h"
+#include "say.h"
 
 #ifndef ACBB_VERSION
 #define ACBB_VERSION "unknown"
@@ -194,7 +195,7 @@ static const acbb_cli_command *find_command(int argc, char **argv, int *first, i
         *rc = acbb_cli_unknown_command(argv[1]);
         return NULL;
     }
-    fprintf(stderr, "acbb: %s: expected one of:\n", argv[1]);
+    acbb_cli_say("%s: expected one of:\n", argv[1]);
     for (size_t i = 0; i < acbb_cli_n_commands; i++) {
         if (strcmp(acbb_cli_commands[i].name, argv[1]) != 0) continue;
         fputs("  ", stderr);

@@ -28,6 +28,7 @@
 #include "exit.h"
 #include "output.h"
 #include "sweep.h"
+#include "say.h"
 
 typedef struct {
     size_t index, seq;
@@ -102,7 +103,7 @@ static char *csv_cut(const char *line, int has_wall)
 
 static int refuse(const merge_in *in, const char *why)
 {
-    fprintf(stderr, "acbb: merge: %s:%ld: %s\n", in->path, in->lineno, why);
+    acbb_cli_say("merge: %s:%ld: %s\n", in->path, in->lineno, why);
     return ACBB_EXIT_INPUT;
 }
 
@@ -115,7 +116,7 @@ static cJSON *sidecar_header(merge_in *in)
     int missing = 0;
     cJSON *h = strcmp(in->path, "-") ? acbb_cli_sweep_sidecar_read(in->path, &missing) : NULL;
     if (!h)
-        fprintf(stderr, "acbb: merge: %s: a plain sweep CSV whose header %s" ACBB_CLI_SIDECAR_EXT
+        acbb_cli_say("merge: %s: a plain sweep CSV whose header %s" ACBB_CLI_SIDECAR_EXT
                 " is %s (the sweep writes it beside the CSV; keep the two together)\n",
                 in->path, strcmp(in->path, "-") ? in->path : "FILE",
                 missing || !strcmp(in->path, "-") ? "missing" : "not a sweep header");
@@ -150,7 +151,7 @@ static int header_line(merge_set *m, merge_in *in, const char *line)
     }
     if (fmt != m->fmt) rc = refuse(in, "JSONL and CSV cannot be merged into one file");
     else if (acbb_cli_sweep_header_diff(m->header, h, diff, sizeof diff)) {
-        fprintf(stderr, "acbb: merge: %s is another sweep than %s; differs (%s vs %s): %s\n",
+        acbb_cli_say("merge: %s is another sweep than %s; differs (%s vs %s): %s\n",
                 in->path, m->header_path, m->header_path, in->path, diff);
         rc = ACBB_EXIT_INPUT;
     }
@@ -195,12 +196,12 @@ static FILE *open_input(const char *path)
     if (strcmp(path, "-") == 0) return stdin;
     struct stat st;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        fprintf(stderr, "acbb: merge: %s: not a regular file (a FIFO or device could block "
+        acbb_cli_say("merge: %s: not a regular file (a FIFO or device could block "
                 "forever); copy it to a file first\n", path);
         return NULL;
     }
     FILE *f = fopen(path, "r");
-    if (!f) fprintf(stderr, "acbb: merge: %s: cannot read\n", path);
+    if (!f) acbb_cli_say("merge: %s: cannot read\n", path);
     return f;
 }
 
@@ -216,7 +217,7 @@ static int read_input(merge_set *m, const char *path)
     while (!rc && (len = getline(&line, &cap, f)) > 0) {
         in.lineno++;
         if (line[len - 1] != '\n') {
-            fprintf(stderr, "acbb: merge: %s:%ld: unfinished last record skipped\n", path,
+            acbb_cli_say("merge: %s:%ld: unfinished last record skipped\n", path,
                     in.lineno);
             break;
         }
@@ -228,7 +229,7 @@ static int read_input(merge_set *m, const char *path)
             rc = columns_line(m, &in, line);
         else rc = record_line(m, &in, line);
     }
-    if (in.lineno == 0) fprintf(stderr, "acbb: merge: %s: empty, skipped\n", path);
+    if (in.lineno == 0) acbb_cli_say("merge: %s: empty, skipped\n", path);
     free(line);
     if (f != stdin) fclose(f);
     return rc;
@@ -264,7 +265,7 @@ static int write_header(FILE *f, const merge_set *m, const char *out)
     if (!plain || strcmp(out, "-") == 0) return 0;
     char side[4200];
     if (snprintf(side, sizeof side, "%s" ACBB_CLI_SIDECAR_EXT, out) >= (int)sizeof side) {
-        fprintf(stderr, "acbb: merge: %s: path too long for its header file\n", out);
+        acbb_cli_say("merge: %s: path too long for its header file\n", out);
         return ACBB_EXIT_INPUT;
     }
     acbb_cli_file file = { 0 };
@@ -289,7 +290,7 @@ static int missing(const merge_set *m, size_t kept)
         len += (size_t)snprintf(list + len, sizeof list - len, "%s%zu", shown ? ", " : "", i);
         shown++;
     }
-    fprintf(stderr, "acbb: merge: %zu of the %zu points are missing (index %s%s); the merged "
+    acbb_cli_say("merge: %zu of the %zu points are missing (index %s%s); the merged "
             "file holds the other %zu: run the missing shards or resume their sweeps, then "
             "merge again\n", total - kept, total, list, total - kept > shown ? ", ..." : "",
             kept);
@@ -299,7 +300,7 @@ static int missing(const merge_set *m, size_t kept)
 static int write_merged(const char *out, merge_set *m)
 {
     if (!m->header) {
-        fprintf(stderr, "acbb: merge: no sweep output among the inputs\n");
+        acbb_cli_say("merge: no sweep output among the inputs\n");
         return ACBB_EXIT_INPUT;
     }
     if (m->n > 1) qsort(m->recs, m->n, sizeof *m->recs, by_index);
@@ -320,7 +321,7 @@ static int write_merged(const char *out, merge_set *m)
         kept++;
     }
     rc = acbb_cli_file_close(&file);
-    if (dup) fprintf(stderr, "acbb: merge: %zu repeated records dropped\n", dup);
+    if (dup) acbb_cli_say("merge: %zu repeated records dropped\n", dup);
     return rc ? rc : missing(m, kept);
 }
 
@@ -366,7 +367,7 @@ static int out_is_shard(const char *path)
     free(line);
     fclose(f);
     if (yes)
-        fprintf(stderr, "acbb: merge: %s is a sweep's own output (a shard: its records carry "
+        acbb_cli_say("merge: %s is a sweep's own output (a shard: its records carry "
                 "wall_ms), not an earlier merge's; merge writes OUT anew and would lose it. "
                 "Usage: acbb merge OUT IN... (OUT first, a new file)\n", path);
     return yes;

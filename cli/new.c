@@ -17,12 +17,13 @@
 #include "common.h"
 #include "exit.h"
 #include "new.h"
+#include "say.h"
 
 #define MAX_NOTES 24
 
 static int fail(const char *msg)
 {
-    fprintf(stderr, "acbb: new: %s\n", msg);
+    acbb_cli_say("new: %s\n", msg);
     return ACBB_EXIT_INPUT;
 }
 
@@ -34,7 +35,7 @@ static int number(const acbb_cli_args *a, acbb_cli_opt o, double *v)
     errno = 0;
     *v = strtod(t, &end);
     if (end == t || *end || errno) {
-        fprintf(stderr, "acbb: new: --%s %s: not a number\n", acbb_cli_options[o].name, t);
+        acbb_cli_say("new: --%s %s: not a number\n", acbb_cli_options[o].name, t);
         return ACBB_EXIT_INPUT;
     }
     return 0;
@@ -112,7 +113,7 @@ static int annotate(const char *path, const acbb_designation *d, const acbb_esti
         return fail("cannot read back the saved preset");
     }
     if (acbb_out_commit(o, &e) == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: new: %s\n", e.msg);
+    acbb_cli_say("new: %s\n", e.msg);
     return ACBB_EXIT_INTERNAL; /* opened, then the write failed (disk full) */
 }
 
@@ -133,13 +134,13 @@ int acbb_cli_cmd_new(const acbb_cli_args *a)
     snprintf(def, sizeof def, "%s.ini", d.name);
     const char *path = a->val[CLI_OPT_OUT] ? a->val[CLI_OPT_OUT] : def;
     if (access(path, F_OK) == 0) {
-        fprintf(stderr, "acbb: new: %s exists; remove it or choose another --out\n", path);
+        acbb_cli_say("new: %s exists; remove it or choose another --out\n", path);
         return ACBB_EXIT_INPUT;
     }
     acbb_error e;
     acbb_status st = acbb_scene_save(path, &s, &e);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: new: %s\n", acbb_cli_err_text(&e, st));
+        acbb_cli_say("new: %s\n", acbb_cli_err_text(&e, st));
         /* The guard (out_guard.h) found the path writable: a failed write
          * now is the disk's (README "Exit codes"), not bad input. */
         return st == ACBB_EIO ? ACBB_EXIT_INTERNAL : acbb_cli_exit_for(st);

@@ -11,6 +11,7 @@
 #include "out_guard.h"
 #include "plot.h"
 #include "presets.h"
+#include "say.h"
 
 /* The file a write to `path` lands in: a symlink chain followed to its
  * end, a dangling link's target included (the atomic writer creates that,
@@ -71,7 +72,7 @@ static int same_file(const char *a, const char *b)
 
 static int refuse(const char *cmd, const acbb_cli_named_path *o, const char *why)
 {
-    fprintf(stderr, "acbb: %s: cannot write %s %s: %s\n", cmd, o->what, o->path, why);
+    acbb_cli_say("%s: cannot write %s %s: %s\n", cmd, o->what, o->path, why);
     return ACBB_EXIT_INPUT;
 }
 
@@ -147,7 +148,7 @@ int acbb_cli_guard_paths(const char *cmd, const acbb_cli_named_path *in, size_t 
         const acbb_cli_named_path *o = &out[i];
         if (strcmp(o->path, "-") == 0) {
             if (++to_stdout < 2) continue;
-            fprintf(stderr, "acbb: %s: more than one format on stdout (%s - with %s); "
+            acbb_cli_say("%s: more than one format on stdout (%s - with %s); "
                     "one format per stream: write the others to files\n", cmd, o->what,
                     json ? "--json" : "another -");
             return ACBB_EXIT_INPUT;
@@ -155,14 +156,14 @@ int acbb_cli_guard_paths(const char *cmd, const acbb_cli_named_path *in, size_t 
         if (too_long(cmd, o) || cannot_write(cmd, o)) return ACBB_EXIT_INPUT;
         for (size_t j = 0; j < n_in; j++)
             if (strcmp(in[j].path, "-") != 0 && same_file(o->path, in[j].path)) {
-                fprintf(stderr, "acbb: %s: %s %s is %s (%s), an input of this command: not "
+                acbb_cli_say("%s: %s %s is %s (%s), an input of this command: not "
                         "overwritten; write to another file\n", cmd, o->what, o->path,
                         in[j].what, in[j].path);
                 return ACBB_EXIT_INPUT;
             }
         for (size_t j = 0; j < i; j++)
             if (strcmp(out[j].path, "-") != 0 && same_file(o->path, out[j].path)) {
-                fprintf(stderr, "acbb: %s: %s %s and %s %s name one file: two outputs "
+                acbb_cli_say("%s: %s %s and %s %s name one file: two outputs "
                         "cannot share it\n", cmd, out[j].what, out[j].path, o->what, o->path);
                 return ACBB_EXIT_INPUT;
             }

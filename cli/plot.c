@@ -18,6 +18,7 @@
 #include "common.h"
 #include "exit.h"
 #include "plot.h"
+#include "say.h"
 
 #define PLOT_FILE_W 1000
 #define PLOT_FILE_H 600
@@ -36,7 +37,7 @@ typedef struct {
 
 static int bad_usage(const char *what, const char *arg)
 {
-    fprintf(stderr, "acbb: plot: %s%s\ntry `acbb help plot`\n", what, arg ? arg : "");
+    acbb_cli_say("plot: %s%s\ntry `acbb help plot`\n", what, arg ? arg : "");
     return ACBB_EXIT_INPUT;
 }
 
@@ -45,7 +46,7 @@ static int bad_usage(const char *what, const char *arg)
 int acbb_cli_parse_size(const char *text, int *w, int *h)
 {
     if (acbb_plot_parse_size(text, w, h) == 0) return 0;
-    fprintf(stderr, "acbb: --size %s: expected WxH pixels (e.g. 1000x600), a print width "
+    acbb_cli_say("--size %s: expected WxH pixels (e.g. 1000x600), a print width "
             "(85mm, 8.5cm, 85mmx60mm) or column (8.5 cm) / full (17.5 cm)\n", text);
     return ACBB_EXIT_INPUT;
 }
@@ -69,7 +70,7 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
     acbb_error err = { { 0 } };
     acbb_status st = acbb_sim_new(sc, &sim, &err);
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: %s\n", acbb_cli_err_text(&err, st));
+        acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         return acbb_cli_exit_for(st);
     }
     acbb_history_init(h);
@@ -78,7 +79,7 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
     acbb_sim_snapshot(sim, snap);
     acbb_sim_free(sim);
     if (snap->state != ACBB_RUN_CONVERGED) {
-        fprintf(stderr, "acbb: %s: %s (plotting the last good state)\n",
+        acbb_cli_say("%s: %s (plotting the last good state)\n",
                 acbb_run_status_name(snap), snap->message);
         return ACBB_EXIT_SOLVER;
     }
@@ -89,7 +90,7 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
 
 static int plot_failed(const acbb_error *err, acbb_status st)
 {
-    fprintf(stderr, "acbb: %s — plot not written\n",
+    acbb_cli_say("%s — plot not written\n",
             err->msg[0] ? err->msg : acbb_status_name(st));
     return st == ACBB_EINVAL ? ACBB_EXIT_INPUT : ACBB_EXIT_INTERNAL;
 }
@@ -129,7 +130,7 @@ static int write_files(const char *path, int own, int first, int last, int w, in
     for (int k = first; k <= last; k++) {
         char *target = k == own ? NULL : sibling_path(path, (acbb_plot_kind)k);
         if (k != own && !target) {
-            fprintf(stderr, "acbb: out of memory — plot not written\n");
+            acbb_cli_say("out of memory — plot not written\n");
             return ACBB_EXIT_INTERNAL;
         }
         acbb_error err = { { 0 } };
@@ -163,7 +164,7 @@ static int write_dumb(int first, int last, int cols, int rows, const acbb_plot_d
     }
     free(text);
     if (!rc && (fflush(stdout) != 0 || ferror(stdout))) {
-        fprintf(stderr, "acbb: cannot write to stdout\n");
+        acbb_cli_say("cannot write to stdout\n");
         rc = ACBB_EXIT_INTERNAL;
     }
     return rc;
@@ -173,7 +174,7 @@ int acbb_cli_plot_check_path(const char *path)
 {
     int fmt = acbb_plot_format_from_name(path);
     if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG) {
-        fprintf(stderr, "acbb: --plot %s: expected a .png or .svg file name\n", path);
+        acbb_cli_say("--plot %s: expected a .png or .svg file name\n", path);
         return ACBB_EXIT_INPUT;
     }
     return 0;
@@ -217,13 +218,13 @@ static int check_plot_args(const plot_args *a, int *first, int *last, int *w, in
     if (!a->size) return 0;
     if (acbb_cli_parse_size(a->size, w, h)) return ACBB_EXIT_INPUT;
     if (!a->out && strspn(a->size, "0123456789xX") != strlen(a->size)) {
-        fprintf(stderr, "acbb: plot: --size %s: with --dumb the size is WxH characters\n", a->size);
+        acbb_cli_say("plot: --size %s: with --dumb the size is WxH characters\n", a->size);
         return ACBB_EXIT_INPUT;
     }
     acbb_error err = { { 0 } };
     int fmt = a->out ? acbb_plot_format_from_name(a->out) : ACBB_PLOT_DUMB;
     if (acbb_plot_check_size((acbb_plot_format)fmt, *w, *h, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: plot: --size: %s\n", err.msg);
+        acbb_cli_say("plot: --size: %s\n", err.msg);
         return ACBB_EXIT_INPUT;
     }
     return 0;

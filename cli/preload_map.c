@@ -14,10 +14,11 @@
 #include "exit.h"
 #include "preload_map_out.h"
 #include "progress.h"
+#include "say.h"
 
 static int bad(const char *msg, const char *opt, const char *val)
 {
-    fprintf(stderr, "acbb: preload-map: --%s %s: %s\n", opt, val, msg);
+    acbb_cli_say("preload-map: --%s %s: %s\n", opt, val, msg);
     return ACBB_EXIT_INPUT;
 }
 
@@ -126,7 +127,7 @@ static int chart(const char *path, const acbb_pmap_opts *o, const acbb_pmap_row 
     acbb_status st = acbb_plot_xy_files(&p, fmt == ACBB_PLOT_PNG ? path : NULL,
                                         fmt == ACBB_PLOT_SVG ? path : NULL, 1000, 600, &e);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: preload-map: %s\n", acbb_cli_err_text(&e, st));
+    acbb_cli_say("preload-map: %s\n", acbb_cli_err_text(&e, st));
     return st == ACBB_EINVAL ? ACBB_EXIT_SOLVER : ACBB_EXIT_INTERNAL;
 }
 
@@ -162,7 +163,7 @@ static int failed_cells(const acbb_pmap_cell *c, size_t n, acbb_status st)
             bad++ == 0)
             first = i;
     if (bad == 0 || st == ACBB_CANCELLED) return 0;
-    fprintf(stderr, "acbb: preload-map: %zu of %zu cells failed (x); the first, %g rpm and "
+    acbb_cli_say("preload-map: %zu of %zu cells failed (x); the first, %g rpm and "
             "%g N: %s\n", bad, n, c[first].speed_rpm, c[first].preload_N, c[first].status_name);
     return ACBB_EXIT_SOLVER;
 }
@@ -194,7 +195,7 @@ int acbb_cli_cmd_preload_map(const acbb_cli_args *a)
     acbb_status st = acbb_preload_map(&base, &o, cells, rows, &e);
     acbb_cli_interrupt_end();
     if (st == ACBB_EINVAL) {
-        fprintf(stderr, "acbb: preload-map: %s\n", acbb_cli_err_text(&e, st));
+        acbb_cli_say("preload-map: %s\n", acbb_cli_err_text(&e, st));
         rc = ACBB_EXIT_INPUT;
     } else {
         rc = acbb_cli_worst(outputs(a, &o, cells, rows), failed_cells(cells, n, st));

@@ -10,6 +10,7 @@
 #include "exit.h"
 #include "presets.h"
 #include "acbb/preset_info.h"
+#include "say.h"
 
 /* Set by meson (meson.build); the fallbacks keep a bare compile working. */
 #ifndef ACBB_PRESET_DIR
@@ -123,7 +124,7 @@ int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report)
         }
     }
     if (!report) return -1;
-    fprintf(stderr, "acbb: cannot open preset %s: no such file, and no %s%s in", arg, arg,
+    acbb_cli_say("cannot open preset %s: no such file, and no %s%s in", arg, arg,
             ends_with_ini(arg) ? "" : "[.ini]");
     for (size_t i = 0; i < nd; i++) fprintf(stderr, "%s %s", i ? "," : "", dirs[i].path);
     fputs(" (see `acbb presets`)\n", stderr);
@@ -256,7 +257,7 @@ int acbb_cli_cmd_presets(const acbb_cli_args *a)
 {
     if (a->n_pos) {
         if (!is_dir(a->pos[0])) {
-            fprintf(stderr, "acbb: presets: cannot open %s: %s\n", a->pos[0],
+            acbb_cli_say("presets: cannot open %s: %s\n", a->pos[0],
                     strerror(errno ? errno : ENOENT));
             return ACBB_EXIT_INPUT;
         }
@@ -273,7 +274,7 @@ int acbb_cli_cmd_presets(const acbb_cli_args *a)
         }
     }
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "acbb: cannot write to stdout\n");
+        acbb_cli_say("cannot write to stdout\n");
         return ACBB_EXIT_INTERNAL;
     }
     return 0;

@@ -11,6 +11,7 @@
 #include "acbb/units.h"
 #include "exit.h"
 #include "progress.h"
+#include "say.h"
 
 /* A signal handler can only reach file-scope state: the CLI's one flag
  * (the engine keeps none; it is handed the pointer). It holds the signal
@@ -74,7 +75,7 @@ const char *acbb_cli_interrupt_name(void)
 int acbb_cli_cancelled(const char *cmd, const char *kept)
 {
     if (!acbb_cli_interrupted()) return 0;
-    fprintf(stderr, "acbb: %s: cancelled by %s%s%s\n", cmd, acbb_cli_interrupt_name(),
+    acbb_cli_say("%s: cancelled by %s%s%s\n", cmd, acbb_cli_interrupt_name(),
             kept && *kept ? "; " : "", kept ? kept : "");
     return ACBB_EXIT_CANCELLED;
 }

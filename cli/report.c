@@ -20,6 +20,7 @@
 #include "report.h"
 #include "report_contact.h"
 #include "mountings.h"
+#include "say.h"
 
 /* What the formatters need besides the study. */
 typedef struct {
@@ -619,7 +620,7 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
         acbb_status cr = acbb_contact_study_run(base, cancel, cs, &err);
         if (cr == ACBB_CANCELLED) ss = cr;
         else if (cr != ACBB_OK) {
-            fprintf(stderr, "acbb: report: contact heat models: %s; no report printed\n",
+            acbb_cli_say("report: contact heat models: %s; no report printed\n",
                     err.msg);
             rc = acbb_cli_exit_for(cr);
         }
@@ -634,7 +635,7 @@ static int run_all(const acbb_cli_args *a, const input_keys *k, acbb_study *st,
         if (rs == ACBB_CANCELLED) {
             ss = rs;
         } else if (rs != ACBB_OK) {
-            fprintf(stderr, "acbb: report: --sensitivity: %s; %s\n",
+            acbb_cli_say("report: --sensitivity: %s; %s\n",
                     err.msg[0] ? err.msg : acbb_status_name(rs), a->val[CLI_OPT_MD]
                     ? "no report printed, --md file not written" : "no report printed");
             rc = acbb_cli_exit_for(rs);
@@ -670,7 +671,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     FILE *mf = NULL;
     const char *md_path = a->val[CLI_OPT_MD];
     if (md_path && acbb_out_open(md_path, &md, &mf, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: report: --md %s\n", err.msg);
+        acbb_cli_say("report: --md %s\n", err.msg);
         return ACBB_EXIT_INPUT;
     }
     acbb_study *st = NULL, *other[N_MOUNTINGS] = { NULL };
@@ -682,7 +683,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
         if (m != own) ps = acbb_study_plan(&ms, &other[m], &err);
     }
     if (ps != ACBB_OK) {
-        fputs("acbb: report: out of memory\n", stderr);
+        acbb_cli_say("report: out of memory\n");
         if (md) acbb_out_abort(md);
         free_studies(st, other);
         return ACBB_EXIT_INTERNAL;
@@ -690,7 +691,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     acbb_study_rob rob = { 0 };
     bool have_rob = false;
     acbb_contact_study *cs = calloc(1, sizeof *cs);
-    if (!cs) fputs("acbb: report: out of memory\n", stderr);
+    if (!cs) acbb_cli_say("report: out of memory\n");
     int rc = cs ? run_all(a, k, st, other, &rob, &have_rob, base, cs) : ACBB_EXIT_INTERNAL;
     if (rc != 0) {
         if (md) acbb_out_abort(md);
@@ -711,7 +712,7 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     if (md) {
         print_md(mf, &v);
         if (acbb_out_commit(md, &err) != ACBB_OK) {
-            fprintf(stderr, "acbb: report: --md %s\n", err.msg);
+            acbb_cli_say("report: --md %s\n", err.msg);
             rc = ACBB_EXIT_INTERNAL;
         }
     }
@@ -725,7 +726,7 @@ int acbb_cli_cmd_report(const acbb_cli_args *a)
 {
     input_keys k = { .n = 0 };
     if (a->val[CLI_OPT_INPUTS] && split_keys(&k, a->val[CLI_OPT_INPUTS]) != 0) {
-        fprintf(stderr, "acbb: report: --inputs: too many inputs (at most %d)\n", ACBB_SENS_MAX);
+        acbb_cli_say("report: --inputs: too many inputs (at most %d)\n", ACBB_SENS_MAX);
         return ACBB_EXIT_INPUT;
     }
     acbb_scene base;
@@ -733,7 +734,7 @@ int acbb_cli_cmd_report(const acbb_cli_args *a)
     acbb_error err = { { 0 } };
     if (!rc && k.n && acbb_study_rob_check_keys(&base, &(acbb_study_rob_opts){ .keys = k.keys,
                                                 .n_keys = k.n }, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: report: --inputs: %s; nothing run\n", err.msg);
+        acbb_cli_say("report: --inputs: %s; nothing run\n", err.msg);
         return ACBB_EXIT_INPUT;
     }
     return rc ? rc : report(a, &k, &base);

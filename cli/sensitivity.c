@@ -15,6 +15,7 @@
 #include "output.h"
 #include "exit.h"
 #include "progress.h"
+#include "say.h"
 
 /* The count with an ETA (progress.h). */
 static void on_progress(void *ctx, size_t done, size_t total)
@@ -40,17 +41,17 @@ static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
 {
     const char *m = a->val[CLI_OPT_METRIC], *d = a->val[CLI_OPT_DELTA];
     if (!m) {
-        fprintf(stderr, "acbb: sensitivity: needs --metric M (e.g. losses_W.total, "
+        acbb_cli_say("sensitivity: needs --metric M (e.g. losses_W.total, "
                         "balls[0].Qi_N)\n");
         return ACBB_EXIT_INPUT;
     }
     if (strlen(m) >= sizeof o->metric) {
-        fprintf(stderr, "acbb: sensitivity: --metric is too long\n");
+        acbb_cli_say("sensitivity: --metric is too long\n");
         return ACBB_EXIT_INPUT;
     }
     snprintf(o->metric, sizeof o->metric, "%s", m);
     if (d && strcmp(d, "thermal_expansion") != 0) {
-        fprintf(stderr, "acbb: sensitivity: --delta takes thermal_expansion (TE - WTE), "
+        acbb_cli_say("sensitivity: --delta takes thermal_expansion (TE - WTE), "
                         "got '%s'\n", d);
         return ACBB_EXIT_INPUT;
     }
@@ -66,7 +67,7 @@ static int parse_opts(const acbb_cli_args *a, acbb_sens_opts *o)
     o->transient = a->val[CLI_OPT_TRANSIENT] != NULL;
     acbb_error err = {{0}};
     if (!rc && acbb_metric_check(o->metric, &err) != ACBB_OK) {
-        fprintf(stderr, "acbb: sensitivity: %s; `acbb metrics` lists them\n", err.msg);
+        acbb_cli_say("sensitivity: %s; `acbb metrics` lists them\n", err.msg);
         rc = ACBB_EXIT_INPUT;
     }
     if (!rc) canonical_metric(o->metric, sizeof o->metric);
@@ -257,7 +258,7 @@ static int write_plot(const char *path, const char *preset, const acbb_sens_resu
                                  w, h, title, xlabel, &err)
         : acbb_error_set(&err, ACBB_EINVAL, "--plot %s: use a .png or .svg name", path);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: sensitivity: %s\n", err.msg);
+    acbb_cli_say("sensitivity: %s\n", err.msg);
     return st == ACBB_EINVAL ? ACBB_EXIT_INPUT : ACBB_EXIT_INTERNAL;
 }
 
@@ -312,13 +313,13 @@ int acbb_cli_cmd_sensitivity(const acbb_cli_args *a)
         return acbb_cli_worst(acbb_cli_cancelled("sensitivity", kept), acbb_cli_stdout_check(0));
     }
     if (st != ACBB_OK) {
-        fprintf(stderr, "acbb: sensitivity: %s\n", acbb_cli_err_text(&err, st));
+        acbb_cli_say("sensitivity: %s\n", acbb_cli_err_text(&err, st));
         free(r);
         return acbb_cli_exit_for(st);
     }
     rc = write_outputs(a, r);
     if (!r->ok0 || r->failed)
-        fprintf(stderr, "acbb: sensitivity: %zu point(s) without a value (a run did not reach "
+        acbb_cli_say("sensitivity: %zu point(s) without a value (a run did not reach "
                         "steady state)%s%s\n",
                 r->failed, r->ok0 ? "" : "; the base run: ", r->ok0 ? "" : r->fail0);
     rc = acbb_cli_worst(rc, r->failed ? ACBB_EXIT_SOLVER : 0);

@@ -15,6 +15,7 @@
 #include "output.h"
 #include "progress.h"
 #include "sweep.h"
+#include "say.h"
 
 typedef struct {
     const acbb_sweep *grid;
@@ -77,7 +78,7 @@ static int build_grid(const acbb_cli_args *a, acbb_sweep *g)
     acbb_error err = { { 0 } };
     if (a->val[CLI_OPT_PARAM] || a->val[CLI_OPT_VALUES]) {
         if (!a->val[CLI_OPT_PARAM] || !a->val[CLI_OPT_VALUES]) {
-            fprintf(stderr, "acbb: sweep: --param and --values go together\n");
+            acbb_cli_say("sweep: --param and --values go together\n");
             return ACBB_EXIT_INPUT;
         }
         size_t len = strlen(a->val[CLI_OPT_PARAM]) + strlen(a->val[CLI_OPT_VALUES]) + 2;
@@ -91,11 +92,11 @@ static int build_grid(const acbb_cli_args *a, acbb_sweep *g)
     for (size_t i = 0; i < a->n_grids; i++)
         if (acbb_sweep_add(g, a->grids[i], &err) != ACBB_OK) goto bad;
     if (acbb_sweep_n_dims(g) > 0) return 0;
-    fprintf(stderr, "acbb: sweep: needs --grid section.key=v1,v2,... (repeatable) or "
+    acbb_cli_say("sweep: needs --grid section.key=v1,v2,... (repeatable) or "
                     "--param section.key and --values v1,v2,...\n");
     return ACBB_EXIT_INPUT;
 bad:
-    fprintf(stderr, "acbb: sweep: --grid %s\n", err.msg);
+    acbb_cli_say("sweep: --grid %s\n", err.msg);
     return ACBB_EXIT_INPUT;
 }
 
@@ -107,7 +108,7 @@ static int parse_metrics(const acbb_cli_args *a, acbb_cli_metrics *m)
     for (size_t i = 0; i < a->n_metrics; i++) {
         char msg[300];
         if (acbb_cli_sweep_metric_add(m, a->metrics[i], msg, sizeof msg) != 0) {
-            fprintf(stderr, "acbb: sweep: --metric %s: %s\n", a->metrics[i], msg);
+            acbb_cli_say("sweep: --metric %s: %s\n", a->metrics[i], msg);
             return ACBB_EXIT_INPUT;
         }
     }
@@ -127,7 +128,7 @@ static int parse_shard(const acbb_cli_args *a, acbb_sweep_opts *o)
         if (end == t2) n = 0;
     }
     if (t[0] == '-' || *end || k < 1 || n < 1 || k > n || n > 1000000) {
-        fprintf(stderr, "acbb: sweep: --shard %s: expected K/N with 1 <= K <= N <= 1000000\n", t);
+        acbb_cli_say("sweep: --shard %s: expected K/N with 1 <= K <= N <= 1000000\n", t);
         return ACBB_EXIT_INPUT;
     }
     o->shard_k = k;
@@ -143,7 +144,7 @@ static int check_grid(const acbb_sweep *g, const acbb_scene *base, int first_is_
     acbb_error err = { { 0 } };
     acbb_status st = acbb_sweep_check_values(g, base, &d, &v, &err);
     if (st == ACBB_OK) return 0;
-    fprintf(stderr, "acbb: sweep: %s %s, value %zu of %zu: %s; nothing was run\n",
+    acbb_cli_say("sweep: %s %s, value %zu of %zu: %s; nothing was run\n",
             d == 0 && first_is_param ? "--param" : "--grid", acbb_sweep_key(g, d), v + 1,
             acbb_sweep_n_values(g, d), acbb_cli_err_text(&err, st));
     return acbb_cli_exit_for(st) == ACBB_EXIT_INTERNAL ? ACBB_EXIT_INTERNAL : ACBB_EXIT_INPUT;
@@ -157,7 +158,7 @@ static int check_values(const acbb_sweep *g, const acbb_scene *base, const char 
         acbb_error err = { { 0 } };
         acbb_status st = acbb_sweep_scene(g, base, i, &sc, &err);
         if (st != ACBB_OK) {
-            fprintf(stderr, "acbb: --param %s=%s: %s\n", param, acbb_sweep_value(g, i, 0),
+            acbb_cli_say("--param %s=%s: %s\n", param, acbb_sweep_value(g, i, 0),
                     acbb_cli_err_text(&err, st));
             return ACBB_EXIT_INPUT;
         }
@@ -232,7 +233,7 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
 static int close_sinks(sweep_run *s)
 {
     int rc = s->oom ? ACBB_EXIT_INTERNAL : 0;
-    if (s->oom) fprintf(stderr, "acbb: sweep: out of memory building a record\n");
+    if (s->oom) acbb_cli_say("sweep: out of memory building a record\n");
     for (size_t k = 0; k < s->n_sinks; k++) rc = acbb_cli_worst(rc, acbb_cli_sink_close(&s->sink[k]));
     return rc;
 }

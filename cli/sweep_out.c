@@ -11,6 +11,7 @@
 #include "acbb/units.h"
 #include "exit.h"
 #include "sweep.h"
+#include "say.h"
 
 /* The scalars of a record, by their run JSON paths (one name per quantity:
  * outputs.h), ball entries of ball 0; `losses_W.*` expands to every loss
@@ -248,7 +249,7 @@ static int cut_partial(FILE *f, const char *path, long good_end)
     struct stat st;
     if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > good_end &&
         ftruncate(fileno(f), good_end) != 0) {
-        fprintf(stderr, "acbb: sweep: %s: cannot cut the unfinished last record\n", path);
+        acbb_cli_say("sweep: %s: cannot cut the unfinished last record\n", path);
         return ACBB_EXIT_INPUT;
     }
     return 0;
@@ -280,7 +281,7 @@ static int resume_columns(const char *path, const acbb_cli_sweep_id *id, const c
     if (mine && (n <= 0 || (cols[n - 1] != '\n' && strncmp(cols, mine, (size_t)n) == 0)))
         rc = 1; /* killed before the column line was whole */
     else if (!mine || strcmp(cols, mine) != 0) {
-        fprintf(stderr, "acbb: sweep: %s:%ld: not this sweep's column header; not resuming "
+        acbb_cli_say("sweep: %s:%ld: not this sweep's column header; not resuming "
                 "(write to another file)\n", path, lineno);
         rc = -1;
     }
@@ -294,7 +295,7 @@ static int other_form(const char *path, const acbb_cli_sweep_id *id, const char 
 {
     int headed = strncmp(line, "# ", 2) == 0;
     if (headed == id->csv_header) return 0;
-    fprintf(stderr, "acbb: sweep: %s: %s; not resuming (run the same command %s, or write to "
+    acbb_cli_say("sweep: %s: %s; not resuming (run the same command %s, or write to "
             "another file)\n", path,
             headed ? "its first line is the sweep's header (written with --csv-header)"
                    : "a plain CSV (the sweep's header beside it, in .json)",
@@ -317,11 +318,11 @@ static int resume_header(FILE *f, const char *path, acbb_cli_rec_format fmt,
     char diff[400];
     int rc = -1;
     if (!got)
-        fprintf(stderr, "acbb: sweep: %s:%ld: no sweep header (an output of record format %d "
+        acbb_cli_say("sweep: %s:%ld: no sweep header (an output of record format %d "
                 "starts with one); not resuming (write to another file)\n", path, *lineno,
                 ACBB_SWEEP_FORMAT);
     else if (acbb_cli_sweep_header_diff(got, want, diff, sizeof diff))
-        fprintf(stderr, "acbb: sweep: %s: written by another sweep; not resuming (write to "
+        acbb_cli_say("sweep: %s: written by another sweep; not resuming (write to "
                 "another file). Differs (file vs now): %s\n", path, diff);
     else
         rc = 0;
@@ -346,7 +347,7 @@ static int resume_record(const char *line, const char *path, long lineno,
     size_t index = 0;
     const char *why = "";
     if (acbb_cli_sweep_check_record(line, fmt, id->g, &id->metrics, id->fp, 1, &index, &why) != 0) {
-        fprintf(stderr, "acbb: sweep: %s:%ld: not a record of this sweep (%s); not "
+        acbb_cli_say("sweep: %s:%ld: not a record of this sweep (%s); not "
                 "resuming (write to another file)\n", path, lineno, why);
         return ACBB_EXIT_INPUT;
     }
@@ -370,7 +371,7 @@ int acbb_cli_sweep_resume(FILE *f, const char *path, acbb_cli_rec_format fmt,
         lineno++;
         if (line[len - 1] != '\n') { /* unfinished: cut below */
             if (lineno == 1 && !header_prefix(id, fmt, 0, line)) {
-                fprintf(stderr, "acbb: sweep: %s:1: neither a sweep header nor the start of "
+                acbb_cli_say("sweep: %s:1: neither a sweep header nor the start of "
                         "this sweep's; not resuming (write to another file)\n", path);
                 rc = ACBB_EXIT_INPUT;
             }

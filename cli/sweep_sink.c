@@ -28,6 +28,7 @@
 #include "exit.h"
 #include "progress.h"
 #include "sweep.h"
+#include "say.h"
 
 int acbb_cli_sink_put(acbb_cli_sink *o, const char *buf, size_t len)
 {
@@ -78,14 +79,14 @@ static int sidecar_check(const acbb_cli_sink *o, const acbb_cli_sweep_id *id)
     cJSON *got = acbb_cli_sweep_sidecar_read(o->path, &missing), *want = acbb_cli_sweep_header_of(id);
     char diff[400];
     if (!got && missing)
-        fprintf(stderr, "acbb: sweep: %s: its header %s" ACBB_CLI_SIDECAR_EXT " is missing (a "
+        acbb_cli_say("sweep: %s: its header %s" ACBB_CLI_SIDECAR_EXT " is missing (a "
                 "plain sweep CSV keeps the sweep's header there; --csv-header: on its first "
                 "line); not resuming (write to another file)\n", o->path, o->path);
     else if (!got)
-        fprintf(stderr, "acbb: sweep: %s" ACBB_CLI_SIDECAR_EXT ": not a sweep header; not "
+        acbb_cli_say("sweep: %s" ACBB_CLI_SIDECAR_EXT ": not a sweep header; not "
                 "resuming %s (write to another file)\n", o->path, o->path);
     else if (acbb_cli_sweep_header_diff(got, want, diff, sizeof diff))
-        fprintf(stderr, "acbb: sweep: %s: written by another sweep (its header %s"
+        acbb_cli_say("sweep: %s: written by another sweep (its header %s"
                 ACBB_CLI_SIDECAR_EXT "); not resuming (write to another file). Differs (file vs "
                 "now): %s\n", o->path, o->path, diff);
     else
@@ -101,7 +102,7 @@ static int sidecar_write(const acbb_cli_sink *o, const acbb_cli_sweep_id *id)
 {
     char side[4200];
     if (snprintf(side, sizeof side, "%s" ACBB_CLI_SIDECAR_EXT, o->path) >= (int)sizeof side) {
-        fprintf(stderr, "acbb: sweep: %s: path too long for its header file\n", o->path);
+        acbb_cli_say("sweep: %s: path too long for its header file\n", o->path);
         return ACBB_EXIT_INPUT;
     }
     size_t len = 0;
@@ -123,7 +124,7 @@ static int open_special(acbb_cli_sink *o, const acbb_cli_sweep_id *id)
 {
     o->fd = acbb_out_open_special(o->path);
     if (o->fd < 0) {
-        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", o->path,
+        acbb_cli_say("sweep: %s: cannot open for writing: %s\n", o->path,
                 errno == ENXIO ? "a FIFO with no reader (start the reader first)" : strerror(errno));
         return ACBB_EXIT_INPUT;
     }
@@ -136,12 +137,12 @@ static int lock_file(acbb_cli_sink *o)
 {
     if (flock(o->fd, LOCK_EX | LOCK_NB) == 0) return 0;
     if (errno == EWOULDBLOCK) {
-        fprintf(stderr, "acbb: sweep: %s: another sweep is writing this file (it holds the "
+        acbb_cli_say("sweep: %s: another sweep is writing this file (it holds the "
                 "file's lock); not writing it (wait for that sweep to end, or write to another "
                 "file)\n", o->path);
         return ACBB_EXIT_INPUT;
     }
-    fprintf(stderr, "acbb: sweep: %s: warning: cannot lock (%s); a second sweep on this file "
+    acbb_cli_say("sweep: %s: warning: cannot lock (%s); a second sweep on this file "
             "would not be refused\n", o->path, strerror(errno));
     return 0;
 }
@@ -163,7 +164,7 @@ int acbb_cli_sink_open(acbb_cli_sink *o, const char *path, acbb_cli_rec_format f
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) return open_special(o, id);
     o->f = fopen(path, "a+");
     if (!o->f) {
-        fprintf(stderr, "acbb: sweep: %s: cannot open for writing: %s\n", path, strerror(errno));
+        acbb_cli_say("sweep: %s: cannot open for writing: %s\n", path, strerror(errno));
         return ACBB_EXIT_INPUT;
     }
     o->own = 1;
@@ -194,13 +195,13 @@ int acbb_cli_sink_close(acbb_cli_sink *o)
     if (!bad) return 0;
     const char *name = strcmp(o->path, "-") ? o->path : "standard output";
     if (o->regular)
-        fprintf(stderr, "acbb: sweep: cannot write %s: %s; %s (%zu written this run); make room "
+        acbb_cli_say("sweep: cannot write %s: %s; %s (%zu written this run); make room "
                 "and run the same command again to resume\n", name, strerror(o->err),
                 o->cut_failed ? "the file could not be cut back to its last whole record"
                               : "the file ends with its last whole record",
                 o->written);
     else
-        fprintf(stderr, "acbb: sweep: cannot write %s: %s; the sweep stopped after %zu "
+        acbb_cli_say("sweep: cannot write %s: %s; the sweep stopped after %zu "
                 "record%s\n", name, strerror(o->err), o->written, o->written == 1 ? "" : "s");
     return ACBB_EXIT_INTERNAL;
 }
