@@ -91,9 +91,11 @@ void acbb_simx_network_inputs(const acbb_sim *sim, acbb_net_inputs *in);
 int acbb_simx_outputs_finite(const acbb_sim *sim);
 /* sim.c: the caller's cancel flag, then the wall-clock bound. */
 acbb_status acbb_simx_stop_check(const acbb_sim *sim, acbb_error *err);
-/* sim.c: the bearing as a plant of the stepper (stepper.h); a view, valid
- * until the Sim is restarted. */
+/* sim_plant.c: the bearing as a plant of the stepper (stepper.h); a view,
+ * valid until the Sim is restarted. The heat flows of the state reached
+ * into heat_out (0 with heating off: no network is solved). */
 void acbb_simx_plant(acbb_sim *sim, acbb_plant *p);
+void acbb_simx_energy(acbb_sim *sim);
 
 /* A bearing of a set (sim_set.c drives it, MODEL.md 14). Its wall-clock
  * deadline (acbb_now_ms; 0 none): the set's, so that b's own inner loops
