@@ -40,10 +40,10 @@ static void test_single(void)
     double T0 = sim->T[0];
     sim->s.max_wall_s = 1e-12; /* the set-up alone took longer */
     acbb_status rc = acbb_sim_step(sim);
-    ok(rc == ACBB_WALL_LIMIT && sim->iter == 0 && sim->state == ACBB_RUN_FAILED
-       && sim->T[0] == T0 && strstr(sim->msg, "fidelity.max_wall_s") != NULL,
+    ok(rc == ACBB_WALL_LIMIT && sim->run.iter == 0 && sim->run.state == ACBB_RUN_FAILED
+       && sim->T[0] == T0 && strstr(sim->run.msg, "fidelity.max_wall_s") != NULL,
        "single bearing, bound spent: the step ends %s at once (iterations %ld, T kept): %s",
-       acbb_status_name(rc), sim->iter, sim->msg);
+       acbb_status_name(rc), sim->run.iter, sim->run.msg);
     acbb_sim_free(sim);
 }
 
@@ -76,7 +76,7 @@ static void test_set_step(void)
 }
 
 /* The set hands its deadline to its members: a dynamic member's ball
- * pass (acbb_simm_traction, what the set's mechanics calls) stops in its
+ * pass (acbb_simx_traction, what the set's mechanics calls) stops in its
  * first right-hand side. */
 static void test_member(void)
 {
@@ -85,11 +85,11 @@ static void test_member(void)
     acbb_error err = { { 0 } };
     double change;
     acbb_set_sim_deadline(ss, acbb_now_ms() - 1.0);
-    acbb_status rc = acbb_simm_traction(ss->b[0], &change, &err);
+    acbb_status rc = acbb_simx_traction(ss->b[0], &change, &err);
     ok(rc == ACBB_WALL_LIMIT, "set member, the set's deadline past: its ball pass ends %s (%s)",
        acbb_status_name(rc), err.msg);
     acbb_set_sim_deadline(ss, 0.0);
-    rc = acbb_simm_traction(ss->b[0], &change, &err);
+    rc = acbb_simx_traction(ss->b[0], &change, &err);
     ok(rc == ACBB_OK, "... and without a deadline it runs (%s)", acbb_status_name(rc));
     acbb_set_sim_free(ss);
 }

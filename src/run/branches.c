@@ -9,7 +9,7 @@
 #include "acbb/units.h"
 
 /* One branch when the two polish to the same steady state: the transient
- * ends with the direct steady iteration (sim.c, polish), so both meet to
+ * ends with the direct steady iteration (stepper.c, polish), so both meet to
  * ~1e-8 (README "Batch runner": 5e-9 on 7008C); another branch differs by
  * kelvins and watts. The bounds sit far from both. */
 #define AGREE_DT_K 0.01

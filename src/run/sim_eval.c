@@ -2,9 +2,9 @@
  * the inner part of the seed's Fig. 5): expansions from the temperatures,
  * the mechanics (warm start; Level 2 or the dynamic balls where the scene
  * asks), kinematics, film and losses per contact, the network's inputs and
- * the heat sources. The stepper (sim.c) decides when; this file computes.
- * A bearing of a set (sim_set.c) uses the same pieces through the
- * acbb_simm_ accessors at the end. */
+ * the heat sources. The stepper (stepper.c) decides when; this file
+ * computes. A bearing of a set (sim_set.c) uses the same pieces:
+ * acbb_simx_expand, _traction and _heat at the end. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -316,7 +316,7 @@ int acbb_simx_outputs_finite(const acbb_sim *sim)
     return 1;
 }
 
-void acbb_simm_expand(acbb_sim *b)
+void acbb_simx_expand(acbb_sim *b)
 {
     if (b->s.thermal_expansion) expansions(b);
     else b->exp = (acbb_expansion){ 0 };
@@ -324,7 +324,7 @@ void acbb_simm_expand(acbb_sim *b)
 
 /* One Level-2 or dynamic pass over b's balls at its current mechanics
  * (mechanics() without the equilibrium solves: the set solves those). */
-acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err)
+acbb_status acbb_simx_traction(acbb_sim *b, double *change, acbb_error *err)
 {
     acbb_oil_state oi, oo, oc;
     acbb_mixture mix;
@@ -338,7 +338,7 @@ acbb_status acbb_simm_traction(acbb_sim *b, double *change, acbb_error *err)
 }
 
 /* acbb_simx_evaluate() after the mechanics: losses, network resistances, heat. */
-acbb_status acbb_simm_heat(acbb_sim *b, acbb_error *err)
+acbb_status acbb_simx_heat(acbb_sim *b, acbb_error *err)
 {
     acbb_status rc = losses(b);
     if (rc == ACBB_OK && !acbb_simx_outputs_finite(b)) rc = ACBB_NONFINITE;

@@ -1,4 +1,4 @@
-/* acbb — private helpers shared by the stepper (sim.c) and its snapshot
+/* acbb — private helpers shared by the stepper (stepper.c, sim.c) and its snapshot
  * views (sim_snapshot.c); not part of the public API. */
 #ifndef ACBB_SIM_PRIV_H
 #define ACBB_SIM_PRIV_H

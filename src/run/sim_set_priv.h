@@ -7,7 +7,7 @@
 #include "sim_set.h"
 #include "set_mech.h"
 #include "network_set.h"
-#include "steady_polish.h"
+#include "stepper.h"
 
 #define ACBB_SET_NMAX ACBB_SET_MAX_NODES
 
@@ -19,12 +19,10 @@ struct acbb_set_sim {
     acbb_set_mech sm, sm_keep;
     acbb_network_set ns;
     double T[ACBB_SET_NMAX], q[ACBB_SET_NMAX], T_keep[ACBB_SET_NMAX];
-    acbb_set_run run;
+    acbb_stepper run;
     const atomic_int *cancel;
     double deadline_ms;        /* the run's fidelity.max_wall_s, monotonic ms; 0 none */
-    double prev_total, prev_F, prev_rate, total;
-    int growth, quiet;
-    acbb_relax_ctl steady_relax; /* the steady solve's relaxation (sim.c steady_step) */
+    double total;
     double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
     /* the last lift-off search (sim_set_probe.c): its preload, speed, slope
      * of the squeeze (um/N) and where it ended (lift_sm.n 0: none yet) */

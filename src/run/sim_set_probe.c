@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include "sim_set_priv.h"
+#include "sim_struct.h"
 
 typedef struct { double Fa, Fr, M; } loads;
 
@@ -23,8 +24,8 @@ static acbb_status solve_loads(acbb_set_sim *ss, loads L, acbb_set_mech *w)
 static void keep_members(acbb_set_sim *ss, int back)
 {
     for (int k = 0; k < ss->n; k++)
-        if (back) acbb_mech_state_copy(acbb_simm_ms(ss->b[k]), ss->scratch[k]);
-        else acbb_mech_state_copy(ss->scratch[k], acbb_simm_ms(ss->b[k]));
+        if (back) acbb_mech_state_copy(&ss->b[k]->ms, ss->scratch[k]);
+        else acbb_mech_state_copy(ss->scratch[k], &ss->b[k]->ms);
 }
 
 /* Solve the shaft under other external loads into *out; the members and
@@ -78,10 +79,10 @@ static double side_squeeze(acbb_set_sim *ss, acbb_set_mech *w, double Fa, int si
     double g = -INFINITY;
     for (int k = 0; k < w->n; k++) {
         if (w->orient[k] != side) continue;
-        const acbb_mech_state *st = acbb_simm_ms(ss->b[k]);
+        const acbb_mech_state *st = &ss->b[k]->ms;
         for (int j = 0; j < st->n; j++) {
             acbb_ball_frame f;
-            acbb_mech_ball_frame(acbb_simm_mech(ss->b[k]), st, j, &f);
+            acbb_mech_ball_frame(ss->b[k]->mech, st, j, &f);
             g = fmax(g, hypot(f.A1, f.A2) - f.L0_i - f.L0_o);
         }
     }
@@ -188,7 +189,7 @@ static double liftoff_guess(const acbb_set_sim *ss)
 
 static void members_probing(acbb_set_sim *ss, int on)
 {
-    for (int k = 0; k < ss->n; k++) acbb_mech_probing(acbb_simm_mech(ss->b[k]), on);
+    for (int k = 0; k < ss->n; k++) acbb_mech_probing(ss->b[k]->mech, on);
 }
 
 /* Ball k's positions, angles and Hertz constants where the last search
@@ -213,13 +214,13 @@ static void adopt_balls(acbb_mech_state *st, const acbb_mech_state *at)
 static void lift_state(acbb_set_sim *ss, acbb_set_mech *w, int save)
 {
     if (save) {
-        for (int k = 0; k < ss->n; k++) acbb_mech_state_copy(ss->lift_ms[k], acbb_simm_ms(ss->b[k]));
+        for (int k = 0; k < ss->n; k++) acbb_mech_state_copy(ss->lift_ms[k], &ss->b[k]->ms);
         ss->lift_sm = *w;
         return;
     }
     *w = ss->sm;
     if (!ss->lift_sm.n) return;
-    for (int k = 0; k < ss->n; k++) adopt_balls(acbb_simm_ms(ss->b[k]), ss->lift_ms[k]);
+    for (int k = 0; k < ss->n; k++) adopt_balls(&ss->b[k]->ms, ss->lift_ms[k]);
     memcpy(w->q, ss->lift_sm.q, sizeof w->q);
     memcpy(w->J, ss->lift_sm.J, sizeof w->J);
     w->J_ok = ss->lift_sm.J_ok;

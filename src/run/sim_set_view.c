@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "sim_set_priv.h"
+#include "sim_struct.h"
 #include "sim_priv.h"
 
 static void set_view(const acbb_set_sim *ss, acbb_set_view *v)
@@ -22,13 +23,13 @@ static void set_view(const acbb_set_sim *ss, acbb_set_view *v)
     v->spacer_growth = acbb_snap_fin(ss->spacer);
     for (int k = 0; k < ss->n; k++) {
         acbb_part_temps p;
-        acbb_network_part_temps(acbb_simm_network(ss->b[k]), acbb_simm_T(ss->b[k]), &p);
+        acbb_network_part_temps(&ss->b[k]->nw, ss->b[k]->T, &p);
         v->orientation[k] = sm->orient[k];
         v->axial_force[k] = acbb_snap_fin(sm->Fx[k]);
         v->contact_lost[k] = sm->lost[k];
-        v->T_outer_ring[k] = acbb_snap_fin(acbb_simm_T(ss->b[k])[acbb_simm_network(ss->b[k])->node_outer_ring]);
+        v->T_outer_ring[k] = acbb_snap_fin(ss->b[k]->T[ss->b[k]->nw.node_outer_ring]);
         v->T_inner_ring[k] = acbb_snap_fin(p.inner_ring);
-        v->loss_total[k] = acbb_snap_fin(acbb_simm_loss(ss->b[k]));
+        v->loss_total[k] = acbb_snap_fin(ss->b[k]->loss.total);
     }
 }
 

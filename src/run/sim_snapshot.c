@@ -51,7 +51,7 @@ const char *acbb_run_status_name(const acbb_snapshot *snap)
     return acbb_status_name(snap->status);
 }
 
-/* ---- checks used by the stepper (sim.c) ---- */
+/* ---- checks used by the stepper (stepper.c, sim.c) ---- */
 
 int acbb_snap_contact_finite(const acbb_contact_loss *c)
 {

@@ -1,4 +1,4 @@
-/* acbb — the Sim's state, shared by the stepper (sim.c) and the
+/* acbb — the Sim's state, shared by the bearing (sim.c) and the
  * evaluation of one state (sim_eval.c); internal, not part of the public
  * API (acbb/sim.h keeps acbb_sim opaque). */
 #ifndef ACBB_SIM_STRUCT_H
@@ -16,13 +16,8 @@
 #include "sim_set.h"
 #include "steady_polish.h"
 #include "life_static.h"
+#include "stepper.h"
 
-#define DT_MIN 0.05            /* s, MODEL.md section 9 */
-#define DT_MAX 30.0            /* s */
-#define DT_MAX_DT_K 2.0        /* reject a step that moves a node more than this */
-#define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
-#define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
-#define ISO_ITERS 60           /* mechanics passes of an isothermal run */
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
 #define QD_SKIP_TOL 3e-3       /* transient steps: Level-2 update skipped below this input move */
@@ -59,6 +54,7 @@ struct acbb_sim {
     acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
     acbb_mech_state ms;        /* last accepted mechanics */
     checkpoint *keep;          /* scratch for step rollback (owned) */
+    checkpoint *best;          /* the steady polish's iterate of smallest residual (owned) */
     acbb_network nw;
     acbb_quad quad;
     double T[ACBB_MAX_NODES];  /* T^k */
@@ -68,17 +64,10 @@ struct acbb_sim {
     acbb_heat_sources heat;
     double q[ACBB_MAX_NODES];
     double heat_out;
-    double dt, time, residual, wall_ms, prev_total, prev_Fx, prev_rate;
-    int growth_count;
+    acbb_stepper run;          /* the run as the stepper keeps it (stepper.h) */
     int transient_pass;        /* 1 while evaluating inside a transient step */
     int polishing;             /* 1 while evaluating inside the steady polish */
     double polish_relax;       /* the polish step's relaxation while it evaluates, else 1 */
-    long iter;
-    int quiet;
-    acbb_relax_ctl steady_relax; /* the steady solve's relaxation (steady_polish.h) */
-    acbb_run_state state;
-    acbb_status status;
-    char msg[256];
     const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
     acbb_work work;            /* per-part work counters */
     double K_axial;            /* axial stiffness at the converged state, N/m */
@@ -103,5 +92,23 @@ void acbb_simx_network_inputs(const acbb_sim *sim, acbb_net_inputs *in);
 int acbb_simx_outputs_finite(const acbb_sim *sim);
 /* sim.c: the caller's cancel flag, then the wall-clock bound. */
 acbb_status acbb_simx_stop_check(const acbb_sim *sim, acbb_error *err);
+/* sim_plant.c: the bearing as a plant of the stepper (stepper.h); a view,
+ * valid until the Sim is restarted. The heat flows of the state reached
+ * into heat_out (0 with heating off: no network is solved). */
+void acbb_simx_plant(acbb_sim *sim, acbb_plant *p);
+void acbb_simx_energy(acbb_sim *sim);
+
+/* A bearing of a set (sim_set.c drives it, MODEL.md 14). Its wall-clock
+ * deadline (acbb_now_ms; 0 none): the set's, so that b's own inner loops
+ * (its ball-speed passes, every right-hand side of the dynamic level) stop
+ * at the set's fidelity.max_wall_s (issue 26 item 7). sim.c. */
+void acbb_simx_deadline(acbb_sim *b, double deadline_ms);
+/* The parts of acbb_simx_evaluate the set runs between its own shaft
+ * solves (sim_eval.c): the expansions at b's temperatures; one Level-2 or
+ * dynamic pass over b's balls (*change: the largest relative move); the
+ * losses, network resistances and heat sources q. */
+void acbb_simx_expand(acbb_sim *b);
+acbb_status acbb_simx_traction(acbb_sim *b, double *change, acbb_error *err);
+acbb_status acbb_simx_heat(acbb_sim *b, acbb_error *err);
 
 #endif
