@@ -1,6 +1,6 @@
 /* acbb — the steady polish's iteration control (internal).
  *
- * After a run has settled, sim.c iterates the direct steady solve of the
+ * After a run has settled, the stepper (stepper.c) iterates the direct steady solve of the
  * network with the losses of the state it reached (Picard, MODEL.md
  * section 9) so the reported state balances energy to round-off. The
  * lagged coupling can overshoot: with a rigid preload, heat that expands
@@ -53,7 +53,7 @@ typedef acbb_status (*acbb_polish_step)(void *ctx, double relax, double *res, do
  * prev for the next step. */
 double acbb_polish_turn(double *prev, const double *T, const double *Tn, double relax, int n);
 
-/* The steady solve (sim.c, sim_set.c) is quiet once a move is below this
+/* The steady solve (stepper.c) is quiet once a move is below this
  * (K) with the losses still to 1e-9 relative, three times running. It
  * judges every growing residual (floor 0): undamped, its residuals and
  * losses can wander in the mechanics' noise band and never turn quiet
