@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "acbb/units.h"
+#include "loss_rows.h"
 #include "results.h"
 #include "screens.h"
 
@@ -64,6 +65,38 @@ static int squeeze_rows(acbb_app *a, int y, const acbb_compare_result *c)
     return y;
 }
 
+/* Rows TE, WTE, TE-WTE; detail rows only when the body has room. Returns
+ * the next free row. */
+static int put_rows(acbb_app *a, int y, const acbb_compare_result *c, const row_spec *rows,
+                    size_t n)
+{
+    const acbb_rect b = a->lay.body;
+    for (size_t i = 0; i < n && y < b.y + b.h; i++) {
+        if (rows[i].detail && b.h < ROOM_FOR_DETAIL) continue;
+        double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
+        double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
+        acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
+                 v1, v0 - v1);
+    }
+    return y;
+}
+
+/* Every loss the compared scene switches on, from the loss table (detail
+ * rows under the total). */
+static int loss_rows(acbb_app *a, int y, const acbb_compare_result *c)
+{
+    acbb_loss_kind k[ACBB_LOSS_KINDS];
+    int n = acbb_loss_rows(&a->hide.ran_on[ACBB_RAN_COMPARE], k);
+    char label[ACBB_LOSS_KINDS][32];
+    row_spec rows[ACBB_LOSS_KINDS];
+    for (int i = 0; i < n; i++) {
+        acbb_loss_row_label(k[i], label[i], sizeof label[i]);
+        rows[i] = (row_spec){ label[i], offsetof(acbb_snapshot, losses.P) + (size_t)k[i] * sizeof(double),
+                              1, 1 };
+    }
+    return put_rows(a, y, c, rows, (size_t)n);
+}
+
 static void draw(acbb_app *a)
 {
     const acbb_compare_result *c = &a->st.compare;
@@ -91,17 +124,16 @@ static void draw(acbb_app *a)
     char outer[48];
     acbb_run_outer_label(&c->snap[0], outer, sizeof outer);
     strcat(outer, " T C");
-    const row_spec rows[] = {
+    const row_spec heat[] = {
         { outer, offsetof(acbb_snapshot, T_outer_ring), 1, 0 },
         { "Inner ring T C", offsetof(acbb_snapshot, T_inner_ring), 1, 0 },
         { "Ball T C", offsetof(acbb_snapshot, T_ball), 1, 0 },
         { "Housing T C", offsetof(acbb_snapshot, T_housing), 1, 1 },
         { "Total loss W", offsetof(acbb_snapshot, losses.total), 1, 0 },
-        { "  shear P_L W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SHEAR]), 1, 1 },
-        { "  slip P_t W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SLIP]), 1, 1 },
-        { "  spin P_s W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SPIN]), 1, 1 },
-        { "  rolling P_r W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_ROLLING]), 1, 1 },
-        { "  drag P_v W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_DRAG]), 1, 1 },
+    };
+    y = put_rows(a, y, c, heat, sizeof heat / sizeof heat[0]);
+    y = loss_rows(a, y, c);
+    const row_spec rest[] = {
         { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6, 0 },
         { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6, 0 },
         /* What heat costs in life (MODEL.md 15). */
@@ -110,13 +142,7 @@ static void draw(acbb_app *a)
         { "  kappa", offsetof(acbb_snapshot, life.kappa), 1, 1 },
         { "  static safety s0", offsetof(acbb_snapshot, life.s0_min), 1, 1 },
     };
-    for (size_t i = 0; i < sizeof rows / sizeof rows[0] && y < b.y + b.h; i++) {
-        if (rows[i].detail && b.h < ROOM_FOR_DETAIL) continue;
-        double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
-        double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
-        acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
-                 v1, v0 - v1);
-    }
+    y = put_rows(a, y, c, rest, sizeof rest / sizeof rest[0]);
     const double R2D = 1.0 / ACBB_DEG /* deg per rad */;
     if (y < b.y + b.h) ball_row(a, y++, c, "Qi ball 0 N", offsetof(acbb_ball_view, Qi), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "Qo ball 0 N", offsetof(acbb_ball_view, Qo), 1);
