@@ -19,7 +19,6 @@
 #include "screens.h"
 #include "recover.h"
 #include "results.h"
-#include "screen_preload.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
 #define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
@@ -583,9 +582,9 @@ static void frame(acbb_app *a)
 
 /* ---- the loop ---- */
 
-/* The background threads' wake-up pipes: the Sim worker, the benchmark,
- * the sweep, the sensitivity run. */
-#define N_WAKES 5 /* and the preload map */
+/* The wake-up pipes: 0 the Sim worker, 1 + i screen i's job (screens.h
+ * wake_fd; -1 when it has none). */
+#define N_WAKES (1 + ACBB_MAX_TABS)
 
 typedef struct {
     int input, signal;
@@ -594,24 +593,15 @@ typedef struct {
 
 static int wake_fd(acbb_app *a, int k)
 {
-    switch (k) {
-    case 0: return acbb_worker_wake_fd(a->worker);
-    case 1: return acbb_bench_wake_fd(a->bench);
-    case 2: return acbb_job_wake_fd(acbb_sweepjob_job(a->sweep));
-    case 4: return acbb_preload_wake_fd(a);
-    default: return acbb_job_wake_fd(acbb_sensjob_job(a->sens));
-    }
+    if (k == 0) return acbb_worker_wake_fd(a->worker);
+    const acbb_screen *s = k - 1 < acbb_screen_count ? acbb_screens[k - 1] : NULL;
+    return s && s->wake_fd ? s->wake_fd(a) : -1;
 }
 
 static void drain_wake(acbb_app *a, int k)
 {
-    switch (k) {
-    case 0: acbb_worker_drain_wake(a->worker); break;
-    case 1: acbb_bench_drain_wake(a->bench); break;
-    case 2: acbb_job_drain_wake(acbb_sweepjob_job(a->sweep)); break;
-    case 4: acbb_preload_drain(a); break;
-    default: acbb_job_drain_wake(acbb_sensjob_job(a->sens)); break;
-    }
+    if (k == 0) acbb_worker_drain_wake(a->worker);
+    else acbb_screens[k - 1]->wake(a);
 }
 
 static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
@@ -623,6 +613,7 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     FD_SET(sfd, &rf);
     for (int k = 0; k < N_WAKES; k++) {
         int fd = wake_fd(a, k);
+        if (fd < 0) continue;
         FD_SET(fd, &rf);
         if (fd > maxfd) maxfd = fd;
     }
@@ -635,7 +626,10 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     }
     r->input = FD_ISSET(STDIN_FILENO, &rf);
     r->signal = FD_ISSET(sfd, &rf);
-    for (int k = 0; k < N_WAKES; k++) r->wake[k] = FD_ISSET(wake_fd(a, k), &rf);
+    for (int k = 0; k < N_WAKES; k++) {
+        int fd = wake_fd(a, k);
+        r->wake[k] = fd >= 0 && FD_ISSET(fd, &rf);
+    }
 }
 
 /* Leaving on a signal or a second Ctrl-C: the edits go to the recovery
@@ -756,14 +750,10 @@ int acbb_app_run(const acbb_app_options *opt)
 {
     acbb_error err = { { 0 } };
     acbb_app *a = calloc(1, sizeof *a);
-    char *preview = calloc(1, ACBB_PREVIEW_MAX);
-    if (!a || !preview) {
-        free(a);
-        free(preview);
+    if (!a) {
         fprintf(stderr, "acbb tui: out of memory\n");
         return ACBB_EXIT_INTERNAL;
     }
-    a->preview = preview;
     a->chart_by_time = 1;
     a->exit_after_steady = opt->exit_after_steady;
     a->pace_idx = pace_index(opt->pace < 0 ? PACE_DEFAULT : opt->pace);
@@ -773,20 +763,15 @@ int acbb_app_run(const acbb_app_options *opt)
 
     if (acbb_term_open(&a->term, &err) != ACBB_OK) {
         fprintf(stderr, "acbb tui: %s\n", err.msg);
-        free(preview);
         free(a);
         return ACBB_EXIT_INPUT;
     }
     int rc = 0;
     if (!opt->no_mouse) a->mouse = acbb_term_mouse(&a->term);
-    if (acbb_bench_new(&a->bench, &err) != ACBB_OK || acbb_sweepjob_new(&a->sweep, &err) != ACBB_OK ||
-        acbb_sensjob_new(&a->sens, &err) != ACBB_OK || acbb_preload_new(a, &err) != ACBB_OK ||
+    if (acbb_screens_init(a, &err) != ACBB_OK ||
         acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
         acbb_term_close(&a->term);
-        acbb_bench_free(a->bench);
-        acbb_sweepjob_free(a->sweep);
-        acbb_sensjob_free(a->sens);
-        acbb_preload_free(a);
+        acbb_screens_free(a);
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         rc = ACBB_EXIT_INTERNAL;
     } else {
@@ -797,14 +782,10 @@ int acbb_app_run(const acbb_app_options *opt)
          * stops within one step. */
         acbb_term_close(&a->term);
         fputs(a->leave_msg, stderr);
-        acbb_bench_free(a->bench);
-        acbb_sweepjob_free(a->sweep);
-        acbb_sensjob_free(a->sens);
-        acbb_preload_free(a);
+        acbb_screens_free(a);
         acbb_worker_free(a->worker);
         rc = a->exit_code;
     }
-    free(preview);
     free(a);
     return rc;
 }

@@ -12,6 +12,9 @@ enum { ACBB_RAN_SWEEP, ACBB_RAN_SENS, ACBB_RAN_BENCH, ACBB_RAN_COMPARE, ACBB_RAN
 /* A job (ACBB_RAN_*) was started on the edited scene: its result belongs to
  * that scene and is hidden while the edited scene differs from it. */
 void acbb_results_ran(acbb_app *a, int which);
+/* 1 when job `which`'s result is finished (finished != 0) on a scene the
+ * editor no longer holds (marked for acbb_results_note): hide it. */
+int acbb_results_stale(acbb_app *a, int which, int finished);
 /* Why job `which` shows no result when an edit hid it (for its idle
  * text), else NULL. */
 const char *acbb_results_note(const acbb_app *a, int which);

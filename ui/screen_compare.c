@@ -153,16 +153,42 @@ static void draw(acbb_app *a)
         acbb_put_wrap(a, y, b.x, b.w, b.y + b.h - y, ACBB_ROLE_ERROR, c->message);
 }
 
+/* ---- the comparison's lifecycle (screens.h): the worker runs it, this
+ * screen decides whether its result still belongs to the open scene ---- */
+
+extern const acbb_screen acbb_screen_compare;
+
+typedef struct {
+    int hidden;                    /* the result belongs to a preset no longer open (results.c) */
+} compare_ui;
+
+static compare_ui *cmp(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_compare);
+}
+
+static void poll(acbb_app *a)
+{
+    if (cmp(a)->hidden || acbb_results_stale(a, ACBB_RAN_COMPARE, a->st.compare.phase == ACBB_CMP_DONE))
+        memset(&a->st.compare, 0, sizeof a->st.compare);
+}
+
+static void drop(acbb_app *a) { cmp(a)->hidden = 1; }
+
+static int running(const acbb_app *a) { return a->st.compare.phase == ACBB_CMP_RUNNING; }
+
 const acbb_screen acbb_screen_compare = {
     .name = "TE/WTE", .key = '6', .draw = draw,
     .hint = "t run TE vs WTE  r run  ? help  q quit",
+    .state_size = sizeof(compare_ui), .poll = poll, .drop = drop, .running = running,
+    .job_subject = "The TE/WTE comparison", .job_noun = "comparison",
 };
 
 /* `t` is global: it starts the comparison from any screen and shows this one. */
 void acbb_screen_compare_start(acbb_app *a)
 {
     acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
-    a->hide.compare = 0; /* this one belongs to the open preset */
+    cmp(a)->hidden = 0; /* this one belongs to the open preset */
     acbb_results_ran(a, ACBB_RAN_COMPARE);
     acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
