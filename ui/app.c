@@ -754,7 +754,6 @@ int acbb_app_run(const acbb_app_options *opt)
         fprintf(stderr, "acbb tui: out of memory\n");
         return ACBB_EXIT_INTERNAL;
     }
-    a->chart_by_time = 1;
     a->exit_after_steady = opt->exit_after_steady;
     a->pace_idx = pace_index(opt->pace < 0 ? PACE_DEFAULT : opt->pace);
     a->acc_knobs = opt->acc_knobs;

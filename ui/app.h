@@ -38,7 +38,6 @@ typedef struct {
     double r[4];                   /* xlo, xhi, ylo, yhi */
 } acbb_axis_memo;
 
-#define ACBB_CHART_MEMOS 5
 #define ACBB_MAX_TABS 16
 
 typedef struct acbb_app acbb_app;
@@ -79,7 +78,6 @@ struct acbb_app {
     int pace_idx;
     char plot_dir[PATH_MAX];
     int help_top;                  /* the `?` screen (a mode, not a tab): first row shown */
-    int chart_by_time;             /* charts: x = simulated time (1) or iteration (0) */
     unsigned long shown_err;       /* worker error already shown */
     int exit_after_steady;
     unsigned long start_cmd;       /* command that started the watched run */
@@ -87,7 +85,7 @@ struct acbb_app {
     int quit, exit_code;
     char leave_msg[768];      /* printed once the terminal is restored (recover.c) */
     acbb_chart chart;              /* scratch raster */
-    acbb_axis_memo memo[ACBB_CHART_MEMOS]; /* Run chart, then the three history charts */
+    acbb_axis_memo run_memo;       /* the Run screen's temperature chart (draw_chart.c) */
     int bigview;                   /* Run screen: presentation view (v) */
     int has_base;                  /* a baseline is pinned (m) */
     acbb_snapshot base;            /* ... this result */

@@ -30,6 +30,7 @@ typedef struct {
     unsigned long seen_run;        /* run whose end was already announced */
     unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
     char metric_custom[ACBB_SENS_METRIC]; /* a typed metric: the last entry of both screens' menus */
+    acbb_axis_memo memo;           /* the chart's widen-only ranges */
 } sweep_ui;
 
 extern const acbb_screen acbb_screen_sweep;
@@ -336,7 +337,7 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
     acbb_chart_spec sp = { .title = label, .yunit = yunit,
                            .xunit = fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "", .x = x,
                            .ys = ys, .names = names, .nser = 1, .n = n, .floor_y = NAN,
-                           .memo = &a->memo[4], .memo_key = sw(a)->v.job.run_id * 64 + (unsigned)m,
+                           .memo = &sw(a)->memo, .memo_key = sw(a)->v.job.run_id * 64 + (unsigned)m,
                            .x_fixed = isfinite(span[0]), .x0 = span[0], .x1 = span[1] };
     if (sw(a)->v.job.phase == ACBB_JOB_IDLE) {
         const char *note = acbb_results_note(a, ACBB_RAN_SWEEP);
