@@ -97,8 +97,7 @@ static void open_now(acbb_app *a, const char *path)
     /* The last preset's results must not pose as this one's (issue 21 item 2):
      * the worker goes back to ambient with the new scene, idle. */
     acbb_app_post(a, ACBB_CMD_RESET, &a->ed.scene, 0, "reset");
-    acbb_results_drop(a); /* and so must every other screen's (issue 29 item 2) */
-    a->has_base = 0;
+    acbb_results_drop(a); /* and so must every other screen's (issue 29 item 2), the baseline too */
     acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
     offer_recovery(a);
 }
@@ -209,22 +208,6 @@ int acbb_app_polished(const acbb_app *a)
     return a->st.phase == ACBB_WORKER_DONE && a->st.snap.state == ACBB_RUN_CONVERGED && a->hist.n > 1;
 }
 
-/* m: pin the result on screen as the what-if baseline; M clears it. */
-static void baseline(acbb_app *a, int pin)
-{
-    if (!pin) {
-        a->has_base = 0;
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, "baseline cleared");
-    } else if (!a->st.has_snapshot) {
-        acbb_app_msg(a, ACBB_ROLE_WARN, "no result to pin yet (r runs one)");
-    } else {
-        a->base = a->st.snap;
-        a->has_base = 1;
-        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned (t = %.0f s): Run shows changes against it; M clears",
-                     a->base.time);
-    }
-}
-
 /* `/` and n/N go to the screen's (or the help's) search. */
 static void search(acbb_app *a, int dir)
 {
@@ -277,13 +260,9 @@ static void global_key(acbb_app *a, int ch)
     case '?': case KEY_F(1): a->mode = ACBB_MODE_HELP; a->help_top = 0; break;
     case 'q': case KEY_F(10): request_quit(a); break;
     case 12: clearok(curscr, TRUE); break; /* Ctrl-L: redraw from scratch */
-    case 'v':
-        a->bigview = !a->bigview;
-        acbb_screen_show(a, acbb_screen_index(&acbb_screen_run));
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, a->bigview ? "presentation view (v: back)" : "panels view");
-        break;
-    case 'm': baseline(a, 1); break;
-    case 'M': baseline(a, 0); break;
+    case 'v': acbb_screen_run_view(a); break;
+    case 'm': acbb_screen_run_pin(a, 1); break;
+    case 'M': acbb_screen_run_pin(a, 0); break;
     case '/': case 'n': case 'N': acbb_app_search_key(a, ch, 0); break;
     case KEY_MOUSE: acbb_app_mouse(a); break;
     case 'r': acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started (cold, edited scene)"); break;

@@ -86,9 +86,6 @@ struct acbb_app {
     char leave_msg[768];      /* printed once the terminal is restored (recover.c) */
     acbb_chart chart;              /* scratch raster */
     acbb_axis_memo run_memo;       /* the Run screen's temperature chart (draw_chart.c) */
-    int bigview;                   /* Run screen: presentation view (v) */
-    int has_base;                  /* a baseline is pinned (m) */
-    acbb_snapshot base;            /* ... this result */
     char search[64];               /* last / search */
     int mouse;                     /* mouse reports on */
     int search_help;               /* the / prompt searches the help */
@@ -173,9 +170,11 @@ int acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_r
 void acbb_draw_temp_chart(acbb_app *a, acbb_rect r);
 /* 1 when the history ends with the converged run's steady solve. */
 int acbb_app_polished(const acbb_app *a);
-/* The presentation view: headline numbers in big digits, chart below (bigview.c). */
-void acbb_draw_bigview(acbb_app *a, acbb_rect r);
-/* ---- the Run screen's words (screen_run.c) ---- */
+/* The presentation view, changes against base (NULL: none) (bigview.c). */
+void acbb_draw_bigview(acbb_app *a, acbb_rect r, const acbb_snapshot *base);
+/* ---- the Run screen's words and global keys (screen_run.c) ---- */
+void acbb_screen_run_pin(acbb_app *a, int pin); /* m pins the result as the baseline, M (0) clears it */
+void acbb_screen_run_view(acbb_app *a);         /* v: the presentation view or the panels */
 void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role);
 void acbb_run_outer_label(const acbb_snapshot *s, char *buf, size_t n);
 /* "+1.23 +4.5%": v against base, the percentage of |ref|. */
