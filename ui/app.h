@@ -93,10 +93,7 @@ struct acbb_app {
     int bearing;                   /* a set's bearing the screens show (screen_set.c) */
     void *screen_state[ACBB_MAX_TABS]; /* each screen's own (screens.h init), by table index */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
-    struct {                       /* which scene the jobs' results belong to (results.c) */
-        acbb_scene ran_on[4];      /* the scene each job last started on (ACBB_RAN_* below PRELOAD) */
-        unsigned edited;           /* bit ACBB_RAN_*: its finished result is hidden, the scene was edited since */
-    } hide;
+    unsigned edit_hid;             /* bit per screen index: an edit of the scene hid its job's result (results.c) */
 };
 
 /* Options from the command line. */

@@ -17,28 +17,23 @@ void acbb_results_drop(acbb_app *a)
         if (acbb_screens[i]->drop) acbb_screens[i]->drop(a);
 }
 
-void acbb_results_ran(acbb_app *a, int which)
+int acbb_results_stale(acbb_app *a, const acbb_screen *s, const acbb_scene *ran_on, int finished)
 {
-    a->hide.ran_on[which] = a->ed.scene;
-}
-
-int acbb_results_stale(acbb_app *a, int which, int finished)
-{
-    int stale = finished && acbb_editor_differs(&a->hide.ran_on[which], &a->ed.scene);
-    if (stale) a->hide.edited |= 1u << which;
+    int stale = finished && acbb_editor_differs(ran_on, &a->ed.scene);
+    if (stale) a->edit_hid |= 1u << acbb_screen_index(s);
     return stale;
 }
 
 void acbb_results_take(acbb_app *a)
 {
-    a->hide.edited = 0;
+    a->edit_hid = 0;
     for (int i = 0; i < acbb_screen_count; i++)
         if (acbb_screens[i]->poll) acbb_screens[i]->poll(a);
 }
 
-const char *acbb_results_note(const acbb_app *a, int which)
+const char *acbb_results_note(const acbb_app *a, const acbb_screen *s)
 {
-    return a->hide.edited & (1u << which)
+    return a->edit_hid & (1u << acbb_screen_index(s))
            ? "(the last result is hidden: the scene was edited since it ran; u undoes, r reruns)" : NULL;
 }
 

@@ -21,6 +21,7 @@ typedef struct {
     unsigned long seen_run;        /* run whose end was already announced */
     unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
     int top;                       /* first table row shown */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
 } acc_ui;
 
 static acc_ui *acc(const acbb_app *a)
@@ -50,7 +51,7 @@ void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic)
     snprintf(acc(a)->scene, sizeof acc(a)->scene, "%s%s", acbb_editor_name(&a->ed),
              a->ed.modified ? "*" : "");
     acc(a)->top = 0;
-    acbb_results_ran(a, ACBB_RAN_BENCH);
+    acc(a)->ran_on = a->ed.scene;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "accuracy benchmark started: %zu settings%s (x cancels)",
                  acbb_accuracy_plan_size(&o), with_dynamic ? " with the dynamic level" : "");
 }
@@ -101,7 +102,8 @@ static void poll(acbb_app *a)
 {
     acc_ui *p = acc(a);
     acbb_bench_read(p->job, &p->st);
-    if (p->st.run_id == p->hidden_run || acbb_results_stale(a, ACBB_RAN_BENCH, p->st.phase > ACBB_BENCH_RUNNING))
+    if (p->st.run_id == p->hidden_run ||
+        acbb_results_stale(a, &acbb_screen_accuracy, &p->ran_on, p->st.phase > ACBB_BENCH_RUNNING))
         memset(&p->st, 0, sizeof p->st);
     follow(a);
 }
@@ -168,8 +170,8 @@ static void draw_heading(acbb_app *a)
     case ACBB_BENCH_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "b runs it on the edited scene, one run per setting; B adds the dynamic level");
-        if (acbb_results_note(a, ACBB_RAN_BENCH))
-            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_BENCH));
+        if (acbb_results_note(a, &acbb_screen_accuracy))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, &acbb_screen_accuracy));
         break;
     case ACBB_BENCH_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, s->cancel_requested, s->started_s, s->done, s->total,

@@ -10,6 +10,18 @@
 #include "results.h"
 #include "screens.h"
 
+extern const acbb_screen acbb_screen_compare;
+
+typedef struct {
+    int hidden;                    /* the result belongs to a preset no longer open (results.c) */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
+} compare_ui;
+
+static compare_ui *cmp(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_compare);
+}
+
 typedef struct {
     const char *name;
     size_t off;      /* offset of a double in acbb_snapshot */
@@ -86,7 +98,7 @@ static int put_rows(acbb_app *a, int y, const acbb_compare_result *c, const row_
 static int loss_rows(acbb_app *a, int y, const acbb_compare_result *c)
 {
     acbb_loss_kind k[ACBB_LOSS_KINDS];
-    int n = acbb_loss_rows(&a->hide.ran_on[ACBB_RAN_COMPARE], k);
+    int n = acbb_loss_rows(&cmp(a)->ran_on, k);
     char label[ACBB_LOSS_KINDS][32];
     row_spec rows[ACBB_LOSS_KINDS];
     for (int i = 0; i < n; i++) {
@@ -105,7 +117,7 @@ static void draw(acbb_app *a)
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER,
              "TE vs WTE: the edited scene with thermal expansion on / off   t: run");
     if (c->phase == ACBB_CMP_NONE) {
-        const char *note = acbb_results_note(a, ACBB_RAN_COMPARE);
+        const char *note = acbb_results_note(a, &acbb_screen_compare);
         if (note) acbb_put_wrap(a, y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note);
         acbb_put(a, y + 1, b.x + 2, b.w - 2, ACBB_ROLE_NORMAL,
                  "Press t to run both variants to steady state.");
@@ -156,20 +168,10 @@ static void draw(acbb_app *a)
 /* ---- the comparison's lifecycle (screens.h): the worker runs it, this
  * screen decides whether its result still belongs to the open scene ---- */
 
-extern const acbb_screen acbb_screen_compare;
-
-typedef struct {
-    int hidden;                    /* the result belongs to a preset no longer open (results.c) */
-} compare_ui;
-
-static compare_ui *cmp(const acbb_app *a)
-{
-    return acbb_screen_state(a, &acbb_screen_compare);
-}
-
 static void poll(acbb_app *a)
 {
-    if (cmp(a)->hidden || acbb_results_stale(a, ACBB_RAN_COMPARE, a->st.compare.phase == ACBB_CMP_DONE))
+    if (cmp(a)->hidden ||
+        acbb_results_stale(a, &acbb_screen_compare, &cmp(a)->ran_on, a->st.compare.phase == ACBB_CMP_DONE))
         memset(&a->st.compare, 0, sizeof a->st.compare);
 }
 
@@ -189,7 +191,7 @@ void acbb_screen_compare_start(acbb_app *a)
 {
     acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
     cmp(a)->hidden = 0; /* this one belongs to the open preset */
-    acbb_results_ran(a, ACBB_RAN_COMPARE);
+    cmp(a)->ran_on = a->ed.scene;
     acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
 

@@ -158,8 +158,7 @@ static void poll(acbb_app *a)
 {
     struct acbb_pmap_ui *p = pm(a);
     acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
-    int edited = p->info.phase > ACBB_JOB_RUNNING && acbb_editor_differs(&p->scene, &a->ed.scene);
-    if (edited) a->hide.edited |= 1u << ACBB_RAN_PRELOAD; /* results.c */
+    int edited = acbb_results_stale(a, &acbb_screen_preload, &p->scene, p->info.phase > ACBB_JOB_RUNNING);
     if (p->info.run_id == p->hidden_run || edited) { /* reads as never started */
         memset(&p->info, 0, sizeof p->info);
         memset(&p->view, 0, sizeof p->view);
@@ -429,7 +428,7 @@ static void draw(acbb_app *a)
     draw_heading(a, b);
     const pm_result *v = &pm(a)->view;
     if (pm(a)->info.phase == ACBB_JOB_IDLE) {
-        const char *note = acbb_results_note(a, ACBB_RAN_PRELOAD);
+        const char *note = acbb_results_note(a, &acbb_screen_preload);
         acbb_put_wrap(a, b.y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note ? note : "(no preload map yet: r runs one)");
         return;
     }

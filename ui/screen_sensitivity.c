@@ -32,6 +32,7 @@ typedef struct {
     int metric, delta_te, morris_r, top;
     unsigned long seen_run;        /* run whose end was already announced */
     unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
 } sens_ui;
 
 extern const acbb_screen acbb_screen_sensitivity;
@@ -53,7 +54,7 @@ static void start(acbb_app *a)
         return;
     }
     sn(a)->top = 0;
-    acbb_results_ran(a, ACBB_RAN_SENS);
+    sn(a)->ran_on = a->ed.scene;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sensitivity of %s%s started on %s%s (x cancels)",
                  o.delta_te ? "TE-WTE " : "", o.metric, acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "");
@@ -101,7 +102,8 @@ static void poll(acbb_app *a)
 {
     sens_ui *p = sn(a);
     acbb_sensjob_read(p->job, &p->v);
-    if (p->v.job.run_id == p->hidden_run || acbb_results_stale(a, ACBB_RAN_SENS, p->v.job.phase > ACBB_JOB_RUNNING))
+    if (p->v.job.run_id == p->hidden_run ||
+        acbb_results_stale(a, &acbb_screen_sensitivity, &p->ran_on, p->v.job.phase > ACBB_JOB_RUNNING))
         memset(&p->v, 0, sizeof p->v);
     follow(a);
 }
@@ -146,8 +148,8 @@ static void draw_heading(acbb_app *a, acbb_rect b)
     case ACBB_JOB_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "< > metric  d TE-WTE  y Morris  r/Enter runs it on the edited scene");
-        if (acbb_results_note(a, ACBB_RAN_SENS))
-            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_SENS));
+        if (acbb_results_note(a, &acbb_screen_sensitivity))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, &acbb_screen_sensitivity));
         break;
     case ACBB_JOB_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, v->job.cancel_requested, v->job.started_s, v->done,

@@ -31,6 +31,7 @@ typedef struct {
     unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
     char metric_custom[ACBB_SENS_METRIC]; /* a typed metric: the last entry of both screens' menus */
     acbb_axis_memo memo;           /* the chart's widen-only ranges */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
 } sweep_ui;
 
 extern const acbb_screen acbb_screen_sweep;
@@ -199,7 +200,7 @@ static void start(acbb_app *a)
         return;
     }
     sw(a)->top = 0;
-    acbb_results_ran(a, ACBB_RAN_SWEEP);
+    sw(a)->ran_on = a->ed.scene;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep started on %s%s: %s (x cancels)", acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "", spec);
 }
@@ -247,7 +248,8 @@ static void poll(acbb_app *a)
 {
     sweep_ui *p = sw(a);
     acbb_sweepjob_read(p->job, &p->v);
-    if (p->v.job.run_id == p->hidden_run || acbb_results_stale(a, ACBB_RAN_SWEEP, p->v.job.phase > ACBB_JOB_RUNNING))
+    if (p->v.job.run_id == p->hidden_run ||
+        acbb_results_stale(a, &acbb_screen_sweep, &p->ran_on, p->v.job.phase > ACBB_JOB_RUNNING))
         memset(&p->v, 0, sizeof p->v);
     follow(a);
 }
@@ -340,7 +342,7 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
                            .memo = &sw(a)->memo, .memo_key = sw(a)->v.job.run_id * 64 + (unsigned)m,
                            .x_fixed = isfinite(span[0]), .x0 = span[0], .x1 = span[1] };
     if (sw(a)->v.job.phase == ACBB_JOB_IDLE) {
-        const char *note = acbb_results_note(a, ACBB_RAN_SWEEP);
+        const char *note = acbb_results_note(a, &acbb_screen_sweep);
         acbb_put_wrap(a, r.y + 1, r.x + 2, r.w - 2, 3, ACBB_ROLE_DIM, note ? note : "(no sweep yet: r runs one)");
         return;
     }
