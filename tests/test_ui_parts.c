@@ -17,6 +17,7 @@
 #include "editor.h"
 #include "worker.h"
 #include "layout.h"
+#include "loss_rows.h"
 #include "progress.h"
 #include "recover.h"
 
@@ -532,6 +533,27 @@ static void test_recover(void)
     unsetenv("XDG_STATE_HOME");
 }
 
+/* ---- the compare screen's loss rows come from the loss table ---- */
+
+static void test_loss_rows(void)
+{
+    static acbb_editor e;
+    acbb_error err = { { 0 } };
+    ok(acbb_editor_open(&e, "presets/7008C.ini", &err) == ACBB_OK, "loss rows: opens 7008C (%s)", err.msg);
+    acbb_loss_kind k[ACBB_LOSS_KINDS];
+    char label[32];
+    int n = acbb_loss_rows(&e.scene, k);
+    acbb_loss_row_label(k[0], label, sizeof label);
+    ok(n == 5 && k[0] == ACBB_LOSS_SHEAR && k[4] == ACBB_LOSS_DRAG && strcmp(label, "  shear P_L W") == 0,
+       "loss rows: 7008C lists the seed's five, shear first (%d, '%s')", n, label);
+    e.scene.loss_cage = e.scene.loss_ehl_rolling = e.scene.loss_churning = true;
+    e.scene.loss_spin = false;
+    n = acbb_loss_rows(&e.scene, k);
+    acbb_loss_row_label(k[n - 1], label, sizeof label);
+    ok(n == 7 && k[2] == ACBB_LOSS_ROLLING && k[4] == ACBB_LOSS_CAGE && strcmp(label, "  churning P_ch W") == 0,
+       "loss rows: cage, EHL rolling and churning listed, spin dropped (%d, last '%s')", n, label);
+}
+
 int main(void)
 {
     test_pace();
@@ -544,6 +566,7 @@ int main(void)
     test_chart();
     test_nice();
     test_editor();
+    test_loss_rows();
     test_recover();
     test_acc_layout();
     test_acc_chart();

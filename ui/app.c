@@ -19,7 +19,6 @@
 #include "screens.h"
 #include "recover.h"
 #include "results.h"
-#include "screen_preload.h"
 
 #define FRAME_S 0.1          /* redraw cap for snapshot-driven frames */
 #define IDLE_TIMEOUT_S 1.0   /* redraw the clock now and then while nothing happens */
@@ -98,8 +97,7 @@ static void open_now(acbb_app *a, const char *path)
     /* The last preset's results must not pose as this one's (issue 21 item 2):
      * the worker goes back to ambient with the new scene, idle. */
     acbb_app_post(a, ACBB_CMD_RESET, &a->ed.scene, 0, "reset");
-    acbb_results_drop(a); /* and so must every other screen's (issue 29 item 2) */
-    a->has_base = 0;
+    acbb_results_drop(a); /* and so must every other screen's (issue 29 item 2), the baseline too */
     acbb_app_msg(a, ACBB_ROLE_OK, "opened %s (r: run it, a: apply warm)", path);
     offer_recovery(a);
 }
@@ -219,22 +217,6 @@ int acbb_app_polished(const acbb_app *a)
     return a->st.phase == ACBB_WORKER_DONE && a->st.snap.state == ACBB_RUN_CONVERGED && a->hist.n > 1;
 }
 
-/* m: pin the result on screen as the what-if baseline; M clears it. */
-static void baseline(acbb_app *a, int pin)
-{
-    if (!pin) {
-        a->has_base = 0;
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, "baseline cleared");
-    } else if (!a->st.has_snapshot) {
-        acbb_app_msg(a, ACBB_ROLE_WARN, "no result to pin yet (r runs one)");
-    } else {
-        a->base = a->st.snap;
-        a->has_base = 1;
-        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned (t = %.0f s): Run shows changes against it; M clears",
-                     a->base.time);
-    }
-}
-
 /* `/` and n/N go to the screen's (or the help's) search. */
 static void search(acbb_app *a, int dir)
 {
@@ -287,13 +269,9 @@ static void global_key(acbb_app *a, int ch)
     case '?': case KEY_F(1): a->mode = ACBB_MODE_HELP; a->help_top = 0; break;
     case 'q': case KEY_F(10): request_quit(a); break;
     case 12: clearok(curscr, TRUE); break; /* Ctrl-L: redraw from scratch */
-    case 'v':
-        a->bigview = !a->bigview;
-        acbb_screen_show(a, acbb_screen_index(&acbb_screen_run));
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, a->bigview ? "presentation view (v: back)" : "panels view");
-        break;
-    case 'm': baseline(a, 1); break;
-    case 'M': baseline(a, 0); break;
+    case 'v': acbb_screen_run_view(a); break;
+    case 'm': acbb_screen_run_pin(a, 1); break;
+    case 'M': acbb_screen_run_pin(a, 0); break;
     case '/': case 'n': case 'N': acbb_app_search_key(a, ch, 0); break;
     case KEY_MOUSE: acbb_app_mouse(a); break;
     case 'r': acbb_app_post(a, ACBB_CMD_START, &a->ed.scene, 0, "run started (cold, edited scene)"); break;
@@ -592,9 +570,9 @@ static void frame(acbb_app *a)
 
 /* ---- the loop ---- */
 
-/* The background threads' wake-up pipes: the Sim worker, the benchmark,
- * the sweep, the sensitivity run. */
-#define N_WAKES 5 /* and the preload map */
+/* The wake-up pipes: 0 the Sim worker, 1 + i screen i's job (screens.h
+ * wake_fd; -1 when it has none). */
+#define N_WAKES (1 + ACBB_MAX_TABS)
 
 typedef struct {
     int input, signal;
@@ -603,24 +581,15 @@ typedef struct {
 
 static int wake_fd(acbb_app *a, int k)
 {
-    switch (k) {
-    case 0: return acbb_worker_wake_fd(a->worker);
-    case 1: return acbb_bench_wake_fd(a->bench);
-    case 2: return acbb_job_wake_fd(acbb_sweepjob_job(a->sweep));
-    case 4: return acbb_preload_wake_fd(a);
-    default: return acbb_job_wake_fd(acbb_sensjob_job(a->sens));
-    }
+    if (k == 0) return acbb_worker_wake_fd(a->worker);
+    const acbb_screen *s = k - 1 < acbb_screen_count ? acbb_screens[k - 1] : NULL;
+    return s && s->wake_fd ? s->wake_fd(a) : -1;
 }
 
 static void drain_wake(acbb_app *a, int k)
 {
-    switch (k) {
-    case 0: acbb_worker_drain_wake(a->worker); break;
-    case 1: acbb_bench_drain_wake(a->bench); break;
-    case 2: acbb_job_drain_wake(acbb_sweepjob_job(a->sweep)); break;
-    case 4: acbb_preload_drain(a); break;
-    default: acbb_job_drain_wake(acbb_sensjob_job(a->sens)); break;
-    }
+    if (k == 0) acbb_worker_drain_wake(a->worker);
+    else acbb_screens[k - 1]->wake(a);
 }
 
 static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
@@ -632,6 +601,7 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     FD_SET(sfd, &rf);
     for (int k = 0; k < N_WAKES; k++) {
         int fd = wake_fd(a, k);
+        if (fd < 0) continue;
         FD_SET(fd, &rf);
         if (fd > maxfd) maxfd = fd;
     }
@@ -644,7 +614,10 @@ static void wait_events(acbb_app *a, double timeout_s, ready_fds *r)
     }
     r->input = FD_ISSET(STDIN_FILENO, &rf);
     r->signal = FD_ISSET(sfd, &rf);
-    for (int k = 0; k < N_WAKES; k++) r->wake[k] = FD_ISSET(wake_fd(a, k), &rf);
+    for (int k = 0; k < N_WAKES; k++) {
+        int fd = wake_fd(a, k);
+        r->wake[k] = fd >= 0 && FD_ISSET(fd, &rf);
+    }
 }
 
 /* Leaving on a signal or a second Ctrl-C: the edits go to the recovery
@@ -765,15 +738,10 @@ int acbb_app_run(const acbb_app_options *opt)
 {
     acbb_error err = { { 0 } };
     acbb_app *a = calloc(1, sizeof *a);
-    char *preview = calloc(1, ACBB_PREVIEW_MAX);
-    if (!a || !preview) {
-        free(a);
-        free(preview);
+    if (!a) {
         fprintf(stderr, "acbb tui: out of memory\n");
         return ACBB_EXIT_INTERNAL;
     }
-    a->preview = preview;
-    a->chart_by_time = 1;
     a->exit_after_steady = opt->exit_after_steady;
     a->pace_idx = pace_index(opt->pace < 0 ? PACE_DEFAULT : opt->pace);
     a->acc_knobs = opt->acc_knobs;
@@ -783,20 +751,15 @@ int acbb_app_run(const acbb_app_options *opt)
 
     if (acbb_term_open(&a->term, &err) != ACBB_OK) {
         fprintf(stderr, "acbb tui: %s\n", err.msg);
-        free(preview);
         free(a);
         return ACBB_EXIT_INPUT;
     }
     int rc = 0;
     if (!opt->no_mouse) a->mouse = acbb_term_mouse(&a->term);
-    if (acbb_bench_new(&a->bench, &err) != ACBB_OK || acbb_sweepjob_new(&a->sweep, &err) != ACBB_OK ||
-        acbb_sensjob_new(&a->sens, &err) != ACBB_OK || acbb_preload_new(a, &err) != ACBB_OK ||
+    if (acbb_screens_init(a, &err) != ACBB_OK ||
         acbb_worker_new(&a->ed.scene, acbb_app_pace(a->pace_idx), &a->worker, &err) != ACBB_OK) {
         acbb_term_close(&a->term);
-        acbb_bench_free(a->bench);
-        acbb_sweepjob_free(a->sweep);
-        acbb_sensjob_free(a->sens);
-        acbb_preload_free(a);
+        acbb_screens_free(a);
         fprintf(stderr, "acbb tui: %s\n", err.msg);
         rc = ACBB_EXIT_INTERNAL;
     } else {
@@ -807,14 +770,10 @@ int acbb_app_run(const acbb_app_options *opt)
          * stops within one step. */
         acbb_term_close(&a->term);
         fputs(a->leave_msg, stderr);
-        acbb_bench_free(a->bench);
-        acbb_sweepjob_free(a->sweep);
-        acbb_sensjob_free(a->sens);
-        acbb_preload_free(a);
+        acbb_screens_free(a);
         acbb_worker_free(a->worker);
         rc = a->exit_code;
     }
-    free(preview);
     free(a);
     return rc;
 }

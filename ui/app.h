@@ -29,7 +29,6 @@ typedef enum { ACBB_CONFIRM_QUIT, ACBB_CONFIRM_OPEN, ACBB_CONFIRM_RECOVER,
                ACBB_CONFIRM_CHANGED, ACBB_CONFIRM_QUIT_RUN } acbb_confirm_kind;
 
 #define ACBB_BROWSE_MAX 64
-#define ACBB_PREVIEW_MAX 65536
 
 /* A chart's axis ranges kept between frames, so they only widen while
  * `key` (run and x mode) stays the same (draw_chart.c). */
@@ -39,7 +38,6 @@ typedef struct {
     double r[4];                   /* xlo, xhi, ylo, yhi */
 } acbb_axis_memo;
 
-#define ACBB_CHART_MEMOS 5
 #define ACBB_MAX_TABS 16
 
 typedef struct acbb_app acbb_app;
@@ -80,60 +78,23 @@ struct acbb_app {
     int pace_idx;
     char plot_dir[PATH_MAX];
     bool (*installed)(const char *path, char *dir, size_t n); /* NULL: none */
-    int node_top, ball_top, help_top;
-    int balls_contact;          /* Balls screen: 1 = Hertz columns (pmax, a, b), 0 = kinematics */
-    int chart_by_time;             /* charts: x = simulated time (1) or iteration (0) */
-    int plot_kind;                 /* preview kind (acbb_plot_kind) */
-    char *preview;                 /* gnuplot dumb text, ACBB_PREVIEW_MAX bytes */
-    int preview_ok;
+    int help_top;                  /* the `?` screen (a mode, not a tab): first row shown */
     unsigned long shown_err;       /* worker error already shown */
     int exit_after_steady;
     unsigned long start_cmd;       /* command that started the watched run */
-    /* accuracy screen */
-    acbb_bench *bench;             /* the benchmark thread's hand-off */
-    acbb_bench_state bst;          /* copy of its published state, once per frame */
-    unsigned acc_knobs;            /* knob mask for b/B (0 = all) */
-    char acc_scene[256];           /* name of the scene the benchmark ran on */
-    unsigned long acc_seen_run;    /* run whose end was already announced */
-    int acc_top;                   /* first table row shown */
-    /* what-if screens (screen_sweep.c, screen_sensitivity.c) */
-    acbb_sweepjob *sweep;
-    acbb_sweep_view swv;           /* copy of its published state, once per frame */
-    acbb_sensjob *sens;
-    acbb_sens_view snv;            /* copy of its published state, once per frame */
-    char metric_custom[ACBB_SENS_METRIC]; /* a typed metric: the menu's last entry */
-    struct {
-        char key[ACBB_SWEEP_KEY];  /* the swept key ("" until chosen) */
-        char range[96];            /* "lo:hi:n" or "v1,v2,..." */
-        int chosen;                /* the key was typed (s), not a default */
-        int metric, top;           /* metric menu index; first table row shown */
-        unsigned long seen_run;    /* run whose end was already announced */
-    } sw;
-    struct {
-        int metric, delta_te, morris_r, top;
-        unsigned long seen_run;
-    } sn;
+    unsigned acc_knobs;            /* the accuracy screen's knob mask for b/B (0 = all; --knobs) */
     int quit, exit_code;
     char leave_msg[768];      /* printed once the terminal is restored (recover.c) */
     acbb_chart chart;              /* scratch raster */
-    acbb_axis_memo memo[ACBB_CHART_MEMOS]; /* Run chart, then the three history charts */
-    int bigview;                   /* Run screen: presentation view (v) */
-    int has_base;                  /* a baseline is pinned (m) */
-    acbb_snapshot base;            /* ... this result */
+    acbb_axis_memo run_memo;       /* the Run screen's temperature chart (draw_chart.c) */
     char search[64];               /* last / search */
     int mouse;                     /* mouse reports on */
     int search_help;               /* the / prompt searches the help */
     int help_hit;                  /* help row of the last search hit */
-    int node_hit;                  /* Nodes: the node the last search found (-1: none) */
     int bearing;                   /* a set's bearing the screens show (screen_set.c) */
-    struct acbb_pmap_ui *pmap;     /* the Preload screen's job and result (screen_preload.c) */
+    void *screen_state[ACBB_MAX_TABS]; /* each screen's own (screens.h init), by table index */
     int tab_x0[ACBB_MAX_TABS], tab_x1[ACBB_MAX_TABS]; /* columns of each tab, as drawn */
-    struct {                       /* results of a preset no longer open (results.c) */
-        unsigned long sweep, sens, bench; /* these runs read as never started */
-        int compare;               /* the TE/WTE comparison reads as never run */
-        acbb_scene ran_on[4];      /* the scene each job last started on (ACBB_RAN_* below PRELOAD) */
-        unsigned edited;           /* bit ACBB_RAN_*: its finished result is hidden, the scene was edited since */
-    } hide;
+    unsigned edit_hid;             /* bit per screen index: an edit of the scene hid its job's result (results.c) */
 };
 
 /* Options from the command line. */
@@ -208,15 +169,17 @@ int acbb_chart_blit(acbb_app *a, const acbb_chart *c, int y, int x, const acbb_r
 void acbb_draw_temp_chart(acbb_app *a, acbb_rect r);
 /* 1 when the history ends with the converged run's steady solve. */
 int acbb_app_polished(const acbb_app *a);
-/* The presentation view: headline numbers in big digits, chart below (bigview.c). */
-void acbb_draw_bigview(acbb_app *a, acbb_rect r);
-/* ---- the Run screen's words (screen_run.c) ---- */
+/* The presentation view, changes against base (NULL: none) (bigview.c). */
+void acbb_draw_bigview(acbb_app *a, acbb_rect r, const acbb_snapshot *base);
+/* ---- the Run screen's words and global keys (screen_run.c) ---- */
+void acbb_screen_run_pin(acbb_app *a, int pin); /* m pins the result as the baseline, M (0) clears it */
+void acbb_screen_run_view(acbb_app *a);         /* v: the presentation view or the panels */
 void acbb_run_state_text(const acbb_app *a, char *buf, size_t n, acbb_role *role);
 void acbb_run_outer_label(const acbb_snapshot *s, char *buf, size_t n);
 /* "+1.23 +4.5%": v against base, the percentage of |ref|. */
 void acbb_fmt_delta(double v, double base, double ref, char *buf, size_t n);
-/* The accuracy screen's error-vs-time chart of a->bst in rect (draw_acc_chart.c). */
-void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r);
+/* The accuracy screen's error-vs-time chart of benchmark state st in rect (draw_acc_chart.c). */
+void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r, const acbb_bench_state *st);
 /* "1h02m", "12.3s", "--" for unknown. */
 void acbb_fmt_duration(double s, char *buf, size_t n);
 /* "x200" (simulated seconds per wall second) or "max" for 0. */
@@ -241,11 +204,6 @@ void acbb_screen_plot_export(acbb_app *a);
 void acbb_screen_compare_start(acbb_app *a);
 /* Start the benchmark on the edited scene (with the dynamic level or not). */
 void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic);
-/* Announce the end of a benchmark on the message line (once per run). */
-void acbb_screen_accuracy_follow(acbb_app *a);
-/* Announce the end of a sweep / sensitivity run (once per run). */
-void acbb_screen_sweep_follow(acbb_app *a);
-void acbb_screen_sensitivity_follow(acbb_app *a);
 /* The metric path and label of menu entry i (the last: a typed metric). */
 const char *acbb_whatif_metric(const acbb_app *a, int i, const char **label);
 /* Entries in the metric menu (with the typed one when there is one). */

@@ -62,12 +62,12 @@ static int loaded_ball(const acbb_snapshot *s)
     return k;
 }
 
-static void headlines(acbb_app *a, headline h[4])
+static void headlines(acbb_app *a, headline h[4], const acbb_snapshot *b)
 {
-    const acbb_snapshot *s = &a->st.snap, *b = &a->base;
+    const acbb_snapshot *s = &a->st.snap;
     const double R2D = 1.0 / ACBB_DEG;
-    int k = loaded_ball(s), kb = loaded_ball(b);
-    const acbb_ball_view *v = &s->balls[k], *vb = &b->balls[kb];
+    int k = loaded_ball(s);
+    const acbb_ball_view *v = &s->balls[k];
     char outer[32];
     acbb_run_outer_label(s, outer, sizeof outer);
     snprintf(h[0].label, sizeof h[0].label, "%s, C", outer);
@@ -79,7 +79,8 @@ static void headlines(acbb_app *a, headline h[4])
     snprintf(h[3].label, sizeof h[3].label, "Contact angles in/out, deg");
     snprintf(h[3].value, sizeof h[3].value, "%.1f/%.1f", v->alpha_i * R2D, v->alpha_o * R2D);
     for (int i = 0; i < 4; i++) h[i].delta[0] = '\0';
-    if (!a->has_base || s->n_balls == 0) return;
+    if (!b || s->n_balls == 0) return;
+    const acbb_ball_view *vb = &b->balls[loaded_ball(b)];
     double amb = a->st.scene.ambient_C;
     acbb_fmt_delta(s->T_outer_ring, b->T_outer_ring, b->T_outer_ring - amb, h[0].delta, sizeof h[0].delta);
     acbb_fmt_delta(s->losses.total, b->losses.total, b->losses.total, h[1].delta, sizeof h[1].delta);
@@ -92,10 +93,10 @@ static void headlines(acbb_app *a, headline h[4])
     snprintf(h[3].delta, sizeof h[3].delta, "in %s out %s", d[0], d[1]);
 }
 
-void acbb_draw_bigview(acbb_app *a, acbb_rect r)
+void acbb_draw_bigview(acbb_app *a, acbb_rect r, const acbb_snapshot *base)
 {
     headline h[4];
-    headlines(a, h);
+    headlines(a, h, base);
     int per_row = r.w >= 4 * 40 ? 4 : 2, cw = r.w / per_row, ch = GLYPH_H + 2;
     for (int i = 0; i < 4; i++) {
         int y = r.y + (i / per_row) * ch, x = r.x + (i % per_row) * cw;

@@ -103,15 +103,15 @@ static void plot_points(acbb_app *a, acbb_rect r, const acbb_acc_chart *m)
     acbb_chart_blit(a, c, r.y + 1, r.x + LABEL_W, series_role, 3);
 }
 
-void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r)
+void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r, const acbb_bench_state *st)
 {
     acbb_acc_chart m;
     if (r.h < 4 || r.w < LABEL_W + 16) return;
-    acbb_acc_chart_build(a->bst.rows, a->bst.n, &m);
+    acbb_acc_chart_build(st->rows, st->n, &m);
     chart_legend(a, r, &m);
     if (m.n == 0) {
         acbb_put(a, r.y + 1, r.x + LABEL_W, r.w - LABEL_W, ACBB_ROLE_DIM, "%s",
-                 a->bst.phase == ACBB_BENCH_RUNNING ? "(points appear when the plan has run)"
+                 st->phase == ACBB_BENCH_RUNNING ? "(points appear when the plan has run)"
                                                     : "(no errors to plot)");
         return;
     }
@@ -129,7 +129,7 @@ void acbb_draw_accuracy_chart(acbb_app *a, acbb_rect r)
         int row, col;
         if (!acbb_chart_locate(c, m.p[i].x, m.p[i].y, &row, &col)) continue;
         int k = (int)m.p[i].knob;
-        acbb_role role = is_pick(&a->bst, m.p[i].row) ? ACBB_ROLE_SELECTED : series_role[k % 3];
+        acbb_role role = is_pick(st, m.p[i].row) ? ACBB_ROLE_SELECTED : series_role[k % 3];
         acbb_put(a, r.y + 1 + row, r.x + LABEL_W + col, 1, role, "%c",
                  acbb_acc_knob_letter((acbb_accuracy_knob)k));
     }

@@ -264,7 +264,7 @@ void acbb_draw_temp_chart(acbb_app *a, acbb_rect r)
     const char *names[3] = { "outer ring", "inner ring", "ball" };
     acbb_chart_spec sp = { .title = "Temperature", .yunit = "C", .xunit = "s", .x = x, .ys = ys,
                            .names = names, .nser = 3, .n = n, .polish = acbb_app_polished(a),
-                           .floor_y = a->st.scene.ambient_C, .memo = &a->memo[0],
+                           .floor_y = a->st.scene.ambient_C, .memo = &a->run_memo,
                            .memo_key = a->st.run_id * 2 + 1 };
     acbb_chart_draw(a, r, &sp);
 }

@@ -9,84 +9,47 @@
 #include <stdio.h>
 #include <string.h>
 #include "results.h"
-#include "screen_preload.h"
 #include "screens.h"
 
 void acbb_results_drop(acbb_app *a)
 {
-    acbb_job_cancel(acbb_sweepjob_job(a->sweep));
-    acbb_job_cancel(acbb_sensjob_job(a->sens));
-    acbb_bench_cancel(a->bench);
-    /* Fresh reads: a run started since the last frame is hidden too. */
-    acbb_sweepjob_read(a->sweep, &a->swv);
-    acbb_sensjob_read(a->sens, &a->snv);
-    acbb_bench_read(a->bench, &a->bst);
-    a->hide.sweep = a->swv.job.run_id;
-    a->hide.sens = a->snv.job.run_id;
-    a->hide.bench = a->bst.run_id;
-    a->hide.compare = 1;
-    acbb_preload_drop(a);
+    for (int i = 0; i < acbb_screen_count; i++)
+        if (acbb_screens[i]->drop) acbb_screens[i]->drop(a);
 }
 
-void acbb_results_ran(acbb_app *a, int which)
+int acbb_results_stale(acbb_app *a, const acbb_screen *s, const acbb_scene *ran_on, int finished)
 {
-    a->hide.ran_on[which] = a->ed.scene;
-}
-
-/* A finished result of job `which` on a scene the editor no longer holds. */
-static int edited_since(acbb_app *a, int which, int finished)
-{
-    int stale = finished && acbb_editor_differs(&a->hide.ran_on[which], &a->ed.scene);
-    if (stale) a->hide.edited |= 1u << which;
+    int stale = finished && acbb_editor_differs(ran_on, &a->ed.scene);
+    if (stale) a->edit_hid |= 1u << acbb_screen_index(s);
     return stale;
 }
 
 void acbb_results_take(acbb_app *a)
 {
-    a->hide.edited = 0;
-    acbb_bench_read(a->bench, &a->bst);
-    if (a->bst.run_id == a->hide.bench || edited_since(a, ACBB_RAN_BENCH, a->bst.phase > ACBB_BENCH_RUNNING))
-        memset(&a->bst, 0, sizeof a->bst);
-    acbb_screen_accuracy_follow(a);
-    acbb_sweepjob_read(a->sweep, &a->swv);
-    if (a->swv.job.run_id == a->hide.sweep || edited_since(a, ACBB_RAN_SWEEP, a->swv.job.phase > ACBB_JOB_RUNNING))
-        memset(&a->swv, 0, sizeof a->swv);
-    acbb_screen_sweep_follow(a);
-    acbb_sensjob_read(a->sens, &a->snv);
-    if (a->snv.job.run_id == a->hide.sens || edited_since(a, ACBB_RAN_SENS, a->snv.job.phase > ACBB_JOB_RUNNING))
-        memset(&a->snv, 0, sizeof a->snv);
-    acbb_screen_sensitivity_follow(a);
-    acbb_preload_take(a);
-    if (a->hide.compare || edited_since(a, ACBB_RAN_COMPARE, a->st.compare.phase == ACBB_CMP_DONE))
-        memset(&a->st.compare, 0, sizeof a->st.compare);
+    a->edit_hid = 0;
+    for (int i = 0; i < acbb_screen_count; i++)
+        if (acbb_screens[i]->poll) acbb_screens[i]->poll(a);
 }
 
-/* What runs, first the main run: its index in the names below, -1: none. */
-static int busy_index(const acbb_app *a)
+const char *acbb_results_note(const acbb_app *a, const acbb_screen *s)
 {
-    const int on[] = { a->st.phase == ACBB_WORKER_RUNNING || a->st.phase == ACBB_WORKER_PAUSED,
-                       a->st.compare.phase == ACBB_CMP_RUNNING, a->bst.phase == ACBB_BENCH_RUNNING,
-                       a->swv.job.phase == ACBB_JOB_RUNNING, a->snv.job.phase == ACBB_JOB_RUNNING,
-                       acbb_preload_running(a) };
-    for (int i = 0; i < (int)(sizeof on / sizeof on[0]); i++)
-        if (on[i]) return i;
-    return -1;
-}
-
-const char *acbb_results_note(const acbb_app *a, int which)
-{
-    return a->hide.edited & (1u << which)
+    return a->edit_hid & (1u << acbb_screen_index(s))
            ? "(the last result is hidden: the scene was edited since it ran; u undoes, r reruns)" : NULL;
 }
 
 int acbb_results_busy(const acbb_app *a, const char **subject, const char **noun)
 {
-    static const char *const subjects[] = { "A run", "The TE/WTE comparison", "The accuracy benchmark",
-                                            "A sweep", "The sensitivity analysis", "The preload map" };
-    static const char *const nouns[] = { "run", "comparison", "benchmark", "sweep", "sensitivity analysis",
-                                         "preload map" };
-    int i = busy_index(a);
-    if (subject) *subject = i >= 0 ? subjects[i] : "";
-    if (noun) *noun = i >= 0 ? nouns[i] : "";
-    return i >= 0;
+    const char *sub = "A run", *nn = "run"; /* the main run first, then the screens' jobs */
+    int busy = a->st.phase == ACBB_WORKER_RUNNING || a->st.phase == ACBB_WORKER_PAUSED;
+    for (int i = 0; !busy && i < acbb_screen_count; i++) {
+        const acbb_screen *s = acbb_screens[i];
+        if (s->running && s->running(a)) {
+            sub = s->job_subject;
+            nn = s->job_noun;
+            busy = 1;
+        }
+    }
+    if (subject) *subject = busy ? sub : "";
+    if (noun) *noun = busy ? nn : "";
+    return busy;
 }

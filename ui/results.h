@@ -5,16 +5,17 @@
 #include <stddef.h>
 #include "app.h"
 
-/* The jobs whose scene is remembered (app.h hide.ran_on; the preload map
- * keeps its own copy, screen_preload.c) and the bits of hide.edited. */
-enum { ACBB_RAN_SWEEP, ACBB_RAN_SENS, ACBB_RAN_BENCH, ACBB_RAN_COMPARE, ACBB_RAN_PRELOAD };
+#include "screens.h"
 
-/* A job (ACBB_RAN_*) was started on the edited scene: its result belongs to
- * that scene and is hidden while the edited scene differs from it. */
-void acbb_results_ran(acbb_app *a, int which);
-/* Why job `which` shows no result when an edit hid it (for its idle
- * text), else NULL. */
-const char *acbb_results_note(const acbb_app *a, int which);
+/* A job's result belongs to the scene it started on (the screen keeps a
+ * copy, ran_on) and is hidden while the edited scene differs from it. */
+
+/* 1 when screen s's job has a finished result (finished != 0) of ran_on and
+ * the editor no longer holds that scene (marked for acbb_results_note): hide it. */
+int acbb_results_stale(acbb_app *a, const acbb_screen *s, const acbb_scene *ran_on, int finished);
+/* Why screen s shows no result when an edit hid it (for its idle text),
+ * else NULL. */
+const char *acbb_results_note(const acbb_app *a, const acbb_screen *s);
 /* Another preset was opened: cancel the background work of the last one
  * and hide every screen's results of it. */
 void acbb_results_drop(acbb_app *a);

@@ -4,6 +4,7 @@
 #include <curses.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "acc_chart.h"
 #include "results.h"
@@ -11,6 +12,22 @@
 #include "export.h"
 
 extern const acbb_screen acbb_screen_accuracy;
+
+/* This screen's own state (screens.h init): the benchmark and what it shows. */
+typedef struct {
+    acbb_bench *job;               /* the benchmark thread's hand-off */
+    acbb_bench_state st;           /* copy of its published state, once per frame */
+    char scene[256];               /* name of the scene the benchmark ran on */
+    unsigned long seen_run;        /* run whose end was already announced */
+    unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
+    int top;                       /* first table row shown */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
+} acc_ui;
+
+static acc_ui *acc(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_accuracy);
+}
 
 /* ---- starting, following, cancelling ---- */
 
@@ -27,25 +44,26 @@ void acbb_screen_accuracy_start(acbb_app *a, int with_dynamic)
     };
     acbb_error err = { { 0 } };
     acbb_screen_show(a, acbb_screen_index(&acbb_screen_accuracy));
-    if (acbb_bench_start(a->bench, &a->ed.scene, &o, &err) != ACBB_OK) {
+    if (acbb_bench_start(acc(a)->job, &a->ed.scene, &o, &err) != ACBB_OK) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
         return;
     }
-    snprintf(a->acc_scene, sizeof a->acc_scene, "%s%s", acbb_editor_name(&a->ed),
+    snprintf(acc(a)->scene, sizeof acc(a)->scene, "%s%s", acbb_editor_name(&a->ed),
              a->ed.modified ? "*" : "");
-    a->acc_top = 0;
-    acbb_results_ran(a, ACBB_RAN_BENCH);
+    acc(a)->top = 0;
+    acc(a)->ran_on = a->ed.scene;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "accuracy benchmark started: %zu settings%s (x cancels)",
                  acbb_accuracy_plan_size(&o), with_dynamic ? " with the dynamic level" : "");
 }
 
-void acbb_screen_accuracy_follow(acbb_app *a)
+/* Announce the end of a benchmark (once per run). */
+static void follow(acbb_app *a)
 {
-    const acbb_bench_state *s = &a->bst;
+    const acbb_bench_state *s = &acc(a)->st;
     if (s->phase == ACBB_BENCH_IDLE || s->phase == ACBB_BENCH_RUNNING ||
-        s->run_id == a->acc_seen_run)
+        s->run_id == acc(a)->seen_run)
         return;
-    a->acc_seen_run = s->run_id;
+    acc(a)->seen_run = s->run_id;
     char took[16];
     acbb_fmt_duration(s->ended_s - s->started_s, took, sizeof took);
     if (s->phase == ACBB_BENCH_DONE)
@@ -58,9 +76,51 @@ void acbb_screen_accuracy_follow(acbb_app *a)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "accuracy benchmark failed: %s", s->message);
 }
 
+/* ---- the job's lifecycle (screens.h) ---- */
+
+static acbb_status make(void *p, acbb_error *err) { return acbb_bench_new(&((acc_ui *)p)->job, err); }
+
+static acbb_status init(acbb_app *a, void **state, acbb_error *err)
+{
+    (void)a;
+    return acbb_screen_state_new(state, sizeof(acc_ui), make, err);
+}
+
+static void acc_free(void *state)
+{
+    acc_ui *p = state;
+    if (!p) return;
+    acbb_bench_free(p->job);
+    free(p);
+}
+
+static int wake_fd(const acbb_app *a) { return acbb_bench_wake_fd(acc(a)->job); }
+
+static void wake(acbb_app *a) { acbb_bench_drain_wake(acc(a)->job); }
+
+static void poll(acbb_app *a)
+{
+    acc_ui *p = acc(a);
+    acbb_bench_read(p->job, &p->st);
+    if (p->st.run_id == p->hidden_run ||
+        acbb_results_stale(a, &acbb_screen_accuracy, &p->ran_on, p->st.phase > ACBB_BENCH_RUNNING))
+        memset(&p->st, 0, sizeof p->st);
+    follow(a);
+}
+
+static void drop(acbb_app *a)
+{
+    acc_ui *p = acc(a);
+    acbb_bench_cancel(p->job);
+    acbb_bench_read(p->job, &p->st); /* a run started since the last frame is hidden too */
+    p->hidden_run = p->st.run_id;
+}
+
+static int running(const acbb_app *a) { return acc(a)->st.phase == ACBB_BENCH_RUNNING; }
+
 static int cancel(acbb_app *a)
 {
-    if (!acbb_bench_cancel(a->bench)) return 0;
+    if (!acbb_bench_cancel(acc(a)->job)) return 0;
     acbb_app_msg(a, ACBB_ROLE_WARN, "cancelling the accuracy benchmark ...");
     return 1;
 }
@@ -69,9 +129,9 @@ static int cancel(acbb_app *a)
 
 static void export_plot(acbb_app *a)
 {
-    if (a->bst.phase != ACBB_BENCH_DONE) {
+    if (acc(a)->st.phase != ACBB_BENCH_DONE) {
         acbb_app_msg(a, ACBB_ROLE_WARN, "%s",
-                     a->bst.phase == ACBB_BENCH_RUNNING ? "the benchmark is still running"
+                     acc(a)->st.phase == ACBB_BENCH_RUNNING ? "the benchmark is still running"
                                                         : "no finished benchmark to plot (b runs one)");
         return;
     }
@@ -83,11 +143,11 @@ static void export_plot(acbb_app *a)
     wnoutrefresh(stdscr);
     doupdate();
     char title[320];
-    snprintf(title, sizeof title, "acbb bench accuracy %s (1 run per setting)", a->acc_scene);
+    snprintf(title, sizeof title, "acbb bench accuracy %s (1 run per setting)", acc(a)->scene);
     acbb_error err = { { 0 } };
     int written = 0;
     char sfx[16];
-    if (acbb_export_accuracy(a->plot_dir, a->bst.rows, a->bst.n, title, sfx, sizeof sfx, &written, &err) !=
+    if (acbb_export_accuracy(a->plot_dir, acc(a)->st.rows, acc(a)->st.n, title, sfx, sizeof sfx, &written, &err) !=
         ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
     else
@@ -99,19 +159,19 @@ static void export_plot(acbb_app *a)
 
 static void draw_heading(acbb_app *a)
 {
-    const acbb_bench_state *s = &a->bst;
+    const acbb_bench_state *s = &acc(a)->st;
     acbb_rect b = a->lay.body;
     char el[16];
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER,
              "Accuracy vs time: each [fidelity] knob against its finest setting%s%s",
-             s->phase == ACBB_BENCH_IDLE ? "" : ", ", s->phase == ACBB_BENCH_IDLE ? "" : a->acc_scene);
+             s->phase == ACBB_BENCH_IDLE ? "" : ", ", s->phase == ACBB_BENCH_IDLE ? "" : acc(a)->scene);
     int y = b.y + 1;
     switch (s->phase) {
     case ACBB_BENCH_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "b runs it on the edited scene, one run per setting; B adds the dynamic level");
-        if (acbb_results_note(a, ACBB_RAN_BENCH))
-            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_BENCH));
+        if (acbb_results_note(a, &acbb_screen_accuracy))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, &acbb_screen_accuracy));
         break;
     case ACBB_BENCH_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, s->cancel_requested, s->started_s, s->done, s->total,
@@ -142,11 +202,11 @@ static int is_pick(const acbb_bench_state *s, size_t i)
 
 static void draw_row(acbb_app *a, int y, acbb_rect r, size_t i)
 {
-    const acbb_accuracy_row *row = &a->bst.rows[i];
+    const acbb_accuracy_row *row = &acc(a)->st.rows[i];
     char label[96], mark[4], ms[16], e[4][16];
     acbb_acc_setting_label(row, label, sizeof label);
     snprintf(mark, sizeof mark, "%s%s%s", row->is_reference ? "R" : "", row->is_default ? "D" : "",
-             is_pick(&a->bst, i) ? "*" : "");
+             is_pick(&acc(a)->st, i) ? "*" : "");
     if (isfinite(row->wall_ms)) snprintf(ms, sizeof ms, "%8.1f", row->wall_ms);
     else snprintf(ms, sizeof ms, "%8s", "-");
     const double errs[4] = { row->e_loss, row->e_T, row->e_Qi, row->e_alpha };
@@ -155,29 +215,29 @@ static void draw_row(acbb_app *a, int y, acbb_rect r, size_t i)
                          : row->status == ACBB_OK ? "converged" : acbb_status_name(row->status);
     acbb_role role = row->skipped ? ACBB_ROLE_DIM
                      : row->status != ACBB_OK ? ACBB_ROLE_ERROR
-                     : is_pick(&a->bst, i) ? ACBB_ROLE_OK : ACBB_ROLE_NORMAL;
+                     : is_pick(&acc(a)->st, i) ? ACBB_ROLE_OK : ACBB_ROLE_NORMAL;
     acbb_put(a, y, r.x, r.w, role, "%-19s %-3s %-13s %s %6s %6s %6s %6s", label, mark, status, ms,
              e[0], e[1], e[2], e[3]);
 }
 
 static void draw_table(acbb_app *a, acbb_rect r)
 {
-    const acbb_bench_state *s = &a->bst;
+    const acbb_bench_state *s = &acc(a)->st;
     if (r.h < 2) return;
     int visible = r.h - 1;
     int lines = (int)s->n + (s->phase == ACBB_BENCH_RUNNING && s->done < s->total);
     int max_top = lines > visible ? lines - visible : 0;
-    if (a->acc_top > max_top) a->acc_top = max_top;
-    if (a->acc_top < 0) a->acc_top = 0;
+    if (acc(a)->top > max_top) acc(a)->top = max_top;
+    if (acc(a)->top < 0) acc(a)->top = 0;
     /* Which rows are shown, in the first column: the line is full at 80. */
     char first[48] = "setting";
     if (max_top > 0)
-        snprintf(first, sizeof first, "setting %d-%d/%d", a->acc_top + 1,
-                 a->acc_top + (visible < lines ? visible : lines), lines);
+        snprintf(first, sizeof first, "setting %d-%d/%d", acc(a)->top + 1,
+                 acc(a)->top + (visible < lines ? visible : lines), lines);
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%-19s %-3s %-13s %8s %6s %6s %6s %6s", first, "",
              "status", "ms", "loss%", "T%", "Qi%", "alpha%");
     for (int k = 0; k < visible; k++) {
-        int i = a->acc_top + k, y = r.y + 1 + k;
+        int i = acc(a)->top + k, y = r.y + 1 + k;
         if (i < (int)s->n) draw_row(a, y, r, (size_t)i);
         else if (i < lines)
             acbb_put(a, y, r.x, r.w, ACBB_ROLE_DIM, "... setting %zu of %zu running", s->done + 1,
@@ -218,7 +278,7 @@ static int wrap_picks(acbb_app *a, acbb_rect r, int x0, int brief, int draw)
     int y = r.y, x = x0, gap = brief ? 1 : 2;
     for (int k = 0; k < ACBB_KNOB_COUNT; k++) {
         char t[160];
-        pick_text(&a->bst, k, brief, t, sizeof t);
+        pick_text(&acc(a)->st, k, brief, t, sizeof t);
         if (!t[0]) continue;
         int len = (int)strlen(t);
         if (x + len > r.x + r.w && x > r.x) {
@@ -235,7 +295,7 @@ static int wrap_picks(acbb_app *a, acbb_rect r, int x0, int brief, int draw)
 
 static void draw_frontier(acbb_app *a, acbb_rect r)
 {
-    const acbb_bench_state *s = &a->bst;
+    const acbb_bench_state *s = &acc(a)->st;
     if (r.h < 1) return;
     if (s->phase != ACBB_BENCH_DONE) {
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "%s",
@@ -270,7 +330,7 @@ static void draw(acbb_app *a)
     draw_heading(a);
     draw_table(a, a->lay.acc_table);
     draw_frontier(a, a->lay.acc_frontier);
-    acbb_draw_accuracy_chart(a, a->lay.acc_chart);
+    acbb_draw_accuracy_chart(a, a->lay.acc_chart, &acc(a)->st);
 }
 
 static int on_key(acbb_app *a, int ch)
@@ -281,12 +341,12 @@ static int on_key(acbb_app *a, int ch)
         if (!cancel(a)) acbb_app_msg(a, ACBB_ROLE_WARN, "no benchmark running (b starts one)");
         return 1;
     case 27: return cancel(a); /* otherwise Esc clears the message as everywhere */
-    case 'j': case KEY_DOWN: a->acc_top++; return 1;
-    case 'k': case KEY_UP: a->acc_top--; return 1;
-    case KEY_NPAGE: a->acc_top += page; return 1;
-    case KEY_PPAGE: a->acc_top -= page; return 1;
-    case KEY_HOME: a->acc_top = 0; return 1;
-    case KEY_END: a->acc_top = ACBB_BENCH_MAX_ROWS; return 1; /* clamped when drawn */
+    case 'j': case KEY_DOWN: acc(a)->top++; return 1;
+    case 'k': case KEY_UP: acc(a)->top--; return 1;
+    case KEY_NPAGE: acc(a)->top += page; return 1;
+    case KEY_PPAGE: acc(a)->top -= page; return 1;
+    case KEY_HOME: acc(a)->top = 0; return 1;
+    case KEY_END: acc(a)->top = ACBB_BENCH_MAX_ROWS; return 1; /* clamped when drawn */
     case 'g': export_plot(a); return 1;
     default: return 0;
     }
@@ -304,4 +364,6 @@ static const acbb_help_line help[] = {
 const acbb_screen acbb_screen_accuracy = {
     .name = "Accuracy", .key = '8', .draw = draw, .on_key = on_key, .help = help,
     .hint = "b benchmark  B +dynamic  x/Esc cancel  j/k scroll  g export plot  ? help",
+    .init = init, .free = acc_free, .wake_fd = wake_fd, .wake = wake, .poll = poll, .drop = drop,
+    .running = running, .job_subject = "The accuracy benchmark", .job_noun = "benchmark",
 };

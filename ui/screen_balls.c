@@ -13,6 +13,19 @@
 
 /* The Hertz view (MODEL.md 2): load, maximum pressure and the semi-axes
  * of each contact ellipse, what hertz-contact's "Look at" asks for. */
+extern const acbb_screen acbb_screen_balls;
+
+/* This screen's own state (screens.h init). */
+typedef struct {
+    int top;                       /* first ball shown */
+    int contact;                   /* 1 = Hertz columns (pmax, a, b), 0 = kinematics */
+} balls_ui;
+
+static balls_ui *bl(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_balls);
+}
+
 static void draw_contact(acbb_app *a)
 {
     const acbb_snapshot *s = &a->st.snap;
@@ -21,7 +34,7 @@ static void draw_contact(acbb_app *a)
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "%2s %5s %6s %6s %7s %7s %6s %6s %6s %6s  c: kinematics",
              "#", "psi", "Qi N", "Qo N", "pi GPa", "po GPa", "a_i mm", "b_i mm", "a_o mm", "b_o mm");
     for (int r = 0; r < a->lay.table_rows; r++) {
-        int i = a->ball_top + r;
+        int i = bl(a)->top + r;
         if (i >= s->n_balls) break;
         const acbb_ball_view *v = &s->balls[i];
         acbb_put(a, b.y + 1 + r, b.x, b.w, ACBB_ROLE_NORMAL,
@@ -33,7 +46,7 @@ static void draw_contact(acbb_app *a)
 
 static void draw(acbb_app *a)
 {
-    if (a->balls_contact) {
+    if (bl(a)->contact) {
         draw_contact(a);
         return;
     }
@@ -55,7 +68,7 @@ static void draw(acbb_app *a)
     double qmax = 1e-9;
     for (int i = 0; i < s->n_balls; i++) qmax = fmax(qmax, fmax(s->balls[i].Qi, s->balls[i].Qo));
     for (int r = 0; r < a->lay.table_rows; r++) {
-        int i = a->ball_top + r;
+        int i = bl(a)->top + r;
         if (i >= s->n_balls) break;
         const acbb_ball_view *v = &s->balls[i];
         char row[256];
@@ -77,10 +90,10 @@ static void draw(acbb_app *a)
 static int on_key(acbb_app *a, int ch)
 {
     if (ch == 'c') {
-        a->balls_contact = !a->balls_contact;
+        bl(a)->contact = !bl(a)->contact;
         return 1;
     }
-    return acbb_scroll_key(ch, a->lay.table_rows, a->st.snap.n_balls, &a->ball_top);
+    return acbb_scroll_key(ch, a->lay.table_rows, a->st.snap.n_balls, &bl(a)->top);
 }
 
 static const acbb_help_line help[] = {
@@ -90,6 +103,7 @@ static const acbb_help_line help[] = {
 };
 
 const acbb_screen acbb_screen_balls = {
+    .state_size = sizeof(balls_ui),
     .name = "Balls", .key = '3', .draw = draw, .on_key = on_key, .help = help,
     .hint = "c pmax/semi-axes  j/k scroll  r run  x stop  ? help  q quit",
 };

@@ -4,13 +4,27 @@
 #include <stdio.h>
 #include "screens.h"
 
+extern const acbb_screen acbb_screen_charts;
+
+/* This screen's own state (screens.h state_size). */
+typedef struct {
+    int by_iteration;              /* x = iteration (1) or simulated time (0, the default) */
+    acbb_axis_memo memo[3];        /* each chart's widen-only ranges */
+} charts_ui;
+
+static charts_ui *ch(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_charts);
+}
+
 static void draw(acbb_app *a)
 {
+    const int by_time = !ch(a)->by_iteration;
     double x[ACBB_HISTORY_CAP], y[5][ACBB_HISTORY_CAP]; /* 48 kB each: fine on the stack */
     size_t n = a->hist.n;
     for (size_t k = 0; k < n; k++) {
         const acbb_history_point *p = &a->hist.p[k];
-        x[k] = a->chart_by_time ? p->time : (double)p->iteration;
+        x[k] = by_time ? p->time : (double)p->iteration;
         y[0][k] = p->T_outer_ring;
         y[1][k] = p->T_inner_ring;
         y[2][k] = p->T_ball;
@@ -27,23 +41,23 @@ static void draw(acbb_app *a)
     const double *const *ser[3] = { s0, s1, s2 };
     const char *const *names[3] = { n0, n1, n2 };
     const int nser[3] = { 3, 1, 2 };
-    const char *xunit = a->chart_by_time ? "s" : "iteration";
+    const char *xunit = by_time ? "s" : "iteration";
     /* The memo key changes with the run and the x mode (i). */
-    unsigned long key = a->st.run_id * 2 + (unsigned long)a->chart_by_time;
+    unsigned long key = a->st.run_id * 2 + (unsigned long)by_time;
     for (int i = 0; i < 3; i++) {
         acbb_chart_spec sp = { .title = titles[i], .yunit = units[i], .xunit = xunit, .x = x,
                                .ys = ser[i], .names = names[i], .nser = nser[i], .n = n,
                                .polish = acbb_app_polished(a),
                                .floor_y = i == 0 ? a->st.scene.ambient_C : NAN,
-                               .memo = &a->memo[1 + i], .memo_key = key };
+                               .memo = &ch(a)->memo[i], .memo_key = key };
         acbb_chart_draw(a, a->lay.charts[i], &sp);
     }
 }
 
-static int on_key(acbb_app *a, int ch)
+static int on_key(acbb_app *a, int key)
 {
-    if (ch != 'i') return 0;
-    a->chart_by_time = !a->chart_by_time;
+    if (key != 'i') return 0;
+    ch(a)->by_iteration = !ch(a)->by_iteration;
     return 1;
 }
 
@@ -54,4 +68,5 @@ static const acbb_help_line help[] = {
 
 const acbb_screen acbb_screen_charts = {
     .name = "Charts", .key = '4', .draw = draw, .on_key = on_key, .help = help,
+    .state_size = sizeof(charts_ui),
 };

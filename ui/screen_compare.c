@@ -6,8 +6,21 @@
 #include <stdio.h>
 #include <string.h>
 #include "acbb/units.h"
+#include "loss_rows.h"
 #include "results.h"
 #include "screens.h"
+
+extern const acbb_screen acbb_screen_compare;
+
+typedef struct {
+    int hidden;                    /* the result belongs to a preset no longer open (results.c) */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
+} compare_ui;
+
+static compare_ui *cmp(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_compare);
+}
 
 typedef struct {
     const char *name;
@@ -64,6 +77,38 @@ static int squeeze_rows(acbb_app *a, int y, const acbb_compare_result *c)
     return y;
 }
 
+/* Rows TE, WTE, TE-WTE; detail rows only when the body has room. Returns
+ * the next free row. */
+static int put_rows(acbb_app *a, int y, const acbb_compare_result *c, const row_spec *rows,
+                    size_t n)
+{
+    const acbb_rect b = a->lay.body;
+    for (size_t i = 0; i < n && y < b.y + b.h; i++) {
+        if (rows[i].detail && b.h < ROOM_FOR_DETAIL) continue;
+        double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
+        double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
+        acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
+                 v1, v0 - v1);
+    }
+    return y;
+}
+
+/* Every loss the compared scene switches on, from the loss table (detail
+ * rows under the total). */
+static int loss_rows(acbb_app *a, int y, const acbb_compare_result *c)
+{
+    acbb_loss_kind k[ACBB_LOSS_KINDS];
+    int n = acbb_loss_rows(&cmp(a)->ran_on, k);
+    char label[ACBB_LOSS_KINDS][32];
+    row_spec rows[ACBB_LOSS_KINDS];
+    for (int i = 0; i < n; i++) {
+        acbb_loss_row_label(k[i], label[i], sizeof label[i]);
+        rows[i] = (row_spec){ label[i], offsetof(acbb_snapshot, losses.P) + (size_t)k[i] * sizeof(double),
+                              1, 1 };
+    }
+    return put_rows(a, y, c, rows, (size_t)n);
+}
+
 static void draw(acbb_app *a)
 {
     const acbb_compare_result *c = &a->st.compare;
@@ -72,7 +117,7 @@ static void draw(acbb_app *a)
     acbb_put(a, y++, b.x, b.w, ACBB_ROLE_HEADER,
              "TE vs WTE: the edited scene with thermal expansion on / off   t: run");
     if (c->phase == ACBB_CMP_NONE) {
-        const char *note = acbb_results_note(a, ACBB_RAN_COMPARE);
+        const char *note = acbb_results_note(a, &acbb_screen_compare);
         if (note) acbb_put_wrap(a, y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note);
         acbb_put(a, y + 1, b.x + 2, b.w - 2, ACBB_ROLE_NORMAL,
                  "Press t to run both variants to steady state.");
@@ -91,17 +136,16 @@ static void draw(acbb_app *a)
     char outer[48];
     acbb_run_outer_label(&c->snap[0], outer, sizeof outer);
     strcat(outer, " T C");
-    const row_spec rows[] = {
+    const row_spec heat[] = {
         { outer, offsetof(acbb_snapshot, T_outer_ring), 1, 0 },
         { "Inner ring T C", offsetof(acbb_snapshot, T_inner_ring), 1, 0 },
         { "Ball T C", offsetof(acbb_snapshot, T_ball), 1, 0 },
         { "Housing T C", offsetof(acbb_snapshot, T_housing), 1, 1 },
         { "Total loss W", offsetof(acbb_snapshot, losses.total), 1, 0 },
-        { "  shear P_L W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SHEAR]), 1, 1 },
-        { "  slip P_t W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SLIP]), 1, 1 },
-        { "  spin P_s W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_SPIN]), 1, 1 },
-        { "  rolling P_r W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_ROLLING]), 1, 1 },
-        { "  drag P_v W", offsetof(acbb_snapshot, losses.P[ACBB_LOSS_DRAG]), 1, 1 },
+    };
+    y = put_rows(a, y, c, heat, sizeof heat / sizeof heat[0]);
+    y = loss_rows(a, y, c);
+    const row_spec rest[] = {
         { "IR growth thermal um", offsetof(acbb_snapshot, exp_inner), 1e6, 0 },
         { "OR growth um", offsetof(acbb_snapshot, exp_outer), 1e6, 0 },
         /* What heat costs in life (MODEL.md 15). */
@@ -110,13 +154,7 @@ static void draw(acbb_app *a)
         { "  kappa", offsetof(acbb_snapshot, life.kappa), 1, 1 },
         { "  static safety s0", offsetof(acbb_snapshot, life.s0_min), 1, 1 },
     };
-    for (size_t i = 0; i < sizeof rows / sizeof rows[0] && y < b.y + b.h; i++) {
-        if (rows[i].detail && b.h < ROOM_FOR_DETAIL) continue;
-        double v0 = field(&c->snap[0], rows[i].off) * rows[i].scale;
-        double v1 = field(&c->snap[1], rows[i].off) * rows[i].scale;
-        acbb_put(a, y++, b.x, b.w, ACBB_ROLE_NORMAL, "%-24s %12.3f %12.3f %+12.3f", rows[i].name, v0,
-                 v1, v0 - v1);
-    }
+    y = put_rows(a, y, c, rest, sizeof rest / sizeof rest[0]);
     const double R2D = 1.0 / ACBB_DEG /* deg per rad */;
     if (y < b.y + b.h) ball_row(a, y++, c, "Qi ball 0 N", offsetof(acbb_ball_view, Qi), 1);
     if (y < b.y + b.h) ball_row(a, y++, c, "Qo ball 0 N", offsetof(acbb_ball_view, Qo), 1);
@@ -127,17 +165,33 @@ static void draw(acbb_app *a)
         acbb_put_wrap(a, y, b.x, b.w, b.y + b.h - y, ACBB_ROLE_ERROR, c->message);
 }
 
+/* ---- the comparison's lifecycle (screens.h): the worker runs it, this
+ * screen decides whether its result still belongs to the open scene ---- */
+
+static void poll(acbb_app *a)
+{
+    if (cmp(a)->hidden ||
+        acbb_results_stale(a, &acbb_screen_compare, &cmp(a)->ran_on, a->st.compare.phase == ACBB_CMP_DONE))
+        memset(&a->st.compare, 0, sizeof a->st.compare);
+}
+
+static void drop(acbb_app *a) { cmp(a)->hidden = 1; }
+
+static int running(const acbb_app *a) { return a->st.compare.phase == ACBB_CMP_RUNNING; }
+
 const acbb_screen acbb_screen_compare = {
     .name = "TE/WTE", .key = '6', .draw = draw,
     .hint = "t run TE vs WTE  r run  ? help  q quit",
+    .state_size = sizeof(compare_ui), .poll = poll, .drop = drop, .running = running,
+    .job_subject = "The TE/WTE comparison", .job_noun = "comparison",
 };
 
 /* `t` is global: it starts the comparison from any screen and shows this one. */
 void acbb_screen_compare_start(acbb_app *a)
 {
     acbb_app_post(a, ACBB_CMD_COMPARE, &a->ed.scene, 0, "TE vs WTE comparison started");
-    a->hide.compare = 0; /* this one belongs to the open preset */
-    acbb_results_ran(a, ACBB_RAN_COMPARE);
+    cmp(a)->hidden = 0; /* this one belongs to the open preset */
+    cmp(a)->ran_on = a->ed.scene;
     acbb_screen_show(a, acbb_screen_index(&acbb_screen_compare));
 }
 

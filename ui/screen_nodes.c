@@ -4,6 +4,19 @@
 #include <strings.h>
 #include "screens.h"
 
+extern const acbb_screen acbb_screen_nodes;
+
+/* This screen's own state (screens.h init). */
+typedef struct {
+    int top;                       /* first node shown */
+    int hit;                       /* the node the last search found */
+} nodes_ui;
+
+static nodes_ui *nd(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_nodes);
+}
+
 static int rows_per_col(const acbb_app *a)
 {
     int r = a->lay.table_rows;
@@ -21,10 +34,10 @@ static void draw(acbb_app *a)
              "%d nodes (C, rise above ambient %.1f)   j/k PgUp/PgDn scroll", s->n_nodes, amb);
     for (int c = 0; c < ncol; c++) {
         for (int r = 0; r < per - 1; r++) {
-            int i = a->node_top + c * (per - 1) + r;
+            int i = nd(a)->top + c * (per - 1) + r;
             if (i >= s->n_nodes) return;
             const char *name = s->node_names ? s->node_names[i] : "?";
-            acbb_role role = i == a->node_hit ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL;
+            acbb_role role = i == nd(a)->hit ? ACBB_ROLE_SELECTED : ACBB_ROLE_NORMAL;
             /* A name longer than its column ends in an ellipsis, not silently
              * cut (issue 29 item 7); / finds a node by any part of it. */
             int nw = cw - 1 - 14, x = b.x + c * cw; /* " 123.45 +12.34" */
@@ -39,14 +52,14 @@ static void draw(acbb_app *a)
 static int on_key(acbb_app *a, int ch)
 {
     int page = (rows_per_col(a) - 1) * a->lay.node_columns;
-    return acbb_scroll_key(ch, page, a->st.snap.n_nodes, &a->node_top);
+    return acbb_scroll_key(ch, page, a->st.snap.n_nodes, &nd(a)->top);
 }
 
 /* `/`: the next node whose name holds the text (e.g. /raceway, /shaft). */
 static int search(acbb_app *a, const char *text, int dir)
 {
     const acbb_snapshot *s = &a->st.snap;
-    int n = s->n_nodes, from = a->node_hit >= 0 && a->node_hit < n ? a->node_hit : 0;
+    int n = s->n_nodes, from = nd(a)->hit >= 0 && nd(a)->hit < n ? nd(a)->hit : 0;
     size_t len = strlen(text);
     for (int k = dir == 0 ? 0 : 1; n > 0 && k <= n; k++) {
         int i = ((from + (dir < 0 ? -k : k)) % n + n) % n;
@@ -54,10 +67,10 @@ static int search(acbb_app *a, const char *text, int dir)
         for (const char *p = name; *p; p++)
             if (strncasecmp(p, text, len) == 0) {
                 int page = (rows_per_col(a) - 1) * a->lay.node_columns;
-                a->node_hit = i;
-                if (i < a->node_top || i >= a->node_top + page) a->node_top = i;
-                if (a->node_top > n - page) a->node_top = n - page;
-                if (a->node_top < 0) a->node_top = 0;
+                nd(a)->hit = i;
+                if (i < nd(a)->top || i >= nd(a)->top + page) nd(a)->top = i;
+                if (nd(a)->top > n - page) nd(a)->top = n - page;
+                if (nd(a)->top < 0) nd(a)->top = 0;
                 return 1;
             }
     }
@@ -71,5 +84,6 @@ static const acbb_help_line help[] = {
 };
 
 const acbb_screen acbb_screen_nodes = {
+    .state_size = sizeof(nodes_ui),
     .name = "Nodes", .key = '2', .draw = draw, .on_key = on_key, .help = help, .search = search,
 };

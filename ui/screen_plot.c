@@ -8,6 +8,21 @@
 #include "export.h"
 
 #define N_KINDS 5
+#define PREVIEW_MAX 65536 /* bytes of gnuplot dumb text */
+
+extern const acbb_screen acbb_screen_plot;
+
+/* This screen's own state (screens.h init). */
+typedef struct {
+    int kind;                      /* preview kind (acbb_plot_kind) */
+    int ok;                        /* the preview is a plot, not an error */
+    char text[PREVIEW_MAX];   /* gnuplot dumb text */
+} plot_ui;
+
+static plot_ui *pl(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_plot);
+}
 
 static void title_of(const acbb_app *a, char *buf, size_t n)
 {
@@ -21,11 +36,11 @@ static void refresh_preview(acbb_app *a)
     title_of(a, title, sizeof title);
     acbb_plot_data d = { .history = &a->hist, .snapshot = &a->st.snap, .title = title };
     int cols = a->lay.body.w, rows = a->lay.body.h - 1;
-    acbb_status rc = acbb_plot_dumb((acbb_plot_kind)a->plot_kind, cols, rows, &d, a->preview,
-                                    ACBB_PREVIEW_MAX, &err);
-    a->preview_ok = rc == ACBB_OK;
-    if (!a->preview_ok) {
-        snprintf(a->preview, ACBB_PREVIEW_MAX, "%s", err.msg);
+    acbb_status rc = acbb_plot_dumb((acbb_plot_kind)pl(a)->kind, cols, rows, &d, pl(a)->text,
+                                    PREVIEW_MAX, &err);
+    pl(a)->ok = rc == ACBB_OK;
+    if (!pl(a)->ok) {
+        snprintf(pl(a)->text, PREVIEW_MAX, "%s", err.msg);
         acbb_app_msg(a, ACBB_ROLE_ERROR, "preview failed: %s", err.msg);
     }
 }
@@ -33,10 +48,10 @@ static void refresh_preview(acbb_app *a)
 static void draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
-    if (!a->preview[0]) refresh_preview(a);
+    if (!pl(a)->text[0]) refresh_preview(a);
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "gnuplot preview: %s   < > kind  Enter refresh  g export to %s",
-             acbb_plot_kind_name((acbb_plot_kind)a->plot_kind), a->plot_dir);
-    const char *p = a->preview;
+             acbb_plot_kind_name((acbb_plot_kind)pl(a)->kind), a->plot_dir);
+    const char *p = pl(a)->text;
     for (int r = 0; r < b.h - 1 && *p; r++) {
         const char *nl = strchr(p, '\n');
         size_t len = nl ? (size_t)(nl - p) : strlen(p);
@@ -47,7 +62,7 @@ static void draw(acbb_app *a)
         /* gnuplot's dumb terminal may emit a form feed first. */
         for (char *c = line; *c; c++)
             if (*c == '\f' || *c == '\r') *c = ' ';
-        acbb_put(a, b.y + 1 + r, b.x, b.w, a->preview_ok ? ACBB_ROLE_NORMAL : ACBB_ROLE_ERROR,
+        acbb_put(a, b.y + 1 + r, b.x, b.w, pl(a)->ok ? ACBB_ROLE_NORMAL : ACBB_ROLE_ERROR,
                  "%s", line);
         p = nl ? nl + 1 : p + len;
     }
@@ -56,8 +71,8 @@ static void draw(acbb_app *a)
 static int on_key(acbb_app *a, int ch)
 {
     switch (ch) {
-    case KEY_LEFT: case 'h': case '<': a->plot_kind = (a->plot_kind + N_KINDS - 1) % N_KINDS; break;
-    case KEY_RIGHT: case 'l': case '>': a->plot_kind = (a->plot_kind + 1) % N_KINDS; break;
+    case KEY_LEFT: case 'h': case '<': pl(a)->kind = (pl(a)->kind + N_KINDS - 1) % N_KINDS; break;
+    case KEY_RIGHT: case 'l': case '>': pl(a)->kind = (pl(a)->kind + 1) % N_KINDS; break;
     case '\n': case '\r': case KEY_ENTER: break;
     default: return 0;
     }
@@ -68,7 +83,7 @@ static int on_key(acbb_app *a, int ch)
 /* A fresh preview on every entry. */
 static void enter(acbb_app *a)
 {
-    a->preview[0] = '\0';
+    pl(a)->text[0] = '\0';
 }
 
 static const acbb_help_line help[] = {
@@ -78,6 +93,7 @@ static const acbb_help_line help[] = {
 };
 
 const acbb_screen acbb_screen_plot = {
+    .state_size = sizeof(plot_ui),
     .name = "Plot", .key = '7', .draw = draw, .on_key = on_key, .enter = enter, .help = help,
     .hint = "</> kind  Enter refresh  g export PNG+SVG  ? help  q quit",
 };

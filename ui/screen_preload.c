@@ -16,7 +16,6 @@
 #include "acbb/plot.h"
 #include "acbb/preload_map.h"
 #include "acbb/units.h"
-#include "screen_preload.h"
 #include "results.h"
 #include "export.h"
 #include "screens.h"
@@ -101,31 +100,37 @@ static void defaults(const acbb_scene *s, acbb_pmap_opts *o)
     o->n_preloads = 10;
 }
 
-acbb_status acbb_preload_new(acbb_app *a, acbb_error *err)
+extern const acbb_screen acbb_screen_preload;
+
+/* This screen's state (its init made it). */
+static struct acbb_pmap_ui *pm(const acbb_app *a)
 {
-    struct acbb_pmap_ui *p = calloc(1, sizeof *p);
-    if (!p) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    acbb_status rc = acbb_job_new(&p->job, "preload map", err);
-    if (rc != ACBB_OK) {
-        free(p);
-        return rc;
-    }
-    defaults(&a->ed.scene, &p->next);
-    a->pmap = p;
-    return ACBB_OK;
+    return acbb_screen_state(a, &acbb_screen_preload);
 }
 
-void acbb_preload_free(acbb_app *a)
+static acbb_status make(void *p, acbb_error *err)
 {
-    if (!a->pmap) return;
-    acbb_job_free(a->pmap->job);
-    free(a->pmap);
-    a->pmap = NULL;
+    return acbb_job_new(&((struct acbb_pmap_ui *)p)->job, "preload map", err);
 }
 
-int acbb_preload_wake_fd(const acbb_app *a) { return acbb_job_wake_fd(a->pmap->job); }
+static acbb_status init(acbb_app *a, void **state, acbb_error *err)
+{
+    acbb_status rc = acbb_screen_state_new(state, sizeof(struct acbb_pmap_ui), make, err);
+    if (rc == ACBB_OK) defaults(&a->ed.scene, &((struct acbb_pmap_ui *)*state)->next);
+    return rc;
+}
 
-void acbb_preload_drain(acbb_app *a) { acbb_job_drain_wake(a->pmap->job); }
+static void pm_free(void *state)
+{
+    struct acbb_pmap_ui *p = state;
+    if (!p) return;
+    acbb_job_free(p->job);
+    free(p);
+}
+
+static int wake_fd(const acbb_app *a) { return acbb_job_wake_fd(pm(a)->job); }
+
+static void wake(acbb_app *a) { acbb_job_drain_wake(pm(a)->job); }
 
 /* Cells of row s inside the window (flags 0, between the row's lo and hi). */
 static int in_window(const acbb_pmap_cell *c, const acbb_pmap_row *r)
@@ -149,12 +154,11 @@ static int rows_whole(const pm_result *v)
     return n;
 }
 
-void acbb_preload_take(acbb_app *a)
+static void poll(acbb_app *a)
 {
-    struct acbb_pmap_ui *p = a->pmap;
+    struct acbb_pmap_ui *p = pm(a);
     acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
-    int edited = p->info.phase > ACBB_JOB_RUNNING && acbb_editor_differs(&p->scene, &a->ed.scene);
-    if (edited) a->hide.edited |= 1u << ACBB_RAN_PRELOAD; /* results.c */
+    int edited = acbb_results_stale(a, &acbb_screen_preload, &p->scene, p->info.phase > ACBB_JOB_RUNNING);
     if (p->info.run_id == p->hidden_run || edited) { /* reads as never started */
         memset(&p->info, 0, sizeof p->info);
         memset(&p->view, 0, sizeof p->view);
@@ -176,17 +180,17 @@ void acbb_preload_take(acbb_app *a)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "preload map failed: %s", p->info.message);
 }
 
-void acbb_preload_drop(acbb_app *a)
+static void drop(acbb_app *a)
 {
-    struct acbb_pmap_ui *p = a->pmap;
+    struct acbb_pmap_ui *p = pm(a);
     acbb_job_cancel(p->job);
     acbb_job_read(p->job, &p->info, &p->view, &p->pub, sizeof p->view);
     p->hidden_run = p->info.run_id;
 }
 
-int acbb_preload_running(const acbb_app *a)
+static int running(const acbb_app *a)
 {
-    return a->pmap->info.phase == ACBB_JOB_RUNNING;
+    return pm(a)->info.phase == ACBB_JOB_RUNNING;
 }
 
 /* ---- ranges and limits ---- */
@@ -216,19 +220,19 @@ static int parse_axis(acbb_app *a, const char *t, const char *what, int max, dou
 
 static void speeds_answer(acbb_app *a, const char *text)
 {
-    acbb_pmap_opts *o = &a->pmap->next;
+    acbb_pmap_opts *o = &pm(a)->next;
     if (text[0] && parse_axis(a, text, "speeds", PM_SPEEDS, &o->speed_lo, &o->speed_hi, &o->n_speeds)) {
-        a->pmap->chosen = 1;
+        pm(a)->chosen = 1;
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "speeds %s rpm (r runs the map)", text);
     }
 }
 
 static void preloads_answer(acbb_app *a, const char *text)
 {
-    acbb_pmap_opts *o = &a->pmap->next;
+    acbb_pmap_opts *o = &pm(a)->next;
     if (text[0] &&
         parse_axis(a, text, "preloads", PM_PRELOADS, &o->preload_lo, &o->preload_hi, &o->n_preloads)) {
-        a->pmap->chosen = 1;
+        pm(a)->chosen = 1;
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "preloads %s N (r runs the map)", text);
     }
 }
@@ -249,7 +253,7 @@ static void limits_answer(acbb_app *a, const char *text)
         }
         t = e + 1;
     }
-    acbb_pmap_opts *o = &a->pmap->next;
+    acbb_pmap_opts *o = &pm(a)->next;
     o->max_rise_K = v[0];
     o->min_life_h = v[1];
     o->min_s0 = v[2];
@@ -269,7 +273,7 @@ static void fmt_limits(const acbb_pmap_opts *o, char *buf, size_t len)
 /* The ranges follow the scene until typed (a newly opened preset). */
 static void enter(acbb_app *a)
 {
-    struct acbb_pmap_ui *p = a->pmap;
+    struct acbb_pmap_ui *p = pm(a);
     if (!p->chosen) defaults(&a->ed.scene, &p->next);
 }
 
@@ -277,7 +281,7 @@ static void enter(acbb_app *a)
 
 static void start(acbb_app *a)
 {
-    struct acbb_pmap_ui *p = a->pmap;
+    struct acbb_pmap_ui *p = pm(a);
     acbb_error err = { { 0 } };
     if (!acbb_job_claim(p->job, &err)) {
         acbb_app_msg(a, ACBB_ROLE_WARN, "%s", err.msg);
@@ -296,7 +300,7 @@ static void start(acbb_app *a)
 
 static int cancel(acbb_app *a)
 {
-    if (!acbb_job_cancel(a->pmap->job)) return 0;
+    if (!acbb_job_cancel(pm(a)->job)) return 0;
     acbb_app_msg(a, ACBB_ROLE_WARN, "cancelling the preload map ...");
     return 1;
 }
@@ -304,8 +308,8 @@ static int cancel(acbb_app *a)
 /* dir/preload_window.png and .svg: the CLI's chart (cli/preload_map.c). */
 static void export_chart(acbb_app *a)
 {
-    const pm_result *v = &a->pmap->view;
-    if (a->pmap->info.phase == ACBB_JOB_RUNNING || v->rows_done == 0) {
+    const pm_result *v = &pm(a)->view;
+    if (pm(a)->info.phase == ACBB_JOB_RUNNING || v->rows_done == 0) {
         acbb_app_msg(a, ACBB_ROLE_WARN, "%s", v->rows_done ? "the map is still running"
                                                             : "no preload map to plot (r runs one)");
         return;
@@ -345,7 +349,7 @@ static char cell_char(const acbb_pmap_cell *c, const acbb_pmap_row *r)
 
 static void draw_heading(acbb_app *a, acbb_rect b)
 {
-    struct acbb_pmap_ui *p = a->pmap;
+    struct acbb_pmap_ui *p = pm(a);
     char sp[48], pl[48], lim[64];
     fmt_axis(p->next.speed_lo, p->next.speed_hi, p->next.n_speeds, sp, sizeof sp);
     fmt_axis(p->next.preload_lo, p->next.preload_hi, p->next.n_preloads, pl, sizeof pl);
@@ -402,7 +406,7 @@ static void draw_row(acbb_app *a, int y, acbb_rect b, const pm_result *v, int s)
     double speed = acbb_pmap_axis(v->o.speed_lo, v->o.speed_hi, v->o.n_speeds, s);
     if (s >= v->rows_done) {
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_DIM, "%8.0f  %s", speed,
-                 a->pmap->info.phase == ACBB_JOB_RUNNING ? "running ..." : "-");
+                 pm(a)->info.phase == ACBB_JOB_RUNNING ? "running ..." : "-");
         return;
     }
     for (int k = 0; k < np; k++) {
@@ -422,9 +426,9 @@ static void draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
     draw_heading(a, b);
-    const pm_result *v = &a->pmap->view;
-    if (a->pmap->info.phase == ACBB_JOB_IDLE) {
-        const char *note = acbb_results_note(a, ACBB_RAN_PRELOAD);
+    const pm_result *v = &pm(a)->view;
+    if (pm(a)->info.phase == ACBB_JOB_IDLE) {
+        const char *note = acbb_results_note(a, &acbb_screen_preload);
         acbb_put_wrap(a, b.y + 3, b.x + 2, b.w - 2, 2, ACBB_ROLE_DIM, note ? note : "(no preload map yet: r runs one)");
         return;
     }
@@ -446,7 +450,7 @@ static void draw(acbb_app *a)
 
 static int on_key(acbb_app *a, int ch)
 {
-    struct acbb_pmap_ui *p = a->pmap;
+    struct acbb_pmap_ui *p = pm(a);
     char init[64];
     switch (ch) {
     case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
@@ -490,4 +494,6 @@ static const acbb_help_line help[] = {
 const acbb_screen acbb_screen_preload = {
     .name = "Preload", .key = 'P', .draw = draw, .on_key = on_key, .enter = enter, .help = help,
     .hint = "s speeds  e preloads  l limits  r map  x/Esc cancel  g export  ? help",
+    .init = init, .free = pm_free, .wake_fd = wake_fd, .wake = wake, .poll = poll, .drop = drop,
+    .running = running, .job_subject = "The preload map", .job_noun = "preload map",
 };

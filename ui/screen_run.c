@@ -15,6 +15,18 @@
 /* The network node that the snapshot's T_outer_ring reads: the one whose
  * temperature it copies and whose name says outer ring (node 5 of the
  * 46-node network, node 2 of the 7-node one). -1 if not identifiable. */
+/* This screen's own state (screens.h state_size). */
+typedef struct {
+    int bigview;                   /* the presentation view (v) */
+    int has_base;                  /* a baseline is pinned (m) */
+    acbb_snapshot base;            /* ... this result */
+} run_ui;
+
+static run_ui *rn(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_run);
+}
+
 static int outer_ring_node(const acbb_snapshot *s)
 {
     if (!s->node_names) return -1;
@@ -43,7 +55,7 @@ void acbb_fmt_delta(double v, double base, double ref, char *buf, size_t n)
 
 static void temps_panel(acbb_app *a, acbb_rect r)
 {
-    const acbb_snapshot *s = &a->st.snap, *b = &a->base;
+    const acbb_snapshot *s = &a->st.snap, *b = &rn(a)->base;
     double amb = a->st.scene.ambient_C;
     char outer[32];
     acbb_run_outer_label(s, outer, sizeof outer);
@@ -52,7 +64,7 @@ static void temps_panel(acbb_app *a, acbb_rect r)
         { "Ball", s->T_ball, b->T_ball }, { "Housing", s->T_housing, b->T_housing },
         { "Shaft", s->T_shaft, b->T_shaft }, { "Oil-air", s->T_cavity, b->T_cavity },
     };
-    if (a->has_base)
+    if (rn(a)->has_base)
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Temperature     C  vs base  %%rise");
     else
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Temperature        C   rise(%.0f)", amb);
@@ -60,7 +72,7 @@ static void temps_panel(acbb_app *a, acbb_rect r)
     for (size_t i = 0; i < 6; i++) hi = fmax(hi, rows[i].T - amb);
     for (size_t i = 0; i < 6 && (int)i + 1 < r.h; i++) {
         int y = r.y + 1 + (int)i;
-        if (a->has_base) {
+        if (rn(a)->has_base) {
             char d[48];
             acbb_fmt_delta(rows[i].T, rows[i].B, rows[i].B - amb, d, sizeof d);
             acbb_put(a, y, r.x, r.w, ACBB_ROLE_NORMAL, "%-14s %6.2f %s", rows[i].name, rows[i].T, d);
@@ -90,7 +102,7 @@ static bool loss_shown(const acbb_app *a, int k)
  * carries it. */
 static void losses_panel(acbb_app *a, acbb_rect r)
 {
-    const acbb_losses *l = &a->st.snap.losses, *lb = &a->base.losses;
+    const acbb_losses *l = &a->st.snap.losses, *lb = &rn(a)->base.losses;
     int n = 0;
     for (int k = 0; k < ACBB_LOSS_KINDS; k++) n += loss_shown(a, k);
     bool head_total = n + 1 >= r.h;
@@ -98,7 +110,7 @@ static void losses_panel(acbb_app *a, acbb_rect r)
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Power loss  total %7.2f W", l->total);
     else
         acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER,
-                 a->has_base ? "Power loss      W  vs base     %%" : "Power loss        W      %%");
+                 rn(a)->has_base ? "Power loss      W  vs base     %%" : "Power loss        W      %%");
     double tot = l->total > 0 ? l->total : 1.0;
     int row = 1;
     for (int k = 0; k <= ACBB_LOSS_KINDS - head_total && row < r.h; k++, row++) {
@@ -111,7 +123,7 @@ static void losses_panel(acbb_app *a, acbb_rect r)
                      acbb_loss_symbol((acbb_loss_kind)k));
         } else snprintf(name, sizeof name, "Total");
         acbb_role role = total ? ACBB_ROLE_HEADER : ACBB_ROLE_NORMAL;
-        if (a->has_base) {
+        if (rn(a)->has_base) {
             char d[48];
             acbb_fmt_delta(v, vb, vb, d, sizeof d);
             acbb_put(a, r.y + row, r.x, r.w, role, "%-13s%6.2f %s", name, v, d);
@@ -142,13 +154,13 @@ static void ball_item(acbb_app *a, char *buf, size_t n, const char *name, size_t
 {
     double lo, hi, blo, bhi;
     span(&a->st.snap, off, &lo, &hi);
-    if (!a->has_base) {
+    if (!rn(a)->has_base) {
         if (hi - lo > 1e-9 * fabs(hi)) snprintf(buf, n, "%s %.2f..%.2f%s", name, lo * scale, hi * scale, unit);
         else snprintf(buf, n, "%s %.2f%s", name, hi * scale, unit);
         return;
     }
     char d[48];
-    span(&a->base, off, &blo, &bhi);
+    span(&rn(a)->base, off, &blo, &bhi);
     acbb_fmt_delta(hi * scale, bhi * scale, bhi * scale, d, sizeof d);
     snprintf(buf, n, "%s max %.2f%s %s", name, hi * scale, unit, d);
 }
@@ -170,7 +182,7 @@ static void mech_panel(acbb_app *a, acbb_rect r)
     char which[40] = ""; /* a set: the bearing shown (Set screen, [ ]) */
     if (s->n_bearings > 1) snprintf(which, sizeof which, ", bearing %d of %d", a->bearing, s->n_bearings);
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "Mechanics (%d balls%s%s)", s->n_balls,
-             a->has_base ? ", change vs base" : ", min..max", which);
+             rn(a)->has_base ? ", change vs base" : ", min..max", which);
     /* A tall panel (wide layout) gets one item per row, a short one pairs. */
     int per_row = r.h - 1 >= 6 ? 1 : 2, half = r.w / 2;
     for (int k = 0, row = 1; k < 6 && row < r.h; k += per_row, row++) {
@@ -274,7 +286,7 @@ static void state_and_chart(acbb_app *a, acbb_rect r)
      * explains a change of 0 (issue 29 item 1: preload_N under a force
      * preload showed +0.00 everywhere, silently). */
     acbb_inactive_effect in[4];
-    if (a->has_base && r.h > 8 && acbb_scene_inactive_effects(&a->st.scene, in, 4) > 0) {
+    if (rn(a)->has_base && r.h > 8 && acbb_scene_inactive_effects(&a->st.scene, in, 4) > 0) {
         snprintf(text, sizeof text, "note: %s has no effect here: %s", in[0].key, in[0].why);
         used += acbb_put_wrap(a, r.y + used, r.x, r.w, 2, ACBB_ROLE_WARN, text);
     }
@@ -290,8 +302,8 @@ static void draw(acbb_app *a)
                       a->st.message[0] ? a->st.message : "no simulation yet");
         return;
     }
-    if (a->bigview) {
-        acbb_draw_bigview(a, a->lay.body);
+    if (rn(a)->bigview) {
+        acbb_draw_bigview(a, a->lay.body, rn(a)->has_base ? &rn(a)->base : NULL);
         return;
     }
     temps_panel(a, a->lay.temps);
@@ -300,6 +312,34 @@ static void draw(acbb_app *a)
     state_and_chart(a, a->lay.chart);
 }
 
+/* m: pin the result on screen as the what-if baseline; M clears it. */
+void acbb_screen_run_pin(acbb_app *a, int pin)
+{
+    run_ui *p = rn(a);
+    if (!pin) {
+        p->has_base = 0;
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "baseline cleared");
+    } else if (!a->st.has_snapshot) {
+        acbb_app_msg(a, ACBB_ROLE_WARN, "no result to pin yet (r runs one)");
+    } else {
+        p->base = a->st.snap;
+        p->has_base = 1;
+        acbb_app_msg(a, ACBB_ROLE_OK, "baseline pinned (t = %.0f s): Run shows changes against it; M clears",
+                     p->base.time);
+    }
+}
+
+/* v: the presentation view or the panels, on this screen. */
+void acbb_screen_run_view(acbb_app *a)
+{
+    rn(a)->bigview = !rn(a)->bigview;
+    acbb_screen_show(a, acbb_screen_index(&acbb_screen_run));
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, rn(a)->bigview ? "presentation view (v: back)" : "panels view");
+}
+
+/* Another preset was opened: a baseline of the last one means nothing here. */
+static void drop(acbb_app *a) { rn(a)->has_base = 0; }
+
 const acbb_screen acbb_screen_run = {
-    .name = "Run", .key = '1', .draw = draw,
+    .name = "Run", .key = '1', .draw = draw, .state_size = sizeof(run_ui), .drop = drop,
 };

@@ -9,6 +9,7 @@
 #include <curses.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "export.h"
 #include "results.h"
@@ -24,29 +25,47 @@
 static const int morris_steps[] = { 0, 4, 10 };
 #define MORRIS_N (int)(sizeof morris_steps / sizeof morris_steps[0])
 
+/* This screen's own state (screens.h init): the job and what it shows. */
+typedef struct {
+    acbb_sensjob *job;
+    acbb_sens_view v;              /* copy of its published state, once per frame */
+    int metric, delta_te, morris_r, top;
+    unsigned long seen_run;        /* run whose end was already announced */
+    unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
+} sens_ui;
+
+extern const acbb_screen acbb_screen_sensitivity;
+
+static sens_ui *sn(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_sensitivity);
+}
+
 /* ---- starting, following, cancelling ---- */
 
 static void start(acbb_app *a)
 {
-    acbb_sens_opts o = { .oat = 1, .delta_te = a->sn.delta_te, .morris_r = a->sn.morris_r };
-    snprintf(o.metric, sizeof o.metric, "%s", acbb_whatif_metric(a, a->sn.metric, NULL));
+    acbb_sens_opts o = { .oat = 1, .delta_te = sn(a)->delta_te, .morris_r = sn(a)->morris_r };
+    snprintf(o.metric, sizeof o.metric, "%s", acbb_whatif_metric(a, sn(a)->metric, NULL));
     acbb_error err = { { 0 } };
-    if (acbb_sensjob_start(a->sens, &a->ed.scene, &o, &err) != ACBB_OK) {
+    if (acbb_sensjob_start(sn(a)->job, &a->ed.scene, &o, &err) != ACBB_OK) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
         return;
     }
-    a->sn.top = 0;
-    acbb_results_ran(a, ACBB_RAN_SENS);
+    sn(a)->top = 0;
+    sn(a)->ran_on = a->ed.scene;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sensitivity of %s%s started on %s%s (x cancels)",
                  o.delta_te ? "TE-WTE " : "", o.metric, acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "");
 }
 
-void acbb_screen_sensitivity_follow(acbb_app *a)
+/* Announce the end of a run (once per run). */
+static void follow(acbb_app *a)
 {
-    const acbb_sens_view *v = &a->snv;
-    if (v->job.phase <= ACBB_JOB_RUNNING || v->job.run_id == a->sn.seen_run) return;
-    a->sn.seen_run = v->job.run_id;
+    const acbb_sens_view *v = &sn(a)->v;
+    if (v->job.phase <= ACBB_JOB_RUNNING || v->job.run_id == sn(a)->seen_run) return;
+    sn(a)->seen_run = v->job.run_id;
     if (v->job.phase == ACBB_JOB_DONE)
         acbb_app_msg(a, v->res.failed ? ACBB_ROLE_WARN : ACBB_ROLE_OK,
                      "sensitivity done: %zu inputs, %zu runs, %zu failed", v->res.n, v->res.runs,
@@ -57,16 +76,58 @@ void acbb_screen_sensitivity_follow(acbb_app *a)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "sensitivity failed: %s", v->job.message);
 }
 
+/* ---- the job's lifecycle (screens.h) ---- */
+
+static acbb_status make(void *p, acbb_error *err) { return acbb_sensjob_new(&((sens_ui *)p)->job, err); }
+
+static acbb_status init(acbb_app *a, void **state, acbb_error *err)
+{
+    (void)a;
+    return acbb_screen_state_new(state, sizeof(sens_ui), make, err);
+}
+
+static void sens_free(void *state)
+{
+    sens_ui *p = state;
+    if (!p) return;
+    acbb_sensjob_free(p->job);
+    free(p);
+}
+
+static int wake_fd(const acbb_app *a) { return acbb_job_wake_fd(acbb_sensjob_job(sn(a)->job)); }
+
+static void wake(acbb_app *a) { acbb_job_drain_wake(acbb_sensjob_job(sn(a)->job)); }
+
+static void poll(acbb_app *a)
+{
+    sens_ui *p = sn(a);
+    acbb_sensjob_read(p->job, &p->v);
+    if (p->v.job.run_id == p->hidden_run ||
+        acbb_results_stale(a, &acbb_screen_sensitivity, &p->ran_on, p->v.job.phase > ACBB_JOB_RUNNING))
+        memset(&p->v, 0, sizeof p->v);
+    follow(a);
+}
+
+static void drop(acbb_app *a)
+{
+    sens_ui *p = sn(a);
+    acbb_job_cancel(acbb_sensjob_job(p->job));
+    acbb_sensjob_read(p->job, &p->v); /* a run started since the last frame is hidden too */
+    p->hidden_run = p->v.job.run_id;
+}
+
+static int running(const acbb_app *a) { return sn(a)->v.job.phase == ACBB_JOB_RUNNING; }
+
 static int cancel(acbb_app *a)
 {
-    if (!acbb_job_cancel(acbb_sensjob_job(a->sens))) return 0;
+    if (!acbb_job_cancel(acbb_sensjob_job(sn(a)->job))) return 0;
     acbb_app_msg(a, ACBB_ROLE_WARN, "cancelling the sensitivity run ...");
     return 1;
 }
 
 static void metric_answer(acbb_app *a, const char *text)
 {
-    if (text[0] && acbb_whatif_metric_set(a, text, &a->sn.metric))
+    if (text[0] && acbb_whatif_metric_set(a, text, &sn(a)->metric))
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "metric %s", text);
 }
 
@@ -74,21 +135,21 @@ static void metric_answer(acbb_app *a, const char *text)
 
 static void draw_heading(acbb_app *a, acbb_rect b)
 {
-    const acbb_sens_view *v = &a->snv;
-    const char *label, *path = acbb_whatif_metric(a, a->sn.metric, &label);
+    const acbb_sens_view *v = &sn(a)->v;
+    const char *label, *path = acbb_whatif_metric(a, sn(a)->metric, &label);
     char unit[16], took[16];
     acbb_metric_unit(path, unit, sizeof unit);
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "Sensitivity of %s%s [%s]  d TE-WTE: %s  y Morris: %s%.0d",
-             a->sn.delta_te ? "TE-WTE " : "", label, unit, a->sn.delta_te ? "on" : "off",
-             a->sn.morris_r ? "r=" : "off", a->sn.morris_r);
+             sn(a)->delta_te ? "TE-WTE " : "", label, unit, sn(a)->delta_te ? "on" : "off",
+             sn(a)->morris_r ? "r=" : "off", sn(a)->morris_r);
     int y = b.y + 1;
     acbb_fmt_duration(v->job.ended_s - v->job.started_s, took, sizeof took);
     switch (v->job.phase) {
     case ACBB_JOB_IDLE:
         acbb_put(a, y, b.x, b.w, ACBB_ROLE_NORMAL,
                  "< > metric  d TE-WTE  y Morris  r/Enter runs it on the edited scene");
-        if (acbb_results_note(a, ACBB_RAN_SENS))
-            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, ACBB_RAN_SENS));
+        if (acbb_results_note(a, &acbb_screen_sensitivity))
+            acbb_put_wrap(a, y + 1, b.x, b.w, 2, ACBB_ROLE_DIM, acbb_results_note(a, &acbb_screen_sensitivity));
         break;
     case ACBB_JOB_RUNNING:
         acbb_draw_job_line(a, y, b.x, b.w, v->job.cancel_requested, v->job.started_s, v->done,
@@ -183,7 +244,7 @@ static void draw_row(acbb_app *a, int y, acbb_rect r, const cols *c, const acbb_
     snprintf(eff, sizeof eff, "%.3g", row->effect);
     if (c->morris && row->n_ee > 0) snprintf(tail, sizeof tail, "%9.3g %9.3g", row->mu_star, row->sigma);
     else if (c->morris) snprintf(tail, sizeof tail, "%9s %9s", "-", "-");
-    else tornado(row, a->snv.res.y0, c, tail);
+    else tornado(row, sn(a)->v.res.y0, c, tail);
     acbb_put(a, y, r.x, r.w, row->flips ? ACBB_ROLE_WARN : ACBB_ROLE_NORMAL, "%-*s %*s %*s %*s %-*s %s",
              c->name_w, name, NUM_W, lo, NUM_W, hi, EFFECT_W, eff, FLIPS_W, row->flips ? "FLIPS SIGN" : "",
              tail);
@@ -191,7 +252,7 @@ static void draw_row(acbb_app *a, int y, acbb_rect r, const cols *c, const acbb_
 
 static void draw_table(acbb_app *a, acbb_rect r)
 {
-    const acbb_sens_view *v = &a->snv;
+    const acbb_sens_view *v = &sn(a)->v;
     if (!v->have_result || r.h < 2) {
         if (v->job.phase == ACBB_JOB_RUNNING)
             acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_DIM, "(the table comes when every run has finished)");
@@ -204,10 +265,10 @@ static void draw_table(acbb_app *a, acbb_rect r)
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, "%-*s %*s %*s %*s %-*s %s", c.name_w, "input", NUM_W,
              "at low", NUM_W, "at high", EFFECT_W, "effect", FLIPS_W, "", tail);
     int rows = r.h - 1, n = (int)v->res.n;
-    if (a->sn.top > n - rows) a->sn.top = n - rows;
-    if (a->sn.top < 0) a->sn.top = 0;
-    for (int k = 0; k < rows && a->sn.top + k < n; k++)
-        draw_row(a, r.y + 1 + k, r, &c, &v->res.rows[a->sn.top + k]);
+    if (sn(a)->top > n - rows) sn(a)->top = n - rows;
+    if (sn(a)->top < 0) sn(a)->top = 0;
+    for (int k = 0; k < rows && sn(a)->top + k < n; k++)
+        draw_row(a, r.y + 1 + k, r, &c, &v->res.rows[sn(a)->top + k]);
 }
 
 static void draw(acbb_app *a)
@@ -224,7 +285,7 @@ static void draw(acbb_app *a)
  * draws it (issue 29 item 8: g exported the Run screen's plots instead). */
 static void export_plot(acbb_app *a)
 {
-    const acbb_sens_view *v = &a->snv;
+    const acbb_sens_view *v = &sn(a)->v;
     if (!v->have_result || v->res.n == 0) {
         acbb_app_msg(a, ACBB_ROLE_WARN, "%s", v->job.phase == ACBB_JOB_RUNNING
                      ? "the sensitivity run is still running" : "no sensitivity result to plot (r runs one)");
@@ -250,7 +311,7 @@ static void export_plot(acbb_app *a)
 static int on_key(acbb_app *a, int ch)
 {
     int page = a->lay.body.h - 3 > 1 ? a->lay.body.h - 3 : 1;
-    if (acbb_scroll_key(ch, page, (int)a->snv.res.n, &a->sn.top)) return 1;
+    if (acbb_scroll_key(ch, page, (int)sn(a)->v.res.n, &sn(a)->top)) return 1;
     switch (ch) {
     case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
     case 'g': export_plot(a); return 1;
@@ -260,24 +321,24 @@ static int on_key(acbb_app *a, int ch)
     case 27: return cancel(a);
     case '<': case '>': case 'h': case 'l': case KEY_LEFT: case KEY_RIGHT: {
         int dir = ch == '>' || ch == 'l' || ch == KEY_RIGHT ? 1 : -1, n = acbb_whatif_metric_count(a);
-        a->sn.metric = ((a->sn.metric + dir) % n + n) % n;
+        sn(a)->metric = ((sn(a)->metric + dir) % n + n) % n;
         return 1;
     }
     case 'c':
-        acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, a->sn.metric, NULL),
+        acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, sn(a)->metric, NULL),
                      metric_answer, acbb_metric_choice);
         return 1;
     case 'd':
-        a->sn.delta_te = !a->sn.delta_te;
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s", a->sn.delta_te ? "TE - WTE: two runs per point"
+        sn(a)->delta_te = !sn(a)->delta_te;
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "%s", sn(a)->delta_te ? "TE - WTE: two runs per point"
                                                                : "the metric itself (TE as set)");
         return 1;
     case 'y': {
         int i = 0;
-        while (i < MORRIS_N && morris_steps[i] != a->sn.morris_r) i++;
-        a->sn.morris_r = morris_steps[(i + 1) % MORRIS_N];
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, a->sn.morris_r ? "Morris: %d trajectories after the table"
-                                                         : "Morris off%.0d", a->sn.morris_r);
+        while (i < MORRIS_N && morris_steps[i] != sn(a)->morris_r) i++;
+        sn(a)->morris_r = morris_steps[(i + 1) % MORRIS_N];
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, sn(a)->morris_r ? "Morris: %d trajectories after the table"
+                                                         : "Morris off%.0d", sn(a)->morris_r);
         return 1;
     }
     default: return 0;
@@ -299,4 +360,6 @@ static const acbb_help_line help[] = {
 const acbb_screen acbb_screen_sensitivity = {
     .name = "Sensitivity", .key = '0', .draw = draw, .on_key = on_key, .help = help,
     .hint = "r run  x/Esc cancel  </> metric  c type metric  d TE-WTE  y Morris  ? help",
+    .init = init, .free = sens_free, .wake_fd = wake_fd, .wake = wake, .poll = poll, .drop = drop,
+    .running = running, .job_subject = "The sensitivity analysis", .job_noun = "sensitivity analysis",
 };

@@ -19,9 +19,31 @@ extern const acbb_screen acbb_screen_sweep;
 
 /* ---- the metric menu (both what-if screens) ---- */
 
+/* This screen's own state (screens.h init): the job and what it shows. */
+typedef struct {
+    acbb_sweepjob *job;
+    acbb_sweep_view v;             /* copy of its published state, once per frame */
+    char key[ACBB_SWEEP_KEY];      /* the swept key ("" until chosen) */
+    char range[96];                /* "lo:hi:n" or "v1,v2,..." */
+    int chosen;                    /* the key was typed (s), not a default */
+    int metric, top;               /* metric menu index; first table row shown */
+    unsigned long seen_run;        /* run whose end was already announced */
+    unsigned long hidden_run;      /* a run of a preset no longer open (results.c) */
+    char metric_custom[ACBB_SENS_METRIC]; /* a typed metric: the last entry of both screens' menus */
+    acbb_axis_memo memo;           /* the chart's widen-only ranges */
+    acbb_scene ran_on;             /* the scene its last job started on (results.c) */
+} sweep_ui;
+
+extern const acbb_screen acbb_screen_sweep;
+
+static sweep_ui *sw(const acbb_app *a)
+{
+    return acbb_screen_state(a, &acbb_screen_sweep);
+}
+
 int acbb_whatif_metric_count(const acbb_app *a)
 {
-    return acbb_metric_menu_n + (a->metric_custom[0] != '\0');
+    return acbb_metric_menu_n + (sw(a)->metric_custom[0] != '\0');
 }
 
 const char *acbb_whatif_metric(const acbb_app *a, int i, const char **label)
@@ -32,8 +54,8 @@ const char *acbb_whatif_metric(const acbb_app *a, int i, const char **label)
         if (label) *label = acbb_metric_menu[i].label;
         return acbb_metric_menu[i].path;
     }
-    if (label) *label = a->metric_custom;
-    return a->metric_custom;
+    if (label) *label = sw(a)->metric_custom;
+    return sw(a)->metric_custom;
 }
 
 int acbb_whatif_metric_set(acbb_app *a, const char *text, int *slot)
@@ -48,7 +70,7 @@ int acbb_whatif_metric_set(acbb_app *a, const char *text, int *slot)
             *slot = i;
             return 1;
         }
-    snprintf(a->metric_custom, sizeof a->metric_custom, "%s", text);
+    snprintf(sw(a)->metric_custom, sizeof sw(a)->metric_custom, "%s", text);
     *slot = acbb_metric_menu_n;
     return 1;
 }
@@ -99,16 +121,16 @@ static int use_key(acbb_app *a, const char *key)
                      " (acbb sweep --grid takes choices)", key);
         return 0;
     }
-    snprintf(a->sw.key, sizeof a->sw.key, "%s", key);
-    default_range(a, (size_t)i, a->sw.range, sizeof a->sw.range);
+    snprintf(sw(a)->key, sizeof sw(a)->key, "%s", key);
+    default_range(a, (size_t)i, sw(a)->range, sizeof sw(a)->range);
     return 1;
 }
 
 static void key_answer(acbb_app *a, const char *text)
 {
-    if (text[0] && use_key(a, text) && (a->sw.chosen = 1))
-        acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep %s over %s (e edits the range, r runs)", a->sw.key,
-                     a->sw.range);
+    if (text[0] && use_key(a, text) && (sw(a)->chosen = 1))
+        acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep %s over %s (e edits the range, r runs)", sw(a)->key,
+                     sw(a)->range);
 }
 
 /* The range is checked as r will check it (whatif.c): a range r refuses
@@ -117,7 +139,7 @@ static void range_answer(acbb_app *a, const char *text)
 {
     if (!text[0]) return;
     char spec[192];
-    snprintf(spec, sizeof spec, "%s=%s", a->sw.key[0] ? a->sw.key : "operating.axial_load_N", text);
+    snprintf(spec, sizeof spec, "%s=%s", sw(a)->key[0] ? sw(a)->key : "operating.axial_load_N", text);
     acbb_sweep *g = NULL;
     acbb_error err = { { 0 } };
     acbb_status st = acbb_sweep_new(&g);
@@ -133,13 +155,13 @@ static void range_answer(acbb_app *a, const char *text)
                      "(acbb sweep does more)", n, ACBB_WHATIF_MAX_POINTS);
         return;
     }
-    snprintf(a->sw.range, sizeof a->sw.range, "%s", text);
-    acbb_app_msg(a, ACBB_ROLE_NORMAL, "range %s (r runs the sweep)", a->sw.range);
+    snprintf(sw(a)->range, sizeof sw(a)->range, "%s", text);
+    acbb_app_msg(a, ACBB_ROLE_NORMAL, "range %s (r runs the sweep)", sw(a)->range);
 }
 
 static void metric_answer(acbb_app *a, const char *text)
 {
-    if (text[0] && acbb_whatif_metric_set(a, text, &a->sw.metric))
+    if (text[0] && acbb_whatif_metric_set(a, text, &sw(a)->metric))
         acbb_app_msg(a, ACBB_ROLE_NORMAL, "metric %s", text);
 }
 
@@ -150,7 +172,7 @@ static void metric_answer(acbb_app *a, const char *text)
 static void enter(acbb_app *a)
 {
     char name[128];
-    if (a->sw.chosen || (a->swv.job.started_s > 0 && a->swv.job.ended_s == 0)) return; /* running */
+    if (sw(a)->chosen || (sw(a)->v.job.started_s > 0 && sw(a)->v.job.ended_s == 0)) return; /* running */
     const acbb_field_info *f = acbb_scene_field(a->ed.cursor);
     if (a->ed.cursor > 0 && f && (f->type == ACBB_FIELD_REAL || f->type == ACBB_FIELD_INT) &&
         acbb_scene_key_name(a->ed.cursor, name, sizeof name))
@@ -163,7 +185,7 @@ static void enter(acbb_app *a)
 
 static void start(acbb_app *a)
 {
-    if (!a->sw.key[0]) {
+    if (!sw(a)->key[0]) {
         acbb_app_msg(a, ACBB_ROLE_WARN, "no key to sweep yet: s chooses one");
         return;
     }
@@ -171,23 +193,24 @@ static void start(acbb_app *a)
     int n = acbb_whatif_metric_count(a);
     for (int i = 0; i < n && i < ACBB_WHATIF_METRICS; i++) metrics[i] = acbb_whatif_metric(a, i, NULL);
     char spec[192];
-    snprintf(spec, sizeof spec, "%s=%s", a->sw.key, a->sw.range);
+    snprintf(spec, sizeof spec, "%s=%s", sw(a)->key, sw(a)->range);
     acbb_error err = { { 0 } };
-    if (acbb_sweepjob_start(a->sweep, &a->ed.scene, spec, metrics, (size_t)n, 0, &err) != ACBB_OK) {
+    if (acbb_sweepjob_start(sw(a)->job, &a->ed.scene, spec, metrics, (size_t)n, 0, &err) != ACBB_OK) {
         acbb_app_msg(a, ACBB_ROLE_ERROR, "%s", err.msg);
         return;
     }
-    a->sw.top = 0;
-    acbb_results_ran(a, ACBB_RAN_SWEEP);
+    sw(a)->top = 0;
+    sw(a)->ran_on = a->ed.scene;
     acbb_app_msg(a, ACBB_ROLE_NORMAL, "sweep started on %s%s: %s (x cancels)", acbb_editor_name(&a->ed),
                  a->ed.modified ? "*" : "", spec);
 }
 
-void acbb_screen_sweep_follow(acbb_app *a)
+/* Announce the end of a run (once per run). */
+static void follow(acbb_app *a)
 {
-    const acbb_sweep_view *v = &a->swv;
-    if (v->job.phase <= ACBB_JOB_RUNNING || v->job.run_id == a->sw.seen_run) return;
-    a->sw.seen_run = v->job.run_id;
+    const acbb_sweep_view *v = &sw(a)->v;
+    if (v->job.phase <= ACBB_JOB_RUNNING || v->job.run_id == sw(a)->seen_run) return;
+    sw(a)->seen_run = v->job.run_id;
     char took[16];
     acbb_fmt_duration(v->job.ended_s - v->job.started_s, took, sizeof took);
     if (v->job.phase == ACBB_JOB_DONE)
@@ -199,26 +222,68 @@ void acbb_screen_sweep_follow(acbb_app *a)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "sweep failed: %s", v->job.message);
 }
 
+/* ---- the job's lifecycle (screens.h) ---- */
+
+static acbb_status make(void *p, acbb_error *err) { return acbb_sweepjob_new(&((sweep_ui *)p)->job, err); }
+
+static acbb_status init(acbb_app *a, void **state, acbb_error *err)
+{
+    (void)a;
+    return acbb_screen_state_new(state, sizeof(sweep_ui), make, err);
+}
+
+static void sweep_free(void *state)
+{
+    sweep_ui *p = state;
+    if (!p) return;
+    acbb_sweepjob_free(p->job);
+    free(p);
+}
+
+static int wake_fd(const acbb_app *a) { return acbb_job_wake_fd(acbb_sweepjob_job(sw(a)->job)); }
+
+static void wake(acbb_app *a) { acbb_job_drain_wake(acbb_sweepjob_job(sw(a)->job)); }
+
+static void poll(acbb_app *a)
+{
+    sweep_ui *p = sw(a);
+    acbb_sweepjob_read(p->job, &p->v);
+    if (p->v.job.run_id == p->hidden_run ||
+        acbb_results_stale(a, &acbb_screen_sweep, &p->ran_on, p->v.job.phase > ACBB_JOB_RUNNING))
+        memset(&p->v, 0, sizeof p->v);
+    follow(a);
+}
+
+static void drop(acbb_app *a)
+{
+    sweep_ui *p = sw(a);
+    acbb_job_cancel(acbb_sweepjob_job(p->job));
+    acbb_sweepjob_read(p->job, &p->v); /* a run started since the last frame is hidden too */
+    p->hidden_run = p->v.job.run_id;
+}
+
+static int running(const acbb_app *a) { return sw(a)->v.job.phase == ACBB_JOB_RUNNING; }
+
 /* ---- drawing ---- */
 
 /* Where the current metric sits among those the last sweep recorded (-1: not there). */
 static int recorded(const acbb_app *a, const char **path, const char **label)
 {
-    *path = acbb_whatif_metric(a, a->sw.metric, label);
-    for (size_t m = 0; m < a->swv.n_metrics; m++)
-        if (strcmp(a->swv.metrics[m], *path) == 0) return (int)m;
+    *path = acbb_whatif_metric(a, sw(a)->metric, label);
+    for (size_t m = 0; m < sw(a)->v.n_metrics; m++)
+        if (strcmp(sw(a)->v.metrics[m], *path) == 0) return (int)m;
     return -1;
 }
 
 static void draw_heading(acbb_app *a, acbb_rect b)
 {
-    const acbb_sweep_view *v = &a->swv;
+    const acbb_sweep_view *v = &sw(a)->v;
     const char *path, *label;
     recorded(a, &path, &label);
     char unit[16];
     acbb_metric_unit(path, unit, sizeof unit);
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER, "Sweep %s = %s   metric: %s [%s]",
-             a->sw.key[0] ? a->sw.key : "(s: choose a key)", a->sw.range, label, unit);
+             sw(a)->key[0] ? sw(a)->key : "(s: choose a key)", sw(a)->range, label, unit);
     int y = b.y + 1;
     char took[16];
     acbb_fmt_duration(v->job.ended_s - v->job.started_s, took, sizeof took);
@@ -267,17 +332,17 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
 {
     double x[ACBB_WHATIF_MAX_POINTS], y[ACBB_WHATIF_MAX_POINTS];
     double span[2];
-    size_t n = curve(&a->swv, m, x, y, span);
-    long fi = find_field(a->swv.key);
+    size_t n = curve(&sw(a)->v, m, x, y, span);
+    long fi = find_field(sw(a)->v.key);
     const double *ys[1] = { y };
     const char *names[1] = { label };
     acbb_chart_spec sp = { .title = label, .yunit = yunit,
                            .xunit = fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "", .x = x,
                            .ys = ys, .names = names, .nser = 1, .n = n, .floor_y = NAN,
-                           .memo = &a->memo[4], .memo_key = a->swv.job.run_id * 64 + (unsigned)m,
+                           .memo = &sw(a)->memo, .memo_key = sw(a)->v.job.run_id * 64 + (unsigned)m,
                            .x_fixed = isfinite(span[0]), .x0 = span[0], .x1 = span[1] };
-    if (a->swv.job.phase == ACBB_JOB_IDLE) {
-        const char *note = acbb_results_note(a, ACBB_RAN_SWEEP);
+    if (sw(a)->v.job.phase == ACBB_JOB_IDLE) {
+        const char *note = acbb_results_note(a, &acbb_screen_sweep);
         acbb_put_wrap(a, r.y + 1, r.x + 2, r.w - 2, 3, ACBB_ROLE_DIM, note ? note : "(no sweep yet: r runs one)");
         return;
     }
@@ -291,17 +356,17 @@ static void draw_chart(acbb_app *a, acbb_rect r, int m, const char *label, const
 
 static void draw_table(acbb_app *a, acbb_rect r, int m, const char *yunit)
 {
-    const acbb_sweep_view *v = &a->swv;
-    long fi = find_field(v->key[0] ? v->key : a->sw.key);
+    const acbb_sweep_view *v = &sw(a)->v;
+    long fi = find_field(v->key[0] ? v->key : sw(a)->key);
     char xh[32], yh[32];
     snprintf(xh, sizeof xh, "[%s]", fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
     snprintf(yh, sizeof yh, "[%s]", yunit);
     acbb_put(a, r.y, r.x, r.w, ACBB_ROLE_HEADER, " %10.10s %13.13s", xh, yh);
     int rows = r.h - 1, n = (int)v->total;
-    if (a->sw.top > n - rows) a->sw.top = n - rows;
-    if (a->sw.top < 0) a->sw.top = 0;
-    for (int k = 0; k < rows && a->sw.top + k < n; k++) {
-        const acbb_whatif_point *p = &v->pts[a->sw.top + k];
+    if (sw(a)->top > n - rows) sw(a)->top = n - rows;
+    if (sw(a)->top < 0) sw(a)->top = 0;
+    for (int k = 0; k < rows && sw(a)->top + k < n; k++) {
+        const acbb_whatif_point *p = &v->pts[sw(a)->top + k];
         int yy = r.y + 1 + k;
         if (!p->have)
             acbb_put(a, yy, r.x, r.w, ACBB_ROLE_DIM, " %10s %13s", "...", v->job.phase == ACBB_JOB_RUNNING ? "running" : "-");
@@ -327,15 +392,15 @@ static const char *first_failure(const acbb_sweep_view *v)
 static int superseded(const acbb_app *a)
 {
     char spec[192];
-    snprintf(spec, sizeof spec, "%s=%s", a->sw.key, a->sw.range);
-    return a->swv.job.phase > ACBB_JOB_RUNNING && strcmp(a->swv.spec, spec) != 0;
+    snprintf(spec, sizeof spec, "%s=%s", sw(a)->key, sw(a)->range);
+    return sw(a)->v.job.phase > ACBB_JOB_RUNNING && strcmp(sw(a)->v.spec, spec) != 0;
 }
 
 static void draw(acbb_app *a)
 {
     acbb_rect b = a->lay.body;
     if (superseded(a)) {
-        memset(&a->swv, 0, sizeof a->swv); /* this frame draws as before any sweep */
+        memset(&sw(a)->v, 0, sizeof sw(a)->v); /* this frame draws as before any sweep */
         draw_heading(a, b);
         acbb_put(a, b.y + 3, b.x + 2, b.w - 2, ACBB_ROLE_DIM, "(no sweep of this key and range yet: r runs it)");
         return;
@@ -345,7 +410,7 @@ static void draw(acbb_app *a)
     int m = recorded(a, &path, &label);
     char unit[16];
     acbb_metric_unit(path, unit, sizeof unit);
-    const char *why = first_failure(&a->swv);
+    const char *why = first_failure(&sw(a)->v);
     int top = b.y + 2 + (why != NULL ? 2 : 0);
     if (why) { /* two rows: a reason is longer than 80 columns */
         char line[600];
@@ -367,18 +432,18 @@ static void export_plot(acbb_app *a)
     const char *path, *label;
     int m = recorded(a, &path, &label);
     double x[ACBB_WHATIF_MAX_POINTS], y[ACBB_WHATIF_MAX_POINTS], span[2];
-    size_t n = a->swv.job.phase > ACBB_JOB_RUNNING && m >= 0 ? curve(&a->swv, m, x, y, span) : 0;
+    size_t n = sw(a)->v.job.phase > ACBB_JOB_RUNNING && m >= 0 ? curve(&sw(a)->v, m, x, y, span) : 0;
     if (n == 0) {
-        acbb_app_msg(a, ACBB_ROLE_WARN, "%s", a->swv.job.phase == ACBB_JOB_RUNNING
+        acbb_app_msg(a, ACBB_ROLE_WARN, "%s", sw(a)->v.job.phase == ACBB_JOB_RUNNING
                      ? "the sweep is still running" : "no swept point of this metric to plot (r runs a sweep)");
         return;
     }
     char unit[16], xl[ACBB_SWEEP_KEY + 32], yl[160], title[PATH_MAX + 64], png[PATH_MAX + 32], svg[PATH_MAX + 32];
-    long fi = find_field(a->swv.key);
-    snprintf(xl, sizeof xl, "%s, %s", a->swv.key, fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
+    long fi = find_field(sw(a)->v.key);
+    snprintf(xl, sizeof xl, "%s, %s", sw(a)->v.key, fi >= 0 ? acbb_scene_field((size_t)fi)->unit : "");
     acbb_metric_unit(path, unit, sizeof unit);
     snprintf(yl, sizeof yl, "%s, %s", label, unit);
-    snprintf(title, sizeof title, "%s: sweep of %s", acbb_editor_name(&a->ed), a->swv.key);
+    snprintf(title, sizeof title, "%s: sweep of %s", acbb_editor_name(&a->ed), sw(a)->v.key);
     acbb_plot_series sr = { label, x, y, n, 1, 1, 1 };
     acbb_plot_xy px = { title, xl, yl, &sr, 1 };
     acbb_error err = { { 0 } };
@@ -392,7 +457,7 @@ static void export_plot(acbb_app *a)
 
 static int cancel(acbb_app *a)
 {
-    if (!acbb_job_cancel(acbb_sweepjob_job(a->sweep))) return 0;
+    if (!acbb_job_cancel(acbb_sweepjob_job(sw(a)->job))) return 0;
     acbb_app_msg(a, ACBB_ROLE_WARN, "cancelling the sweep ...");
     return 1;
 }
@@ -400,7 +465,7 @@ static int cancel(acbb_app *a)
 static int on_key(acbb_app *a, int ch)
 {
     int page = a->lay.body.h - 4 > 1 ? a->lay.body.h - 4 : 1;
-    if (acbb_scroll_key(ch, page, (int)a->swv.total, &a->sw.top)) return 1;
+    if (acbb_scroll_key(ch, page, (int)sw(a)->v.total, &sw(a)->top)) return 1;
     switch (ch) {
     case 'r': case '\n': case '\r': case KEY_ENTER: start(a); return 1;
     case 'g': export_plot(a); return 1;
@@ -410,21 +475,21 @@ static int on_key(acbb_app *a, int ch)
     case 27: return cancel(a); /* otherwise Esc clears the message as everywhere */
     case 's': {
         char name[128] = "";
-        if (!a->sw.key[0]) acbb_scene_key_name(a->ed.cursor, name, sizeof name);
-        acbb_app_ask(a, "sweep key (Tab completes): ", a->sw.key[0] ? a->sw.key : name, key_answer,
+        if (!sw(a)->key[0]) acbb_scene_key_name(a->ed.cursor, name, sizeof name);
+        acbb_app_ask(a, "sweep key (Tab completes): ", sw(a)->key[0] ? sw(a)->key : name, key_answer,
                      acbb_scene_key_name);
         return 1;
     }
     case 'e':
-        acbb_app_ask(a, "range lo:hi:n or v1,v2,...: ", a->sw.range, range_answer, NULL);
+        acbb_app_ask(a, "range lo:hi:n or v1,v2,...: ", sw(a)->range, range_answer, NULL);
         return 1;
     case '<': case '>': case 'h': case 'l': case KEY_LEFT: case KEY_RIGHT: {
         int dir = ch == '>' || ch == 'l' || ch == KEY_RIGHT ? 1 : -1, n = acbb_whatif_metric_count(a);
-        a->sw.metric = ((a->sw.metric + dir) % n + n) % n;
+        sw(a)->metric = ((sw(a)->metric + dir) % n + n) % n;
         return 1;
     }
     case 'c':
-        acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, a->sw.metric, NULL),
+        acbb_app_ask(a, "metric (JSON path, Tab completes): ", acbb_whatif_metric(a, sw(a)->metric, NULL),
                      metric_answer, acbb_metric_choice);
         return 1;
     default: return 0;
@@ -446,4 +511,6 @@ static const acbb_help_line help[] = {
 const acbb_screen acbb_screen_sweep = {
     .name = "Sweep", .key = '9', .draw = draw, .on_key = on_key, .enter = enter, .help = help,
     .hint = "s key  e range  </> metric  c type metric  r sweep  x/Esc cancel  ? help",
+    .init = init, .free = sweep_free, .wake_fd = wake_fd, .wake = wake, .poll = poll, .drop = drop,
+    .running = running, .job_subject = "A sweep", .job_noun = "sweep",
 };

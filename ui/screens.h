@@ -29,6 +29,20 @@ typedef struct {
     int (*search)(acbb_app *a, const char *text, int dir);
     /* A mouse click at body row `row` (0 = the body's first row). NULL: none. */
     void (*click)(acbb_app *a, int row, int col);
+
+    /* Its own state and background work, as htop's meter classes own
+     * theirs: the loop calls these for every row of the table (app.c,
+     * results.c), so a screen with a job is one file plus its row. NULL:
+     * nothing to do. The state lives in acbb_screen_state(a, screen). */
+    size_t state_size;                   /* without init: its state is this many zeroed bytes */
+    acbb_status (*init)(acbb_app *a, void **state, acbb_error *err); /* before the loop */
+    void (*free)(void *state);           /* after it: cancel, join, free (NULL state too). NULL: free() */
+    int (*wake_fd)(const acbb_app *a);   /* its job's wake-up pipe, for select() */
+    void (*wake)(acbb_app *a);           /* ... was readable: drain it */
+    void (*poll)(acbb_app *a);           /* once per frame: take the job's published state */
+    void (*drop)(acbb_app *a);           /* another preset was opened: cancel, hide the result */
+    int (*running)(const acbb_app *a);   /* 1 while its job runs (as of the last frame) */
+    const char *job_subject, *job_noun;  /* "The preload map" starts a sentence, "preload map" after "the" */
 } acbb_screen;
 
 /* The Run screen (the presentation view and baseline keys show it). */
@@ -47,5 +61,15 @@ int acbb_screen_index(const acbb_screen *s);
 void acbb_screen_show(acbb_app *a, int i);
 /* The current screen's descriptor. */
 const acbb_screen *acbb_screen_current(const acbb_app *a);
+/* The state screen s made in its init (NULL: none). */
+void *acbb_screen_state(const acbb_app *a, const acbb_screen *s);
+/* For an init: *state = size zeroed bytes, then make(*state) (its job;
+ * NULL: none); on failure nothing is kept. */
+acbb_status acbb_screen_state_new(void **state, size_t size, acbb_status (*make)(void *p, acbb_error *err),
+                                  acbb_error *err);
+/* Every screen's init, in table order; stops at the first failure. */
+acbb_status acbb_screens_init(acbb_app *a, acbb_error *err);
+/* Every screen's free (also after a failed acbb_screens_init). */
+void acbb_screens_free(acbb_app *a);
 
 #endif

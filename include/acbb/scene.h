@@ -54,9 +54,23 @@ typedef enum { ACBB_ROLL_HYST_SEED, ACBB_ROLL_HYST_JOHNSON } acbb_roll_hyst;
 typedef enum { ACBB_PROFILE_SEED, ACBB_PROFILE_REFERENCE } acbb_physics_profile;
 typedef enum { ACBB_NET_46, ACBB_NET_7 } acbb_network_kind;
 typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode;
-/* [set] arrangement (MODEL.md 14): single = one bearing (today's scenes). */
-typedef enum { ACBB_SET_SINGLE, ACBB_SET_DB, ACBB_SET_DF, ACBB_SET_DT, ACBB_SET_DBT,
-               ACBB_SET_QBC } acbb_set_arrangement;
+/* [set] arrangement (MODEL.md 14): single = one bearing (today's scenes).
+ * The one table of arrangements, a row each: X(ID, name, bearings, most
+ * bearings, the direction of each bearing's thrust by increasing x with
+ * the last sign repeated) [HK-EC, preloading chapter]: DB (O) +-, DF (X)
+ * -+, DT tandem ++.., DBT ++-, QBC ++--. acbb/set.h reads it. */
+#define ACBB_SET_ARRANGEMENT_TABLE(X) \
+    X(SINGLE, "single", 1, 1, "+") \
+    X(DB, "DB", 2, 2, "+-") \
+    X(DF, "DF", 2, 2, "-+") \
+    X(DT, "DT", 2, ACBB_MAX_SET, "+") \
+    X(DBT, "DBT", 3, 3, "++-") \
+    X(QBC, "QBC", 4, 4, "++--")
+#define ACBB_SET_ENUM_ROW(id, name, n, n_max, orient) ACBB_SET_##id,
+typedef enum {
+    ACBB_SET_ARRANGEMENT_TABLE(ACBB_SET_ENUM_ROW)
+    ACBB_SET_ARRANGEMENTS                    /* how many */
+} acbb_set_arrangement;
 /* mounting.tilt (issue 18): auto (default) = free: solved under any off-axis load. */
 typedef enum { ACBB_TILT_AUTO, ACBB_TILT_FREE, ACBB_TILT_HELD } acbb_tilt_mode;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;

@@ -28,7 +28,20 @@ double acbb_set_pitch(const acbb_scene *s);
  * one width: matched spacers). Either pointer may be NULL. */
 void acbb_set_spacers(const acbb_scene *s, double *L_inner, double *L_outer);
 
-/* Short name of an arrangement ("single", "DB", ...). */
+/* One arrangement (a row of ACBB_SET_ARRANGEMENT_TABLE, acbb/scene.h). */
+typedef struct {
+    const char *name;   /* "single", "DB", ... (the key's value) */
+    int n;              /* bearings it has */
+    int n_max;          /* most bearings set.n_bearings may ask for (DT: ACBB_MAX_SET) */
+    const char *orient; /* '+' / '-' per bearing by increasing x, the last repeated */
+} acbb_set_kind;
+
+/* The arrangements, indexed by acbb_set_arrangement. */
+extern const acbb_set_kind acbb_set_kinds[ACBB_SET_ARRANGEMENTS];
+/* Their names, NULL-ended (the [set] arrangement key's choices). */
+extern const char *const acbb_set_arrangement_names[ACBB_SET_ARRANGEMENTS + 1];
+
+/* Short name of an arrangement ("single", "DB", ...; "?" outside the table). */
 const char *acbb_set_arrangement_name(acbb_set_arrangement a);
 
 #ifdef __cplusplus

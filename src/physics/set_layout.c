@@ -1,13 +1,25 @@
-/* acbb — the layout of a bearing set (MODEL.md section 14, acbb/set.h).
- * Orientations: DB (O) +-, DF (X) -+, DT tandem ++.., DBT ++-, QBC ++--
- * [HK-EC, preloading chapter]; bearings numbered by increasing x. */
+/* acbb — the layout of a bearing set (MODEL.md section 14, acbb/set.h);
+ * the arrangements are ACBB_SET_ARRANGEMENT_TABLE (acbb/scene.h);
+ * bearings numbered by increasing x. */
 #include <stddef.h>
+#include <string.h>
 #include "acbb/set.h"
+
+#define KIND_ROW(id, name, n, n_max, orient) [ACBB_SET_##id] = { name, n, n_max, orient },
+const acbb_set_kind acbb_set_kinds[ACBB_SET_ARRANGEMENTS] = { ACBB_SET_ARRANGEMENT_TABLE(KIND_ROW) };
+#define NAME_ROW(id, name, n, n_max, orient) name,
+const char *const acbb_set_arrangement_names[ACBB_SET_ARRANGEMENTS + 1] = {
+    ACBB_SET_ARRANGEMENT_TABLE(NAME_ROW) NULL
+};
+
+static int known(acbb_set_arrangement a)
+{
+    return (unsigned)a < ACBB_SET_ARRANGEMENTS;
+}
 
 const char *acbb_set_arrangement_name(acbb_set_arrangement a)
 {
-    static const char *const names[] = { "single", "DB", "DF", "DT", "DBT", "QBC" };
-    return (unsigned)a < sizeof names / sizeof names[0] ? names[a] : "?";
+    return known(a) ? acbb_set_kinds[a].name : "?";
 }
 
 double acbb_set_pitch(const acbb_scene *s)
@@ -24,19 +36,16 @@ void acbb_set_spacers(const acbb_scene *s, double *L_inner, double *L_outer)
 
 static int count(const acbb_scene *s)
 {
-    static const int n[] = { 1, 2, 2, 2, 3, 4 };
     if (s->set_n_bearings > 0) return s->set_n_bearings;
-    return (unsigned)s->set_arrangement < 6 ? n[s->set_arrangement] : 1;
+    return known(s->set_arrangement) ? acbb_set_kinds[s->set_arrangement].n : 1;
 }
 
-static int orientation(acbb_set_arrangement a, int n, int k)
+static int orientation(acbb_set_arrangement a, int k)
 {
-    switch (a) {
-    case ACBB_SET_DB: return k == 0 ? 1 : -1;
-    case ACBB_SET_DF: return k == 0 ? -1 : 1;
-    case ACBB_SET_DBT: case ACBB_SET_QBC: return 2 * k < n ? 1 : -1;
-    default: return 1;
-    }
+    if (!known(a)) return 1;
+    const char *o = acbb_set_kinds[a].orient;
+    size_t last = strlen(o) - 1;
+    return o[(size_t)k < last ? (size_t)k : last] == '-' ? -1 : 1;
 }
 
 int acbb_set_layout(const acbb_scene *s, int orient[ACBB_MAX_SET], double x[ACBB_MAX_SET])
@@ -44,7 +53,7 @@ int acbb_set_layout(const acbb_scene *s, int orient[ACBB_MAX_SET], double x[ACBB
     int n = count(s);
     double c = acbb_set_pitch(s);
     for (int k = 0; k < n && k < ACBB_MAX_SET; k++) {
-        if (orient) orient[k] = orientation(s->set_arrangement, n, k);
+        if (orient) orient[k] = orientation(s->set_arrangement, k);
         if (x) x[k] = (k - 0.5 * (n - 1)) * c;
     }
     return n;

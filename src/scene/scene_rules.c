@@ -391,7 +391,6 @@ static acbb_status rule_spacers(const acbb_scene *s, acbb_error *err)
  * holds it; an opposed set needs a preload > 0 (by spacers or by spring). */
 static acbb_status rule_set(const acbb_scene *s, acbb_error *err)
 {
-    static const int nominal[] = { 1, 2, 2, 2, 3, 4 };
     char a[40], b[40], c[40];
     int n = acbb_set_layout(s, NULL, NULL);
     const char *arr = acbb_set_arrangement_name(s->set_arrangement);
@@ -399,10 +398,12 @@ static acbb_status rule_set(const acbb_scene *s, acbb_error *err)
         return acbb_error_set(err, ACBB_EINVAL, "set.n_bearings = %d: a set has at most %d "
                               "bearings (docs/physics.md section 14)", n, ACBB_MAX_SET);
     int dt = s->set_arrangement == ACBB_SET_DT;
-    if (s->set_n_bearings > 0 && (dt ? n < 2 : n != nominal[s->set_arrangement]))
+    const acbb_set_kind *kind = &acbb_set_kinds[s->set_arrangement];
+    if (s->set_n_bearings > 0 && (n < kind->n || n > kind->n_max))
         return acbb_error_set(err, ACBB_EINVAL, "set.n_bearings = %d with set.arrangement = %s: "
                               "%s has %s%d bearings (0 = the arrangement's count)", n, arr, arr,
-                              dt ? "2 to " : "", dt ? ACBB_MAX_SET : nominal[s->set_arrangement]);
+                              kind->n < kind->n_max ? (snprintf(a, sizeof a, "%d to ", kind->n), a) : "",
+                              kind->n_max);
     if (n == 1) return ACBB_OK;
     if (s->set_spacing > 0.0 && s->set_spacing < s->width)
         return acbb_error_set(err, ACBB_EINVAL, "set.spacing_mm = %s is shorter than "

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "acbb/limits.h"
+#include "acbb/set.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
 #include "c_locale.h"
@@ -51,7 +52,6 @@ static const char *const k_visc[] = {"roelands", "barus", "const", NULL};
 static const char *const k_traction[] = {"eyring-cap", "bair-winer", NULL};
 static const char *const k_preload[] = {"force", "displacement", NULL};
 static const char *const k_tilt[] = {"auto", "free", "held", NULL};
-static const char *const k_set[] = {"single", "DB", "DF", "DT", "DBT", "QBC", NULL};
 static const char *const k_network[] = {"46", "7", NULL};
 static const char *const k_contact[] = {"stationary", "moving", NULL};
 static const char *const k_thermal_mode[] = {"transient", "steady", NULL};
@@ -248,7 +248,7 @@ const acbb_sfield acbb_sf_table[] = {
          "included), or held (0; the tilt before issue 18 at 0 N m)"),
 
     /* [set] (MODEL.md 14): a spindle set; single = today's one bearing */
-    ENUM("set", "arrangement", set_arrangement, k_set, ACBB_SET_SINGLE,
+    ENUM("set", "arrangement", set_arrangement, acbb_set_arrangement_names, ACBB_SET_SINGLE,
          "bearings on the shaft: single, DB (back-to-back), DF (face-to-face), DT (tandem), "
          "DBT (tandem pair + one, back-to-back), QBC (two tandem pairs, back-to-back)"),
     INT("set", "n_bearings", set_n_bearings, 0, 0, 8,
