@@ -202,9 +202,11 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     if (base && (rc = acbb_cli_baseline_check(base))) return rc;
     acbb_scene sc;
     if ((rc = acbb_cli_load_scene(a, &sc))) return rc;
-    /* fidelity.preset / target: apply here, so the report shows the knobs used */
+    /* The scene resolved as the Sim will (acbb_scene_resolve): the report,
+     * JSON and other branch show the knobs and oil used, and the note
+     * says which fidelity entry was chosen, before the run. */
     acbb_fidelity_choice fc;
-    if (acbb_fidelity_apply(&sc, &fc) && !a->val[CLI_OPT_QUIET])
+    if (acbb_scene_resolve(&sc, &sc, &fc) && !a->val[CLI_OPT_QUIET])
         acbb_cli_say("%s\n", fc.note);
 
     acbb_cli_progress prog;

@@ -48,8 +48,8 @@ typedef struct {
 bool acbb_branches_wanted(const acbb_scene *s);
 
 /* Run s in the other thermal mode and compare with `run`, the finished
- * snapshot of s as it was run (fidelity.preset applied or not: it is
- * applied here the same way). ACBB_OK also when the other run fails (its
+ * snapshot of s as it was run. `s` is the run's resolved scene
+ * (acbb_sim_scene, or acbb_scene_resolve in fidelity.h). ACBB_OK also when the other run fails (its
  * status says how); ACBB_CANCELLED when `cancel` (may be NULL) stopped it;
  * ACBB_ENOMEM.
  * deadline_ms: when s->max_wall_s > 0, the bound's deadline for the run

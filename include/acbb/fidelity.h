@@ -74,6 +74,14 @@ int acbb_fidelity_resolve(const acbb_scene *s, acbb_fidelity_choice *c);
  * `c` may be NULL. Returns 1 when knobs were overridden. */
 int acbb_fidelity_apply(acbb_scene *s, acbb_fidelity_choice *c);
 
+/* The scene as a run uses it, resolved once: the fidelity preset / target
+ * applied (acbb_fidelity_apply) and a graded oil's viscosities and
+ * pressure-viscosity coefficient derived (MODEL.md 16). `out` may be `in`;
+ * resolving a resolved scene changes nothing. The Sim's constructor calls
+ * it (acbb_sim_scene is its result); callers that build no Sim call it.
+ * `fc` may be NULL. Returns 1 when a preset / target chose the knobs. */
+int acbb_scene_resolve(const acbb_scene *in, acbb_scene *out, acbb_fidelity_choice *fc);
+
 #ifdef __cplusplus
 }
 #endif

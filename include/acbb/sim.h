@@ -211,6 +211,11 @@ typedef struct {
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                             acbb_error *err);
 
+/* The scene this Sim runs, resolved once by its constructor (or last
+ * restart): acbb_scene_resolve (fidelity.h) of the scene given. Writers
+ * echo it rather than resolving again. Valid while the Sim lives. */
+const acbb_scene *acbb_sim_scene(const acbb_sim *sim);
+
 /* Copy out what a user sees (never NaN/Inf: checked before publication). */
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *out);
 

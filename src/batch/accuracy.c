@@ -365,8 +365,8 @@ acbb_status acbb_acc_run_plan(const acbb_scene *base_in, const acbb_accuracy_opt
 {
     /* A preset or target in the base would override every edit below:
      * resolve it once, then vary the knobs it chose. */
-    acbb_scene base = *base_in;
-    acbb_fidelity_apply(&base, NULL);
+    acbb_scene base;
+    acbb_scene_resolve(base_in, &base, NULL);
     size_t total = plan_count(o), done = 0;
     for (size_t i = 0; i < PLAN_N; i++) {
         if (!planned(o, &k_plan[i])) continue;

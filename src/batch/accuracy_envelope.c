@@ -73,10 +73,9 @@ static acbb_status point_scene(const acbb_scene *base, size_t i, acbb_scene *sc,
     char v[2][32];
     snprintf(v[0], sizeof v[0], "%g", rpm);
     snprintf(v[1], sizeof v[1], "%g", load);
-    *sc = *base;
     /* Resolve a preset / target once: left in, it would override the
      * ladder's knobs when each Sim compiles its scene. */
-    acbb_fidelity_apply(sc, NULL);
+    acbb_scene_resolve(base, sc, NULL);
     acbb_status st = acbb_scene_set(sc, "operating.inner_speed_rpm", v[0], err);
     if (st == ACBB_OK) st = acbb_scene_set(sc, "operating.axial_load_N", v[1], err);
     if (st == ACBB_OK) st = acbb_scene_set(sc, "effects.thermal_expansion", te ? "on" : "off", err);

@@ -109,7 +109,7 @@ static int step_hook(void *ctx, const acbb_sim *sim)
 static void apply_mode(acbb_scene *s, acbb_batch_mode mode)
 {
     if (mode == ACBB_BATCH_AS_SCENE) return;
-    acbb_fidelity_apply(s, NULL);
+    acbb_scene_resolve(s, s, NULL);
     s->thermal_mode = mode == ACBB_BATCH_STEADY ? ACBB_THERMAL_STEADY : ACBB_THERMAL_TRANSIENT;
 }
 

@@ -12,13 +12,12 @@
 #include "gsl_quiet.h"
 #include "cancel.h"
 
-/* The scene as `acbb run` prepares it: text, settings, fidelity preset. */
+/* The scene as `acbb run` prepares it: text, settings (the Sim resolves it). */
 static acbb_status prepare(const char *text, size_t len, const char *const *settings,
                            size_t n, acbb_scene *sc, acbb_error *err)
 {
     acbb_status st = acbb_scene_load_text_n(text, len, NULL, sc, err);
     if (st == ACBB_OK) st = acbb_scene_apply_edits(sc, settings, n, err);
-    if (st == ACBB_OK) acbb_fidelity_apply(sc, NULL);
     return st;
 }
 
@@ -26,17 +25,21 @@ static acbb_status prepare(const char *text, size_t len, const char *const *sett
  * status. As `acbb run` does, a scene that wants it (acbb_branches_wanted)
  * also solves the other branch, unless the run was cancelled, within what
  * the run left of fidelity.max_wall_s. */
-static acbb_status run(acbb_json *j, const acbb_scene *sc, const acbb_atomic_int *cancel)
+static acbb_status run(acbb_json *j, const acbb_scene *given, const acbb_atomic_int *cancel)
 {
     acbb_error err = { { 0 } };
-    double deadline = sc->max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * sc->max_wall_s : 0.0;
+    double deadline = given->max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * given->max_wall_s : 0.0;
     acbb_sim *sim = NULL;
-    acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ .cancel = cancel }, &sim, &err);
+    acbb_status st = acbb_sim_create(given, &(acbb_sim_opts){ .cancel = cancel }, &sim, &err);
+    acbb_scene rs; /* the scene as the run used it, echoed in the document */
     if (st != ACBB_OK) {
-        acbb_json_write_failed(j, sc, acbb_status_name(st),
+        acbb_scene_resolve(given, &rs, NULL); /* no Sim to ask */
+        acbb_json_write_failed(j, &rs, acbb_status_name(st),
                                err.msg[0] ? err.msg : acbb_status_name(st));
         return st;
     }
+    rs = *acbb_sim_scene(sim);
+    const acbb_scene *sc = &rs;
     acbb_snapshot *snap = malloc(sizeof *snap);
     if (!snap) {
         acbb_sim_free(sim);

@@ -32,13 +32,11 @@ static void section(acbb_json *j, const acbb_snapshot *s, const char *name)
     acbb_json_close(j, '}');
 }
 
-static void scene(acbb_json *j, const acbb_scene *sc0)
+/* `sc` is the resolved scene (acbb_sim_scene, or acbb_scene_resolve when
+ * no Sim was built): a graded oil's viscosities as the run used them
+ * (MODEL.md 16), so the keys rerun to the same result. */
+static void scene(acbb_json *j, const acbb_scene *sc)
 {
-    /* A graded oil's viscosities as the run resolves them (MODEL.md 16),
-     * so the keys rerun to the same result; a custom oil is unchanged. */
-    acbb_scene r = *sc0;
-    acbb_lubricant_apply(&r);
-    const acbb_scene *sc = &r;
     acbb_json_open(j, "scene", '{', false);
     /* Every key of the schema in preset units: the run's full input, each
      * once (schema 4 dropped the headline copies beside it, issue 28 item 7). */

@@ -93,8 +93,7 @@ acbb_status acbb_branch_run(const acbb_scene *o, const acbb_atomic_int *cancel, 
 static acbb_status run_other(const acbb_scene *s, const acbb_atomic_int *cancel, double deadline_ms,
                              acbb_snapshot *snap)
 {
-    acbb_scene o = *s;
-    acbb_fidelity_apply(&o, NULL);
+    acbb_scene o = *s; /* resolved by the caller (acbb_sim_scene) */
     o.thermal_mode = o.thermal_mode == ACBB_THERMAL_STEADY ? ACBB_THERMAL_TRANSIENT
                                                            : ACBB_THERMAL_STEADY;
     int shared = o.max_wall_s > 0.0 && deadline_ms > 0.0;
@@ -126,9 +125,7 @@ acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
         return acbb_error_set(err, rc, "%s", rc == ACBB_CANCELLED
                               ? "cancelled before the second branch was solved" : "out of memory");
     }
-    acbb_scene applied = *s;
-    acbb_fidelity_apply(&applied, NULL);
-    int run_steady = applied.thermal_mode == ACBB_THERMAL_STEADY;
+    int run_steady = s->thermal_mode == ACBB_THERMAL_STEADY;
     const acbb_snapshot *st = run_steady ? run : other, *tr = run_steady ? other : run;
     acbb_branch_summarize(st, &out->steady);
     acbb_branch_summarize(tr, &out->transient);

@@ -200,10 +200,10 @@ static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
                             acbb_error *err)
 {
-    sim->s = *s;
-    /* fidelity.preset / target_error_pct override the knobs (fidelity.h). */
-    acbb_fidelity_apply(&sim->s, NULL);
-    acbb_lubricant_apply(&sim->s);
+    /* The scene resolved once (fidelity.h acbb_scene_resolve); the run
+     * then applies its operating point to its own copy. */
+    acbb_scene_resolve(s, &sim->resolved, NULL);
+    sim->s = sim->resolved;
     s = &sim->s;
     acbb_life_static_basis(s, &sim->life_basis); /* once per scene, not per snapshot */
     double t0 = acbb_now_ms();
@@ -277,6 +277,7 @@ acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb
 /* A bearing set: its members and stepper live in sim_set.c. */
 static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
+    acbb_scene_resolve(s, &sim->resolved, NULL);
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
     acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
@@ -311,6 +312,11 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
     }
     *out = sim;
     return ACBB_OK;
+}
+
+const acbb_scene *acbb_sim_scene(const acbb_sim *sim)
+{
+    return &sim->resolved;
 }
 
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,

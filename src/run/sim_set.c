@@ -444,8 +444,7 @@ acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_s
     if (rc != ACBB_OK) return rc;
     acbb_set_sim *ss = calloc(1, sizeof *ss);
     if (!ss) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    ss->s = *s;
-    acbb_fidelity_apply(&ss->s, NULL); /* as every member's (sim.c sim_init) */
+    acbb_scene_resolve(s, &ss->s, NULL); /* as every member's (sim.c sim_init) */
     acbb_operating op; /* the first row, or the last for the steady solve (sim.c sim_init) */
     if (ss->s.thermal_mode == ACBB_THERMAL_STEADY || !ss->s.heating)
         acbb_schedule_final(&ss->s, &op);

@@ -48,7 +48,8 @@ typedef struct {
 } checkpoint;
 
 struct acbb_sim {
-    acbb_scene s;
+    acbb_scene resolved;       /* the scene as given, resolved once (acbb_sim_scene) */
+    acbb_scene s;              /* `resolved` at the run's operating point */
     acbb_mech *mech;
     acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
     acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
