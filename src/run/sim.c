@@ -281,7 +281,7 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
     acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
-    acbb_status rc = acbb_set_sim_new(s, &o, &sim->set, err);
+    acbb_status rc = acbb_set_sim_new(&sim->resolved, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
     sim->run.state = acbb_set_sim_outcome(sim->set, &sim->run.status, &sim->run.iter);
     sim->reported = -1;

@@ -440,11 +440,12 @@ acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_s
 {
     acbb_error e2 = { "" };
     if (!err) err = &e2;
-    acbb_status rc = acbb_scene_validate(s, err);
+    /* a graded oil's derived values named as sim.c sim_init names them */
+    acbb_status rc = acbb_lubricant_explain(s, acbb_scene_validate(s, err), err);
     if (rc != ACBB_OK) return rc;
     acbb_set_sim *ss = calloc(1, sizeof *ss);
     if (!ss) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
-    acbb_scene_resolve(s, &ss->s, NULL); /* as every member's (sim.c sim_init) */
+    ss->s = *s; /* resolved by the caller (sim_set.h) */
     acbb_operating op; /* the first row, or the last for the steady solve (sim.c sim_init) */
     if (ss->s.thermal_mode == ACBB_THERMAL_STEADY || !ss->s.heating)
         acbb_schedule_final(&ss->s, &op);

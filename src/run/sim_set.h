@@ -21,6 +21,8 @@
 
 typedef struct acbb_set_sim acbb_set_sim;
 
+/* `s` is resolved (acbb_scene_resolve, fidelity.h): sim.c set_init passes
+ * the Sim's acbb_sim_scene. */
 acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_set_sim **out,
                              acbb_error *err);
 void acbb_set_sim_free(acbb_set_sim *ss);
