@@ -76,19 +76,18 @@ static void draw(acbb_app *a)
         return;
     }
     const acbb_set_view *v = &s->set;
+    /* Each line fits 80 columns (issue 29 item 7); [ ] is in the hint bar. */
     acbb_put(a, b.y, b.x, b.w, ACBB_ROLE_HEADER,
-             "%s set of %d   preload %.1f N now, %.1f N at assembly   lift-off thrust %.0f N "
-             "(other side keeps %.1f N)", acbb_set_arrangement_name(a->st.scene.set_arrangement),
-             s->n_bearings, v->preload_N, v->preload_assembly_N, v->liftoff_thrust_N,
-             v->liftoff_remainder_N);
+             "%s x%d: preload %.1f N (assembly %.1f)  lift-off thrust %.0f N (%.1f N left)",
+             acbb_set_arrangement_name(a->st.scene.set_arrangement), s->n_bearings, v->preload_N,
+             v->preload_assembly_N, v->liftoff_thrust_N, v->liftoff_remainder_N);
     if (s->state == ACBB_RUN_CONVERGED)
         acbb_put(a, b.y + 1, b.x, b.w, ACBB_ROLE_NORMAL,
-                 "stiffness at the nose: axial %.1f N/um  radial %.1f N/um  tilt %.1f N m/mrad"
-                 "   [ ] choose bearing", v->stiffness_axial * 1e-6, v->stiffness_radial * 1e-6,
-                 v->stiffness_tilt * 1e-3);
+                 "stiffness at the nose: axial %.1f N/um  radial %.1f N/um  tilt %.1f N m/mrad",
+                 v->stiffness_axial * 1e-6, v->stiffness_radial * 1e-6, v->stiffness_tilt * 1e-3);
     else /* computed once, at convergence (issue 29 item 4: never a misleading 0) */
         acbb_put(a, b.y + 1, b.x, b.w, ACBB_ROLE_NORMAL,
-                 "stiffness at the nose: pending (computed at convergence)   [ ] choose bearing");
+                 "stiffness at the nose: pending (computed at convergence)");
     table(a, b);
     /* the spacers (MODEL.md 14 L_s, L_h) and what their growth does now;
      * the row after the longest table (4 bearings) is free */
@@ -125,4 +124,5 @@ static const acbb_help_line help[] = {
 
 const acbb_screen acbb_screen_set = {
     .name = "Set", .key = 'S', .draw = draw, .on_key = on_key, .help = help, .click = click,
+    .hint = "[ ] or j k choose the bearing the Run, Nodes and Balls screens show  ? help",
 };
