@@ -46,17 +46,29 @@ wait_for() {
 # 1. The case: the dynamic level of combined-load (set-up alone takes
 #    many seconds), SIGINT during the set-up. (How soon it ends is a
 #    benchmark, not a test: no clock here.)
+#    If the handler was never seen (the process ended first, or the poll
+#    could not read it) nothing was asked of the program: the checks are
+#    skipped and say so, never passed. A handler seen and then ignored
+#    fails them.
 "$ACBB" run "$PRESETS/combined-load.ini" --set fidelity.model=dynamic --json \
     >"$TMP/a.json" 2>"$TMP/err" &
 pid=$!
-caught $pid
-kill -INT $pid
-wait $pid
-rc=$?
-code $rc 3 "dynamic combined-load, SIGINT in the set-up: exit 3"
-jqt "$TMP/a.json" '.status == "cancelled"' "JSON status is cancelled"
-finite "$TMP/a.json" "every number in that JSON is finite"
-has "$TMP/err" "cancelled" "stderr says cancelled"
+if caught $pid; then
+    kill -INT $pid
+    wait $pid
+    rc=$?
+    code $rc 3 "dynamic combined-load, SIGINT in the set-up: exit 3"
+    jqt "$TMP/a.json" '.status == "cancelled"' "JSON status is cancelled"
+    finite "$TMP/a.json" "every number in that JSON is finite"
+    has "$TMP/err" "cancelled" "stderr says cancelled"
+else
+    wait $pid
+    echo "# the run ended (exit $?) before its SIGINT handler was seen"
+    for what in "SIGINT in the set-up: exit 3" "JSON status cancelled" "finite JSON" \
+        "stderr says cancelled"; do
+        skip "$what" "the handler was never seen in /proc (nothing was sent)"
+    done
+fi
 
 # 2. Cancelled after some steps: the last good state is in the output. The
 #    dynamic level on combined-load takes its first steps within a second
