@@ -16,6 +16,7 @@
 #include "acbb/fidelity.h"
 #include "acbb/physics_profile.h"
 #include "acbb/loss_kinds.h"
+#include "acbb/spindle.h"
 #include "acbb/sim.h"
 #include "acbb/branches.h"
 #include "acbb/history.h"

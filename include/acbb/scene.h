@@ -73,6 +73,19 @@ typedef enum {
 } acbb_set_arrangement;
 /* mounting.tilt (issue 18): auto (default) = free: solved under any off-axis load. */
 typedef enum { ACBB_TILT_AUTO, ACBB_TILT_FREE, ACBB_TILT_HELD } acbb_tilt_mode;
+/* [spindle] rear_support (docs/spindle.md): how the rear set is held
+ * axially. fixed: located in the housing like the front set (the shaft's
+ * growth between the sets loads both); spring: its outer rings slide in a
+ * sleeve pushed by springs (rear_spring_N through the rear set, reacted by
+ * the front); floating: a sliding sleeve with friction rear_friction_N
+ * against the shaft's growth. */
+typedef enum { ACBB_REAR_FIXED, ACBB_REAR_SPRING, ACBB_REAR_FLOATING } acbb_rear_support;
+#define ACBB_SPINDLE_MAX_SEG 8  /* segments of the shaft and of the housing */
+/* One stepped-cylinder segment of a spindle's shaft or housing, m. The
+ * housing's bore is the bore its bearings sit in. */
+typedef struct {
+    double length, od, bore;
+} acbb_segment;
 typedef enum { ACBB_THERMAL_TRANSIENT, ACBB_THERMAL_STEADY } acbb_thermal_mode;
 /* thermal.contact_model (docs/contact_heat.md): stationary = isothermal spot
  * constriction on both bodies (MODEL.md 8.1 SP, the seed); moving = each
@@ -173,6 +186,38 @@ typedef struct {
                                   * outer as the housing (MODEL.md 14 chi_s, chi_h) */
     double set_inner_spacer;     /* inner spacer length L_s, m; 0 = spacing - width (matched) */
     double set_outer_spacer;     /* outer spacer length L_h, m; 0 = spacing - width (matched) */
+
+    /* [shaft] [housing] [motor] [spindle] (docs/spindle.md): a spindle is a
+     * scene with shaft_segments > 0. [bearing], [set] and [mounting]
+     * describe its front set; operating.axial_load_N / radial_load_N act at
+     * the nose (x = 0, x grows towards the rear); the shaft and the housing
+     * use materials.shaft and materials.housing. */
+    int shaft_segments;          /* 0: no spindle (a bearing or a set, as before) */
+    acbb_segment shaft_seg[ACBB_SPINDLE_MAX_SEG]; /* from the nose */
+    int shaft_n_div;             /* beam elements and thermal cells per segment */
+    int housing_segments;
+    acbb_segment housing_seg[ACBB_SPINDLE_MAX_SEG];
+    double housing_x0;           /* where the housing starts, m from the nose */
+    double housing_h_outer;      /* outer surface film to the air, W/(m^2 K) */
+    double motor_rotor_loss;     /* W, on the shaft cells under the rotor */
+    double motor_stator_loss;    /* W, on the housing cells under the stator */
+    double motor_x0, motor_x1;   /* rotor and stator span, m from the nose (x1 = x0: no motor) */
+    double motor_gap_G;          /* rotor <-> stator across the air gap, W/K */
+    double spindle_front_x;      /* front set centre, m from the nose */
+    double spindle_rear_x;       /* rear set centre, m from the nose */
+    acbb_rear_support spindle_rear_support;
+    acbb_set_arrangement spindle_rear_arrangement; /* the rear set, of the same bearing */
+    double spindle_rear_spacing; /* its centre distance of neighbours, m; 0 = adjacent */
+    double spindle_rear_preload; /* rear pair's rigid (spacer) preload at assembly, N */
+    double spindle_rear_spring;  /* spring: axial force on the rear set, N */
+    double spindle_rear_friction;/* floating: sleeve friction, N */
+    double coolant_flow;         /* jacket flow, m^3/s (preset: l/min); 0 = no coolant */
+    double coolant_inlet_dT;     /* inlet minus ambient_C, K */
+    double coolant_rho, coolant_cp; /* kg/m^3, J/(kg K) */
+    double jacket_x0, jacket_x1; /* jacket span on the housing, m from the nose */
+    double jacket_hA;            /* jacket wall conductance, whole jacket, W/K */
+    int coolant_cells;           /* well-mixed coolant cells along the jacket */
+    double shaft_h_end;          /* shaft end faces to the air, W/(m^2 K) */
 
     /* [surroundings] (MODEL.md 8.1, 13): sizes 0 = derived from the bearing
      * (acbb_scene_surroundings); housing and cap use materials.housing */

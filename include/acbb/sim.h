@@ -15,6 +15,7 @@
 #include "acbb/scene.h"
 #include "acbb/status.h"
 #include "acbb/limits.h"
+#include "acbb/spindle.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/life.h"
 
@@ -136,6 +137,9 @@ typedef struct {
     int n_bearings;
     acbb_set_view set;
     acbb_life life;             /* rating life and static safety of this state (life_eval.h) */
+    /* A spindle (docs/spindle.md): the fields above describe its front set;
+     * spindle.n_sets = 0 for any other scene. */
+    acbb_spindle_view spindle;
 } acbb_snapshot;
 
 typedef struct acbb_sim acbb_sim;
