@@ -254,16 +254,18 @@ acbb_status acbb_spindle_sim_step(acbb_spindle_sim *sp)
 
 /* ---- set-up ---- */
 
-/* The front set: the scene without its shaft, loads at its centre. */
+/* The front set: the scene without its shaft, loads at its centre (for
+ * its first state only, and only those of the signs a scene takes: the
+ * spindle's first evaluation puts the shaft's on it). */
 static void front_scene(const acbb_scene *s, const double L[3], acbb_scene *f)
 {
     *f = *s;
     f->shaft_segments = 0;
     f->housing_segments = 0;
     f->set_load_offset = 0.0;
-    f->axial_load = L[0];
-    f->radial_load = L[1];
-    f->moment_load = L[2];
+    f->axial_load = fmax(L[0], 0.0);
+    f->radial_load = fmax(L[1], 0.0);
+    f->moment_load = f->radial_load > 0.0 ? L[2] : 0.0;
     f->schedule_n = 0; /* the spindle follows the rows */
 }
 

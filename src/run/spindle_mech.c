@@ -62,6 +62,7 @@ static acbb_status support(void *ctx, const double d[3], double f[3], double K[9
         for (int i = t->axial_held ? 0 : 1; i < 3; i++)
             K[3 * i + j] = -(fp[i] - fm[i]) / (2.0 * h[j]);
     }
+    memcpy(t->K, K, sizeof t->K);
     return reaction(t, d, f);
 }
 

@@ -29,6 +29,7 @@ struct acbb_spindle_station {
     double Fa_given;              /* else the axial load the set carries, N */
     acbb_set_mech w;              /* the support's copy of the set's mechanics */
     double load[3];               /* the last evaluation's loads on the set (its frame) */
+    double K[9];                  /* the support's last tangent -df/dd (u, w, theta rows) */
     double landing;               /* the set's own solve minus the shaft's station: m, m, rad (max) */
 };
 
