@@ -378,6 +378,58 @@ static void test_steady(void)
     acbb_sim_free(sim);
 }
 
+/* Statuses: a spindle that cannot go on ends with a named status, its
+ * message naming the set, the last good state kept and every value of the
+ * view finite. A transient run whose bearings pass thermal.temp_limit_C
+ * is a runaway named by set and node. */
+static void test_runaway(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=transient",
+                            "surroundings.shaft_bore_coolant_dT_K=0" };
+    if (!spindle_scene(&s, edits, 2)) return;
+    s.heating = 1;
+    s.temp_limit_C = s.ambient_C + 3.0;
+    acbb_error err = { "" };
+    acbb_sim *sim = NULL;
+    if (!ok(acbb_sim_create(&s, &(acbb_sim_opts){ 0 }, &sim, &err) == ACBB_OK,
+            "runaway: spindle builds: %s", err.msg))
+        return;
+    acbb_sim_run(sim);
+    acbb_sim_snapshot(sim, &o);
+    ok(o.state == ACBB_RUN_FAILED && o.status == ACBB_RUNAWAY
+       && strstr(o.message, "thermal runaway: front set: bearing 0 node"),
+       "runaway: named, with the set and the node: %s", o.message);
+    ok(view_finite(&o.spindle) && o.time > 0.0, "runaway: the last good state (t = %.0f s), "
+       "finite", o.time);
+    acbb_sim_free(sim);
+}
+
+/* A nose load past the bearings' static limit (4.2 GPa contact pressure,
+ * MODEL.md 9) ends the run as a runaway named by the set and the bearing. */
+static void test_overload(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.radial_load = 30000.0;
+    acbb_error err = { "" };
+    acbb_sim *sim = NULL;
+    if (!ok(acbb_sim_create(&s, &(acbb_sim_opts){ 0 }, &sim, &err) == ACBB_OK,
+            "overload: spindle builds: %s", err.msg))
+        return;
+    acbb_sim_run(sim);
+    acbb_sim_snapshot(sim, &o);
+    ok(o.state == ACBB_RUN_FAILED && o.status == ACBB_RUNAWAY
+       && strstr(o.message, "front set: bearing ") && strstr(o.message, "static limit"),
+       "overload: a runaway naming the set and the bearing: %s", o.message);
+    ok(view_finite(&o.spindle), "overload: the view is finite");
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
     test_rigid_one_support();
@@ -385,5 +437,7 @@ int main(void)
     test_nose_stiffness();
     test_spring_rear();
     test_steady();
+    test_runaway();
+    test_overload();
     return done_testing();
 }

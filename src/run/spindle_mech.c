@@ -20,13 +20,13 @@
 #define H_D 1e-9               /* m, the supports' difference step (radial, axial) */
 
 /* The station's reaction f on the shaft at its displacement d: the set's
- * shaft held at (u - shift, w, -theta) (u free when the set is not axially
+ * shaft held at (u + shift, w, -theta) (u free when the set is not axially
  * located: it carries Fa_given), its members solved there. */
 static acbb_status reaction(acbb_spindle_station *t, const double d[3], double f[3])
 {
     acbb_set_mech *w = &t->w;
     double shift = t->k == ACBB_REAR ? t->sp->shift : 0.0;
-    if (t->axial_held) w->q[0] = d[0] - shift;
+    if (t->axial_held) w->q[0] = d[0] + shift;
     w->q[1] = d[1];
     w->q[2] = -d[2];
     w->Fa = t->axial_held ? 0.0 : t->Fa_given;

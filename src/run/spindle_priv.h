@@ -5,8 +5,11 @@
  * Frames (docs/spindle.md): x from the nose towards the rear; the shaft's
  * station displacement d = (u, w, theta), theta positive for w growing
  * with x. A set's own frame (set_mech.h) has its x along the shaft's and
- * its centre at the station: its shaft position q = (u - shift, w,
- * -theta) (set_mech.h's tilt turns the other way), and the loads the
+ * its centre at the station: its shaft position q = (u + shift, w,
+ * -theta) (set_mech.h's tilt turns the other way; shift, the shaft's
+ * thermal growth minus the housing's between the front set and this one,
+ * moves its inner rings against its outer rings as u does: 0 at the
+ * located front set), and the loads the
  * shaft puts on the set (Fa, Fr, M about y at its centre) are
  * (-f_u, -f_w, +f_theta) of the reaction f the set exerts on the shaft. */
 #ifndef ACBB_SPINDLE_PRIV_H
