@@ -37,6 +37,9 @@ static int spindle_scene(acbb_scene *s, const char *const *more, int n_more)
     s->shaft_seg[0] = (acbb_segment){ 0.10, 0.040, 0.015 };
     s->shaft_seg[1] = (acbb_segment){ 0.26, 0.040, 0.015 };
     s->shaft_n_div = 4;
+    s->housing_segments = 1; /* its bore the bearings' outer diameter (the seats) */
+    s->housing_seg[0] = (acbb_segment){ 0.32, 0.120, s->outer_diameter };
+    s->housing_x0 = 0.02;
     s->spindle_front_x = FRONT_X;
     s->spindle_rear_x = REAR_X;
     s->spindle_rear_support = ACBB_REAR_FIXED;

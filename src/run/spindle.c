@@ -329,6 +329,9 @@ acbb_status acbb_spindle_sim_new(const acbb_scene *s, const acbb_sim_opts *o, in
 {
     acbb_error e2 = { "" };
     if (!err) err = &e2;
+    /* a graded oil's derived values named as sim.c sim_init names them */
+    acbb_status rc = acbb_lubricant_explain(s, acbb_scene_validate(s, err), err);
+    if (rc != ACBB_OK) return rc;
     acbb_spindle_sim *sp = calloc(1, sizeof *sp);
     if (!sp) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     sp->s = *s;
@@ -340,7 +343,7 @@ acbb_status acbb_spindle_sim_new(const acbb_scene *s, const acbb_sim_opts *o, in
         acbb_schedule_at(&sp->s, 0.0, &op);
     acbb_schedule_apply(&sp->s, &op);
     sp->cancel = o->cancel;
-    acbb_status rc = set_up(sp, o, err);
+    rc = set_up(sp, o, err);
     if (rc != ACBB_OK) {
         acbb_spindle_sim_free(sp);
         return rc;
