@@ -27,8 +27,10 @@ acbb_run_state acbb_spindle_sim_outcome(const acbb_spindle_sim *sp, acbb_status 
                                         long *iter);
 void acbb_spindle_sim_cancel(acbb_spindle_sim *sp, const atomic_int *cancel);
 void acbb_spindle_sim_deadline(acbb_spindle_sim *sp, double deadline_ms);
-/* The front set's snapshot with the spindle's view (acbb_snapshot.spindle)
- * and the run's state; bearing k: the front set's bearings, then the rear's. */
+/* The front set's snapshot (its n_bearings and set view the front set's)
+ * with the spindle's view (acbb_snapshot.spindle) and the run's state;
+ * bearing k: the front set's bearings, then the rear's (each with its own
+ * set's view). */
 void acbb_spindle_sim_snapshot(const acbb_spindle_sim *sp, acbb_snapshot *o);
 acbb_status acbb_spindle_sim_bearing_snapshot(const acbb_spindle_sim *sp, int k,
                                               acbb_snapshot *o);

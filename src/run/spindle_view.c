@@ -120,7 +120,6 @@ void acbb_spindle_sim_snapshot(const acbb_spindle_sim *sp, acbb_snapshot *o)
 {
     acbb_set_sim_snapshot(sp->st[ACBB_FRONT].ss, o);
     o->work.mechanics_solves += sp->st[ACBB_REAR].ss->sm.solves + sp->probe_solves;
-    o->n_bearings = sp->st[ACBB_FRONT].ss->n + sp->st[ACBB_REAR].ss->n;
     run_fields(sp, o);
     acbb_spindle_view_fill(sp, &o->spindle);
 }
@@ -133,7 +132,6 @@ acbb_status acbb_spindle_sim_bearing_snapshot(const acbb_spindle_sim *sp, int k,
                                   : acbb_set_sim_bearing_snapshot(sp->st[ACBB_REAR].ss,
                                                                   k - front->n, o);
     if (rc != ACBB_OK) return rc;
-    o->n_bearings = front->n + sp->st[ACBB_REAR].ss->n;
     acbb_spindle_view_fill(sp, &o->spindle);
     return ACBB_OK;
 }
