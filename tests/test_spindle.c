@@ -433,6 +433,33 @@ static void test_overload(void)
     acbb_sim_free(sim);
 }
 
+/* A nose thrust far past the pairs' lift-off (about 3 x their 200 N
+ * preload at rest): in each DB pair the bearing on the unloading side lifts off.
+ * The run still converges (its partner carries the set, as a set alone
+ * does), the view flags it and the message names the set and the bearing. */
+static void test_contact_lost(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    s.axial_load = 4000.0;
+    s.radial_load = 0.0; /* else the radial load keeps some balls of every bearing loaded */
+    s.inner_speed = 0.0; /* at rest: at speed the centrifugal force keeps the balls on both
+                            races far longer (MODEL.md 14; 1 mN at 100 rpm) */
+    acbb_sim *sim = run_public(&s, &o, "lift-off");
+    if (!sim) return;
+    ok(o.spindle.sets[0].contact_lost && o.spindle.sets[1].contact_lost,
+       "lift-off: both sets flag a lost contact (Q_max of the bearings %g %g, %g %g N)",
+       o.spindle.sets[0].Q_max_N[0], o.spindle.sets[0].Q_max_N[1], o.spindle.sets[1].Q_max_N[0],
+       o.spindle.sets[1].Q_max_N[1]);
+    ok(strstr(o.message, "; front set bearing 1: contact_lost (lifted off)")
+       && strstr(o.message, "; rear set bearing 1: contact_lost (lifted off)"),
+       "lift-off: the message names the sets and bearings: %s", o.message);
+    is_close(o.spindle.sets[0].axial_N + o.spindle.sets[1].axial_N, 4000.0, 0.0, 1e-6,
+             "lift-off: the sets still carry the thrust, N");
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
     test_rigid_one_support();
@@ -440,6 +467,7 @@ int main(void)
     test_nose_stiffness();
     test_spring_rear();
     test_steady();
+    test_contact_lost();
     test_runaway();
     test_overload();
     return done_testing();
