@@ -13,7 +13,7 @@
  * temperature rise. --repeat defaults to 3 (1..1000); --knobs picks a subset
  * of model, contact_grid, hertz, mech_tol, steady_tol, thermal, network;
  * --models the model levels tried (static, quasi-static, quasi-dynamic,
- * dynamic; default all that acbb_sim_new accepts — dynamic can be slow).
+ * dynamic; default all that acbb_sim_create accepts — dynamic can be slow).
  * --csv writes one row per setting (results by their `acbb metrics` names,
  * errors as fractions, %.17g, empty field for an undefined number)
  * atomically (include/acbb/outfile.h). --plot

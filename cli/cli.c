@@ -177,7 +177,7 @@ static int start_sim(const acbb_scene *sc, bool json, const atomic_int *cancel,
 {
     acbb_error err = { { 0 } };
     acbb_cli_progress_note(prog, "setting up the %s model", acbb_model_level_name(sc->model));
-    acbb_status st = acbb_sim_new_ctl(sc, cancel, sim, &err);
+    acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ .cancel = cancel }, sim, &err);
     acbb_cli_progress_end(prog);
     if (st == ACBB_OK) return 0;
     acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));

@@ -68,7 +68,7 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    acbb_status st = acbb_sim_new(sc, &sim, &err);
+    acbb_status st = acbb_sim_create(sc, NULL, &sim, &err);
     if (st != ACBB_OK) {
         acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         return acbb_cli_exit_for(st);

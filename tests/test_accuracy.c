@@ -181,7 +181,7 @@ static void check_values(const acbb_scene *s, const acbb_accuracy_row *rows, siz
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
     acbb_snapshot snap;
-    ok(acbb_sim_new(s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
+    ok(acbb_sim_create(s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
        "direct run of the default scene converges");
     if (!sim) return;
     acbb_sim_snapshot(sim, &snap);

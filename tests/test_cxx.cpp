@@ -19,7 +19,9 @@ static acbb_status run(const acbb_scene *s, const acbb_atomic_int *flag, double 
 {
     acbb_sim *sim = nullptr;
     acbb_error err = {};
-    acbb_status rc = acbb_sim_new_ctl(s, flag, &sim, &err);
+    acbb_sim_opts opts = {};
+    opts.cancel = flag;
+    acbb_status rc = acbb_sim_create(s, &opts, &sim, &err);
     if (rc == ACBB_OK) {
         acbb_run_ctl ctl = {nullptr, nullptr, flag};
         rc = acbb_sim_drive(sim, &ctl);

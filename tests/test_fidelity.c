@@ -147,11 +147,11 @@ static void test_sim_applies(void)
     acbb_fidelity_set(&b, entry("fast"));
     acbb_snapshot sa, sb;
     acbb_sim *sim = NULL;
-    int good = acbb_sim_new(&a, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    int good = acbb_sim_create(&a, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &sa);
     acbb_sim_free(sim);
     sim = NULL;
-    good = good && acbb_sim_new(&b, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    good = good && acbb_sim_create(&b, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &sb);
     acbb_sim_free(sim);
     ok(good && sa.iteration == sb.iteration && sa.losses.total == sb.losses.total &&

@@ -18,7 +18,7 @@ static double skid_by_hand(const acbb_scene *base, double rpm, double preload)
     acbb_error e;
     acbb_sim *sim;
     static acbb_snapshot sn;
-    if (acbb_sim_new(&s, &sim, &e) != ACBB_OK) return NAN;
+    if (acbb_sim_create(&s, NULL, &sim, &e) != ACBB_OK) return NAN;
     acbb_sim_run(sim);
     acbb_sim_snapshot(sim, &sn);
     acbb_sim_free(sim);

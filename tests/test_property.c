@@ -385,7 +385,7 @@ static void one_scene(const options *o, int i, tally *t)
     int kept = randomize(&s, i, o->wall, low);
     if (o->acbb && i % 4 == 0) three_ways(o, &s, i);
     acbb_sim *sim = NULL;
-    acbb_status st = acbb_sim_new(&s, &sim, &err);
+    acbb_status st = acbb_sim_create(&s, NULL, &sim, &err);
     if (st != ACBB_OK) {
         /* Set-up may refuse (ill-posed) or fail (no initial equilibrium):
          * a named status with a message is the property. */

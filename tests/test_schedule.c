@@ -156,7 +156,7 @@ static acbb_status run(const acbb_scene *s, acbb_snapshot *snap)
 {
     acbb_sim *sim;
     acbb_error e;
-    acbb_status rc = acbb_sim_new(s, &sim, &e);
+    acbb_status rc = acbb_sim_create(s, NULL, &sim, &e);
     if (rc != ACBB_OK) return rc;
     rc = acbb_sim_run(sim);
     acbb_sim_snapshot(sim, snap);

@@ -312,7 +312,7 @@ static acbb_status run_to_end(const acbb_scene *s, acbb_snapshot *out)
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    acbb_status st = acbb_sim_new(s, &sim, &err);
+    acbb_status st = acbb_sim_create(s, NULL, &sim, &err);
     if (st != ACBB_OK) return st;
     st = acbb_sim_drive(sim, &(acbb_run_ctl){ 0 });
     acbb_sim_snapshot(sim, out);
@@ -522,7 +522,7 @@ static int same_as_sim(const acbb_study_compare *c, const compare_seen *s, size_
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    if (acbb_sim_new(&c->pts[i].scene, &sim, &err) != ACBB_OK) return 0;
+    if (acbb_sim_create(&c->pts[i].scene, NULL, &sim, &err) != ACBB_OK) return 0;
     acbb_run_ctl ctl = { 0 };
     acbb_status st = acbb_sim_drive(sim, &ctl);
     acbb_snapshot *snap = malloc(sizeof *snap);

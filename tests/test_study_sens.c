@@ -100,7 +100,7 @@ static int run_one(const acbb_scene *s, acbb_snapshot *out)
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    int good = acbb_sim_new(s, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK;
+    int good = acbb_sim_create(s, NULL, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK;
     if (good) acbb_sim_snapshot(sim, out);
     acbb_sim_free(sim);
     return good && out->state == ACBB_RUN_CONVERGED;

@@ -169,7 +169,7 @@ static void test_worker_basics(const acbb_scene *s0)
     /* Flat out to steady state equals a direct acbb_sim_run of the scene. */
     acbb_sim *ref = NULL;
     acbb_snapshot rs;
-    acbb_sim_new(s0, &ref, &err);
+    acbb_sim_create(s0, NULL, &ref, &err);
     acbb_sim_run(ref);
     acbb_sim_snapshot(ref, &rs);
     acbb_sim_free(ref);

@@ -262,7 +262,7 @@ void acbb_scene_default(acbb_scene *s);
  * oil_nu40 (ISO 3448 midpoint), oil_nu100 (from oil_vi, ASTM D2270) and
  * oil_alpha_pv (Wooster) written into `s`, except where those keys hold
  * other than their defaults; a custom oil is left as given. A run applies
- * it to its own copy (acbb_sim_new). */
+ * it to its own copy (acbb_sim_create). */
 void acbb_lubricant_apply(acbb_scene *s);
 double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
 /* A failed check `rc` of a scene after acbb_lubricant_apply: when a graded
