@@ -14,7 +14,7 @@
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
-#include "acbb/branches.h"
+#include "acbb/tools/branches.h"
 
 #define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
 #define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
@@ -87,7 +87,7 @@ void acbb_cli_list_metrics(FILE *f);
  * the quantity in CSV and sweep records). */
 void acbb_cli_list_metrics_json(FILE *f);
 
-/* A JSON number as %.17g, the double itself (acbb/json.h); null when not
+/* A JSON number as %.17g, the double itself (acbb/tools/json.h); null when not
  * finite. Not cJSON_CreateNumber: cJSON 1.7 prints 15 digits whenever they
  * read back within one ulp, so its numbers may be off by one ulp. */
 struct cJSON *acbb_cli_json_number(double v);

@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/history.h"
-#include "acbb/plot.h"
+#include "acbb/tools/history.h"
+#include "acbb/tools/plot.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "commands.h"

@@ -21,7 +21,7 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "geometry.h"
 #include "hertz.h"
 #include "lubrication.h"

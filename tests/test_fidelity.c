@@ -1,4 +1,4 @@
-/* Tests of the fidelity presets and targets (include/acbb/fidelity.h),
+/* Tests of the fidelity presets and targets (include/acbb/tools/fidelity.h),
  * the envelope (acbb_accuracy_envelope) and the deterministic cost
  * (acbb_accuracy_work_units) on the 7008C scene (MODEL.md section 10).
  *
@@ -12,8 +12,8 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/accuracy.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/fidelity.h"
 #include "acbb/sim.h"
 #include "accuracy_priv.h"
 

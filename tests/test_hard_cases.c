@@ -20,8 +20,8 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/accuracy.h"
-#include "acbb/measure.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/measure.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 

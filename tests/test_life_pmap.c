@@ -1,4 +1,4 @@
-/* The preload window (include/acbb/preload_map.h): the skid criterion
+/* The preload window (include/acbb/tools/preload_map.h): the skid criterion
  * recomputed from the ball speeds of an independent run of the same cell,
  * a window that runaway bounds from above, named statuses, no NaN. */
 #include <math.h>
@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "acbb/acbb.h"
+#include "acbb/tools/preload_map.h"
 #include "tap.h"
 
 /* M_g / (mu Q_i D/2), worst ball, from a run of the cell's scene. */

@@ -9,7 +9,7 @@
 /* is_close with a printf-style name */
 #define IS_CLOSE(got, want, rt, at, ...) do { char nm_[200]; \
         snprintf(nm_, sizeof nm_, __VA_ARGS__); is_close(got, want, rt, at, nm_); } while (0)
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "acbb/sim.h"
 #include "losses.h"
 #include "lubrication.h"

@@ -25,7 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "acbb/sim.h"
 #include "skf_model.h"
 

@@ -16,10 +16,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "acbb/units.h"
 #include "tap.h"
 

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "tap.h"
-#include "acbb/physics_profile.h"
+#include "acbb/tools/physics_profile.h"
 #include "acbb/sim.h"
 
 static acbb_scene load(const char *text)

@@ -36,9 +36,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/ffi.h"
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/scene.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "acbb/sim.h"
 #include "slurp.h"
 #include "tap.h"

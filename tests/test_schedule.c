@@ -6,7 +6,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/acbb.h"
-#include "acbb/measure.h"
+#include "acbb/tools/branches.h"
+#include "acbb/tools/schedule.h"
+#include "acbb/tools/measure.h"
 #include "tap.h"
 
 #define RPM(x) acbb_rpm_to_rads(x)

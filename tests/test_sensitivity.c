@@ -1,12 +1,12 @@
-/* Sensitivity (include/acbb/sensitivity.h): metric lookup by JSON path,
+/* Sensitivity (include/acbb/tools/sensitivity.h): metric lookup by JSON path,
  * the plausible ranges in the schema, one-at-a-time flips against direct
  * runs, Morris elementary effects (an input with no effect gets mu* = 0
  * exactly), option errors. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/sensitivity.h"
-#include "acbb/study.h"
+#include "acbb/tools/sensitivity.h"
+#include "acbb/tools/study.h"
 #include "acbb/units.h"
 #include <gsl/gsl_errno.h>
 #include "tap.h"

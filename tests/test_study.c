@@ -1,4 +1,4 @@
-/* Tests of the seed study (include/acbb/study.h, MODEL.md section 12).
+/* Tests of the seed study (include/acbb/tools/study.h, MODEL.md section 12).
  *
  * 1. The check table against run results built by hand, where the verdict
  *    is known by construction: held, not held, not evaluable (a failed run,
@@ -22,7 +22,7 @@
 #include "network.h"
 #include "acbb/batch.h"
 #include "acbb/sim.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 #include "acbb/units.h"
 
 #include "study_priv.h"

@@ -1,5 +1,5 @@
 /* Tests of the study's robustness over the plausible ranges
- * (acbb_study_robustness, include/acbb/study.h; `acbb report --sensitivity`).
+ * (acbb_study_robustness, include/acbb/tools/study.h; `acbb report --sensitivity`).
  *
  * 1. A check built for the test (item 99, appended to the real table),
  *    whose deciding number is the varied input itself: the verdict, and
@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 
 #include "test_study_preset.h"
 

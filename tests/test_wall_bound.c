@@ -10,7 +10,7 @@
  * as the run loop arms it (sim.c arm_bound). */
 #include <string.h>
 #include "tap.h"
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "sim_struct.h"

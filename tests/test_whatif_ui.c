@@ -63,7 +63,7 @@ static void test_complete(void)
 }
 
 /* The total loss of `s` with axial load `v`, run directly with the steady
- * solve, as a sweep point is (include/acbb/sweep.h). */
+ * solve, as a sweep point is (include/acbb/tools/sweep.h). */
 static double direct_total(const acbb_scene *s, const char *v)
 {
     acbb_scene e = *s;

@@ -26,7 +26,7 @@
 #include <unistd.h>
 
 #include "acbb/batch.h"
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "worker.h"
 #include "wake.h"
 

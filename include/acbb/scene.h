@@ -58,7 +58,7 @@ typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode
  * The one table of arrangements, a row each: X(ID, name, bearings, most
  * bearings, the direction of each bearing's thrust by increasing x with
  * the last sign repeated) [HK-EC, preloading chapter]: DB (O) +-, DF (X)
- * -+, DT tandem ++.., DBT ++-, QBC ++--. acbb/set.h reads it. */
+ * -+, DT tandem ++.., DBT ++-, QBC ++--. acbb/tools/set.h reads it. */
 #define ACBB_SET_ARRANGEMENT_TABLE(X) \
     X(SINGLE, "single", 1, 1, "+") \
     X(DB, "DB", 2, 2, "+-") \

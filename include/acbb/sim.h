@@ -76,7 +76,7 @@ typedef struct {
 
 typedef enum { ACBB_RUN_RUNNING, ACBB_RUN_CONVERGED, ACBB_RUN_FAILED } acbb_run_state;
 
-/* A bearing set's own results (MODEL.md 14; acbb/set.h). Stiffness at the
+/* A bearing set's own results (MODEL.md 14; acbb/tools/set.h). Stiffness at the
  * nose: axial dFa/d(shaft dx), radial dFr/d(nose dz), tilt dM/d(tilt),
  * each with the other shaft freedoms free (0 until converged). Per-bearing
  * entries: axial load in the bearing's own frame, contact_lost = every

@@ -1,4 +1,4 @@
-/* acbb — accuracy-versus-time benchmark (include/acbb/accuracy.h).
+/* acbb — accuracy-versus-time benchmark (include/acbb/tools/accuracy.h).
  *
  * One knob at a time around the base scene (DESIGN.md "Fidelity and
  * effects": every fidelity setting against the finest one on the same
@@ -11,9 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "acbb/accuracy.h"
-#include "acbb/fidelity.h"
-#include "acbb/measure.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/measure.h"
 #include "acbb/sim.h"
 #include "accuracy_priv.h"
 #include "cancel.h"

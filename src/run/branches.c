@@ -3,9 +3,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/branches.h"
-#include "acbb/fidelity.h"
-#include "acbb/measure.h"
+#include "acbb/tools/branches.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/measure.h"
 #include "acbb/units.h"
 
 /* One branch when the two polish to the same steady state: the transient

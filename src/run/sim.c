@@ -8,12 +8,12 @@
 #include <string.h>
 #include <assert.h>
 #include "acbb/sim.h"
-#include "acbb/life_eval.h"
-#include "acbb/measure.h"
+#include "acbb/tools/life_eval.h"
+#include "acbb/tools/measure.h"
 #include "stiffness.h"
 #include "mechanics.h"
 #include "network.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/fidelity.h"
 #include "losses.h"
 #include "lubrication.h"
 #include "expansion.h"
@@ -25,7 +25,7 @@
 #include "gsl_quiet.h"
 #include "sim_set.h"
 #include "steady_polish.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "stepper.h"
 
 

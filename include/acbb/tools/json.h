@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
-#include "acbb/branches.h"
+#include "acbb/tools/branches.h"
 
 #ifdef __cplusplus
 extern "C" {
