@@ -7,8 +7,8 @@
 #include "geometry.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
-#include "acbb/set.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/set.h"
+#include "acbb/tools/schedule.h"
 
 /* ---- cross-field validation ---- */
 
