@@ -9,8 +9,8 @@
 #include <string.h>
 #include "tap.h"
 #include "acbb/sim.h"
-#include "acbb/set.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/set.h"
+#include "acbb/tools/fidelity.h"
 #include "spindle_priv.h"
 #include "sim_struct.h"
 #include "snapshot_check.h"

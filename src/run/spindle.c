@@ -14,8 +14,8 @@
 #include "sim_struct.h"
 #include "sim_priv.h"
 #include "cancel.h"
-#include "acbb/measure.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/schedule.h"
 
 static const char *const set_name[2] = { "front", "rear" };
 
