@@ -460,6 +460,51 @@ static void test_contact_lost(void)
     acbb_sim_free(sim);
 }
 
+/* A schedule's rows move the nose loads: a transient whose radial load
+ * ramps from 400 to 1200 N ends with the sets carrying the last row's. */
+static void test_schedule(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.schedule_n = 2;
+    s.schedule[0] = (acbb_schedule_row){ 0.0, s.inner_speed, FA, 400.0 };
+    s.schedule[1] = (acbb_schedule_row){ 120.0, s.inner_speed, FA, 1200.0 };
+    acbb_sim *sim = run_public(&s, &o, "schedule");
+    if (!sim) return;
+    const acbb_spindle_set_view *v = o.spindle.sets;
+    ok(o.time > 120.0, "schedule: the run went past the last row (t = %.0f s)", o.time);
+    is_close(v[0].radial_N + v[1].radial_N, 1200.0, 0.0, 1e-9 * 1200.0,
+             "schedule: the sets carry the last row's radial load, N");
+    acbb_sim_free(sim);
+}
+
+/* A restart (the TUI's edit) builds the spindle again from the new scene;
+ * one to a bearing set leaves no spindle behind. */
+static void test_restart(void)
+{
+    static acbb_scene s, t;
+    static acbb_snapshot o;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    acbb_sim *sim = run_public(&s, &o, "restart");
+    if (!sim) return;
+    acbb_error err = { "" };
+    t = s;
+    t.radial_load = 2.0 * FR;
+    ok(acbb_sim_restart(sim, &t, 1, &err) == ACBB_OK && run_sim(sim, &o),
+       "restart: a new spindle scene runs: %s %s", err.msg, o.message);
+    is_close(o.spindle.sets[0].radial_N + o.spindle.sets[1].radial_N, 2.0 * FR, 0.0, 1e-6,
+             "restart: with the new nose load, N");
+    t.shaft_segments = 0;
+    t.housing_segments = 0;
+    ok(acbb_sim_restart(sim, &t, 1, &err) == ACBB_OK && run_sim(sim, &o)
+       && o.spindle.n_sets == 0 && !sim->spindle && sim->set,
+       "restart: to the front set alone: no spindle view (%s %s)", err.msg, o.message);
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
     test_rigid_one_support();
@@ -469,6 +514,8 @@ int main(void)
     test_steady();
     test_contact_lost();
     test_runaway();
+    test_schedule();
+    test_restart();
     test_overload();
     return done_testing();
 }
