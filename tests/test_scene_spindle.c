@@ -2,9 +2,11 @@
  * cross-field rule of [shaft] [housing] [motor] [spindle] with its exact
  * message, the 0.01 mm seat tolerance on both sides of its edge, the keys
  * that do nothing (acbb_scene_inactive_effects, acbb_scene_key_inactive),
- * and that a scene without a spindle needs none of it. Messages are the
+ * that a scene without a spindle needs none of it, and that the spindle
+ * presets save and read back. Messages are the
  * user interface of the preset files: checked whole. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "acbb/scene.h"
@@ -252,6 +254,32 @@ static void test_inactive(void)
              true, "surroundings.cap_*");
 }
 
+/* A spindle preset saved whole (acbb_scene_write) reads back to the same
+ * value of every key: the new sections save and load like the others. */
+static void test_round_trip(const char *path)
+{
+    acbb_scene s, t;
+    acbb_error err = { 0 };
+    char *text = NULL;
+    size_t len = 0;
+    bool loaded = acbb_scene_load(path, &s, &err) == ACBB_OK;
+    FILE *f = open_memstream(&text, &len);
+    bool written = loaded && f && acbb_scene_write(f, &s, &err) == ACBB_OK;
+    if (f) fclose(f);
+    bool back = written && acbb_scene_load_text(text, &t, &err) == ACBB_OK;
+    int differ = 0;
+    for (size_t i = 0; back && i < acbb_scene_field_count(); i++) {
+        char a[64], b[64];
+        acbb_scene_field_format(&s, i, a, sizeof a);
+        acbb_scene_field_format(&t, i, b, sizeof b);
+        differ += strcmp(a, b) != 0;
+    }
+    ok(back && differ == 0 && s.shaft_segments > 0 && t.shaft_segments == s.shaft_segments,
+       "%s: loads, is a spindle, saves whole and reads back key for key (%d differ)%s%s", path,
+       differ, back ? "" : ": ", back ? "" : err.msg);
+    free(text);
+}
+
 int main(void)
 {
     test_base_and_file();
@@ -260,5 +288,7 @@ int main(void)
     test_stations();
     test_motor_and_coolant();
     test_inactive();
+    test_round_trip("presets/spindle-belt-DB.ini");
+    test_round_trip("presets/spindle-motor-DBT.ini");
     return done_testing();
 }
