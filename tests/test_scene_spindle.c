@@ -242,6 +242,10 @@ static void test_inactive(void)
              "spindle.rear_spring_N", true, "spindle.rear_spring_N");
     inactive(k_base, "spindle.rear_preload_N=100", "spindle.rear_preload_N", true,
              "spindle.rear_preload_N");
+    inactive(k_base, "spindle.rear_spacing_mm=20", "spindle.rear_spacing_mm", true,
+             "spindle.rear_spacing_mm");
+    inactive(k_base, "spindle.rear_spacing_mm=20;spindle.rear_arrangement=DT",
+             "spindle.rear_spacing_mm", false, "");
     const char *cool = "spindle.coolant_inlet_dT_K, coolant_density_kg_m3, coolant_cp_J_kgK, "
                        "coolant_cells, jacket_*";
     inactive(k_base, "spindle.coolant_cells=4", "spindle.jacket_hA_W_K", true, cool);

@@ -390,6 +390,10 @@ size_t acbb_sf_spindle_inactive(const acbb_scene *s, const acbb_scene *d,
         { sp && !opposed(s->spindle_rear_arrangement) && changed(s, d, "spindle", "rear_preload_N"),
           { "rear_preload_N", "a one-way rear set (single, DT) has no spacer preload; "
             "rear_preload_N acts on a DB, DF, DBT or QBC rear set", "spindle.rear_preload_N" } },
+        { sp && s->spindle_rear_arrangement == ACBB_SET_SINGLE
+              && changed(s, d, "spindle", "rear_spacing_mm"),
+          { "rear_spacing_mm", "spindle.rear_arrangement = single: one rear bearing has no "
+            "neighbour to space", "spindle.rear_spacing_mm" } },
         { sp && s->coolant_flow == 0.0 && coolant_set(s, d),
           { "coolant", "spindle.coolant_flow_l_min = 0: no coolant flows",
             "spindle.coolant_inlet_dT_K, coolant_density_kg_m3, coolant_cp_J_kgK, coolant_cells, "
