@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 #include "acbb/spindle.h"
 #include "scene_internal.h"
 
