@@ -351,6 +351,31 @@ static void test_growth(void)
     tear_down(&f);
 }
 
+/* Material counted once: the joined network's capacity is the shaft's and
+ * the housing's rho c V (by hand) plus each bearing's own parts (rings,
+ * balls, cage, oil-air, end cap), not its piece of housing (1, 2, 3, 4,
+ * 36) and shaft (27, 29), which are the spindle's. */
+static void test_capacity(void)
+{
+    acbb_scene s;
+    spindle_scene(&s);
+    fixture f;
+    if (!make(&f, &s)) return;
+    double a1 = M_PI / 4 * (0.040 * 0.040 - 0.020 * 0.020), a2 = M_PI / 4 * (0.045 * 0.045 - 0.020 * 0.020);
+    double want = s.shaft.rho * s.shaft.cp * (a1 * 0.16 + a2 * 0.20)
+                + s.housing.rho * s.housing.cp * M_PI / 4 * (0.14 * 0.14 - 0.068 * 0.068) * 0.36;
+    for (int p = 0; p < 2; p++)
+        for (int i = 0; i < f.mem[p][0].n; i++) {
+            int piece = i == 1 || i == 2 || i == 3 || i == 4 || i == 36 || i == 27 || i == 29;
+            if (!piece && !acbb_tnet_is_fixed(f.mem[p][0].net, i))
+                want += acbb_tnet_capacity(f.mem[p][0].net, i);
+        }
+    double got = 0.0;
+    for (int i = 0; i < acbb_spindle_net_nodes(f.sn); i++) got += acbb_spindle_net_capacity(f.sn, i);
+    is_close(got, want, 1e-12, 0.0, "capacity: shaft and housing rho c V + the bearings' own parts");
+    tear_down(&f);
+}
+
 /* Refusals: a bearing off the housing; heat on a node held fixed leaves T
  * as it was. */
 static void test_refusals(void)
@@ -369,6 +394,14 @@ static void test_refusals(void)
     f.sn = NULL;
     tear_down(&f);
     spindle_scene(&s);
+    s.coolant_cells = 0;
+    memset(&f, 0, sizeof f);
+    f.spot_scale = 1.0;
+    f.s = f.part_scene[0] = f.part_scene[1] = s;
+    ok(!set_up(&f, &err) && strstr(err.msg, "coolant flow 2 l/min with 0 coolant cells"),
+       "refused: %s", err.msg);
+    tear_down(&f);
+    spindle_scene(&s);
     if (!make(&f, &s)) return;
     double T0 = f.T[5];
     f.q[acbb_spindle_net_part_offset(f.sn, 1)] = 1.0;   /* the rear bearing's ambient node */
@@ -385,6 +418,7 @@ int main(void)
     test_pair();
     test_sync();
     test_growth();
+    test_capacity();
     test_refusals();
     return done_testing();
 }

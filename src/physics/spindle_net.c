@@ -50,31 +50,43 @@ static acbb_shaft_seg seg_of(const acbb_segment *g, const acbb_material *m)
     return s;
 }
 
+/* What the spindle's thermal build does not check itself. */
+static acbb_status scene_checks(const acbb_scene *s, acbb_error *err)
+{
+    if (s->shaft_segments > ACBB_SPINDLE_MAX_SEG || s->housing_segments > ACBB_SPINDLE_MAX_SEG)
+        return acbb_error_set(err, ACBB_EINVAL, "spindle: %d shaft and %d housing segments "
+                              "(at most %d each)", s->shaft_segments, s->housing_segments,
+                              ACBB_SPINDLE_MAX_SEG);
+    if (!(isfinite(s->coolant_flow) && s->coolant_flow >= 0.0) ||
+        (s->coolant_flow > 0.0 && s->coolant_cells < 1))
+        return acbb_error_set(err, ACBB_EINVAL, "spindle: coolant flow %g l/min with %d coolant "
+                              "cells (a flow >= 0, and at least one cell when it flows)",
+                              s->coolant_flow * 60000.0, s->coolant_cells);
+    return ACBB_OK;
+}
+
 /* The spindle's own network from the scene; two stand-in stations at the
  * sets' centres (their edges are not copied: the sets take their place). */
 static acbb_status build_spindle(acbb_spindle_net *sn, const acbb_scene *s, acbb_error *err)
 {
+    acbb_status st = scene_checks(s, err);
+    if (st != ACBB_OK) return st;
     acbb_shaft_seg sh[ACBB_SPINDLE_MAX_SEG], ho[ACBB_SPINDLE_MAX_SEG];
-    int ns = s->shaft_segments, nh = s->housing_segments;
-    for (int i = 0; i < ns && i < ACBB_SPINDLE_MAX_SEG; i++) sh[i] = seg_of(&s->shaft_seg[i], &s->shaft);
-    for (int i = 0; i < nh && i < ACBB_SPINDLE_MAX_SEG; i++)
-        ho[i] = seg_of(&s->housing_seg[i], &s->housing);
-    if (ns > ACBB_SPINDLE_MAX_SEG || nh > ACBB_SPINDLE_MAX_SEG)
-        return acbb_error_set(err, ACBB_EINVAL, "spindle: %d shaft and %d housing segments "
-                              "(at most %d each)", ns, nh, ACBB_SPINDLE_MAX_SEG);
-    acbb_spindle_station st[2];
-    for (int p = 0; p < 2; p++) st[p] = (acbb_spindle_station){sn->x_set[p], 1.0, 1.0, 0.0};
+    for (int i = 0; i < s->shaft_segments; i++) sh[i] = seg_of(&s->shaft_seg[i], &s->shaft);
+    for (int i = 0; i < s->housing_segments; i++) ho[i] = seg_of(&s->housing_seg[i], &s->housing);
+    acbb_spindle_station sta[2];
+    for (int p = 0; p < 2; p++) sta[p] = (acbb_spindle_station){sn->x_set[p], 1.0, 1.0, 0.0};
     int cool = s->coolant_flow > 0.0;
     /* no motor (x1 = x0): a point at the housing's start keeps the spans valid */
     double m0 = s->motor_x1 > s->motor_x0 ? s->motor_x0 : s->housing_x0;
     double m1 = s->motor_x1 > s->motor_x0 ? s->motor_x1 : s->housing_x0;
     acbb_spindle_thermal_def d = {
-        .shaft = sh, .n_shaft = ns, .housing = ho, .n_housing = nh,
-        .housing_x0 = s->housing_x0, .n_div = s->shaft_n_div, .station = st, .n_station = 2,
-        .fixed_station = 0, .rotor = {m0, m1}, .stator = {m0, m1}, .G_gap = s->motor_gap_G,
-        .jacket = {s->jacket_x0, s->jacket_x1}, .n_cool = cool ? s->coolant_cells : 0,
-        .m_dot = s->coolant_flow * s->coolant_rho, .c_p = s->coolant_cp,
-        .T_in = s->ambient_C + s->coolant_inlet_dT, .hA = s->jacket_hA,
+        .shaft = sh, .n_shaft = s->shaft_segments, .housing = ho,
+        .n_housing = s->housing_segments, .housing_x0 = s->housing_x0, .n_div = s->shaft_n_div,
+        .station = sta, .n_station = 2, .fixed_station = 0, .rotor = {m0, m1},
+        .stator = {m0, m1}, .G_gap = s->motor_gap_G, .jacket = {s->jacket_x0, s->jacket_x1},
+        .n_cool = cool ? s->coolant_cells : 0, .m_dot = s->coolant_flow * s->coolant_rho,
+        .c_p = s->coolant_cp, .T_in = s->ambient_C + s->coolant_inlet_dT, .hA = s->jacket_hA,
         .C_cool = 0.0,   /* coolant hold-up neglected (no scene key; docs/spindle.md) */
         .T_air = s->ambient_C, .h_housing = s->housing_h_outer, .h_shaft_end = s->shaft_h_end,
         .T_ref = s->ambient_C};
