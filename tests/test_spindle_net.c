@@ -239,11 +239,12 @@ static void compare_alone(fixture *f, acbb_scene *alone, const char *what)
     double q[ACBB_MAX_NODES], T[ACBB_MAX_NODES];
     acbb_network_heat(&one, alone, &heat, q);
     ok(acbb_tnet_steady(one.net, q, T) == ACBB_OK, "%s: bearing alone solved", what);
-    int off = acbb_spindle_net_part_offset(f->sn, 0), worst = 0;
+    const double *Tm = acbb_spindle_net_member_T(f->sn, f->T, 0, 0);
+    int worst = 0;
     double d = 0.0;
     for (int i = 1; i < f->mem[0][0].n; i++) {
         if (acbb_tnet_is_fixed(one.net, i)) continue;
-        if (fabs(f->T[off + i] - T[i]) > d) { d = fabs(f->T[off + i] - T[i]); worst = i; }
+        if (fabs(Tm[i] - T[i]) > d) { d = fabs(Tm[i] - T[i]); worst = i; }
     }
     ok(isfinite(Th + Ts) && d < 1e-9, "%s: every bearing node as the bearing alone held at the "
        "spindle's housing %.3f C and shaft %.3f C (max difference %.2g K at node %d; ball %.3f C)",
@@ -295,6 +296,9 @@ static void test_pair(void)
     if (!make_parts(&f, &s, &front, &s)) return;
     ok(f.set[0].n_members == 2 && fabs(f.part[0].x[1] - f.part[0].x[0] - 0.030) < 1e-12,
        "front pair at %.1f and %.1f mm", f.part[0].x[0] * 1e3, f.part[0].x[1] * 1e3);
+    ok(acbb_spindle_net_member_T(f.sn, f.T, 0, 1) == f.T + acbb_spindle_net_part_offset(f.sn, 0) +
+       f.mem[0][0].n && !acbb_spindle_net_member_T(f.sn, f.T, 1, 1),
+       "the second member's nodes follow the first's; the rear set has one");
     check_steady_balance(&f, "DB pair + single");
     tear_down(&f);
 }

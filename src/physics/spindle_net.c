@@ -367,6 +367,12 @@ int acbb_spindle_net_part_offset(const acbb_spindle_net *sn, int p)
     return p >= 0 && p < 2 ? sn->off[p] : -1;
 }
 
+const double *acbb_spindle_net_member_T(const acbb_spindle_net *sn, const double *T, int p, int k)
+{
+    if (p < 0 || p > 1 || k < 0 || k >= sn->part[p].set->n_members) return NULL;
+    return T + sn->off[p] + sn->part[p].set->off[k];
+}
+
 double acbb_spindle_net_capacity(const acbb_spindle_net *sn, int node)
 {
     return acbb_tnet_is_fixed(sn->net, node) ? 0.0 : acbb_tnet_capacity(sn->net, node);

@@ -84,6 +84,10 @@ void acbb_spindle_net_free(acbb_spindle_net *sn);
 int acbb_spindle_net_nodes(const acbb_spindle_net *sn);
 /* Part p's node i (its set network's numbering) is node offset + i. */
 int acbb_spindle_net_part_offset(const acbb_spindle_net *sn, int p);
+/* Member k of part p's temperatures in T (the bearing's own numbering,
+ * network.h), for acbb_network_part_temps and the like; NULL for a bad p
+ * or k. */
+const double *acbb_spindle_net_member_T(const acbb_spindle_net *sn, const double *T, int p, int k);
 /* Capacity of a node, J/K (0 for a fixed or merged one). */
 double acbb_spindle_net_capacity(const acbb_spindle_net *sn, int node);
 
