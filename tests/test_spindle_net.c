@@ -18,37 +18,32 @@
 
 #define NMAX 512
 
-/* A 360 mm spindle: shaft 40/45/40 mm over a 20 mm bore, a cast-iron
- * housing 140 mm over the 68 mm bore, the motor between the sets, a
- * four-cell jacket, the front set at 45 mm, the rear at 300 mm. */
+/* A 360 mm spindle, through the [shaft] [housing] [motor] [spindle] keys:
+ * shaft 40/45/40 mm over a 20 mm bore, a cast-iron housing 140 mm over the
+ * 68 mm bore in three segments, the motor between the sets, a four-cell
+ * jacket, the front set at 45 mm, the rear at 300 mm. */
 static void spindle_scene(acbb_scene *s)
 {
+    static const char *const keys[] = {
+        "shaft.segments=3", "shaft.seg1_length_mm=80", "shaft.seg1_od_mm=40",
+        "shaft.seg1_bore_mm=20", "shaft.seg2_length_mm=200", "shaft.seg2_od_mm=45",
+        "shaft.seg2_bore_mm=20", "shaft.seg3_length_mm=80", "shaft.seg3_od_mm=40",
+        "shaft.seg3_bore_mm=20", "shaft.n_div=4", "shaft.end_film_W_m2K=30",
+        "housing.segments=3", "housing.seg1_length_mm=120", "housing.seg1_od_mm=140",
+        "housing.seg1_bore_mm=68", "housing.seg2_length_mm=120", "housing.seg2_od_mm=140",
+        "housing.seg2_bore_mm=68", "housing.seg3_length_mm=120", "housing.seg3_od_mm=140",
+        "housing.seg3_bore_mm=68", "housing.x0_mm=0", "housing.outer_film_W_m2K=10",
+        "motor.rotor_loss_W=100", "motor.stator_loss_W=300", "motor.x0_mm=140",
+        "motor.x1_mm=220", "motor.gap_conductance_W_K=2", "spindle.front_x_mm=45",
+        "spindle.rear_x_mm=300", "spindle.coolant_flow_l_min=2", "spindle.coolant_inlet_dT_K=-2",
+        "spindle.coolant_density_kg_m3=1000", "spindle.coolant_cp_J_kgK=4180",
+        "spindle.jacket_x0_mm=100", "spindle.jacket_x1_mm=260", "spindle.jacket_hA_W_K=50",
+        "spindle.coolant_cells=4",
+    };
+    acbb_error err = {{0}};
     acbb_scene_default(s);
-    s->shaft_segments = 3;
-    s->shaft_seg[0] = (acbb_segment){0.08, 0.040, 0.020};
-    s->shaft_seg[1] = (acbb_segment){0.20, 0.045, 0.020};
-    s->shaft_seg[2] = (acbb_segment){0.08, 0.040, 0.020};
-    s->shaft_n_div = 4;
-    s->housing_segments = 3;
-    for (int i = 0; i < 3; i++) s->housing_seg[i] = (acbb_segment){0.12, 0.140, 0.068};
-    s->housing_x0 = 0.0;
-    s->housing_h_outer = 10.0;
-    s->shaft_h_end = 30.0;
-    s->motor_rotor_loss = 100.0;
-    s->motor_stator_loss = 300.0;
-    s->motor_x0 = 0.14;
-    s->motor_x1 = 0.22;
-    s->motor_gap_G = 2.0;
-    s->spindle_front_x = 0.045;
-    s->spindle_rear_x = 0.30;
-    s->coolant_flow = 2.0 / 60000.0;   /* 2 l/min */
-    s->coolant_inlet_dT = -2.0;
-    s->coolant_rho = 1000.0;
-    s->coolant_cp = 4180.0;
-    s->jacket_x0 = 0.10;
-    s->jacket_x1 = 0.26;
-    s->jacket_hA = 50.0;
-    s->coolant_cells = 4;
+    if (acbb_scene_apply_edits(s, keys, sizeof keys / sizeof keys[0], &err) != ACBB_OK)
+        ok(0, "spindle keys: %s", err.msg);
 }
 
 /* Two sets with their members' networks, joined in a spindle. */
