@@ -278,6 +278,53 @@ static void test_alone(void)
     tear_down(&f);
 }
 
+/* The limit: a shaft and housing so conductive and so strongly cooled
+ * (jacket and rotor-stator gap over the whole length, coolant at the
+ * ambient, no motor loss) that their cells sit at the ambient: the front
+ * bearing approaches the seed's rig alone (housing exterior and shaft bore
+ * held at the ambient). Returns the largest difference, K. */
+static double limit_error(double level)
+{
+    acbb_scene s, alone;
+    acbb_error err = {{0}};
+    spindle_scene(&s);
+    s.shaft.k = s.housing.k = 5.0 * level;
+    s.motor_rotor_loss = s.motor_stator_loss = 0.0;
+    s.motor_x0 = s.jacket_x0 = 0.0;
+    s.motor_x1 = s.jacket_x1 = 0.36;
+    s.motor_gap_G = 1e2 * level;
+    s.jacket_hA = 1e3 * level;
+    s.coolant_flow = 1e-4 * level;
+    s.coolant_inlet_dT = 0.0;
+    fixture f;
+    acbb_scene steel;
+    spindle_scene(&steel);   /* the bearings keep their own materials */
+    if (!make_parts(&f, &s, &steel, &steel)) return NAN;
+    acbb_spindle_net_solve(f.sn, f.q, 0.0, f.T, &err);
+    alone = steel;
+    alone.housing_bc = ACBB_BC_FIXED;
+    alone.bore_bc = (acbb_face_bc){.kind = ACBB_BC_FIXED};
+    acbb_network one;
+    double q[ACBB_MAX_NODES], T[ACBB_MAX_NODES], d = 0.0;
+    acbb_network_build(&alone, &one, &err);
+    run_state(&one, &alone, 1.0);
+    acbb_network_heat(&one, &alone, &heat, q);
+    acbb_tnet_steady(one.net, q, T);
+    const double *Tm = acbb_spindle_net_member_T(f.sn, f.T, 0, 0);
+    for (int i = 0; i < one.n; i++)
+        if (!acbb_tnet_is_fixed(one.net, i)) d = fmax(d, fabs(Tm[i] - T[i]));
+    acbb_network_free(&one);
+    tear_down(&f);
+    return d;
+}
+
+static void test_limit(void)
+{
+    double e1 = limit_error(10.0), e2 = limit_error(1000.0);
+    ok(e2 < 0.01 && e2 < 0.02 * e1, "limit: the bearing approaches the seed's rig alone as the "
+       "spindle's cells approach the ambient (%.3g K, then %.3g K)", e1, e2);
+}
+
 /* A DB pair in front (its members on their own cells, the set's shaft and
  * housing joints replaced by the chains) and a single rear bearing. */
 static void test_pair(void)
@@ -414,6 +461,7 @@ int main(void)
     test_steady();
     test_transient();
     test_alone();
+    test_limit();
     test_pair();
     test_sync();
     test_growth();
