@@ -1,7 +1,7 @@
 /* acbb — the spindle's one thermal network: the spindle's own cells
  * (shaft_thermal.h, built from the scene) joined with the front and rear
  * bearing sets' networks (network_set.h) at each member's x
- * (docs/spindle.md "Joining the bearings"). Build, joints and sync; the
+ * (docs/spindle.md "Joining the bearings' networks"). Build, joints and sync; the
  * solves are in spindle_net_solve.c. */
 #include <math.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /* acbb — one thermal network for a whole spindle (docs/spindle.md "Heat",
- * "Joining the bearings"; internal header): the spindle's shaft, housing,
- * motor, coolant and air (shaft_thermal.h) with the front and the rear
- * bearing set's joined networks (network_set.h; a single bearing is a set
+ * "Joining the bearings' networks"; internal header): the spindle's shaft,
+ * housing, motor, coolant and air (shaft_thermal.h) with the front and the
+ * rear bearing set's joined networks (network_set.h; a single bearing is a set
  * of one) in place of the bearing stations.
  *
  * Each member bearing joins the spindle's shaft cell and housing cell at
@@ -21,6 +21,14 @@
  * The coolant cells are fixed nodes of the symmetric acbb_tnet whose
  * temperatures come from the exact Schur complement of shaft_thermal.h
  * (the advection is not symmetric).
+ *
+ * Use (one thermal step of the engine):
+ *     per member: acbb_network_update(mem, set_scene, &inputs);
+ *     acbb_spindle_net_sync(sn, rel_tol);
+ *     q[] = 0; per member: acbb_network_heat(mem, set_scene, &h, q + off + set->off[k]);
+ *     acbb_spindle_net_solve(sn, q, dt, T, &err);        (T from acbb_spindle_net_init)
+ *     acbb_network_part_temps(mem, acbb_spindle_net_member_T(sn, T, p, k), &parts);
+ *     acbb_spindle_net_growth(sn, T, &growth); acbb_spindle_net_view(sn, T, &view);
  *
  * Ownership: acbb_spindle_net_build returns an object the caller frees
  * with acbb_spindle_net_free. It refers to the two parts' networks (not
