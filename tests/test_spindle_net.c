@@ -407,7 +407,8 @@ static void test_capacity(void)
     spindle_scene(&s);
     fixture f;
     if (!make(&f, &s)) return;
-    double a1 = M_PI / 4 * (0.040 * 0.040 - 0.020 * 0.020), a2 = M_PI / 4 * (0.045 * 0.045 - 0.020 * 0.020);
+    double a1 = M_PI / 4 * (0.040 * 0.040 - 0.020 * 0.020);
+    double a2 = M_PI / 4 * (0.045 * 0.045 - 0.020 * 0.020);
     double want = s.shaft.rho * s.shaft.cp * (a1 * 0.16 + a2 * 0.20)
                 + s.housing.rho * s.housing.cp * M_PI / 4 * (0.14 * 0.14 - 0.068 * 0.068) * 0.36;
     for (int p = 0; p < 2; p++)
@@ -417,8 +418,9 @@ static void test_capacity(void)
                 want += acbb_tnet_capacity(f.mem[p][0].net, i);
         }
     double got = 0.0;
-    for (int i = 0; i < acbb_spindle_net_nodes(f.sn); i++) got += acbb_spindle_net_capacity(f.sn, i);
-    is_close(got, want, 1e-12, 0.0, "capacity: shaft and housing rho c V + the bearings' own parts");
+    for (int i = 0; i < acbb_spindle_net_nodes(f.sn); i++)
+        got += acbb_spindle_net_capacity(f.sn, i);
+    is_close(got, want, 1e-12, 0.0, "capacity: shaft and housing rho c V + the bearings' parts");
     tear_down(&f);
 }
 

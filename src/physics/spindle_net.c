@@ -105,7 +105,8 @@ static acbb_status motor_heat(acbb_spindle_net *sn, const acbb_scene *s, acbb_er
                                   "[0, 1e6])", j ? "stator" : "rotor", Q[j]);
         if (Q[j] > 0.0 && !(L > 0.0))
             return acbb_error_set(err, ACBB_EINVAL, "spindle: the motor has %g W of losses but "
-                                  "no length (x0 = %g m, x1 = %g m)", Q[j], s->motor_x0, s->motor_x1);
+                                  "no length (x0 = %g m, x1 = %g m)", Q[j], s->motor_x0,
+                                  s->motor_x1);
         for (int i = 0; Q[j] > 0.0 && i < c[j]->n; i++)
             sn->q_motor[c[j]->first + i] +=
                 Q[j] * acbb_overlap(c[j]->x0[i], c[j]->x1[i], s->motor_x0, s->motor_x1) / L;
@@ -140,14 +141,13 @@ static acbb_status alloc_all(acbb_spindle_net *sn)
     sn->q_motor = calloc(n, sizeof *sn->q_motor);
     sn->q = calloc(n, sizeof *sn->q);
     sn->T_old = calloc(n, sizeof *sn->T_old);
-    sn->T_in = calloc(n, sizeof *sn->T_in);
     sn->Q0 = calloc(nc, sizeof *sn->Q0);
     sn->Q1 = calloc(nc, sizeof *sn->Q1);
     sn->A = gsl_matrix_alloc(nc, nc);
     sn->b = gsl_vector_alloc(nc);
     sn->y = gsl_vector_alloc(nc);
     sn->perm = gsl_permutation_alloc(nc);
-    int ok = sn->net && sn->target && sn->q_motor && sn->q && sn->T_old && sn->T_in && sn->Q0 &&
+    int ok = sn->net && sn->target && sn->q_motor && sn->q && sn->T_old && sn->Q0 &&
              sn->Q1 && sn->A && sn->b && sn->y && sn->perm;
     for (int p = 0; p < 2 && ok; p++) {
         int ne = acbb_tnet_edge_count(sn->part[p].set->net);
@@ -208,8 +208,8 @@ static acbb_status map_part(acbb_spindle_net *sn, int p, acbb_error *err)
     return st;
 }
 
-/* Is a (member ka, local ia) - b a set's shaft or housing joint between
- * neighbours? The spindle's chains carry that conduction. */
+/* Is the edge a-b one of the set's shaft or housing joints between
+ * neighbours? The spindle's chains carry that conduction now. */
 static int set_joint(const acbb_network_set *ns, int a, int b)
 {
     int ka = member_of(ns, a), kb = member_of(ns, b);
@@ -250,7 +250,8 @@ static acbb_status join_edge(acbb_spindle_net *sn, int p, int e, int *je)
     int exterior = (ta == sp->air && tb >= hc0 && tb < hc1) ||
                    (tb == sp->air && ta >= hc0 && ta < hc1);
     if (ta == tb || exterior) return ACBB_OK;
-    double R = acbb_tnet_resistance(ns->net, e) - (bore ? bore_film(sn->part[p].scene, ns->mem[member_of(ns, a)]) : 0.0);
+    double R = acbb_tnet_resistance(ns->net, e);
+    if (bore) R -= bore_film(sn->part[p].scene, ns->mem[member_of(ns, a)]);
     int r = acbb_tnet_add_edge(sn->net, ta, tb, R);
     if (r < 0) return (acbb_status)r;
     *je = r;
@@ -260,9 +261,15 @@ static acbb_status join_edge(acbb_spindle_net *sn, int p, int e, int *je)
 static acbb_status join_part(acbb_spindle_net *sn, int p, acbb_error *err)
 {
     acbb_status st = map_part(sn, p, err);
+    if (st != ACBB_OK) return st;
     int ne = acbb_tnet_edge_count(sn->part[p].set->net);
-    for (int e = 0; e < ne && st == ACBB_OK; e++) st = join_edge(sn, p, e, &sn->emap[p][e]);
-    return st;
+    for (int e = 0; e < ne; e++) {
+        st = join_edge(sn, p, e, &sn->emap[p][e]);
+        if (st != ACBB_OK)
+            return acbb_error_set(err, st, "spindle: edge %d of the %s set's network could not "
+                                  "be joined (%s)", e, p ? "rear" : "front", acbb_status_name(st));
+    }
+    return ACBB_OK;
 }
 
 static double segs_length(const acbb_segment *g, int n)
@@ -309,9 +316,10 @@ static acbb_status build_all(acbb_spindle_net *sn, const acbb_scene *s, acbb_err
     st = motor_heat(sn, s, err);
     if (st != ACBB_OK) return st;
     st = copy_spindle(sn);
+    if (st != ACBB_OK)
+        return acbb_error_set(err, st, "spindle: the spindle's own network could not be copied "
+                              "(%s)", acbb_status_name(st));
     for (int p = 0; p < 2 && st == ACBB_OK; p++) st = join_part(sn, p, err);
-    if (st != ACBB_OK && st != ACBB_EINVAL) st = acbb_error_set(err, st, "spindle: the joined "
-                                                                "thermal network could not be built (%s)", acbb_status_name(st));
     return st;
 }
 
@@ -350,7 +358,6 @@ void acbb_spindle_net_free(acbb_spindle_net *sn)
     free(sn->q_motor);
     free(sn->q);
     free(sn->T_old);
-    free(sn->T_in);
     free(sn->Q0);
     free(sn->Q1);
     if (sn->A) gsl_matrix_free(sn->A);

@@ -19,7 +19,7 @@ struct acbb_spindle_net {
     int *target;                  /* node -> the node whose temperature it reads */
     int *emap[2];                 /* part p's set-network edge -> joined edge, -1: none */
     double *q_motor;              /* rotor and stator losses on their cells, W */
-    double *q, *T_old, *T_in;     /* work: heat vector, start of the solve, caller's T */
+    double *q, *T_old;            /* the solve's heat vector and starting temperatures */
     double Q_parts, Q_motor;      /* sources of the last solve, W */
     double dt;                    /* of the last solve (0: steady) */
     /* coolant: balance matrix, its right side and solution, wall heats */
