@@ -355,6 +355,7 @@ static void member_scene(const acbb_scene *s, double share, acbb_scene *m)
     *m = *s;
     m->set_arrangement = ACBB_SET_SINGLE;
     m->set_n_bearings = 0;
+    m->shaft_segments = 0;   /* one bearing, not a spindle (its rules are the whole's) */
     m->preload = ACBB_PRELOAD_DISPLACEMENT;
     m->preload_force = share > 0.0 ? share : 1.0;
     m->axial_load = m->preload_force;
