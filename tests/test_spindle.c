@@ -385,8 +385,19 @@ static void test_steady(void)
        "(e) both sets warm (inner rings %.1f, %.1f C)", v[0].T_inner_C, v[1].T_inner_C);
     is_close(o.spindle.Q_bearings_W, v[0].loss_W + v[1].loss_W, 1e-9, 0.0,
              "(e) the bearings' heat is both sets' losses");
-    is_close(o.heat_out, o.heat_in, 1e-6, 0.0, "(e) the network passes the bearings' heat "
-             "to ambient");
+    is_close(o.heat_out, o.heat_in, 1e-9, 0.0, "(e) the network passes the bearings' heat "
+             "to the air");
+    const acbb_spindle_view *v2 = &o.spindle;
+    /* A fixed rear set's rings move against each other by the shaft's u
+     * plus the network's thermal shift between the sets (spindle_priv.h). */
+    const acbb_spindle_sim *sp = sim->spindle;
+    double x, d[3] = { 0, 0, 0 };
+    for (int i = 0; i < acbb_shaft_beam_nodes(sp->beam); i++)
+        if (acbb_shaft_beam_node(sp->beam, i, &x, d) == ACBB_OK && fabs(x - REAR_X) < 1e-12) break;
+    ok(fabs(v2->rear_shift) > 1e-7, "(e) the shaft grows against the housing between the sets "
+       "(%.3f um)", v2->rear_shift * 1e6);
+    is_close(sp->st[1].ss->sm.q[0] * 1e6, (d[0] + v2->rear_shift) * 1e6, 0.0, 1e-6,
+             "(e) the fixed rear set's rings move by the shaft's u plus the shift, um");
     check_landing(sim, "(e)");
     acbb_sim_free(sim);
 }
@@ -505,6 +516,48 @@ static void test_restart(void)
     acbb_sim_free(sim);
 }
 
+/* (f) The coupled steady state's energy balance: with a motor (100 W on
+ * the rotor, 150 W on the stator) and a cooling jacket, every source (both
+ * sets' losses and the motor's) leaves to the air or with the coolant,
+ * m_dot c_p (T_out - T_in), to 1e-9. */
+static void test_energy(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=steady" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.spindle_rear_support = ACBB_REAR_SPRING; /* a fixed rear runs away: the rotor heats
+                                                  the shaft 60 K above the housing */
+    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_spring = 300.0;
+    s.motor_rotor_loss = 100.0;
+    s.motor_stator_loss = 150.0;
+    s.motor_x0 = 0.12, s.motor_x1 = 0.24;
+    s.motor_gap_G = 2.0;
+    s.coolant_flow = 2.0 / 60000.0; /* 2 l/min */
+    s.coolant_inlet_dT = 0.0;
+    s.jacket_x0 = 0.10, s.jacket_x1 = 0.26;
+    s.jacket_hA = 40.0;
+    s.coolant_cells = 8;
+    acbb_sim *sim = run_public(&s, &o, "(f) motor and coolant, steady");
+    if (!sim) return;
+    const acbb_spindle_view *v = &o.spindle;
+    double losses = v->sets[0].loss_W + v->sets[1].loss_W;
+    is_close(v->Q_motor_W, 250.0, 1e-12, 0.0, "(f) the motor's heat, W");
+    is_close(v->Q_bearings_W, losses, 1e-9, 0.0, "(f) the bearings' heat is both sets' losses");
+    is_close(o.heat_in, losses + 250.0, 1e-9, 0.0, "(f) the run's heat in: bearings + motor, W");
+    is_close(v->Q_air_W + v->Q_coolant_W, o.heat_in, 1e-9, 0.0,
+             "(f) air + coolant carry every source away, W");
+    ok(v->Q_coolant_W > 0.0 && v->T_coolant_out_C > v->T_coolant_in_C,
+       "(f) the coolant warms (%.2f -> %.2f C, %.1f W)", v->T_coolant_in_C, v->T_coolant_out_C,
+       v->Q_coolant_W);
+    ok(view_finite(v) && v->n_shaft > 0 && v->n_housing > 0, "(f) the view is finite, with %d "
+       "shaft and %d housing cells", v->n_shaft, v->n_housing);
+    check_landing(sim, "(f)");
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
     test_rigid_one_support();
@@ -512,6 +565,7 @@ int main(void)
     test_nose_stiffness();
     test_spring_rear();
     test_steady();
+    test_energy();
     test_contact_lost();
     test_runaway();
     test_schedule();

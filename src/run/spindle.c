@@ -3,9 +3,10 @@
  * expansions and spacer growth (sim_set.c acbb_set_prepare) -> the shaft
  * with both sets as supports (spindle_mech.c) -> each set's own shaft
  * equilibrium under its station's reaction, its ball speeds, losses and
- * sources (acbb_set_finish). The network: until the spindle's own network
- * joins them (shaft, housing, motor, coolant), the two sets' networks side
- * by side, each solved on its own (the plant's solve and capacity). */
+ * sources (acbb_set_finish). The network is the spindle's one network
+ * (spindle_net.h: both sets' networks joined to the shaft, housing, motor
+ * and coolant), solved by its own solve (the coolant's Schur complement:
+ * the plant's solve and capacity); its growth moves a fixed rear set. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +17,8 @@
 #include "cancel.h"
 #include "acbb/tools/measure.h"
 #include "acbb/tools/schedule.h"
+
+#define SYNC_TOL 1e-2 /* transient steps: resistances lag below this move (sim_set.c's) */
 
 static const char *const set_name[2] = { "front", "rear" };
 
@@ -29,15 +32,28 @@ static void distribute(acbb_spindle_sim *sp)
     }
 }
 
-static void gather(acbb_spindle_sim *sp)
+/* The sets' sources at their nodes (the motor's the network adds), their
+ * resistances into the network (sync: the transient's lag, 0 none). */
+static void gather(acbb_spindle_sim *sp, double sync)
 {
     sp->total = sp->heat_in = 0.0;
+    memset(sp->q, 0, sizeof(double) * (size_t)sp->n);
     for (int k = 0; k < 2; k++) {
         acbb_set_sim *ss = sp->st[k].ss;
         memcpy(sp->q + sp->off[k], ss->q, sizeof(double) * (size_t)ss->ns.n);
         sp->total += ss->total;
         sp->heat_in += ss->heat_in;
     }
+    acbb_spindle_net_sync(sp->net, sync);
+}
+
+/* The shaft's growth against the housing between the sets, at T (none
+ * without heating or with effects.thermal_expansion off: WTE). */
+static void growth(acbb_spindle_sim *sp)
+{
+    acbb_spindle_growth g = { 0 };
+    if (sp->s.heating && sp->s.thermal_expansion) acbb_spindle_net_growth(sp->net, sp->T, &g);
+    sp->shift = g.shift_axial;
 }
 
 /* The set's own solve against the shaft's station (spindle_priv.h frames):
@@ -56,6 +72,7 @@ static void landing(acbb_spindle_sim *sp)
 static acbb_status evaluate(acbb_spindle_sim *sp, int transient, int polishing, acbb_error *err)
 {
     distribute(sp);
+    growth(sp);
     for (int k = 0; k < 2; k++) acbb_set_prepare(sp->st[k].ss, transient, polishing);
     acbb_status rc = acbb_spindle_mechanics(sp, err);
     for (int k = 0; k < 2; k++) {
@@ -65,7 +82,7 @@ static acbb_status evaluate(acbb_spindle_sim *sp, int transient, int polishing, 
     }
     if (rc != ACBB_OK) return rc;
     landing(sp);
-    gather(sp);
+    gather(sp, transient ? SYNC_TOL : 0.0);
     return ACBB_OK;
 }
 
@@ -144,9 +161,11 @@ static void plant_restore(void *ctx, int slot)
         sp->st[k].load[1] = sp->st[k].ss->sm.Fr;
         sp->st[k].load[2] = sp->st[k].ss->sm.M;
     }
-    gather(sp);
+    growth(sp);
+    gather(sp, 0.0);
 }
 
+/* The sets' limits (their nodes named), then the spindle's own cells. */
 static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
 {
     acbb_spindle_sim *sp = ctx;
@@ -159,6 +178,13 @@ static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
             return ACBB_RUNAWAY;
         }
     }
+    for (int i = 0; i < sp->n; i++)
+        if (sp->T[i] > sp->s.temp_limit_C) {
+            snprintf(what, size, "the spindle's shaft, housing or coolant (network node %d) "
+                     "reached %.1f C (limit thermal.temp_limit_C = %.0f C) at t = %.0f s", i,
+                     sp->T[i], sp->s.temp_limit_C, t);
+            return ACBB_RUNAWAY;
+        }
     return ACBB_OK;
 }
 
@@ -172,19 +198,25 @@ static double plant_force(void *ctx, int *rigid)
     return p.force(p.ctx, rigid);
 }
 
+/* Every source (the bearings' and the motor's) and what leaves: to the air
+ * and the bearings' fixed boundaries, and with the coolant. */
+static double heat_sources(const acbb_spindle_sim *sp)
+{
+    return sp->heat_in + sp->s.motor_rotor_loss + sp->s.motor_stator_loss;
+}
+
 static double heat_to_fixed(const acbb_spindle_sim *sp)
 {
-    double out = 0.0;
-    for (int k = 0; k < 2; k++)
-        out += acbb_tnet_heat_to_fixed(sp->st[k].ss->ns.net, sp->T + sp->off[k]);
-    return out;
+    acbb_spindle_flows f;
+    acbb_spindle_net_flows(sp->net, sp->T, &f);
+    return f.Q_air + f.Q_advected;
 }
 
 static acbb_status plant_balance(void *ctx, acbb_error *err)
 {
     acbb_spindle_sim *sp = ctx;
     if (!sp->s.heating) return ACBB_OK;
-    return acbb_balance_check(sp->heat_in, heat_to_fixed(sp), err);
+    return acbb_balance_check(heat_sources(sp), heat_to_fixed(sp), err);
 }
 
 static void plant_converge(void *ctx)
@@ -197,25 +229,16 @@ static void plant_converge(void *ctx)
     }
 }
 
-/* Each set's network on its own (no joins yet): a step or the steady state. */
+/* The spindle's network: a backward-Euler step or the steady state. */
 static acbb_status plant_solve(void *ctx, const double *q, double dt, double *Tn)
 {
     acbb_spindle_sim *sp = ctx;
-    for (int k = 0; k < 2; k++) {
-        acbb_tnet *net = sp->st[k].ss->ns.net;
-        int o = sp->off[k];
-        acbb_status rc = dt > 0.0 ? acbb_tnet_step(net, q + o, dt, Tn + o)
-                                  : acbb_tnet_steady(net, q + o, Tn + o);
-        if (rc != ACBB_OK) return rc;
-    }
-    return ACBB_OK;
+    return acbb_spindle_net_solve(sp->net, q, dt, Tn, NULL);
 }
 
 static double plant_capacity(void *ctx, int i)
 {
-    acbb_spindle_sim *sp = ctx;
-    int k = i >= sp->off[ACBB_REAR];
-    return acbb_tnet_capacity(sp->st[k].ss->ns.net, i - sp->off[k]);
+    return acbb_spindle_net_capacity(((acbb_spindle_sim *)ctx)->net, i);
 }
 
 static void plant_of(acbb_spindle_sim *sp, acbb_plant *p)
@@ -238,6 +261,7 @@ static void publish(acbb_spindle_sim *sp)
         acbb_set_publish(sp->st[k].ss);
     }
     sp->heat_out = sp->s.heating ? heat_to_fixed(sp) : 0.0;
+    sp->heat_all = sp->s.heating ? heat_sources(sp) : 0.0;
 }
 
 acbb_status acbb_spindle_sim_step(acbb_spindle_sim *sp)
@@ -294,6 +318,28 @@ static acbb_status make_set(const acbb_scene *m, const acbb_sim_opts *o, int k,
     return rc;
 }
 
+/* The one network over both sets (each member at its own x), every node
+ * at the ambient and the coolant at its inlet. */
+static acbb_status network(acbb_spindle_sim *sp, acbb_error *err)
+{
+    acbb_spindle_net_part part[2];
+    const double x[2] = { sp->s.spindle_front_x, sp->s.spindle_rear_x };
+    for (int k = 0; k < 2; k++) {
+        acbb_set_sim *ss = sp->st[k].ss;
+        part[k] = (acbb_spindle_net_part){ .set = &ss->ns, .scene = &ss->s };
+        for (int b = 0; b < ss->n; b++) part[k].x[b] = x[k] + ss->sm.x[b];
+    }
+    acbb_status rc = acbb_spindle_net_build(&sp->s, part, &sp->net, err);
+    if (rc != ACBB_OK) return rc;
+    sp->n = acbb_spindle_net_nodes(sp->net);
+    if (sp->n > ACBB_SPINDLE_NMAX)
+        return acbb_error_set(err, ACBB_EINVAL, "spindle: %d thermal nodes, at most %d",
+                              sp->n, ACBB_SPINDLE_NMAX);
+    for (int k = 0; k < 2; k++) sp->off[k] = acbb_spindle_net_part_offset(sp->net, k);
+    acbb_spindle_net_init(sp->net, sp->T);
+    return ACBB_OK;
+}
+
 static acbb_status set_up(acbb_spindle_sim *sp, const acbb_sim_opts *o, acbb_error *err)
 {
     const acbb_scene *s = &sp->s;
@@ -306,16 +352,9 @@ static acbb_status set_up(acbb_spindle_sim *sp, const acbb_sim_opts *o, acbb_err
         sp->st[k] = (acbb_spindle_station){ .sp = sp, .k = k };
         acbb_status rc = make_set(&m, o, k, &sp->st[k].ss, err);
         if (rc != ACBB_OK) return rc;
-        sp->off[k] = k ? sp->off[k - 1] + sp->st[k - 1].ss->ns.n : 0;
     }
-    sp->n = sp->off[ACBB_REAR] + sp->st[ACBB_REAR].ss->ns.n;
-    if (sp->n > ACBB_SPINDLE_NMAX)
-        return acbb_error_set(err, ACBB_EINVAL, "spindle: %d thermal nodes, at most %d",
-                              sp->n, ACBB_SPINDLE_NMAX);
-    for (int k = 0; k < 2; k++)
-        memcpy(sp->T + sp->off[k], sp->st[k].ss->T,
-               sizeof(double) * (size_t)sp->st[k].ss->ns.n);
-    acbb_status rc = acbb_spindle_beam_build(sp, err);
+    acbb_status rc = network(sp, err);
+    if (rc == ACBB_OK) rc = acbb_spindle_beam_build(sp, err);
     if (rc != ACBB_OK) return rc;
     acbb_spindle_sim_deadline(sp, s->max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * s->max_wall_s
                                                       : 0.0);
@@ -363,6 +402,7 @@ void acbb_spindle_sim_free(acbb_spindle_sim *sp)
 {
     if (!sp) return;
     acbb_shaft_beam_free(sp->beam);
+    acbb_spindle_net_free(sp->net); /* before the sets it refers to */
     for (int k = 0; k < 2; k++) acbb_set_sim_free(sp->st[k].ss);
     free(sp);
 }

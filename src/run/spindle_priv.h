@@ -18,6 +18,7 @@
 #include "spindle.h"
 #include "sim_set_priv.h"
 #include "shaft_beam.h"
+#include "spindle_net.h"
 #include "stepper.h"
 
 #define ACBB_SPINDLE_NMAX ACBB_STEPPER_NMAX
@@ -42,6 +43,7 @@ struct acbb_spindle_sim {
     acbb_spindle_station st[2];
     int off[2], n;                /* set k's nodes start at off[k] of T */
     double T[ACBB_SPINDLE_NMAX], q[ACBB_SPINDLE_NMAX], T_keep[ACBB_SPINDLE_NMAX];
+    acbb_spindle_net *net;        /* the one network: both sets, shaft, housing, motor, coolant */
     acbb_shaft_beam *beam;
     acbb_shaft_result res, res_keep;
     double shift;                 /* shaft minus housing axial growth between the sets, m */
@@ -52,7 +54,8 @@ struct acbb_spindle_sim {
     const atomic_int *cancel;
     double deadline_ms;
     double total;                 /* both sets' losses, W */
-    double heat_in, heat_out;
+    double heat_in, heat_out;     /* the bearings' sources; what leaves the network, W */
+    double heat_all;              /* every source, the motor's too, W */
 };
 
 /* spindle_mech.c: the shaft built from the scene (its supports the two

@@ -83,13 +83,16 @@ void acbb_spindle_view_fill(const acbb_spindle_sim *sp, acbb_spindle_view *v)
     v->nose_k_axial = acbb_snap_fin(r->k_axial);
     v->nose_k_radial = acbb_snap_fin(r->k_radial);
     v->nose_k_tilt = acbb_snap_fin(r->k_tilt);
-    /* Heat: the sets' networks alone so far (no shaft, housing, motor or
-     * coolant network yet): every watt leaves to their fixed (ambient)
-     * nodes. */
-    v->Q_bearings_W = acbb_snap_fin(sp->heat_in);
-    v->Q_air_W = acbb_snap_fin(sp->heat_out);
-    v->T_coolant_in_C = v->T_coolant_out_C = sp->s.ambient_C + sp->s.coolant_inlet_dT;
-    v->rear_shift = acbb_snap_fin(sp->shift);
+    /* heat and growth: the network's (no heat flows with heating off) */
+    if (sp->s.heating) acbb_spindle_net_view(sp->net, sp->T, v);
+    else v->T_coolant_in_C = v->T_coolant_out_C = sp->s.ambient_C + sp->s.coolant_inlet_dT;
+    v->rear_shift = sp->shift;
+    double *f[] = { &v->nose_drift_axial, &v->nose_drift_radial, &v->Q_motor_W, &v->Q_bearings_W,
+                    &v->Q_coolant_W, &v->Q_air_W, &v->T_coolant_in_C, &v->T_coolant_out_C,
+                    &v->rear_shift };
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) *f[i] = acbb_snap_fin(*f[i]);
+    for (int i = 0; i < v->n_shaft; i++) v->shaft_T_C[i] = acbb_snap_fin(v->shaft_T_C[i]);
+    for (int i = 0; i < v->n_housing; i++) v->housing_T_C[i] = acbb_snap_fin(v->housing_T_C[i]);
 }
 
 /* The run's outcome over the front set's snapshot; a lost contact named
@@ -104,7 +107,7 @@ static void run_fields(const acbb_spindle_sim *sp, acbb_snapshot *o)
     o->dt = sp->run.dt;
     o->residual = acbb_snap_fin(sp->run.residual);
     o->wall_ms = sp->run.wall_ms;
-    o->heat_in = sp->s.heating ? acbb_snap_fin(sp->heat_in) : 0.0;
+    o->heat_in = acbb_snap_fin(sp->heat_all); /* the motor's too (0 with heating off) */
     o->heat_out = acbb_snap_fin(sp->heat_out);
     if (o->state == ACBB_RUN_FAILED) return;
     size_t len = strlen(o->message);
