@@ -558,12 +558,48 @@ static void test_energy(void)
     acbb_sim_free(sim);
 }
 
+/* A floating rear (a single bearing in a sleeve with Coulomb friction):
+ * at 8000 rpm the balls' centrifugal force pushes the held bearing with
+ * about 80 N of thrust. With 40 N of friction the sleeve slides (while it
+ * slides the set carries the friction force; where it stops, at most
+ * that: the ball speeds of the next pass ease it); with 200 N it sticks
+ * where it was assembled and carries what the shaft asks, less than the
+ * friction. */
+static void test_floating_rear(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const double mu[2] = { 40.0, 200.0 };
+    for (int i = 0; i < 2; i++) {
+        if (!spindle_scene(&s, NULL, 0)) return;
+        s.spindle_rear_support = ACBB_REAR_FLOATING;
+        s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+        s.spindle_rear_friction = mu[i];
+        s.radial_load = 0.0; /* a single bearing held by no thrust carries no radial load */
+        acbb_sim *sim = run_public(&s, &o, i ? "floating, sticks" : "floating, slides");
+        if (!sim) return;
+        const acbb_spindle_set_view *v = o.spindle.sets;
+        double slip = sim->spindle->st[ACBB_REAR].slip;
+        if (i == 0)
+            ok(slip > 1e-6 && v[1].axial_N > 0.0 && v[1].axial_N <= 40.0 + 1e-9,
+               "floating: the sleeve slid (%.3f um: its balls push its outer rings rearwards) and the rear set "
+               "carries at most the friction (%.3f N)", slip * 1e6, v[1].axial_N);
+        else
+            ok(fabs(v[1].axial_N) < 200.0 && v[1].axial_N > 40.0 && slip == 0.0,
+               "floating: the sleeve sticks, the rear set carries %.2f N < 200 N", v[1].axial_N);
+        is_close(v[0].axial_N + v[1].axial_N, FA, 0.0, 1e-9 * FR, "floating: the front set "
+                 "carries the nose thrust less the rear's, N");
+        acbb_sim_free(sim);
+    }
+}
+
 int main(void)
 {
     test_rigid_one_support();
     test_balance();
     test_nose_stiffness();
     test_spring_rear();
+    test_floating_rear();
     test_steady();
     test_energy();
     test_contact_lost();

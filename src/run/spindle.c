@@ -79,6 +79,7 @@ static acbb_status evaluate(acbb_spindle_sim *sp, int transient, int polishing, 
         acbb_set_sim *ss = sp->st[k].ss;
         if (rc == ACBB_OK) rc = acbb_set_finish(ss, transient, err);
         for (int b = 0; b < ss->n; b++) ss->b[b]->transient_pass = ss->b[b]->polishing = 0;
+        ss->sm.hold[0] = 0; /* the set's probes see it free (spindle_mech.c set_loads) */
     }
     if (rc != ACBB_OK) return rc;
     landing(sp);
@@ -140,6 +141,7 @@ static void plant_save(void *ctx, int slot)
     acbb_spindle_sim *sp = ctx;
     memcpy(sp->T_keep, sp->T, sizeof(double) * (size_t)sp->n);
     sp->res_keep = sp->res;
+    sp->st[ACBB_REAR].slip_keep = sp->st[ACBB_REAR].slip;
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
         set_plant(sp, k, &p);
@@ -152,6 +154,7 @@ static void plant_restore(void *ctx, int slot)
     acbb_spindle_sim *sp = ctx;
     memcpy(sp->T, sp->T_keep, sizeof(double) * (size_t)sp->n);
     sp->res = sp->res_keep;
+    sp->st[ACBB_REAR].slip = sp->st[ACBB_REAR].slip_keep;
     schedule_point(sp, sp->run.time);
     for (int k = 0; k < 2; k++) {
         acbb_plant p;

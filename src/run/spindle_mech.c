@@ -20,12 +20,13 @@
 #define H_D 1e-9               /* m, the supports' difference step (radial, axial) */
 
 /* The station's reaction f on the shaft at its displacement d: the set's
- * shaft held at (u + shift, w, -theta) (u free when the set is not axially
- * located: it carries Fa_given), its members solved there. */
+ * shaft held at (u + shift - slip, w, -theta) (u free when the set is not
+ * axially located: it carries Fa_given), its members solved there. */
 static acbb_status reaction(acbb_spindle_station *t, const double d[3], double f[3])
 {
     acbb_set_mech *w = &t->w;
-    double shift = t->k == ACBB_REAR ? t->sp->shift : 0.0;
+    double shift = t->k == ACBB_REAR ? t->sp->shift - t->slip : 0.0;
+    memcpy(t->d, d, sizeof t->d);
     if (t->axial_held) w->q[0] = d[0] + shift;
     w->q[1] = d[1];
     w->q[2] = -d[2];
@@ -100,24 +101,52 @@ acbb_status acbb_spindle_beam_build(acbb_spindle_sim *sp, acbb_error *err)
 }
 
 /* How each station holds the shaft axially (acbb_rear_support): the
- * front set is located; the rear one too when fixed, else it carries the
- * spring's force (pushing its outer rings towards the nose: its thrust
- * along +x, as a single bearing's "+" side carries it) or the sleeve's
- * friction against the shift (0 with none). */
+ * front set is located; the rear one too when fixed, and when floating
+ * while its sleeve sticks (where it has slid to: slip); on a spring it
+ * carries the spring's force (pushing its outer rings towards the nose:
+ * its thrust along +x, as a single bearing's "+" side carries it). */
 static void axial_mode(acbb_spindle_sim *sp, acbb_spindle_station *t)
 {
     const acbb_scene *s = &sp->s;
-    t->axial_held = t->k == ACBB_FRONT || s->spindle_rear_support == ACBB_REAR_FIXED;
-    t->Fa_given = 0.0;
-    if (t->k == ACBB_REAR && s->spindle_rear_support == ACBB_REAR_SPRING)
-        t->Fa_given = s->spindle_rear_spring;
-    if (t->k == ACBB_REAR && s->spindle_rear_support == ACBB_REAR_FLOATING && sp->shift != 0.0)
-        t->Fa_given = copysign(s->spindle_rear_friction, sp->shift);
+    int spring = t->k == ACBB_REAR && s->spindle_rear_support == ACBB_REAR_SPRING;
+    t->axial_held = !spring;
+    t->Fa_given = spring ? s->spindle_rear_spring : 0.0;
 }
 
+/* A floating rear set's sleeve (Coulomb friction rear_friction_N): it
+ * sticks while the thrust the held set needs stays within the friction,
+ * else it slides and the set carries the friction force in the thrust's
+ * direction. 1: it slides (the caller solves the shaft again). */
+static int slides(acbb_spindle_sim *sp, acbb_spindle_station *t)
+{
+    const acbb_scene *s = &sp->s;
+    if (t->k != ACBB_REAR || sp->one_support || s->spindle_rear_support != ACBB_REAR_FLOATING)
+        return 0;
+    double need = -sp->res.reaction[ACBB_REAR][0]; /* the thrust the stuck set carries */
+    if (fabs(need) <= s->spindle_rear_friction) return 0;
+    t->axial_held = 0;
+    t->Fa_given = copysign(s->spindle_rear_friction, need);
+    return 1;
+}
+
+/* Where the sliding set came to rest in its sleeve: its outer rings moved
+ * by the shaft's u plus the shift less its inner rings' move against
+ * them. */
+static void slid(acbb_spindle_sim *sp, acbb_spindle_station *t)
+{
+    t->slip = t->d[0] + sp->shift - t->w.q[0];
+}
+
+/* The support's copy of the set's mechanics (its offsets and spacer
+ * moves), its axial position warm-started from the station's last (a
+ * sliding or spring-held set's: a set's own last solve may have been
+ * under other loads, a one-way set's far out where no ball is loaded). */
 static void hold(acbb_spindle_station *t)
 {
-    t->w = t->ss->sm; /* its offsets, expansions' spacer moves and warm start */
+    double q0 = t->w.q[0];
+    int warm = t->w.n > 0;
+    t->w = t->ss->sm;
+    if (warm) t->w.q[0] = q0;
     t->w.hold[0] = t->axial_held;
     t->w.hold[1] = t->w.hold[2] = 1;
     t->w.hold[3] = 0;
@@ -137,6 +166,12 @@ static void set_loads(acbb_spindle_sim *sp)
             L[2] = R[2];
         }
         memcpy(t->load, L, sizeof L);
+        /* A located set's own solve keeps the station's axial position (a
+         * one-way set's position under no thrust is no equilibrium of its
+         * own; spindle.c frees it again after the set's evaluation). */
+        t->ss->sm.hold[0] = t->axial_held && (k == ACBB_FRONT || !sp->one_support);
+        if (k == ACBB_FRONT || !sp->one_support) /* its solve starts at the station */
+            memcpy(t->ss->sm.q, t->w.q, sizeof t->w.q);
         t->ss->sm.Fa = L[0];
         t->ss->sm.Fr = L[1];
         t->ss->sm.M = L[2];
@@ -156,18 +191,28 @@ static int lost_set(const acbb_spindle_sim *sp, int *bearing)
     return -1;
 }
 
-acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err)
+/* The shaft with the stations as they hold it now. */
+static acbb_status solve_shaft(acbb_spindle_sim *sp, acbb_error *err)
 {
     const acbb_scene *s = &sp->s;
-    for (int k = 0; k < 2; k++) {
-        axial_mode(sp, &sp->st[k]);
-        hold(&sp->st[k]);
-    }
     const acbb_shaft_load nose = { 0.0, s->axial_load, s->radial_load, -s->moment_load };
-    acbb_error e2 = { "" };
+    for (int k = 0; k < 2; k++) hold(&sp->st[k]);
     sp->beam_solves++;
-    acbb_status rc = acbb_shaft_beam_solve(sp->beam, &nose, 1, &sp->res, &e2);
+    acbb_status rc = acbb_shaft_beam_solve(sp->beam, &nose, 1, &sp->res, err);
     sp->probe_solves += sp->st[ACBB_FRONT].w.solves + sp->st[ACBB_REAR].w.solves;
+    return rc;
+}
+
+acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err)
+{
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    for (int k = 0; k < 2; k++) axial_mode(sp, &sp->st[k]);
+    acbb_error e2 = { "" };
+    acbb_status rc = solve_shaft(sp, &e2);
+    if (rc == ACBB_OK && slides(sp, rear)) {
+        rc = solve_shaft(sp, &e2);
+        if (rc == ACBB_OK) slid(sp, rear);
+    }
     if (rc != ACBB_OK) {
         int b, k = lost_set(sp, &b);
         if (k >= 0)

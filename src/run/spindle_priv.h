@@ -32,6 +32,9 @@ struct acbb_spindle_station {
     int axial_held;               /* 1: the station's axial position prescribed (located) */
     double Fa_given;              /* else the axial load the set carries, N */
     acbb_set_mech w;              /* the support's copy of the set's mechanics */
+    double d[3];                  /* the station's displacement of the last reaction */
+    double slip, slip_keep;       /* floating: how far its outer rings slid in the sleeve
+                                     (+x, m), and at the last accepted state */
     double load[3];               /* the last evaluation's loads on the set (its frame) */
     double K[9];                  /* the support's last tangent -df/dd (u, w, theta rows) */
     double landing;               /* the set's own solve minus the shaft's station: m, m, rad (max) */
