@@ -25,9 +25,9 @@
 static acbb_status reaction(acbb_spindle_station *t, const double d[3], double f[3])
 {
     acbb_set_mech *w = &t->w;
-    double shift = t->k == ACBB_REAR ? t->sp->shift - t->slip : 0.0;
+    double offset = t->k == ACBB_REAR ? t->sp->shift - t->slip : 0.0;
     memcpy(t->d, d, sizeof t->d);
-    if (t->axial_held) w->q[0] = d[0] + shift;
+    if (t->axial_held) w->q[0] = d[0] + offset;
     w->q[1] = d[1];
     w->q[2] = -d[2];
     w->Fa = t->axial_held ? 0.0 : t->Fa_given;
