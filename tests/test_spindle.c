@@ -593,6 +593,38 @@ static void test_floating_rear(void)
     }
 }
 
+/* A nose load far past anything the bearings can take (5 MN, put in
+ * between two steps: a set's ball speeds find no solution there) ends the
+ * run with a named status whose message names the set; the state before
+ * the step is kept (the loads the sets carried, the view finite). */
+static void test_no_equilibrium(void)
+{
+    static acbb_scene s, r;
+    static acbb_snapshot o, before;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    acbb_scene_resolve(&s, &r, NULL);
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+            "no equilibrium: spindle builds: %s", err.msg))
+        return;
+    acbb_spindle_sim_step(sp);
+    acbb_spindle_sim_snapshot(sp, &before);
+    sp->s.radial_load = 5e6;
+    acbb_status st = acbb_spindle_sim_step(sp);
+    acbb_spindle_sim_snapshot(sp, &o);
+    ok(o.state == ACBB_RUN_FAILED && st == o.status && st != ACBB_OK
+       && strncmp(o.message, "spindle", 7) == 0, "no equilibrium: ends %s: %s",
+       acbb_status_name(st), o.message);
+    ok(view_finite(&o.spindle) && o.spindle.sets[0].radial_N == before.spindle.sets[0].radial_N
+       && o.spindle.sets[1].radial_N == before.spindle.sets[1].radial_N,
+       "no equilibrium: the last good state kept (radial loads %.1f, %.1f N)",
+       o.spindle.sets[0].radial_N, o.spindle.sets[1].radial_N);
+    acbb_spindle_sim_free(sp);
+}
+
 int main(void)
 {
     test_rigid_one_support();
@@ -607,5 +639,6 @@ int main(void)
     test_schedule();
     test_restart();
     test_overload();
+    test_no_equilibrium();
     return done_testing();
 }

@@ -24,6 +24,17 @@ static const char *const set_name[2] = { "front", "rear" };
 
 /* ---- one evaluation ---- */
 
+/* A set's failure named with the set ("spindle front set: ..."). */
+static acbb_status named(acbb_status rc, int k, acbb_error *err)
+{
+    if (rc != ACBB_OK && err) {
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        acbb_error_set(err, rc, "spindle %s set: %s", set_name[k], msg);
+    }
+    return rc;
+}
+
 static void distribute(acbb_spindle_sim *sp)
 {
     for (int k = 0; k < 2; k++) {
@@ -77,7 +88,7 @@ static acbb_status evaluate(acbb_spindle_sim *sp, int transient, int polishing, 
     acbb_status rc = acbb_spindle_mechanics(sp, err);
     for (int k = 0; k < 2; k++) {
         acbb_set_sim *ss = sp->st[k].ss;
-        if (rc == ACBB_OK) rc = acbb_set_finish(ss, transient, err);
+        if (rc == ACBB_OK) rc = named(acbb_set_finish(ss, transient, err), k, err);
         for (int b = 0; b < ss->n; b++) ss->b[b]->transient_pass = ss->b[b]->polishing = 0;
         ss->sm.hold[0] = 0; /* the set's probes see it free (spindle_mech.c set_loads) */
     }
@@ -312,13 +323,7 @@ static void rear_scene(const acbb_scene *s, const double L[3], acbb_scene *r)
 static acbb_status make_set(const acbb_scene *m, const acbb_sim_opts *o, int k,
                             acbb_set_sim **out, acbb_error *err)
 {
-    acbb_status rc = acbb_set_sim_new(m, o, out, err);
-    if (rc != ACBB_OK && err) {
-        char msg[sizeof err->msg];
-        snprintf(msg, sizeof msg, "%s", err->msg);
-        acbb_error_set(err, rc, "spindle %s set: %s", set_name[k], msg);
-    }
-    return rc;
+    return named(acbb_set_sim_new(m, o, out, err), k, err);
 }
 
 /* The one network over both sets (each member at its own x), every node
