@@ -183,7 +183,12 @@ static acbb_sim *run_public(const acbb_scene *s, acbb_snapshot *o, const char *w
 }
 
 /* Each set's own shaft equilibrium under its station's reaction lands on
- * the shaft's station displacement (spindle.c landing()). */
+ * the shaft's station displacement (spindle.c landing()): it starts there
+ * and moves only if the loads do not balance its members there to its own
+ * tolerance, so this checks that the reactions the shaft used are the
+ * set's equilibrium loads (at the state reached; inside a transient step
+ * at the quasi-dynamic level the ball speeds lag one step and the set
+ * moves by up to 0.1 um). */
 static void check_landing(const acbb_sim *sim, const char *what)
 {
     for (int k = 0; k < 2; k++)
