@@ -356,12 +356,4 @@ acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err);
 }
 #endif
 
-/* Moved to the tools (issue 27 item 5); included here only until every
- * user includes them itself (the next commit). */
-#include "acbb/tools/lubricant.h"
-#include "acbb/tools/scene_edit.h"
-#include "acbb/tools/scene_inactive.h"
-#include "acbb/tools/scene_schema.h"
-#include "acbb/tools/surroundings.h"
-
 #endif
