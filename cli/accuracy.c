@@ -15,6 +15,7 @@
 #include "acbb/units.h"
 #include "acbb/tools/plot.h"
 #include "acbb/scene.h"
+#include "acbb/tools/scene_schema.h"
 #include "accuracy.h"
 #include "commands.h"
 #include "common.h"

@@ -20,6 +20,7 @@
 #include "acbb/sim.h"
 #include "acbb/tools/study.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"

@@ -11,6 +11,7 @@
 #include "common.h"
 #include "exit.h"
 #include "say.h"
+#include "acbb/tools/scene_inactive.h"
 
 const char *acbb_cli_err_text(const acbb_error *err, acbb_status st)
 {

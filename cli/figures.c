@@ -15,6 +15,7 @@
 #include "acbb/tools/outfile.h"
 #include "acbb/tools/plot.h"
 #include "acbb/tools/study.h"
+#include "acbb/tools/scene_schema.h"
 #include "common.h"
 #include "exit.h"
 #include "figures.h"

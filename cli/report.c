@@ -14,6 +14,7 @@
 #include "acbb/tools/physics_profile.h"
 #include "acbb/scene.h"
 #include "acbb/tools/study.h"
+#include "acbb/tools/scene_schema.h"
 #include "common.h"
 #include "exit.h"
 #include "progress.h"

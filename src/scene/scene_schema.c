@@ -16,6 +16,7 @@
 #include "acbb/limits.h"
 #include "acbb/tools/set.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 /* Enum fields are read and written through an int (memcpy, no aliasing). */
