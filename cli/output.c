@@ -58,6 +58,16 @@ static void cell(acbb_cli_out *o, int width, int prec, char conv, double v)
     put_num(o, width - 1, prec, conv, v);
 }
 
+void acbb_cli_num(acbb_cli_out *o, int width, int prec, char conv, double v)
+{
+    put_num(o, width, prec, conv, v);
+}
+
+void acbb_cli_cell(acbb_cli_out *o, int width, int prec, char conv, double v)
+{
+    cell(o, width, prec, conv, v);
+}
+
 /* ---- CSV ---- */
 
 static void c_num(acbb_cli_out *o, double v, bool last)
@@ -338,6 +348,7 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
     summary_balls(o, snap);
     summary_life(o, snap);
     summary_set(o, snap);
+    acbb_cli_print_spindle(o, snap);
 }
 
 /* The run's JSON comes from the engine's one writer (acbb/json.h); the

@@ -70,6 +70,12 @@ const char *acbb_cli_point_status(const acbb_cli_point *p);
 /* `acbb run`: summary table (fits 80 columns) and the JSON object. */
 void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap);
+/* Its spindle block (output_spindle.c): nothing when s->spindle.n_sets = 0. */
+void acbb_cli_print_spindle(acbb_cli_out *o, const acbb_snapshot *s);
+/* A number in the summary's style: `width` wide (a cell: with a leading
+ * blank), "-" and counted in o->nonfinite when not finite. */
+void acbb_cli_num(acbb_cli_out *o, int width, int prec, char conv, double v);
+void acbb_cli_cell(acbb_cli_out *o, int width, int prec, char conv, double v);
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
                        const acbb_snapshot *snap);
 /* The same with its optional parts (acbb_json_write_run_parts): a set's
