@@ -272,6 +272,13 @@ static void failed_probe(void)
     ok(cJSON_IsString(why) && strstr(why->valuestring, "did not converge"),
        "\"ring\" says why: %s", cJSON_IsString(why) ? why->valuestring : "(none)");
     ok(j.nonfinite == 0, "a missing probe is not a non-finite number");
+    double v = 0.0;
+    acbb_error err = { { 0 } };
+    ok(acbb_metric_value(&s, "ring.stiffness_axial_N_per_um", &v, &err) == ACBB_EINVAL &&
+           strstr(err.msg, "did not converge"),
+       "nor a metric's 0: acbb_metric_value refuses it (%s)", err.msg);
+    ok(acbb_metric_value(&s, "ring.stiffness_radial_N_per_um", &v, NULL) == ACBB_OK && v == 256.0,
+       "the converged probe is a metric value (256 N/um)");
     cJSON_Delete(doc);
     free(buf);
 }
