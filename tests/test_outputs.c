@@ -12,6 +12,7 @@
  * unique, each path finds its own entry) close it.
  * $1 = the acbb binary. */
 #include <cjson/cJSON.h>
+#include <glob.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -295,5 +296,13 @@ int main(int argc, char **argv)
     against_cli(argv[1], "presets/7008C.ini", "7008C", 3, 0);
     against_cli(argv[1], "presets/combined-load.ini", "combined-load", 3, 1);
     against_cli(argv[1], "presets/pair-rigid-16k.ini", "pair-rigid-16k", 3, 0);
+    /* A spindle's metrics too (issue 31), once its presets exist. */
+    glob_t g;
+    if (glob("presets/spindle-*.ini", 0, NULL, &g) == 0) {
+        for (size_t i = 0; i < g.gl_pathc; i++) against_cli(argv[1], g.gl_pathv[i], g.gl_pathv[i], 3, 0);
+        globfree(&g);
+    } else {
+        skip("no presets/spindle-*.ini yet", "a spindle's metrics equal `acbb run --json`");
+    }
     return done_testing();
 }
