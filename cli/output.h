@@ -17,7 +17,7 @@
 #include "acbb/branches.h"
 
 #define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
-#define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
+#define ACBB_CLI_COLSETS 4               /* run CSV (three parts), sweep */
 
 /* A flat output's column: an entry of the output table and its ball. */
 typedef struct {
@@ -37,6 +37,7 @@ typedef struct {
     long nonfinite;                      /* NaN/Inf values met so far */
     acbb_cli_colset cols[ACBB_CLI_COLSETS];
     int set_n;                           /* a set's bearings (run CSV columns); 0/1: one */
+    bool spindle;                        /* a spindle (run CSV columns) */
 } acbb_cli_out;
 
 /* One run of a sweep or study: the scene it ran and what came out. */

@@ -7,7 +7,7 @@
 # spindle.sets[].preload_N of the front set > 0 and equal to the front
 # set's set.preload_N; each set's arrays one per bearing; the heat balance
 # closes at a steady state. The text output's spindle block keeps within
-# 80 columns and prints the JSON's numbers. Skipped while no spindle preset
+# 80 columns and prints the JSON's numbers; --csv has the spindle columns. Skipped while no spindle preset
 # exists. $1 = the acbb binary; SPINDLE_PRESETS="a.ini b.ini" runs others.
 . "$(dirname "$0")/tap.sh"
 ACBB=$1
@@ -75,5 +75,12 @@ for p in $presets; do
         "$pn: the block's nose stiffness is the JSON's"
     grep -E -q "^front +$(LC_ALL=C printf '%.1f' "$pre") " "$TMP/block"
     t $? "$pn: the block's front set preload is the JSON's ($(LC_ALL=C printf '%.1f' "$pre") N)"
+
+    # --csv: the warm-up curve's columns, a number in each of every row
+    "$ACBB" run "$p" --csv "$TMP/$pn.csv" >/dev/null 2>"$TMP/err"
+    awk -F, 'NR == 1 { n = NF; for (i = 1; i <= NF; i++) if ($i ~ /^spindle\./) c[++m] = i; next }
+             NF != n { exit 1 } { for (j = 1; j <= m; j++) if ($c[j] == "") exit 1 }
+             END { if (m != 8 || NR < 2) exit 1 }' "$TMP/$pn.csv"
+    t $? "$pn: run --csv has the 8 spindle columns, a number in each of its $(($(wc -l <"$TMP/$pn.csv") - 1)) rows"
 done
 tap_done

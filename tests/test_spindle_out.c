@@ -10,7 +10,7 @@
  *   python3-jsonschema (tests/schema_check.py), and the schema refuses it
  *   without spindle.nose_drift_um or with a key it does not describe;
  * - the text block of `acbb run`: the numbers, at most 80 columns a line,
- *   nothing of it for another scene.
+ *   nothing of it for another scene; `acbb run --csv`'s spindle columns.
  * Run from the repository root (meson's workdir). */
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -319,10 +319,46 @@ static void text_block(void)
     free(t);
 }
 
+/* `acbb run --csv`'s spindle columns: after the set's, the table's paths,
+ * one number each in a row. */
+static void csv(void)
+{
+    static acbb_snapshot s;
+    fill(&s);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    static acbb_cli_out o;
+    acbb_cli_out_init(&o, f);
+    o.set_n = 2;
+    o.spindle = true;
+    acbb_cli_csv_header(&o);
+    acbb_cli_csv_row(&o, &s);
+    fclose(f);
+    const char *want = ",set.preload_N,bearings[0].temperature_C.outer_ring,"
+                       "bearings[1].temperature_C.outer_ring,spindle.nose_drift_um,"
+                       "spindle.nose_radial_drift_um,spindle.rear_shift_um,"
+                       "spindle.sets[0].preload_N,spindle.sets[1].preload_N,"
+                       "spindle.sets[0].T_outer_C,spindle.sets[1].T_outer_C,"
+                       "spindle.coolant_C.outlet\n";
+    char *nl = buf ? strchr(buf, '\n') : NULL;
+    size_t wl = strlen(want);
+    ok(nl && (size_t)(nl + 1 - buf) >= wl && !strncmp(nl + 1 - wl, want, wl),
+       "the run CSV's header ends with the set's and then the spindle's columns");
+    size_t ch = 0, cr = 0;
+    for (const char *p = buf; p && p < nl; p++) ch += *p == ',';
+    for (const char *p = nl ? nl + 1 : NULL; p && *p; p++) cr += *p == ',';
+    has_substr(nl, ",12.5,1.25,4.5,300,150,35.5,35.5,23.5\n",
+               "its row ends with the drift (um), the preloads, outer rings and the coolant outlet");
+    ok(ch == cr && ch > 40 && o.nonfinite == 0, "as many fields in the row as in the header (%zu)", ch + 1);
+    free(buf);
+}
+
 int main(void)
 {
     document();
     not_a_spindle();
     text_block();
+    csv();
     return done_testing();
 }
