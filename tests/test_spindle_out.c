@@ -19,10 +19,10 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "json_path.h"
 #include "output.h"
 #include "tap.h"

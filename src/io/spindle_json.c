@@ -4,7 +4,7 @@
  * hold: each set's position, bearing count and per-bearing arrays, the
  * lift-off flag, and the temperatures along the shaft and the housing. */
 #include <stdio.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/outputs.h"
 #include "spindle_json.h"
 

@@ -2,7 +2,7 @@
 #ifndef ACBB_SPINDLE_JSON_H
 #define ACBB_SPINDLE_JSON_H
 
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/sim.h"
 
 /* Write "spindle": {...} (spindle.h's view) into the open object; the
