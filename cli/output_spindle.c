@@ -1,7 +1,7 @@
 /* acbb CLI — the spindle block of `acbb run`'s summary (spindle.h,
  * docs/spindle.md): where the sets sit, the nose's thermal drift, its
- * displacement and static stiffness, the heat split, the coolant, and a
- * row per set. Every line keeps within 80 columns at the widths below
+ * displacement and static stiffness, the heat split, the coolant, the
+ * temperatures along the shaft and the housing, and a row per set. Every line keeps within 80 columns at the widths below
  * (a number wider than planned shifts its row, never fuses with the next). */
 #include <stdbool.h>
 #include "output.h"
@@ -69,6 +69,39 @@ static void heat(acbb_cli_out *o, const acbb_spindle_view *v)
     items(o, "coolant C", c, t, 2, "");
 }
 
+/* The coldest and hottest of n cells; *at the hottest's x. 0: no cell. */
+static int span(int n, const double *x, const double *T, double *lo, double *hi, double *at)
+{
+    n = n < ACBB_SPINDLE_MAX_CELLS ? n : ACBB_SPINDLE_MAX_CELLS;
+    for (int i = 0; i < n; i++) {
+        if (i == 0 || T[i] < *lo) *lo = T[i];
+        if (i == 0 || T[i] > *hi) *hi = T[i], *at = x[i];
+    }
+    return n > 0;
+}
+
+/* "along x      shaft 47.6..106.1 C (hottest at 155 mm), housing 29.9..39.5 C" */
+static void along(acbb_cli_out *o, const acbb_spindle_view *v)
+{
+    double lo = 0, hi = 0, at = 0, hlo = 0, hhi = 0, hat = 0;
+    if (!span(v->n_shaft, v->shaft_x, v->shaft_T_C, &lo, &hi, &at)) return;
+    fprintf(o->f, "%-13sshaft ", "along x");
+    acbb_cli_num(o, 1, 1, 'f', lo);
+    fputs("..", o->f);
+    acbb_cli_num(o, 1, 1, 'f', hi);
+    fputs(" C (hottest at ", o->f);
+    acbb_cli_num(o, 1, 0, 'f', at * 1e3);
+    fputs(" mm)", o->f);
+    if (span(v->n_housing, v->housing_x, v->housing_T_C, &hlo, &hhi, &hat)) {
+        fputs(", housing ", o->f);
+        acbb_cli_num(o, 1, 1, 'f', hlo);
+        fputs("..", o->f);
+        acbb_cli_num(o, 1, 1, 'f', hhi);
+        fputs(" C", o->f);
+    }
+    fputc('\n', o->f);
+}
+
 /* A row per set (the hottest bearing's temperatures), then which lifted off. */
 static void sets(acbb_cli_out *o, const acbb_spindle_view *v)
 {
@@ -100,5 +133,6 @@ void acbb_cli_print_spindle(acbb_cli_out *o, const acbb_snapshot *s)
     where(o, v);
     nose(o, v);
     heat(o, v);
+    along(o, v);
     sets(o, v);
 }

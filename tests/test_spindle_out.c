@@ -298,6 +298,8 @@ static void text_block(void)
     has_substr(b, "heat W       motor 400, bearings 120; to coolant 430, to air 90",
                "the heat split");
     has_substr(b, "coolant C    inlet 20, outlet 23.5", "the coolant's inlet and outlet");
+    has_substr(b, "along x      shaft 30.0..34.0 C (hottest at 330 mm), housing 25.0..27.0 C",
+               "the span of the shaft's and the housing's temperatures, where the shaft is hottest");
     has_substr(b, "front     300.0    250.0     600.0      12.25   80.00", "the front set's row");
     has_substr(b, "a bearing of the rear set has lifted off", "a set that lifted off is named");
     size_t w = widest_line(b);
