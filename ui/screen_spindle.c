@@ -8,6 +8,7 @@
  * open a spindle. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include "drift_hist.h"
 #include "export.h"
 #include "screens.h"
@@ -69,6 +70,14 @@ static void draw(acbb_app *a)
     acbb_chart_draw(a, r, &c);
 }
 
+/* "spindle_drift-2" of "dir/spindle_drift-2.png" (in place). */
+static const char *stem(char *path)
+{
+    char *slash = strrchr(path, '/'), *dot = strrchr(path, '.');
+    if (dot) *dot = '\0';
+    return slash ? slash + 1 : path;
+}
+
 /* g: dir/spindle_drift and dir/spindle_temperature (PNG and SVG). */
 static void export_plots(acbb_app *a)
 {
@@ -99,8 +108,9 @@ static void export_plots(acbb_app *a)
         acbb_export_xy(a->plot_dir, "spindle_temperature", &p2, 1000, 600, png[1], svg[1], sizeof png[1],
                        &err) != ACBB_OK)
         acbb_app_msg(a, ACBB_ROLE_ERROR, "plot export failed: %s", err.msg);
-    else
-        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s (and .svg)", png[0], png[1]);
+    else /* the names with their counter (-2, ...), without dir and extension: fits 80 columns */
+        acbb_app_msg(a, ACBB_ROLE_OK, "wrote %s and %s (.png .svg) to %s/", stem(png[0]), stem(png[1]),
+                     a->plot_dir);
 }
 
 static int on_key(acbb_app *a, int ch)

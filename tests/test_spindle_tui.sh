@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The TUI's Spindle screen (issue 31; TAP, tmux, 80x24, no colour): a
+# bearing scene gets one line saying how to open a spindle; the spindle
+# preset draws its shaft with both sets, runs to convergence with a finite
+# nose drift and stiffness, every row inside 80 columns, and g exports the
+# drift over time and the temperature along the axis.
+# Usage: test_spindle_tui.sh PATH/TO/acbb   (cwd = repo root)
+. "$(dirname "$0")/test_tui_lib.sh"
+
+cp "$ROOT/presets/7008C.ini" "$TMP/one.ini"
+TUI_ARGS="--pace 0" start "env NO_COLOR=1" sp1 one.ini
+wait_for "Idle at ambient"
+keys D
+wait_for "Not a spindle. Open one: acbb presets/spindle-motor-DBT.ini, or o (presets)"
+ok $? "D on a bearing scene: one line naming a spindle preset"
+[ "$(screen | grep -c '#####')" -eq 0 ] && ! screen | grep -q 'nose drift'
+ok $? "and no empty shaft or side block drawn"
+keys q
+wait_file "$TMP/sp1" 5
+
+if [ ! -f "$ROOT/presets/spindle-motor-DBT.ini" ]; then
+    echo "ok $((n + 1)) - the spindle preset # SKIP presets/spindle-motor-DBT.ini is not there yet"
+    n=$((n + 1))
+    echo "1..$n"
+    [ "$failed" -eq 0 ]
+    exit
+fi
+
+cp "$ROOT/presets/spindle-motor-DBT.ini" "$TMP/sp.ini"
+TUI_ARGS="--pace 0" start "env NO_COLOR=1 LC_ALL=C" sp2 sp.ini
+wait_for "Idle at ambient"
+keys D
+wait_for "Spindle: shaft "
+ok $? "D opens the Spindle screen of the spindle preset"
+screen | grep -q '^nose -> #' && screen | grep -Eq '^sets +[<>]{2,}.* [<>]{2,}'
+r=$?; [ $r -eq 0 ] || show; ok $r "the shaft drawn from the nose, both sets' glyphs on their row"
+keys r
+wait_for "converged" 300
+screen | grep -Eq 'nose drift +[-+][0-9]+\.[0-9]+ um' && ! screen | grep -Eiq 'nose drift +[-+]?(nan|inf)'
+r=$?; [ $r -eq 0 ] || show; ok $r "converged: a finite nose drift in um"
+screen | grep -Eq 'nose k +[0-9]+\.[0-9] N/um'
+r=$?; [ $r -eq 0 ] || show; ok $r "and the radial nose stiffness in N/um"
+screen | grep -Eq '^shaft C +[0-9]+\.[0-9]' && screen | grep -q 'Nose drift (axial)'
+ok $? "the temperature along the shaft and the drift-over-time chart"
+[ "$(screen | sed 's/ *$//' | awk 'length > 80' | wc -l)" -eq 0 ]
+ok $? "nothing drawn past 80 columns"
+if command -v gnuplot >/dev/null 2>&1; then
+    keys g
+    wait_for "wrote spindle_drift and spindle_temperature (.png .svg) to ./acbb-plots/"
+    ok $? "g exports the drift and the axial temperature"
+    grep -q "<svg" "$TMP/acbb-plots/spindle_temperature.svg" && [ -s "$TMP/acbb-plots/spindle_drift.png" ]
+    ok $? "as SVG and PNG"
+fi
+keys q
+wait_file "$TMP/sp2" 5
+
+echo "1..$n"
+[ "$failed" -eq 0 ]
