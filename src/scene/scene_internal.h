@@ -7,6 +7,8 @@
  * scene_io.c      INI parsing, load and full save
  * scene_edit.c    saving into an existing file, keeping the user's lines
  * physics_profile.c the profiles' table (which keys physics.profile sets)
+ * scene_schema_spindle.h the spindle's rows of the table ([shaft] ...)
+ * scene_rules_spindle.c the spindle's cross-field rules and unused keys
  *
  * ONE table (acbb_sf_table) describes every preset key: section, key (unit
  * in the name), type, unit, where the value lives in acbb_scene, the factor
@@ -33,7 +35,7 @@ typedef struct {
 } acbb_sfield;
 
 /* The schema, and how many rows it has (at most ACBB_SF_MAX). */
-#define ACBB_SF_MAX 160
+#define ACBB_SF_MAX 256
 extern const acbb_sfield acbb_sf_table[];
 extern const size_t acbb_sf_n;
 
@@ -55,7 +57,7 @@ acbb_status acbb_sf_unknown_key(const char *section, const char *key, acbb_error
 acbb_status acbb_sf_apply(acbb_scene *s, const acbb_sfield *f, const char *text, acbb_error *err);
 
 /* Distinct schema sections, in table order ("bearing", "materials", ...). */
-#define ACBB_SF_SECTIONS_MAX 16
+#define ACBB_SF_SECTIONS_MAX 20
 size_t acbb_sf_section_count(void);
 const char *acbb_sf_section_name(size_t k);
 /* Index of a schema section, or -1. */

@@ -39,6 +39,7 @@ _Static_assert(sizeof(acbb_fidelity_preset) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_lub_method) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_oil_grade) == sizeof(int), "enum size");
 _Static_assert(sizeof(acbb_contact_model) == sizeof(int), "enum size");
+_Static_assert(sizeof(acbb_rear_support) == sizeof(int), "enum size");
 
 /* Enum choices, in the order of the C enum values in scene.h. */
 static const char *const k_model[] = {"static", "quasi-static", "quasi-dynamic", "dynamic", NULL};
@@ -61,6 +62,7 @@ static const char *const k_lub_method[] = {"oil-air", "oil-jet", "oil-bath", "gr
 static const char *const k_grade[] = {"custom", "VG2", "VG3", "VG5", "VG7", "VG10", "VG15", "VG22",
     "VG32", "VG46", "VG68", "VG100", "VG150", "VG220", "VG320", "VG460", "VG680", "VG1000",
     "VG1500", NULL};
+static const char *const k_rear_support[] = {"fixed", "spring", "floating", NULL};
 
 #define LO_OPEN(ends) ((ends) == OC || (ends) == OO)
 #define HI_OPEN(ends) ((ends) == CO || (ends) == OO)
@@ -387,6 +389,8 @@ const acbb_sfield acbb_sf_table[] = {
          "physics the loss keys default to: seed (the paper's, as printed) or reference "
          "(best-founded: Johnson hysteresis, EHL rolling, churning, cage); a key set "
          "explicitly wins"),
+
+#include "scene_schema_spindle.h"
 };
 
 const size_t acbb_sf_n = sizeof acbb_sf_table / sizeof acbb_sf_table[0];
