@@ -1,6 +1,6 @@
 /* acbb CLI — `acbb bench accuracy` (see accuracy.h).
  *
- * A thin client of include/acbb/accuracy.h: load the preset, apply --set
+ * A thin client of include/acbb/tools/accuracy.h: load the preset, apply --set
  * edits, run the plan, print the table and the frontier, write CSV and the
  * plot. Arguments come parsed from the command table (args.h); no user
  * text reaches a shell (the plot module spawns gnuplot directly).
@@ -11,9 +11,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 #include "acbb/units.h"
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 #include "acbb/scene.h"
 #include "accuracy.h"
 #include "commands.h"

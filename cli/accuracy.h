@@ -1,5 +1,5 @@
 /* acbb CLI — `acbb bench accuracy`: what accuracy costs in time, on top of
- * the engine's accuracy module (include/acbb/accuracy.h). Private to the
+ * the engine's accuracy module (include/acbb/tools/accuracy.h). Private to the
  * executable (main.c's command table routes `bench accuracy` here).
  *
  *   acbb bench accuracy PRESET [--set section.key=value]... [--repeat N]
@@ -13,10 +13,10 @@
  * temperature rise. --repeat defaults to 3 (1..1000); --knobs picks a subset
  * of model, contact_grid, hertz, mech_tol, steady_tol, thermal, network;
  * --models the model levels tried (static, quasi-static, quasi-dynamic,
- * dynamic; default all that acbb_sim_new accepts — dynamic can be slow).
+ * dynamic; default all that acbb_sim_create accepts — dynamic can be slow).
  * --csv writes one row per setting (results by their `acbb metrics` names,
  * errors as fractions, %.17g, empty field for an undefined number)
- * atomically (include/acbb/outfile.h). --plot
+ * atomically (include/acbb/tools/outfile.h). --plot
  * draws error vs wall time (log-log, one point set per knob) with gnuplot.
  *
  * Exit status: 0 every setting converged; 2 bad input (preset, --set,

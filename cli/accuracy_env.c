@@ -5,9 +5,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 #include "acbb/batch.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/fidelity.h"
 #include "accuracy.h"
 #include "common.h"
 #include "exit.h"

@@ -1,10 +1,10 @@
 /* acbb CLI — `acbb run`'s two branches and schedule lines (branches.h of
- * the CLI): the steady solve beside the transient (acbb/branches.h), and
- * where a [schedule] left the run (acbb/schedule.h). */
+ * the CLI): the steady solve beside the transient (acbb/tools/branches.h), and
+ * where a [schedule] left the run (acbb/tools/schedule.h). */
 #include <math.h>
 #include <stdio.h>
-#include "acbb/json.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/schedule.h"
 #include "acbb/units.h"
 #include "branches.h"
 

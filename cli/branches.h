@@ -1,10 +1,10 @@
-/* acbb CLI — `acbb run`'s two branches (acbb/branches.h) and schedule line
- * (acbb/schedule.h) in the table and the JSON. */
+/* acbb CLI — `acbb run`'s two branches (acbb/tools/branches.h) and schedule line
+ * (acbb/tools/schedule.h) in the table and the JSON. */
 #ifndef ACBB_CLI_BRANCHES_H
 #define ACBB_CLI_BRANCHES_H
 
 #include <stdbool.h>
-#include "acbb/branches.h"
+#include "acbb/tools/branches.h"
 #include "args.h"
 #include "output.h"
 

@@ -11,14 +11,14 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 #include "acbb/batch.h"
-#include "acbb/history.h"
-#include "acbb/set.h"
-#include "acbb/life_eval.h"
-#include "acbb/measure.h"
+#include "acbb/tools/history.h"
+#include "acbb/tools/set.h"
+#include "acbb/tools/life_eval.h"
+#include "acbb/tools/measure.h"
 #include "acbb/scene.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/fidelity.h"
 #include "acbb/sim.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 #include "acbb/units.h"
 #include "commands.h"
 #include "common.h"
@@ -177,7 +177,7 @@ static int start_sim(const acbb_scene *sc, bool json, const atomic_int *cancel,
 {
     acbb_error err = { { 0 } };
     acbb_cli_progress_note(prog, "setting up the %s model", acbb_model_level_name(sc->model));
-    acbb_status st = acbb_sim_new_ctl(sc, cancel, sim, &err);
+    acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ .cancel = cancel }, sim, &err);
     acbb_cli_progress_end(prog);
     if (st == ACBB_OK) return 0;
     acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
@@ -237,7 +237,7 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     if (rows.hist) acbb_history_init(rows.hist);
     drive(sim, &(drive_ctx){ snap, (csv_path || rows.hist) ? run_row_cb : NULL, &rows, &prog,
                              cancel });
-    acbb_branches br_store, *br = NULL; /* the other branch (acbb/branches.h) */
+    acbb_branches br_store, *br = NULL; /* the other branch (acbb/tools/branches.h) */
     acbb_error berr;
     if (!acbb_cli_interrupted() && acbb_cli_branches_wanted(a, &sc)) {
         acbb_cli_progress_note(&prog, "solving the other branch (steady solve vs transient)");

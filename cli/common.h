@@ -1,10 +1,10 @@
 /* acbb CLI — what every command shares: loading the scene with its --set
  * edits, checking stdout, and output files written through the engine's
- * atomic writer (include/acbb/outfile.h). */
+ * atomic writer (include/acbb/tools/outfile.h). */
 #ifndef ACBB_CLI_COMMON_H
 #define ACBB_CLI_COMMON_H
 
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 #include "acbb/scene.h"
 #include "args.h"
 #include "output.h"

@@ -7,7 +7,7 @@
  * for every output; the output guard (out_guard.h) vetted the path. */
 #include <stdio.h>
 #include <string.h>
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 #include "acbb/sim.h"
 #include "commands.h"
 #include "common.h"

@@ -10,11 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "acbb/figures.h"
-#include "acbb/measure.h"
-#include "acbb/outfile.h"
-#include "acbb/plot.h"
-#include "acbb/study.h"
+#include "acbb/tools/figures.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/plot.h"
+#include "acbb/tools/study.h"
 #include "common.h"
 #include "exit.h"
 #include "figures.h"

@@ -10,7 +10,7 @@
 #include <sys/mman.h>
 #include <string.h>
 #include <unistd.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "exit.h"
 #include "json_status.h"
 #include "say.h"

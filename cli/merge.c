@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "common.h"
 #include "exit.h"
 #include "output.h"

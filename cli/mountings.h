@@ -7,7 +7,7 @@
 
 #include <stdio.h>
 #include "acbb/scene.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 
 enum { M_FORCE, M_RIGID, M_DB, N_MOUNTINGS };
 typedef struct {

@@ -11,9 +11,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "acbb/designation.h"
-#include "acbb/physics_profile.h"
-#include "acbb/outfile.h"
+#include "acbb/tools/designation.h"
+#include "acbb/tools/physics_profile.h"
+#include "acbb/tools/outfile.h"
 #include "common.h"
 #include "exit.h"
 #include "new.h"

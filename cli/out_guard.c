@@ -6,7 +6,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 #include "exit.h"
 #include "out_guard.h"
 #include "plot.h"

@@ -1,18 +1,18 @@
 /* acbb CLI — output writers (see output.h).
  *
- * JSON goes through the engine's writer (acbb/json.h). Numbers use %.17g in
+ * JSON goes through the engine's writer (acbb/tools/json.h). Numbers use %.17g in
  * JSON and CSV: the double itself (issue 21 item 10); the summary table
  * uses fixed widths that keep every line within 80 columns. */
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
-#include "acbb/life_eval.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/life_eval.h"
 #include "acbb/outputs.h"
-#include "acbb/physics_profile.h"
+#include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 #include "output.h"
 
 #define CLI_UM 1e6                                   /* m -> um */
@@ -340,7 +340,7 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
     summary_set(o, snap);
 }
 
-/* The run's JSON comes from the engine's one writer (acbb/json.h); the
+/* The run's JSON comes from the engine's one writer (acbb/tools/json.h); the
  * non-finite count joins the table's. */
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s)
 {

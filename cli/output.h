@@ -14,7 +14,7 @@
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
-#include "acbb/branches.h"
+#include "acbb/tools/branches.h"
 
 #define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
 #define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
@@ -43,10 +43,10 @@ typedef struct {
 typedef struct {
     char value[64];          /* the swept value as typed, or the study x */
     acbb_scene scene;
-    acbb_status status;      /* acbb_sim_new's status, else the last step's */
-    bool have_snap;          /* false if acbb_sim_new failed */
+    acbb_status status;      /* acbb_sim_create's status, else the last step's */
+    bool have_snap;          /* false if acbb_sim_create failed */
     bool internal_error;     /* the driver had to stop a runaway loop */
-    char message[512];       /* acbb_sim_new's message when !have_snap */
+    char message[512];       /* acbb_sim_create's message when !have_snap */
     double wall_ms;          /* sim_new + stepping, CLOCK_MONOTONIC */
     acbb_snapshot snap;
 } acbb_cli_point;
@@ -76,7 +76,7 @@ void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
  * bearings[0..s->n_bearings) (NULL: one bearing), the branches (NULL: none). */
 void acbb_cli_json_run_parts(acbb_cli_out *o, const acbb_scene *sc, const acbb_snapshot *s,
                              const acbb_snapshot *bearings, const acbb_branches *br);
-/* JSON for a run that never started (acbb_sim_new failed). */
+/* JSON for a run that never started (acbb_sim_create failed). */
 void acbb_cli_json_failed(acbb_cli_out *o, const acbb_scene *sc,
                           const char *status, const char *message);
 
@@ -87,7 +87,7 @@ void acbb_cli_list_metrics(FILE *f);
  * the quantity in CSV and sweep records). */
 void acbb_cli_list_metrics_json(FILE *f);
 
-/* A JSON number as %.17g, the double itself (acbb/json.h); null when not
+/* A JSON number as %.17g, the double itself (acbb/tools/json.h); null when not
  * finite. Not cJSON_CreateNumber: cJSON 1.7 prints 15 digits whenever they
  * read back within one ulp, so its numbers may be off by one ulp. */
 struct cJSON *acbb_cli_json_number(double v);

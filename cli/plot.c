@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/history.h"
-#include "acbb/plot.h"
+#include "acbb/tools/history.h"
+#include "acbb/tools/plot.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "commands.h"
@@ -68,7 +68,7 @@ static int run_recording(const acbb_scene *sc, acbb_history *h, acbb_snapshot *s
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    acbb_status st = acbb_sim_new(sc, &sim, &err);
+    acbb_status st = acbb_sim_create(sc, NULL, &sim, &err);
     if (st != ACBB_OK) {
         acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
         return acbb_cli_exit_for(st);

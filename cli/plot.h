@@ -1,6 +1,6 @@
 /* acbb CLI — gnuplot export glue: the `acbb plot` subcommand and the
  * `acbb run ... --plot FILE` writer, on top of the engine's plot module
- * (include/acbb/plot.h). Private to the executable.
+ * (include/acbb/tools/plot.h). Private to the executable.
  *
  * Exit statuses (exit.h): 0 ok, 2 bad input, 3 the solver did not
  * reach steady state (the plot is still written, from the last good state),
@@ -22,7 +22,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "acbb/history.h"
+#include "acbb/tools/history.h"
 #include "args.h"
 #include "acbb/sim.h"
 

@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "acbb/plot.h"
-#include "acbb/preload_map.h"
+#include "acbb/tools/plot.h"
+#include "acbb/tools/preload_map.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"

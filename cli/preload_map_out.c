@@ -7,7 +7,7 @@
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "output.h"
 #include "preload_map_out.h"
 

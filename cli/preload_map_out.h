@@ -3,7 +3,7 @@
 #define ACBB_CLI_PRELOAD_MAP_OUT_H
 
 #include <stdio.h>
-#include "acbb/preload_map.h"
+#include "acbb/tools/preload_map.h"
 
 /* The CSV: a column header, one row per cell (speed-major). */
 void acbb_cli_pmap_csv(FILE *f, const acbb_pmap_cell *c, size_t n);

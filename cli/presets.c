@@ -9,7 +9,7 @@
 #include <unistd.h>
 #include "exit.h"
 #include "presets.h"
-#include "acbb/preset_info.h"
+#include "acbb/tools/preset_info.h"
 #include "say.h"
 
 /* Set by meson (meson.build); the fallbacks keep a bare compile working. */

@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "acbb/json.h"
-#include "acbb/measure.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/schedule.h"
 #include "acbb/units.h"
 #include "exit.h"
 #include "progress.h"

@@ -1,19 +1,19 @@
 /* acbb CLI — `acbb report`: formats the engine study's results (see
  * cli/report.h for the command line and exit statuses). Everything judged
- * comes from include/acbb/study.h; this file only parses arguments and
+ * comes from include/acbb/tools/study.h; this file only parses arguments and
  * prints text (80 columns), JSON or Markdown. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/loss_kinds.h"
-#include "acbb/measure.h"
-#include "acbb/outfile.h"
-#include "acbb/physics_profile.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/physics_profile.h"
 #include "acbb/scene.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 #include "common.h"
 #include "exit.h"
 #include "progress.h"
@@ -281,7 +281,7 @@ static void print_text(FILE *f, const report_view *c)
     }
 }
 
-/* ---- JSON (the engine's writer, acbb/json.h: one escaping, one number
+/* ---- JSON (the engine's writer, acbb/tools/json.h: one escaping, one number
  * format for every document) ---- */
 
 static void json_check(acbb_json *j, const acbb_study_check *ch)

@@ -1,7 +1,7 @@
 /* acbb CLI — `acbb report`: the seed's qualitative acceptance statements
  * (MODEL.md section 12, items 1-18) and its conclusions (seed section 5),
  * each judged HELD / NOT HELD / NOT EVALUATED from runs of the engine.
- * A thin client of the engine study (include/acbb/study.h): it plans and
+ * A thin client of the engine study (include/acbb/tools/study.h): it plans and
  * runs the study and formats its results; its options are rows of the
  * command table (main.c), parsed by args.c.
  *
@@ -30,7 +30,7 @@
  * input without a plausible range is bad input (exit 2).
  *
  * Every report also runs the runaway case (the bearing at 16000 rpm under
- * rigid preload set by 1000 N; include/acbb/contact_study.h) under each
+ * rigid preload set by 1000 N; include/acbb/tools/contact_study.h) under each
  * thermal.contact_model and race-side thermal.contact_multiplier 0.25, 0.5,
  * 1, 2 (8 short transient runs) and shows which branch each reaches: a
  * text section, a Markdown section, and item 9's JSON member

@@ -1,15 +1,15 @@
 /* acbb CLI — `acbb sensitivity PRESET --metric M`: which uncertain input
- * moves a result, and which could flip its sign (include/acbb/sensitivity.h
+ * moves a result, and which could flip its sign (include/acbb/tools/sensitivity.h
  * does the work; this file parses, prints and writes). */
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
-#include "acbb/measure.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/measure.h"
 #include "acbb/outputs.h"
-#include "acbb/plot.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/plot.h"
+#include "acbb/tools/sensitivity.h"
 #include "commands.h"
 #include "common.h"
 #include "output.h"

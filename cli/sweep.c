@@ -1,5 +1,5 @@
 /* acbb CLI — `acbb sweep`: a grid of points run by the engine's sweep pool
- * (include/acbb/sweep.h), streamed as each point finishes (sweep.h), or,
+ * (include/acbb/tools/sweep.h), streamed as each point finishes (sweep.h), or,
  * for the 1-D `--param K --values V` form alone, the table / JSON / CSV of
  * output.h once every point is in. */
 #include <errno.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"

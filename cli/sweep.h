@@ -1,6 +1,6 @@
 /* acbb CLI — `acbb sweep` and `acbb merge`: the streamed point records.
  *
- * A sweep over an N-dimensional grid (include/acbb/sweep.h) writes one
+ * A sweep over an N-dimensional grid (include/acbb/tools/sweep.h) writes one
  * record per point as the point finishes, in completion order:
  *
  * - JSONL: a header line {"acbb_sweep":{format, fingerprint, mode, grid
@@ -19,7 +19,7 @@
  *   or, with --csv-header, on a first line "# {...}" (the form before issue
  *   28; stdout, FIFOs and devices have no sidecar). Numbers %.17g, an empty
  *   field for a point that never ran, the message always quoted.
- * - The fingerprint (include/acbb/sweep.h, acbb_sweep_fingerprint, 16 hex
+ * - The fingerprint (include/acbb/tools/sweep.h, acbb_sweep_fingerprint, 16 hex
  *   digits) names the record format ACBB_SWEEP_FORMAT, the run mode, the
  *   scene and the grid: `acbb merge` and a resumed sweep refuse a header
  *   or a record of another sweep, naming the keys that differ (issue 20).
@@ -32,7 +32,7 @@
 #define ACBB_CLI_SWEEP_H
 
 #include <stdio.h>
-#include "acbb/sweep.h"
+#include "acbb/tools/sweep.h"
 #include "args.h"
 
 #define ACBB_CLI_SWEEP_SCALARS 48

@@ -8,8 +8,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
-#include "acbb/outfile.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/outfile.h"
 #include "sweep.h"
 
 void acbb_cli_sweep_id_init(acbb_cli_sweep_id *id, const acbb_sweep *g, const acbb_scene *base,

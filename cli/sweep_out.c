@@ -5,7 +5,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/outputs.h"
 #include "output.h"
 #include "acbb/units.h"

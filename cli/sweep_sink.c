@@ -23,7 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cjson/cJSON.h>
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 #include "common.h"
 #include "exit.h"
 #include "progress.h"

@@ -9,9 +9,9 @@
 #include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 #include "acbb/outputs.h"
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 #include "acbb/scene.h"
 #include "../cli/args.h"
 

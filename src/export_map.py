@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The shared library's linker version script (meson.build): every function
-the public headers (include/acbb/*.h, given as arguments) declare is global,
+the public headers (include/acbb/*.h, the core, given as arguments; not
+the tools in include/acbb/tools/) declare is global,
 everything else, the engine's internals, is local. Comments are dropped
 first, so prose naming a function exports nothing."""
 import re

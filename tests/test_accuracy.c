@@ -1,4 +1,4 @@
-/* Tests of the accuracy-versus-time benchmark (include/acbb/accuracy.h) on
+/* Tests of the accuracy-versus-time benchmark (include/acbb/tools/accuracy.h) on
  * the 7008C scene (MODEL.md section 10), one run per setting. The model
  * knob is limited to static, quasi-static and quasi-dynamic to keep the
  * runtime small (the dynamic level, when present, is much slower).
@@ -14,8 +14,8 @@
 #include <unistd.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/accuracy.h"
-#include "acbb/plot.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/plot.h"
 #include "acbb/sim.h"
 
 #define MAX_ROWS 64
@@ -181,7 +181,7 @@ static void check_values(const acbb_scene *s, const acbb_accuracy_row *rows, siz
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
     acbb_snapshot snap;
-    ok(acbb_sim_new(s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
+    ok(acbb_sim_create(s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
        "direct run of the default scene converges");
     if (!sim) return;
     acbb_sim_snapshot(sim, &snap);

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/ffi.h"
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/scene.h"
 #include "slurp.h"
 #include "tap.h"

@@ -12,7 +12,7 @@
 #include <string.h>
 #include "tap.h"
 #include "acbb/batch.h"
-#include "acbb/sweep.h"
+#include "acbb/tools/sweep.h"
 
 #define NPTS 6
 #define MAXN 16

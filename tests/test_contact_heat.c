@@ -97,7 +97,7 @@ static acbb_status run(const char *model, const char *mode, acbb_snapshot *p)
         acbb_scene_apply_edits(&s, e, 2, &err) != ACBB_OK)
         return ACBB_EINVAL;
     acbb_sim *sim = NULL;
-    acbb_status rc = acbb_sim_new(&s, &sim, &err);
+    acbb_status rc = acbb_sim_create(&s, NULL, &sim, &err);
     if (rc != ACBB_OK) return rc;
     rc = acbb_sim_run(sim);
     acbb_sim_snapshot(sim, p);

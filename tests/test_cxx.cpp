@@ -3,7 +3,30 @@
 // against the C library, and a C++ std::atomic<int> cancel flag is the
 // flag acbb polls: a run with the flag already set ends ACBB_CANCELLED,
 // one without converges to the same loss as a plain C run. TAP.
+// The tools headers (include/acbb/tools/, issue 27 item 5) serve the CLI
+// and the TUI, not installed, but keep the same guards: all compile as
+// C++ here and one of their functions links with C linkage.
 #include <acbb/acbb.h>
+#include <acbb/tools/accuracy.h>
+#include <acbb/tools/branches.h>
+#include <acbb/tools/contact_study.h>
+#include <acbb/tools/designation.h>
+#include <acbb/tools/fidelity.h>
+#include <acbb/tools/figures.h>
+#include <acbb/tools/history.h>
+#include <acbb/tools/json.h>
+#include <acbb/tools/life_eval.h>
+#include <acbb/tools/measure.h>
+#include <acbb/tools/outfile.h>
+#include <acbb/tools/physics_profile.h>
+#include <acbb/tools/plot.h>
+#include <acbb/tools/preload_map.h>
+#include <acbb/tools/preset_info.h>
+#include <acbb/tools/schedule.h>
+#include <acbb/tools/sensitivity.h>
+#include <acbb/tools/set.h>
+#include <acbb/tools/study.h>
+#include <acbb/tools/sweep.h>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -19,7 +42,9 @@ static acbb_status run(const acbb_scene *s, const acbb_atomic_int *flag, double 
 {
     acbb_sim *sim = nullptr;
     acbb_error err = {};
-    acbb_status rc = acbb_sim_new_ctl(s, flag, &sim, &err);
+    acbb_sim_opts opts = {};
+    opts.cancel = flag;
+    acbb_status rc = acbb_sim_create(s, &opts, &sim, &err);
     if (rc == ACBB_OK) {
         acbb_run_ctl ctl = {nullptr, nullptr, flag};
         rc = acbb_sim_drive(sim, &ctl);
@@ -45,6 +70,8 @@ int main()
     flag.store(1);
     acbb_status rc = run(&s, &flag, &P_cancel);
     ok(rc == ACBB_CANCELLED, "the same run with the C++ flag set ends ACBB_CANCELLED");
+    double v[3] = {3.0, 1.0, 2.0};
+    ok(acbb_median(v, 3) == 2.0, "a tools function (acbb_median, acbb/tools/measure.h) links from C++");
     std::printf("1..%d\n", n);
     return failed ? 1 : 0;
 }

@@ -21,7 +21,7 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "geometry.h"
 #include "hertz.h"
 #include "lubrication.h"
@@ -188,7 +188,7 @@ static void test_film(void)
     s.oil_eta_const = 0.026;
     acbb_sim *sim;
     acbb_error e;
-    if (!ok(acbb_sim_new(&s, &sim, &e) == ACBB_OK, "deep groove at 3000 rpm: sim starts")) {
+    if (!ok(acbb_sim_create(&s, NULL, &sim, &e) == ACBB_OK, "deep groove at 3000 rpm: sim starts")) {
         diag("%s", e.msg);
         return;
     }
@@ -246,7 +246,7 @@ static void test_preload(void)
         acbb_mech_free(m);
     }
     acbb_sim *sim;
-    if (!ok(acbb_sim_new(&s, &sim, &e) == ACBB_OK, "7008C, rigid preload 500 N, Fr 1500 N")) {
+    if (!ok(acbb_sim_create(&s, NULL, &sim, &e) == ACBB_OK, "7008C, rigid preload 500 N, Fr 1500 N")) {
         diag("%s", e.msg);
         return;
     }

@@ -24,7 +24,7 @@ static acbb_status run(const acbb_scene *s, acbb_snapshot *snap)
 {
     acbb_sim *sim;
     acbb_error err = { "" };
-    acbb_status rc = acbb_sim_new(s, &sim, &err);
+    acbb_status rc = acbb_sim_create(s, NULL, &sim, &err);
     if (rc != ACBB_OK) {
         printf("# set-up failed: %s\n", err.msg);
         return rc;

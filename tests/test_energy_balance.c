@@ -12,7 +12,7 @@
 static acbb_status run(const acbb_scene *s, acbb_snapshot *snap, acbb_error *err)
 {
     acbb_sim *sim = NULL;
-    acbb_status rc = acbb_sim_new(s, &sim, err);
+    acbb_status rc = acbb_sim_create(s, NULL, &sim, err);
     if (rc != ACBB_OK) return rc;
     rc = acbb_sim_run(sim);
     acbb_sim_snapshot(sim, snap);

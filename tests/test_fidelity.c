@@ -1,4 +1,4 @@
-/* Tests of the fidelity presets and targets (include/acbb/fidelity.h),
+/* Tests of the fidelity presets and targets (include/acbb/tools/fidelity.h),
  * the envelope (acbb_accuracy_envelope) and the deterministic cost
  * (acbb_accuracy_work_units) on the 7008C scene (MODEL.md section 10).
  *
@@ -12,8 +12,8 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/accuracy.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/fidelity.h"
 #include "acbb/sim.h"
 #include "accuracy_priv.h"
 
@@ -147,11 +147,11 @@ static void test_sim_applies(void)
     acbb_fidelity_set(&b, entry("fast"));
     acbb_snapshot sa, sb;
     acbb_sim *sim = NULL;
-    int good = acbb_sim_new(&a, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    int good = acbb_sim_create(&a, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &sa);
     acbb_sim_free(sim);
     sim = NULL;
-    good = good && acbb_sim_new(&b, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    good = good && acbb_sim_create(&b, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &sb);
     acbb_sim_free(sim);
     ok(good && sa.iteration == sb.iteration && sa.losses.total == sb.losses.total &&

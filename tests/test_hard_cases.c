@@ -20,8 +20,8 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/accuracy.h"
-#include "acbb/measure.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/measure.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 
@@ -173,7 +173,7 @@ static void run_case(const hard_case *c, acbb_scene *sc, acbb_snapshot *snap, in
     *have = 0;
     acbb_status st = acbb_scene_apply_edits(&s, c->edits, k, &err);
     acbb_sim *sim = NULL;
-    if (st == ACBB_OK) st = acbb_sim_new(&s, &sim, &err);
+    if (st == ACBB_OK) st = acbb_sim_create(&s, NULL, &sim, &err);
     if (st != ACBB_OK) {
         *got = st == ACBB_EINVAL ? "invalid" : acbb_status_name(st);
         snprintf(msg, n, "%s", err.msg);

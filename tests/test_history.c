@@ -1,7 +1,7 @@
 /* Tests of the bounded run history (history.h). */
 #include <string.h>
 #include "tap.h"
-#include "acbb/history.h"
+#include "acbb/tools/history.h"
 
 static acbb_snapshot snap;
 

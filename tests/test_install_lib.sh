@@ -34,8 +34,10 @@ t $? "libacbb.a is installed beside it"
     && [ -f "$(readlink -f "$LIB/libacbb.so")" ] && readelf -d "$LIB/libacbb.so" | grep -q 'SONAME.*\[libacbb\.so\.0\]'
 t $? "libacbb.so is installed, a link to the file of soname libacbb.so.0"
 INC=$(find "$D" -type d -path '*/include/acbb' | head -n 1)
-diff <(cd include/acbb && ls) <(cd "$INC" && ls) >"$TMP/err"
-t $? "the installed headers are exactly include/acbb/*.h (${INC#"$D"})"
+diff <(cd include/acbb && ls -- *.h) <(cd "$INC" && ls) >"$TMP/err"
+t $? "the installed headers are exactly include/acbb/*.h, the core (${INC#"$D"})"
+[ -z "$(find "$D" -path '*/acbb/tools*' -o -name study.h -o -name json.h)" ]
+t $? "no tools header (include/acbb/tools/: study.h, json.h, ...) is installed"
 [ -f "$INC/acbb.h" ] && [ -f "$INC/ffi.h" ] \
     && [ -z "$(find "$D" -name hertz.h -o -name scene_internal.h)" ]
 t $? "acbb.h and ffi.h are there, no internal header (hertz.h, scene_internal.h)"
@@ -46,10 +48,16 @@ nm -D --defined-only "$LIB/libacbb.so" | awk '$2 ~ /^[TDBR]$/ { print $3 }' | so
 bad=""
 while read -r s; do grep -q -w -- "$s" "$INC"/*.h || bad="$bad $s"; done <"$TMP/syms"
 nsyms=$(wc -l <"$TMP/syms")
-[ "$nsyms" -gt 100 ] && [ -z "$bad" ] && grep -q -x acbb_run_preset_json "$TMP/syms"
+[ "$nsyms" -gt 40 ] && [ -z "$bad" ] && grep -q -x acbb_run_preset_json "$TMP/syms" \
+    && grep -q -x acbb_sim_create "$TMP/syms"
 t $? "libacbb.so exports $nsyms symbols, all named in the public headers${bad:+ (not:$bad)}"
 ! grep -q -x -e acbb_sf_parse -e acbb_sf_find "$TMP/syms"
 t $? "internals (acbb_sf_parse, acbb_sf_find) are not exported"
+# The tools serve the CLI and the TUI (static library): none is exported,
+# and the one constructor is acbb_sim_create (issue 27 item 5).
+! grep -q -x -e acbb_study_run -e acbb_json_num -e acbb_out_open -e acbb_sim_new \
+    -e acbb_sim_new_ctl "$TMP/syms"
+t $? "tools (acbb_study_run, acbb_json_num, acbb_out_open) and the old constructors are not exported"
 
 export PKG_CONFIG_PATH="$(dirname "$PC")" PKG_CONFIG_SYSROOT_DIR="$D"
 pkg-config --cflags acbb | grep -q -F -- "-I$D/"

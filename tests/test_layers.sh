@@ -4,7 +4,8 @@
 # (cli/, ui/) and no other engine file calls acbb_sim_step itself;
 # (2) the engine (include/, src/) includes no ncurses and prints nothing to
 # stdout/stderr; (3) the clients include only the public API
-# (include/acbb/*.h) and their own headers, never an engine internal;
+# (include/acbb/*.h), the tools (include/acbb/tools/*.h) and their own
+# headers, never an engine internal;
 # (4) no engine message names a CLI flag (--set, --grid, ...): the TUI shows
 # the same messages. Comments are blanked first (and, for 1-2, string
 # literals), so prose that names a function does not count; every hit is
@@ -146,7 +147,7 @@ for f in "${clients[@]}"; do
              | sed -E 's/^([0-9]+):[^"]*"([^"]*)".*/\1:\2/')
 done
 [ -z "$bad_inc" ]
-t $? "cli/ and ui/ include only include/acbb/*.h and their own (cli/, ui/) headers"
+t $? "cli/ and ui/ include only include/acbb/*.h, include/acbb/tools/*.h and their own (cli/, ui/) headers"
 [ -z "$bad_inc" ] || printf '%s' "$bad_inc" | sed 's/^/#   /'
 printf '%s\n' '#include "acbb/sim.h"' '#include "hertz.h"' > "$TMP/probe3.c"
 [ "$(grep -c -E '^[[:space:]]*#[[:space:]]*include[[:space:]]*"' "$TMP/probe3.c")" = 2 ]
@@ -168,19 +169,28 @@ found=$(msgs "${engine[@]}")
 t $? "no engine message names a CLI flag"
 [ -z "$found" ] || printf '%s\n' "$found" | sed 's/^/#   /'
 
-# (4b) Every public header is in the umbrella acbb.h and has extern "C"
-# guards; none names C11's atomic_int (acbb_atomic_int: cancel_flag.h),
-# so a C++ host can include it (issue 28 item 5).
+# (4b) Every public header (the core, include/acbb/*.h) is in the umbrella
+# acbb.h; it and every tools header (include/acbb/tools/*.h: they serve
+# the CLI and the TUI, issue 27 item 5) has extern "C" guards and names no
+# C11 atomic_int (acbb_atomic_int: cancel_flag.h), so a C++ host can
+# include it (issue 28 item 5); no core header includes a tools header, so
+# the installed core stands alone.
 bad_pub=""
-for f in include/acbb/*.h; do
-    h=${f##*/}
-    case $h in acbb.h|cancel_flag.h) continue ;; esac
-    grep -q "^#include \"acbb/$h\"" include/acbb/acbb.h || bad_pub+="$f: not in acbb.h"$'\n'
+tools_inc='^#[[:space:]]*include[[:space:]]*["<]acbb/tools/'
+for f in include/acbb/*.h include/acbb/tools/*.h; do
+    h=${f#include/}
+    case $h in
+        acbb/tools/*) ;;
+        *) grep -q "$tools_inc" "$f" && bad_pub+="$f: a core header includes a tools header"$'\n'
+           case $h in acbb/acbb.h|acbb/cancel_flag.h) continue ;; esac
+           grep -q "^#include \"$h\"" include/acbb/acbb.h || bad_pub+="$f: not in acbb.h"$'\n' ;;
+    esac
     grep -q 'extern "C"' "$f" || bad_pub+="$f: no extern \"C\""$'\n'
     grep -Eq '(^|[^_])atomic_int|_Atomic' "$f" && bad_pub+="$f: C11 atomics in a public type"$'\n'
 done
-[ -z "$bad_pub" ]
-t $? "every public header is in acbb.h, has extern \"C\" and no C11 atomic type"
+tools=(include/acbb/tools/*.h)
+[ -z "$bad_pub" ] && [ ${#tools[@]} -gt 5 ]
+t $? "every core header is in acbb.h and includes no tools header; core and tools (${#tools[@]}) headers have extern \"C\" and no C11 atomic type"
 [ -z "$bad_pub" ] || printf '%s' "$bad_pub" | sed 's/^/#   /'
 
 # (5) Layer order (README "Source tree"): an engine folder includes internal

@@ -26,7 +26,7 @@ static acbb_status run(acbb_model_level level, double rpm, double Fx, int grid,
     s.thermal_mode = mode;
     acbb_sim *sim;
     acbb_error err = { "" };
-    acbb_status rc = acbb_sim_new(&s, &sim, &err);
+    acbb_status rc = acbb_sim_create(&s, NULL, &sim, &err);
     if (rc != ACBB_OK) {
         printf("# %s\n", err.msg);
         return rc;
@@ -99,7 +99,7 @@ static void test_combined_load_dynamic(void)
     acbb_sim *sim = NULL;
     acbb_status rc = acbb_scene_load("presets/combined-load.ini", &s, &err);
     if (rc == ACBB_OK) rc = acbb_scene_set(&s, "fidelity.model", "dynamic", &err);
-    if (rc == ACBB_OK) rc = acbb_sim_new(&s, &sim, &err);
+    if (rc == ACBB_OK) rc = acbb_sim_create(&s, NULL, &sim, &err);
     if (rc == ACBB_OK) {
         rc = acbb_sim_run(sim);
         acbb_sim_snapshot(sim, &snap);

@@ -143,7 +143,7 @@ static int run(const char *preset, const char *const *edits, size_t n, acbb_scen
     acbb_sim *sim = NULL;
     if (acbb_scene_load(preset, s, &e) != ACBB_OK) return 0;
     if (n && acbb_scene_apply_edits(s, edits, n, &e) != ACBB_OK) return 0;
-    if (acbb_sim_new(s, &sim, &e) != ACBB_OK) return 0;
+    if (acbb_sim_create(s, NULL, &sim, &e) != ACBB_OK) return 0;
     acbb_sim_run(sim);
     acbb_sim_snapshot(sim, snap);
     acbb_sim_free(sim);

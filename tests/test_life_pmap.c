@@ -1,4 +1,4 @@
-/* The preload window (include/acbb/preload_map.h): the skid criterion
+/* The preload window (include/acbb/tools/preload_map.h): the skid criterion
  * recomputed from the ball speeds of an independent run of the same cell,
  * a window that runaway bounds from above, named statuses, no NaN. */
 #include <math.h>
@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "acbb/acbb.h"
+#include "acbb/tools/preload_map.h"
 #include "tap.h"
 
 /* M_g / (mu Q_i D/2), worst ball, from a run of the cell's scene. */
@@ -18,7 +19,7 @@ static double skid_by_hand(const acbb_scene *base, double rpm, double preload)
     acbb_error e;
     acbb_sim *sim;
     static acbb_snapshot sn;
-    if (acbb_sim_new(&s, &sim, &e) != ACBB_OK) return NAN;
+    if (acbb_sim_create(&s, NULL, &sim, &e) != ACBB_OK) return NAN;
     acbb_sim_run(sim);
     acbb_sim_snapshot(sim, &sn);
     acbb_sim_free(sim);

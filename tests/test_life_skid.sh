@@ -2,7 +2,7 @@
 # The preload window's skid floor where it binds (issue 19 item 4): a
 # spring-preloaded 7008C at 20 000 rpm (presets/preload-window-spring.ini,
 # every traction value at its MODEL.md default). The criterion of
-# include/acbb/preload_map.h is recomputed here, outside the engine, from
+# include/acbb/tools/preload_map.h is recomputed here, outside the engine, from
 # the ball speeds and loads `acbb run --json` prints for each preload of the
 # grid:  skid = max_j J |omega_m| sqrt(omega_y'^2 + omega_z'^2) / (mu Q_i D/2),
 # J = m D^2 / 10, m = rho pi D^3 / 6 (MODEL.md 3), mu = the limiting shear

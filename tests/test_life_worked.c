@@ -62,6 +62,7 @@
 #include <stdio.h>
 
 #include "acbb/acbb.h"
+#include "acbb/tools/life_eval.h"
 #include "life.h"
 #include "tap.h"
 

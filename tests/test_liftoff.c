@@ -96,7 +96,7 @@ static double engine_liftoff(double Fp, brg *b)
                        + (1.0 - s.ring.nu * s.ring.nu) / s.ring.E), g.Z };
     acbb_sim *sim;
     acbb_error err = { "" };
-    if (acbb_sim_new(&s, &sim, &err) != ACBB_OK) return ok(0, "sim: %s", err.msg), NAN;
+    if (acbb_sim_create(&s, NULL, &sim, &err) != ACBB_OK) return ok(0, "sim: %s", err.msg), NAN;
     acbb_status rc = acbb_sim_run(sim);
     acbb_snapshot snap;
     acbb_sim_snapshot(sim, &snap);

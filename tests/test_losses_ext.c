@@ -9,7 +9,7 @@
 /* is_close with a printf-style name */
 #define IS_CLOSE(got, want, rt, at, ...) do { char nm_[200]; \
         snprintf(nm_, sizeof nm_, __VA_ARGS__); is_close(got, want, rt, at, nm_); } while (0)
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "acbb/sim.h"
 #include "losses.h"
 #include "lubrication.h"
@@ -148,7 +148,7 @@ static void test_seed_unmoved(void)
     acbb_error err = { "" };
     acbb_sim *sim = NULL;
     acbb_snapshot snap;
-    ok(acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK, "7008C runs");
+    ok(acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK, "7008C runs");
     acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
     IS_CLOSE(snap.losses.total, 54.64885431, 1e-9, 0, "7008C total loss as before");
@@ -157,7 +157,7 @@ static void test_seed_unmoved(void)
     ok(strcmp(acbb_loss_set(&s), "seed") == 0, "loss set: seed");
     s.loss_ehl_rolling = true;
     ok(strcmp(acbb_loss_set(&s), "extended") == 0, "loss set: extended");
-    ok(acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK, "extended runs");
+    ok(acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK, "extended runs");
     acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
     ok(snap.losses.P[ACBB_LOSS_EHL_ROLLING] > 0, "7008C EHL rolling loss %.3f W",
@@ -196,7 +196,7 @@ static void test_bath_run(void)
     acbb_sim *sim = NULL;
     acbb_error err = { "" };
     acbb_snapshot snap;
-    ok(acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
+    ok(acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
        "oil-bath run converges: %s", err.msg);
     acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
@@ -271,7 +271,7 @@ static double acbb_ehl_moment(acbb_scene s, int iso)
     acbb_sim *sim = NULL;
     acbb_error err = { "" };
     acbb_snapshot snap;
-    int good = acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    int good = acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (good) acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
     return good ? snap.losses.P[ACBB_LOSS_EHL_ROLLING] / s.inner_speed * 1e3 : NAN;

@@ -32,7 +32,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "acbb/sim.h"
 #include "skf_model.h"
 
@@ -79,7 +79,7 @@ static int run_moments(const cell *c, const char *profile, acbb_losses *L)
     acbb_error err = { "" };
     acbb_snapshot snap;
     if (!cell_scene(c, profile, &s)) return 0;
-    int good = acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    int good = acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
     if (!good) return 0;

@@ -25,7 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "acbb/sim.h"
 #include "skf_model.h"
 
@@ -48,7 +48,7 @@ static double acbb_moment(acbb_scene s, int extended, int *good, double *roll)
     acbb_sim *sim = NULL;
     acbb_error err = { "" };
     acbb_snapshot snap;
-    *good = acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    *good = acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
     *roll = *good ? (snap.losses.P[ACBB_LOSS_ROLLING] + snap.losses.P[ACBB_LOSS_EHL_ROLLING])

@@ -1,4 +1,4 @@
-/* The atomic writer (include/acbb/outfile.h, issue 16 item 5): every way of
+/* The atomic writer (include/acbb/tools/outfile.h, issue 16 item 5): every way of
  * naming the temporary file (/proc, linkat AT_EMPTY_PATH, a copy into a
  * named temp, a named temp from the start) gives the same file, with mode
  * 0666 & ~umask when new and the old mode when rewritten, and leaves no

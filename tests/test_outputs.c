@@ -16,10 +16,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "acbb/units.h"
 #include "tap.h"
 
@@ -69,7 +69,7 @@ static int run_direct(const char *preset, acbb_snapshot *snap)
 {
     acbb_scene sc;
     acbb_sim *sim = NULL;
-    if (acbb_scene_load(preset, &sc, NULL) != ACBB_OK || acbb_sim_new(&sc, &sim, NULL) != ACBB_OK)
+    if (acbb_scene_load(preset, &sc, NULL) != ACBB_OK || acbb_sim_create(&sc, NULL, &sim, NULL) != ACBB_OK)
         return 0;
     acbb_sim_drive(sim, &(acbb_run_ctl){ 0 });
     acbb_sim_snapshot(sim, snap);

@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <gsl/gsl_errno.h>
 #include "tap.h"
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 
 #define PI 3.14159265358979323846
 #define TITLE "SynthTitle 42"

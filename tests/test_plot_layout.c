@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "tap.h"
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 
 static char dir[64], script[96];
 

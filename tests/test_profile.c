@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "tap.h"
-#include "acbb/physics_profile.h"
+#include "acbb/tools/physics_profile.h"
 #include "acbb/sim.h"
 
 static acbb_scene load(const char *text)
@@ -163,7 +163,7 @@ static double total(acbb_scene s)
     acbb_error e = { "" };
     acbb_snapshot snap;
     s.heating = false;
-    int good = acbb_sim_new(&s, &sim, &e) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    int good = acbb_sim_create(&s, NULL, &sim, &e) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);
     return good ? snap.losses.total : NAN;
@@ -184,7 +184,7 @@ static void test_run(void)
     acbb_sim *sim = NULL;
     acbb_snapshot snap;
     s.heating = false;
-    ok(acbb_sim_new(&s, &sim, &e) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
+    ok(acbb_sim_create(&s, NULL, &sim, &e) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK,
        "the reference profile runs at the seed point");
     if (sim) acbb_sim_snapshot(sim, &snap);
     acbb_sim_free(sim);

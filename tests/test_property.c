@@ -36,9 +36,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/ffi.h"
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/scene.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "acbb/sim.h"
 #include "slurp.h"
 #include "tap.h"
@@ -385,7 +385,7 @@ static void one_scene(const options *o, int i, tally *t)
     int kept = randomize(&s, i, o->wall, low);
     if (o->acbb && i % 4 == 0) three_ways(o, &s, i);
     acbb_sim *sim = NULL;
-    acbb_status st = acbb_sim_new(&s, &sim, &err);
+    acbb_status st = acbb_sim_create(&s, NULL, &sim, &err);
     if (st != ACBB_OK) {
         /* Set-up may refuse (ill-posed) or fail (no initial equilibrium):
          * a named status with a message is the property. */

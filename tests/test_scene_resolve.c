@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/fidelity.h"
 #include "acbb/sim.h"
 
 /* The first key whose formatted value differs, or NULL. */

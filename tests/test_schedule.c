@@ -6,7 +6,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/acbb.h"
-#include "acbb/measure.h"
+#include "acbb/tools/branches.h"
+#include "acbb/tools/schedule.h"
+#include "acbb/tools/measure.h"
 #include "tap.h"
 
 #define RPM(x) acbb_rpm_to_rads(x)
@@ -156,7 +158,7 @@ static acbb_status run(const acbb_scene *s, acbb_snapshot *snap)
 {
     acbb_sim *sim;
     acbb_error e;
-    acbb_status rc = acbb_sim_new(s, &sim, &e);
+    acbb_status rc = acbb_sim_create(s, NULL, &sim, &e);
     if (rc != ACBB_OK) return rc;
     rc = acbb_sim_run(sim);
     acbb_sim_snapshot(sim, snap);

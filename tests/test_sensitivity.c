@@ -1,12 +1,12 @@
-/* Sensitivity (include/acbb/sensitivity.h): metric lookup by JSON path,
+/* Sensitivity (include/acbb/tools/sensitivity.h): metric lookup by JSON path,
  * the plausible ranges in the schema, one-at-a-time flips against direct
  * runs, Morris elementary effects (an input with no effect gets mu* = 0
  * exactly), option errors. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/sensitivity.h"
-#include "acbb/study.h"
+#include "acbb/tools/sensitivity.h"
+#include "acbb/tools/study.h"
 #include "acbb/units.h"
 #include <gsl/gsl_errno.h>
 #include "tap.h"
@@ -117,7 +117,7 @@ static double direct_delta(const acbb_scene *base, const char *key, const char *
         sc.thermal_mode = ACBB_THERMAL_STEADY;
         if (key && acbb_scene_set(&sc, key, value, &err) != ACBB_OK) return NAN;
         acbb_sim *sim = NULL;
-        if (acbb_sim_new(&sc, &sim, &err) != ACBB_OK) return NAN;
+        if (acbb_sim_create(&sc, NULL, &sim, &err) != ACBB_OK) return NAN;
         acbb_sim_drive(sim, NULL);
         static acbb_snapshot snap;
         acbb_sim_snapshot(sim, &snap);
@@ -188,7 +188,7 @@ static void test_relative(void)
     static acbb_snapshot snap;
     acbb_error err = {{0}};
     double qw = NAN;
-    if (acbb_sim_new(&w, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK) {
+    if (acbb_sim_create(&w, NULL, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK) {
         acbb_sim_snapshot(sim, &snap);
         qw = snap.balls[0].Qi;
     }

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 
 /* The orientation signs of arrangement `arr` with edits, as "+-..". */
 static int layout(const char *arr, const char *n_bearings, char *signs, acbb_error *err)

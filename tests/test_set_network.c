@@ -11,7 +11,7 @@
 #include "tap.h"
 #include "network.h"
 #include "network_set.h"
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 
 /* Conductance (W/K) of the edges between nodes a and b. */
 static double g_between(const acbb_tnet *net, int a, int b)

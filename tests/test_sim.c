@@ -24,7 +24,7 @@ static acbb_scene base(double rpm, double Fx, int te)
 static acbb_status run(const acbb_scene *s, acbb_snapshot *snap, acbb_error *err)
 {
     acbb_sim *sim;
-    acbb_status rc = acbb_sim_new(s, &sim, err);
+    acbb_status rc = acbb_sim_create(s, NULL, &sim, err);
     if (rc != ACBB_OK) return rc;
     rc = acbb_sim_run(sim);
     acbb_sim_snapshot(sim, snap);
@@ -173,7 +173,7 @@ static void test_step_rejection(void)
     s.time_step = 600;
     acbb_sim *sim;
     acbb_error err = { "" };
-    if (acbb_sim_new(&s, &sim, &err) != ACBB_OK) {
+    if (acbb_sim_create(&s, NULL, &sim, &err) != ACBB_OK) {
         ok(0, "sim_new: %s", err.msg);
         return;
     }
@@ -203,11 +203,37 @@ static void test_bad_scene(void)
     s.contact_grid = 100;
     acbb_sim *sim = NULL;
     acbb_error err = { "" };
-    ok(acbb_sim_new(&s, &sim, &err) == ACBB_EINVAL, "a scene built in code is validated too");
+    ok(acbb_sim_create(&s, NULL, &sim, &err) == ACBB_EINVAL, "a scene built in code is validated too");
     has_substr(err.msg, "fidelity.contact_grid = 100", "message names the key and value");
     s = base(15000, 0, 1);
     s.radial_load = 500;
-    ok(acbb_sim_new(&s, &sim, &err) == ACBB_ILL_POSED, "pure radial load is ill-posed");
+    ok(acbb_sim_create(&s, NULL, &sim, &err) == ACBB_ILL_POSED, "pure radial load is ill-posed");
+}
+
+/* The one constructor: opts NULL is the all-zero opts (the default run). */
+static void test_null_opts(void)
+{
+    acbb_scene s = base(15000, 1000, 1);
+    s.heating = false; /* isothermal: one mechanics solve, quick */
+    acbb_sim *a = NULL, *b = NULL;
+    acbb_error err = { "" };
+    ok(acbb_sim_create(&s, NULL, &a, &err) == ACBB_OK
+       && acbb_sim_create(&s, &(acbb_sim_opts){ 0 }, &b, &err) == ACBB_OK,
+       "acbb_sim_create takes opts NULL and all-zero opts (%s)", err.msg);
+    if (!a || !b) {
+        acbb_sim_free(a);
+        acbb_sim_free(b);
+        return;
+    }
+    ok(acbb_sim_run(a) == ACBB_OK && acbb_sim_run(b) == ACBB_OK, "both run");
+    acbb_sim_snapshot(a, &snap_a);
+    acbb_sim_snapshot(b, &snap_b);
+    ok(snap_a.iteration == snap_b.iteration && memcmp(snap_a.T, snap_b.T, sizeof snap_a.T) == 0
+       && memcmp(&snap_a.losses, &snap_b.losses, sizeof snap_a.losses) == 0
+       && snap_a.stiffness_axial == snap_b.stiffness_axial && snap_a.stiffness_axial > 0,
+       "the same run bit for bit, stiffness included (%.4g N/m)", snap_a.stiffness_axial);
+    acbb_sim_free(a);
+    acbb_sim_free(b);
 }
 
 static void test_disabled_effects(void)
@@ -377,6 +403,7 @@ int main(void)
     test_hard_cases();
     test_step_rejection();
     test_bad_scene();
+    test_null_opts();
     test_disabled_effects();
     test_any_bearing();
     test_convective_bore(ACBB_NET_46);

@@ -48,7 +48,7 @@ static void test_7008C_steady(void)
     ok(acbb_scene_load("presets/7008C.ini", &s, &err) == ACBB_OK, "preset: %s", err.msg);
     s.thermal_mode = ACBB_THERMAL_STEADY;
     acbb_sim *sim = NULL;
-    acbb_status rc = acbb_sim_new(&s, &sim, &err);
+    acbb_status rc = acbb_sim_create(&s, NULL, &sim, &err);
     if (rc == ACBB_OK) rc = acbb_sim_run(sim);
     acbb_snapshot snap;
     if (sim) acbb_sim_snapshot(sim, &snap);

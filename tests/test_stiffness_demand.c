@@ -9,8 +9,8 @@
 #include <string.h>
 #include "tap.h"
 #include "acbb/sim.h"
-#include "acbb/sensitivity.h"
-#include "acbb/sweep.h"
+#include "acbb/tools/sensitivity.h"
+#include "acbb/tools/sweep.h"
 
 static acbb_status run(const acbb_scene *s, int skip, acbb_snapshot *snap)
 {

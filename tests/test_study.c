@@ -1,4 +1,4 @@
-/* Tests of the seed study (include/acbb/study.h, MODEL.md section 12).
+/* Tests of the seed study (include/acbb/tools/study.h, MODEL.md section 12).
  *
  * 1. The check table against run results built by hand, where the verdict
  *    is known by construction: held, not held, not evaluable (a failed run,
@@ -22,7 +22,7 @@
 #include "network.h"
 #include "acbb/batch.h"
 #include "acbb/sim.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 #include "acbb/units.h"
 
 #include "study_priv.h"
@@ -312,7 +312,7 @@ static acbb_status run_to_end(const acbb_scene *s, acbb_snapshot *out)
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    acbb_status st = acbb_sim_new(s, &sim, &err);
+    acbb_status st = acbb_sim_create(s, NULL, &sim, &err);
     if (st != ACBB_OK) return st;
     st = acbb_sim_drive(sim, &(acbb_run_ctl){ 0 });
     acbb_sim_snapshot(sim, out);
@@ -522,7 +522,7 @@ static int same_as_sim(const acbb_study_compare *c, const compare_seen *s, size_
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    if (acbb_sim_new(&c->pts[i].scene, &sim, &err) != ACBB_OK) return 0;
+    if (acbb_sim_create(&c->pts[i].scene, NULL, &sim, &err) != ACBB_OK) return 0;
     acbb_run_ctl ctl = { 0 };
     acbb_status st = acbb_sim_drive(sim, &ctl);
     acbb_snapshot *snap = malloc(sizeof *snap);

@@ -1,5 +1,5 @@
 /* Tests of the study's robustness over the plausible ranges
- * (acbb_study_robustness, include/acbb/study.h; `acbb report --sensitivity`).
+ * (acbb_study_robustness, include/acbb/tools/study.h; `acbb report --sensitivity`).
  *
  * 1. A check built for the test (item 99, appended to the real table),
  *    whose deciding number is the varied input itself: the verdict, and
@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tap.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 
 #include "test_study_preset.h"
 
@@ -100,7 +100,7 @@ static int run_one(const acbb_scene *s, acbb_snapshot *out)
 {
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    int good = acbb_sim_new(s, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK;
+    int good = acbb_sim_create(s, NULL, &sim, &err) == ACBB_OK && acbb_sim_drive(sim, NULL) == ACBB_OK;
     if (good) acbb_sim_snapshot(sim, out);
     acbb_sim_free(sim);
     return good && out->state == ACBB_RUN_CONVERGED;

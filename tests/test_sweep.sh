@@ -44,7 +44,7 @@ t $? "every point converged; the loss columns sum to losses_W.total"
 t $? "CSV: the column header first (grid keys, ..., wall_ms) + 8 rows (issue 28 item 8)"
 
 # The same point alone, through acbb run: the sweep changes nothing else.
-# A sweep point is the steady solve (include/acbb/sweep.h), so the run
+# A sweep point is the steady solve (include/acbb/tools/sweep.h), so the run
 # says fidelity.thermal_mode=steady; --transient runs the scene's transient.
 point6() {
     "$ACBB" run "$PRESET" --set fidelity.model=quasi-static --set operating.axial_load_N=800 \

@@ -20,7 +20,7 @@ static int run(acbb_tilt_mode tilt, double Fr, double M, acbb_snapshot *snap)
     s.tilt = tilt;
     acbb_sim *sim = NULL;
     acbb_error err = { "" };
-    int good = acbb_sim_new(&s, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
+    int good = acbb_sim_create(&s, NULL, &sim, &err) == ACBB_OK && acbb_sim_run(sim) == ACBB_OK;
     if (sim) acbb_sim_snapshot(sim, snap);
     acbb_sim_free(sim);
     if (!good) printf("# run failed: %s\n", err.msg);

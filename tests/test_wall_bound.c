@@ -10,7 +10,7 @@
  * as the run loop arms it (sim.c arm_bound). */
 #include <string.h>
 #include "tap.h"
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "sim_struct.h"
@@ -33,7 +33,7 @@ static void test_single(void)
     acbb_scene s;
     acbb_sim *sim = NULL;
     acbb_error err = { { 0 } };
-    if (!load("presets/7008C.ini", "quasi-static", &s) || acbb_sim_new(&s, &sim, &err)) {
+    if (!load("presets/7008C.ini", "quasi-static", &s) || acbb_sim_create(&s, NULL, &sim, &err)) {
         ok(0, "7008C quasi-static set up (%s)", err.msg);
         return;
     }

@@ -63,7 +63,7 @@ static void test_complete(void)
 }
 
 /* The total loss of `s` with axial load `v`, run directly with the steady
- * solve, as a sweep point is (include/acbb/sweep.h). */
+ * solve, as a sweep point is (include/acbb/tools/sweep.h). */
 static double direct_total(const acbb_scene *s, const char *v)
 {
     acbb_scene e = *s;
@@ -71,7 +71,7 @@ static double direct_total(const acbb_scene *s, const char *v)
     acbb_sim *sim = NULL;
     acbb_snapshot snap;
     if (acbb_scene_set(&e, "operating.axial_load_N", v, NULL) != ACBB_OK ||
-        acbb_sim_new(&e, &sim, NULL) != ACBB_OK)
+        acbb_sim_create(&e, NULL, &sim, NULL) != ACBB_OK)
         return NAN;
     acbb_sim_drive(sim, &(acbb_run_ctl){ 0 });
     acbb_sim_snapshot(sim, &snap);

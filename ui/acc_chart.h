@@ -11,7 +11,7 @@
 #define ACBB_UI_ACC_CHART_H
 
 #include <stddef.h>
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 #include "bench.h"
 
 typedef struct {

@@ -14,7 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "../cli/exit.h"
 #include "screens.h"
 #include "recover.h"

@@ -6,7 +6,7 @@
 #define ACBB_UI_APP_H
 
 #include <limits.h>
-#include "acbb/history.h"
+#include "acbb/tools/history.h"
 #include "bench.h"
 #include "chart.h"
 #include "editor.h"

@@ -10,7 +10,7 @@
 #ifndef ACBB_UI_BENCH_H
 #define ACBB_UI_BENCH_H
 
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
 #include "job.h"

@@ -4,7 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "app.h"
 
 void acbb_role_on(acbb_app *a, acbb_role r)

@@ -11,7 +11,7 @@
 
 #include <limits.h>
 #include <stddef.h>
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
 

@@ -8,9 +8,9 @@
 #define ACBB_UI_EXPORT_H
 
 #include <stddef.h>
-#include "acbb/accuracy.h"
-#include "acbb/history.h"
-#include "acbb/plot.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/history.h"
+#include "acbb/tools/plot.h"
 
 /* Create dir if missing; into suffix[0..len) the first of "", "-2", "-3",
  * ... for which no dir/<base><suffix>.png or .svg exists, for every base

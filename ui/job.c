@@ -11,7 +11,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "job.h"
 #include "wake.h"
 

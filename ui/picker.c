@@ -3,7 +3,7 @@
 #include <string.h>
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "picker.h"
 
 const acbb_metric_item acbb_metric_menu[] = {

@@ -23,7 +23,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 #include "recover.h"
 
 static int state_dir(char *out, size_t n)

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <strings.h>
 #include "screens.h"
-#include "acbb/preset_info.h"
+#include "acbb/tools/preset_info.h"
 
 #define INFO_ROWS 4 /* help and range of the selected field (1 row when a refusal takes 3) */
 

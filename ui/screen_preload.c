@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "acbb/plot.h"
-#include "acbb/preload_map.h"
+#include "acbb/tools/plot.h"
+#include "acbb/tools/preload_map.h"
 #include "acbb/units.h"
 #include "results.h"
 #include "export.h"

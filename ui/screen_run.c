@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "acbb/units.h"
 #include "acbb/life.h"
 #include "screens.h"

@@ -9,7 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "screens.h"
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 
 #define TABLE_Y 3               /* body row of the first bearing row */
 

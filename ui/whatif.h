@@ -17,9 +17,9 @@
 
 #include <stddef.h>
 #include "acbb/scene.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "acbb/status.h"
-#include "acbb/sweep.h"
+#include "acbb/tools/sweep.h"
 #include "job.h"
 
 #define ACBB_WHATIF_MAX_POINTS 200  /* a sweep from the TUI: one curve, on a chart */

@@ -26,7 +26,7 @@
 #include <unistd.h>
 
 #include "acbb/batch.h"
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "worker.h"
 #include "wake.h"
 
@@ -214,7 +214,7 @@ static acbb_status load_scene(acbb_worker *w, worker_ctx *c, const acbb_scene *s
     if (c->sim)
         rc = acbb_sim_restart(c->sim, s, warm, err);
     else
-        rc = acbb_sim_new_ctl(s, &w->cancel_run, &c->sim, err);
+        rc = acbb_sim_create(s, &(acbb_sim_opts){ .cancel = &w->cancel_run }, &c->sim, err);
     if (rc == ACBB_CANCELLED)
         acbb_error_set(err, rc, "run set-up cancelled by stop/quit; the previous state is kept");
     if (rc == ACBB_OK) c->scene = *s;

@@ -28,7 +28,7 @@
 #ifndef ACBB_UI_WORKER_H
 #define ACBB_UI_WORKER_H
 
-#include "acbb/history.h"
+#include "acbb/tools/history.h"
 #include "acbb/scene.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"

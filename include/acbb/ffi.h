@@ -6,7 +6,7 @@
  * acbb_run_preset_json runs the scene to the end exactly as
  * `acbb run PRESET --set S1 --set S2 ... --json` does (the same loading and
  * checks, the fidelity preset applied, the same run loop, the other branch
- * solved for a scene that wants it, acbb/branches.h) and returns the
+ * solved for a scene that wants it, acbb/tools/branches.h) and returns the
  * document that command prints, byte for byte (test `python` compares
  * every preset's); only wall_ms, the run's wall time, differs between any
  * two runs.
@@ -19,7 +19,7 @@
  * - Returns a JSON object as a NUL-terminated string (ASCII, or UTF-8
  *   quoted from the input). It always has "schema_version" first, then
  *   "status" and "message" strings (docs/schema/acbb.schema.json):
- *   - the run started: the full run document (acbb/json.h,
+ *   - the run started: the full run document (acbb/tools/json.h,
  *     acbb_json_write_run); status "converged", or how the run failed
  *     ("not_converged", "runaway", ...) with the reason in message;
  *   - the scene could not be compiled: status, message, "iterations": 0

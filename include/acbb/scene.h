@@ -58,7 +58,7 @@ typedef enum { ACBB_PRELOAD_FORCE, ACBB_PRELOAD_DISPLACEMENT } acbb_preload_mode
  * The one table of arrangements, a row each: X(ID, name, bearings, most
  * bearings, the direction of each bearing's thrust by increasing x with
  * the last sign repeated) [HK-EC, preloading chapter]: DB (O) +-, DF (X)
- * -+, DT tandem ++.., DBT ++-, QBC ++--. acbb/set.h reads it. */
+ * -+, DT tandem ++.., DBT ++-, QBC ++--. acbb/tools/set.h reads it. */
 #define ACBB_SET_ARRANGEMENT_TABLE(X) \
     X(SINGLE, "single", 1, 1, "+") \
     X(DB, "DB", 2, 2, "+-") \
@@ -307,7 +307,7 @@ void acbb_scene_default(acbb_scene *s);
  * oil_nu40 (ISO 3448 midpoint), oil_nu100 (from oil_vi, ASTM D2270) and
  * oil_alpha_pv (Wooster) written into `s`, except where those keys hold
  * other than their defaults; a custom oil is left as given. A run applies
- * it to its own copy (acbb_sim_new). */
+ * it to its own copy (acbb_sim_create). */
 void acbb_lubricant_apply(acbb_scene *s);
 double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
 /* A failed check `rc` of a scene after acbb_lubricant_apply: when a graded

@@ -5,7 +5,7 @@
  * then the expansions for the next step. A client drives it (the CLI to
  * steady state, the TUI worker while publishing snapshots).
  *
- * Ownership: acbb_sim_new allocates a Sim that owns a copy of the Scene;
+ * Ownership: acbb_sim_create allocates a Sim that owns a copy of the Scene;
  * release it with acbb_sim_free. Snapshots are plain values the caller owns.
  * A Sim is not thread-safe: one thread drives it. */
 #ifndef ACBB_SIM_H
@@ -77,7 +77,7 @@ typedef struct {
 
 typedef enum { ACBB_RUN_RUNNING, ACBB_RUN_CONVERGED, ACBB_RUN_FAILED } acbb_run_state;
 
-/* A bearing set's own results (MODEL.md 14; acbb/set.h). Stiffness at the
+/* A bearing set's own results (MODEL.md 14; acbb/tools/set.h). Stiffness at the
  * nose: axial dFa/d(shaft dx), radial dFr/d(nose dz), tilt dM/d(tilt),
  * each with the other shaft freedoms free (0 until converged). Per-bearing
  * entries: axial load in the bearing's own frame, contact_lost = every
@@ -144,15 +144,11 @@ typedef struct {
 
 typedef struct acbb_sim acbb_sim;
 
-/* Compile the scene (validated again) and set the initial state: all
- * temperatures at ambient, mechanics solved at room-temperature geometry.
- * Returns ACBB_EINVAL / ACBB_ILL_POSED with a message for bad scenes, or a
- * solver status if the initial mechanics fails. */
-acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err);
+/* Release a Sim made by acbb_sim_create (NULL is a no-op). */
 void acbb_sim_free(acbb_sim *sim);
 
 /* Every check a run makes before its first step, and no step: the scene's
- * values and rules, then its compilation by acbb_sim_new (derived
+ * values and rules, then its compilation by acbb_sim_create (derived
  * lubricant values, the thermal network's geometry, an ill-posed first
  * equilibrium). `acbb check`, `acbb edit` and the TUI's save all use it,
  * so nothing is saved that `acbb run` then refuses (issue 26 item 9). */
@@ -188,17 +184,14 @@ typedef struct {
  * named failure otherwise (the run's final status). */
 acbb_status acbb_sim_drive(acbb_sim *sim, const acbb_run_ctl *ctl);
 
-/* acbb_sim_new whose set-up (initial mechanics: a dynamic-level window) can
- * be cancelled; the flag stays attached to the sim for its later steps. */
-acbb_status acbb_sim_new_ctl(const acbb_scene *s, const acbb_atomic_int *cancel, acbb_sim **out,
-                             acbb_error *err);
-
-/* acbb_sim_new_ctl with the options a pool of runs needs: `threads` is the
- * number of workers the dynamic level spreads a step's distinct balls over
- * (0: the default, 2); a pool that already keeps every core busy with runs
- * passes 1. The answer does not depend on it. */
+/* The constructor's options; all zero (or o == NULL) is the default.
+ * `cancel` makes the set-up (initial mechanics: a dynamic-level window)
+ * cancellable and stays attached to the sim for its later steps.
+ * `threads` is the number of workers the dynamic level spreads a step's
+ * distinct balls over (0: the default, 2); a pool that already keeps every
+ * core busy with runs passes 1. The answer does not depend on it. */
 typedef struct {
-    const acbb_atomic_int *cancel;  /* as acbb_sim_new_ctl's; not owned, may be NULL */
+    const acbb_atomic_int *cancel;  /* not owned, may be NULL */
     int threads;
     /* 1: a caller that reads no stiffness skips the end-of-run stiffness
      * probes of a single bearing (a third of a steady run): the snapshot
@@ -206,7 +199,12 @@ typedef struct {
      * 0. 0 (the default): computed, as `acbb run` reports them. */
     int skip_stiffness;
 } acbb_sim_opts;
-/* GSL's error handler: the engine checks GSL's statuses itself, so while
+/* The one constructor: compile the scene (validated again) and set the
+ * initial state: all temperatures at ambient, mechanics solved at
+ * room-temperature geometry. Returns ACBB_EINVAL / ACBB_ILL_POSED with a
+ * message for bad scenes, or a solver status if the initial mechanics
+ * fails.
+ * GSL's error handler: the engine checks GSL's statuses itself, so while
  * an acbb_sim_* call (create, restart, step, drive, run) works the
  * process-wide handler is off; when the call returns it is again what the
  * host had set (GSL's aborting default included). A host that sets its

@@ -22,7 +22,7 @@
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 
 #define LOCK_POLL_NS 10000000L /* 10 ms */
 

@@ -1,7 +1,7 @@
 /* acbb — clock and median (measure.h). */
 #include <stdlib.h>
 #include <time.h>
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 
 double acbb_now_ms(void)
 {

@@ -1,11 +1,11 @@
 /* acbb — the atomic writer's ways of naming its temporary file, as flags
- * (outfile.c). Not installed; the public interface is include/acbb/outfile.h.
+ * (outfile.c). Not installed; the public interface is include/acbb/tools/outfile.h.
  * A flag turns one way off, so a test can force the fallbacks a machine
  * without /proc (or without O_TMPFILE) takes, with no global switch. */
 #ifndef ACBB_OUTFILE_PRIV_H
 #define ACBB_OUTFILE_PRIV_H
 
-#include "acbb/outfile.h"
+#include "acbb/tools/outfile.h"
 
 enum {
     ACBB_OUT_NO_PROC = 1u,       /* do not link through /proc/self/fd/N */

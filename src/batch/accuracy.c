@@ -1,4 +1,4 @@
-/* acbb — accuracy-versus-time benchmark (include/acbb/accuracy.h).
+/* acbb — accuracy-versus-time benchmark (include/acbb/tools/accuracy.h).
  *
  * One knob at a time around the base scene (DESIGN.md "Fidelity and
  * effects": every fidelity setting against the finest one on the same
@@ -11,9 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "acbb/accuracy.h"
-#include "acbb/fidelity.h"
-#include "acbb/measure.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/measure.h"
 #include "acbb/sim.h"
 #include "accuracy_priv.h"
 #include "cancel.h"
@@ -26,7 +26,7 @@ typedef struct {
     const char *key, *value;
     const char *key2, *value2;
     int is_reference;   /* fixed reference; the model knob's is chosen at run time */
-    int optional;       /* may be refused by acbb_sim_new (not implemented yet) */
+    int optional;       /* may be refused by acbb_sim_create (not implemented yet) */
     int level;          /* the model knob's acbb_model_level; -1 for other knobs */
 } plan_entry;
 
@@ -213,7 +213,7 @@ static acbb_status run_sim(acbb_sim *sim, const acbb_scene *sc, const _Atomic in
     return st;
 }
 
-/* One timed run: acbb_sim_new + acbb_sim_run + acbb_sim_free on the clock,
+/* One timed run: acbb_sim_create + acbb_sim_run + acbb_sim_free on the clock,
  * the snapshot copy off it. Returns the run's status; a run that ended
  * without converging is reported as such even if the last step said OK. */
 static acbb_status timed_run(const acbb_scene *sc, const _Atomic int *cancel, int threads,

@@ -1,5 +1,5 @@
 /* acbb — the accuracy envelope: every knob setting over the seed's 48
- * study points, steady state and transient path (include/acbb/accuracy.h).
+ * study points, steady state and transient path (include/acbb/tools/accuracy.h).
  *
  * Points run on the batch runner's parallel for (batch.h); each point runs
  * the one-knob plan and the fidelity ladder on a private Sim per run and
@@ -12,11 +12,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 #include "acbb/batch.h"
-#include "acbb/fidelity.h"
-#include "acbb/measure.h"
-#include "acbb/study.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/study.h"
 #include "accuracy_priv.h"
 #include "cancel.h"
 

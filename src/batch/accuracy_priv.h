@@ -2,7 +2,7 @@
 #ifndef ACBB_ACCURACY_PRIV_H
 #define ACBB_ACCURACY_PRIV_H
 
-#include "acbb/accuracy.h"
+#include "acbb/tools/accuracy.h"
 
 /* The outer-ring temperature rise above ambient at each coupled step
  * (the transient path the TUI shows), owned by the caller: free(t), free(y). */

@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <unistd.h>
 #include "acbb/batch.h"
-#include "acbb/fidelity.h"
-#include "acbb/measure.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/measure.h"
 #include "cancel.h"
 
 int acbb_batch_cpus(void)

@@ -1,8 +1,8 @@
 /* acbb — the runaway case under each contact heat model (contact_study.h). */
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/contact_study.h"
-#include "acbb/measure.h"
+#include "acbb/tools/contact_study.h"
+#include "acbb/tools/measure.h"
 #include "acbb/units.h"
 
 const double acbb_contact_multipliers[ACBB_CONTACT_N_MULT] = { 0.25, 0.5, 1.0, 2.0 };

@@ -14,8 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/batch.h"
-#include "acbb/figures.h"
-#include "acbb/measure.h"
+#include "acbb/tools/figures.h"
+#include "acbb/tools/measure.h"
 
 /* ---- recording the TE load sweep ---- */
 

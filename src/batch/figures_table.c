@@ -5,7 +5,7 @@
  * ball, as in the study (study.h). */
 #include <math.h>
 #include <stddef.h>
-#include "acbb/figures.h"
+#include "acbb/tools/figures.h"
 #include "acbb/units.h"
 
 /* ---- getters over a steady snapshot ---- */

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/batch.h"
-#include "acbb/preload_map.h"
+#include "acbb/tools/preload_map.h"
 #include "acbb/sim.h"
 #include "acbb/units.h"
 

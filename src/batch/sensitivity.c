@@ -8,8 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "gsl_quiet.h"
-#include "acbb/measure.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/sensitivity.h"
 
 size_t acbb_sens_inputs(const acbb_scene *s, acbb_sens_input *out, size_t cap)
 {

@@ -3,7 +3,7 @@
  * (outputs.h), the same the run's JSON writes. */
 #include <stdio.h>
 #include "acbb/outputs.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 
 int acbb_metric_name(size_t i, char *buf, size_t n)
 {

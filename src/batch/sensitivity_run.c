@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "acbb/batch.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "cancel.h"
 
 typedef struct {

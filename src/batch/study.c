@@ -11,8 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/batch.h"
-#include "acbb/measure.h"
-#include "acbb/study.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/study.h"
 #include "acbb/units.h"
 #include "study_priv.h"
 #include "cancel.h"

@@ -1,12 +1,12 @@
 /* acbb — the seed study's private helpers, shared by its check files
  * (study_items_*.c): evidence buffers, series over a sweep, shape tests.
- * Not installed; the public interface is include/acbb/study.h. */
+ * Not installed; the public interface is include/acbb/tools/study.h. */
 #ifndef ACBB_STUDY_PRIV_H
 #define ACBB_STUDY_PRIV_H
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 
 /* Thresholds MODEL.md section 12 does not give (each check names its own). */
 #define REPORT_RISE 1e-3         /* "rises above step 0": > 0.1 % */

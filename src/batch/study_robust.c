@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "study_priv.h"
 #include "cancel.h"
 

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 #include "study_priv.h"
 
 /* Statements of MODEL.md 12 that are the sign of a TE - WTE difference, or

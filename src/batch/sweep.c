@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/sweep.h"
+#include "acbb/tools/sweep.h"
 #include "c_locale.h"
 
 typedef struct {

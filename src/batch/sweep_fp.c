@@ -7,9 +7,9 @@
  * run again on resume. */
 #include <stdio.h>
 #include <string.h>
-#include "acbb/outfile.h"
-#include "acbb/schedule.h"
-#include "acbb/sweep.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/schedule.h"
+#include "acbb/tools/sweep.h"
 
 static int gridded(const acbb_sweep *g, const char *key)
 {

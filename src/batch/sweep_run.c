@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/batch.h"
-#include "acbb/sweep.h"
+#include "acbb/tools/sweep.h"
 
 typedef struct {
     const acbb_sweep *grid;

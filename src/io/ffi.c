@@ -4,10 +4,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/ffi.h"
-#include "acbb/branches.h"
-#include "acbb/fidelity.h"
-#include "acbb/json.h"
-#include "acbb/measure.h"
+#include "acbb/tools/branches.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/measure.h"
 #include "acbb/sim.h"
 #include "gsl_quiet.h"
 #include "cancel.h"
@@ -63,7 +63,7 @@ static acbb_status run(acbb_json *j, const acbb_scene *given, const acbb_atomic_
 }
 
 /* Bad input, or a scene that could not be prepared: the layout's version,
- * status and message, as every document (acbb/json.h). A scene the rules
+ * status and message, as every document (acbb/tools/json.h). A scene the rules
  * find ill-posed while loading is bad input, as `acbb run --json` names it
  * (exit 2); *status still says ACBB_ILL_POSED. */
 static void write_refusal(acbb_json *j, acbb_status st, const acbb_error *err)

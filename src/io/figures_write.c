@@ -8,9 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/batch.h"
-#include "acbb/figures.h"
-#include "acbb/outfile.h"
-#include "acbb/plot.h"
+#include "acbb/tools/figures.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/plot.h"
 
 /* A label in the data file: the CSV separator becomes ';' and a double
  * quote a single one, so a plain split on ',' reads every row. */

@@ -20,7 +20,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 #include "plot_priv.h"
 
 extern char **environ;

@@ -1,4 +1,4 @@
-/* acbb — the JSON writer's primitives (acbb/json.h).
+/* acbb — the JSON writer's primitives (acbb/tools/json.h).
  *
  * By hand, not cJSON (issue 21 item 10 asked for cJSON; kept, why): cJSON
  * 1.7's printer writes "%1.15g" whenever that reads back within one ulp, so
@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "c_locale.h"
 
 void acbb_json_init(acbb_json *j, FILE *f)

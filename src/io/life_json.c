@@ -2,8 +2,8 @@
  * output table's "life" rows (so the JSON, CSV and metrics agree), then
  * the flags and the contacts they name. */
 #include <string.h>
-#include "acbb/json.h"
-#include "acbb/life_eval.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/life_eval.h"
 #include "acbb/outputs.h"
 #include "life_json.h"
 

@@ -2,7 +2,7 @@
 #ifndef ACBB_LIFE_JSON_H
 #define ACBB_LIFE_JSON_H
 
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/sim.h"
 
 /* Write "life": {...} for one single-bearing snapshot into the open object. */

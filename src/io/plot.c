@@ -19,8 +19,8 @@
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
-#include "acbb/plot.h"
-#include "acbb/outfile.h"
+#include "acbb/tools/plot.h"
+#include "acbb/tools/outfile.h"
 #include "acbb/units.h"
 #include "plot_priv.h"
 
@@ -498,7 +498,7 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
     return st;
 }
 
-/* ---- accuracy versus time (include/acbb/accuracy.h) ---- */
+/* ---- accuracy versus time (include/acbb/tools/accuracy.h) ---- */
 
 /* log axes cannot show the references' exact zero: they sit on this floor. */
 #define ACC_FLOOR_PCT 1e-10

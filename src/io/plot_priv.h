@@ -1,14 +1,14 @@
 /* acbb — the gnuplot plumbing of src/io/plot.c shared with the plot kinds in
  * other files (src/io/plot_xy.c): the script buffer, the one way gnuplot is
  * run, the terminal line and the completeness test of an image. Not
- * installed; the public interface is include/acbb/plot.h. The short names
+ * installed; the public interface is include/acbb/tools/plot.h. The short names
  * are macros for prefixed symbols (no unprefixed name leaves the library). */
 #ifndef ACBB_PLOT_PRIV_H
 #define ACBB_PLOT_PRIV_H
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 
 #define sb_printf acbb_plot_sb_printf
 #define sb_quoted acbb_plot_sb_quoted

@@ -10,7 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/plot.h"
+#include "acbb/tools/plot.h"
 
 #define COLUMN_PT 241.0          /* 8.5 cm in points */
 #define TEXT_PT 8.5

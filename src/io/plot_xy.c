@@ -14,8 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "acbb/outfile.h"
-#include "acbb/plot.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/plot.h"
 #include "plot_priv.h"
 
 /* Descriptors at or above this are safe dup2 sources for gnuplot's 3 and 4. */

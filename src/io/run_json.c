@@ -1,12 +1,12 @@
-/* acbb — a run as JSON (acbb/json.h): the one writer of the document
+/* acbb — a run as JSON (acbb/tools/json.h): the one writer of the document
  * `acbb run --json` prints and acbb_run_preset_json (ffi.h) returns. Its
  * numbers and keys come from the output table (outputs.h), so a new output
  * row shows up here by itself. */
 #include <string.h>
-#include "acbb/json.h"
+#include "acbb/tools/json.h"
 #include "acbb/loss_kinds.h"
 #include "acbb/outputs.h"
-#include "acbb/physics_profile.h"
+#include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
 #include "life_json.h"
 

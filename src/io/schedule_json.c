@@ -1,6 +1,6 @@
 /* acbb — the run JSON's `schedule` and `branches` objects (json.h). */
-#include "acbb/json.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/json.h"
+#include "acbb/tools/schedule.h"
 #include "acbb/units.h"
 
 /* Where the run left the schedule: a steady solve (or an isothermal run)

@@ -1,9 +1,9 @@
-/* acbb — the layout of a bearing set (MODEL.md section 14, acbb/set.h);
+/* acbb — the layout of a bearing set (MODEL.md section 14, acbb/tools/set.h);
  * the arrangements are ACBB_SET_ARRANGEMENT_TABLE (acbb/scene.h);
  * bearings numbered by increasing x. */
 #include <stddef.h>
 #include <string.h>
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 
 #define KIND_ROW(id, name, n, n_max, orient) [ACBB_SET_##id] = { name, n, n_max, orient },
 const acbb_set_kind acbb_set_kinds[ACBB_SET_ARRANGEMENTS] = { ACBB_SET_ARRANGEMENT_TABLE(KIND_ROW) };

@@ -9,7 +9,7 @@
 #include <string.h>
 #include "set_mech.h"
 #include "broyden.h"
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 
 #define UM 1e-6
 #define MRAD 1e-3

@@ -3,9 +3,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "acbb/branches.h"
-#include "acbb/fidelity.h"
-#include "acbb/measure.h"
+#include "acbb/tools/branches.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/measure.h"
 #include "acbb/units.h"
 
 /* One branch when the two polish to the same steady state: the transient
@@ -77,7 +77,7 @@ acbb_status acbb_branch_run(const acbb_scene *o, const acbb_atomic_int *cancel, 
 {
     acbb_sim *sim = NULL;
     acbb_error e = { "" };
-    acbb_status rc = acbb_sim_new_ctl(o, cancel, &sim, &e);
+    acbb_status rc = acbb_sim_create(o, &(acbb_sim_opts){ .cancel = cancel }, &sim, &e);
     if (rc != ACBB_OK) {
         not_run(snap, rc, e.msg); /* never started */
         return rc == ACBB_ENOMEM || rc == ACBB_CANCELLED ? rc : ACBB_OK;

@@ -1,6 +1,6 @@
 /* acbb — bounded run history (see history.h). */
 #include <string.h>
-#include "acbb/history.h"
+#include "acbb/tools/history.h"
 
 void acbb_history_init(acbb_history *h)
 {

@@ -5,7 +5,7 @@
  * shoulders. The formulas are physics/life.c's. */
 #include <math.h>
 #include <stdio.h>
-#include "acbb/life_eval.h"
+#include "acbb/tools/life_eval.h"
 #include "acbb/units.h"
 #include "life_static.h"
 #include "hertz.h"

@@ -8,12 +8,12 @@
 #include <string.h>
 #include <assert.h>
 #include "acbb/sim.h"
-#include "acbb/life_eval.h"
-#include "acbb/measure.h"
+#include "acbb/tools/life_eval.h"
+#include "acbb/tools/measure.h"
 #include "stiffness.h"
 #include "mechanics.h"
 #include "network.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/fidelity.h"
 #include "losses.h"
 #include "lubrication.h"
 #include "expansion.h"
@@ -25,7 +25,7 @@
 #include "gsl_quiet.h"
 #include "sim_set.h"
 #include "steady_polish.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "stepper.h"
 
 
@@ -263,17 +263,6 @@ static void sim_release(acbb_sim *sim)
     sim->nw.net = NULL;
 }
 
-acbb_status acbb_sim_new(const acbb_scene *s, acbb_sim **out, acbb_error *err)
-{
-    return acbb_sim_new_ctl(s, NULL, out, err);
-}
-
-acbb_status acbb_sim_new_ctl(const acbb_scene *s, const atomic_int *cancel, acbb_sim **out,
-                             acbb_error *err)
-{
-    return acbb_sim_create(s, &(acbb_sim_opts){ .cancel = cancel }, out, err);
-}
-
 /* A bearing set: its members and stepper live in sim_set.c. */
 static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
@@ -322,8 +311,9 @@ const acbb_scene *acbb_sim_scene(const acbb_sim *sim)
 acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                             acbb_error *err)
 {
+    static const acbb_sim_opts defaults; /* o == NULL: all zero */
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o, out, err);
+    acbb_status rc = create_body(s, o ? o : &defaults, out, err);
     acbb_gsl_leave();
     return rc;
 }

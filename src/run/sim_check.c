@@ -9,7 +9,7 @@ acbb_status acbb_sim_check(const acbb_scene *s, acbb_error *err)
      * `acbb edit --set fidelity.max_wall_s=0.001` must not fail on it. */
     acbb_scene unbounded = *s;
     unbounded.max_wall_s = 0.0;
-    if (st == ACBB_OK) st = acbb_sim_new(&unbounded, &sim, err);
+    if (st == ACBB_OK) st = acbb_sim_create(&unbounded, NULL, &sim, err);
     acbb_sim_free(sim);
     return st;
 }

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "lubrication.h"
 #include "sim_priv.h"
 #include "sim_struct.h"

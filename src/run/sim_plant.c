@@ -11,7 +11,7 @@
 #include "sim_priv.h"
 #include "stepper.h"
 #include "steady_polish.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 
 static void save(acbb_sim *sim, checkpoint *k)
 {

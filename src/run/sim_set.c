@@ -14,10 +14,10 @@
 #include "sim_set_priv.h"
 #include "sim_struct.h"
 #include "sim_priv.h"
-#include "acbb/set.h"
-#include "acbb/measure.h"
-#include "acbb/fidelity.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/set.h"
+#include "acbb/tools/measure.h"
+#include "acbb/tools/fidelity.h"
+#include "acbb/tools/schedule.h"
 #include "cancel.h"
 #include "steady_polish.h"
 #include "stepper.h"
@@ -345,6 +345,7 @@ static void member_scene(const acbb_scene *s, double share, acbb_scene *m)
     *m = *s;
     m->set_arrangement = ACBB_SET_SINGLE;
     m->set_n_bearings = 0;
+    m->shaft_segments = 0;   /* one bearing, not a spindle (its rules are the whole's) */
     m->preload = ACBB_PRELOAD_DISPLACEMENT;
     m->preload_force = share > 0.0 ? share : 1.0;
     m->axial_load = m->preload_force;

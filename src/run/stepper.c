@@ -12,7 +12,7 @@
 #include "stepper.h"
 #include "sim_priv.h"
 #include "steady_polish.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 
 int acbb_follows_schedule(const acbb_scene *s)
 {

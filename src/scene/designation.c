@@ -55,7 +55,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "acbb/designation.h"
+#include "acbb/tools/designation.h"
 #include "acbb/limits.h"
 #include "acbb/units.h"
 #include "hertz.h"

@@ -10,8 +10,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/accuracy.h"
-#include "acbb/fidelity.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/fidelity.h"
 
 #define QS ACBB_MODEL_QUASI_STATIC
 #define QD ACBB_MODEL_QUASI_DYNAMIC

@@ -17,7 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "acbb/physics_profile.h"
+#include "acbb/tools/physics_profile.h"
 #include "scene_internal.h"
 
 typedef struct {

@@ -3,7 +3,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/preset_info.h"
+#include "acbb/tools/preset_info.h"
 
 /* Append text to a joined paragraph, one space between lines. */
 static void join(char *dst, size_t cap, const char *text)

@@ -17,8 +17,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "acbb/outfile.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/schedule.h"
 #include "scene_internal.h"
 
 /* A preset is a few kB; anything far larger is not one. */

@@ -108,6 +108,17 @@ void acbb_sf_profile_defaults(acbb_scene *d, acbb_physics_profile p);
  * one s->profile gives it (the user's own choice, not the profile's). */
 bool acbb_sf_profile_own(const acbb_scene *s, const char *section, const char *key);
 
+/* scene_rules.c: section.key's current value in preset units, for
+ * messages (buf >= 40 bytes). */
+const char *acbb_sf_show(const acbb_scene *s, const char *section, const char *key, char *buf);
+
+/* scene_rules_spindle.c: the spindle's cross-field rules (nothing to check
+ * when shaft.segments = 0), and its keys that do nothing in scene s
+ * (d: the defaults), appended by acbb_scene_inactive_effects. */
+acbb_status acbb_sf_spindle_rules(const acbb_scene *s, acbb_error *err);
+size_t acbb_sf_spindle_inactive(const acbb_scene *s, const acbb_scene *d,
+                                acbb_inactive_effect *out, size_t cap);
+
 /* The whole preset, every key with its help and range (acbb_scene_save). */
 int acbb_sf_write_preset(FILE *f, const acbb_scene *s);
 

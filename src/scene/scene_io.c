@@ -22,9 +22,9 @@
 
 #include <ini.h>
 
-#include "acbb/outfile.h"
-#include "acbb/physics_profile.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/outfile.h"
+#include "acbb/tools/physics_profile.h"
+#include "acbb/tools/schedule.h"
 #include "scene_internal.h"
 
 /* ---- opening ---- */

@@ -3,7 +3,7 @@
  * viscosities and pressure-viscosity coefficient (MODEL.md 16). The Sim's
  * constructor calls this and keeps the result (acbb_sim_scene); writers
  * and planners that build no Sim call it themselves. */
-#include "acbb/fidelity.h"
+#include "acbb/tools/fidelity.h"
 #include "lubricant_grade.h"
 
 int acbb_scene_resolve(const acbb_scene *in, acbb_scene *out, acbb_fidelity_choice *fc)

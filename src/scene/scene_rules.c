@@ -1,5 +1,6 @@
 /* acbb — scene cross-field validation: every rule names the keys involved,
  * their values in preset units and the reason. */
+#include <fnmatch.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -7,13 +8,16 @@
 #include "geometry.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
-#include "acbb/set.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/set.h"
+#include "acbb/tools/schedule.h"
+
+#define show acbb_sf_show
 
 /* ---- cross-field validation ---- */
 
-/* Current value of section.key in preset units, for messages. */
-static const char *show(const acbb_scene *s, const char *section, const char *key, char *buf)
+/* Current value of section.key in preset units, for messages
+ * (scene_internal.h; `show` here and in scene_rules_spindle.c). */
+const char *acbb_sf_show(const acbb_scene *s, const char *section, const char *key, char *buf)
 {
     const acbb_sfield *f = acbb_sf_find(section, key);
     acbb_scene_field_format(s, f ? (size_t)(f - acbb_sf_table) : acbb_sf_n, buf, 40);
@@ -328,6 +332,7 @@ static acbb_status rule_temp_limit(const acbb_scene *s, acbb_error *err)
 static acbb_status rule_radial_load(const acbb_scene *s, acbb_error *err)
 {
     if (s->set_arrangement != ACBB_SET_SINGLE) return ACBB_OK; /* a set carries it (rule_set) */
+    if (s->shaft_segments > 0) return ACBB_OK; /* a spindle: both sets carry it */
     double radial = s->radial_load * tan(s->contact_angle0);
     double moment = s->contact_angle0 > 0.0 ? 2.0 * fabs(s->moment_load) / s->pitch_diameter : 0.0;
     double need = 1.25 * (radial + moment);
@@ -450,6 +455,7 @@ static const rule_fn k_rules[] = {
     rule_cage_width, rule_shaft_bore, rule_viscosity, rule_time_step, rule_temp_limit,
     rule_preload, rule_surroundings, rule_radial_load,
     rule_set, rule_tilt,
+    acbb_sf_spindle_rules, /* [shaft] [housing] [motor] [spindle] (scene_rules_spindle.c) */
     acbb_schedule_validate, /* [schedule] rows, each at its operating point (schedule.c) */
 };
 
@@ -550,12 +556,13 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
     size_t n = 0;
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
         if (rows[i].when && n < cap) out[n++] = rows[i].e;
-    return n;
+    return n + acbb_sf_spindle_inactive(s, &d, out + n, cap - n);
 }
 
 /* Does one name of an inactive row ("effects.centrifugal = on",
- * "surroundings.cap_*", "axial_load_N" after a sectioned first name) name
- * the key "section.name"? */
+ * "surroundings.cap_*", "shaft.seg[4-8]_*", "axial_load_N" after a
+ * sectioned first name) name the key "section.name"? Names are fnmatch
+ * patterns. */
 static bool names_key(const char *part, size_t len, const char *section, const char *key)
 {
     const char *eq = memchr(part, ' ', len); /* drop " = on" */
@@ -563,9 +570,10 @@ static bool names_key(const char *part, size_t len, const char *section, const c
     char want[96];
     if (memchr(part, '.', n)) snprintf(want, sizeof want, "%s", key);
     else snprintf(want, sizeof want, "%s", strchr(key, '.') ? strchr(key, '.') + 1 : key);
-    if (n > 0 && part[n - 1] == '*') return strncmp(part, want, n - 1) == 0;
+    char pat[96];
+    snprintf(pat, sizeof pat, "%.*s", (int)n, part);
     (void)section;
-    return strlen(want) == n && strncmp(part, want, n) == 0;
+    return fnmatch(pat, want, 0) == 0;
 }
 
 bool acbb_scene_key_inactive(const acbb_scene *s, const char *key, acbb_inactive_effect *out)

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "acbb/limits.h"
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 #include "acbb/units.h"
 #include "scene_internal.h"
 #include "c_locale.h"

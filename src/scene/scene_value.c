@@ -8,7 +8,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "acbb/physics_profile.h"
+#include "acbb/tools/physics_profile.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 

@@ -218,7 +218,7 @@ static int base_run(void)
         acbb_scene_default(&base_scene);
     }
     base_scene.model = ACBB_MODEL_QUASI_STATIC;
-    if (!base_snap || acbb_sim_new(&base_scene, &sim, &err) != ACBB_OK) return -1;
+    if (!base_snap || acbb_sim_create(&base_scene, NULL, &sim, &err) != ACBB_OK) return -1;
     acbb_sim_run(sim);
     acbb_sim_snapshot(sim, base_snap);
     acbb_sim_free(sim);

@@ -5,7 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "acbb/scene.h"
-#include "acbb/schedule.h"
+#include "acbb/tools/schedule.h"
 #include "fuzz_entry.h"
 
 /* One temporary file per process, rewritten for every input: the loader

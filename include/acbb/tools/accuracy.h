@@ -1,7 +1,7 @@
 /* acbb — what accuracy costs in time (DESIGN.md "Fidelity and effects").
  *
  * Every [fidelity] knob is varied one at a time around the base scene's
- * values; each setting is run to thermal steady state (acbb_sim_new,
+ * values; each setting is run to thermal steady state (acbb_sim_create,
  * acbb_sim_run, acbb_sim_snapshot) `repeats` times and the median wall time
  * (CLOCK_MONOTONIC around new + run + free, snapshot copy excluded) is kept
  * together with the results and their relative errors against the knob's
@@ -11,7 +11,7 @@
  *
  *   knob            settings (preset units)             reference
  *   model           static, quasi-static, quasi-dynamic  highest level
- *                   (+ dynamic if acbb_sim_new takes it) acbb_sim_new accepts
+ *                   (+ dynamic if acbb_sim_create takes it) acbb_sim_create accepts
  *   contact_grid    4 6 8 12 16 24 32 48 64              64
  *   hertz           hb83 bh77 exact                      exact
  *   mech_tol        1e-4 1e-6 1e-8 1e-10 1e-12           1e-12
@@ -76,12 +76,12 @@ typedef struct {
     unsigned knobs;          /* ACBB_ACCURACY_KNOB_BIT mask; 0 = all */
     unsigned model_levels;   /* levels the model knob tries (ACBB_ACCURACY_LEVEL_BIT
                                 mask); 0 = all. The reference is the highest one
-                                of them that acbb_sim_new accepts. */
+                                of them that acbb_sim_create accepts. */
     int repeats;             /* runs per setting, 1..ACBB_ACCURACY_MAX_REPEATS; 0 = default */
     /* Optional cancel hook (NULL = none): another thread stores non-zero to
      * stop the plan. It is read before every setting and between the coupled
      * steps of a run, so a cancel takes effect within one step (plus an
-     * acbb_sim_new already under way) even in a long dynamic run. */
+     * acbb_sim_create already under way) even in a long dynamic run. */
     const acbb_atomic_int *cancel;
     /* Ball workers of each run at the dynamic level (acbb_sim_opts.threads;
      * 0: the default). The envelope, whose points already fill the cores,

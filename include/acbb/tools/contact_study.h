@@ -13,7 +13,7 @@
 #define ACBB_CONTACT_STUDY_H
 
 #include "acbb/cancel_flag.h"
-#include "acbb/branches.h"
+#include "acbb/tools/branches.h"
 #include "acbb/scene.h"
 #include "acbb/status.h"
 

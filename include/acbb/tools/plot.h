@@ -14,8 +14,8 @@
 #define ACBB_PLOT_H
 
 #include <stddef.h>
-#include "acbb/accuracy.h"
-#include "acbb/history.h"
+#include "acbb/tools/accuracy.h"
+#include "acbb/tools/history.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
 
@@ -64,7 +64,7 @@ acbb_status acbb_plot_dumb(acbb_plot_kind kind, int cols, int rows, const acbb_p
 acbb_status acbb_plot_check_size(acbb_plot_format fmt, int width, int height, acbb_error *err);
 
 /* The accuracy-versus-time plot of `acbb bench accuracy`
- * (include/acbb/accuracy.h): x = median wall time (ms), y = max(e_loss, e_T)
+ * (include/acbb/tools/accuracy.h): x = median wall time (ms), y = max(e_loss, e_T)
  * in %, both log scale; one point set per knob, each point labelled with its
  * value; a dashed line at ACBB_ACCURACY_FRONTIER_TOL. Errors below
  * 1e-10 % (the references' exact 0 among them) are drawn at 1e-10 %, which

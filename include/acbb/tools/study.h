@@ -29,7 +29,7 @@
 #include <stddef.h>
 #include "acbb/batch.h"
 #include "acbb/scene.h"
-#include "acbb/sensitivity.h"
+#include "acbb/tools/sensitivity.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
 

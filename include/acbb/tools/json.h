@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include "acbb/scene.h"
 #include "acbb/sim.h"
-#include "acbb/branches.h"
+#include "acbb/tools/branches.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -76,7 +76,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
  * acbb_json_write_run writes the first when the scene has rows. */
 void acbb_json_write_schedule(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s);
 void acbb_json_write_branches(acbb_json *j, const acbb_branches *b);
-/* A run that never started (acbb_sim_new failed): status, message,
+/* A run that never started (acbb_sim_create failed): status, message,
  * iterations 0 and the scene. */
 void acbb_json_write_failed(acbb_json *j, const acbb_scene *sc, const char *status,
                             const char *message);

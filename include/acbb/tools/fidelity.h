@@ -15,7 +15,7 @@
  * Scene keys: fidelity.preset = custom | fast | balanced | reference, and
  * fidelity.target_error_pct (0 = off). When either is set, the Sim applies
  * the chosen entry's knob values over the scene's individual knobs when it
- * compiles the scene (acbb_sim_new, through acbb_scene_resolve); clients print acbb_fidelity_resolve's
+ * compiles the scene (acbb_sim_create, through acbb_scene_resolve); clients print acbb_fidelity_resolve's
  * note so users see what was chosen and why. A target wins over a preset.
  *
  * Everything here is constant data or pure functions (no state). */

@@ -24,7 +24,7 @@
 #include <stddef.h>
 #include "acbb/sim.h"
 #include "acbb/status.h"
-#include "acbb/study.h"
+#include "acbb/tools/study.h"
 
 #ifdef __cplusplus
 extern "C" {
