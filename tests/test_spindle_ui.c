@@ -93,7 +93,7 @@ static void test_shaft(void)
     is_close(p.length, 0.400, 1e-12, 0, "the picture spans the shaft's 400 mm");
     /* column c's centre (c + 0.5) * 400/46 mm: segment 1 below 105 mm is
      * c 0..11 (11.5 -> 100 mm), segment 2 below 350 mm c 12..39, segment 3 c 40..45;
-     * heights ceil(4 od/70): 4, 3 (2.86), 2 (1.71). */
+     * heights round(4 od/70): 4, 3 (2.86), 2 (1.71). */
     char m[4][ACBB_SPINDLE_LINE];
     for (int r = 0; r < 4; r++) marks(&p, r, m[r]);
     ok(run_of(m[0], 0, 11), "top row: the od 70 segment only, columns 0..11: '%s'", m[0]);

@@ -1,13 +1,13 @@
 /* acbb TUI — the Spindle screen's rows (spindle_draw.h). The shaft is a
  * half section along x: one column per pic_w-th of its length, each
- * segment's outer diameter a height in ACBB_SPINDLE_PROFILE steps of the
+ * segment's outer diameter a height in ACBB_SPINDLE_PROFILE steps (nearest) of the
  * largest (docs/spindle.md "Geometry: segments"); a set's glyph is its
  * bearings' thrust directions ('>' for +x, '<' for -x, so DB reads "><"). */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include "acbb/set.h"
+#include "acbb/tools/set.h"
 #include "spindle_draw.h"
 
 const char acbb_spindle_none_text[] =
@@ -72,7 +72,7 @@ static void profile(const acbb_scene *sc, acbb_spindle_page *p)
         if (sc->shaft_seg[i].od > odmax) odmax = sc->shaft_seg[i].od;
     for (int c = 0; c < p->pic_w && odmax > 0; c++) {
         double od = od_at(sc, (c + 0.5) * p->length / p->pic_w);
-        int h = (int)ceil(od / odmax * ACBB_SPINDLE_PROFILE - 1e-9); /* any od shows */
+        int h = (int)lround(od / odmax * ACBB_SPINDLE_PROFILE); /* nearest step; at least 1 */
         if (h < 1) h = 1;
         for (int k = 0; k < h && k < ACBB_SPINDLE_PROFILE; k++)
             p->line[ACBB_SP_PROFILE + ACBB_SPINDLE_PROFILE - 1 - k][p->pic_x + c] = '#';
