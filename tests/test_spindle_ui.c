@@ -168,6 +168,34 @@ static void test_wide(void)
        "120 columns: the picture widens, the sets move to their x's columns");
 }
 
+/* The motor preset's own shaft (330 mm, 7 segments, od 60 40 48 56 48 40
+ * 35 mm) with its sets at 50 and 275 mm: front floor(50/330 * 46) = 6,
+ * DBT >>< at 5..7; rear floor(38.3) = 38, DB >< at 38..39. */
+static void test_preset(void)
+{
+    static acbb_scene ps;
+    static acbb_spindle_page p;
+    acbb_error err = { { 0 } };
+    if (acbb_scene_load("presets/spindle-motor-DBT.ini", &ps, &err) != ACBB_OK) {
+        ok(0, "presets/spindle-motor-DBT.ini loads: %s", err.msg);
+        return;
+    }
+    acbb_spindle_view pv = v;
+    pv.sets[0].x = ps.spindle_front_x;
+    pv.sets[1].x = ps.spindle_rear_x;
+    ok(acbb_spindle_page_fill(&ps, &pv, 80, &p) == 0, "the motor preset is laid out");
+    for (int r = 0; r < ACBB_SP_ROWS; r++) printf("# |%s\n", p.line[r]);
+    is_close(p.length, 0.330, 1e-12, 0, "its shaft spans 330 mm");
+    const char *s = p.line[ACBB_SP_SETS];
+    ok(strncmp(s + 8 + 5, ">><", 3) == 0 && strncmp(s + 8 + 38, "><", 2) == 0,
+       "front DBT at columns 13..15, rear DB at 46..47: '%s'", s);
+    /* top row: od >= 52.5 mm (4 of 4 steps at 60): the flange (0-20 mm,
+     * columns 0..2) and the rotor seat (110-230 mm, columns 15..31) */
+    char m[ACBB_SPINDLE_LINE];
+    marks(&p, 0, m);
+    ok(strcmp(m, "###            #################               ") == 0, "flange and rotor seat on top: '%s'", m);
+}
+
 static void test_none(void)
 {
     static acbb_spindle_page p;
@@ -219,6 +247,7 @@ int main(void)
     test_shaft();
     test_numbers();
     test_wide();
+    test_preset();
     test_none();
     test_T_at();
     test_drift();
