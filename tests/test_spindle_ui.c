@@ -193,7 +193,10 @@ static void test_preset(void)
      * columns 0..2) and the rotor seat (110-230 mm, columns 15..31) */
     char m[ACBB_SPINDLE_LINE];
     marks(&p, 0, m);
-    ok(strcmp(m, "###            #################               ") == 0, "flange and rotor seat on top: '%s'", m);
+    char want[ACBB_SPINDLE_LINE];
+    for (int c = 0; c < 46; c++) want[c] = c <= 2 || (c >= 15 && c <= 31) ? '#' : ' ';
+    want[46] = '\0';
+    ok(strcmp(m, want) == 0, "flange and rotor seat on top: '%s'", m);
 }
 
 static void test_none(void)
