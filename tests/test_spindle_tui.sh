@@ -32,8 +32,10 @@ wait_for "Idle at ambient"
 keys D
 wait_for "Spindle: shaft "
 ok $? "D opens the Spindle screen of the spindle preset"
-screen | grep -q '^nose -> #' && screen | grep -Eq '^sets +[<>]{2,}.* [<>]{2,}'
-r=$?; [ $r -eq 0 ] || show; ok $r "the shaft drawn from the nose, both sets' glyphs on their row"
+# 330 mm over the picture's 46 columns from column 8: the front DBT at
+# 50 mm centred on column 8 + 6, the rear DB at 275 mm from 8 + 38.
+screen | grep -q '^nose -> #' && screen | grep -Eq '^sets {9}>>< {30}>< '
+r=$?; [ $r -eq 0 ] || show; ok $r "the shaft drawn from the nose, the DBT and DB sets at the columns of their x"
 keys r
 wait_for "converged" 300
 screen | grep -Eq 'nose drift +[-+][0-9]+\.[0-9]+ um' && ! screen | grep -Eiq 'nose drift +[-+]?(nan|inf)'
