@@ -133,12 +133,33 @@ static void activate(ctx_t *c)
     const acbb_set_mech *sm = c->sm;
     int tandem = side_count(sm, -1) == 0 || side_count(sm, 1) == 0;
     int spring = sm->spring && !tandem;
-    c->n = 0;
-    c->act[c->n++] = 0;
+    int on[ACBB_SET_Q] = { 1, 0, 0, spring };
     /* Radial and tilt stay 0 by symmetry without radial load or moment
      * (their solution is continuous in both: it is 0 at 0). */
-    if (sm->Fr != 0.0 || sm->M != 0.0) { c->act[c->n++] = 1; c->act[c->n++] = 2; }
-    if (spring) c->act[c->n++] = 3;
+    on[1] = on[2] = sm->Fr != 0.0 || sm->M != 0.0;
+    c->n = 0;
+    for (int i = 0; i < ACBB_SET_Q; i++)
+        if (on[i] && !sm->hold[i]) c->act[c->n++] = i;
+}
+
+static int active_mask(const ctx_t *c)
+{
+    int m = 0;
+    for (int a = 0; a < c->n; a++) m |= 1 << c->act[a];
+    return m;
+}
+
+void acbb_set_mech_loads(const acbb_set_mech *sm, double L[3])
+{
+    double Fx = 0.0, Fz = 0.0, My = 0.0;
+    for (int k = 0; k < sm->n; k++) {
+        Fx += sm->orient[k] * sm->Fx[k];
+        Fz += sm->Fz[k];
+        My += sm->orient[k] * sm->My[k] - sm->x[k] * sm->Fz[k];
+    }
+    L[0] = Fx - (thrust(sm) - sm->Fa);
+    L[1] = Fz;
+    L[2] = My;
 }
 
 acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double omega,
@@ -148,15 +169,23 @@ acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double o
     ctx_t c = { .sm = sm, .mb = mb, .omega = omega, .st = ACBB_OK };
     c.R = 0.5 * acbb_mech_geometry(mb[0].m)->dm;
     activate(&c);
-    /* Inactive unknowns are 0 (a probe with other loads may have left them). */
+    /* Inactive unknowns are 0 (a probe with other loads may have left
+     * them), held ones stay where the caller put them. */
     for (int i = 1; i < ACBB_SET_Q; i++) {
-        int on = 0;
+        int on = sm->hold[i];
         for (int a = 0; a < c.n; a++) on |= c.act[a] == i;
         if (!on) sm->q[i] = 0.0;
     }
-    if (c.n != sm->J_n) sm->J_ok = 0;
+    if (c.n != sm->J_n || active_mask(&c) != sm->J_mask) sm->J_ok = 0;
     sm->J_n = c.n;
+    sm->J_mask = active_mask(&c);
     double x[ACBB_SET_Q], f[ACBB_SET_Q];
+    if (c.n == 0) { /* every unknown held: the members at q, nothing to solve */
+        double r[ACBB_SET_Q];
+        if (evaluate(&c, sm->q, r)) return ACBB_OK;
+        return acbb_error_set(err, c.st, "bearing set: a bearing's balls at the held shaft "
+                              "position: %s", acbb_status_name(c.st));
+    }
     double scale = fabs(thrust(sm)) + fabs(sm->Fr) + fabs(sm->M) / c.R + sm->Fp + 1.0;
     double tol = fmax(sm->tol, 1e-12) * 10.0 * scale;
     for (int i = 0; i < c.n; i++) x[i] = sm->q[c.act[i]] / unit[c.act[i]];

@@ -54,7 +54,9 @@ typedef struct {
     double tol;                   /* relative force tolerance */
     double q[ACBB_SET_Q];         /* shaft dx, dz (m), tilt (rad), floating offset (m) */
     double J[ACBB_SET_Q * ACBB_SET_Q];
-    int J_ok, J_n;
+    int J_ok, J_n, J_mask;        /* the kept Jacobian's unknowns (count, bit mask) */
+    int hold[ACBB_SET_Q];         /* 1: unknown i held at q[i] (a spindle's station,
+                                     spindle_mech.c); all 0 from init: every one free */
     double Fx[ACBB_MAX_SET], Fz[ACBB_MAX_SET], My[ACBB_MAX_SET]; /* own-frame reactions */
     int lost[ACBB_MAX_SET];       /* 1: every ball of bearing k unloaded */
     long solves;                  /* member mechanics solves done */
@@ -74,6 +76,12 @@ void acbb_set_mech_assemble(acbb_set_mech *sm, double (*dx1)(double F, void *ctx
  * trial; the caller restores them. */
 acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double omega,
                                 acbb_error *err);
+
+/* The external loads that balance the members' last evaluation (the
+ * residual's terms): thrust (N, a tandem spring's own force taken out),
+ * radial force (N) and moment about y at the set's centre (N m). With
+ * unknowns held (hold[]), the loads a held shaft position needs. */
+void acbb_set_mech_loads(const acbb_set_mech *sm, double L[3]);
 
 /* The axial force the set carries between its sides (the + side's sum). */
 double acbb_set_mech_preload(const acbb_set_mech *sm);

@@ -16,6 +16,7 @@
 #define BW 5                      /* half bandwidth with 3 DOF per node */
 #define NB (2 * BW + 1)           /* stored band width of the structural K */
 #define MAX_ITER 50
+#define STEP_TOL 1e-11           /* the default convergence (docs/spindle.md) */
 #define MAX_HALF 12              /* step halvings in the line search */
 
 struct acbb_shaft_beam {
@@ -31,6 +32,7 @@ struct acbb_shaft_beam {
     gsl_matrix *AB;               /* n_dof x (3 BW + 1) LU band storage */
     gsl_vector_uint *piv;
     gsl_vector *rhs, *dx;
+    double tol;                   /* converged: step below tol of the displacements */
 };
 
 void acbb_timoshenko_element(double EI, double phi, double L, double k[16])
@@ -146,6 +148,7 @@ acbb_status acbb_shaft_beam_build(const acbb_shaft_seg *seg, int n_seg,
     for (int k = 0; k < n_sup; k++) extra[k] = sup[k].x;
     for (int k = 0; k < n_lx; k++) extra[n_sup + k] = load_x[k];
     acbb_shaft_beam *b = calloc(1, sizeof *b);
+    if (b) b->tol = STEP_TOL;
     if (!b) return acbb_error_set(err, ACBB_ENOMEM, "shaft: out of memory");
     int n_nodes = 0;
     st = acbb_shaft_mesh(seg, n_seg, n_div, extra, n_sup + n_lx, &b->x, &n_nodes, err);
@@ -306,7 +309,7 @@ static acbb_status newton(acbb_shaft_beam *b, const double *F, int *iters, acbb_
         *iters = it;
         if (!isfinite(step))
             return acbb_error_set(err, ACBB_NONFINITE, "shaft: displacements not finite");
-        if (step <= 1e-11 * fmax(size, step)) {   /* converged: take the last full step */
+        if (step <= b->tol * fmax(size, step)) {   /* converged: take the last full step */
             for (int i = 0; i < b->n_dof; i++) b->d[i] += dx[i];
             return ACBB_OK;
         }
@@ -362,6 +365,11 @@ acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loa
         memset(b->d, 0, (size_t)b->n_dof * sizeof *b->d);
     if (st == ACBB_OK) st = results(b, res, err);
     return st;
+}
+
+void acbb_shaft_beam_set_tol(acbb_shaft_beam *b, double tol)
+{
+    if (b && tol > 0.0) b->tol = fmax(tol, STEP_TOL);
 }
 
 int acbb_shaft_beam_nodes(const acbb_shaft_beam *b) { return b ? b->n_nodes : 0; }

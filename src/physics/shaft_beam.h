@@ -69,6 +69,13 @@ void acbb_shaft_beam_free(acbb_shaft_beam *b);
 acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loads,
                                   int n_loads, acbb_shaft_result *res, acbb_error *err);
 
+/* The Newton step (relative to the displacements) below which a solve has
+ * converged: 1e-11 unless set larger here. A callback support whose
+ * reaction comes from an iterative solve (a bearing's, to its own relative
+ * tolerance) is smooth only to that tolerance, so the step cannot fall
+ * below it (spindle_mech.c). */
+void acbb_shaft_beam_set_tol(acbb_shaft_beam *b, double tol);
+
 int acbb_shaft_beam_nodes(const acbb_shaft_beam *b);
 /* Position (m) and displacement (u, w, theta) of node i after a solve. */
 acbb_status acbb_shaft_beam_node(const acbb_shaft_beam *b, int i, double *x, double d[3]);

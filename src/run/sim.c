@@ -60,10 +60,18 @@ acbb_status acbb_simx_stop_check(const acbb_sim *sim, acbb_error *err)
     return ACBB_OK;
 }
 
-/* A set steps in sim_set.c; the run loop reads its outcome here. */
+/* A set steps in sim_set.c, a spindle in spindle.c; the run loop reads
+ * their outcome here. */
 static acbb_status set_step(acbb_sim *sim)
 {
-    acbb_status rc = acbb_set_sim_step(sim->set);
+    acbb_status rc;
+    if (sim->spindle) {
+        rc = acbb_spindle_sim_step(sim->spindle);
+        sim->run.state = acbb_spindle_sim_outcome(sim->spindle, &sim->run.status,
+                                                  &sim->run.iter);
+        return rc;
+    }
+    rc = acbb_set_sim_step(sim->set);
     sim->run.state = acbb_set_sim_outcome(sim->set, &sim->run.status, &sim->run.iter);
     return rc;
 }
@@ -74,10 +82,11 @@ static acbb_status step_body(acbb_sim *sim)
         return sim->run.status;
     arm_bound(sim);
     if (sim->set) acbb_set_sim_deadline(sim->set, sim->deadline_ms);
+    if (sim->spindle) acbb_spindle_sim_deadline(sim->spindle, sim->deadline_ms);
     double t0 = acbb_now_ms();
     acbb_plant p;
     acbb_status rc;
-    if (sim->set) {
+    if (sim->set || sim->spindle) {
         rc = set_step(sim);
     } else {
         acbb_simx_plant(sim, &p);
@@ -130,6 +139,7 @@ static acbb_status drive_body(acbb_sim *sim, const acbb_run_ctl *ctl)
         sim->cancel = ctl->cancel;
         if (sim->dyn) acbb_dyn_set_cancel(sim->dyn, sim->cancel);
         if (sim->set) acbb_set_sim_cancel(sim->set, sim->cancel);
+        if (sim->spindle) acbb_spindle_sim_cancel(sim->spindle, sim->cancel);
     }
     if (call_hook(sim, ctl)) return sim->run.status;
     while (sim->run.state == ACBB_RUN_RUNNING) {
@@ -277,6 +287,20 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
+/* A spindle: its sets, shaft and stepper live in spindle.c. */
+static acbb_status spindle_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
+{
+    acbb_scene_resolve(s, &sim->resolved, NULL);
+    sim->s = *s;
+    acbb_life_static_basis(s, &sim->life_basis);
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
+    acbb_status rc = acbb_spindle_sim_new(&sim->resolved, &o, 0, &sim->spindle, err);
+    if (rc != ACBB_OK) return rc;
+    sim->run.state = acbb_spindle_sim_outcome(sim->spindle, &sim->run.status, &sim->run.iter);
+    sim->reported = -1;
+    return ACBB_OK;
+}
+
 static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                                acbb_error *err)
 {
@@ -292,9 +316,10 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     sim->skip_stiffness = o->skip_stiffness;
     double t0 = acbb_now_ms();
-    acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
-                                                           : sim_init(sim, s, NULL, err);
-    if (sim->set) sim->setup_ms = acbb_now_ms() - t0; /* sim_init times its own */
+    acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
+                   : s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
+                   : sim_init(sim, s, NULL, err);
+    if (sim->set || sim->spindle) sim->setup_ms = acbb_now_ms() - t0; /* sim_init times its own */
     if (rc != ACBB_OK) {
         acbb_sim_free(sim);
         return rc;
@@ -322,6 +347,7 @@ void acbb_sim_free(acbb_sim *sim)
 {
     if (!sim) return;
     acbb_set_sim_free(sim->set);
+    acbb_spindle_sim_free(sim->spindle);
     sim_release(sim);
     free(sim->keep);
     free(sim->best);
@@ -345,7 +371,9 @@ static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *e
 
 static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, acbb_error *err)
 {
-    if (sim->set || s->set_arrangement != ACBB_SET_SINGLE) return set_restart(sim, s, err);
+    if (sim->set || sim->spindle || s->set_arrangement != ACBB_SET_SINGLE
+        || s->shaft_segments > 0)
+        return set_restart(sim, s, err);
     double T[ACBB_MAX_NODES];
     int keep = warm && s->network == sim->s.network;
     memcpy(T, sim->T, sizeof T);
@@ -382,8 +410,9 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
 void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
 {
     const acbb_network *nw = &sim->nw;
-    if (sim->set) {
-        acbb_set_sim_snapshot(sim->set, o);
+    if (sim->set || sim->spindle) {
+        if (sim->spindle) acbb_spindle_sim_snapshot(sim->spindle, o);
+        else acbb_set_sim_snapshot(sim->set, o);
         if ((sim->run.status == ACBB_CANCELLED || sim->run.status == ACBB_WALL_LIMIT)
             && o->state == ACBB_RUN_RUNNING) {
             /* ended by the run loop (cancel, wall-clock bound), not the set */
@@ -450,6 +479,7 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
 acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out)
 {
     if (sim->set) return acbb_set_sim_bearing_snapshot(sim->set, k, out);
+    if (sim->spindle) return acbb_spindle_sim_bearing_snapshot(sim->spindle, k, out);
     if (k != 0) return ACBB_EINVAL;
     acbb_sim_snapshot(sim, out);
     return ACBB_OK;

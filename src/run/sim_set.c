@@ -132,7 +132,7 @@ static void gather_heat(acbb_set_sim *ss, double rel_tol)
     acbb_network_set_sync(&ss->ns, rel_tol);
 }
 
-static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb_error *err)
+void acbb_set_prepare(acbb_set_sim *ss, int transient, int polishing)
 {
     distribute(ss);
     for (int k = 0; k < ss->n; k++) {
@@ -141,12 +141,22 @@ static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb
         acbb_simx_expand(ss->b[k]);
     }
     spacer_growth(ss);
+}
+
+acbb_status acbb_set_finish(acbb_set_sim *ss, int transient, acbb_error *err)
+{
     acbb_status rc = mechanics(ss, transient, err);
     for (int k = 0; k < ss->n && rc == ACBB_OK; k++) rc = acbb_simx_heat(ss->b[k], err);
     for (int k = 0; k < ss->n; k++) ss->b[k]->transient_pass = ss->b[k]->polishing = 0;
     if (rc != ACBB_OK) return rc;
     gather_heat(ss, transient ? SYNC_TOL : 0.0);
     return ACBB_OK;
+}
+
+static acbb_status evaluate(acbb_set_sim *ss, int transient, int polishing, acbb_error *err)
+{
+    acbb_set_prepare(ss, transient, polishing);
+    return acbb_set_finish(ss, transient, err);
 }
 
 /* ---- run-in schedule (MODEL.md 14; schedule.h) ---- */
@@ -281,7 +291,7 @@ static void plant_converge(void *ctx)
     ss->liftoff = acbb_set_liftoff(ss, 0.0); /* from the live one (publish) */
 }
 
-static void plant_of(acbb_set_sim *ss, acbb_plant *p)
+void acbb_set_plant(acbb_set_sim *ss, acbb_plant *p)
 {
     *p = (acbb_plant){
         .ctx = ss, .s = &ss->s, .net = ss->ns.net, .T = ss->T, .q = ss->q, .n = ss->ns.n,
@@ -310,7 +320,7 @@ static void live_liftoff(acbb_set_sim *ss)
     ss->liftoff = acbb_set_liftoff(ss, LIFT_TOL);
 }
 
-static void publish(acbb_set_sim *ss)
+void acbb_set_publish(acbb_set_sim *ss)
 {
     /* heating off solves no network: no heat flows (issue 18) */
     ss->heat_out = ss->s.heating ? acbb_tnet_heat_to_fixed(ss->ns.net, ss->T) : 0.0;
@@ -329,10 +339,10 @@ acbb_status acbb_set_sim_step(acbb_set_sim *ss)
     if (ss->run.state != ACBB_RUN_RUNNING) return ss->run.status;
     double t0 = acbb_now_ms();
     acbb_plant p;
-    plant_of(ss, &p);
+    acbb_set_plant(ss, &p);
     acbb_status rc = acbb_stepper_step(&p, &ss->run);
     ss->run.wall_ms += acbb_now_ms() - t0;
-    publish(ss);
+    acbb_set_publish(ss);
     return rc;
 }
 
@@ -463,7 +473,7 @@ acbb_status acbb_set_sim_new(const acbb_scene *s, const acbb_sim_opts *o, acbb_s
     acbb_relax_start(&ss->run.relax);
     snprintf(ss->run.msg, sizeof ss->run.msg, "running");
     ss->run.prev_F = acbb_set_mech_preload(&ss->sm);
-    publish(ss);
+    acbb_set_publish(ss);
     *out = ss;
     return ACBB_OK;
 }

@@ -38,6 +38,18 @@ void acbb_set_members(acbb_set_sim *ss, acbb_set_member *mb);
 /* The shaft equilibrium under the set's loads, from and into its state. */
 acbb_status acbb_set_solve_shaft(acbb_set_sim *ss, acbb_error *err);
 
+/* One evaluation in two halves, for a spindle (spindle_mech.c) to solve its
+ * shaft in between: the joined temperatures to the members, their
+ * expansions and the spacers' growth; then the set's shaft equilibrium
+ * under sm's loads (with the ball speeds), the losses and the sources. */
+void acbb_set_prepare(acbb_set_sim *ss, int transient, int polishing);
+acbb_status acbb_set_finish(acbb_set_sim *ss, int transient, acbb_error *err);
+/* The set as a plant of the stepper (a view); what a step leaves for the
+ * snapshots (the heat flows, the live preload and lift-off, each member's
+ * run state from ss->run). */
+void acbb_set_plant(acbb_set_sim *ss, acbb_plant *p);
+void acbb_set_publish(acbb_set_sim *ss);
+
 /* Probes (sim_set_probe.c): the members and the set's solution are left as
  * they were. The preload with no external thrust, N; the lift-off thrust,
  * N (0: none, a tandem set; to rel_tol of it, at least 1e-4 of the

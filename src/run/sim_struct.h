@@ -14,6 +14,7 @@
 #include "dynamic.h"
 #include "stiffness.h"
 #include "sim_set.h"
+#include "spindle.h"
 #include "steady_polish.h"
 #include "life_static.h"
 #include "stepper.h"
@@ -80,6 +81,7 @@ struct acbb_sim {
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
     acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */
+    acbb_spindle_sim *spindle; /* a spindle (spindle.c, docs/spindle.md), else NULL */
     double bound_axial, bound_radial; /* loads sim->mech was built with (schedule) */
     double setup_ms;           /* computing time of the set-up (sim_init) */
     double deadline_ms;        /* fidelity.max_wall_s as a monotonic-clock deadline; 0 none */

@@ -54,6 +54,18 @@ static int schedule_done(const acbb_plant *p, acbb_stepper *r)
 
 /* ---- the thermal update ---- */
 
+static double capacity(const acbb_plant *p, int i)
+{
+    return p->capacity ? p->capacity(p->ctx, i) : acbb_tnet_capacity(p->net, i);
+}
+
+/* The network solve: the plant's own, or its net's (stepper.h). */
+static acbb_status net_solve(const acbb_plant *p, int steady, double dt, double *Tn)
+{
+    if (p->solve) return p->solve(p->ctx, p->q, steady ? 0.0 : dt, Tn);
+    return steady ? acbb_tnet_steady(p->net, p->q, Tn) : acbb_tnet_step(p->net, p->q, dt, Tn);
+}
+
 /* Largest move of a node (stored: only of one that stores heat: zero-
  * capacity nodes such as the contact nodes jump to their new balance in
  * any step, so they must not drive the step-size control). */
@@ -61,7 +73,7 @@ static double max_change(const acbb_plant *p, const double *Tn, int stored)
 {
     double m = 0.0;
     for (int i = 0; i < p->n; i++)
-        if (!stored || acbb_tnet_capacity(p->net, i) > 0.0) m = fmax(m, fabs(Tn[i] - p->T[i]));
+        if (!stored || capacity(p, i) > 0.0) m = fmax(m, fabs(Tn[i] - p->T[i]));
     return m;
 }
 
@@ -75,8 +87,7 @@ static acbb_status thermal(const acbb_plant *p, acbb_stepper *r, int steady, dou
     for (;;) {
         memcpy(Tn, p->T, sizeof(double) * (size_t)p->n);
         if (p->solves) (*p->solves)++;
-        acbb_status rc = steady ? acbb_tnet_steady(p->net, p->q, Tn)
-                                : acbb_tnet_step(p->net, p->q, r->dt, Tn);
+        acbb_status rc = net_solve(p, steady, r->dt, Tn);
         if (rc != ACBB_OK) return rc;
         if (steady)
             for (int i = 0; i < p->n; i++) Tn[i] = p->T[i] + relax * (Tn[i] - p->T[i]);

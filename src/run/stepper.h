@@ -18,6 +18,7 @@
 
 #include "acbb/sim.h"
 #include "acbb/limits.h"
+#include "acbb/spindle.h"
 #include "thermal_network.h"
 #include "steady_polish.h"
 
@@ -27,7 +28,10 @@
 #define STEADY_COUNT 20        /* consecutive quiet steps for steady state */
 #define PMAX_LIMIT 4.2e9       /* ISO static limit for ball bearings, Pa */
 #define ISO_ITERS 60           /* mechanics passes of an isothermal run */
-#define ACBB_STEPPER_NMAX (ACBB_MAX_SET * ACBB_MAX_NODES) /* a plant's nodes, at most */
+/* A plant's nodes, at most: a spindle's two sets and its shaft, housing
+ * and coolant cells (spindle_priv.h); the stepper's scratch arrays
+ * (three on the stack, 5 kB each) are this long. */
+#define ACBB_STEPPER_NMAX (2 * ACBB_MAX_SET * ACBB_MAX_NODES + 2 * ACBB_SPINDLE_MAX_CELLS + 64)
 
 /* The run as the stepper keeps it (each owner embeds one). */
 typedef struct {
@@ -52,7 +56,7 @@ enum { ACBB_KEEP_LAST, ACBB_KEEP_BEST };
 typedef struct {
     void *ctx;
     const acbb_scene *s;       /* the scene that sets the loop (mode, schedule, limits) */
-    acbb_tnet *net;            /* the network over T[0..n), sources q */
+    acbb_tnet *net;            /* the network over T[0..n), sources q (unless solve) */
     double *T, *q;
     int n;
     long *solves;              /* network solves counter, or NULL */
@@ -75,6 +79,13 @@ typedef struct {
     /* the network balances its sources (MODEL.md 12 item 18) */
     acbb_status (*balance)(void *ctx, acbb_error *err);
     void (*converge)(void *ctx); /* the probes of a converged state (stiffness) */
+    /* The plant's own network solve (a spindle's, with its coolant): from T
+     * (Tn holds a copy of it on entry) with sources q into Tn, a backward-
+     * Euler step of dt or (dt = 0) the steady state; and the heat capacity
+     * of node i (J/K; 0: a node that stores none). Both NULL: net with
+     * acbb_tnet_step / acbb_tnet_steady / acbb_tnet_capacity. */
+    acbb_status (*solve)(void *ctx, const double *q, double dt, double *Tn);
+    double (*capacity)(void *ctx, int i);
 } acbb_plant;
 
 /* A transient with schedule rows follows them; the steady solve and an

@@ -1,0 +1,246 @@
+/* acbb — a spindle's mechanics (docs/spindle.md "Mechanics"; spindle_priv.h
+ * for the frames): the shaft (shaft_beam.h) on its two bearing sets, each
+ * a nonlinear support whose reaction is its members' ball solutions at the
+ * shaft's displacement of the station (set_mech.h with the shaft position
+ * held), solved together by the beam's Newton; then each set's loads are
+ * its station's reaction, under which its own evaluation runs.
+ *
+ * The support's tangent K = -df/dd is a central difference of the
+ * reaction with steps h_d (1 nm) and h_theta (1 nm over the pitch
+ * radius): the members solve to fidelity.mech_tol (relative, 1e-8 by
+ * default), so a step 1e-4 of a micron-scale contact deflection keeps the
+ * noise at about 1e-4 of the tangent. For the same reason the shaft's
+ * Newton stops at a step 100 mech_tol of its displacements, not at the
+ * beam's default 1e-11. */
+#include <math.h>
+#include <string.h>
+#include "spindle_priv.h"
+#include "sim_struct.h"
+
+#define H_D 1e-9               /* m, the supports' difference step (radial, axial) */
+
+/* The station's reaction f on the shaft at its displacement d: the set's
+ * shaft held at (u + shift - slip, w, -theta) (u free when the set is not
+ * axially located: it carries Fa_given), its members solved there. */
+static acbb_status reaction(acbb_spindle_station *t, const double d[3], double f[3])
+{
+    acbb_set_mech *w = &t->w;
+    double offset = t->k == ACBB_REAR ? t->sp->shift - t->slip : 0.0;
+    memcpy(t->d, d, sizeof t->d);
+    if (t->axial_held) w->q[0] = d[0] + offset;
+    w->q[1] = d[1];
+    w->q[2] = -d[2];
+    w->Fa = t->axial_held ? 0.0 : t->Fa_given;
+    acbb_set_member mb[ACBB_MAX_SET];
+    acbb_set_members(t->ss, mb);
+    acbb_status rc = acbb_set_mech_solve(w, mb, t->ss->s.inner_speed, NULL);
+    if (rc != ACBB_OK) return rc;
+    double L[3];
+    acbb_set_mech_loads(w, L);
+    f[0] = t->axial_held ? -L[0] : -t->Fa_given;
+    f[1] = -L[1];
+    f[2] = L[2];
+    return ACBB_OK;
+}
+
+/* acbb_shaft_support_fn: the reaction and its tangent by central
+ * differences; an axially free station's axial row and column are 0 (its
+ * axial load is given). The centre is solved last, so the members are
+ * left at the station's displacement (the warm start of the set's own
+ * solve that follows). */
+static acbb_status support(void *ctx, const double d[3], double f[3], double K[9])
+{
+    acbb_spindle_station *t = ctx;
+    const double h[3] = { t->sp->h_d, t->sp->h_d, t->sp->h_theta };
+    memset(K, 0, 9 * sizeof *K);
+    for (int j = t->axial_held ? 0 : 1; j < 3; j++) {
+        double dp[3] = { d[0], d[1], d[2] }, fp[3], fm[3];
+        dp[j] = d[j] + h[j];
+        acbb_status rc = reaction(t, dp, fp);
+        dp[j] = d[j] - h[j];
+        if (rc == ACBB_OK) rc = reaction(t, dp, fm);
+        if (rc != ACBB_OK) return rc;
+        for (int i = t->axial_held ? 0 : 1; i < 3; i++)
+            K[3 * i + j] = -(fp[i] - fm[i]) / (2.0 * h[j]);
+    }
+    memcpy(t->K, K, sizeof t->K);
+    return reaction(t, d, f);
+}
+
+static void segment(const acbb_scene *s, int i, acbb_shaft_seg *g)
+{
+    const acbb_material *m = &s->shaft;
+    *g = (acbb_shaft_seg){ s->shaft_seg[i].length, s->shaft_seg[i].od, s->shaft_seg[i].bore,
+                           m->E, m->nu, m->rho, m->k, m->cp, m->chi };
+}
+
+acbb_status acbb_spindle_beam_build(acbb_spindle_sim *sp, acbb_error *err)
+{
+    const acbb_scene *s = &sp->s;
+    acbb_shaft_seg seg[ACBB_SPINDLE_MAX_SEG];
+    int n_seg = s->shaft_segments;
+    if (n_seg < 1 || n_seg > ACBB_SPINDLE_MAX_SEG)
+        return acbb_error_set(err, ACBB_EINVAL, "shaft.segments = %d: 1..%d for a spindle",
+                              n_seg, ACBB_SPINDLE_MAX_SEG);
+    for (int i = 0; i < n_seg; i++) segment(s, i, &seg[i]);
+    acbb_shaft_support sup[2];
+    double x[2] = { s->spindle_front_x, s->spindle_rear_x };
+    int n_sup = sp->one_support ? 1 : 2;
+    for (int k = 0; k < n_sup; k++)
+        sup[k] = (acbb_shaft_support){ .x = x[k], .fn = support, .ctx = &sp->st[k] };
+    const double nose = 0.0;
+    acbb_status rc = acbb_shaft_beam_build(seg, n_seg, sup, n_sup,
+                                           s->shaft_n_div > 0 ? s->shaft_n_div : 4, &nose, 1,
+                                           &sp->beam, err);
+    if (rc != ACBB_OK) return rc;
+    acbb_shaft_beam_set_tol(sp->beam, 100.0 * s->mech_tol);
+    double dm = acbb_mech_geometry(sp->st[ACBB_FRONT].ss->b[0]->mech)->dm;
+    sp->h_d = H_D;
+    sp->h_theta = H_D / (0.5 * dm);
+    return ACBB_OK;
+}
+
+/* How each station holds the shaft axially (acbb_rear_support): the
+ * front set is located; the rear one too when fixed, and when floating
+ * while its sleeve sticks (where it has slid to: slip); on a spring it
+ * carries the spring's force (pushing its outer rings towards the nose:
+ * its thrust along +x, as a single bearing's "+" side carries it). */
+static void axial_mode(acbb_spindle_sim *sp, acbb_spindle_station *t)
+{
+    const acbb_scene *s = &sp->s;
+    int spring = t->k == ACBB_REAR && s->spindle_rear_support == ACBB_REAR_SPRING;
+    t->axial_held = !spring;
+    t->Fa_given = spring ? s->spindle_rear_spring : 0.0;
+}
+
+/* A floating rear set's sleeve (Coulomb friction rear_friction_N): it
+ * sticks while the thrust the held set needs stays within the friction,
+ * else it slides and the set carries the friction force in the thrust's
+ * direction. 1: it slides (the caller solves the shaft again). */
+static int slides(acbb_spindle_sim *sp, acbb_spindle_station *t)
+{
+    const acbb_scene *s = &sp->s;
+    if (t->k != ACBB_REAR || sp->one_support || s->spindle_rear_support != ACBB_REAR_FLOATING)
+        return 0;
+    double need = -sp->res.reaction[ACBB_REAR][0]; /* the thrust the stuck set carries */
+    if (fabs(need) <= s->spindle_rear_friction) return 0;
+    t->axial_held = 0;
+    t->Fa_given = copysign(s->spindle_rear_friction, need);
+    return 1;
+}
+
+/* Where the sliding set came to rest in its sleeve: its outer rings moved
+ * by the shaft's u plus the shift less its inner rings' move against
+ * them. */
+static void slid(acbb_spindle_sim *sp, acbb_spindle_station *t)
+{
+    t->slip = t->d[0] + sp->shift - t->w.q[0];
+}
+
+/* The support's copy of the set's mechanics (its offsets and spacer
+ * moves), its axial position warm-started from the station's last (a
+ * sliding or spring-held set's: a set's own last solve may have been
+ * under other loads, a one-way set's far out where no ball is loaded). */
+static void hold(acbb_spindle_station *t)
+{
+    double q0 = t->w.q[0];
+    int warm = t->w.n > 0;
+    t->w = t->ss->sm;
+    if (warm) t->w.q[0] = q0;
+    t->w.hold[0] = t->axial_held;
+    t->w.hold[1] = t->w.hold[2] = 1;
+    t->w.hold[3] = 0;
+    t->w.solves = 0;
+}
+
+/* The reactions into each set's loads (its frame, at its centre). */
+static void set_loads(acbb_spindle_sim *sp)
+{
+    for (int k = 0; k < 2; k++) {
+        acbb_spindle_station *t = &sp->st[k];
+        double L[3] = { 0.0, 0.0, 0.0 };
+        if (k == ACBB_FRONT || !sp->one_support) {
+            const double *R = sp->res.reaction[k];
+            L[0] = t->axial_held ? -R[0] : t->Fa_given;
+            L[1] = -R[1];
+            L[2] = R[2];
+        }
+        memcpy(t->load, L, sizeof L);
+        /* A located set's own solve keeps the station's axial position (a
+         * one-way set's position under no thrust is no equilibrium of its
+         * own; spindle.c frees it again after the set's evaluation). */
+        t->ss->sm.hold[0] = t->axial_held && (k == ACBB_FRONT || !sp->one_support);
+        if (k == ACBB_FRONT || !sp->one_support) /* its solve starts at the station */
+            memcpy(t->ss->sm.q, t->w.q, sizeof t->w.q);
+        t->ss->sm.Fa = L[0];
+        t->ss->sm.Fr = L[1];
+        t->ss->sm.M = L[2];
+        t->ss->sm.x_nose = 0.0;
+    }
+}
+
+/* Which set lost every ball of a bearing, for the message; -1 none. */
+static int lost_set(const acbb_spindle_sim *sp, int *bearing)
+{
+    for (int k = 0; k < 2; k++)
+        for (int b = 0; b < sp->st[k].w.n; b++)
+            if (sp->st[k].w.lost[b]) {
+                *bearing = b;
+                return k;
+            }
+    return -1;
+}
+
+/* The shaft with the stations as they hold it now. */
+static acbb_status solve_shaft(acbb_spindle_sim *sp, acbb_error *err)
+{
+    const acbb_scene *s = &sp->s;
+    const acbb_shaft_load nose = { 0.0, s->axial_load, s->radial_load, -s->moment_load };
+    for (int k = 0; k < 2; k++) hold(&sp->st[k]);
+    sp->beam_solves++;
+    acbb_status rc = acbb_shaft_beam_solve(sp->beam, &nose, 1, &sp->res, err);
+    sp->probe_solves += sp->st[ACBB_FRONT].w.solves + sp->st[ACBB_REAR].w.solves;
+    return rc;
+}
+
+acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err)
+{
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    for (int k = 0; k < 2; k++) axial_mode(sp, &sp->st[k]);
+    acbb_error e2 = { "" };
+    acbb_status rc = solve_shaft(sp, &e2);
+    if (rc == ACBB_OK && slides(sp, rear)) {
+        rc = solve_shaft(sp, &e2);
+        if (rc == ACBB_OK) slid(sp, rear);
+    }
+    if (rc != ACBB_OK) {
+        int b, k = lost_set(sp, &b);
+        if (k >= 0)
+            return acbb_error_set(err, ACBB_CONTACT_LOST, "spindle: the %s set's bearing %d "
+                                  "lost contact (every ball unloaded; %s)",
+                                  k == ACBB_FRONT ? "front" : "rear", b, e2.msg);
+        return acbb_error_set(err, rc, "spindle: %s", e2.msg);
+    }
+    set_loads(sp);
+    return ACBB_OK;
+}
+
+/* Rigid shaft on two point supports (one: the front set takes all): the
+ * loads on each set, its frame, from the nose loads; the first state's
+ * warm start only. */
+void acbb_spindle_initial_loads(const acbb_scene *s, int one_support, double L[2][3])
+{
+    double a = s->spindle_front_x, l = s->spindle_rear_x - s->spindle_front_x;
+    double S = s->spindle_rear_support == ACBB_REAR_SPRING ? s->spindle_rear_spring : 0.0;
+    memset(L, 0, 2 * sizeof L[0]);
+    if (one_support || !(l > 0.0)) {
+        L[0][0] = s->axial_load;
+        L[0][1] = s->radial_load;
+        L[0][2] = s->moment_load + a * s->radial_load;
+        return;
+    }
+    L[0][0] = s->axial_load - S;
+    L[1][0] = S;
+    L[0][1] = s->radial_load * (a + l) / l;
+    L[1][1] = -s->radial_load * a / l;
+}

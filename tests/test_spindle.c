@@ -1,0 +1,649 @@
+/* The spindle as a plant of the one stepper (src/run/spindle*.c,
+ * docs/spindle.md "Integration"): the shaft and both bearing sets solved
+ * together. Scenes are built in C from the DB pair of 7008C
+ * (presets/pair-DB-heated.ini) on a stepped hollow shaft; the mechanics
+ * tests run isothermal (effects.heating = off: one converged state). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tap.h"
+#include "acbb/sim.h"
+#include "acbb/tools/set.h"
+#include "acbb/tools/fidelity.h"
+#include "spindle_priv.h"
+#include "sim_struct.h"
+#include "snapshot_check.h"
+
+#define FRONT_X 0.060   /* m from the nose */
+#define REAR_X 0.300
+#define FR 800.0        /* N, radial nose load */
+#define FA 150.0        /* N, axial nose load */
+
+/* The DB pair of 7008C (200 N rigid preload, 8000 rpm) as the front set,
+ * a DB pair of the same bearing (200 N) as the rear, on a 0.36 m shaft of
+ * two segments (40 mm bearing seats; 36 mm over the span), isothermal. */
+static int spindle_scene(acbb_scene *s, const char *const *more, int n_more)
+{
+    acbb_error err = { "" };
+    const char *edits[] = { "effects.heating=off" };
+    if (acbb_scene_load("presets/pair-DB-heated.ini", s, &err) != ACBB_OK
+        || acbb_scene_apply_edits(s, edits, 1, &err) != ACBB_OK
+        || (n_more && acbb_scene_apply_edits(s, more, n_more, &err) != ACBB_OK)) {
+        ok(0, "scene: %s", err.msg);
+        return 0;
+    }
+    s->shaft_segments = 2;
+    s->shaft_seg[0] = (acbb_segment){ 0.10, 0.040, 0.015 };
+    s->shaft_seg[1] = (acbb_segment){ 0.26, 0.040, 0.015 };
+    s->shaft_n_div = 4;
+    s->housing_segments = 1; /* its bore the bearings' outer diameter (the seats) */
+    s->housing_seg[0] = (acbb_segment){ 0.32, 0.120, s->outer_diameter };
+    s->housing_x0 = 0.02;
+    s->spindle_front_x = FRONT_X;
+    s->spindle_rear_x = REAR_X;
+    s->spindle_rear_support = ACBB_REAR_FIXED;
+    s->spindle_rear_arrangement = ACBB_SET_DB;
+    s->spindle_rear_spacing = 0.0;
+    s->spindle_rear_preload = 200.0;
+    s->axial_load = FA;
+    s->radial_load = FR;
+    return 1;
+}
+
+/* is_close with the name formatted (a bearing's index). */
+static int close_k(double got, double want, double rtol, double atol, const char *fmt, int k)
+{
+    char name[160];
+    snprintf(name, sizeof name, fmt, k);
+    return is_close(got, want, rtol, atol, name);
+}
+
+static int run_sim(acbb_sim *sim, acbb_snapshot *o)
+{
+    acbb_sim_run(sim);
+    acbb_sim_snapshot(sim, o);
+    return o->state == ACBB_RUN_CONVERGED;
+}
+
+static int run_spindle(acbb_spindle_sim *sp, acbb_snapshot *o)
+{
+    while (acbb_spindle_sim_step(sp) == ACBB_OK) {
+        acbb_status st;
+        long it;
+        if (acbb_spindle_sim_outcome(sp, &st, &it) != ACBB_RUN_RUNNING) break;
+    }
+    acbb_spindle_sim_snapshot(sp, o);
+    return o->state == ACBB_RUN_CONVERGED;
+}
+
+/* (a) A practically rigid shaft (E x 1e6) on the front set alone (the rear
+ * carries nothing: one_support) is the front set under the nose loads
+ * moved to its centre: the set run with set.load_offset_mm = -60 (the nose
+ * 60 mm in front of the set's centre, set x along the shaft's). Its
+ * bearings' most loaded balls, their contact angles, and the nose
+ * displacement (the set's shaft move carried rigidly to the nose:
+ * w = dz + tilt a, plus the overhang's own deflection) agree to the
+ * solvers' tolerance (1e-6 relative for loads, 1e-5 deg for angles,
+ * 1e-5 um for the displacement: the members solve to mech_tol 1e-8). */
+static void test_rigid_one_support(void)
+{
+    static acbb_scene s, set;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    set = s;
+    set.shaft_segments = 0;
+    set.set_load_offset = -FRONT_X;
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    acbb_sim *ref = NULL;
+    static acbb_snapshot a, b, bb;
+    acbb_scene r;
+    acbb_scene_resolve(&s, &r, NULL);
+    if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 1, &sp, &err) == ACBB_OK,
+            "(a) one-support spindle builds: %s", err.msg))
+        return;
+    /* The shaft rebuilt practically rigid: E = 1e13 Pa (the beam's largest,
+     * 47 x steel's) and 400 mm outer diameter (1e4 x the bending
+     * inertia): 5e5 x stiffer. The sets keep the steel shaft of their own
+     * scene for their fits (materials.shaft stays a valid steel). */
+    acbb_shaft_beam_free(sp->beam);
+    sp->beam = NULL;
+    acbb_scene keep = sp->s;
+    sp->s.shaft.E = 1e13;
+    for (int i = 0; i < sp->s.shaft_segments; i++) sp->s.shaft_seg[i].od = 0.4;
+    ok(acbb_spindle_beam_build(sp, &err) == ACBB_OK, "(a) rigid shaft built: %s", err.msg);
+    sp->s = keep;
+    ok(run_spindle(sp, &a), "(a) spindle converged: %s", a.message);
+    err.msg[0] = '\0';
+    if (!ok(acbb_sim_create(&set, &(acbb_sim_opts){ 0 }, &ref, &err) == ACBB_OK,
+            "(a) the set alone builds: %s", err.msg)) {
+        acbb_spindle_sim_free(sp);
+        return;
+    }
+    ok(run_sim(ref, &b), "(a) set converged: %s", b.message);
+    const acbb_spindle_set_view *f = &a.spindle.sets[0];
+    is_close(f->axial_N, FA, 1e-9, 1e-9, "(a) front set's thrust = the nose's");
+    is_close(f->radial_N, FR, 1e-9, 1e-9, "(a) front set's radial load = the nose's");
+    is_close(f->moment_Nm, FRONT_X * FR, 1e-9, 1e-9, "(a) front set's moment = F_r a");
+    for (int k = 0; k < 2; k++) {
+        acbb_sim_bearing_snapshot(ref, k, &bb);
+        double Q = 0.0, ai = 0.0, ao = 0.0;
+        int jm = 0;
+        for (int j = 0; j < bb.n_balls; j++) {
+            if (bb.balls[j].Qi > bb.balls[jm].Qi) jm = j;
+            Q = fmax(Q, fmax(bb.balls[j].Qi, bb.balls[j].Qo));
+        }
+        ai = bb.balls[jm].alpha_i * 180.0 / M_PI;
+        ao = bb.balls[jm].alpha_o * 180.0 / M_PI;
+        close_k(f->Q_max_N[k], Q, 1e-6, 0.0, "(a) bearing %d: largest ball load, N", k);
+        close_k(f->contact_angle_inner_deg[k], ai, 0.0, 1e-5,
+                "(a) bearing %d: inner contact angle of the most loaded ball, deg", k);
+        close_k(f->contact_angle_outer_deg[k], ao, 0.0, 1e-5,
+                "(a) bearing %d: outer contact angle of the most loaded ball, deg", k);
+    }
+    /* The overhang's own bending and shear as a cantilever from the
+     * station (Timoshenko, exact for a point load): P a^3/(3EI) + P a/(kGA),
+     * 1.2e-4 um here, the shear term nearly all of it. */
+    acbb_shaft_seg g = { 0.10, 0.4, 0.015, 1e13, s.shaft.nu, 0, 0, 0, 0 };
+    double G = g.E / (2.0 * (1.0 + g.nu));
+    double cant = FR * pow(FRONT_X, 3) / (3.0 * g.E * acbb_seg_inertia(&g))
+                + FR * FRONT_X / (acbb_seg_shear_coeff(&g) * G * acbb_seg_area(&g));
+    double w = b.set.shaft_dz + b.set.shaft_tilt * FRONT_X + cant;
+    is_close(a.spindle.nose_w * 1e6, w * 1e6, 0.0, 1e-5, "(a) nose radial displacement, um "
+             "(the set's, carried rigidly to the nose, plus the overhang as a cantilever)");
+    is_close(a.spindle.nose_u * 1e6, b.set.shaft_dx * 1e6, 0.0, 1e-5,
+             "(a) nose axial displacement, um");
+    is_close(a.spindle.nose_theta, -b.set.shaft_tilt, 0.0, 1e-8, "(a) nose rotation, rad");
+    acbb_spindle_sim_free(sp);
+    acbb_sim_free(ref);
+}
+
+/* Build and run a spindle through the public Sim (sim.c's hook). */
+static acbb_sim *create_run(const acbb_scene *s, acbb_snapshot *o, const char *what)
+{
+    acbb_error err = { "" };
+    acbb_sim *sim = NULL;
+    if (!ok(acbb_sim_create(s, &(acbb_sim_opts){ 0 }, &sim, &err) == ACBB_OK,
+            "%s: spindle builds: %s", what, err.msg))
+        return NULL;
+    acbb_sim_run(sim);
+    acbb_sim_snapshot(sim, o);
+    return sim;
+}
+
+/* ... and it converges, with the spindle's view. */
+static acbb_sim *run_public(const acbb_scene *s, acbb_snapshot *o, const char *what)
+{
+    acbb_sim *sim = create_run(s, o, what);
+    if (!sim) return NULL;
+    ok(o->state == ACBB_RUN_CONVERGED, "%s: converged: %s", what, o->message);
+    ok(o->spindle.n_sets == ACBB_SPINDLE_SETS, "%s: the snapshot has the spindle's view "
+       "(n_sets = %d)", what, o->spindle.n_sets);
+    return sim;
+}
+
+/* Each set's own shaft equilibrium under its station's reaction lands on
+ * the shaft's station displacement (spindle.c landing()): it starts there
+ * and moves only if the loads do not balance its members there to its own
+ * tolerance, so this checks that the reactions the shaft used are the
+ * set's equilibrium loads (at the state reached; inside a transient step
+ * at the quasi-dynamic level the ball speeds lag one step and the set
+ * moves by up to 0.1 um). */
+static void check_landing(const acbb_sim *sim, const char *what)
+{
+    for (int k = 0; k < 2; k++)
+        ok(sim->spindle->st[k].landing < 1e-10, "%s: the %s set's own solve lands on the "
+           "shaft's station to 1e-10 m (%.2g)", what, k ? "rear" : "front",
+           sim->spindle->st[k].landing);
+}
+
+/* (c) Force balance on the free shaft: the loads the sets carry equal the
+ * nose loads (axial, radial, and moment about the nose: sum of M_k - x_k
+ * F_r,k = the nose moment, 0 here, in the sets' frame, spindle_priv.h), to
+ * 1e-9 of the radial load: the beam's Newton residual. */
+static void test_balance(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    acbb_sim *sim = run_public(&s, &o, "(c) two DB pairs, rear fixed");
+    if (!sim) return;
+    const acbb_spindle_set_view *v = o.spindle.sets;
+    double Fx = v[0].axial_N + v[1].axial_N, Fr = v[0].radial_N + v[1].radial_N;
+    double M = v[0].moment_Nm - v[0].x * v[0].radial_N + v[1].moment_Nm - v[1].x * v[1].radial_N;
+    is_close(Fx, FA, 0.0, 1e-9 * FR, "(c) the sets' thrusts sum to the nose's");
+    is_close(Fr, FR, 0.0, 1e-9 * FR, "(c) the sets' radial loads sum to the nose's");
+    is_close(M, 0.0, 0.0, 1e-9 * FR * REAR_X, "(c) the moments about the nose balance, N m");
+    ok(v[1].radial_N < 0.0 && v[0].radial_N > FR, "(c) the rear set pulls against the nose "
+       "load, the front carries more than it (%.1f, %.1f N)", v[0].radial_N, v[1].radial_N);
+    check_landing(sim, "(c)");
+    ok(snapshot_plausible(&o, 1), "(c) the front set's snapshot is plausible");
+    acbb_sim_free(sim);
+}
+
+/* Gaussian elimination with partial pivoting of an n x n system (n <= 9). */
+static void solve_n(int n, double A[9][9], double *b)
+{
+    for (int c = 0; c < n; c++) {
+        int p = c;
+        for (int r = c + 1; r < n; r++) if (fabs(A[r][c]) > fabs(A[p][c])) p = r;
+        for (int k = 0; k < n; k++) { double t = A[c][k]; A[c][k] = A[p][k]; A[p][k] = t; }
+        double t = b[c]; b[c] = b[p]; b[p] = t;
+        for (int r = c + 1; r < n; r++) {
+            double f = A[r][c] / A[c][c];
+            for (int k = c; k < n; k++) A[r][k] -= f * A[c][k];
+            b[r] -= f * b[c];
+        }
+    }
+    for (int c = n - 1; c >= 0; c--) {
+        for (int k = c + 1; k < n; k++) b[c] -= A[c][k] * b[k];
+        b[c] /= A[c][c];
+    }
+}
+
+/* The nose's radial compliance (m/N, the other nose loads zero) of a
+ * uniform Timoshenko shaft, nose - support 1 - support 2 over a and l:
+ * two exact elements (docs/spindle.md's element matrix, an axial bar EA/L
+ * beside it), each support a 3 x 3 stiffness on (u, w, theta); the nine
+ * displacements of the three nodes under a unit radial nose load. */
+static double nose_compliance(double EA, double EI, double kGA, double a, double l,
+                              const double K[2][9])
+{
+    double A[9][9] = { { 0 } }, b[9] = { 0, 1, 0, 0, 0, 0, 0, 0, 0 };
+    const double L[2] = { a, l };
+    for (int e = 0; e < 2; e++) {
+        double phi = 12.0 * EI / (kGA * L[e] * L[e]), q = EI / ((1.0 + phi) * pow(L[e], 3));
+        double x = L[e], m[4][4] = {
+            { 12, 6 * x, -12, 6 * x }, { 6 * x, (4 + phi) * x * x, -6 * x, (2 - phi) * x * x },
+            { -12, -6 * x, 12, -6 * x }, { 6 * x, (2 - phi) * x * x, -6 * x, (4 + phi) * x * x } };
+        const int dof[4] = { 3 * e + 1, 3 * e + 2, 3 * e + 4, 3 * e + 5 };
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++) A[dof[i]][dof[j]] += q * m[i][j];
+        double ka = EA / x;
+        A[3 * e][3 * e] += ka, A[3 * e + 3][3 * e + 3] += ka;
+        A[3 * e][3 * e + 3] -= ka, A[3 * e + 3][3 * e] -= ka;
+    }
+    for (int s = 0; s < 2; s++)
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) A[3 + 3 * s + i][3 + 3 * s + j] += K[s][3 * i + j];
+    solve_n(9, A, b);
+    return b[1];
+}
+
+/* A support of uncoupled springs: axial, radial, tilt. */
+static void springs(double k_axial, double k_radial, double k_tilt, double K[9])
+{
+    memset(K, 0, 9 * sizeof *K);
+    K[0] = k_axial, K[4] = k_radial, K[8] = k_tilt;
+}
+
+/* (b) The nose's radial stiffness against docs/spindle.md's unit-load hand
+ * calculation for a uniform shaft on two point supports (overhang a, span
+ * l, EI and kGA of the shaft, each set's own radial stiffness k1, k2 at
+ * that state: the set's K_rad, a radial force at its centre with its tilt
+ * free). Those sets also resist tilting (a DB pair's contact lines spread
+ * far apart), which point supports leave out: here that makes the spindle
+ * 36 % stiffer than the hand calculation. So the hand calculation is done
+ * twice: as written (the spindle must be stiffer, never softer), and with
+ * each support's tilt spring c_i = the set's own K_tilt (a moment at its
+ * centre, radial force free) in the same unit-load problem written as two
+ * exact elements: within 3 % (2.6 % here), the supports' couplings
+ * (radial-tilt-axial: a loaded angular contact set's stiffness has
+ * off-diagonal terms), left out of uncoupled springs; with the supports'
+ * own coupled 3 x 3 tangents, to 1e-6. */
+static void test_nose_stiffness(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o, rear;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    acbb_sim *sim = run_public(&s, &o, "(b)");
+    if (!sim) return;
+    acbb_sim_bearing_snapshot(sim, 2, &rear);
+    double k1 = o.set.stiffness_radial, k2 = rear.set.stiffness_radial;
+    acbb_shaft_seg g = { 0.36, 0.040, 0.015, s.shaft.E, s.shaft.nu, 0, 0, 0, 0 };
+    double EI = g.E * acbb_seg_inertia(&g);
+    double kGA = acbb_seg_shear_coeff(&g) * g.E / (2.0 * (1.0 + g.nu)) * acbb_seg_area(&g);
+    double a = FRONT_X, l = REAR_X - FRONT_X;
+    double C = pow(a, 3) / (3.0 * EI) + a / kGA + a * a * l / (3.0 * EI) + a * a / (l * kGA)
+             + pow(1.0 + a / l, 2) / k1 + pow(a / l, 2) / k2;
+    double k = o.spindle.nose_k_radial, hand = 1.0 / C;
+    ok(k1 > 0.0 && k2 > 0.0, "(b) the sets' radial stiffness %.4g, %.4g N/um", k1 * 1e-6,
+       k2 * 1e-6);
+    ok(k >= hand, "(b) nose radial stiffness %.5g N/um >= the point-support hand "
+       "calculation's %.5g N/um (+%.1f %%: the sets' tilt stiffness)", k * 1e-6, hand * 1e-6,
+       100.0 * (k / hand - 1.0));
+    double EA = g.E * acbb_seg_area(&g), Ks[2][9];
+    springs(o.set.stiffness_axial, k1, o.set.stiffness_tilt, Ks[0]);
+    springs(rear.set.stiffness_axial, k2, rear.set.stiffness_tilt, Ks[1]);
+    double tilt = 1.0 / nose_compliance(EA, EI, kGA, a, l, Ks);
+    is_close(k * 1e-6, tilt * 1e-6, 0.03, 0.0, "(b) ... and within 3 % of it with each set's "
+             "tilt stiffness as a tilt spring, N/um");
+    springs(1.0, k1, 0.0, Ks[0]);
+    springs(0.0, k2, 0.0, Ks[1]);
+    is_close(1.0 / nose_compliance(EA, EI, kGA, a, l, Ks), hand, 1e-9, 0.0,
+             "(b) the two-element problem with point supports is the hand calculation");
+    /* With each support's own 3 x 3 tangent (couplings in), the two-element
+     * problem is the spindle's shaft, to the elements' exactness: 1e-6 (the
+     * tangents are the supports' last, at the state). */
+    const acbb_spindle_sim *sp = sim->spindle;
+    memcpy(Ks[0], sp->st[0].K, sizeof Ks[0]);
+    memcpy(Ks[1], sp->st[1].K, sizeof Ks[1]);
+    is_close(k, 1.0 / nose_compliance(EA, EI, kGA, a, l, Ks), 1e-6, 0.0,
+             "(b) ... and with the supports' own tangents (couplings in) to 1e-6, N/m");
+    acbb_sim_free(sim);
+}
+
+/* (d) A spring-loaded rear bearing (single) carries exactly the spring's
+ * force; the front set carries the nose thrust less it. */
+static void test_spring_rear(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    s.spindle_rear_support = ACBB_REAR_SPRING;
+    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_spring = 300.0;
+    acbb_sim *sim = run_public(&s, &o, "(d) spring rear");
+    if (!sim) return;
+    const acbb_spindle_set_view *v = o.spindle.sets;
+    is_close(v[1].axial_N, 300.0, 0.0, 0.0, "(d) the rear set's axial force = rear_spring_N");
+    const acbb_set_mech *sm = &sim->spindle->st[1].ss->sm;
+    is_close(sm->Fx[0], 300.0, 1e-7, 0.0, "(d) ... and its bearing's balls carry it");
+    is_close(v[0].axial_N, FA - 300.0, 0.0, 1e-9 * FR, "(d) the front set: the nose thrust "
+             "less the spring's");
+    ok(v[1].n_bearings == 1 && v[1].preload_N == 300.0 && v[0].preload_N > 0.0,
+       "(d) the rear single bearing is preloaded by the spring (%.1f N)", v[1].preload_N);
+    check_landing(sim, "(d)");
+    acbb_sim_free(sim);
+}
+
+/* Every double of the view is finite. */
+static int view_finite(const acbb_spindle_view *v)
+{
+    const double *p = (const double *)(const void *)&v->nose_drift_axial;
+    const double *end = (const double *)(const void *)(v + 1);
+    for (; p < end; p++) if (!isfinite(*p)) return 0;
+    for (int k = 0; k < 2; k++) {
+        const acbb_spindle_set_view *s = &v->sets[k];
+        double f[] = { s->x, s->preload_N, s->axial_N, s->radial_N, s->moment_Nm, s->loss_W,
+                       s->T_inner_C, s->T_outer_C, s->T_ball_C };
+        for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) if (!isfinite(f[i])) return 0;
+    }
+    return 1;
+}
+
+/* (e) A heated steady spindle converges; its snapshot is plausible and its
+ * view finite, the bearings warm and their heat balanced. */
+static void test_steady(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=steady" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    acbb_sim *sim = run_public(&s, &o, "(e) steady, heated");
+    if (!sim) return;
+    ok(view_finite(&o.spindle), "(e) every value of the view is finite");
+    ok(snapshot_plausible(&o, 1), "(e) the front set's snapshot is plausible");
+    const acbb_spindle_set_view *v = o.spindle.sets;
+    ok(v[0].T_inner_C > s.ambient_C + 1.0 && v[1].T_inner_C > s.ambient_C + 1.0,
+       "(e) both sets warm (inner rings %.1f, %.1f C)", v[0].T_inner_C, v[1].T_inner_C);
+    is_close(o.spindle.Q_bearings_W, v[0].loss_W + v[1].loss_W, 1e-9, 0.0,
+             "(e) the bearings' heat is both sets' losses");
+    is_close(o.heat_out, o.heat_in, 1e-9, 0.0, "(e) the network passes the bearings' heat "
+             "to the air");
+    const acbb_spindle_view *v2 = &o.spindle;
+    /* A fixed rear set's rings move against each other by the shaft's u
+     * plus the network's thermal shift between the sets (spindle_priv.h). */
+    const acbb_spindle_sim *sp = sim->spindle;
+    double x, d[3] = { 0, 0, 0 };
+    for (int i = 0; i < acbb_shaft_beam_nodes(sp->beam); i++)
+        if (acbb_shaft_beam_node(sp->beam, i, &x, d) == ACBB_OK && fabs(x - REAR_X) < 1e-12) break;
+    ok(fabs(v2->rear_shift) > 1e-7, "(e) the shaft grows against the housing between the sets "
+       "(%.3f um)", v2->rear_shift * 1e6);
+    is_close(sp->st[1].ss->sm.q[0] * 1e6, (d[0] + v2->rear_shift) * 1e6, 0.0, 1e-6,
+             "(e) the fixed rear set's rings move by the shaft's u plus the shift, um");
+    check_landing(sim, "(e)");
+    acbb_sim_free(sim);
+}
+
+/* Statuses: a spindle that cannot go on ends with a named status, its
+ * message naming the set, the last good state kept and every value of the
+ * view finite. A transient run whose bearings pass thermal.temp_limit_C
+ * is a runaway named by set and node. */
+static void test_runaway(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=transient",
+                            "surroundings.shaft_bore_coolant_dT_K=0" };
+    if (!spindle_scene(&s, edits, 2)) return;
+    s.heating = 1;
+    s.temp_limit_C = s.ambient_C + 3.0;
+    acbb_sim *sim = create_run(&s, &o, "runaway");
+    if (!sim) return;
+    ok(o.state == ACBB_RUN_FAILED && o.status == ACBB_RUNAWAY
+       && strstr(o.message, "thermal runaway: front set: bearing 0 node"),
+       "runaway: named, with the set and the node: %s", o.message);
+    ok(view_finite(&o.spindle) && o.time > 0.0, "runaway: the last good state (t = %.0f s), "
+       "finite", o.time);
+    acbb_sim_free(sim);
+}
+
+/* A nose load past the bearings' static limit (4.2 GPa contact pressure,
+ * MODEL.md 9) ends the run as a runaway named by the set and the bearing. */
+static void test_overload(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.radial_load = 30000.0;
+    acbb_sim *sim = create_run(&s, &o, "overload");
+    if (!sim) return;
+    ok(o.state == ACBB_RUN_FAILED && o.status == ACBB_RUNAWAY
+       && strstr(o.message, "front set: bearing ") && strstr(o.message, "static limit"),
+       "overload: a runaway naming the set and the bearing: %s", o.message);
+    ok(view_finite(&o.spindle), "overload: the view is finite");
+    acbb_sim_free(sim);
+}
+
+/* A nose thrust far past the pairs' lift-off (about 3 x their 200 N
+ * preload at rest): in each DB pair the bearing on the unloading side lifts off.
+ * The run still converges (its partner carries the set, as a set alone
+ * does), the view flags it and the message names the set and the bearing. */
+static void test_contact_lost(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    s.axial_load = 4000.0;
+    s.radial_load = 0.0; /* else the radial load keeps some balls of every bearing loaded */
+    s.inner_speed = 0.0; /* at rest: at speed the centrifugal force keeps the balls on both
+                            races far longer (MODEL.md 14; 1 mN at 100 rpm) */
+    acbb_sim *sim = run_public(&s, &o, "lift-off");
+    if (!sim) return;
+    ok(o.spindle.sets[0].contact_lost && o.spindle.sets[1].contact_lost,
+       "lift-off: both sets flag a lost contact (Q_max of the bearings %g %g, %g %g N)",
+       o.spindle.sets[0].Q_max_N[0], o.spindle.sets[0].Q_max_N[1], o.spindle.sets[1].Q_max_N[0],
+       o.spindle.sets[1].Q_max_N[1]);
+    ok(strstr(o.message, "; front set bearing 1: contact_lost (lifted off)")
+       && strstr(o.message, "; rear set bearing 1: contact_lost (lifted off)"),
+       "lift-off: the message names the sets and bearings: %s", o.message);
+    is_close(o.spindle.sets[0].axial_N + o.spindle.sets[1].axial_N, 4000.0, 0.0, 1e-6,
+             "lift-off: the sets still carry the thrust, N");
+    acbb_sim_free(sim);
+}
+
+/* A schedule's rows move the nose loads: a transient whose radial load
+ * ramps from 400 to 1200 N ends with the sets carrying the last row's. */
+static void test_schedule(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.schedule_n = 2;
+    s.schedule[0] = (acbb_schedule_row){ 0.0, s.inner_speed, FA, 400.0 };
+    s.schedule[1] = (acbb_schedule_row){ 120.0, s.inner_speed, FA, 1200.0 };
+    acbb_sim *sim = run_public(&s, &o, "schedule");
+    if (!sim) return;
+    const acbb_spindle_set_view *v = o.spindle.sets;
+    ok(o.time > 120.0, "schedule: the run went past the last row (t = %.0f s)", o.time);
+    is_close(v[0].radial_N + v[1].radial_N, 1200.0, 0.0, 1e-9 * 1200.0,
+             "schedule: the sets carry the last row's radial load, N");
+    acbb_sim_free(sim);
+}
+
+/* A restart (the TUI's edit) builds the spindle again from the new scene;
+ * one to a bearing set leaves no spindle behind. */
+static void test_restart(void)
+{
+    static acbb_scene s, t;
+    static acbb_snapshot o;
+    if (!spindle_scene(&s, NULL, 0)) return;
+    acbb_sim *sim = run_public(&s, &o, "restart");
+    if (!sim) return;
+    acbb_error err = { "" };
+    t = s;
+    t.radial_load = 2.0 * FR;
+    ok(acbb_sim_restart(sim, &t, 1, &err) == ACBB_OK && run_sim(sim, &o),
+       "restart: a new spindle scene runs: %s %s", err.msg, o.message);
+    is_close(o.spindle.sets[0].radial_N + o.spindle.sets[1].radial_N, 2.0 * FR, 0.0, 1e-6,
+             "restart: with the new nose load, N");
+    t.shaft_segments = 0;
+    t.housing_segments = 0;
+    ok(acbb_sim_restart(sim, &t, 1, &err) == ACBB_OK && run_sim(sim, &o)
+       && o.spindle.n_sets == 0 && !sim->spindle && sim->set,
+       "restart: to the front set alone: no spindle view (%s %s)", err.msg, o.message);
+    acbb_sim_free(sim);
+}
+
+/* (f) The coupled steady state's energy balance: with a motor (100 W on
+ * the rotor, 150 W on the stator) and a cooling jacket, every source (both
+ * sets' losses and the motor's) leaves to the air or with the coolant,
+ * m_dot c_p (T_out - T_in), to 1e-9. */
+static void test_energy(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=steady" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.spindle_rear_support = ACBB_REAR_SPRING; /* a fixed rear runs away: the rotor heats
+                                                  the shaft 60 K above the housing */
+    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_spring = 300.0;
+    s.motor_rotor_loss = 100.0;
+    s.motor_stator_loss = 150.0;
+    s.motor_x0 = 0.12, s.motor_x1 = 0.24;
+    s.motor_gap_G = 2.0;
+    s.coolant_flow = 2.0 / 60000.0; /* 2 l/min */
+    s.coolant_inlet_dT = 0.0;
+    s.jacket_x0 = 0.10, s.jacket_x1 = 0.26;
+    s.jacket_hA = 40.0;
+    s.coolant_cells = 8;
+    acbb_sim *sim = run_public(&s, &o, "(f) motor and coolant, steady");
+    if (!sim) return;
+    const acbb_spindle_view *v = &o.spindle;
+    double losses = v->sets[0].loss_W + v->sets[1].loss_W;
+    is_close(v->Q_motor_W, 250.0, 1e-12, 0.0, "(f) the motor's heat, W");
+    is_close(v->Q_bearings_W, losses, 1e-9, 0.0, "(f) the bearings' heat is both sets' losses");
+    is_close(o.heat_in, losses + 250.0, 1e-9, 0.0, "(f) the run's heat in: bearings + motor, W");
+    is_close(v->Q_air_W + v->Q_coolant_W, o.heat_in, 1e-9, 0.0,
+             "(f) air + coolant carry every source away, W");
+    ok(v->Q_coolant_W > 0.0 && v->T_coolant_out_C > v->T_coolant_in_C,
+       "(f) the coolant warms (%.2f -> %.2f C, %.1f W)", v->T_coolant_in_C, v->T_coolant_out_C,
+       v->Q_coolant_W);
+    ok(view_finite(v) && v->n_shaft > 0 && v->n_housing > 0, "(f) the view is finite, with %d "
+       "shaft and %d housing cells", v->n_shaft, v->n_housing);
+    check_landing(sim, "(f)");
+    acbb_sim_free(sim);
+}
+
+/* A floating rear (a single bearing in a sleeve with Coulomb friction):
+ * at 8000 rpm the balls' centrifugal force pushes the held bearing with
+ * about 80 N of thrust. With 40 N of friction the sleeve slides (while it
+ * slides the set carries the friction force; where it stops, at most
+ * that: the ball speeds of the next pass ease it); with 200 N it sticks
+ * where it was assembled and carries what the shaft asks, less than the
+ * friction. */
+static void test_floating_rear(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const double mu[2] = { 40.0, 200.0 };
+    for (int i = 0; i < 2; i++) {
+        if (!spindle_scene(&s, NULL, 0)) return;
+        s.spindle_rear_support = ACBB_REAR_FLOATING;
+        s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+        s.spindle_rear_friction = mu[i];
+        s.radial_load = 0.0; /* a single bearing held by no thrust carries no radial load */
+        acbb_sim *sim = run_public(&s, &o, i ? "floating, sticks" : "floating, slides");
+        if (!sim) return;
+        const acbb_spindle_set_view *v = o.spindle.sets;
+        double slip = sim->spindle->st[ACBB_REAR].slip;
+        if (i == 0)
+            ok(slip > 1e-6 && v[1].axial_N > 0.0 && v[1].axial_N <= 40.0 + 1e-9,
+               "floating: the sleeve slid (%.3f um: its balls push its outer rings rearwards) and the rear set "
+               "carries at most the friction (%.3f N)", slip * 1e6, v[1].axial_N);
+        else
+            ok(fabs(v[1].axial_N) < 200.0 && v[1].axial_N > 40.0 && slip == 0.0,
+               "floating: the sleeve sticks, the rear set carries %.2f N < 200 N", v[1].axial_N);
+        is_close(v[0].axial_N + v[1].axial_N, FA, 0.0, 1e-9 * FR, "floating: the front set "
+                 "carries the nose thrust less the rear's, N");
+        acbb_sim_free(sim);
+    }
+}
+
+/* A nose load far past anything the bearings can take (5 MN, put in
+ * between two steps: a set's ball speeds find no solution there) ends the
+ * run with a named status whose message names the set; the state before
+ * the step is kept (the loads the sets carried, the view finite). */
+static void test_no_equilibrium(void)
+{
+    static acbb_scene s, r;
+    static acbb_snapshot o, before;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    acbb_scene_resolve(&s, &r, NULL);
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+            "no equilibrium: spindle builds: %s", err.msg))
+        return;
+    acbb_spindle_sim_step(sp);
+    acbb_spindle_sim_snapshot(sp, &before);
+    sp->s.radial_load = 5e6;
+    acbb_status st = acbb_spindle_sim_step(sp);
+    acbb_spindle_sim_snapshot(sp, &o);
+    ok(o.state == ACBB_RUN_FAILED && st == o.status && st != ACBB_OK
+       && strncmp(o.message, "spindle", 7) == 0, "no equilibrium: ends %s: %s",
+       acbb_status_name(st), o.message);
+    ok(view_finite(&o.spindle) && o.spindle.sets[0].radial_N == before.spindle.sets[0].radial_N
+       && o.spindle.sets[1].radial_N == before.spindle.sets[1].radial_N,
+       "no equilibrium: the last good state kept (radial loads %.1f, %.1f N)",
+       o.spindle.sets[0].radial_N, o.spindle.sets[1].radial_N);
+    acbb_spindle_sim_free(sp);
+}
+
+int main(void)
+{
+    test_rigid_one_support();
+    test_balance();
+    test_nose_stiffness();
+    test_spring_rear();
+    test_floating_rear();
+    test_steady();
+    test_energy();
+    test_contact_lost();
+    test_runaway();
+    test_schedule();
+    test_restart();
+    test_overload();
+    test_no_equilibrium();
+    return done_testing();
+}
