@@ -18,14 +18,6 @@ ok $? "and no empty shaft or side block drawn"
 keys q
 wait_file "$TMP/sp1" 5
 
-if [ ! -f "$ROOT/src/run/spindle.c" ]; then
-    echo "ok $((n + 1)) - the spindle preset # SKIP the engine that runs a spindle is not there yet"
-    n=$((n + 1))
-    echo "1..$n"
-    [ "$failed" -eq 0 ]
-    exit
-fi
-
 cp "$ROOT/presets/spindle-motor-DBT.ini" "$TMP/sp.ini"
 TUI_ARGS="--pace 0" start "env NO_COLOR=1 LC_ALL=C" sp2 sp.ini
 wait_for "Idle at ambient"
