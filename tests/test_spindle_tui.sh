@@ -32,7 +32,7 @@ keys r
 wait_for "converged" 300
 screen | grep -Eq 'nose drift +[-+][0-9]+\.[0-9]+ um' && ! screen | grep -Eiq 'nose drift +[-+]?(nan|inf)'
 r=$?; [ $r -eq 0 ] || show; ok $r "converged: a finite nose drift in um"
-screen | grep -Eq 'nose k +[0-9]+\.[0-9] N/um'
+screen | grep -Eq 'nose k rad +[0-9]+\.[0-9] N/um'
 r=$?; [ $r -eq 0 ] || show; ok $r "and the radial nose stiffness in N/um"
 screen | grep -Eq '^shaft C +[0-9]+\.[0-9]' && screen | grep -q 'Nose drift (axial)'
 ok $? "the temperature along the shaft and the drift-over-time chart"

@@ -133,9 +133,9 @@ static void test_numbers(void)
     const char *side[9];
     for (int r = 0; r < 9; r++) side[r] = strlen(p.line[1 + r]) > 55 ? p.line[1 + r] + 55 : "";
     ok(strcmp(side[0], "nose drift    +12.34 um") == 0, "nose drift in um: '%s'", side[0]);
-    ok(strcmp(side[1], " radial        -1.50 um") == 0, "radial drift in um: '%s'", side[1]);
-    ok(strcmp(side[2], "nose k     123.4 N/um") == 0, "radial nose stiffness in N/um: '%s'", side[2]);
-    ok(strcmp(side[3], " axial   pending N/um") == 0, "an unknown (0) stiffness reads pending: '%s'", side[3]);
+    ok(strcmp(side[1], "    radial     -1.50 um") == 0, "radial drift in um: '%s'", side[1]);
+    ok(strcmp(side[2], "nose k rad     123.4 N/um") == 0, "radial nose stiffness in N/um: '%s'", side[2]);
+    ok(strcmp(side[3], "     axial   pending N/um") == 0, "an unknown (0) stiffness reads pending: '%s'", side[3]);
     ok(strcmp(side[4], "front preload   250.0 N") == 0 && strcmp(side[5], " Fa   300 Fr   120 N") == 0,
        "front set: preload and loads ('%s' '%s')", side[4], side[5]);
     ok(strcmp(side[6], "rear  preload   180.0 N") == 0 && strcmp(side[7], " Fa   -80 Fr    60 N LIFT") == 0,

@@ -174,9 +174,9 @@ static void side(const acbb_spindle_view *v, acbb_spindle_page *p)
     known(ka, sizeof ka, v->nose_k_axial, 1e-6);
     int x = p->side_x, r = ACBB_SP_PROFILE, w = p->cols;
     put(p->line[r++], w, x, "nose drift  %+8.2f um", v->nose_drift_axial * 1e6);
-    put(p->line[r++], w, x, " radial     %+8.2f um", v->nose_drift_radial * 1e6);
-    put(p->line[r++], w, x, "nose k  %s N/um", kr);
-    put(p->line[r++], w, x, " axial  %s N/um", ka);
+    put(p->line[r++], w, x, "    radial  %+8.2f um", v->nose_drift_radial * 1e6);
+    put(p->line[r++], w, x, "nose k rad  %s N/um", kr);
+    put(p->line[r++], w, x, "     axial  %s N/um", ka);
     static const char *const name[ACBB_SPINDLE_SETS] = { "front", "rear " };
     for (int k = 0; k < ACBB_SPINDLE_SETS; k++) {
         const acbb_spindle_set_view *sv = &v->sets[k];
