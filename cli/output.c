@@ -13,6 +13,7 @@
 #include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
 #include "acbb/tools/set.h"
+#include "acbb/tools/scene_schema.h"
 #include "output.h"
 
 #define CLI_UM 1e6                                   /* m -> um */

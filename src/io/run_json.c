@@ -8,6 +8,8 @@
 #include "acbb/outputs.h"
 #include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
 #include "life_json.h"
 
 /* The table's entries of `section` (NULL: the keys directly in a ball) as

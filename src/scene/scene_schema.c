@@ -16,6 +16,7 @@
 #include "acbb/limits.h"
 #include "acbb/tools/set.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 /* Enum fields are read and written through an int (memcpy, no aliasing). */
@@ -247,7 +248,7 @@ const acbb_sfield acbb_sf_table[] = {
          "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
     ENUM("mounting", "tilt", tilt, k_tilt, ACBB_TILT_AUTO,
          "inner-ring tilt: auto and free (solved whenever radial load or moment act, 0 N m "
-         "included), or held (0; the tilt before issue 18 at 0 N m)"),
+         "included), or held (0 whatever the loads: the ring kept square to the shaft)"),
 
     /* [set] (MODEL.md 14): a spindle set; single = today's one bearing */
     ENUM("set", "arrangement", set_arrangement, acbb_set_arrangement_names, ACBB_SET_SINGLE,
