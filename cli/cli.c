@@ -233,6 +233,7 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
         return rc;
     }
     csv.out.set_n = acbb_set_layout(&sc, NULL, NULL);
+    csv.out.spindle = sc.shaft_segments > 0;
     if (csv_path) acbb_cli_csv_header(&csv.out);
     run_rows rows = { csv_path ? &csv.out : NULL, plot ? malloc(sizeof *rows.hist) : NULL };
     if (rows.hist) acbb_history_init(rows.hist);
