@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The TUI's Spindle screen (issue 31; TAP, tmux, 80x24, no colour): a
 # bearing scene gets one line saying how to open a spindle; the spindle
-# preset draws its shaft with both sets, runs to convergence with a finite
-# nose drift and stiffness, every row inside 80 columns, and g exports the
-# drift over time and the temperature along the axis.
+# preset draws its shaft with both sets, runs to convergence with the nose
+# drift, stiffness and preloads of `acbb run --json`, every row inside 80
+# columns, and g exports the drift over time and the temperature along the axis.
 # Usage: test_spindle_tui.sh PATH/TO/acbb   (cwd = repo root)
 . "$(dirname "$0")/test_tui_lib.sh"
 
@@ -32,10 +32,25 @@ keys r
 wait_for "converged" 300
 screen | grep -Eq 'nose drift +[-+][0-9]+\.[0-9]+ um' && ! screen | grep -Eiq 'nose drift +[-+]?(nan|inf)'
 r=$?; [ $r -eq 0 ] || show; ok $r "converged: a finite nose drift in um"
-screen | grep -Eq 'nose k rad +[0-9]+\.[0-9] N/um'
-r=$?; [ $r -eq 0 ] || show; ok $r "and the radial nose stiffness in N/um"
-screen | grep -Eq '^shaft C +[0-9]+\.[0-9]' && screen | grep -q 'Nose drift (axial)'
-ok $? "the temperature along the shaft and the drift-over-time chart"
+# The same converged state as the CLI's: its JSON, printed as the screen prints it.
+"$ACBB" run "$TMP/sp.ini" --json >"$TMP/sp.json" 2>/dev/null
+jnum() { jq -r "$1" "$TMP/sp.json"; }
+want_d=$(printf '%+.2f' "$(jnum .spindle.nose_drift_um)")
+want_k=$(printf '%.1f' "$(jnum .spindle.nose_stiffness_N_per_um)")
+want_f=$(printf '%.1f' "$(jnum '.spindle.sets[0].preload_N')")
+want_r=$(printf '%.1f' "$(jnum '.spindle.sets[1].preload_N')")
+got_d=$(screen | sed -n 's/.*nose drift *\([-+][0-9.]*\) um.*/\1/p')
+got_k=$(screen | sed -n 's/.*nose k rad *\([0-9.]*\) N\/um.*/\1/p')
+got_f=$(screen | sed -n 's/.*front preload *\([-0-9.]*\) N.*/\1/p')
+got_r=$(screen | sed -n 's/.*rear  preload *\([-0-9.]*\) N.*/\1/p')
+[ -n "$got_d" ] && [ "$got_d" = "$want_d" ] && [ "$got_k" = "$want_k" ]
+r=$?; [ $r -eq 0 ] || show
+ok $r "nose drift $got_d um and radial stiffness $got_k N/um = acbb run --json ($want_d, $want_k)"
+[ -n "$got_f" ] && [ "$got_f" = "$want_f" ] && [ "$got_r" = "$want_r" ]
+ok $? "the sets' preloads $got_f and $got_r N = acbb run --json ($want_f, $want_r)"
+# the chart's legend gives its last point: the converged drift
+screen | grep -Eq '^shaft C +[0-9]+\.[0-9]' && screen | grep -qF "Nose drift (axial) [um]  nose drift ${got_d#+}"
+r=$?; [ $r -eq 0 ] || show; ok $r "the temperature along the shaft and the drift-over-time chart ending at the drift"
 [ "$(screen | sed 's/ *$//' | awk 'length > 80' | wc -l)" -eq 0 ]
 ok $? "nothing drawn past 80 columns"
 if command -v gnuplot >/dev/null 2>&1; then
