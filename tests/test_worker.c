@@ -16,7 +16,7 @@
 #include <unistd.h>
 
 #include "tap.h"
-#include "acbb/measure.h"
+#include "acbb/tools/measure.h"
 #include "bench.h"
 #include "worker.h"
 
@@ -183,7 +183,7 @@ static void test_worker_basics(const acbb_scene *s0)
     /* Flat out to steady state equals a direct acbb_sim_run of the scene. */
     acbb_sim *ref = NULL;
     acbb_snapshot rs;
-    acbb_sim_new(s0, &ref, &err);
+    acbb_sim_create(s0, NULL, &ref, &err);
     acbb_sim_run(ref);
     acbb_sim_snapshot(ref, &rs);
     acbb_sim_free(ref);
@@ -390,7 +390,7 @@ static void test_worker_cycles(const acbb_scene *s0, int cycles)
     printf("# cycles: free joined in %.3f s\n", now_s() - t0);
 }
 
-/* ---- the engine's cancel hook (include/acbb/accuracy.h) ---- */
+/* ---- the engine's cancel hook (include/acbb/tools/accuracy.h) ---- */
 
 typedef struct {
     _Atomic int *cancel;
