@@ -234,7 +234,9 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
         return rc;
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
+    sim->setting_up = 1;
     if ((rc = initial_mechanics(sim, err)) == ACBB_OK) rc = acbb_simx_evaluate(sim, err);
+    sim->setting_up = 0;
     sim->setup_ms = acbb_now_ms() - t0;
     if (rc == ACBB_WALL_LIMIT) /* no state yet: nothing to keep */
         return acbb_error_set(err, rc, "wall-clock bound fidelity.max_wall_s = %g s reached "
