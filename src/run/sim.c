@@ -235,7 +235,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
     sim->setting_up = 1;
-    if ((rc = initial_mechanics(sim, err)) == ACBB_OK) rc = acbb_simx_evaluate(sim, err);
+    if ((rc = initial_mechanics(sim, err)) == ACBB_OK && !sim->no_first_state)
+        rc = acbb_simx_evaluate(sim, err);
     sim->setting_up = 0;
     sim->setup_ms = acbb_now_ms() - t0;
     if (rc == ACBB_WALL_LIMIT) /* no state yet: nothing to keep */
@@ -290,8 +291,8 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
-static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
-                               acbb_error *err)
+static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
+                               acbb_sim **out, acbb_error *err)
 {
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))
@@ -304,6 +305,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     sim->skip_stiffness = o->skip_stiffness;
+    sim->no_first_state = member;
     double t0 = acbb_now_ms();
     acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
                                                            : sim_init(sim, s, NULL, err);
@@ -325,9 +327,15 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
                             acbb_error *err)
 {
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o, out, err);
+    acbb_status rc = create_body(s, o, 0, out, err);
     acbb_gsl_leave();
     return rc;
+}
+
+acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                                    acbb_error *err)
+{
+    return create_body(s, o, 1, out, err);
 }
 
 void acbb_sim_free(acbb_sim *sim)

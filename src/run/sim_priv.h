@@ -25,4 +25,10 @@ int acbb_snap_contact_finite(const acbb_contact_loss *c);
 int acbb_snap_all_finite(const double *v, int n);
 double acbb_snap_max_pmax(const acbb_mech_state *ms);
 
+/* acbb_sim_create of a member of a steady set (sim_set.c): its first state
+ * at ambient is not evaluated (the set's set-up evaluates every member's,
+ * under the shaft's displacements); the caller brackets GSL. */
+acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                                    acbb_error *err);
+
 #endif

@@ -408,7 +408,12 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     double t0 = acbb_now_ms();
     for (int k = 0; k < ss->n; k++) {
         acbb_status rc = member_bound(s, t0, &m, err);
-        if (rc == ACBB_OK) rc = acbb_sim_create(&m, o, &ss->b[k], err);
+        /* A steady solve's first state only starts it (sim.c): the set's
+         * evaluates it, so a member skips its own (issue 30). */
+        int steady = s->heating && s->thermal_mode == ACBB_THERMAL_STEADY;
+        if (rc == ACBB_OK)
+            rc = steady ? acbb_simx_create_member(&m, o, &ss->b[k], err)
+                        : acbb_sim_create(&m, o, &ss->b[k], err);
         if (rc == ACBB_WALL_LIMIT) /* the user's bound, not the member's share of it */
             return setup_wall(s, err);
         if (rc != ACBB_OK) return rc;
