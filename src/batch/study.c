@@ -15,6 +15,7 @@
 #include "acbb/study.h"
 #include "acbb/units.h"
 #include "study_priv.h"
+#include "sim_priv.h"
 #include "cancel.h"
 
 #define BASE_RPM 15000.0
@@ -55,7 +56,9 @@ static void record(acbb_study_point *p, const acbb_snapshot *s)
 static int record_hook(void *ctx, const acbb_sim *sim)
 {
     acbb_study_point *p = ctx;
-    acbb_sim_snapshot(sim, &p->last);
+    /* Every step's losses and loads; the rating life is read at the end
+     * (the batch's final snapshot replaces p->last), so a step skips it. */
+    acbb_simx_snapshot_step(sim, &p->last);
     if (p->last.iteration == 0) p->first = p->last;
     record(p, &p->last);
     return 0;

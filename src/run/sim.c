@@ -399,7 +399,9 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
 
 /* ---- snapshot (the per-ball and squeeze views: sim_snapshot.c) ---- */
 
-void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
+/* full 0: o holds this Sim's snapshot already; the rating life (40 % of
+ * a snapshot) and the clearing of the whole record (30 %) are left out. */
+static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
 {
     const acbb_network *nw = &sim->nw;
     if (sim->set) {
@@ -413,7 +415,7 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
         }
         return;
     }
-    memset(o, 0, sizeof *o);
+    if (full) memset(o, 0, sizeof *o);
     o->state = sim->run.state;
     o->status = sim->run.status;
     snprintf(o->message, sizeof o->message, "%s", sim->run.msg);
@@ -463,8 +465,15 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
-    acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
+    if (full) acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
     o->n_bearings = 1;
+}
+
+void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o) { snapshot(sim, o, 1); }
+
+void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o)
+{
+    snapshot(sim, o, sim->run.iter == 0);
 }
 
 acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out)

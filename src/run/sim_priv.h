@@ -25,6 +25,12 @@ int acbb_snap_contact_finite(const acbb_contact_loss *c);
 int acbb_snap_all_finite(const double *v, int n);
 double acbb_snap_max_pmax(const acbb_mech_state *ms);
 
+/* acbb_sim_snapshot for a drive hook (sim.h), which sees iteration 0
+ * first: there the whole snapshot; after a step o holds this Sim's and
+ * every value is refreshed but the rating life (a set's whole). For a
+ * hook that reads every step's losses and loads (the study's, study.c). */
+void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o);
+
 /* acbb_sim_create of a member of a steady set (sim_set.c): its first state
  * at ambient is not evaluated (the set's set-up evaluates every member's,
  * under the shaft's displacements); the caller brackets GSL. */
