@@ -79,6 +79,22 @@ static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_
     return ACBB_OK;
 }
 
+static const acbb_warm *point_warm(void *ctx, size_t i)
+{
+    return ((const study_batch *)ctx)->pts[i]->warm_from;
+}
+
+/* On the worker, point i's alone: a base point keeps its state. */
+static void point_keep(void *ctx, size_t i, acbb_warm *w)
+{
+    acbb_study_point *p = ((study_batch *)ctx)->pts[i];
+    if (p->warm_from || p->warm) {
+        acbb_warm_free(w);
+        return;
+    }
+    p->warm = w;
+}
+
 static void point_step(void *ctx, size_t i, const acbb_sim *sim)
 {
     record_hook(((study_batch *)ctx)->pts[i], sim);
@@ -117,7 +133,7 @@ void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
     /* No study item reads a stiffness (issue 30 lever 2: skip the probes). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
                           .step = point_step, .done = point_done, .ctx = &b,
-                          .skip_stiffness = 1 };
+                          .skip_stiffness = 1, .warm = point_warm, .keep = point_keep };
     acbb_batch_run(n, &o, NULL);
 }
 
@@ -395,7 +411,10 @@ const acbb_scene *acbb_study_scene(const acbb_study *s) { return &s->base; }
 
 void acbb_study_free_runs(acbb_study_runs *r)
 {
-    for (size_t i = 0; r->all && i < r->n; i++) free(r->all[i].traj);
+    for (size_t i = 0; r->all && i < r->n; i++) {
+        free(r->all[i].traj);
+        acbb_warm_free(r->all[i].warm);
+    }
     free(r->all);
     r->all = NULL;
     r->n = 0;

@@ -185,8 +185,14 @@ static acbb_status fix_preload(acbb_sim *sim, acbb_error *err)
 }
 
 /* Room-temperature mechanics at speed, reached by continuation in speed. */
-static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
+static acbb_status initial_mechanics(acbb_sim *sim, const acbb_mech_state *warm,
+                                     acbb_error *err)
 {
+    if (warm) { /* a converged state of a scene that differs in values only */
+        acbb_mech_state_copy(&sim->ms, warm);
+        acbb_mech_adopt_state(sim->mech, &sim->ms);
+        return ACBB_OK;
+    }
     acbb_status rc = acbb_mech_init_state(sim->mech, &sim->ms, err);
     if (rc != ACBB_OK) return rc;
     for (int k = 1; k <= 4 && sim->s.inner_speed > 0.0; k++) {
@@ -198,7 +204,7 @@ static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
 }
 
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
-                            acbb_error *err)
+                            const acbb_warm *w, acbb_error *err)
 {
     /* The scene resolved once (fidelity.h acbb_scene_resolve); the run
      * then applies its operating point to its own copy. */
@@ -232,10 +238,13 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     arm_bound(sim); /* now that the dynamic workspace exists */
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
+    if (w && w->n_nodes != sim->nw.n) w = NULL;
+    if (w) T_warm = w->T;
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
     sim->setting_up = 1;
-    if ((rc = initial_mechanics(sim, err)) == ACBB_OK && !sim->no_first_state)
+    rc = initial_mechanics(sim, w ? &w->ms : NULL, err);
+    if (rc == ACBB_OK && !sim->no_first_state)
         rc = acbb_simx_evaluate(sim, err);
     sim->setting_up = 0;
     sim->setup_ms = acbb_now_ms() - t0;
@@ -291,9 +300,18 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     return ACBB_OK;
 }
 
-static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
-                               acbb_sim **out, acbb_error *err)
+/* w can start a Sim of scene s: saved from a converged single bearing with
+ * the same network, balls, model and heating (acbb_simx_warm_save). */
+static int warm_fits(const acbb_warm *w, const acbb_scene *s)
 {
+    return w && s->set_arrangement == ACBB_SET_SINGLE && s->network == w->network
+        && s->n_balls == w->n_balls && s->model == w->model && s->heating == w->heating;
+}
+
+static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
+                               const acbb_warm *w, acbb_sim **out, acbb_error *err)
+{
+    if (!warm_fits(w, s)) w = NULL;
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))
         || !(sim->best = malloc(sizeof *sim->best))) {
@@ -308,10 +326,15 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
     sim->no_first_state = member;
     double t0 = acbb_now_ms();
     acbb_status rc = s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
-                                                           : sim_init(sim, s, NULL, err);
+                                                           : sim_init(sim, s, NULL, w, err);
     if (sim->set) sim->setup_ms = acbb_now_ms() - t0; /* sim_init times its own */
     if (rc != ACBB_OK) {
         acbb_sim_free(sim);
+        /* A warm start that failed starts again cold (unless stopped). */
+        if (w && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
+            if (err) *err = (acbb_error){ 0 };
+            return create_body(s, o, member, NULL, out, err);
+        }
         return rc;
     }
     *out = sim;
@@ -327,7 +350,7 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
                             acbb_error *err)
 {
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o, 0, out, err);
+    acbb_status rc = create_body(s, o, 0, NULL, out, err);
     acbb_gsl_leave();
     return rc;
 }
@@ -335,7 +358,29 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                                     acbb_error *err)
 {
-    return create_body(s, o, 1, out, err);
+    return create_body(s, o, 1, NULL, out, err);
+}
+
+acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
+                                  const acbb_warm *w, acbb_sim **out, acbb_error *err)
+{
+    acbb_gsl_enter();
+    acbb_status rc = create_body(s, o, 0, w, out, err);
+    acbb_gsl_leave();
+    return rc;
+}
+
+acbb_warm *acbb_simx_warm_save(const acbb_sim *sim)
+{
+    if (sim->set || sim->run.state != ACBB_RUN_CONVERGED) return NULL;
+    acbb_warm *w = malloc(sizeof *w);
+    if (!w) return NULL;
+    *w = (acbb_warm){ .network = sim->s.network, .model = sim->s.model,
+                      .n_balls = sim->s.n_balls, .heating = sim->s.heating,
+                      .n_nodes = sim->nw.n };
+    memcpy(w->T, sim->T, sizeof w->T);
+    acbb_mech_state_copy(&w->ms, &sim->ms);
+    return w;
 }
 
 void acbb_sim_free(acbb_sim *sim)
@@ -374,7 +419,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
     fresh->skip_stiffness = sim->skip_stiffness;
-    acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
+    acbb_status rc = sim_init(fresh, s, keep ? T : NULL, NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);
         free(fresh);

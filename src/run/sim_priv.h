@@ -4,6 +4,7 @@
 #define ACBB_SIM_PRIV_H
 
 #include "acbb/sim.h"
+#include "acbb/batch.h"
 #include "mechanics.h"
 #include "expansion.h"
 #include "losses.h"
@@ -30,6 +31,24 @@ double acbb_snap_max_pmax(const acbb_mech_state *ms);
  * every value is refreshed but the rating life (a set's whole). For a
  * hook that reads every step's losses and loads (the study's, study.c). */
 void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o);
+
+/* A converged single bearing's temperatures and mechanics (batch.h
+ * acbb_warm), the start of a run of a scene that differs in values only:
+ * the same network, balls, model and heating, or it is not used. */
+struct acbb_warm {
+    acbb_network_kind network;
+    acbb_model_level model;
+    bool heating;
+    int n_balls, n_nodes;
+    double T[ACBB_MAX_NODES];
+    acbb_mech_state ms;
+};
+/* NULL when sim is not a converged single bearing (or out of memory). */
+acbb_warm *acbb_simx_warm_save(const acbb_sim *sim);
+/* acbb_sim_create started from w when it fits (NULL: cold); a warm start
+ * that fails starts again cold. */
+acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
+                                  const acbb_warm *w, acbb_sim **out, acbb_error *err);
 
 /* acbb_sim_create of a member of a steady set (sim_set.c): its first state
  * at ambient is not evaluated (the set's set-up evaluates every member's,
