@@ -463,7 +463,11 @@ static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
     if (full) memset(o, 0, sizeof *o);
     o->state = sim->run.state;
     o->status = sim->run.status;
-    snprintf(o->message, sizeof o->message, "%s", sim->run.msg);
+    /* snprintf's "%s", truncation included, without its formatting (a
+     * study's hook takes a snapshot every step) */
+    size_t len = strnlen(sim->run.msg, sizeof o->message - 1);
+    memcpy(o->message, sim->run.msg, len);
+    o->message[len] = '\0';
     o->iteration = sim->run.iter;
     o->time = sim->run.time;
     o->dt = sim->run.dt;
