@@ -630,8 +630,44 @@ static void test_no_equilibrium(void)
     acbb_spindle_sim_free(sp);
 }
 
+/* Two opposed pairs, each axially held (a fixed rear, or a floating one
+ * whose sleeve sticks), under no nose load: by symmetry (each DB pair
+ * pushes equally both ways at the station) the solution is zero
+ * displacement. The shaft's Newton then compares the supports' noise
+ * (1e-18 m) with the displacements themselves (the same noise): a purely
+ * relative test never passes. It stops at the absolute floor 100
+ * mech_tol x 1 um (1e-12 m: the relative tolerance at the set solve's
+ * unit of displacement, set_mech.c), so the nose's u, w and theta are 0
+ * to that floor. */
+static void test_zero_load(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const double mu[2] = { 0.0, 40.0 };
+    for (int i = 0; i < 3; i++) {
+        if (!spindle_scene(&s, NULL, 0)) return;
+        s.axial_load = s.radial_load = 0.0;
+        if (i > 0) {
+            s.spindle_rear_support = ACBB_REAR_FLOATING;
+            s.spindle_rear_friction = mu[i - 1];
+        }
+        char what[80];
+        snprintf(what, sizeof what, "zero load, rear %s (friction %g N)",
+                 i ? "floating DB" : "fixed DB", i ? mu[i - 1] : 0.0);
+        acbb_sim *sim = run_public(&s, &o, what);
+        if (!sim) continue;
+        const double floor = 100.0 * s.mech_tol * 1e-6;
+        ok(fabs(o.spindle.nose_u) <= floor && fabs(o.spindle.nose_w) <= floor
+           && fabs(o.spindle.nose_theta) <= floor, "%s: the nose at 0 to 1e-12 (u %.2g m, w "
+           "%.2g m, theta %.2g rad)", what, o.spindle.nose_u, o.spindle.nose_w,
+           o.spindle.nose_theta);
+        acbb_sim_free(sim);
+    }
+}
+
 int main(void)
 {
+    test_zero_load();
     test_rigid_one_support();
     test_balance();
     test_nose_stiffness();

@@ -11,13 +11,18 @@
  * default), so a step 1e-4 of a micron-scale contact deflection keeps the
  * noise at about 1e-4 of the tangent. For the same reason the shaft's
  * Newton stops at a step 100 mech_tol of its displacements, not at the
- * beam's default 1e-11. */
+ * beam's default 1e-11, or at an absolute step of 100 mech_tol x 1 um
+ * (1e-12 m: that tolerance at the set solve's unit of displacement,
+ * set_mech.c's um) where the displacements themselves are noise (a
+ * symmetric spindle under no load: the solution is 0, the supports'
+ * noise about 1e-18 m). */
 #include <math.h>
 #include <string.h>
 #include "spindle_priv.h"
 #include "sim_struct.h"
 
 #define H_D 1e-9               /* m, the supports' difference step (radial, axial) */
+#define FLOOR_SCALE 1e-6       /* m: the set solve's unit of displacement (set_mech.c) */
 
 /* The station's reaction f on the shaft at its displacement d: the set's
  * shaft held at (u + shift - slip, w, -theta) (u free when the set is not
@@ -94,6 +99,7 @@ acbb_status acbb_spindle_beam_build(acbb_spindle_sim *sp, acbb_error *err)
                                            &sp->beam, err);
     if (rc != ACBB_OK) return rc;
     acbb_shaft_beam_set_tol(sp->beam, 100.0 * s->mech_tol);
+    acbb_shaft_beam_set_floor(sp->beam, 100.0 * s->mech_tol * FLOOR_SCALE);
     double dm = acbb_mech_geometry(sp->st[ACBB_FRONT].ss->b[0]->mech)->dm;
     sp->h_d = H_D;
     sp->h_theta = H_D / (0.5 * dm);
