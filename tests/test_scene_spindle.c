@@ -114,6 +114,11 @@ static void test_rear(void)
     expect("spindle.rear_arrangement=DB", "spindle.rear_arrangement = DB with rear_preload_N = 0: "
            "an opposed rear set needs a preload > 0 N (its spacers)");
     expect("spindle.rear_arrangement=DB;spindle.rear_preload_N=200", "");
+    expect("set.arrangement=single;spindle.rear_support=fixed", "set.arrangement = single, "
+           "spindle.rear_arrangement = single, rear_support = fixed, rear_preload_N = 0: the "
+           "two one-way sets face each other (an \"O\" spindle, the rear set turned round) and "
+           "locate the shaft only when preloaded against each other: rear_preload_N > 0 N");
+    expect("set.arrangement=single;spindle.rear_support=fixed;spindle.rear_preload_N=100", "");
     expect("set.arrangement=DT", "set.arrangement = DT with spindle.rear_support = spring: the "
            "front set is then the shaft's only axial location and must carry thrust both ways "
            "(DB, DF, DBT or QBC), or use spindle.rear_support = fixed");
@@ -121,11 +126,11 @@ static void test_rear(void)
            "spindle.rear_support = floating: the front set is then the shaft's only axial "
            "location and must carry thrust both ways (DB, DF, DBT or QBC), or use "
            "spindle.rear_support = fixed");
-    expect("set.arrangement=DT;spindle.rear_support=fixed", "");
+    expect("set.arrangement=DT;spindle.rear_support=fixed;spindle.rear_preload_N=100", "");
     /* One front bearing under a radial load without thrust: the rear set
      * carries the shaft too (a lone bearing would be refused). */
     expect("set.arrangement=single;mounting.preload=force;spindle.rear_support=fixed;"
-           "operating.radial_load_N=500;operating.axial_load_N=0", "");
+           "spindle.rear_preload_N=100;operating.radial_load_N=500;operating.axial_load_N=0", "");
     /* A DBT front set (3 x 15 mm, 12.5 to 57.5 mm) on the 60 mm seat. */
     expect("set.arrangement=DBT;spindle.front_x_mm=35", "");
 }
@@ -245,6 +250,8 @@ static void test_inactive(void)
              "spindle.rear_spring_N", true, "spindle.rear_spring_N");
     inactive(k_base, "spindle.rear_preload_N=100", "spindle.rear_preload_N", true,
              "spindle.rear_preload_N");
+    inactive(k_base, "spindle.rear_preload_N=100;spindle.rear_support=fixed",
+             "spindle.rear_preload_N", false, "");
     inactive(k_base, "spindle.rear_spacing_mm=20", "spindle.rear_spacing_mm", true,
              "spindle.rear_spacing_mm");
     inactive(k_base, "spindle.rear_spacing_mm=20;spindle.rear_arrangement=DT",

@@ -665,8 +665,61 @@ static void test_zero_load(void)
     }
 }
 
+/* A single front bearing with a fixed single rear: the rear set is
+ * mirrored (docs/spindle.md "Rear set"), so the two make an "O" pair
+ * across the spindle preloaded by rear_preload_N (100 N): under no nose
+ * thrust each carries thrust of opposite sign, about the preload; under
+ * 300 N the front's thrust grows, the rear's falls, of opposite signs
+ * still, and they sum to the nose thrust (the free body of the shaft).
+ * Before, both faced the same way: at 300 N they shared it as a tandem
+ * (+151/+149 N), at 0 every ball unloaded. */
+static void test_single_pair(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const double Fa[2] = { 0.0, 300.0 };
+    double front0 = 0.0;
+    acbb_error err = { "" };
+    if (!spindle_scene(&s, NULL, 0)) return;
+    s.set_arrangement = s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_preload = 0.0;
+    ok(acbb_scene_validate(&s, &err) == ACBB_EINVAL && strstr(err.msg, "rear_preload_N > 0 N"),
+       "single front, fixed single rear, no preload: refused: %s", err.msg);
+    for (int i = 0; i < 2; i++) {
+        if (!spindle_scene(&s, NULL, 0)) return;
+        s.set_arrangement = ACBB_SET_SINGLE;
+        s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+        s.spindle_rear_preload = 100.0;
+        s.axial_load = Fa[i];
+        s.radial_load = 0.0;
+        char what[80];
+        snprintf(what, sizeof what, "single front, fixed single rear, %g N thrust", Fa[i]);
+        acbb_sim *sim = run_public(&s, &o, what);
+        if (!sim) continue;
+        const acbb_spindle_set_view *v = o.spindle.sets;
+        const acbb_set_mech *r = &sim->spindle->st[ACBB_REAR].ss->sm;
+        ok(r->orient[0] == -1, "%s: the rear bearing faces the other way (%+d)", what,
+           r->orient[0]);
+        ok(v[0].axial_N > 0.0 && v[1].axial_N < 0.0, "%s: the sets' thrusts have opposite "
+           "signs (%.2f, %.2f N)", what, v[0].axial_N, v[1].axial_N);
+        ok(fabs(v[0].axial_N + v[1].axial_N - Fa[i]) <= 1e-9 * 300.0, "%s: ... and sum to "
+           "the nose thrust (%.9g N)", what, v[0].axial_N + v[1].axial_N);
+        if (i == 0) {
+            front0 = v[0].axial_N;
+            ok(front0 > 50.0 && front0 < 100.0, "%s: each carries the preload, less what "
+               "the speed's centrifugal force and both sets' compliance take (%.2f N of "
+               "100 N)", what, front0);
+        } else
+            ok(v[0].axial_N > front0 && v[0].axial_N < front0 + 300.0, "%s: the front "
+               "carries more than at no thrust, less than the preload plus the thrust "
+               "(%.2f N)", what, v[0].axial_N);
+        acbb_sim_free(sim);
+    }
+}
+
 int main(void)
 {
+    test_single_pair();
     test_zero_load();
     test_rigid_one_support();
     test_balance();

@@ -309,7 +309,10 @@ static void front_scene(const acbb_scene *s, const double L[3], acbb_scene *f)
 }
 
 /* The rear set: the same bearing in the rear arrangement, a pair held by
- * its rigid (spacer) preload. */
+ * its rigid (spacer) preload. A fixed rear set is mirrored (read from the
+ * rear end: docs/spindle.md "Rear set"): with the front set it makes an
+ * "O" spindle that locates the shaft both ways; a one-way rear set so
+ * turned is preloaded against the front by rear_preload_N. */
 static void rear_scene(const acbb_scene *s, const double L[3], acbb_scene *r)
 {
     front_scene(s, L, r);
@@ -319,6 +322,7 @@ static void rear_scene(const acbb_scene *s, const double L[3], acbb_scene *r)
     r->set_inner_spacer = r->set_outer_spacer = 0.0;
     r->preload = ACBB_PRELOAD_DISPLACEMENT;
     if (s->spindle_rear_preload > 0.0) r->preload_force = s->spindle_rear_preload;
+    r->set_mirrored = s->spindle_rear_support == ACBB_REAR_FIXED;
 }
 
 static acbb_status make_set(const acbb_scene *m, const acbb_sim_opts *o, int k,

@@ -188,6 +188,17 @@ static acbb_status rule_rear(const acbb_scene *s, acbb_error *err)
                               "the centre distance is at least one width (0 = adjacent)",
                               show(s, "spindle", "rear_spacing_mm", a),
                               show(s, "bearing", "width_mm", b));
+    bool across = s->spindle_rear_support == ACBB_REAR_FIXED && !opposed(s->set_arrangement)
+               && !opposed(s->spindle_rear_arrangement);
+    if (across && !(s->spindle_rear_preload > 0.0))
+        return acbb_error_set(err, ACBB_EINVAL, "set.arrangement = %s, spindle.rear_arrangement "
+                              "= %s, rear_support = fixed, rear_preload_N = %s: the two one-way "
+                              "sets face each other (an \"O\" spindle, the rear set turned "
+                              "round) and locate the shaft only when preloaded against each "
+                              "other: rear_preload_N > 0 N",
+                              acbb_set_arrangement_name(s->set_arrangement),
+                              acbb_set_arrangement_name(s->spindle_rear_arrangement),
+                              show(s, "spindle", "rear_preload_N", a));
     if (opposed(s->spindle_rear_arrangement) && !(s->spindle_rear_preload > 0.0))
         return acbb_error_set(err, ACBB_EINVAL, "spindle.rear_arrangement = %s with "
                               "rear_preload_N = %s: an opposed rear set needs a preload > 0 N "
@@ -389,9 +400,12 @@ size_t acbb_sf_spindle_inactive(const acbb_scene *s, const acbb_scene *d,
               && changed(s, d, "spindle", "rear_friction_N"),
           { "rear_friction_N", "the sleeve slides under spindle.rear_support = floating only",
             "spindle.rear_friction_N" } },
-        { sp && !opposed(s->spindle_rear_arrangement) && changed(s, d, "spindle", "rear_preload_N"),
-          { "rear_preload_N", "a one-way rear set (single, DT) has no spacer preload; "
-            "rear_preload_N acts on a DB, DF, DBT or QBC rear set", "spindle.rear_preload_N" } },
+        { sp && !opposed(s->spindle_rear_arrangement)
+              && s->spindle_rear_support != ACBB_REAR_FIXED
+              && changed(s, d, "spindle", "rear_preload_N"),
+          { "rear_preload_N", "a one-way rear set (single, DT) that is not fixed has no "
+            "preload; rear_preload_N acts on a DB, DF, DBT or QBC rear set, or on a fixed "
+            "one-way rear set (preloaded against the front)", "spindle.rear_preload_N" } },
         { sp && s->spindle_rear_arrangement == ACBB_SET_SINGLE
               && changed(s, d, "spindle", "rear_spacing_mm"),
           { "rear_spacing_mm", "spindle.rear_arrangement = single: one rear bearing has no "
