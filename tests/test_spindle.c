@@ -754,8 +754,51 @@ static void test_friction_sweep(void)
     }
 }
 
+/* A steady runaway names the hottest node over the limit: with 2 kW on
+ * the rotor and no coolant the shaft under the motor is far hotter than
+ * any bearing node, and the message names that shaft cell by its x (was:
+ * the first set node over the limit, a housing node at a fraction of
+ * it). The spindle's own cells are named by part and x: the shaft's
+ * first cell (0 to 25 mm), a housing cell, a coolant cell. */
+static void test_runaway_names(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    const char *edits[] = { "fidelity.thermal_mode=steady" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.motor_rotor_loss = 2000.0;
+    s.motor_x0 = 0.12, s.motor_x1 = 0.24;
+    s.coolant_flow = 2.0 / 60000.0;
+    s.coolant_inlet_dT = 0.0;
+    s.jacket_x0 = 0.10, s.jacket_x1 = 0.26;
+    s.jacket_hA = 1.0;
+    s.coolant_cells = 8;
+    acbb_sim *sim = create_run(&s, &o, "runaway, steady");
+    if (!sim) return;
+    double x = 0.0, T = 0.0;
+    const char *m = strstr(o.message, "thermal runaway: shaft cell at x = ");
+    ok(o.status == ACBB_RUNAWAY && m && sscanf(m, "thermal runaway: shaft cell at x = %lf mm "
+       "reached %lf C", &x, &T) == 2 && x > 120.0 && x < 240.0, "runaway, steady: the "
+       "shaft cell under the motor is named: %s", o.message);
+    char name[80];
+    const acbb_spindle_net *net = sim->spindle->net;
+    acbb_spindle_net_node_name(net, 0, name, sizeof name);
+    ok(strcmp(name, "shaft cell at x = 12.5 mm") == 0, "the shaft's first cell: %s", name);
+    int n_own = acbb_spindle_net_own_nodes(net), housing = 0, coolant = 0;
+    for (int i = 0; i < n_own; i++) {
+        acbb_spindle_net_node_name(net, i, name, sizeof name);
+        housing |= strncmp(name, "housing cell at x = ", 20) == 0;
+        coolant |= strcmp(name, "coolant cell at x = 100-120 mm") == 0;
+    }
+    ok(housing && coolant, "housing and coolant cells named (the first coolant cell: 100-120 "
+       "mm)");
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
+    test_runaway_names();
     test_friction_sweep();
     test_single_pair();
     test_zero_load();

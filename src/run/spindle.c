@@ -180,10 +180,49 @@ static void plant_restore(void *ctx, int slot)
     gather(sp, 0.0);
 }
 
-/* The sets' limits (their nodes named), then the spindle's own cells. */
+/* The hottest node over thermal.temp_limit_C: a spindle cell (named by
+ * its part and x) or a set's bearing node (named by set, bearing and
+ * node, as a set names it); *T_max its temperature. 0: none over. A
+ * bearing node that became a spindle cell reads the cell's temperature
+ * and is not hotter than it: the cell is named. */
+static int hottest(const acbb_spindle_sim *sp, char *name, size_t size, double *T_max)
+{
+    int found = 0;
+    *T_max = sp->s.temp_limit_C;
+    for (int i = 0; i < acbb_spindle_net_own_nodes(sp->net); i++)
+        if (sp->T[i] > *T_max) {
+            *T_max = sp->T[i];
+            acbb_spindle_net_node_name(sp->net, i, name, size);
+            found = 1;
+        }
+    for (int k = 0; k < 2; k++) {
+        const acbb_set_sim *ss = sp->st[k].ss;
+        for (int b = 0; b < ss->n; b++) {
+            const acbb_network *nw = &ss->b[b]->nw;
+            for (int i = 0; i < nw->n; i++)
+                if (ss->b[b]->T[i] > *T_max) {
+                    *T_max = ss->b[b]->T[i];
+                    snprintf(name, size, "%s set: bearing %d node %s", set_name[k], b,
+                             nw->names[i]);
+                    found = 1;
+                }
+        }
+    }
+    return found;
+}
+
+/* The hottest node over the temperature limit, then the sets' other
+ * limits (contact pressure). */
 static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
 {
     acbb_spindle_sim *sp = ctx;
+    char name[160];
+    double T;
+    if (hottest(sp, name, sizeof name, &T)) {
+        snprintf(what, size, "%s reached %.1f C (limit thermal.temp_limit_C = %.0f C) at t = "
+                 "%.0f s", name, T, sp->s.temp_limit_C, t);
+        return ACBB_RUNAWAY;
+    }
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
         char d[200];
@@ -193,13 +232,6 @@ static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
             return ACBB_RUNAWAY;
         }
     }
-    for (int i = 0; i < sp->n; i++)
-        if (sp->T[i] > sp->s.temp_limit_C) {
-            snprintf(what, size, "the spindle's shaft, housing or coolant (network node %d) "
-                     "reached %.1f C (limit thermal.temp_limit_C = %.0f C) at t = %.0f s", i,
-                     sp->T[i], sp->s.temp_limit_C, t);
-            return ACBB_RUNAWAY;
-        }
     return ACBB_OK;
 }
 
