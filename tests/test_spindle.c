@@ -598,23 +598,31 @@ static void test_floating_rear(void)
     }
 }
 
+/* The test spindle heated, in the thermal mode `mode` (an edit), built
+ * as a spindle sim (not yet run); NULL when it does not build. */
+static acbb_spindle_sim *heated_spindle(const char *mode, const char *what)
+{
+    static acbb_scene s, r;
+    const char *edits[] = { mode };
+    if (!spindle_scene(&s, edits, 1)) return NULL;
+    s.heating = 1;
+    acbb_scene_resolve(&s, &r, NULL);
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+       "%s: spindle builds: %s", what, err.msg);
+    return sp;
+}
+
 /* A nose load far past anything the bearings can take (5 MN, put in
  * between two steps: a set's ball speeds find no solution there) ends the
  * run with a named status whose message names the set; the state before
  * the step is kept (the loads the sets carried, the view finite). */
 static void test_no_equilibrium(void)
 {
-    static acbb_scene s, r;
     static acbb_snapshot o, before;
-    const char *edits[] = { "fidelity.thermal_mode=transient" };
-    if (!spindle_scene(&s, edits, 1)) return;
-    s.heating = 1;
-    acbb_scene_resolve(&s, &r, NULL);
-    acbb_error err = { "" };
-    acbb_spindle_sim *sp = NULL;
-    if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
-            "no equilibrium: spindle builds: %s", err.msg))
-        return;
+    acbb_spindle_sim *sp = heated_spindle("fidelity.thermal_mode=transient", "no equilibrium");
+    if (!sp) return;
     acbb_spindle_sim_step(sp);
     acbb_spindle_sim_snapshot(sp, &before);
     sp->s.radial_load = 5e6;
@@ -796,8 +804,45 @@ static void test_runaway_names(void)
     acbb_sim_free(sim);
 }
 
+/* The nose drift (docs/spindle.md "Nose drift"): the nose's axial move
+ * against the housing from the cold first state, the shaft's thermal
+ * growth in front of the front set (nose_drift_thermal) less the change
+ * of the nose's elastic displacement u since then (the front set's
+ * contacts stiffen as its rings warm: u moves). Checked against its
+ * components in a heated steady run, where the two differ by more than
+ * 1 %; at the first state (cold) the drift is 0 and nose_u_cold is nose_u;
+ * isothermal, the drift is the elastic part alone. */
+static void test_nose_drift(void)
+{
+    static acbb_scene s;
+    static acbb_snapshot o;
+    acbb_spindle_sim *sp = heated_spindle("fidelity.thermal_mode=steady", "nose drift");
+    if (!sp) return;
+    acbb_spindle_sim_snapshot(sp, &o);
+    const acbb_spindle_view *v = &o.spindle;
+    ok(v->nose_u_cold == v->nose_u && v->nose_drift_axial == v->nose_drift_thermal,
+       "nose drift: the first state is the cold reference (u %.4f um, drift %.4f um)",
+       v->nose_u * 1e6, v->nose_drift_axial * 1e6);
+    ok(run_spindle(sp, &o), "nose drift: steady converged: %s", o.message);
+    double elastic = v->nose_u - v->nose_u_cold;
+    is_close(v->nose_drift_axial, v->nose_drift_thermal - elastic, 1e-12, 0.0,
+             "nose drift = thermal growth less the change of nose_u, m");
+    ok(v->nose_drift_thermal > 0.0 && fabs(elastic) > 0.01 * v->nose_drift_thermal,
+       "nose drift: thermal %.4f um, elastic %.4f um (more than 1 %% of it), drift %.4f um",
+       v->nose_drift_thermal * 1e6, elastic * 1e6, v->nose_drift_axial * 1e6);
+    acbb_spindle_sim_free(sp);
+    /* isothermal: no growth; the first state is the converged one */
+    if (!spindle_scene(&s, NULL, 0)) return;
+    acbb_sim *sim = run_public(&s, &o, "nose drift, isothermal");
+    if (!sim) return;
+    ok(v->nose_drift_thermal == 0.0 && fabs(v->nose_drift_axial) < 1e-12, "nose drift, "
+       "isothermal: 0 (%.3g m)", v->nose_drift_axial);
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
+    test_nose_drift();
     test_runaway_names();
     test_friction_sweep();
     test_single_pair();

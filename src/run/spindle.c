@@ -385,6 +385,26 @@ static acbb_status network(acbb_spindle_sim *sp, acbb_error *err)
     return ACBB_OK;
 }
 
+/* The first state, cold (every node at the ambient): evaluated again
+ * until the nose stops moving (each evaluation's ball speeds are the one
+ * before's: the first is a start), to COLD_TOL or COLD_MAX evaluations;
+ * its nose_u is the nose drift's reference (spindle_view.c). */
+#define COLD_TOL 1e-12 /* m: the shaft solve's floor (spindle_mech.c) */
+#define COLD_MAX 20
+static acbb_status cold_state(acbb_spindle_sim *sp, acbb_error *err)
+{
+    acbb_status rc = evaluate(sp, 0, 0, err);
+    double u = sp->res.nose[0];
+    for (int i = 0; i < COLD_MAX && rc == ACBB_OK; i++) {
+        rc = evaluate(sp, 0, 0, err);
+        double du = sp->res.nose[0] - u;
+        u = sp->res.nose[0];
+        if (fabs(du) <= COLD_TOL) break;
+    }
+    sp->nose_u_cold = u;
+    return rc;
+}
+
 static acbb_status set_up(acbb_spindle_sim *sp, const acbb_sim_opts *o, acbb_error *err)
 {
     const acbb_scene *s = &sp->s;
@@ -403,7 +423,7 @@ static acbb_status set_up(acbb_spindle_sim *sp, const acbb_sim_opts *o, acbb_err
     if (rc != ACBB_OK) return rc;
     acbb_spindle_sim_deadline(sp, s->max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * s->max_wall_s
                                                       : 0.0);
-    rc = evaluate(sp, 0, 0, err);
+    rc = cold_state(sp, err);
     acbb_spindle_sim_deadline(sp, 0.0); /* the run loop arms each step's */
     return rc;
 }
