@@ -17,16 +17,18 @@
 
 /* A DB pair of 7008C (bore 40, OD 68, width 15 mm) at 30 mm, a single rear
  * bearing at 230 mm; shaft 60 + 150 + 40 mm (od 40 under the bearings),
- * housing from 10 to 245 mm with a 68 mm bore. */
+ * housing from 10 to 245 mm with a 68 mm bore; the bearings' own shaft
+ * bore and housing outer diameter the spindle's at the front set. */
 static const char k_base[] =
     "[set]\narrangement = DB\n"
-    "[mounting]\npreload = displacement\npreload_N = 300\n"
+    "[mounting]\npreload = displacement\npreload_N = 300\nshaft_bore_mm = 20\n"
     "[shaft]\nsegments = 3\n"
     "seg1_length_mm = 60\nseg1_od_mm = 40\nseg1_bore_mm = 20\n"
     "seg2_length_mm = 150\nseg2_od_mm = 50\nseg2_bore_mm = 20\n"
     "seg3_length_mm = 40\nseg3_od_mm = 40\nseg3_bore_mm = 20\n"
     "[housing]\nsegments = 1\nx0_mm = 10\n"
     "seg1_length_mm = 235\nseg1_od_mm = 120\nseg1_bore_mm = 68\n"
+    "[surroundings]\nhousing_outer_diameter_mm = 120\n"
     "[spindle]\nfront_x_mm = 30\nrear_x_mm = 230\n";
 
 /* The base with `edits` ("key=value;key=value") applied, then the rules:
@@ -114,6 +116,14 @@ static void test_rear(void)
     expect("spindle.rear_arrangement=DB", "spindle.rear_arrangement = DB with rear_preload_N = 0: "
            "an opposed rear set needs a preload > 0 N (its spacers)");
     expect("spindle.rear_arrangement=DB;spindle.rear_preload_N=200", "");
+    expect("mounting.shaft_bore_mm=0", "mounting.shaft_bore_mm = 0 with shaft.seg1_bore_mm = 20 "
+           "under the front set: the bearings' fits and shaft conduction use "
+           "mounting.shaft_bore_mm (0 = solid), so it must be the spindle shaft's bore there "
+           "(within 0.01 mm)");
+    expect("surroundings.housing_outer_diameter_mm=0;housing.seg1_od_mm=140",
+           "surroundings.housing_outer_diameter_mm = 0 (120 mm) with housing.seg1_od_mm = 140 "
+           "under the front set: the bearings' housing network uses the [surroundings] housing, "
+           "so its outer diameter must be the spindle housing's there (within 0.01 mm)");
     expect("set.arrangement=single;spindle.rear_support=fixed", "set.arrangement = single, "
            "spindle.rear_arrangement = single, rear_support = fixed, rear_preload_N = 0: the "
            "two one-way sets face each other (an \"O\" spindle, the rear set turned round) and "

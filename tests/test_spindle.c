@@ -39,6 +39,8 @@ static int spindle_scene(acbb_scene *s, const char *const *more, int n_more)
     s->shaft_n_div = 4;
     s->housing_segments = 1; /* its bore the bearings' outer diameter (the seats) */
     s->housing_seg[0] = (acbb_segment){ 0.32, 0.120, s->outer_diameter };
+    s->shaft_bore = 0.015; /* the bearings' own models: the spindle's at the front set */
+    s->housing_od = 0.120;
     s->housing_x0 = 0.02;
     s->spindle_front_x = FRONT_X;
     s->spindle_rear_x = REAR_X;

@@ -39,6 +39,7 @@ static void spindle_scene(acbb_scene *s)
         "spindle.coolant_density_kg_m3=1000", "spindle.coolant_cp_J_kgK=4180",
         "spindle.jacket_x0_mm=100", "spindle.jacket_x1_mm=260", "spindle.jacket_hA_W_K=50",
         "spindle.coolant_cells=4", "spindle.rear_support=fixed", "spindle.rear_preload_N=100",
+        "mounting.shaft_bore_mm=20", "surroundings.housing_outer_diameter_mm=140",
     };
     acbb_error err = {{0}};
     acbb_scene_default(s);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "acbb/tools/set.h"
+#include "acbb/tools/surroundings.h"
 #include "acbb/spindle.h"
 #include "acbb/tools/scene_inactive.h"
 #include "acbb/tools/scene_schema.h"
@@ -234,6 +235,47 @@ static acbb_status rule_stations(const acbb_scene *s, const part *sh, const part
     return ACBB_OK;
 }
 
+/* The segment of a part under x (-1: none). */
+static int segment_at(const part *p, double x)
+{
+    double a = p->x0;
+    for (int i = 0; i < p->n; a += p->seg[i].length, i++)
+        if (x >= a - POS_EPS && x <= a + p->seg[i].length + POS_EPS) return i;
+    return -1;
+}
+
+/* The bearing's own model of its shaft and housing (mounting.shaft_bore_mm
+ * for the fits and the shaft's conduction, the [surroundings] housing's
+ * outer diameter for its housing network) is the spindle's at the front
+ * set's centre, within 0.01 mm: both sets take these values. */
+static acbb_status rule_front_model(const acbb_scene *s, const part *sh, const part *ho,
+                                    acbb_error *err)
+{
+    int i = segment_at(sh, s->spindle_front_x), j = segment_at(ho, s->spindle_front_x);
+    acbb_surroundings u;
+    acbb_scene_surroundings(s, &u);
+    char key[48], a[40], b[40];
+    if (i >= 0 && fabs(s->shaft_bore - sh->seg[i].bore) > FIT_TOL * (1.0 + 1e-9)) {
+        snprintf(key, sizeof key, "seg%d_bore_mm", i + 1);
+        return acbb_error_set(err, ACBB_EINVAL, "mounting.shaft_bore_mm = %s with shaft.%s = %s "
+                              "under the front set: the bearings' fits and shaft conduction use "
+                              "mounting.shaft_bore_mm (0 = solid), so it must be the spindle "
+                              "shaft's bore there (within 0.01 mm)",
+                              show(s, "mounting", "shaft_bore_mm", a), key,
+                              show(s, "shaft", key, b));
+    }
+    if (j >= 0 && fabs(u.housing_od - ho->seg[j].od) > FIT_TOL * (1.0 + 1e-9)) {
+        snprintf(key, sizeof key, "seg%d_od_mm", j + 1);
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_outer_diameter_mm = %s "
+                              "(%.6g mm) with housing.%s = %s under the front set: the bearings' "
+                              "housing network uses the [surroundings] housing, so its outer "
+                              "diameter must be the spindle housing's there (within 0.01 mm)",
+                              show(s, "surroundings", "housing_outer_diameter_mm", a),
+                              u.housing_od * 1e3, key, show(s, "housing", key, b));
+    }
+    return ACBB_OK;
+}
+
 /* A span x0..x1 (motor, jacket): x1 >= x0 (equal: absent), and when
  * present on the parts that carry it. */
 static acbb_status rule_span(const acbb_scene *s, const char *sec, const char *k0,
@@ -313,6 +355,7 @@ acbb_status acbb_sf_spindle_rules(const acbb_scene *s, acbb_error *err)
     if (rc == ACBB_OK) rc = rule_rear(s, err);
     if (rc == ACBB_OK) rc = rule_front_locates(s, err);
     if (rc == ACBB_OK) rc = rule_stations(s, &sh, &ho, err);
+    if (rc == ACBB_OK) rc = rule_front_model(s, &sh, &ho, err);
     if (rc == ACBB_OK) rc = rule_motor(s, &sh, &ho, err);
     if (rc == ACBB_OK) rc = rule_coolant(s, &ho, err);
     return rc;
