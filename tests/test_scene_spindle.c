@@ -116,6 +116,9 @@ static void test_rear(void)
     expect("spindle.rear_arrangement=DB", "spindle.rear_arrangement = DB with rear_preload_N = 0: "
            "an opposed rear set needs a preload > 0 N (its spacers)");
     expect("spindle.rear_arrangement=DB;spindle.rear_preload_N=200", "");
+    expect("materials.shaft_E_GPa=0.001", "materials.shaft_E_GPa = 0.001 with shaft.segments = "
+           "3: a spindle's shaft is a beam whose Young's modulus must be in [0.1, 1000] GPa");
+    expect("materials.shaft_E_GPa=0.1", "");
     expect("mounting.shaft_bore_mm=0", "mounting.shaft_bore_mm = 0 with shaft.seg1_bore_mm = 20 "
            "under the front set: the bearings' fits and shaft conduction use "
            "mounting.shaft_bore_mm (0 = solid), so it must be the spindle shaft's bore there "

@@ -806,6 +806,20 @@ static void test_runaway_names(void)
     acbb_sim_free(sim);
 }
 
+/* The preload growth the stepper watches for a runaway (MODEL.md 9) is
+ * both sets' (front + rear), the rear DB pair's rigid preload too: the
+ * plant's force at the first state is the sum of the sets' preloads. */
+static void test_watched_force(void)
+{
+    acbb_spindle_sim *sp = heated_spindle("fidelity.thermal_mode=transient", "watched force");
+    if (!sp) return;
+    double F[2];
+    for (int k = 0; k < 2; k++) F[k] = acbb_set_mech_preload(&sp->st[k].ss->sm);
+    ok(F[1] > 100.0, "watched force: the rear pair is preloaded (%.1f N)", F[1]);
+    is_close(sp->run.prev_F, F[0] + F[1], 1e-15, 0.0, "watched force: front + rear preload, N");
+    acbb_spindle_sim_free(sp);
+}
+
 /* The nose drift (docs/spindle.md "Nose drift"): the nose's axial move
  * against the housing from the cold first state, the shaft's thermal
  * growth in front of the front set (nose_drift_thermal) less the change
@@ -844,6 +858,7 @@ static void test_nose_drift(void)
 
 int main(void)
 {
+    test_watched_force();
     test_nose_drift();
     test_runaway_names();
     test_friction_sweep();

@@ -235,14 +235,24 @@ static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
     return ACBB_OK;
 }
 
-/* The front set's preload when it is rigid (its growth is the runaway of
- * MODEL.md 9), else not watched. */
+/* Both sets' preloads, summed, when either is rigid (the growth of a
+ * rigid preload is the runaway of MODEL.md 9: the front set's, or a rigid
+ * rear pair's, as its rings heat; the stepper watches one force, and the
+ * sum of a runaway preload and a bounded one grows ever faster too; a
+ * spring's or a sleeve's share is bounded), else not watched. */
 static double plant_force(void *ctx, int *rigid)
 {
     acbb_spindle_sim *sp = ctx;
-    acbb_plant p;
-    set_plant(sp, ACBB_FRONT, &p);
-    return p.force(p.ctx, rigid);
+    double F = 0.0;
+    *rigid = 0;
+    for (int k = 0; k < 2; k++) {
+        acbb_plant p;
+        int r;
+        set_plant(sp, k, &p);
+        F += p.force(p.ctx, &r);
+        *rigid |= r;
+    }
+    return F;
 }
 
 /* Every source (the bearings' and the motor's) and what leaves: to the air
@@ -292,7 +302,7 @@ static void plant_of(acbb_spindle_sim *sp, acbb_plant *p)
 {
     *p = (acbb_plant){
         .ctx = sp, .s = &sp->s, .net = NULL, .T = sp->T, .q = sp->q, .n = sp->n,
-        .force_name = "the front set's preload", .stop = plant_stop, .operate = plant_operate,
+        .force_name = "the sets' preloads (front + rear)", .stop = plant_stop, .operate = plant_operate,
         .evaluate = plant_evaluate, .loss = plant_loss, .save = plant_save,
         .restore = plant_restore, .limits = plant_limits, .force = plant_force,
         .balance = plant_balance, .converge = plant_converge, .solve = plant_solve,

@@ -347,6 +347,13 @@ acbb_status acbb_sf_spindle_rules(const acbb_scene *s, acbb_error *err)
         return acbb_error_set(err, ACBB_EINVAL, "shaft.segments = %s with housing.segments = 0: "
                               "a spindle needs a housing (housing.segments >= 1)",
                               show(s, "shaft", "segments", a));
+    /* the shaft beam's range (shaft_section.c: E in [1e8, 1e13] Pa), the
+     * schema's upper bound kept */
+    if (!(s->shaft.E >= 1e8))
+        return acbb_error_set(err, ACBB_EINVAL, "materials.shaft_E_GPa = %s with shaft.segments "
+                              "= %d: a spindle's shaft is a beam whose Young's modulus must be in "
+                              "[0.1, 1000] GPa", show(s, "materials", "shaft_E_GPa", a),
+                              s->shaft_segments);
     part sh = shaft_of(s), ho = housing_of(s);
     acbb_status rc = rule_segments(s, &sh, err);
     if (rc == ACBB_OK) rc = rule_segments(s, &ho, err);
