@@ -23,17 +23,8 @@ for f in presets/*.ini; do
     "$ACBB" run "$f" --json >"$TMP/$(basename "$f" .ini).json" 2>/dev/null
     ms=$(( ($(date +%s%N) - start) / 1000000 ))
     got=$(jq -r .status "$TMP/$(basename "$f" .ini).json")
-    case $name in
-    spindle-*)
-        # Until the spindle engine lands, acbb run computes the front set
-        # alone: its status is not the spindle's. acbb check covers it.
-        "$ACBB" check "$f" >/dev/null 2>&1
-        t $? "$name: acbb check passes the whole spindle"
-        skip "$name: runs to its documented status ($expect)" "until the spindle engine lands" ;;
-    *)
-        [ "$got" = "$expect" ]
-        t $? "$name: runs to its documented status ($got, want $expect; ${ms} ms)" ;;
-    esac
+    [ "$got" = "$expect" ]
+    t $? "$name: runs to its documented status ($got, want $expect; ${ms} ms)"
 done
 
 # Every preset states its physics profile (issue 25): the seed paper's

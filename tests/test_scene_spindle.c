@@ -17,16 +17,18 @@
 
 /* A DB pair of 7008C (bore 40, OD 68, width 15 mm) at 30 mm, a single rear
  * bearing at 230 mm; shaft 60 + 150 + 40 mm (od 40 under the bearings),
- * housing from 10 to 245 mm with a 68 mm bore. */
+ * housing from 10 to 245 mm with a 68 mm bore; the bearings' own shaft
+ * bore and housing outer diameter the spindle's at the front set. */
 static const char k_base[] =
     "[set]\narrangement = DB\n"
-    "[mounting]\npreload = displacement\npreload_N = 300\n"
+    "[mounting]\npreload = displacement\npreload_N = 300\nshaft_bore_mm = 20\n"
     "[shaft]\nsegments = 3\n"
     "seg1_length_mm = 60\nseg1_od_mm = 40\nseg1_bore_mm = 20\n"
     "seg2_length_mm = 150\nseg2_od_mm = 50\nseg2_bore_mm = 20\n"
     "seg3_length_mm = 40\nseg3_od_mm = 40\nseg3_bore_mm = 20\n"
     "[housing]\nsegments = 1\nx0_mm = 10\n"
     "seg1_length_mm = 235\nseg1_od_mm = 120\nseg1_bore_mm = 68\n"
+    "[surroundings]\nhousing_outer_diameter_mm = 120\n"
     "[spindle]\nfront_x_mm = 30\nrear_x_mm = 230\n";
 
 /* The base with `edits` ("key=value;key=value") applied, then the rules:
@@ -114,6 +116,22 @@ static void test_rear(void)
     expect("spindle.rear_arrangement=DB", "spindle.rear_arrangement = DB with rear_preload_N = 0: "
            "an opposed rear set needs a preload > 0 N (its spacers)");
     expect("spindle.rear_arrangement=DB;spindle.rear_preload_N=200", "");
+    expect("materials.shaft_E_GPa=0.001", "materials.shaft_E_GPa = 0.001 with shaft.segments = "
+           "3: a spindle's shaft is a beam whose Young's modulus must be in [0.1, 1000] GPa");
+    expect("materials.shaft_E_GPa=0.1", "");
+    expect("mounting.shaft_bore_mm=0", "mounting.shaft_bore_mm = 0 with shaft.seg1_bore_mm = 20 "
+           "under the front set: the bearings' fits and shaft conduction use "
+           "mounting.shaft_bore_mm (0 = solid), so it must be the spindle shaft's bore there "
+           "(within 0.01 mm)");
+    expect("surroundings.housing_outer_diameter_mm=0;housing.seg1_od_mm=140",
+           "surroundings.housing_outer_diameter_mm = 0 (120 mm) with housing.seg1_od_mm = 140 "
+           "under the front set: the bearings' housing network uses the [surroundings] housing, "
+           "so its outer diameter must be the spindle housing's there (within 0.01 mm)");
+    expect("set.arrangement=single;spindle.rear_support=fixed", "set.arrangement = single, "
+           "spindle.rear_arrangement = single, rear_support = fixed, rear_preload_N = 0: the "
+           "two one-way sets face each other (an \"O\" spindle, the rear set turned round) and "
+           "locate the shaft only when preloaded against each other: rear_preload_N > 0 N");
+    expect("set.arrangement=single;spindle.rear_support=fixed;spindle.rear_preload_N=100", "");
     expect("set.arrangement=DT", "set.arrangement = DT with spindle.rear_support = spring: the "
            "front set is then the shaft's only axial location and must carry thrust both ways "
            "(DB, DF, DBT or QBC), or use spindle.rear_support = fixed");
@@ -121,11 +139,11 @@ static void test_rear(void)
            "spindle.rear_support = floating: the front set is then the shaft's only axial "
            "location and must carry thrust both ways (DB, DF, DBT or QBC), or use "
            "spindle.rear_support = fixed");
-    expect("set.arrangement=DT;spindle.rear_support=fixed", "");
+    expect("set.arrangement=DT;spindle.rear_support=fixed;spindle.rear_preload_N=100", "");
     /* One front bearing under a radial load without thrust: the rear set
      * carries the shaft too (a lone bearing would be refused). */
     expect("set.arrangement=single;mounting.preload=force;spindle.rear_support=fixed;"
-           "operating.radial_load_N=500;operating.axial_load_N=0", "");
+           "spindle.rear_preload_N=100;operating.radial_load_N=500;operating.axial_load_N=0", "");
     /* A DBT front set (3 x 15 mm, 12.5 to 57.5 mm) on the 60 mm seat. */
     expect("set.arrangement=DBT;spindle.front_x_mm=35", "");
 }
@@ -245,6 +263,8 @@ static void test_inactive(void)
              "spindle.rear_spring_N", true, "spindle.rear_spring_N");
     inactive(k_base, "spindle.rear_preload_N=100", "spindle.rear_preload_N", true,
              "spindle.rear_preload_N");
+    inactive(k_base, "spindle.rear_preload_N=100;spindle.rear_support=fixed",
+             "spindle.rear_preload_N", false, "");
     inactive(k_base, "spindle.rear_spacing_mm=20", "spindle.rear_spacing_mm", true,
              "spindle.rear_spacing_mm");
     inactive(k_base, "spindle.rear_spacing_mm=20;spindle.rear_arrangement=DT",

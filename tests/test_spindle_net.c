@@ -38,7 +38,8 @@ static void spindle_scene(acbb_scene *s)
         "spindle.rear_x_mm=300", "spindle.coolant_flow_l_min=2", "spindle.coolant_inlet_dT_K=-2",
         "spindle.coolant_density_kg_m3=1000", "spindle.coolant_cp_J_kgK=4180",
         "spindle.jacket_x0_mm=100", "spindle.jacket_x1_mm=260", "spindle.jacket_hA_W_K=50",
-        "spindle.coolant_cells=4", "spindle.rear_support=fixed",
+        "spindle.coolant_cells=4", "spindle.rear_support=fixed", "spindle.rear_preload_N=100",
+        "mounting.shaft_bore_mm=20", "surroundings.housing_outer_diameter_mm=140",
     };
     acbb_error err = {{0}};
     acbb_scene_default(s);

@@ -296,6 +296,14 @@ typedef struct {
     unsigned profile_given;      /* bit k: the profile table's row k was given explicitly
                                   * (in the preset or by acbb_scene_set): the profile
                                   * does not move it */
+
+    /* No key: a spindle sets it on its fixed rear set (spindle.c
+     * rear_scene, docs/spindle.md "Rear set"): the set's arrangement read
+     * from the rear end (orientations reversed and negated: single "+"
+     * becomes "-", DBT "++-" becomes "+--"), so it opposes the front set
+     * as an "O" pair across the spindle; a one-way set so turned is
+     * preloaded against the front by preload_force at assembly. */
+    bool set_mirrored;
 } acbb_scene;
 
 /* Fill `s` with the 7008C defaults of MODEL.md section 10. */

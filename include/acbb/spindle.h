@@ -36,7 +36,10 @@ typedef struct {
     int n_sets;                 /* 0: not a spindle; else ACBB_SPINDLE_SETS */
     acbb_spindle_set_view sets[ACBB_SPINDLE_SETS];
     /* the nose (x = 0) */
-    double nose_drift_axial;    /* thermal growth of the nose, m (+: away from the front set) */
+    double nose_drift_axial;    /* the nose's axial move against the housing from the cold
+                                 * first state to now, m (+: away from the front set,
+                                 * towards -x): nose_drift_thermal less the change of
+                                 * nose_u (docs/spindle.md "Nose drift") */
     double nose_drift_radial;   /* radial thermal growth of the shaft at the nose, m */
     double nose_u, nose_w, nose_theta; /* displacement under the loads: m, m, rad */
     double nose_k_axial, nose_k_radial, nose_k_tilt; /* static stiffness N/m, N/m, N m/rad */
@@ -51,6 +54,9 @@ typedef struct {
     double shaft_x[ACBB_SPINDLE_MAX_CELLS], shaft_T_C[ACBB_SPINDLE_MAX_CELLS];
     double housing_x[ACBB_SPINDLE_MAX_CELLS], housing_T_C[ACBB_SPINDLE_MAX_CELLS];
     double rear_shift;          /* shaft minus housing axial growth between the sets, m */
+    double nose_drift_thermal;  /* the shaft's thermal growth from the front set to the nose
+                                 * alone, m (+: away from the front set) */
+    double nose_u_cold;         /* nose_u of the cold first state, m */
 } acbb_spindle_view;
 
 #ifdef __cplusplus

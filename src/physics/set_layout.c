@@ -53,7 +53,9 @@ int acbb_set_layout(const acbb_scene *s, int orient[ACBB_MAX_SET], double x[ACBB
     int n = count(s);
     double c = acbb_set_pitch(s);
     for (int k = 0; k < n && k < ACBB_MAX_SET; k++) {
-        if (orient) orient[k] = orientation(s->set_arrangement, k);
+        if (orient) /* mirrored: read from the other end, each turned round */
+            orient[k] = s->set_mirrored ? -orientation(s->set_arrangement, n - 1 - k)
+                                        : orientation(s->set_arrangement, k);
         if (x) x[k] = (k - 0.5 * (n - 1)) * c;
     }
     return n;

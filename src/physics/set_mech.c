@@ -33,6 +33,7 @@ void acbb_set_mech_init(acbb_set_mech *sm, const acbb_scene *s)
     sm->x_nose = s->set_load_offset;
     sm->spring = s->preload == ACBB_PRELOAD_FORCE;
     sm->Fp = s->preload_force;
+    sm->across = s->set_mirrored;
     sm->Fa = s->axial_load;
     sm->Fr = s->radial_load;
     sm->M = s->moment_load;
@@ -51,8 +52,12 @@ void acbb_set_mech_assemble(acbb_set_mech *sm, double (*dx1)(double F, void *ctx
     int np = side_count(sm, 1), nm = side_count(sm, -1);
     for (int k = 0; k < sm->n; k++) {
         int nk = sm->orient[k] > 0 ? np : nm;
-        /* A tandem set has no opposite side: its thrust alone loads it. */
-        sm->e[k] = nm == 0 || np == 0 ? 0.0 : dx1(sm->Fp / nk, ctx);
+        /* A tandem set has no opposite side: its thrust alone loads it
+         * (or, set against another set across the shaft, that preload). */
+        if (nm == 0 || np == 0)
+            sm->e[k] = sm->across && sm->Fp > 0.0 ? dx1(sm->Fp / sm->n, ctx) : 0.0;
+        else
+            sm->e[k] = dx1(sm->Fp / nk, ctx);
     }
 }
 

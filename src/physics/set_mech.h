@@ -48,6 +48,8 @@ typedef struct {
     double x_nose;                /* where the external loads act, m */
     int spring;                   /* spring preload: the -1 side floats */
     double Fp;                    /* assembly preload or spring force, N */
+    int across;                   /* a one-way set preloaded by Fp against another
+                                     set across the shaft (scene set_mirrored) */
     double e[ACBB_MAX_SET];       /* axial offsets built in (own frame, + squeezes), m */
     double u[ACBB_MAX_SET];       /* thermal axial move of IR k against OR k (global), m */
     double Fa, Fr, M;             /* external thrust, radial force (N), moment about y (N m) */
@@ -67,7 +69,8 @@ void acbb_set_mech_init(acbb_set_mech *sm, const acbb_scene *s);
 
 /* Rigid preload at assembly (MODEL.md 14): e_k = the axial displacement
  * one bearing takes under Fp / (bearings on its side), at rest, 20 C, no
- * expansion, so identical bearings each carry exactly their share. dx1(F)
+ * expansion, so identical bearings each carry exactly their share (a
+ * one-way set: 0, or with `across` Fp / n against the other set). dx1(F)
  * is that displacement for one bearing under thrust F (m). */
 void acbb_set_mech_assemble(acbb_set_mech *sm, double (*dx1)(double F, void *ctx), void *ctx);
 

@@ -33,6 +33,7 @@ struct acbb_shaft_beam {
     gsl_vector_uint *piv;
     gsl_vector *rhs, *dx;
     double tol;                   /* converged: step below tol of the displacements */
+    double floor;                 /* ... or below this absolute step (m, rad); 0 none */
 };
 
 void acbb_timoshenko_element(double EI, double phi, double L, double k[16])
@@ -309,7 +310,8 @@ static acbb_status newton(acbb_shaft_beam *b, const double *F, int *iters, acbb_
         *iters = it;
         if (!isfinite(step))
             return acbb_error_set(err, ACBB_NONFINITE, "shaft: displacements not finite");
-        if (step <= b->tol * fmax(size, step)) {   /* converged: take the last full step */
+        /* converged: take the last full step */
+        if (step <= b->tol * fmax(size, step) || step <= b->floor) {
             for (int i = 0; i < b->n_dof; i++) b->d[i] += dx[i];
             return ACBB_OK;
         }
@@ -370,6 +372,11 @@ acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loa
 void acbb_shaft_beam_set_tol(acbb_shaft_beam *b, double tol)
 {
     if (b && tol > 0.0) b->tol = fmax(tol, STEP_TOL);
+}
+
+void acbb_shaft_beam_set_floor(acbb_shaft_beam *b, double floor)
+{
+    if (b && floor >= 0.0 && isfinite(floor)) b->floor = floor;
 }
 
 int acbb_shaft_beam_nodes(const acbb_shaft_beam *b) { return b ? b->n_nodes : 0; }

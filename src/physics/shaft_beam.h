@@ -75,6 +75,12 @@ acbb_status acbb_shaft_beam_solve(acbb_shaft_beam *b, const acbb_shaft_load *loa
  * tolerance) is smooth only to that tolerance, so the step cannot fall
  * below it (spindle_mech.c). */
 void acbb_shaft_beam_set_tol(acbb_shaft_beam *b, double tol);
+/* ... and an absolute floor of that step (the largest of m and rad; 0, the
+ * default, none): at a solution of zero displacements (a symmetric shaft
+ * under no load) the relative test compares the supports' noise with
+ * itself and never passes; a step below the supports' own accuracy has
+ * converged. */
+void acbb_shaft_beam_set_floor(acbb_shaft_beam *b, double floor);
 
 int acbb_shaft_beam_nodes(const acbb_shaft_beam *b);
 /* Position (m) and displacement (u, w, theta) of node i after a solve. */

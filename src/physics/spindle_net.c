@@ -4,6 +4,7 @@
  * (docs/spindle.md "Joining the bearings' networks"). Build, joints and sync; the
  * solves are in spindle_net_solve.c. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "spindle_net_priv.h"
@@ -366,6 +367,26 @@ void acbb_spindle_net_free(acbb_spindle_net *sn)
     if (sn->y) gsl_vector_free(sn->y);
     if (sn->perm) gsl_permutation_free(sn->perm);
     free(sn);
+}
+
+int acbb_spindle_net_own_nodes(const acbb_spindle_net *sn) { return sn->sp->n; }
+
+void acbb_spindle_net_node_name(const acbb_spindle_net *sn, int i, char *buf, size_t size)
+{
+    const acbb_spindle_thermal *sp = sn->sp;
+    const acbb_axial_chain *c = i < sp->sc.first + sp->sc.n ? &sp->sc : &sp->hc;
+    if (i >= sp->sc.first && i < sp->hc.first + sp->hc.n) {
+        int j = i - c->first;
+        snprintf(buf, size, "%s cell at x = %.4g mm", c == &sp->sc ? "shaft" : "housing",
+                 500.0 * (c->x0[j] + c->x1[j]));
+    } else if (i >= sp->cool0 && i < sp->air) {
+        double x0, x1;
+        acbb_spindle_cool_cell(sp, i - sp->cool0, &x0, &x1);
+        snprintf(buf, size, "coolant cell at x = %.4g-%.4g mm", 1e3 * x0, 1e3 * x1);
+    } else if (i == sp->air)
+        snprintf(buf, size, "the air");
+    else
+        snprintf(buf, size, "spindle node %d", i);
 }
 
 int acbb_spindle_net_nodes(const acbb_spindle_net *sn) { return sn->n; }

@@ -90,6 +90,13 @@ void acbb_spindle_net_free(acbb_spindle_net *sn);
 
 /* All nodes, the spindle's (cells, coolant, air) and both parts'. */
 int acbb_spindle_net_nodes(const acbb_spindle_net *sn);
+/* The spindle's own nodes (cells, coolant, air) are 0 .. own_nodes() - 1;
+ * the parts' follow. */
+int acbb_spindle_net_own_nodes(const acbb_spindle_net *sn);
+/* What own node i is, for a message: "shaft cell at x = 180 mm",
+ * "housing cell at x = ...", "coolant cell at x = 110-125 mm", "the air"
+ * (x from the nose, the cell's centre). */
+void acbb_spindle_net_node_name(const acbb_spindle_net *sn, int i, char *buf, size_t size);
 /* Part p's node i (its set network's numbering) is node offset + i. */
 int acbb_spindle_net_part_offset(const acbb_spindle_net *sn, int p);
 /* Member k of part p's temperatures in T (the bearing's own numbering,

@@ -180,10 +180,49 @@ static void plant_restore(void *ctx, int slot)
     gather(sp, 0.0);
 }
 
-/* The sets' limits (their nodes named), then the spindle's own cells. */
+/* The hottest node over thermal.temp_limit_C: a spindle cell (named by
+ * its part and x) or a set's bearing node (named by set, bearing and
+ * node, as a set names it); *T_max its temperature. 0: none over. A
+ * bearing node that became a spindle cell reads the cell's temperature
+ * and is not hotter than it: the cell is named. */
+static int hottest(const acbb_spindle_sim *sp, char *name, size_t size, double *T_max)
+{
+    int found = 0;
+    *T_max = sp->s.temp_limit_C;
+    for (int i = 0; i < acbb_spindle_net_own_nodes(sp->net); i++)
+        if (sp->T[i] > *T_max) {
+            *T_max = sp->T[i];
+            acbb_spindle_net_node_name(sp->net, i, name, size);
+            found = 1;
+        }
+    for (int k = 0; k < 2; k++) {
+        const acbb_set_sim *ss = sp->st[k].ss;
+        for (int b = 0; b < ss->n; b++) {
+            const acbb_network *nw = &ss->b[b]->nw;
+            for (int i = 0; i < nw->n; i++)
+                if (ss->b[b]->T[i] > *T_max) {
+                    *T_max = ss->b[b]->T[i];
+                    snprintf(name, size, "%s set: bearing %d node %s", set_name[k], b,
+                             nw->names[i]);
+                    found = 1;
+                }
+        }
+    }
+    return found;
+}
+
+/* The hottest node over the temperature limit, then the sets' other
+ * limits (contact pressure). */
 static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
 {
     acbb_spindle_sim *sp = ctx;
+    char name[160];
+    double T;
+    if (hottest(sp, name, sizeof name, &T)) {
+        snprintf(what, size, "%s reached %.1f C (limit thermal.temp_limit_C = %.0f C) at t = "
+                 "%.0f s", name, T, sp->s.temp_limit_C, t);
+        return ACBB_RUNAWAY;
+    }
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
         char d[200];
@@ -193,24 +232,27 @@ static acbb_status plant_limits(void *ctx, double t, char *what, size_t size)
             return ACBB_RUNAWAY;
         }
     }
-    for (int i = 0; i < sp->n; i++)
-        if (sp->T[i] > sp->s.temp_limit_C) {
-            snprintf(what, size, "the spindle's shaft, housing or coolant (network node %d) "
-                     "reached %.1f C (limit thermal.temp_limit_C = %.0f C) at t = %.0f s", i,
-                     sp->T[i], sp->s.temp_limit_C, t);
-            return ACBB_RUNAWAY;
-        }
     return ACBB_OK;
 }
 
-/* The front set's preload when it is rigid (its growth is the runaway of
- * MODEL.md 9), else not watched. */
+/* Both sets' preloads, summed, when either is rigid (the growth of a
+ * rigid preload is the runaway of MODEL.md 9: the front set's, or a rigid
+ * rear pair's, as its rings heat; the stepper watches one force, and the
+ * sum of a runaway preload and a bounded one grows ever faster too; a
+ * spring's or a sleeve's share is bounded), else not watched. */
 static double plant_force(void *ctx, int *rigid)
 {
     acbb_spindle_sim *sp = ctx;
-    acbb_plant p;
-    set_plant(sp, ACBB_FRONT, &p);
-    return p.force(p.ctx, rigid);
+    double F = 0.0;
+    *rigid = 0;
+    for (int k = 0; k < 2; k++) {
+        acbb_plant p;
+        int r;
+        set_plant(sp, k, &p);
+        F += p.force(p.ctx, &r);
+        *rigid |= r;
+    }
+    return F;
 }
 
 /* Every source (the bearings' and the motor's) and what leaves: to the air
@@ -260,7 +302,7 @@ static void plant_of(acbb_spindle_sim *sp, acbb_plant *p)
 {
     *p = (acbb_plant){
         .ctx = sp, .s = &sp->s, .net = NULL, .T = sp->T, .q = sp->q, .n = sp->n,
-        .force_name = "the front set's preload", .stop = plant_stop, .operate = plant_operate,
+        .force_name = "the sets' preloads (front + rear)", .stop = plant_stop, .operate = plant_operate,
         .evaluate = plant_evaluate, .loss = plant_loss, .save = plant_save,
         .restore = plant_restore, .limits = plant_limits, .force = plant_force,
         .balance = plant_balance, .converge = plant_converge, .solve = plant_solve,
@@ -309,7 +351,10 @@ static void front_scene(const acbb_scene *s, const double L[3], acbb_scene *f)
 }
 
 /* The rear set: the same bearing in the rear arrangement, a pair held by
- * its rigid (spacer) preload. */
+ * its rigid (spacer) preload. A fixed rear set is mirrored (read from the
+ * rear end: docs/spindle.md "Rear set"): with the front set it makes an
+ * "O" spindle that locates the shaft both ways; a one-way rear set so
+ * turned is preloaded against the front by rear_preload_N. */
 static void rear_scene(const acbb_scene *s, const double L[3], acbb_scene *r)
 {
     front_scene(s, L, r);
@@ -319,6 +364,7 @@ static void rear_scene(const acbb_scene *s, const double L[3], acbb_scene *r)
     r->set_inner_spacer = r->set_outer_spacer = 0.0;
     r->preload = ACBB_PRELOAD_DISPLACEMENT;
     if (s->spindle_rear_preload > 0.0) r->preload_force = s->spindle_rear_preload;
+    r->set_mirrored = s->spindle_rear_support == ACBB_REAR_FIXED;
 }
 
 static acbb_status make_set(const acbb_scene *m, const acbb_sim_opts *o, int k,
@@ -349,6 +395,26 @@ static acbb_status network(acbb_spindle_sim *sp, acbb_error *err)
     return ACBB_OK;
 }
 
+/* The first state, cold (every node at the ambient): evaluated again
+ * until the nose stops moving (each evaluation's ball speeds are the one
+ * before's: the first is a start), to COLD_TOL or COLD_MAX evaluations;
+ * its nose_u is the nose drift's reference (spindle_view.c). */
+#define COLD_TOL 1e-12 /* m: the shaft solve's floor (spindle_mech.c) */
+#define COLD_MAX 20
+static acbb_status cold_state(acbb_spindle_sim *sp, acbb_error *err)
+{
+    acbb_status rc = evaluate(sp, 0, 0, err);
+    double u = sp->res.nose[0];
+    for (int i = 0; i < COLD_MAX && rc == ACBB_OK; i++) {
+        rc = evaluate(sp, 0, 0, err);
+        double du = sp->res.nose[0] - u;
+        u = sp->res.nose[0];
+        if (fabs(du) <= COLD_TOL) break;
+    }
+    sp->nose_u_cold = u;
+    return rc;
+}
+
 static acbb_status set_up(acbb_spindle_sim *sp, const acbb_sim_opts *o, acbb_error *err)
 {
     const acbb_scene *s = &sp->s;
@@ -367,7 +433,7 @@ static acbb_status set_up(acbb_spindle_sim *sp, const acbb_sim_opts *o, acbb_err
     if (rc != ACBB_OK) return rc;
     acbb_spindle_sim_deadline(sp, s->max_wall_s > 0.0 ? acbb_now_ms() + 1e3 * s->max_wall_s
                                                       : 0.0);
-    rc = evaluate(sp, 0, 0, err);
+    rc = cold_state(sp, err);
     acbb_spindle_sim_deadline(sp, 0.0); /* the run loop arms each step's */
     return rc;
 }

@@ -11,13 +11,78 @@
  * default), so a step 1e-4 of a micron-scale contact deflection keeps the
  * noise at about 1e-4 of the tangent. For the same reason the shaft's
  * Newton stops at a step 100 mech_tol of its displacements, not at the
- * beam's default 1e-11. */
+ * beam's default 1e-11, or at an absolute step of 100 mech_tol x 1 um
+ * (1e-12 m: that tolerance at the set solve's unit of displacement,
+ * set_mech.c's um) where the displacements themselves are noise (a
+ * symmetric spindle under no load: the solution is 0, the supports'
+ * noise about 1e-18 m). */
 #include <math.h>
 #include <string.h>
 #include "spindle_priv.h"
 #include "sim_struct.h"
 
 #define H_D 1e-9               /* m, the supports' difference step (radial, axial) */
+#define FLOOR_SCALE 1e-6       /* m: the set solve's unit of displacement (set_mech.c) */
+
+/* The members' states into the set's scratch (0) or back (1). */
+static void keep(acbb_spindle_station *t, int back)
+{
+    acbb_set_sim *ss = t->ss;
+    for (int k = 0; k < ss->n; k++)
+        if (back) acbb_mech_state_copy(&ss->b[k]->ms, ss->scratch[k]);
+        else acbb_mech_state_copy(ss->scratch[k], &ss->b[k]->ms);
+}
+
+/* One trial of the set's solve at thrust Fa from its q and members; on
+ * failure both are put back. */
+static acbb_status trial(acbb_spindle_station *t, acbb_set_member *mb, double Fa)
+{
+    acbb_set_mech *w = &t->w;
+    double q[ACBB_SET_Q];
+    memcpy(q, w->q, sizeof q);
+    keep(t, 0);
+    w->Fa = Fa;
+    acbb_status rc = acbb_set_mech_solve(w, mb, t->ss->s.inner_speed, NULL);
+    if (rc != ACBB_OK) {
+        memcpy(w->q, q, sizeof q);
+        keep(t, 1);
+    }
+    return rc;
+}
+
+/* The set's solve at the station. An axially free set (a sleeve that
+ * slides, a spring) is solved for its axial position under its thrust,
+ * warm-started where it last was: when it starts to slide, where it stuck
+ * carrying more. The full Newton step from there towards a much lighter
+ * thrust overshoots (a ball's contact force grows as its deflection to
+ * the 1.5, so the linearisation at the heavier load reaches past the
+ * lighter one's deflection) to where every ball unloads, and that solve
+ * fails. Then the thrust is walked from the one the set carries at the
+ * start to the given one, the walk's step halved on a failure and doubled
+ * on a success (the solution moves continuously with the thrust). */
+static acbb_status free_solve(acbb_spindle_station *t, acbb_set_member *mb)
+{
+    acbb_set_mech *w = &t->w;
+    double target = w->Fa;
+    acbb_status rc = trial(t, mb, target);
+    if (rc == ACBB_OK || t->axial_held) return rc;
+    w->hold[0] = 1; /* the thrust it carries where it starts */
+    rc = trial(t, mb, 0.0);
+    w->hold[0] = 0;
+    double L[3];
+    acbb_set_mech_loads(w, L);
+    double F0 = L[0], a = 0.0, step = 0.5;
+    while (rc == ACBB_OK && a < 1.0) {
+        double b = fmin(1.0, a + step);
+        if (trial(t, mb, F0 + (target - F0) * b) == ACBB_OK) {
+            a = b;
+            step = fmin(2.0 * step, 1.0);
+        } else if ((step *= 0.5) < 1.0 / 1024.0)
+            rc = ACBB_DIVERGED;
+    }
+    w->Fa = target;
+    return rc;
+}
 
 /* The station's reaction f on the shaft at its displacement d: the set's
  * shaft held at (u + shift - slip, w, -theta) (u free when the set is not
@@ -33,7 +98,7 @@ static acbb_status reaction(acbb_spindle_station *t, const double d[3], double f
     w->Fa = t->axial_held ? 0.0 : t->Fa_given;
     acbb_set_member mb[ACBB_MAX_SET];
     acbb_set_members(t->ss, mb);
-    acbb_status rc = acbb_set_mech_solve(w, mb, t->ss->s.inner_speed, NULL);
+    acbb_status rc = free_solve(t, mb);
     if (rc != ACBB_OK) return rc;
     double L[3];
     acbb_set_mech_loads(w, L);
@@ -94,6 +159,7 @@ acbb_status acbb_spindle_beam_build(acbb_spindle_sim *sp, acbb_error *err)
                                            &sp->beam, err);
     if (rc != ACBB_OK) return rc;
     acbb_shaft_beam_set_tol(sp->beam, 100.0 * s->mech_tol);
+    acbb_shaft_beam_set_floor(sp->beam, 100.0 * s->mech_tol * FLOOR_SCALE);
     double dm = acbb_mech_geometry(sp->st[ACBB_FRONT].ss->b[0]->mech)->dm;
     sp->h_d = H_D;
     sp->h_theta = H_D / (0.5 * dm);
@@ -206,6 +272,11 @@ static acbb_status solve_shaft(acbb_spindle_sim *sp, acbb_error *err)
 acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err)
 {
     acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    /* Every evaluation of a step (or of a steady or isothermal solve's
+     * iterations) starts from where the sleeve was at the last state kept
+     * (spindle.c plant_save): an evaluation's ball speeds are those of the
+     * pass before, so a slide decided on them is a trial, not history. */
+    rear->slip = rear->slip_keep;
     for (int k = 0; k < 2; k++) axial_mode(sp, &sp->st[k]);
     acbb_error e2 = { "" };
     acbb_status rc = solve_shaft(sp, &e2);

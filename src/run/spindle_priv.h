@@ -59,6 +59,8 @@ struct acbb_spindle_sim {
     double total;                 /* both sets' losses, W */
     double heat_in, heat_out;     /* the bearings' sources; what leaves the network, W */
     double heat_all;              /* every source, the motor's too, W */
+    double nose_u_cold;           /* the nose's axial displacement in the first state
+                                     (ambient, the first loads), m */
 };
 
 /* spindle_mech.c: the shaft built from the scene (its supports the two

@@ -87,9 +87,16 @@ void acbb_spindle_view_fill(const acbb_spindle_sim *sp, acbb_spindle_view *v)
     if (sp->s.heating) acbb_spindle_net_view(sp->net, sp->T, v);
     else v->T_coolant_in_C = v->T_coolant_out_C = sp->s.ambient_C + sp->s.coolant_inlet_dT;
     v->rear_shift = sp->shift;
+    /* The nose's move against the housing: the shaft's growth in front of
+     * the located front set plus the elastic move since the cold first
+     * state (the sets' contacts stiffening or easing, the shaft's own
+     * compression), in the drift's sign (+ towards the nose: -x). */
+    v->nose_drift_thermal = v->nose_drift_axial;
+    v->nose_u_cold = sp->nose_u_cold;
+    v->nose_drift_axial = v->nose_drift_thermal - (r->nose[0] - sp->nose_u_cold);
     double *f[] = { &v->nose_drift_axial, &v->nose_drift_radial, &v->Q_motor_W, &v->Q_bearings_W,
                     &v->Q_coolant_W, &v->Q_air_W, &v->T_coolant_in_C, &v->T_coolant_out_C,
-                    &v->rear_shift };
+                    &v->rear_shift, &v->nose_drift_thermal, &v->nose_u_cold };
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) *f[i] = acbb_snap_fin(*f[i]);
     for (int i = 0; i < v->n_shaft; i++) v->shaft_T_C[i] = acbb_snap_fin(v->shaft_T_C[i]);
     for (int i = 0; i < v->n_housing; i++) v->housing_T_C[i] = acbb_snap_fin(v->housing_T_C[i]);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "acbb/tools/set.h"
+#include "acbb/tools/surroundings.h"
 #include "acbb/spindle.h"
 #include "acbb/tools/scene_inactive.h"
 #include "acbb/tools/scene_schema.h"
@@ -188,6 +189,17 @@ static acbb_status rule_rear(const acbb_scene *s, acbb_error *err)
                               "the centre distance is at least one width (0 = adjacent)",
                               show(s, "spindle", "rear_spacing_mm", a),
                               show(s, "bearing", "width_mm", b));
+    bool across = s->spindle_rear_support == ACBB_REAR_FIXED && !opposed(s->set_arrangement)
+               && !opposed(s->spindle_rear_arrangement);
+    if (across && !(s->spindle_rear_preload > 0.0))
+        return acbb_error_set(err, ACBB_EINVAL, "set.arrangement = %s, spindle.rear_arrangement "
+                              "= %s, rear_support = fixed, rear_preload_N = %s: the two one-way "
+                              "sets face each other (an \"O\" spindle, the rear set turned "
+                              "round) and locate the shaft only when preloaded against each "
+                              "other: rear_preload_N > 0 N",
+                              acbb_set_arrangement_name(s->set_arrangement),
+                              acbb_set_arrangement_name(s->spindle_rear_arrangement),
+                              show(s, "spindle", "rear_preload_N", a));
     if (opposed(s->spindle_rear_arrangement) && !(s->spindle_rear_preload > 0.0))
         return acbb_error_set(err, ACBB_EINVAL, "spindle.rear_arrangement = %s with "
                               "rear_preload_N = %s: an opposed rear set needs a preload > 0 N "
@@ -219,6 +231,47 @@ static acbb_status rule_stations(const acbb_scene *s, const part *sh, const part
         if (rc == ACBB_OK) rc = rule_seat(s, &st[i], sh, false, err);
         if (rc == ACBB_OK) rc = rule_seat(s, &st[i], ho, true, err);
         if (rc != ACBB_OK) return rc;
+    }
+    return ACBB_OK;
+}
+
+/* The segment of a part under x (-1: none). */
+static int segment_at(const part *p, double x)
+{
+    double a = p->x0;
+    for (int i = 0; i < p->n; a += p->seg[i].length, i++)
+        if (x >= a - POS_EPS && x <= a + p->seg[i].length + POS_EPS) return i;
+    return -1;
+}
+
+/* The bearing's own model of its shaft and housing (mounting.shaft_bore_mm
+ * for the fits and the shaft's conduction, the [surroundings] housing's
+ * outer diameter for its housing network) is the spindle's at the front
+ * set's centre, within 0.01 mm: both sets take these values. */
+static acbb_status rule_front_model(const acbb_scene *s, const part *sh, const part *ho,
+                                    acbb_error *err)
+{
+    int i = segment_at(sh, s->spindle_front_x), j = segment_at(ho, s->spindle_front_x);
+    acbb_surroundings u;
+    acbb_scene_surroundings(s, &u);
+    char key[48], a[40], b[40];
+    if (i >= 0 && fabs(s->shaft_bore - sh->seg[i].bore) > FIT_TOL * (1.0 + 1e-9)) {
+        snprintf(key, sizeof key, "seg%d_bore_mm", i + 1);
+        return acbb_error_set(err, ACBB_EINVAL, "mounting.shaft_bore_mm = %s with shaft.%s = %s "
+                              "under the front set: the bearings' fits and shaft conduction use "
+                              "mounting.shaft_bore_mm (0 = solid), so it must be the spindle "
+                              "shaft's bore there (within 0.01 mm)",
+                              show(s, "mounting", "shaft_bore_mm", a), key,
+                              show(s, "shaft", key, b));
+    }
+    if (j >= 0 && fabs(u.housing_od - ho->seg[j].od) > FIT_TOL * (1.0 + 1e-9)) {
+        snprintf(key, sizeof key, "seg%d_od_mm", j + 1);
+        return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_outer_diameter_mm = %s "
+                              "(%.6g mm) with housing.%s = %s under the front set: the bearings' "
+                              "housing network uses the [surroundings] housing, so its outer "
+                              "diameter must be the spindle housing's there (within 0.01 mm)",
+                              show(s, "surroundings", "housing_outer_diameter_mm", a),
+                              u.housing_od * 1e3, key, show(s, "housing", key, b));
     }
     return ACBB_OK;
 }
@@ -294,6 +347,13 @@ acbb_status acbb_sf_spindle_rules(const acbb_scene *s, acbb_error *err)
         return acbb_error_set(err, ACBB_EINVAL, "shaft.segments = %s with housing.segments = 0: "
                               "a spindle needs a housing (housing.segments >= 1)",
                               show(s, "shaft", "segments", a));
+    /* the shaft beam's range (shaft_section.c: E in [1e8, 1e13] Pa), the
+     * schema's upper bound kept */
+    if (!(s->shaft.E >= 1e8))
+        return acbb_error_set(err, ACBB_EINVAL, "materials.shaft_E_GPa = %s with shaft.segments "
+                              "= %d: a spindle's shaft is a beam whose Young's modulus must be in "
+                              "[0.1, 1000] GPa", show(s, "materials", "shaft_E_GPa", a),
+                              s->shaft_segments);
     part sh = shaft_of(s), ho = housing_of(s);
     acbb_status rc = rule_segments(s, &sh, err);
     if (rc == ACBB_OK) rc = rule_segments(s, &ho, err);
@@ -302,6 +362,7 @@ acbb_status acbb_sf_spindle_rules(const acbb_scene *s, acbb_error *err)
     if (rc == ACBB_OK) rc = rule_rear(s, err);
     if (rc == ACBB_OK) rc = rule_front_locates(s, err);
     if (rc == ACBB_OK) rc = rule_stations(s, &sh, &ho, err);
+    if (rc == ACBB_OK) rc = rule_front_model(s, &sh, &ho, err);
     if (rc == ACBB_OK) rc = rule_motor(s, &sh, &ho, err);
     if (rc == ACBB_OK) rc = rule_coolant(s, &ho, err);
     return rc;
@@ -389,9 +450,12 @@ size_t acbb_sf_spindle_inactive(const acbb_scene *s, const acbb_scene *d,
               && changed(s, d, "spindle", "rear_friction_N"),
           { "rear_friction_N", "the sleeve slides under spindle.rear_support = floating only",
             "spindle.rear_friction_N" } },
-        { sp && !opposed(s->spindle_rear_arrangement) && changed(s, d, "spindle", "rear_preload_N"),
-          { "rear_preload_N", "a one-way rear set (single, DT) has no spacer preload; "
-            "rear_preload_N acts on a DB, DF, DBT or QBC rear set", "spindle.rear_preload_N" } },
+        { sp && !opposed(s->spindle_rear_arrangement)
+              && s->spindle_rear_support != ACBB_REAR_FIXED
+              && changed(s, d, "spindle", "rear_preload_N"),
+          { "rear_preload_N", "a one-way rear set (single, DT) that is not fixed has no "
+            "preload; rear_preload_N acts on a DB, DF, DBT or QBC rear set, or on a fixed "
+            "one-way rear set (preloaded against the front)", "spindle.rear_preload_N" } },
         { sp && s->spindle_rear_arrangement == ACBB_SET_SINGLE
               && changed(s, d, "spindle", "rear_spacing_mm"),
           { "rear_spacing_mm", "spindle.rear_arrangement = single: one rear bearing has no "
