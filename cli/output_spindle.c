@@ -38,11 +38,13 @@ static void items(acbb_cli_out *o, const char *label, const char *const *text,
 
 static void nose(acbb_cli_out *o, const acbb_spindle_view *v)
 {
-    static const char *const drift[] = { "axial ", " um, ", "radial ", " um; ",
-                                         "rear shift ", " um" };
-    const double d[] = { v->nose_drift_axial * UM, v->nose_drift_radial * UM,
-                         v->rear_shift * UM };
-    items(o, "nose drift", drift, d, 3, " (thermal)");
+    /* axial: against the housing since the cold start (growth and the
+     * bearings' elastic change); the shaft's growth alone beside it */
+    static const char *const drift[] = { "axial ", " um (growth ", "", "), ", "radial ",
+                                         " um; ", "shift ", " um" };
+    const double d[] = { v->nose_drift_axial * UM, v->nose_drift_thermal * UM,
+                         v->nose_drift_radial * UM, v->rear_shift * UM };
+    items(o, "nose drift", drift, d, 4, "");
     static const char *const moves[] = { "axial ", " um, ", "radial ", " um, ", "tilt ",
                                          " urad" };
     const double m[] = { v->nose_u * UM, v->nose_w * UM, v->nose_theta * UM };

@@ -40,6 +40,7 @@ static void fill(acbb_snapshot *s)
     v->n_sets = 2;
     v->nose_drift_axial = 12.5e-6;     /* m -> 12.5 um */
     v->nose_drift_radial = 1.25e-6;
+    v->nose_drift_thermal = 17.5e-6;  /* m -> 17.5 um: growth alone */
     v->nose_u = 0.75e-6;
     v->nose_w = 2.5e-6;
     v->nose_theta = 1.5e-5;            /* rad -> 15 urad */
@@ -115,6 +116,8 @@ static double num_at(const cJSON *root, const char *path)
 static void names_and_units(const cJSON *root)
 {
     is_close(num_at(root, "spindle.nose_drift_um"), 12.5, 1e-12, 0, "spindle.nose_drift_um: 12.5e-6 m is 12.5 um");
+    is_close(num_at(root, "spindle.nose_thermal_growth_um"), 17.5, 1e-12, 0,
+             "spindle.nose_thermal_growth_um: the growth alone, 17.5 um");
     is_close(num_at(root, "spindle.nose_stiffness_N_per_um"), 45.0, 1e-12, 0,
              "spindle.nose_stiffness_N_per_um: the radial 45e6 N/m is 45 N/um");
     is_close(num_at(root, "spindle.nose_axial_stiffness_N_per_um"), 150.0, 1e-12, 0,
@@ -164,7 +167,7 @@ static void metrics_equal_json(const cJSON *root, const acbb_snapshot *s)
             printf("# %s: metric %.17g, json %.17g\n", path, v, num_at(root, path));
         }
     }
-    ok(bad == 0 && n == 31, "the %zu spindle metrics (31 planned) equal the JSON at their paths", n);
+    ok(bad == 0 && n == 32, "the %zu spindle metrics (32 planned) equal the JSON at their paths", n);
     acbb_error err = { { 0 } };
     ok(acbb_output_find("spindle.sets[1].preload_N", &e, &(long){ 0 }, &err) == ACBB_OK &&
        !strcmp(e.unit, "N"), "spindle.sets[1].preload_N is a metric in N");

@@ -189,8 +189,11 @@ static const acbb_output_row k_rows[] = {
     /* A spindle (spindle.h, docs/spindle.md): missing for any other scene
      * (acbb_output_missing). The path is the name: no old column name. */
     { "spindle", "nose_drift_um", "spindle.nose_drift_um", "um",
-      "nose axial thermal drift (+: away from the front set)",
+      "nose's axial move against the housing since the cold start: growth and bearings (+: forward)",
       OFF_S(spindle.nose_drift_axial), TO_UM },
+    { "spindle", "nose_thermal_growth_um", "spindle.nose_thermal_growth_um", "um",
+      "the shaft's axial thermal growth at the nose alone (+: forward)",
+      OFF_S(spindle.nose_drift_thermal), TO_UM },
     { "spindle", "nose_radial_drift_um", "spindle.nose_radial_drift_um", "um",
       "shaft radial thermal growth at the nose", OFF_S(spindle.nose_drift_radial), TO_UM },
     { "spindle", "nose_tilt_urad", "spindle.nose_tilt_urad", "urad", "nose tilt under the loads",
