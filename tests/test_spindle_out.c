@@ -294,8 +294,8 @@ static void text_block(void)
     ok(b != NULL, "the summary has a spindle block");
     has_substr(b, "front set at 45.0 mm (2 bearings), rear at 330.0 mm (1 bearing)",
                "it says where the sets sit");
-    has_substr(b, "nose drift   axial 12.5 um, radial 1.25 um; rear shift 4.5 um",
-               "the nose drift and the rear shift in um");
+    has_substr(b, "nose drift   axial 12.5 um (growth 17.5), radial 1.25 um; shift 4.5 um",
+               "the nose drift, the shaft's growth alone and the rear shift in um");
     has_substr(b, "nose stiff   radial 45 N/um, axial 150 N/um, tilt 2.5 N m/mrad",
                "the nose stiffness, radial first");
     has_substr(b, "heat W       motor 400, bearings 120; to coolant 430, to air 90",
