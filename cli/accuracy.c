@@ -15,6 +15,7 @@
 #include "acbb/units.h"
 #include "acbb/tools/plot.h"
 #include "acbb/scene.h"
+#include "acbb/tools/scene_schema.h"
 #include "accuracy.h"
 #include "commands.h"
 #include "common.h"
@@ -263,11 +264,23 @@ static void progress_tick(void *ctx, size_t done, size_t total)
     fflush(stderr);
 }
 
-static int any_failed(const acbb_accuracy_row *rows, size_t n)
+/* Settings that failed (not those skipped as not available): exit 3 and
+ * one line on stderr saying so (the notes on stdout say which). */
+static int say_failed(const acbb_accuracy_row *rows, size_t n)
 {
-    for (size_t i = 0; i < n; i++)
-        if (!rows[i].skipped && rows[i].status != ACBB_OK) return 1;
-    return 0;
+    size_t failed = 0, ran = 0;
+    char first[700] = "";
+    for (size_t i = 0; i < n; i++) {
+        if (rows[i].skipped) continue;
+        ran++;
+        if (rows[i].status == ACBB_OK || failed++) continue;
+        char label[96];
+        setting_label(&rows[i], label, sizeof label);
+        snprintf(first, sizeof first, "%s: %s: %s", label, row_status(&rows[i]),
+                 rows[i].message);
+    }
+    return acbb_cli_runs_failed("bench accuracy", failed, ran, first,
+                                "the table's notes list them");
 }
 
 /* Cancelled: the settings that finished, without errors (an unfinished
@@ -315,7 +328,7 @@ static int run_bench(const acc_args *a, const acbb_scene *base)
     }
     if (a->csv) rc = acbb_cli_worst(rc, write_csv(a->csv, rows, n));
     if (a->plot) rc = acbb_cli_worst(rc, write_plot(a->plot, a->preset, rows, n));
-    if (any_failed(rows, n)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    rc = acbb_cli_worst(rc, say_failed(rows, n));
     free(rows);
     return rc;
 }

@@ -32,18 +32,27 @@ static void format_K(double k, char *buf, size_t n)
     else snprintf(buf, n, "%.3f", k);
 }
 
+/* Work and ms, "-" when no point converged (no NaN reaches the table). */
+static void format_num(double v, char *buf, size_t n)
+{
+    if (isfinite(v)) snprintf(buf, n, "%.1f", v);
+    else snprintf(buf, n, "-");
+}
+
 static void print_row(const acbb_envelope_row *r)
 {
-    char label[96], e[6][16], ok[16], pk[16];
+    char label[96], e[6][16], ok[16], pk[16], work[24], ms[24];
     label_of(r, label, sizeof label);
     const double v[6] = { r->worst_steady, r->median_steady, r->worst_loss, r->worst_T,
                           r->worst_path, r->median_path };
     for (int k = 0; k < 6; k++) acbb_accuracy_format_pct(v[k], e[k], sizeof e[k]);
     format_K(r->worst_path_K, pk, sizeof pk);
     snprintf(ok, sizeof ok, "%d/%d", r->n_ok, r->n_points);
-    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %7s %6s %8.1f %7.1f\n", label,
+    format_num(r->work, work, sizeof work);
+    format_num(r->wall_ms, ms, sizeof ms);
+    printf("%-22s %-2s %5s %6s %6s %6s %6s %6s %7s %6s %8s %7s\n", label,
            r->is_reference ? "R" : (r->is_default ? "D" : ""), ok, e[0], e[1], e[2], e[3], e[4],
-           pk, e[5], r->work, r->wall_ms);
+           pk, e[5], work, ms);
 }
 
 static void print_table(const acbb_envelope_row *rows, size_t n)
@@ -83,6 +92,11 @@ static void print_c_rows(const acbb_envelope_row *rows, size_t n)
     for (size_t i = 0; i < n; i++) {
         const acbb_envelope_row *r = &rows[i];
         if (r->knob != ACBB_KNOB_COUNT) continue;
+        if (r->n_ok < r->n_points) { /* numbers over some points only, or NaN: no row */
+            printf("  /* %-9s */ not measured: converged at %d of %d points\n", r->value,
+                   r->n_ok, r->n_points);
+            continue;
+        }
         printf("  /* %-9s */ %.3g, %.3g, %.3g, %.3g, %.3g, %.4g\n", r->value, r->worst_steady,
                r->median_steady, r->worst_path, r->median_path, r->worst_path_K, r->work);
     }
@@ -96,11 +110,20 @@ static void tick(void *ctx, size_t done, size_t total)
     fflush(stderr);
 }
 
-static int any_failed(const acbb_envelope_row *rows, size_t n)
+/* Settings without a converged pair (it and its reference) at every
+ * point: exit 3 and one line on stderr saying so. */
+static int say_failed(const acbb_envelope_row *rows, size_t n)
 {
+    size_t failed = 0, first = 0;
     for (size_t i = 0; i < n; i++)
-        if (rows[i].n_ok < rows[i].n_points) return 1;
-    return 0;
+        if (rows[i].n_ok < rows[i].n_points && !failed++) first = i;
+    if (!failed) return 0;
+    char label[96];
+    label_of(&rows[first], label, sizeof label);
+    acbb_cli_say("bench accuracy --envelope: %zu of %zu settings did not converge with their "
+                 "reference at every point (first: %s, %d of %d); the ok column counts them\n",
+                 failed, n, label, rows[first].n_ok, rows[first].n_points);
+    return ACBB_EXIT_SOLVER;
 }
 
 int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, unsigned knobs,
@@ -147,7 +170,7 @@ int acbb_cli_accuracy_envelope(const acbb_cli_args *a, const acbb_scene *base, u
     print_table(rows, n);
     print_frontier(rows, n);
     print_c_rows(rows, n);
-    rc = any_failed(rows, n) ? ACBB_EXIT_SOLVER : 0;
+    rc = say_failed(rows, n);
     free(rows);
     return acbb_cli_worst(rc, acbb_cli_stdout_check(0));
 }

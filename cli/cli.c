@@ -20,6 +20,7 @@
 #include "acbb/sim.h"
 #include "acbb/tools/study.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"
@@ -225,13 +226,14 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     if (!rc && !snap) {
         acbb_sim_free(sim);
         if (csv_path) acbb_out_abort(csv.handle);
-        rc = ACBB_EXIT_INTERNAL;
+        rc = acbb_cli_no_memory("run");
     }
     if (rc) {
         acbb_cli_interrupt_end();
         return rc;
     }
     csv.out.set_n = acbb_set_layout(&sc, NULL, NULL);
+    csv.out.spindle = sc.shaft_segments > 0;
     if (csv_path) acbb_cli_csv_header(&csv.out);
     run_rows rows = { csv_path ? &csv.out : NULL, plot ? malloc(sizeof *rows.hist) : NULL };
     if (rows.hist) acbb_history_init(rows.hist);
@@ -251,7 +253,7 @@ int acbb_cli_cmd_run(const acbb_cli_args *a)
     rc = csv_path ? acbb_cli_file_close(&csv) : 0;
     rc = acbb_cli_worst(run_report(a, preset, &sc, snap, bear, br), rc);
     free(bear);
-    if (plot && !rows.hist) rc = acbb_cli_worst(rc, ACBB_EXIT_INTERNAL);
+    if (plot && !rows.hist) rc = acbb_cli_worst(rc, acbb_cli_no_memory("run --plot"));
     if (rows.hist) rc = acbb_cli_worst(rc, acbb_cli_write_plot(plot, rows.hist, snap, preset));
     free(rows.hist);
     free(snap);
@@ -289,7 +291,7 @@ int acbb_cli_cmd_study(const acbb_cli_args *args)
     int rc = acbb_cli_count(args, CLI_OPT_JOBS, acbb_batch_cpus(), 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (rc) return rc;
     acbb_cli_args *a = malloc(sizeof *a);
-    if (!a) return ACBB_EXIT_INTERNAL;
+    if (!a) return acbb_cli_no_memory("study");
     *a = *args;
     const char *name = acbb_cli_study_preset_name(a->pos[0]);
     if (acbb_cli_resolve_preset(name, a->preset_buf, sizeof a->preset_buf, true) != 0)
@@ -319,6 +321,25 @@ static void study_done(void *ctx, const acbb_batch_result *r)
     snprintf(p->message, sizeof p->message, "cancelled before it finished");
 }
 
+/* The failed runs said on stderr (the table marks each); those the cancel
+ * stopped are the cancel's to say. */
+static int study_failed(const acbb_cli_point *pts, const acbb_cli_study_block *blocks)
+{
+    size_t failed = 0, first = 0;
+    for (size_t i = 0; i < ACBB_STUDY_COMPARE_N; i++) {
+        if (acbb_cli_point_ok(&pts[i]) || pts[i].status == ACBB_CANCELLED) continue;
+        if (!failed++) first = i;
+    }
+    const acbb_cli_study_block *b = blocks;
+    while (b < blocks + ACBB_STUDY_NSWEEPS - 1 && first / 2 >= b->first + b->count) b++;
+    const acbb_cli_point *p = &pts[first];
+    char what[700];
+    snprintf(what, sizeof what, "%s at %s %s: %s: %s", first % 2 ? "WTE" : "TE", b->x_label,
+             p->value, acbb_cli_point_status(p), p->have_snap ? p->snap.message : p->message);
+    return acbb_cli_runs_failed("study", failed, ACBB_STUDY_COMPARE_N, what,
+                                "the table marks them with *");
+}
+
 /* The engine plans and runs the table (acbb_study_compare_*, study.h);
  * here it is only formatted. */
 static int study_table(const acbb_cli_args *a, long jobs)
@@ -331,7 +352,7 @@ static int study_table(const acbb_cli_args *a, long jobs)
     if (!plan || !pts) {
         free(plan);
         free(pts);
-        return ACBB_EXIT_INTERNAL;
+        return acbb_cli_no_memory("study");
     }
     acbb_study_compare_plan(&base, plan);
     acbb_cli_study_block blocks[ACBB_STUDY_NSWEEPS];
@@ -363,6 +384,7 @@ static int study_table(const acbb_cli_args *a, long jobs)
     acbb_cli_study_table(&o, pts, blocks, ACBB_STUDY_NSWEEPS);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
     if (!points_ok(pts, ACBB_STUDY_COMPARE_N)) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    rc = acbb_cli_worst(rc, study_failed(pts, blocks));
     rc = acbb_cli_worst(rc, acbb_cli_cancelled("study", "the table shows the runs that finished"));
     free(pts);
     free(plan);
@@ -372,10 +394,13 @@ static int study_table(const acbb_cli_args *a, long jobs)
 /* ---- acbb bench speed ---- */
 
 /* Wall time of `n` points run with `jobs` workers, `repeat` times;
- * *workers (may be NULL) gets how many ran. */
+ * *workers (may be NULL) gets how many ran. On a failure *ran = n: the
+ * points the failure listing may name (the others were not run). */
 static int bench_points(const acbb_scene *base, const double *loads, size_t n, long jobs,
-                        long repeat, double *times, acbb_cli_point *pts, int *workers)
+                        long repeat, double *times, acbb_cli_point *pts, int *workers,
+                        size_t *ran)
 {
+    *ran = n;
     for (long r = 0; r < repeat; r++) {
         for (size_t i = 0; i < n; i++) {
             memset(&pts[i], 0, sizeof pts[i]);
@@ -391,11 +416,13 @@ static int bench_points(const acbb_scene *base, const double *loads, size_t n, l
     return 0;
 }
 
+/* Only the `n` points of the timing that failed: a point it did not run
+ * (zeroed, status ok) is not a failure. */
 static int bench_fail(const acbb_cli_point *pts, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         if (acbb_cli_point_ok(&pts[i])) continue;
-        acbb_cli_say("bench: run %zu: %s: %s\n", i, acbb_cli_point_status(&pts[i]),
+        acbb_cli_say("bench speed: run %zu: %s: %s\n", i, acbb_cli_point_status(&pts[i]),
                 pts[i].have_snap ? pts[i].snap.message : pts[i].message);
     }
     return ACBB_EXIT_SOLVER;
@@ -426,25 +453,26 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
     if (!times || !pts) {
         free(times);
         free(pts);
-        return ACBB_EXIT_INTERNAL;
+        return acbb_cli_no_memory("bench speed");
     }
     acbb_cli_interrupt_begin();
     printf("acbb bench speed %s (median of %ld)\n", preset, repeat);
     printf("machine            %s, %d CPUs usable (affinity)\n", machine, acbb_batch_cpus());
 
-    if ((rc = bench_points(&base, NULL, 1, 1, repeat, times, pts, NULL))) goto fail;
+    size_t ran = 0;
+    if ((rc = bench_points(&base, NULL, 1, 1, repeat, times, pts, NULL, &ran))) goto fail;
     printf("one run            %10.2f ms  (%ld iterations, %s, model %s)\n",
            acbb_median(times, (size_t)repeat), pts[0].snap.iteration,
            acbb_cli_point_status(&pts[0]), acbb_model_level_name(base.model));
     if ((rc = bench_points(&base, acbb_study_loads, ACBB_STUDY_NPTS, 1, repeat, times, pts,
-                           NULL)))
+                           NULL, &ran)))
         goto fail;
     printf("8-load sweep       %10.2f ms  (1 thread; loads 50..1000 N)\n",
            acbb_median(times, (size_t)repeat));
     if (jobs > 1) {
         int w = 1;
         if ((rc = bench_points(&base, acbb_study_loads, ACBB_STUDY_NPTS, jobs, repeat, times,
-                               pts, &w)))
+                               pts, &w, &ran)))
             goto fail;
         printf("8-load sweep       %10.2f ms  (%d threads)\n", acbb_median(times, (size_t)repeat),
                w);
@@ -457,7 +485,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
 fail:
     acbb_cli_interrupt_end();
     rc = acbb_cli_interrupted() ? acbb_cli_cancelled("bench speed", "the timings above finished")
-                                : bench_fail(pts, ACBB_STUDY_NPTS);
+                                : bench_fail(pts, ran);
     free(times);
     free(pts);
     return rc;

@@ -7,9 +7,11 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "acbb/tools/study.h"
 #include "common.h"
 #include "exit.h"
 #include "say.h"
+#include "acbb/tools/scene_inactive.h"
 
 const char *acbb_cli_err_text(const acbb_error *err, acbb_status st)
 {
@@ -86,6 +88,35 @@ int acbb_cli_stdout_check(long nonfinite)
     if (fflush(stdout) != 0 || ferror(stdout)) {
         acbb_cli_say("cannot write to stdout\n");
         return ACBB_EXIT_INTERNAL;
+    }
+    return 0;
+}
+
+int acbb_cli_runs_failed(const char *cmd, size_t failed, size_t total, const char *first,
+                         const char *kept)
+{
+    if (!failed) return 0;
+    acbb_cli_say("%s: %zu of %zu run%s failed (first: %.*s); %s\n", cmd, failed, total,
+                 total == 1 ? "" : "s", (int)strcspn(first, "\n"), first, kept);
+    return ACBB_EXIT_SOLVER;
+}
+
+int acbb_cli_no_memory(const char *cmd)
+{
+    acbb_cli_say("%s: out of memory\n", cmd);
+    return ACBB_EXIT_INTERNAL;
+}
+
+int acbb_cli_study_failed(const char *cmd, acbb_study *st, const char *kept)
+{
+    const acbb_study_runs *r = acbb_study_results(st);
+    for (size_t i = 0; i < r->n; i++) {
+        const acbb_study_point *p = &r->all[i];
+        if (p->ok) continue;
+        char what[700];
+        snprintf(what, sizeof what, "%s: %s: %s", p->label, acbb_status_name(p->status),
+                 p->message);
+        return acbb_cli_runs_failed(cmd, acbb_study_n_failed(st), r->n, what, kept);
     }
     return 0;
 }

@@ -22,6 +22,20 @@ int acbb_cli_load_scene(const acbb_cli_args *a, acbb_scene *sc);
  * could not be written. */
 int acbb_cli_stdout_check(long nonfinite);
 
+/* A batch with runs that failed: 0 when `failed` is 0, else exit 3 after
+ * one line on stderr, "CMD: F of T runs failed (first: FIRST); KEPT", so
+ * a nonzero exit always says why. FIRST names the first failed run and
+ * its status ("TE at n rpm 14000: not_converged: ..."). */
+int acbb_cli_runs_failed(const char *cmd, size_t failed, size_t total, const char *first,
+                         const char *kept);
+
+/* "CMD: out of memory" on stderr; exit 4. */
+int acbb_cli_no_memory(const char *cmd);
+
+/* The same for a study's runs (acbb/tools/study.h). */
+struct acbb_study;
+int acbb_cli_study_failed(const char *cmd, struct acbb_study *st, const char *kept);
+
 /* An output file: writers go to `out.f`; close commits it in place. */
 typedef struct {
     const char *path;

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "acbb/tools/outfile.h"
 #include "acbb/sim.h"
+#include "acbb/tools/scene_edit.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"

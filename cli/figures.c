@@ -15,6 +15,7 @@
 #include "acbb/tools/outfile.h"
 #include "acbb/tools/plot.h"
 #include "acbb/tools/study.h"
+#include "acbb/tools/scene_schema.h"
 #include "common.h"
 #include "exit.h"
 #include "figures.h"
@@ -315,7 +316,7 @@ static int figures(const acbb_cli_args *a, acbb_study *st, acbb_study *const *by
                    { 0, 0, 0 }, FIG_W, FIG_H, { by[0], by[1], by[2] } };
     acbb_fig_input *in = NULL;
     acbb_error err = { { 0 } };
-    if (!res) return ACBB_EXIT_INTERNAL;
+    if (!res) return acbb_cli_no_memory("study");
     acbb_error serr = { { 0 } };
     if (a->val[CLI_OPT_SIZE] && (acbb_cli_parse_size(a->val[CLI_OPT_SIZE], &v.w, &v.h) ||
                                  acbb_plot_check_size(ACBB_PLOT_PNG, v.w, v.h, &serr) != ACBB_OK)) {
@@ -362,7 +363,7 @@ static int figures(const acbb_cli_args *a, acbb_study *st, acbb_study *const *by
     v.in = in;
     if (!rc) rc = write_report(&v);
     if (!rc) rc = summary(&v, n);
-    if (!rc && acbb_study_n_failed(st)) rc = ACBB_EXIT_SOLVER;
+    if (!rc) rc = acbb_cli_study_failed("study", st, "REPORT.md counts them");
     acbb_figures_input_free(in);
     free(res);
     return acbb_cli_worst(rc, acbb_cli_stdout_check(0));

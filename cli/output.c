@@ -13,6 +13,7 @@
 #include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
 #include "acbb/tools/set.h"
+#include "acbb/tools/scene_schema.h"
 #include "output.h"
 
 #define CLI_UM 1e6                                   /* m -> um */
@@ -56,6 +57,16 @@ static void cell(acbb_cli_out *o, int width, int prec, char conv, double v)
 {
     fputc(' ', o->f);
     put_num(o, width - 1, prec, conv, v);
+}
+
+void acbb_cli_num(acbb_cli_out *o, int width, int prec, char conv, double v)
+{
+    put_num(o, width, prec, conv, v);
+}
+
+void acbb_cli_cell(acbb_cli_out *o, int width, int prec, char conv, double v)
+{
+    cell(o, width, prec, conv, v);
 }
 
 /* ---- CSV ---- */
@@ -338,6 +349,7 @@ void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
     summary_balls(o, snap);
     summary_life(o, snap);
     summary_set(o, snap);
+    acbb_cli_print_spindle(o, snap);
 }
 
 /* The run's JSON comes from the engine's one writer (acbb/tools/json.h); the
@@ -395,24 +407,40 @@ static void csv_names(acbb_cli_out *o, const acbb_cli_col *c, size_t n, const ch
     }
 }
 
+/* A spindle's columns (issue 31): the warm-up curve of the nose drift,
+ * each set's preload and outer ring, the coolant's outlet. */
+static const char *const csv_spindle[] = {
+    "spindle.nose_drift_um", "spindle.nose_radial_drift_um", "spindle.rear_shift_um",
+    "spindle.sets[0].preload_N", "spindle.sets[1].preload_N", "spindle.sets[0].T_outer_C",
+    "spindle.sets[1].T_outer_C", "spindle.coolant_C.outlet",
+};
+
 void acbb_cli_csv_header(acbb_cli_out *o)
 {
     size_t n;
+    bool set = o->set_n > 1, sp = o->spindle;
     fputs("iteration,time_s,dt_s,", o->f);
     const acbb_cli_col *c = COLS(o, csv_head, &n);
     csv_names(o, c, n, ",residual_K_s,");
     c = COLS(o, csv_tail, &n);
-    csv_names(o, c, n, o->set_n > 1 ? "," : "\n");
-    if (o->set_n < 2) return;
-    /* A set (MODEL.md 14): its preload and each bearing's outer ring. */
-    fputs("set.preload_N", o->f); /* the run JSON's paths (outputs.h) */
-    for (int k = 0; k < o->set_n; k++) fprintf(o->f, ",bearings[%d].temperature_C.outer_ring", k);
-    fputc('\n', o->f);
+    csv_names(o, c, n, set || sp ? "," : "\n");
+    if (set) {
+        /* A set (MODEL.md 14): its preload and each bearing's outer ring. */
+        fputs("set.preload_N", o->f); /* the run JSON's paths (outputs.h) */
+        for (int k = 0; k < o->set_n; k++)
+            fprintf(o->f, ",bearings[%d].temperature_C.outer_ring", k);
+        fputs(sp ? "," : "\n", o->f);
+    }
+    if (sp) {
+        c = COLS(o, csv_spindle, &n);
+        csv_names(o, c, n, "\n");
+    }
 }
 
 void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
 {
     size_t n;
+    bool set = o->set_n > 1, sp = o->spindle;
     fprintf(o->f, "%ld,", s->iteration);
     c_num(o, s->time, false);
     c_num(o, s->dt, false);
@@ -420,10 +448,14 @@ void acbb_cli_csv_row(acbb_cli_out *o, const acbb_snapshot *s)
     for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), false);
     c_num(o, s->residual, false);
     c = COLS(o, csv_tail, &n);
-    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n && o->set_n < 2);
-    if (o->set_n < 2) return;
-    c_num(o, s->set.preload_N, false);
-    for (int k = 0; k < o->set_n; k++) c_num(o, s->set.T_outer_ring[k], k + 1 == o->set_n);
+    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n && !set && !sp);
+    if (set) {
+        c_num(o, s->set.preload_N, false);
+        for (int k = 0; k < o->set_n; k++) c_num(o, s->set.T_outer_ring[k], k + 1 == o->set_n && !sp);
+    }
+    if (!sp) return;
+    c = COLS(o, csv_spindle, &n);
+    for (size_t i = 0; i < n; i++) c_num(o, col_value(&c[i], s), i + 1 == n);
 }
 
 void acbb_cli_list_metrics(FILE *f)

@@ -17,7 +17,7 @@
 #include "acbb/tools/branches.h"
 
 #define ACBB_CLI_COLS 64                 /* columns of one flat (CSV) list */
-#define ACBB_CLI_COLSETS 3               /* run CSV (two parts), sweep */
+#define ACBB_CLI_COLSETS 4               /* run CSV (three parts), sweep */
 
 /* A flat output's column: an entry of the output table and its ball. */
 typedef struct {
@@ -37,6 +37,7 @@ typedef struct {
     long nonfinite;                      /* NaN/Inf values met so far */
     acbb_cli_colset cols[ACBB_CLI_COLSETS];
     int set_n;                           /* a set's bearings (run CSV columns); 0/1: one */
+    bool spindle;                        /* a spindle (run CSV columns) */
 } acbb_cli_out;
 
 /* One run of a sweep or study: the scene it ran and what came out. */
@@ -70,6 +71,12 @@ const char *acbb_cli_point_status(const acbb_cli_point *p);
 /* `acbb run`: summary table (fits 80 columns) and the JSON object. */
 void acbb_cli_print_summary(acbb_cli_out *o, const char *preset,
                             const acbb_scene *sc, const acbb_snapshot *snap);
+/* Its spindle block (output_spindle.c): nothing when s->spindle.n_sets = 0. */
+void acbb_cli_print_spindle(acbb_cli_out *o, const acbb_snapshot *s);
+/* A number in the summary's style: `width` wide (a cell: with a leading
+ * blank), "-" and counted in o->nonfinite when not finite. */
+void acbb_cli_num(acbb_cli_out *o, int width, int prec, char conv, double v);
+void acbb_cli_cell(acbb_cli_out *o, int width, int prec, char conv, double v);
 void acbb_cli_json_run(acbb_cli_out *o, const acbb_scene *sc,
                        const acbb_snapshot *snap);
 /* The same with its optional parts (acbb_json_write_run_parts): a set's

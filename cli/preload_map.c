@@ -91,35 +91,14 @@ static void table(const acbb_pmap_opts *o, const acbb_pmap_cell *c, const acbb_p
     printf("\npreloads %g .. %g N in %d steps\n", o->preload_lo, o->preload_hi, o->n_preloads);
 }
 
-/* The chart: per speed the skid-free floor and the limits' ceiling. A
- * window that reaches the grid's first or last preload found no limit
- * there (issue 29 item 9: drawn as limits, the grid's bounds read as
- * physics): those ends are markers of their own, "no skid down to the
- * grid's lowest preload" and "no limit up to its highest". */
+/* The chart (acbb_plot_pmap_chart, shared with the TUI's export): per
+ * speed the skid-free floor and the limits' ceiling; a window end at the
+ * grid's first or last preload is a marker of its own, not a limit. */
 static int chart(const char *path, const acbb_pmap_opts *o, const acbb_pmap_row *r)
 {
-    enum { FLOOR, CEIL, GRID_LO, GRID_HI, N_SR };
-    double x[ACBB_PMAP_MAX_AXIS], y[N_SR][ACBB_PMAP_MAX_AXIS];
-    for (int s = 0; s < o->n_speeds; s++) {
-        x[s] = r[s].speed_rpm;
-        /* the grid's ends (acbb_pmap_axis k = 0 and n - 1, to rounding) */
-        bool lo_edge = fabs(r[s].lo_N - o->preload_lo) <= 1e-9 * o->preload_lo;
-        bool hi_edge = fabs(r[s].hi_N - o->preload_hi) <= 1e-9 * o->preload_hi;
-        bool in = r[s].lo_N >= 0;
-        y[FLOOR][s] = in && !lo_edge ? r[s].lo_N : NAN;
-        y[CEIL][s] = in && !hi_edge ? r[s].hi_N : NAN;
-        y[GRID_LO][s] = in && lo_edge ? r[s].lo_N : NAN;
-        y[GRID_HI][s] = in && hi_edge ? r[s].hi_N : NAN;
-    }
-    size_t n = (size_t)o->n_speeds;
-    acbb_plot_series sr[N_SR] = {
-        { "no-skid floor", x, y[FLOOR], n, 1, 1, 1 },
-        { "upper limit", x, y[CEIL], n, 2, 2, 1 },
-        { "grid bottom, no skid", x, y[GRID_LO], n, 3, 1, 2 },
-        { "grid top, no limit", x, y[GRID_HI], n, 4, 2, 2 },
-    };
-    acbb_plot_xy p = { "Preload window per speed",
-                       "inner-ring speed (rpm)", "preload (N)", sr, N_SR };
+    acbb_plot_pmap c;
+    acbb_plot_xy p;
+    acbb_plot_pmap_chart(o, r, (size_t)o->n_speeds, &c, &p);
     int fmt = acbb_plot_format_from_name(path);
     if (fmt != ACBB_PLOT_PNG && fmt != ACBB_PLOT_SVG)
         return bad("FILE.png or FILE.svg", "plot", path);

@@ -14,6 +14,7 @@
 #include "acbb/tools/physics_profile.h"
 #include "acbb/scene.h"
 #include "acbb/tools/study.h"
+#include "acbb/tools/scene_schema.h"
 #include "common.h"
 #include "exit.h"
 #include "progress.h"
@@ -706,8 +707,12 @@ static int report(const acbb_cli_args *a, const input_keys *k, const acbb_scene 
     for (int m = 0; m < N_MOUNTINGS; m++) v.by[m] = m == own ? st : other[m];
     long misuse = a->val[CLI_OPT_JSON] ? print_json(stdout, &v) : 0;
     if (!a->val[CLI_OPT_JSON]) print_text(stdout, &v);
-    rc = acbb_study_n_failed(st) ? ACBB_EXIT_SOLVER : ACBB_EXIT_OK;
-    if (misuse) rc = ACBB_EXIT_INTERNAL; /* invalid JSON printed: a bug, said by the exit */
+    rc = acbb_cli_study_failed("report", st, "the statements that need them read n/e");
+    if (misuse) { /* invalid JSON printed: a bug */
+        acbb_cli_say("report: internal error: the JSON printed is invalid (%ld misuses of "
+                     "its writer)\n", misuse);
+        rc = ACBB_EXIT_INTERNAL;
+    }
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(0)); /* says so on stderr */
     if (md) {
         print_md(mf, &v);

@@ -285,12 +285,30 @@ static int write_outputs(const acbb_cli_args *a, const acbb_sens_result *r)
     return acbb_cli_worst(rc, acbb_cli_stdout_check(0));
 }
 
+/* A metric the scene can never have (a spindle's of another scene,
+ * acbb_output_missing) is bad input, said before any run: every run would
+ * end without a value. */
+static int metric_fits(const char *metric, const acbb_scene *sc)
+{
+    static acbb_snapshot probe; /* no result yet: only the scene's kind */
+    acbb_output e;
+    long ball;
+    memset(&probe, 0, sizeof probe);
+    probe.spindle.n_sets = sc->shaft_segments > 0 ? ACBB_SPINDLE_SETS : 0;
+    const char *why = acbb_output_find(metric, &e, &ball, NULL) == ACBB_OK
+                          ? acbb_output_missing(&e, &probe) : NULL;
+    if (!why) return 0;
+    acbb_cli_say("sensitivity: metric %s has no value here: %s\n", metric, why);
+    return ACBB_EXIT_INPUT;
+}
+
 int acbb_cli_cmd_sensitivity(const acbb_cli_args *a)
 {
     acbb_scene sc;
     acbb_sens_opts o = {0};
     int rc = parse_opts(a, &o);
     if (!rc) rc = acbb_cli_load_scene(a, &sc);
+    if (!rc) rc = metric_fits(o.metric, &sc);
     if (rc) return rc;
     acbb_sens_result *r = malloc(sizeof *r);
     if (!r) return ACBB_EXIT_INTERNAL;

@@ -29,7 +29,26 @@ typedef struct {
     double t0, last_shown;
     acbb_cli_point *pts;       /* the 1-D form: results kept for the table */
     const acbb_scene *base;
+    char first_failed[700];    /* "key=value, ...: status: message" of the first failure */
+    size_t first_index;        /* its index (the lowest failed: not the thread order) */
 } sweep_run;
+
+/* The failed point of lowest index, named by its grid values, for the line
+ * that says why the sweep exits 3 (acbb_cli_runs_failed). */
+static void note_failure(sweep_run *s, const acbb_sweep_result *r)
+{
+    if (s->first_failed[0] && r->index >= s->first_index) return;
+    s->first_index = r->index;
+    size_t u = 0, cap = sizeof s->first_failed;
+    for (size_t d = 0; d < acbb_sweep_n_dims(s->grid) && u < cap; d++)
+        u += (size_t)snprintf(s->first_failed + u, cap - u, "%s%s=%s", d ? ", " : "",
+                              acbb_sweep_key(s->grid, d),
+                              acbb_sweep_value(s->grid, r->index, d));
+    if (u < cap)
+        snprintf(s->first_failed + u, cap - u, ": %s: %s",
+                 r->have_snap ? acbb_run_status_name(&r->snap) : acbb_status_name(r->status),
+                 r->have_snap ? r->snap.message : r->message);
+}
 
 static void show_progress(sweep_run *s, int final)
 {
@@ -47,7 +66,10 @@ static void on_point(void *ctx, const acbb_sweep_result *r)
 {
     sweep_run *s = ctx;
     s->done++;
-    s->failed += !(r->have_snap && r->snap.state == ACBB_RUN_CONVERGED);
+    if (!(r->have_snap && r->snap.state == ACBB_RUN_CONVERGED)) {
+        s->failed++;
+        note_failure(s, r);
+    }
     /* Each record whole, in one write (issue 26 item 4: a failed write
      * leaves the file at its last whole record, sweep_sink.c). */
     for (size_t k = 0; k < s->n_sinks; k++) {
@@ -83,7 +105,7 @@ static int build_grid(const acbb_cli_args *a, acbb_sweep *g)
         }
         size_t len = strlen(a->val[CLI_OPT_PARAM]) + strlen(a->val[CLI_OPT_VALUES]) + 2;
         char *spec = malloc(len);
-        if (!spec) return ACBB_EXIT_INTERNAL;
+        if (!spec) return acbb_cli_no_memory("sweep");
         snprintf(spec, len, "%s=%s", a->val[CLI_OPT_PARAM], a->val[CLI_OPT_VALUES]);
         acbb_status st = acbb_sweep_add(g, spec, &err);
         free(spec);
@@ -166,8 +188,10 @@ static int check_values(const acbb_sweep *g, const acbb_scene *base, const char 
     return 0;
 }
 
-static int legacy_output(const acbb_cli_args *a, const acbb_cli_point *pts, size_t n)
+static int legacy_output(const acbb_cli_args *a, const sweep_run *s)
 {
+    const acbb_cli_point *pts = s->pts;
+    size_t n = s->total;
     const char *param = a->val[CLI_OPT_PARAM];
     int rc = 0;
     if (a->val[CLI_OPT_CSV]) {
@@ -183,9 +207,19 @@ static int legacy_output(const acbb_cli_args *a, const acbb_cli_point *pts, size
     if (a->val[CLI_OPT_JSON]) acbb_cli_sweep_json(&o, param, pts, n);
     else acbb_cli_sweep_table(&o, param, pts, n);
     rc = acbb_cli_worst(rc, acbb_cli_stdout_check(o.nonfinite));
-    for (size_t i = 0; i < n; i++)
+    rc = acbb_cli_worst(rc, acbb_cli_runs_failed("sweep", s->failed, s->done, s->first_failed,
+                                                 a->val[CLI_OPT_JSON] ? "their records say why"
+                                                 : "the table lists them"));
+    for (size_t i = 0; i < n; i++) /* cancelled: the cancel says so (below) */
         if (!acbb_cli_point_ok(&pts[i])) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
     return rc;
+}
+
+/* The engine's sweep stopped short (out of memory: sweep.h). */
+static int sweep_error(acbb_status st, const char *kept)
+{
+    acbb_cli_say("sweep: %s; %s\n", acbb_status_name(st), kept);
+    return acbb_cli_exit_for(st);
 }
 
 /* The 1-D form: every point's row at the end. A point the cancel stopped
@@ -195,7 +229,7 @@ static int sweep_table(const acbb_cli_args *a, sweep_run *s, const acbb_scene *b
                        acbb_sweep_opts *o)
 {
     s->pts = calloc(s->total, sizeof *s->pts);
-    if (!s->pts) return ACBB_EXIT_INTERNAL;
+    if (!s->pts) return acbb_cli_no_memory("sweep");
     for (size_t i = 0; i < s->total; i++) {
         acbb_cli_point *p = &s->pts[i];
         snprintf(p->value, sizeof p->value, "%s", acbb_sweep_value(s->grid, i, 0));
@@ -205,8 +239,8 @@ static int sweep_table(const acbb_cli_args *a, sweep_run *s, const acbb_scene *b
     s->t0 = acbb_now_ms();
     acbb_status st = acbb_sweep_run(s->grid, base, o, NULL);
     show_progress(s, 1);
-    int rc = st == ACBB_OK || st == ACBB_CANCELLED ? legacy_output(a, s->pts, s->total)
-                                                   : acbb_cli_exit_for(st);
+    int rc = st == ACBB_OK || st == ACBB_CANCELLED ? legacy_output(a, s)
+                                                   : sweep_error(st, "no table printed");
     char kept[96];
     snprintf(kept, sizeof kept, "the table shows the %zu finished point%s", s->done,
              s->done == 1 ? "" : "s");
@@ -259,7 +293,7 @@ static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *
                         acbb_sweep_opts *o)
 {
     unsigned char *count = calloc(s->total ? s->total : 1, 1);
-    if (!count) return ACBB_EXIT_INTERNAL;
+    if (!count) return acbb_cli_no_memory("sweep");
     struct sigaction old[2];
     quiet_signals(1, old);
     int rc = 0;
@@ -276,12 +310,13 @@ static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *
         s->t0 = acbb_now_ms();
         acbb_status st = acbb_sweep_run(s->grid, base, o, NULL);
         show_progress(s, 1);
-        if (st != ACBB_OK && st != ACBB_CANCELLED) rc = acbb_cli_exit_for(st);
+        if (st != ACBB_OK && st != ACBB_CANCELLED) rc = sweep_error(st, "the finished points were recorded");
     }
     rc = acbb_cli_worst(rc, close_sinks(s));
     quiet_signals(0, old);
     if (s->nonfinite) rc = acbb_cli_worst(rc, acbb_cli_stdout_check(s->nonfinite));
-    if (s->failed) rc = acbb_cli_worst(rc, ACBB_EXIT_SOLVER);
+    rc = acbb_cli_worst(rc, acbb_cli_runs_failed("sweep", s->failed, s->done, s->first_failed,
+                                                 "their records say why"));
     char kept[160];
     snprintf(kept, sizeof kept, "%zu finished point%s recorded; run the same command again "
              "to resume", s->done, s->done == 1 ? "" : "s");
@@ -302,7 +337,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     acbb_cli_metrics metrics;
     if (!rc) rc = parse_metrics(a, &metrics);
     acbb_sweep *g = NULL;
-    if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = ACBB_EXIT_INTERNAL;
+    if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = acbb_cli_no_memory("sweep");
     if (!rc) rc = build_grid(a, g);
     acbb_scene base;
     if (!rc) rc = acbb_cli_load_scene(a, &base);

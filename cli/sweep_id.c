@@ -10,6 +10,7 @@
 #include <string.h>
 #include "acbb/tools/json.h"
 #include "acbb/tools/outfile.h"
+#include "acbb/tools/scene_schema.h"
 #include "sweep.h"
 
 void acbb_cli_sweep_id_init(acbb_cli_sweep_id *id, const acbb_sweep *g, const acbb_scene *base,

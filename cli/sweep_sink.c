@@ -57,7 +57,7 @@ static int put_header(acbb_cli_sink *o, const acbb_cli_sweep_id *id)
 {
     size_t len = 0;
     char *text = acbb_cli_sweep_header_text(o->fmt, id, 1, &len);
-    if (!text) return ACBB_EXIT_INTERNAL;
+    if (!text) return acbb_cli_no_memory("sweep");
     acbb_cli_sink_put(o, text, len);
     free(text);
     return 0;
@@ -107,7 +107,7 @@ static int sidecar_write(const acbb_cli_sink *o, const acbb_cli_sweep_id *id)
     }
     size_t len = 0;
     char *text = acbb_cli_sweep_header_text(ACBB_CLI_REC_JSONL, id, 1, &len);
-    if (!text) return ACBB_EXIT_INTERNAL;
+    if (!text) return acbb_cli_no_memory("sweep");
     acbb_cli_file file = { 0 };
     int rc = acbb_cli_file_open(&file, side);
     if (!rc) {

@@ -13,6 +13,7 @@
 #include "acbb/outputs.h"
 #include "acbb/tools/plot.h"
 #include "acbb/scene.h"
+#include "acbb/tools/scene_schema.h"
 #include "../cli/args.h"
 
 /* The options of command c, "--name" separated by blanks. */

@@ -13,6 +13,7 @@
 #include "acbb/ffi.h"
 #include "acbb/tools/json.h"
 #include "acbb/scene.h"
+#include "acbb/tools/scene_schema.h"
 #include "slurp.h"
 #include "tap.h"
 

@@ -9,7 +9,9 @@
 #   specification) never name MODEL.md, nor does what the program prints
 #   (acbb help, the man page, acbb keys, acbb presets);
 # - every "docs/physics.md §N" / "docs/physics.md section N" there, and
-#   every "§N" inside docs/physics.md, names a section that exists.
+#   every "§N" inside docs/physics.md, names a section that exists;
+# - no "issue N" (the developers' tracker) in what the program prints or in
+#   its string literals.
 # Usage: test_citations.sh PATH/TO/acbb   (cwd = repo root)
 set -u
 ACBB=${1:?usage: test_citations.sh PATH/TO/acbb}
@@ -55,6 +57,36 @@ t $? "no MODEL.md in the program's strings$( [ -s "$TMP/src" ] && printf ' (in %
 "$ACBB" presets >>"$TMP/out" 2>&1
 [ -s "$TMP/out" ] && ! grep -q 'MODEL\.md' "$TMP/out"
 t $? "acbb help, the man page, acbb keys and acbb presets name no MODEL.md"
+
+# ---- no issue numbers in what users read ----
+# "issue 18" means something to the developers' tracker only: help texts
+# say what they mean (the key help of mounting.tilt said "the tilt before
+# issue 18"). What the program prints: the overview, every command's
+# --help, the man page, keys, metrics, the JSON schema; and every string
+# literal of the program (the TUI's help lines, its messages).
+"$ACBB" --help >"$TMP/help" 2>&1
+for c in $("$ACBB" help 2>/dev/null | awk '/^commands:/ { on = 1; next } /^$/ { on = 0 }
+                                          on && /^  [a-z]/ { print $1 ($1 == "bench" ? "_" $2 : "") }'); do
+    # shellcheck disable=SC2046
+    "$ACBB" $(echo "$c" | tr _ ' ') --help >>"$TMP/help" 2>&1
+    echo "$c" >>"$TMP/cmds"
+done
+"$ACBB" metrics >>"$TMP/help" 2>&1
+"$ACBB" schema >>"$TMP/help" 2>&1
+cat "$TMP/out" >>"$TMP/help"
+ISSUE='[Ii]ssues? +#?[0-9]'
+[ "$(wc -l <"$TMP/cmds")" -ge 20 ] && grep -q 'mounting.tilt' "$TMP/help" &&
+    ! grep -E "$ISSUE" "$TMP/help" >"$TMP/hits"
+t $? "no 'issue N' in acbb --help, $(wc -l <"$TMP/cmds") commands' --help, the man page, keys, metrics, schema$( [ -s "$TMP/hits" ] && printf ' (%s)' "$(head -3 "$TMP/hits" | tr '\n' ' ')")"
+: >"$TMP/src"
+for f in cli/*.c cli/*.h src/*/*.c src/*/*.h ui/*.c ui/*.h completion/*.c include/acbb/*.h \
+         include/acbb/tools/*.h; do
+    [ -f "$f" ] && grep -q -E "$ISSUE" "$f" || continue
+    "$CC" -fpreprocessed -dD -E -P "$f" 2>/dev/null >"$TMP/one" || { echo "$f: cpp failed" >>"$TMP/src"; continue; }
+    grep -q -E "$ISSUE" "$TMP/one" && echo "$f" >>"$TMP/src"
+done
+[ ! -s "$TMP/src" ]
+t $? "no 'issue N' in the program's strings (the TUI's help included)$( [ -s "$TMP/src" ] && printf ' (in %s)' "$(head -5 "$TMP/src" | tr '\n' ' ')")"
 
 # ---- every citation names an existing section ----
 # shellcheck disable=SC2086

@@ -16,20 +16,26 @@
 #include <acbb/tools/history.h>
 #include <acbb/tools/json.h>
 #include <acbb/tools/life_eval.h>
+#include <acbb/tools/lubricant.h>
 #include <acbb/tools/measure.h>
 #include <acbb/tools/outfile.h>
 #include <acbb/tools/physics_profile.h>
 #include <acbb/tools/plot.h>
 #include <acbb/tools/preload_map.h>
 #include <acbb/tools/preset_info.h>
+#include <acbb/tools/scene_edit.h>
+#include <acbb/tools/scene_inactive.h>
+#include <acbb/tools/scene_schema.h>
 #include <acbb/tools/schedule.h>
 #include <acbb/tools/sensitivity.h>
 #include <acbb/tools/set.h>
 #include <acbb/tools/study.h>
+#include <acbb/tools/surroundings.h>
 #include <acbb/tools/sweep.h>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 static int n = 0, failed = 0;
 static void ok(bool c, const char *what)
@@ -72,6 +78,16 @@ int main()
     ok(rc == ACBB_CANCELLED, "the same run with the C++ flag set ends ACBB_CANCELLED");
     double v[3] = {3.0, 1.0, 2.0};
     ok(acbb_median(v, 3) == 2.0, "a tools function (acbb_median, acbb/tools/measure.h) links from C++");
+    // A key set by name through the core (scene.h), read back through the
+    // key table the editors use (acbb/tools/scene_schema.h).
+    size_t k = 0;
+    while (k < acbb_scene_field_count() && std::strcmp(acbb_scene_field(k)->key, "inner_speed_rpm"))
+        k++;
+    char buf[64] = "";
+    ok(acbb_scene_set(&s, "operating.inner_speed_rpm", "12000", &err) == ACBB_OK
+           && k < acbb_scene_field_count()
+           && (acbb_scene_field_format(&s, k, buf, sizeof buf), !std::strcmp(buf, "12000")),
+       "a key set by name (scene.h) reads back through the key table (tools/scene_schema.h)");
     std::printf("1..%d\n", n);
     return failed ? 1 : 0;
 }

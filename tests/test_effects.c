@@ -7,6 +7,7 @@
 #include "tap.h"
 #include "acbb/sim.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_inactive.h"
 #include "hertz.h"
 #include "mechanics.h"
 

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "tap.h"
 #include "acbb/sim.h"
+#include "acbb/tools/lubricant.h"
 
 static acbb_status run(const acbb_scene *s, acbb_snapshot *snap, acbb_error *err)
 {

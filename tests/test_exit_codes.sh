@@ -57,7 +57,11 @@ while IFS='|' read -r want args; do
     esac
     rc=$?
     code $rc "$want" "acbb$args"
-    [ "$want" -eq 0 ] || [ -s "$TMP/err" ] || { echo "#   (no message on stderr)"; }
+    # every nonzero exit says why (an "acbb: " line on stderr)
+    if [ "$want" -ne 0 ] && [ "$rc" -eq "$want" ]; then
+        grep -q '^acbb: ' "$TMP/err"
+        t $? "... says why on stderr"
+    fi
     cmd=$1
     [ "$1" = bench ] && cmd="$1 $2"
     [ "$rc" -eq "$want" ] && echo "$cmd|$want" >>"$TMP/covered"

@@ -27,6 +27,7 @@
 #include <gsl/gsl_errno.h>
 #include "acbb/ffi.h"
 #include "acbb/scene.h"
+#include "acbb/tools/lubricant.h"
 #include "slurp.h"
 #include "tap.h"
 

@@ -58,6 +58,17 @@ t $? "internals (acbb_sf_parse, acbb_sf_find) are not exported"
 ! grep -q -x -e acbb_study_run -e acbb_json_num -e acbb_out_open -e acbb_sim_new \
     -e acbb_sim_new_ctl "$TMP/syms"
 t $? "tools (acbb_study_run, acbb_json_num, acbb_out_open) and the old constructors are not exported"
+# The core is what a program that loads, edits by key, validates, runs and
+# reads scenes needs (issue 27 item 5: about 45 functions): the editors'
+# key table, inactive keys, comment-keeping writer, the lubricant helpers
+# and the surroundings are tools (acbb/tools/scene_schema.h, ...).
+! grep -q -x -e acbb_scene_field -e acbb_scene_field_count -e acbb_scene_key_inactive \
+    -e acbb_scene_save_edits -e acbb_scene_write -e acbb_lubricant_apply \
+    -e acbb_scene_surroundings -e acbb_model_level_name "$TMP/syms"
+t $? "the editors' scene functions (acbb_scene_field, acbb_scene_save_edits, ...) are not exported"
+[ "$nsyms" -le 45 ] && grep -q -x -e acbb_scene_apply_edits "$TMP/syms" \
+    && grep -q -x -e acbb_output_find "$TMP/syms"
+t $? "libacbb.so exports at most 45 functions ($nsyms), acbb_scene_apply_edits and acbb_output_find among them"
 
 export PKG_CONFIG_PATH="$(dirname "$PC")" PKG_CONFIG_SYSROOT_DIR="$D"
 pkg-config --cflags acbb | grep -q -F -- "-I$D/"

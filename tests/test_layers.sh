@@ -210,9 +210,10 @@ done
 t $? "src/ layers include only headers of their own or lower layers (base < physics < scene < run < batch < io)"
 [ -z "$bad_layer" ] || printf '%s' "$bad_layer" | sed 's/^/#   /'
 
-# (6) The order on calls: an include of a public header (acbb/status.h,
-# acbb/scene.h) crosses folders unseen by (5), a call through it leaves an
-# undefined symbol in the caller's object. layer_symbols.py maps each
+# (6) The order on calls: an include of a public or tools header
+# (acbb/status.h, acbb/tools/surroundings.h) crosses folders unseen by (5),
+# a call through it leaves an undefined symbol in the caller's object; where
+# a function is declared does not matter here. layer_symbols.py maps each
 # object to its folder and lists references upward, into a client (cli/,
 # ui/), cycles between folders and objects of no ranked folder.
 ranks=$(for d in "${!rank[@]}"; do printf '%s=%s,' "$d" "${rank[$d]}"; done)

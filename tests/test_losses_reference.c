@@ -34,6 +34,7 @@
 #include "tap.h"
 #include "acbb/tools/designation.h"
 #include "acbb/sim.h"
+#include "acbb/tools/lubricant.h"
 #include "skf_model.h"
 
 #define DOC "docs/losses_validation.md"

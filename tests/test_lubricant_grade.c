@@ -8,6 +8,7 @@
 #define IS_CLOSE(got, want, rt, at, ...) do { char nm_[200]; \
         snprintf(nm_, sizeof nm_, __VA_ARGS__); is_close(got, want, rt, at, nm_); } while (0)
 #include "acbb/scene.h"
+#include "acbb/tools/lubricant.h"
 #include "lubrication.h"
 #include "lubricant_grade.h"
 

@@ -19,10 +19,24 @@ t $? "balls[i].slide_i_mps is in m/s"
 grep -E -q '^losses_W\.spin +W +spinning$' "$TMP/out"
 t $? "a loss of the loss table is listed with its label"
 # Every line after the heading: a path, a unit, a label.
-bad=$(tail -n +2 "$TMP/out" | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_][a-zA-Z0-9_]*)+$/ || NF < 3' | wc -l)
+# (a spindle set's index is a number: spindle.sets[0].preload_N)
+bad=$(tail -n +2 "$TMP/out" | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_][a-zA-Z0-9_]*(\[[01]\])?)+$/ || NF < 3' | wc -l)
 rows=$(tail -n +2 "$TMP/out" | wc -l)
 [ "$bad" -eq 0 ] && [ "$rows" -gt 50 ]
 t $? "$rows rows, each a path with a unit and a label ($bad malformed)"
+# The spindle's results (issue 31), under the run JSON's names.
+grep -E -q '^spindle\.nose_drift_um +um ' "$TMP/out" &&
+    grep -E -q '^spindle\.nose_stiffness_N_per_um +N/um +radial ' "$TMP/out" &&
+    grep -E -q '^spindle\.sets\[0\]\.preload_N +N +front set: ' "$TMP/out" &&
+    grep -E -q '^spindle\.sets\[1\]\.preload_N +N +rear set: ' "$TMP/out" &&
+    grep -E -q '^spindle\.coolant_C\.outlet +C ' "$TMP/out"
+t $? "the spindle's nose drift, radial nose stiffness, each set's preload and coolant outlet are listed"
+# ... and a scene that is not a spindle has no value for them: a
+# sensitivity of one says so instead of computing effects on zeros
+"$ACBB" sensitivity presets/7008C.ini --metric spindle.nose_drift_um >/dev/null 2>"$TMP/err"
+code $? 2 "sensitivity --metric spindle.nose_drift_um of 7008C is bad input"
+grep -q "metric spindle.nose_drift_um has no value here: the scene is not a spindle" "$TMP/err"
+t $? "... saying the scene is not a spindle, before any run ($(head -c 200 "$TMP/err"))"
 "$ACBB" help metrics >"$TMP/help" 2>&1
 has "$TMP/help" "--metric" "acbb help metrics says what the names are for"
 "$ACBB" help >"$TMP/help" 2>&1

@@ -7,6 +7,7 @@
 #include <gsl/gsl_errno.h>
 #include "network.h"
 #include "tap.h"
+#include "acbb/tools/surroundings.h"
 
 #define RPM (2.0 * M_PI / 60.0)
 

@@ -11,6 +11,8 @@
 #include "tap.h"
 #include "acbb/tools/physics_profile.h"
 #include "acbb/sim.h"
+#include "acbb/tools/scene_edit.h"
+#include "acbb/tools/scene_inactive.h"
 
 static acbb_scene load(const char *text)
 {

@@ -40,6 +40,7 @@
 #include "acbb/scene.h"
 #include "acbb/tools/schedule.h"
 #include "acbb/sim.h"
+#include "acbb/tools/scene_schema.h"
 #include "slurp.h"
 #include "tap.h"
 

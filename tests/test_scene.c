@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include "acbb/scene.h"
+#include "acbb/tools/scene_edit.h"
+#include "acbb/tools/scene_schema.h"
 #include "tap.h"
 
 static void write_bytes(const char *path, const char *bytes, size_t n);

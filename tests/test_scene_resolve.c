@@ -9,6 +9,7 @@
 #include "tap.h"
 #include "acbb/tools/fidelity.h"
 #include "acbb/sim.h"
+#include "acbb/tools/scene_schema.h"
 
 /* The first key whose formatted value differs, or NULL. */
 static const char *first_diff(const acbb_scene *a, const acbb_scene *b)

@@ -10,6 +10,9 @@
 #include <string.h>
 
 #include "acbb/scene.h"
+#include "acbb/tools/scene_edit.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
 #include "tap.h"
 
 /* A DB pair of 7008C (bore 40, OD 68, width 15 mm) at 30 mm, a single rear

@@ -9,6 +9,7 @@
 #include "acbb/tools/branches.h"
 #include "acbb/tools/schedule.h"
 #include "acbb/tools/measure.h"
+#include "acbb/tools/scene_edit.h"
 #include "tap.h"
 
 #define RPM(x) acbb_rpm_to_rads(x)

@@ -165,12 +165,12 @@ refused pair-DB-heated '.bearings[1].set = 1' "bearings are described (an extra 
 refused pair-DB-heated 'del(.set.preload_N)' "set is described (its keys required)"
 # Every metric `acbb metrics` lists has its place in the schema's run.
 $PY - "$SCHEMA" "$TMP/met.json" <<'PY' >"$TMP/undescribed" 2>&1
-import json, sys
+import json, re, sys
 run = json.load(open(sys.argv[1]))["$defs"]["run"]
 missing = []
 for m in json.load(open(sys.argv[2]))["metrics"]:
     node = run
-    for part in m["path"].replace("[i]", "[]").split("."):
+    for part in re.sub(r"\[(i|[0-9]+)\]", "[]", m["path"]).split("."):
         if part.endswith("[]"):
             node = node["properties"][part[:-2]]["items"]
         else:

@@ -8,6 +8,7 @@
 #include "acbb/tools/sensitivity.h"
 #include "acbb/tools/study.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include <gsl/gsl_errno.h>
 #include "tap.h"
 

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "tap.h"
 #include "acbb/tools/set.h"
+#include "acbb/tools/scene_schema.h"
 
 /* The orientation signs of arrangement `arr` with edits, as "+-..". */
 static int layout(const char *arr, const char *n_bearings, char *signs, acbb_error *err)

@@ -12,6 +12,7 @@
 #include "network.h"
 #include "network_set.h"
 #include "acbb/tools/set.h"
+#include "acbb/tools/surroundings.h"
 
 /* Conductance (W/K) of the edges between nodes a and b. */
 static double g_between(const acbb_tnet *net, int a, int b)

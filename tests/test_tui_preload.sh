@@ -6,7 +6,11 @@
 . "$(dirname "$0")/test_tui_lib.sh"
 
 cp "$ROOT/presets/7008C.ini" "$TMP/copy.ini"
-TUI_ARGS="--pace 0" start "" pm1 copy.ini
+# gnuplot through a wrapper that keeps each script (the export's data)
+printf '#!/bin/sh\ncat >"%s/gp.$$"; cat "%s/gp.$$" >>"%s/gp.all"; exec gnuplot "%s/gp.$$"\n' \
+    "$TMP" "$TMP" "$TMP" "$TMP" >"$TMP/gpw"
+chmod +x "$TMP/gpw"
+TUI_ARGS="--pace 0" start "env ACBB_GNUPLOT='$TMP/gpw'" pm1 copy.ini
 wait_for "copy.ini"
 keys P
 wait_for "Preload window  speeds 3750:22500:6 rpm  preloads 75:750:10 N"
@@ -52,10 +56,28 @@ if command -v gnuplot >/dev/null 2>&1; then
     ok $? "g exports the window chart"
     [ -s "$TMP/acbb-plots/preload_window.png" ] && grep -q '<svg' "$TMP/acbb-plots/preload_window.svg"
     ok $? "as PNG and SVG"
+    # The windows 1..300 at 5000 and 10000 rpm reach the grid's top: no
+    # limit was met there, so 300 N is drawn as "grid top, no limit"
+    # ($S3), never as the upper limit ($S1), as acbb preload-map --plot
+    # draws it (the export drew every window end as a limit line).
+    awk '/^\$S1 << EOD/ { b = 1; next } /^\$S3 << EOD/ { b = 3; next } /^EOD/ { b = 0 }
+         b == 1 && $2 == 300 { bad = 1 } b == 1 { up++ } b == 3 && $2 == 300 { top++ }
+         END { exit bad || top != 2 || up != 2 }' "$TMP/gp.all" &&
+        grep -q "title 'grid top, no limit'" "$TMP/gp.all"
+    ok $? "the export draws the grid's top as 'grid top, no limit', never as the upper limit"
+    mv "$TMP/gp.all" "$TMP/gp.tui"
+    ACBB_GNUPLOT="$TMP/gpw" "$ACBB" preload-map "$TMP/copy.ini" --speeds 5000:20000:4 \
+        --preloads 1:300:6 --max-rise 10 --plot "$TMP/cli.svg" >/dev/null 2>&1
+    gpdata() { awk '/^\$S[0-9]* << EOD/ { b = 1 } b { print } /^EOD/ { b = 0 }' "$1"; }
+    gpdata "$TMP/gp.tui" >"$TMP/gp.tui.data"
+    gpdata "$TMP/gp.all" >"$TMP/gp.cli.data"
+    [ -s "$TMP/gp.tui.data" ] && cmp -s "$TMP/gp.tui.data" "$TMP/gp.cli.data" &&
+        [ "$(grep -o "title '[^']*'" "$TMP/gp.tui" | sort -u)" = \
+          "$(grep -o "title '[^']*'" "$TMP/gp.all" | sort -u)" ]
+    ok $? "its data and titles are acbb preload-map --plot's"
 else
-    echo "ok 14 # SKIP gnuplot is not installed"
-    echo "ok 15 # SKIP gnuplot is not installed"
-    n=$((n + 2))
+    for k in 1 2 3 4; do echo "ok $((n + k)) # SKIP gnuplot is not installed"; done
+    n=$((n + 4))
 fi
 keys x
 wait_for "no preload map running (r starts one)"

@@ -20,6 +20,7 @@
 #include "loss_rows.h"
 #include "progress.h"
 #include "recover.h"
+#include "acbb/tools/scene_schema.h"
 
 /* ---- layout ---- */
 

@@ -2,6 +2,8 @@
 #include <stdio.h>
 #include <string.h>
 #include "acbb/sim.h"
+#include "acbb/tools/scene_edit.h"
+#include "acbb/tools/scene_schema.h"
 #include "editor.h"
 
 #define ACBB_EDITOR_LOCK_S 5.0 /* the TUI waits this long for another save */

@@ -4,6 +4,7 @@
 #include "acbb/outputs.h"
 #include "acbb/scene.h"
 #include "acbb/tools/sensitivity.h"
+#include "acbb/tools/scene_schema.h"
 #include "picker.h"
 
 const acbb_metric_item acbb_metric_menu[] = {

@@ -24,6 +24,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "acbb/tools/outfile.h"
+#include "acbb/tools/scene_edit.h"
 #include "recover.h"
 
 static int state_dir(char *out, size_t n)

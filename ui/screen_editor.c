@@ -8,6 +8,8 @@
 #include <strings.h>
 #include "screens.h"
 #include "acbb/tools/preset_info.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
 
 #define INFO_ROWS 4 /* help and range of the selected field (1 row when a refusal takes 3) */
 

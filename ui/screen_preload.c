@@ -305,7 +305,7 @@ static int cancel(acbb_app *a)
     return 1;
 }
 
-/* dir/preload_window.png and .svg: the CLI's chart (cli/preload_map.c). */
+/* dir/preload_window.png and .svg: `acbb preload-map --plot`'s chart. */
 static void export_chart(acbb_app *a)
 {
     const pm_result *v = &pm(a)->view;
@@ -314,18 +314,17 @@ static void export_chart(acbb_app *a)
                                                             : "no preload map to plot (r runs one)");
         return;
     }
-    double x[PM_SPEEDS], lo[PM_SPEEDS], hi[PM_SPEEDS];
+    /* The CLI's chart (acbb_plot_pmap_chart): a window's end at the grid's
+     * first or last preload is "no limit inside the grid", not a limit; a
+     * row the cancel cut short has no window. */
+    acbb_pmap_row rows[PM_SPEEDS];
     for (int s = 0; s < v->rows_done; s++) {
-        x[s] = v->rows[s].speed_rpm;
-        int have = v->rows[s].lo_N >= 0 && !row_cut(v, s);
-        lo[s] = have ? v->rows[s].lo_N : NAN;
-        hi[s] = have ? v->rows[s].hi_N : NAN;
+        rows[s] = v->rows[s];
+        if (row_cut(v, s)) rows[s].lo_N = rows[s].hi_N = -1.0;
     }
-    acbb_plot_series sr[2] = {
-        { "lowest preload inside the window (no skid)", x, lo, (size_t)v->rows_done, 1, 1, 1 },
-        { "highest preload inside the window (limits)", x, hi, (size_t)v->rows_done, 2, 2, 1 },
-    };
-    acbb_plot_xy px = { "preload window", "inner-ring speed, rpm", "preload, N", sr, 2 };
+    acbb_plot_pmap c;
+    acbb_plot_xy px;
+    acbb_plot_pmap_chart(&v->o, rows, (size_t)v->rows_done, &c, &px);
     char png[PATH_MAX + 32], svg[PATH_MAX + 32];
     acbb_error err = { { 0 } };
     if (acbb_export_xy(a->plot_dir, "preload_window", &px, 1000, 600, png, svg, sizeof png, &err) != ACBB_OK)

@@ -10,6 +10,7 @@
 #include "acbb/tools/schedule.h"
 #include "acbb/units.h"
 #include "acbb/life.h"
+#include "acbb/tools/scene_inactive.h"
 #include "screens.h"
 
 /* The network node that the snapshot's T_outer_ring reads: the one whose

@@ -11,6 +11,7 @@
 #include "export.h"
 #include "results.h"
 #include "screens.h"
+#include "acbb/tools/scene_schema.h"
 
 #define TABLE_W 27   /* the points' table at the right: "%10s %13s" + a margin */
 #define DEFAULT_N 9  /* points of the default range */

@@ -2,9 +2,10 @@
  * coupled run and its snapshot, its results by name, a pool of runs, the
  * statuses, the units and the FFI entry point (ffi.h). The tools in
  * acbb/tools/ (study, accuracy, figures, plots, the JSON writer, sweeps,
- * ...) serve the CLI and the TUI: not installed, not exported, not a
- * stable API. Headers beside the .c files in src/ are internal. Link with
- * `pkg-config --libs acbb`. */
+ * the preset key table and the editors' preset writer, ...) serve the CLI
+ * and the TUI: not installed, not exported, not a stable API. Headers
+ * beside the .c files in src/ are internal. Link with `pkg-config --libs
+ * acbb`. */
 #ifndef ACBB_ACBB_H
 #define ACBB_ACBB_H
 

@@ -10,7 +10,8 @@
  * of acbb_loss_table (losses.h), so a new loss shows up by itself.
  *
  * Entries are the table's rows with the per-loss rows expanded, in JSON
- * order. A bearing entry's path is "section.key" ("ring.delta_x_um"); a
+ * order. A bearing entry's path is "section.key" ("ring.delta_x_um"; a
+ * section may itself be a path: "spindle.sets[0].preload_N"); a
  * ball entry's is "balls[K].key" or "balls[K].section.key"
  * ("balls[0].losses_W.spin"). */
 #ifndef ACBB_OUTPUTS_H
@@ -76,7 +77,8 @@ int acbb_output_old_name(const acbb_output *o, char *buf, size_t n);
 double acbb_output_value(const acbb_output *o, const acbb_snapshot *s, int k);
 
 /* Why the entry has no value in `s` (a stiffness probe that failed,
- * acbb_snapshot.stiffness_failed), or NULL when it has one. Writers print
+ * acbb_snapshot.stiffness_failed; a "spindle..." entry of a scene that is
+ * not a spindle, spindle.n_sets = 0), or NULL when it has one. Writers print
  * a missing value as null (JSON) or an empty cell, never the 0 the
  * snapshot holds. */
 const char *acbb_output_missing(const acbb_output *o, const acbb_snapshot *s);

@@ -12,7 +12,6 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include <stdio.h>
 #include "acbb/status.h"
 
 #ifdef __cplusplus
@@ -159,7 +158,7 @@ typedef struct {
     acbb_visc_model visc;
     acbb_traction_model traction;
     acbb_lub_method lub_method;  /* starvation factor and drag medium (MODEL.md 16) */
-    acbb_oil_grade oil_grade;    /* ISO VG: nu40 midpoint, nu100 from oil_vi (lubricant_grade.h) */
+    acbb_oil_grade oil_grade;    /* ISO VG: nu40 midpoint, nu100 from oil_vi (tools/lubricant.h) */
     double oil_vi;               /* viscosity index (ASTM D2270) of a graded oil */
     double jet_speed;            /* oil-jet exit speed, m/s (method oil-jet) */
     double bath_level;           /* oil level above the lowest outer-raceway point, m (oil-bath) */
@@ -220,7 +219,7 @@ typedef struct {
     double shaft_h_end;          /* shaft end faces to the air, W/(m^2 K) */
 
     /* [surroundings] (MODEL.md 8.1, 13): sizes 0 = derived from the bearing
-     * (acbb_scene_surroundings); housing and cap use materials.housing */
+     * (tools/surroundings.h); housing and cap use materials.housing */
     double housing_od;           /* housing outer diameter, m */
     double housing_length;       /* housing length (centred on the bearing), m */
     acbb_bc_kind housing_bc;     /* exterior: convective (h_natural, to ambient) or fixed */
@@ -302,22 +301,6 @@ typedef struct {
 /* Fill `s` with the 7008C defaults of MODEL.md section 10. */
 void acbb_scene_default(acbb_scene *s);
 
-/* Lubricants by grade (MODEL.md 16, src/scene/lubricant_grade.c). A graded
- * scene (lubricant.grade, or method grease with a base-oil nu40) gets
- * oil_nu40 (ISO 3448 midpoint), oil_nu100 (from oil_vi, ASTM D2270) and
- * oil_alpha_pv (Wooster) written into `s`, except where those keys hold
- * other than their defaults; a custom oil is left as given. A run applies
- * it to its own copy (acbb_sim_create). */
-void acbb_lubricant_apply(acbb_scene *s);
-double acbb_grade_midpoint(acbb_oil_grade g);          /* mm^2/s at 40 C; 0 for custom */
-/* A failed check `rc` of a scene after acbb_lubricant_apply: when a graded
- * oil's derived value is what failed (VG2 at viscosity_index 100 derives
- * nu100 < 1 mm^2/s), the message names the grade and index the user set,
- * not only the key they never wrote. Returns rc. */
-acbb_status acbb_lubricant_explain(const acbb_scene *s, acbb_status rc, acbb_error *err);
-double acbb_viscosity_index(double nu40, double nu100); /* ASTM D2270, mm^2/s; NAN: nu100 < 2 */
-double acbb_nu100_from_vi(double nu40, double vi);     /* mm^2/s: VI(nu40, result) = vi */
-
 /* Load a preset: starts from acbb_scene_default, then applies every key.
  * On failure returns ACBB_EIO or ACBB_EINVAL and writes
  * "path:line: section.key = value: reason" into err. Only a regular file
@@ -343,40 +326,8 @@ acbb_status acbb_scene_load_text_n(const char *text, size_t len, const char *nam
  * /dev/stdout) is written directly. An invalid scene is not written
  * (message "PATH: not saved: reason"). Use this for "save as" to a new file
  * or an export; to save back into the user's own preset, use
- * acbb_scene_save_edits. */
+ * acbb_scene_save_edits (tools/scene_edit.h). */
 acbb_status acbb_scene_save(const char *path, const acbb_scene *s, acbb_error *err);
-/* The text acbb_scene_save writes, to an open stream the caller owns (the
- * TUI's recovery files, written through a directory descriptor). The scene
- * must pass acbb_scene_validate; ACBB_EIO when a write fails. */
-acbb_status acbb_scene_write(FILE *f, const acbb_scene *s, acbb_error *err);
-
-/* Save `s` into the preset at `path`, keeping the user's file (the way
- * `git config` writes; DESIGN.md). For the TUI's Save and `acbb edit`.
- * - `path` exists and is a regular file (a symlink is followed): only the
- *   lines of keys whose values changed are rewritten, and on such a line
- *   only the value: the key spelling, blanks and an inline comment after the
- *   value stay. A value written differently but meaning the same ("1e3" for
- *   1000, "yes" for on) is not a change. Comments, blank lines, order and
- *   line ends (LF or CRLF) stay. A key that is not in the file and whose
- *   new value differs from the default is appended at the end of its
- *   section (after the section's last key, in its last occurrence); a
- *   missing section is appended at the end of the file. Keys absent from
- *   the file whose value is the default stay absent.
- * - `path` does not exist, is empty, or is not a regular file (FIFO,
- *   device): the full preset is written as by acbb_scene_save.
- * - The existing file must itself read as a preset (syntax, known keys,
- *   each key's range; the cross-field rules of the OLD file do not
- *   matter): otherwise nothing is written and the message names the line
- *   ("PATH: not saved: PATH:3: ...").
- * `s` must pass acbb_scene_validate. Written through acbb_out (atomic, mode
- * kept, symlink followed). Returns ACBB_OK, ACBB_EINVAL/ACBB_ILL_POSED (the
- * scene or the old file), ACBB_EIO or ACBB_ENOMEM; on failure the file is
- * untouched. */
-acbb_status acbb_scene_save_edits(const char *path, const acbb_scene *s, acbb_error *err);
-/* The same, the file at `path` kept and the result written to `to`
- * (`acbb edit --out`: an installed preset edited into the user's copy). */
-acbb_status acbb_scene_save_edits_to(const char *path, const char *to, const acbb_scene *s,
-                                     acbb_error *err);
 
 /* Set one value from text, "section.key" and "value" in preset units
  * (as `--set` on the CLI and the TUI editor do). Validates the value;
@@ -400,94 +351,6 @@ acbb_status acbb_scene_apply_edits(acbb_scene *s, const char *const *edits, size
 /* Cross-field consistency (balls fit on the pitch circle, groove radius >
  * ball radius, ...). Returns ACBB_EINVAL with the reason in err. */
 acbb_status acbb_scene_validate(const acbb_scene *s, acbb_error *err);
-
-/* The surroundings the thermal network puts around the bearing (MODEL.md
- * 8.1), m: the scene's [surroundings] values, each unset (0) size derived by
- * scaling the seed's 7008C rig (OD 68, width 15, bore 40 mm) with the
- * bearing: diameters outside the bearing by OD/68, axial sizes by width/15,
- * insets on the outer-ring face by its height (OD - outer land)/2 / 4.95 mm,
- * the cage bore clearance by D/6.35 mm. The 7008C scene gets the seed rig
- * exactly (housing 120 x 45, shoulder 10, cap 10, shaft bore 25, shaft 45). */
-typedef struct {
-    double housing_od, housing_length, shaft_bore, shaft_length, cap_od, cap_thickness;
-    double shoulder_thickness;   /* rear housing shoulder wall (10 mm for 7008C) */
-    double shoulder_inset;       /* shoulder reaches this far inside the OD radius (4) */
-    double cap_inset;            /* cap bore radius = OD/2 - cap_inset (6) */
-    double x_end_wall;           /* |x| of the housing end-wall body node 36 (17) */
-    double cage_clearance;       /* cage bore radius = d_m/2 - this (1.5) */
-} acbb_surroundings;
-
-void acbb_scene_surroundings(const acbb_scene *s, acbb_surroundings *out);
-
-/* The boundary a cooled face (s->bore_bc or s->cap_bc) has in this scene:
- * fixed or convective as set; `derived` (the default) is [S]'s fixed face
- * on the seed's own rig (the 7008C envelope with the rig's surroundings,
- * [S] section 3) and convective at the face's h for every other bearing:
- * a fixed face is an unlimited heat sink, which only the rig measured
- * (MODEL.md 13 "Surroundings", issue 18). */
-acbb_bc_kind acbb_face_bc_kind(const acbb_scene *s, const acbb_face_bc *bc);
-
-/* ---- schema introspection (for the TUI editor and help output) ---- */
-typedef enum { ACBB_FIELD_REAL, ACBB_FIELD_INT, ACBB_FIELD_BOOL,
-               ACBB_FIELD_ENUM } acbb_field_type;
-
-typedef struct {
-    const char *section;     /* "bearing" */
-    const char *key;         /* "ball_diameter_mm" (unit in the name) */
-    acbb_field_type type;
-    const char *unit;        /* "mm", "rpm", "" */
-    double min, max;         /* allowed range in preset units; an end is
-                                included unless min_open / max_open */
-    const char *const *choices; /* NULL-terminated, for ENUM */
-    const char *help;        /* one line */
-    bool min_open, max_open; /* true: that end is excluded (x > min, x < max) */
-    /* Plausible range of an uncertain input (MODEL.md ASSUMED / UNSURE items
-     * and the surroundings), separate from the validation range above and
-     * inside it: what `acbb sensitivity` varies. plaus_src NULL: the key is
-     * not an uncertain input. REAL: preset units; ENUM: two choice indices
-     * (a two-level factor, e.g. fixed vs convective). plaus_src cites where
-     * the range comes from ("MODEL.md 5 ASSUMED 0.08-0.13"). */
-    double plaus_lo, plaus_hi;
-    const char *plaus_src;
-} acbb_field_info;
-
-size_t acbb_scene_field_count(void);
-const acbb_field_info *acbb_scene_field(size_t i);
-/* Current value of field i, formatted in preset units (buf >= 64 bytes). */
-void acbb_scene_field_format(const acbb_scene *s, size_t i, char *buf, size_t n);
-/* Allowed values of field i as text (buf >= 160 bytes), e.g.
- * "0 < x <= 100 mm", "on | off", "static | quasi-static | ...". Says which
- * range ends are exclusive, which acbb_field_info cannot. */
-void acbb_scene_field_range(size_t i, char *buf, size_t n);
-
-/* The same as an interval, as the check applies it (for `acbb keys`):
- * "(0, 100] mm", "[3, 64]", "on | off", "static | quasi-static | ...". */
-void acbb_scene_field_interval(size_t i, char *buf, size_t n);
-
-/* Field i's plausible range as text (buf >= 160 bytes), e.g.
- * "[0.08, 0.13]; MODEL.md 5 ASSUMED 0.08-0.13" or "fixed | convective;
- * ..."; "" when the key is not an uncertain input. */
-void acbb_scene_field_plausible(size_t i, char *buf, size_t n);
-
-const char *acbb_model_level_name(acbb_model_level m);
-
-/* Effect switches that are on but do nothing in this scene (at its model
- * level, or because another switch overrides them), and set inputs the
- * scene's network does not have: the name (the [effects] key, or the part),
- * the key as the user would write it, and why; static strings; at most `cap`
- * of them; returns how many. A client says so instead of ignoring the input
- * silently. */
-typedef struct {
-    const char *effect;
-    const char *why;
-    const char *key;       /* "effects.centrifugal = on", "surroundings.cap_*" */
-} acbb_inactive_effect;
-size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *out, size_t cap);
-
-/* Whether the preset key "section.key" ("mounting.preload_N") has no effect
- * in scene s: true with the row that says why (and which key makes it act)
- * in *out (may be NULL). For a what-if line or an editor mark. */
-bool acbb_scene_key_inactive(const acbb_scene *s, const char *key, acbb_inactive_effect *out);
 
 #ifdef __cplusplus
 }

@@ -15,6 +15,7 @@
 #include "acbb/tools/fidelity.h"
 #include "acbb/tools/measure.h"
 #include "acbb/sim.h"
+#include "acbb/tools/scene_schema.h"
 #include "accuracy_priv.h"
 #include "cancel.h"
 

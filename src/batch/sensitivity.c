@@ -10,6 +10,7 @@
 #include "gsl_quiet.h"
 #include "acbb/tools/measure.h"
 #include "acbb/tools/sensitivity.h"
+#include "acbb/tools/scene_schema.h"
 
 size_t acbb_sens_inputs(const acbb_scene *s, acbb_sens_input *out, size_t cap)
 {

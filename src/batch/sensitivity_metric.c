@@ -30,6 +30,10 @@ acbb_status acbb_metric_value(const acbb_snapshot *snap, const char *path, doubl
     if (o.row->scope == ACBB_OUT_BALL && k >= snap->n_balls)
         return acbb_error_set(err, ACBB_EINVAL, "metric '%s': ball index must be 0..%d",
                               path, snap->n_balls - 1);
+    /* No value is not 0: a failed stiffness probe, a spindle's result of
+     * another scene (acbb_output_missing) */
+    const char *why = acbb_output_missing(&o, snap);
+    if (why) return acbb_error_set(err, ACBB_EINVAL, "metric '%s' has no value: %s", path, why);
     *out = acbb_output_value(&o, snap, (int)k);
     return ACBB_OK;
 }

@@ -14,6 +14,7 @@
 #include "acbb/tools/measure.h"
 #include "acbb/tools/study.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include "study_priv.h"
 #include "cancel.h"
 

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/tools/measure.h"
+#include "acbb/tools/scene_schema.h"
+#include "acbb/tools/surroundings.h"
 #include "study_priv.h"
 #include "cancel.h"
 

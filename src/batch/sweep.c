@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "acbb/tools/sweep.h"
+#include "acbb/tools/scene_schema.h"
 #include "c_locale.h"
 
 typedef struct {

@@ -10,6 +10,7 @@
 #include "acbb/tools/outfile.h"
 #include "acbb/tools/schedule.h"
 #include "acbb/tools/sweep.h"
+#include "acbb/tools/scene_schema.h"
 
 static int gridded(const acbb_sweep *g, const char *key)
 {

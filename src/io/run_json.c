@@ -8,7 +8,10 @@
 #include "acbb/outputs.h"
 #include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
 #include "life_json.h"
+#include "spindle_json.h"
 
 /* The table's entries of `section` (NULL: the keys directly in a ball) as
  * JSON numbers, in table order: bearing entries when k < 0, else ball k's. */
@@ -22,6 +25,11 @@ static void rows(acbb_json *j, const acbb_snapshot *s, const char *section, int 
         if (k < 0 && acbb_output_missing(&e, s)) acbb_json_null(j, e.key);
         else acbb_json_num(j, e.key, acbb_output_value(&e, s, k));
     }
+}
+
+void acbb_json_table_rows(acbb_json *j, const acbb_snapshot *s, const char *section)
+{
+    rows(j, s, section, -1);
 }
 
 /* A bearing section of the table as a JSON object. */
@@ -169,6 +177,7 @@ void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_sn
     section(j, s, "energy_W");
     acbb_json_write_life(j, s);
     if (s->n_bearings > 1) set_part(j, s, n == s->n_bearings ? b : NULL, s->n_bearings);
+    if (s->spindle.n_sets > 0) acbb_json_write_spindle(j, s); /* docs/spindle.md */
     if (sc->schedule_n > 0) acbb_json_write_schedule(j, sc, s);
     if (br) acbb_json_write_branches(j, br);
 

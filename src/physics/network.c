@@ -18,6 +18,7 @@
 #include <string.h>
 #include "contact_heat.h"
 #include "network.h"
+#include "acbb/tools/surroundings.h"
 
 #define R_OPEN 1e6             /* "no contact" spot / no-flow resistance, K/W */
 #define RE_DISC_TURB 2.4e5     /* rotating-disc laminar/turbulent transition (UNSURE) */

@@ -12,6 +12,7 @@
 #include <string.h>
 #include "network_set.h"
 #include "acbb/tools/set.h"
+#include "acbb/tools/surroundings.h"
 
 /* Node numbers of the 46-node network (MODEL.md 8.1 table). */
 enum { N_AMB = 0, N_HOUSING_REAR_FACE = 32, N_HOUSING_FRONT_FACE = 33, N_CAP_BODY = 41 };

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "spindle_net_priv.h"
+#include "acbb/tools/surroundings.h"
 
 /* What a bearing network's node becomes in the spindle. */
 typedef enum {

@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "acbb/scene.h"
+#include "acbb/tools/surroundings.h"
 
 /* An unset (0) size is the seed rig's value scaled by dim / ref; ref is
  * written as the schema computes a preset value (mm * 1e-3) so the 7008C

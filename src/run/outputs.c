@@ -28,6 +28,22 @@ static double exp_inner_ring(const acbb_snapshot *s)
 #define TO_DEG 1.0, ACBB_DEG
 #define TO_MRAD 1e3, 1.0
 
+/* Set K (0 front, 1 rear) of a spindle: "spindle.sets[K].key". */
+#define SPINDLE_SET(k, m) OFF_S(spindle.sets[k].m)
+#define SPINDLE_SET_ROW(k, pos, key, unit, what, m, conv)                                \
+    { "spindle.sets[" #k "]", key, "spindle.sets[" #k "]." key, unit, pos " set: " what, \
+      SPINDLE_SET(k, m), conv }
+#define SPINDLE_SET_ROWS(k, pos)                                                          \
+    SPINDLE_SET_ROW(k, pos, "preload_N", "N", "preload now (no external thrust)",         \
+                    preload_N, AS_IS),                                                    \
+    SPINDLE_SET_ROW(k, pos, "axial_N", "N", "axial force from the shaft", axial_N, AS_IS), \
+    SPINDLE_SET_ROW(k, pos, "radial_N", "N", "radial reaction", radial_N, AS_IS),         \
+    SPINDLE_SET_ROW(k, pos, "moment_Nm", "N m", "moment reaction", moment_Nm, AS_IS),     \
+    SPINDLE_SET_ROW(k, pos, "loss_W", "W", "losses, all its bearings", loss_W, AS_IS),    \
+    SPINDLE_SET_ROW(k, pos, "T_inner_C", "C", "hottest inner ring", T_inner_C, AS_IS),    \
+    SPINDLE_SET_ROW(k, pos, "T_outer_C", "C", "hottest outer ring", T_outer_C, AS_IS),    \
+    SPINDLE_SET_ROW(k, pos, "T_ball_C", "C", "hottest ball", T_ball_C, AS_IS)
+
 static const acbb_output_row k_rows[] = {
     { "losses_W", NULL, "P_%s_W", "W", NULL, OFF_S(losses.P), AS_IS },
     { "losses_W", "total", "P_total_W", "W", "total power loss", OFF_S(losses.total), AS_IS },
@@ -170,6 +186,41 @@ static const acbb_output_row k_rows[] = {
     { "life", "edge_margin_deg", "life_edge_margin_deg", "deg",
       "least angle from a contact ellipse's end to its shoulder (< 0: truncated)",
       OFF_S(life.edge_margin_deg), AS_IS },
+    /* A spindle (spindle.h, docs/spindle.md): missing for any other scene
+     * (acbb_output_missing). The path is the name: no old column name. */
+    { "spindle", "nose_drift_um", "spindle.nose_drift_um", "um",
+      "nose axial thermal drift (+: away from the front set)",
+      OFF_S(spindle.nose_drift_axial), TO_UM },
+    { "spindle", "nose_radial_drift_um", "spindle.nose_radial_drift_um", "um",
+      "shaft radial thermal growth at the nose", OFF_S(spindle.nose_drift_radial), TO_UM },
+    { "spindle", "nose_tilt_urad", "spindle.nose_tilt_urad", "urad", "nose tilt under the loads",
+      OFF_S(spindle.nose_theta), 1e6, 1.0 },
+    { "spindle", "nose_stiffness_N_per_um", "spindle.nose_stiffness_N_per_um", "N/um",
+      "radial static stiffness at the nose", OFF_S(spindle.nose_k_radial), 1e-6, 1.0 },
+    { "spindle", "nose_axial_stiffness_N_per_um", "spindle.nose_axial_stiffness_N_per_um",
+      "N/um", "axial static stiffness at the nose", OFF_S(spindle.nose_k_axial), 1e-6, 1.0 },
+    { "spindle", "nose_tilt_stiffness_Nm_per_mrad", "spindle.nose_tilt_stiffness_Nm_per_mrad",
+      "N m/mrad", "tilt static stiffness at the nose", OFF_S(spindle.nose_k_tilt), 1e-3, 1.0 },
+    { "spindle", "rear_shift_um", "spindle.rear_shift_um", "um",
+      "shaft minus housing axial growth between the sets", OFF_S(spindle.rear_shift), TO_UM },
+    { "spindle.nose_displacement_um", "axial", "spindle.nose_displacement_um.axial", "um",
+      "nose axial displacement under the loads", OFF_S(spindle.nose_u), TO_UM },
+    { "spindle.nose_displacement_um", "radial", "spindle.nose_displacement_um.radial", "um",
+      "nose radial displacement under the loads", OFF_S(spindle.nose_w), TO_UM },
+    { "spindle.heat_W", "motor", "spindle.heat_W.motor", "W", "motor heat, rotor + stator",
+      OFF_S(spindle.Q_motor_W), AS_IS },
+    { "spindle.heat_W", "bearings", "spindle.heat_W.bearings", "W", "both sets' losses",
+      OFF_S(spindle.Q_bearings_W), AS_IS },
+    { "spindle.heat_W", "coolant", "spindle.heat_W.coolant", "W", "heat the coolant carries away",
+      OFF_S(spindle.Q_coolant_W), AS_IS },
+    { "spindle.heat_W", "air", "spindle.heat_W.air", "W", "heat to the air (housing, shaft ends)",
+      OFF_S(spindle.Q_air_W), AS_IS },
+    { "spindle.coolant_C", "inlet", "spindle.coolant_C.inlet", "C", "coolant inlet",
+      OFF_S(spindle.T_coolant_in_C), AS_IS },
+    { "spindle.coolant_C", "outlet", "spindle.coolant_C.outlet", "C", "coolant outlet",
+      OFF_S(spindle.T_coolant_out_C), AS_IS },
+    SPINDLE_SET_ROWS(0, "front"),
+    SPINDLE_SET_ROWS(1, "rear"),
 };
 #define N_ROWS (sizeof k_rows / sizeof k_rows[0])
 
@@ -261,9 +312,16 @@ static const struct { size_t off; unsigned bit; } probe_rows[] = {
     { offsetof(acbb_snapshot, stiffness_tilt_held), ACBB_STIFF_TILT_HELD },
 };
 
+/* A spindle row ("spindle..." section) of a snapshot without a spindle. */
+static int spindle_missing(const acbb_output_row *r, const acbb_snapshot *s)
+{
+    return r->section && strncmp(r->section, "spindle", 7) == 0 && s->spindle.n_sets == 0;
+}
+
 const char *acbb_output_missing(const acbb_output *o, const acbb_snapshot *s)
 {
     const acbb_output_row *r = o->row;
+    if (spindle_missing(r, s)) return "the scene is not a spindle ([shaft] segments = 0)";
     if (r->scope != ACBB_OUT_BEARING || r->get) return NULL;
     for (size_t i = 0; i < sizeof probe_rows / sizeof probe_rows[0]; i++)
         if (r->off == probe_rows[i].off && (s->stiffness_failed & probe_rows[i].bit))

@@ -26,6 +26,7 @@
 #include "sim_set.h"
 #include "steady_polish.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/lubricant.h"
 #include "stepper.h"
 
 

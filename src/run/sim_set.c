@@ -18,6 +18,7 @@
 #include "acbb/tools/measure.h"
 #include "acbb/tools/fidelity.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/lubricant.h"
 #include "cancel.h"
 #include "steady_polish.h"
 #include "stepper.h"

@@ -17,6 +17,7 @@
 #include "cancel.h"
 #include "acbb/tools/measure.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/lubricant.h"
 
 #define SYNC_TOL 1e-2 /* transient steps: resistances lag below this move (sim_set.c's) */
 

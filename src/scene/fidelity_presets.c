@@ -12,6 +12,7 @@
 #include <string.h>
 #include "acbb/tools/accuracy.h"
 #include "acbb/tools/fidelity.h"
+#include "acbb/tools/scene_schema.h"
 
 #define QS ACBB_MODEL_QUASI_STATIC
 #define QD ACBB_MODEL_QUASI_DYNAMIC

@@ -24,6 +24,7 @@
 #include "gsl_quiet.h"
 #include "lubricant_grade.h"
 #include "viscosity_index_table.h"
+#include "acbb/tools/lubricant.h"
 
 static const double k_midpoint[ACBB_GRADES] = {
     0, 2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500,

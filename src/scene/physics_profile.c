@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "acbb/tools/physics_profile.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 
 typedef struct {

@@ -19,6 +19,8 @@
 
 #include "acbb/tools/outfile.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/scene_edit.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 
 /* A preset is a few kB; anything far larger is not one. */

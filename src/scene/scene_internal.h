@@ -22,6 +22,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "acbb/scene.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
 
 /* Range ends: closed (inclusive) or open (exclusive, "must be > 0"). */
 enum { CC, OC, CO, OO };

@@ -25,6 +25,8 @@
 #include "acbb/tools/outfile.h"
 #include "acbb/tools/physics_profile.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/scene_edit.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 
 /* ---- opening ---- */

@@ -4,6 +4,7 @@
  * constructor calls this and keeps the result (acbb_sim_scene); writers
  * and planners that build no Sim call it themselves. */
 #include "acbb/tools/fidelity.h"
+#include "acbb/tools/lubricant.h"
 #include "lubricant_grade.h"
 
 int acbb_scene_resolve(const acbb_scene *in, acbb_scene *out, acbb_fidelity_choice *fc)

@@ -10,6 +10,9 @@
 #include "scene_internal.h"
 #include "acbb/tools/set.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
+#include "acbb/tools/surroundings.h"
 
 #define show acbb_sf_show
 

@@ -9,6 +9,8 @@
 
 #include "acbb/tools/set.h"
 #include "acbb/spindle.h"
+#include "acbb/tools/scene_inactive.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 
 #define show acbb_sf_show

@@ -16,6 +16,7 @@
 #include "acbb/limits.h"
 #include "acbb/tools/set.h"
 #include "acbb/units.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 /* Enum fields are read and written through an int (memcpy, no aliasing). */
@@ -247,7 +248,7 @@ const acbb_sfield acbb_sf_table[] = {
          "preload force (sets dx at 20 C, 0 rpm when preload = displacement)"),
     ENUM("mounting", "tilt", tilt, k_tilt, ACBB_TILT_AUTO,
          "inner-ring tilt: auto and free (solved whenever radial load or moment act, 0 N m "
-         "included), or held (0; the tilt before issue 18 at 0 N m)"),
+         "included), or held (0 whatever the loads: the ring kept square to the shaft)"),
 
     /* [set] (MODEL.md 14): a spindle set; single = today's one bearing */
     ENUM("set", "arrangement", set_arrangement, acbb_set_arrangement_names, ACBB_SET_SINGLE,
@@ -628,10 +629,16 @@ const char *acbb_sf_section_name(size_t k)
     return NULL;
 }
 
+/* One pass over the table (a preset's every key line asks: the pass over
+ * each section name in turn cost 1.7 M instructions a load). */
 int acbb_sf_section_index(const char *name)
 {
-    for (size_t k = 0; k < ACBB_SF_SECTIONS_MAX && acbb_sf_section_name(k); k++)
-        if (strcmp(acbb_sf_section_name(k), name) == 0) return (int)k;
+    int k = -1;
+    for (size_t i = 0; i < acbb_sf_n; i++) {
+        if (!starts_section(i)) continue;
+        if (++k >= ACBB_SF_SECTIONS_MAX) return -1;
+        if (strcmp(acbb_sf_table[i].info.section, name) == 0) return k;
+    }
     return -1;
 }
 

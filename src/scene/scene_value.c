@@ -9,6 +9,7 @@
 #include <strings.h>
 
 #include "acbb/tools/physics_profile.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 

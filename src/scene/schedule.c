@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/scene_schema.h"
 #include "scene_internal.h"
 #include "c_locale.h"
 

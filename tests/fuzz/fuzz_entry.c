@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include "acbb/scene.h"
 #include "acbb/tools/schedule.h"
+#include "acbb/tools/scene_schema.h"
 #include "fuzz_entry.h"
 
 /* One temporary file per process, rewritten for every input: the loader

@@ -68,7 +68,8 @@ void acbb_json_write_run(acbb_json *j, const acbb_scene *sc, const acbb_snapshot
  * bearing) add `bearings` (each bearing's single-bearing results) and `set`
  * (the output table's "set" entries, MODEL.md 14; b NULL: a set's document
  * has `set` but no `bearings`); br (branches.h; NULL:
- * none) adds `branches`. A scene with a schedule also gets `schedule`. */
+ * none) adds `branches`. A scene with a schedule also gets `schedule`, a
+ * spindle (s->spindle.n_sets > 0, spindle.h) `spindle`. */
 void acbb_json_write_run_parts(acbb_json *j, const acbb_scene *sc, const acbb_snapshot *s,
                                const acbb_snapshot *b, int n, const acbb_branches *br);
 /* The run's `schedule` object (schedule.h: the rows, the row reached, whether

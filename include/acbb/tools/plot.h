@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include "acbb/tools/accuracy.h"
 #include "acbb/tools/history.h"
+#include "acbb/tools/preload_map.h"
 #include "acbb/sim.h"
 #include "acbb/status.h"
 
@@ -113,6 +114,22 @@ typedef struct {
  * has a finite point or a label has a control character. */
 acbb_status acbb_plot_xy_files(const acbb_plot_xy *p, const char *png_path,
                                const char *svg_path, int width, int height, acbb_error *err);
+
+/* The preload window's chart (`acbb preload-map --plot`, the TUI's Preload
+ * export): per speed the no-skid floor and the limits' ceiling. A window
+ * end at the grid's first or last preload found no limit inside the grid:
+ * it is a series of markers of its own ("grid bottom, no skid", "grid top,
+ * no limit"), never drawn as a limit line. rows[0..n), n at most
+ * ACBB_PMAP_MAX_AXIS (more are left out); a row with lo_N < 0 has no
+ * window (no point). *p points into *c, which the caller keeps. */
+enum { ACBB_PLOT_PMAP_FLOOR, ACBB_PLOT_PMAP_CEIL, ACBB_PLOT_PMAP_GRID_LO,
+       ACBB_PLOT_PMAP_GRID_HI, ACBB_PLOT_PMAP_N };
+typedef struct {
+    double x[ACBB_PMAP_MAX_AXIS], y[ACBB_PLOT_PMAP_N][ACBB_PMAP_MAX_AXIS];
+    acbb_plot_series series[ACBB_PLOT_PMAP_N];
+} acbb_plot_pmap;
+void acbb_plot_pmap_chart(const acbb_pmap_opts *o, const acbb_pmap_row *rows, size_t n,
+                          acbb_plot_pmap *c, acbb_plot_xy *p);
 /* As acbb_plot_xy_files, with the key of `look` (may be NULL). */
 acbb_status acbb_plot_xy_styled(const acbb_plot_xy *p, const acbb_plot_look *look,
                                 const char *png_path, const char *svg_path, int width,

@@ -50,7 +50,8 @@ extern "C" {
 /* ---- metrics ---- */
 
 /* The value of `path` in `snap` into *out (JSON units). Returns ACBB_OK,
- * or ACBB_EINVAL with the reason (unknown name, ball index out of range). */
+ * or ACBB_EINVAL with the reason (unknown name, ball index out of range,
+ * no value in this snapshot: acbb_output_missing). */
 acbb_status acbb_metric_value(const acbb_snapshot *snap, const char *path, double *out,
                               acbb_error *err);
 /* Metric name i into buf (ball fields as "balls[i].X"); 0 past the end. */
