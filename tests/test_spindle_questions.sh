@@ -37,6 +37,16 @@ at() {
     jq -s --arg k "$2" --argjson v "$3" ".[] | select(.grid[\$k] == \$v) | .[\"$4\"]" \
         "$TMP/$1.pts"
 }
+# trend NAME KEY LO HI PATH COND TEXT: COND holds for a = PATH at KEY = HI
+# and b = PATH at KEY = LO (an awk expression), both numbers.
+trend() {
+    local b a
+    b=$(at "$1" "$2" "$3" "$5")
+    a=$(at "$1" "$2" "$4" "$5")
+    awk -v a="$a" -v b="$b" "BEGIN { n = \"^-?[0-9]\"
+        exit !(a ~ n && b ~ n && ($6)) }"
+    t $? "$7: $a at $4, $b at $3"
+}
 finite='[.[] | select(.status == "converged" or .status == "runaway")
          | [."spindle.nose_drift_um", ."spindle.nose_stiffness_N_per_um",
             ."spindle.sets[0].preload_N", ."spindle.sets[0].axial_N",
@@ -47,25 +57,17 @@ sweep flow "$MOTOR" --grid spindle.coolant_flow_l_min=1,8
 code $? 0 "motor spindle: sweep over coolant flow"
 jq -s -e "($finite) and length == 2" "$TMP/flow.pts" >/dev/null
 t $? "coolant flow: the spindle columns present and finite on both points"
-o1=$(at flow spindle.coolant_flow_l_min 1 spindle.coolant_C.outlet)
-o8=$(at flow spindle.coolant_flow_l_min 8 spindle.coolant_C.outlet)
-d1=$(at flow spindle.coolant_flow_l_min 1 spindle.nose_drift_um)
-d8=$(at flow spindle.coolant_flow_l_min 8 spindle.nose_drift_um)
-awk -v a="$o8" -v b="$o1" 'BEGIN { exit !(a < b) }'
-t $? "more coolant flow: a cooler outlet ($o8 C at 8 L/min, $o1 C at 1)"
-awk -v a="$d8" -v b="$d1" 'BEGIN { exit !(a > 0 && a < b) }'
-t $? "more coolant flow: a smaller nose drift ($d8 um at 8 L/min, $d1 um at 1)"
+trend flow spindle.coolant_flow_l_min 1 8 spindle.coolant_C.outlet 'a < b' \
+    "more coolant flow: a cooler outlet (C)"
+trend flow spindle.coolant_flow_l_min 1 8 spindle.nose_drift_um 'a > 0 && a < b' \
+    "more coolant flow: a smaller nose drift (um)"
 
 sweep preload "$MOTOR" --grid mounting.preload_N=150,600
 code $? 0 "motor spindle: sweep over front preload"
-k1=$(at preload mounting.preload_N 150 spindle.nose_stiffness_N_per_um)
-k6=$(at preload mounting.preload_N 600 spindle.nose_stiffness_N_per_um)
-p1=$(at preload mounting.preload_N 150 'spindle.sets[0].preload_N')
-p6=$(at preload mounting.preload_N 600 'spindle.sets[0].preload_N')
-awk -v a="$k6" -v b="$k1" 'BEGIN { exit !(a > b) }'
-t $? "more front preload: a stiffer nose ($k6 N/um at 600 N, $k1 at 150)"
-awk -v a="$p6" -v b="$p1" 'BEGIN { exit !(a > b && b > 150) }'
-t $? "more front preload: the front set runs at more, above its assembly ($p6 N, $p1 N)"
+trend preload mounting.preload_N 150 600 spindle.nose_stiffness_N_per_um 'a > b' \
+    "more front preload: a stiffer nose (N/um)"
+trend preload mounting.preload_N 150 600 'spindle.sets[0].preload_N' 'a > b && b > 150' \
+    "more front preload: the front set runs at more, above its assembly (N)"
 
 sweep friction "$BELT" --grid spindle.rear_friction_N=40,400
 code $? 0 "belt spindle: sweep over the rear sleeve's friction"
