@@ -96,6 +96,9 @@ const acbb_cli_option acbb_cli_options[CLI_OPT_COUNT] = {
     [CLI_OPT_CSV_HEADER] = { "csv-header", NULL,
                              "the sweep's header as a first CSV line '# {...}' instead of in "
                              "FILE.json beside the CSV" },
+    [CLI_OPT_NO_STIFFNESS] = { "no-stiffness", NULL,
+                               "skip the end-of-run stiffness probes (about 40 % of a steady "
+                               "point): the records carry no stiffness columns" },
 };
 
 /* Optimal string alignment distance: insertions, deletions, substitutions

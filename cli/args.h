@@ -33,6 +33,7 @@ typedef enum {
     CLI_OPT_MAX_WALL,
     CLI_OPT_BASH_COMPLETION,
     CLI_OPT_CSV_HEADER,
+    CLI_OPT_NO_STIFFNESS,
     CLI_OPT_COUNT
 } acbb_cli_opt;
 

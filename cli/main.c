@@ -73,10 +73,12 @@ const acbb_cli_command acbb_cli_commands[] = {
       "grid, fingerprint) goes to FILE.json beside it, or, with --csv-header, on a\n"
       "first line '# {...}' of the CSV. --metric PATH (repeatable, `acbb metrics`)\n"
       "adds that result to every record; it is part of the sweep (a resume with\n"
-      "other metrics is refused).\n",
+      "other metrics is refused). --no-stiffness skips the stiffness probes (about\n"
+      "40 % of a steady point): the ring.stiffness_* and set.stiffness_* columns\n"
+      "are left out of every record and the header says \"stiffness\": false.\n",
       SCENE_OPTS | O(PARAM) | O(VALUES) | O(JSON) | O(CSV) | O(JOBS) | O(GRID) | O(JSONL) |
-      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT) | O(MAX_WALL) | O(METRIC) | O(CSV_HEADER), 1, 1,
-      0, acbb_cli_cmd_sweep },
+      O(SHARD) | O(MAX_POINTS) | O(TRANSIENT) | O(MAX_WALL) | O(METRIC) | O(CSV_HEADER) |
+      O(NO_STIFFNESS), 1, 1, 0, acbb_cli_cmd_sweep },
     { "merge", NULL, "OUT IN...", "join sweep outputs (shards) into the canonical table",
       "Sorted by point index, each point once, wall_ms dropped: the merge of the\n"
       "shards equals `acbb merge OUT sweep.jsonl` of a one-machine sweep byte for\n"

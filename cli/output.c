@@ -328,10 +328,13 @@ static void summary_set(acbb_cli_out *o, const acbb_snapshot *s)
     fprintf(o->f, "\nset          preload %.1f N (assembly %.1f N), lift-off thrust %.0f N "
             "(the other side keeps %.1f N there)\n", v->preload_N, v->preload_assembly_N,
             v->liftoff_thrust_N, v->liftoff_remainder_N);
+    /* In a spindle the set's own stiffness is not the nose's (the shaft
+     * bends; the spindle block gives the nose's): say whose it is. */
     if (s->state == ACBB_RUN_CONVERGED)
-        fprintf(o->f, "stiffness    axial %.2f N/um, radial %.2f N/um, tilt %.2f N m/mrad at the "
-                "nose\n", v->stiffness_axial * 1e-6, v->stiffness_radial * 1e-6,
-                v->stiffness_tilt * 1e-3);
+        fprintf(o->f, "%s axial %.2f N/um, radial %.2f N/um, tilt %.2f N m/mrad %s\n",
+                s->spindle.n_sets ? "set stiff   " : "stiffness   ", v->stiffness_axial * 1e-6,
+                v->stiffness_radial * 1e-6, v->stiffness_tilt * 1e-3,
+                s->spindle.n_sets ? "(set alone)" : "at the nose");
     else
         fputs("stiffness    not computed (only at convergence)\n", o->f);
     fputs("bearing  thrust  axial N  outer C  inner C   loss W\n", o->f);

@@ -127,6 +127,7 @@ bad:
 static int parse_metrics(const acbb_cli_args *a, acbb_cli_metrics *m)
 {
     m->n = 0;
+    m->no_stiffness = a->val[CLI_OPT_NO_STIFFNESS] != NULL; /* first: a stiffness metric is refused */
     for (size_t i = 0; i < a->n_metrics; i++) {
         char msg[300];
         if (acbb_cli_sweep_metric_add(m, a->metrics[i], msg, sizeof msg) != 0) {
@@ -336,6 +337,7 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     if (!rc) rc = parse_shard(a, &o);
     acbb_cli_metrics metrics;
     if (!rc) rc = parse_metrics(a, &metrics);
+    o.skip_stiffness = !rc && metrics.no_stiffness;
     acbb_sweep *g = NULL;
     if (!rc && acbb_sweep_new(&g) != ACBB_OK) rc = acbb_cli_no_memory("sweep");
     if (!rc) rc = build_grid(a, g);
@@ -353,7 +355,8 @@ int acbb_cli_cmd_sweep(const acbb_cli_args *a)
     s.id.csv_header = a->val[CLI_OPT_CSV_HEADER] != NULL;
     /* --metric and --csv-header are options of the records: they ask for them */
     bool legacy = a->n_grids == 0 && !a->val[CLI_OPT_JSONL] && !a->val[CLI_OPT_SHARD] &&
-                  !a->val[CLI_OPT_MAX_POINTS] && metrics.n == 0 && !s.id.csv_header;
+                  !a->val[CLI_OPT_MAX_POINTS] && metrics.n == 0 && !s.id.csv_header &&
+                  !metrics.no_stiffness;
     /* SIGINT / SIGTERM stop the sweep within a step; what finished is
      * kept (progress.h). */
     o.cancel = acbb_cli_interrupt_begin();

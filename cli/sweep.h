@@ -43,7 +43,6 @@
 size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
                               char names[][ACBB_CLI_SWEEP_NAME], double *v);
 
-size_t acbb_cli_sweep_n_scalars(void);
 
 typedef enum { ACBB_CLI_REC_JSONL, ACBB_CLI_REC_CSV } acbb_cli_rec_format;
 
@@ -53,7 +52,14 @@ typedef enum { ACBB_CLI_REC_JSONL, ACBB_CLI_REC_CSV } acbb_cli_rec_format;
 typedef struct {
     size_t n;
     char path[ACBB_CLI_SWEEP_METRICS][ACBB_CLI_METRIC_NAME]; /* canonical run JSON paths */
+    /* --no-stiffness: the stiffness columns (acbb_cli_sweep_dropped) are
+     * left out of every record; the header says "stiffness": false. */
+    int no_stiffness;
 } acbb_cli_metrics;
+/* Fixed column `name` is left out of the records of a sweep with m. */
+int acbb_cli_sweep_dropped(const acbb_cli_metrics *m, const char *name);
+/* How many of the scalars a record with m's columns carries. */
+size_t acbb_cli_sweep_n_scalars(const acbb_cli_metrics *m);
 /* Add `path` (an `acbb metrics` path or old name) in its canonical form;
  * 0, or -1 with the reason in msg (unknown, already a fixed column, twice). */
 int acbb_cli_sweep_metric_add(acbb_cli_metrics *m, const char *path, char *msg, size_t mn);

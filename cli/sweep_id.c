@@ -27,6 +27,7 @@ void acbb_cli_sweep_id_init(acbb_cli_sweep_id *id, const acbb_sweep *g, const ac
         h = acbb_hash64(id->metrics.path[k], strlen(id->metrics.path[k]), h);
         h = acbb_hash64("\n", 1, h);
     }
+    if (id->metrics.no_stiffness) h = acbb_hash64("stiffness=off\n", 14, h);
     snprintf(id->fp, sizeof id->fp, "%016llx", (unsigned long long)h);
 }
 
@@ -61,6 +62,7 @@ static cJSON *header_json(const acbb_cli_sweep_id *id)
         for (size_t k = 0; m && k < id->metrics.n; k++)
             cJSON_AddItemToArray(m, cJSON_CreateString(id->metrics.path[k]));
     }
+    if (id->metrics.no_stiffness) cJSON_AddFalseToObject(h, "stiffness");
     cJSON *top = cJSON_CreateObject();
     cJSON_AddNumberToObject(top, "schema_version", ACBB_JSON_SCHEMA_VERSION);
     cJSON_AddItemToObject(top, "acbb_sweep", h);
@@ -171,11 +173,11 @@ int acbb_cli_sweep_header_diff(const cJSON *a, const cJSON *b, char *msg, size_t
     size_t len = 0;
     int count = 0;
     msg[0] = '\0';
-    static const char *const top[] = { "format", "mode", "metrics" };
-    for (size_t k = 0; k < 3; k++) {
+    static const char *const top[] = { "format", "mode", "metrics", "stiffness" };
+    for (size_t k = 0; k < 4; k++) {
         const cJSON *x = cJSON_GetObjectItemCaseSensitive(a, top[k]);
         const cJSON *y = cJSON_GetObjectItemCaseSensitive(b, top[k]);
-        int optional = k == 2; /* metrics: absent in both is the same */
+        int optional = k >= 2; /* metrics, stiffness: absent in both is the same */
         if ((x || y || !optional) && (!x || !y || !cJSON_Compare(x, y, 1)))
             say(msg, n, &len, &count, top[k], x, y);
     }
@@ -309,7 +311,7 @@ static int check_csv(const char *line, const acbb_sweep *g, const acbb_cli_metri
                      const char *fp, int with_wall, size_t *index, const char **why)
 {
     size_t dims = acbb_sweep_n_dims(g);
-    size_t n_cols = 1 + 1 + dims + 2 + acbb_cli_sweep_n_scalars() + m->n + 1 + (size_t)with_wall;
+    size_t n_cols = 1 + 1 + dims + 2 + acbb_cli_sweep_n_scalars(m) + m->n + 1 + (size_t)with_wall;
     size_t at = 0, st, len, col = 0;
     *why = "a field is out of place";
     for (; csv_field(line, &at, &st, &len); col++) {

@@ -40,6 +40,8 @@ int acbb_cli_sweep_metric_add(acbb_cli_metrics *m, const char *path, char *msg, 
     if (m->n == ACBB_CLI_SWEEP_METRICS)
         return snprintf(msg, mn, "at most %d metrics", ACBB_CLI_SWEEP_METRICS), -1;
     if (canonical(path, name, sizeof name, msg, mn) != 0) return -1;
+    if (m->no_stiffness && strstr(name, "stiffness"))
+        return snprintf(msg, mn, "%s: --no-stiffness computes no stiffness", name), -1;
     char fixed[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
     double v[ACBB_CLI_SWEEP_SCALARS];
     size_t nf = acbb_cli_sweep_scalars(NULL, fixed, v);
@@ -72,8 +74,11 @@ double acbb_cli_sweep_metric_value(const acbb_snapshot *snap, const char *path, 
 int acbb_cli_sweep_metrics_of_header(const cJSON *h, acbb_cli_metrics *m)
 {
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(h, "metrics"), *it;
+    const cJSON *stiff = cJSON_GetObjectItemCaseSensitive(h, "stiffness");
     char msg[200];
     m->n = 0;
+    m->no_stiffness = cJSON_IsFalse(stiff);
+    if (stiff && !cJSON_IsFalse(stiff)) return -1; /* only false is written */
     if (!list) return 0;
     if (!cJSON_IsArray(list)) return -1;
     cJSON_ArrayForEach(it, list) {

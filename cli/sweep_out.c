@@ -86,11 +86,18 @@ size_t acbb_cli_sweep_scalars(const acbb_snapshot *snap,
     return n;
 }
 
-size_t acbb_cli_sweep_n_scalars(void)
+int acbb_cli_sweep_dropped(const acbb_cli_metrics *m, const char *name)
+{
+    return m->no_stiffness && strstr(name, ".stiffness_") != NULL;
+}
+
+size_t acbb_cli_sweep_n_scalars(const acbb_cli_metrics *m)
 {
     char names[ACBB_CLI_SWEEP_SCALARS][ACBB_CLI_SWEEP_NAME];
     double v[ACBB_CLI_SWEEP_SCALARS];
-    return acbb_cli_sweep_scalars(NULL, names, v);
+    size_t n = acbb_cli_sweep_scalars(NULL, names, v), kept = 0;
+    for (size_t k = 0; k < n; k++) kept += !acbb_cli_sweep_dropped(m, names[k]);
+    return kept;
 }
 
 /* "200" -> the number 200; "quasi-static" -> a string (as --set reads it). */
@@ -138,7 +145,8 @@ static long record_jsonl(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_
     cJSON_AddNumberToObject(o, "iterations", r->have_snap ? (double)r->snap.iteration : 0.0);
     int set = r->have_snap && r->snap.n_bearings > 1;
     for (size_t k = 0; k < n; k++) {
-        if (is_set_col(names[k]) && !set) continue;
+        if ((is_set_col(names[k]) && !set) || acbb_cli_sweep_dropped(&id->metrics, names[k]))
+            continue;
         cJSON_AddItemToObject(o, names[k], acbb_cli_json_number(v[k]));
         nonfinite += checked && !isfinite(v[k]);
     }
@@ -192,6 +200,7 @@ static long record_csv(FILE *f, const acbb_cli_sweep_id *id, const acbb_sweep_re
     long nonfinite = 0;
     int set = r->have_snap && r->snap.n_bearings > 1;
     for (size_t k = 0; k < n; k++) {
+        if (acbb_cli_sweep_dropped(&id->metrics, names[k])) continue;
         if (isfinite(v[k])) fprintf(f, "%.17g", v[k]);
         else nonfinite += checked && (set || !is_set_col(names[k]));
         fputc(',', f);
@@ -238,7 +247,8 @@ void acbb_cli_sweep_csv_header(FILE *f, const acbb_sweep *g, const acbb_cli_metr
     fputs("index,fingerprint", f);
     for (size_t d = 0; d < acbb_sweep_n_dims(g); d++) fprintf(f, ",%s", acbb_sweep_key(g, d));
     fputs(",status,iterations", f);
-    for (size_t k = 0; k < n; k++) fprintf(f, ",%s", names[k]);
+    for (size_t k = 0; k < n; k++)
+        if (!acbb_cli_sweep_dropped(m, names[k])) fprintf(f, ",%s", names[k]);
     for (size_t k = 0; k < m->n; k++) fprintf(f, ",%s", m->path[k]);
     fprintf(f, ",message%s\n", with_wall ? ",wall_ms" : "");
 }

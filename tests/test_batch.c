@@ -346,6 +346,87 @@ static void test_modes(void)
        "fidelity.preset = fast: STEADY and TRANSIENT still decide the thermal mode");
 }
 
+/* ---- warm starts (issue 30): a steady point from another's state ---- */
+
+typedef struct {
+    acbb_scene scene;
+    acbb_batch_mode mode;
+    const acbb_warm *from;
+    acbb_warm *kept;
+    acbb_snapshot snap;
+} warm_case;
+
+static acbb_status warm_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                              acbb_error *err)
+{
+    (void)i, (void)err;
+    *out = ((warm_case *)ctx)->scene;
+    *mode = ((warm_case *)ctx)->mode;
+    return ACBB_OK;
+}
+
+static const acbb_warm *warm_from(void *ctx, size_t i) { (void)i; return ((warm_case *)ctx)->from; }
+
+static void warm_keep(void *ctx, size_t i, acbb_warm *w)
+{
+    (void)i;
+    acbb_warm_free(((warm_case *)ctx)->kept);
+    ((warm_case *)ctx)->kept = w;
+}
+
+static void warm_done(void *ctx, const acbb_batch_result *r)
+{
+    if (r->snap) ((warm_case *)ctx)->snap = *r->snap;
+}
+
+static void warm_run(warm_case *c, acbb_batch_mode mode, const acbb_warm *from)
+{
+    c->mode = mode;
+    c->from = from;
+    acbb_batch_opts o = { .jobs = 1, .scene = warm_scene, .done = warm_done, .ctx = c,
+                          .skip_stiffness = 1, .warm = warm_from, .keep = warm_keep };
+    acbb_batch_run(1, &o, NULL);
+}
+
+static void test_warm(void)
+{
+    static warm_case base, cold, warm;
+    base.scene = load("presets/7008C.ini");
+    warm_run(&base, ACBB_BATCH_STEADY, NULL);
+    ok(base.kept != NULL, "a converged steady point's state is kept");
+    acbb_error err = { { 0 } };
+    cold.scene = base.scene;
+    acbb_scene_set(&cold.scene, "lubricant.boundary_friction", "0.12", &err);
+    acbb_scene_set(&cold.scene, "operating.axial_load_N", "220", &err);
+    warm.scene = cold.scene;
+    warm_run(&cold, ACBB_BATCH_STEADY, NULL);
+    warm_run(&warm, ACBB_BATCH_STEADY, base.kept);
+    const acbb_snapshot *a = &cold.snap, *b = &warm.snap;
+    double worst = fabs(a->losses.total - b->losses.total) / a->losses.total, worst_T = 0.0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        worst = fmax(worst, fabs(a->losses.P[l] - b->losses.P[l]) / a->losses.total);
+    worst = fmax(worst, fabs(a->balls[0].Qi - b->balls[0].Qi) / a->balls[0].Qi);
+    for (int i = 0; i < a->n_nodes; i++) worst_T = fmax(worst_T, fabs(a->T[i] - b->T[i]));
+    /* both to the steady solve's tolerance: twice mech_tol, as test_modes */
+    ok(a->state == ACBB_RUN_CONVERGED && b->state == ACBB_RUN_CONVERGED && worst <= 2e-8 &&
+           worst_T <= 1e-6,
+       "warm start from another point: the cold start's losses and Qi to %.2g (<= 2e-8), "
+       "nodes to %.2g K (<= 1e-6)", worst, worst_T);
+    ok(b->work.mechanics_solves < a->work.mechanics_solves && b->iteration <= a->iteration,
+       "... with %ld mechanics solves instead of %ld, %ld iterations instead of %ld",
+       b->work.mechanics_solves, a->work.mechanics_solves, b->iteration, a->iteration);
+    static warm_case tc, tw;
+    tc.scene = tw.scene = cold.scene;
+    warm_run(&tc, ACBB_BATCH_TRANSIENT, NULL);
+    warm_run(&tw, ACBB_BATCH_TRANSIENT, base.kept);
+    ok(same_snap(&tc.snap, &tw.snap), "a transient point starts from ambient whatever is given");
+    acbb_warm_free(base.kept);
+    acbb_warm_free(cold.kept);
+    acbb_warm_free(warm.kept);
+    acbb_warm_free(tc.kept);
+    acbb_warm_free(tw.kept);
+}
+
 int main(void)
 {
     /* No gsl_set_error_handler_off here: the engine turns GSL's aborting
@@ -356,6 +437,7 @@ int main(void)
         printf("Bail out! %s\n", err.msg);
         return 1;
     }
+    test_warm();
     test_jobs_independent(&base);
     test_cancel_serial(&base);
     test_cancel_parallel(&base);

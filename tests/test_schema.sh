@@ -90,6 +90,12 @@ t $? "sweep --jsonl: the header and both records conform (sweep_header, sweep_re
     head -1 "$TMP/m.jsonl" >"$TMP/m_head.json" && tail -n +2 "$TMP/m.jsonl" >"$TMP/m_rec.jsonl" &&
     $CHECK --def sweep_header "$TMP/m_head.json" && $CHECK --def sweep_record --lines "$TMP/m_rec.jsonl"
 t $? "merge: the merged file's header and records conform"
+"$ACBB" sweep presets/7008C.ini --grid operating.axial_load_N=100,200 --no-stiffness \
+    --jsonl "$TMP/ns.jsonl" >/dev/null 2>&1 &&
+    head -1 "$TMP/ns.jsonl" >"$TMP/ns_head.json" && tail -n +2 "$TMP/ns.jsonl" >"$TMP/ns_rec.jsonl" &&
+    $CHECK --def sweep_header "$TMP/ns_head.json" && $CHECK --def sweep_record --lines "$TMP/ns_rec.jsonl" &&
+    jq -e '.acbb_sweep.stiffness == false' "$TMP/ns_head.json" >/dev/null
+t $? "sweep --no-stiffness: its header (\"stiffness\": false) and records conform"
 "$ACBB" sweep presets/7008C.ini --param operating.axial_load_N --values 100,200 --json \
     >"$TMP/sw.json" 2>/dev/null && $CHECK --def sweep_point --each "$TMP/sw.json"
 t $? "sweep --json: each point conforms (sweep_point)"

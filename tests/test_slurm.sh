@@ -111,10 +111,18 @@ CredType=cred/none"
     fi
 }
 
-# Poll until both jobs have left the queue (bounded: 120 s).
+# Poll until every task of both jobs has ended (bounded: 120 s). The
+# states are read with --states=all, and only from a squeue that answered:
+# an empty answer used to mean "finished", and a squeue that failed (a
+# slurmctld slow to answer on a loaded machine) printed nothing too, so the
+# shards were read before the jobs had written them.
 wait_jobs() {
+    local st
     for _ in $(seq 240); do
-        [ -z "$(squeue -h -j "$1,$2" 2>/dev/null)" ] && return 0
+        if st=$(squeue -h --states=all -j "$1,$2" -o %T 2>/dev/null) && [ -n "$st" ] &&
+            ! grep -qvE '^(COMPLETED|FAILED|CANCELLED|TIMEOUT|OUT_OF_MEMORY|NODE_FAIL|PREEMPTED|BOOT_FAIL|DEADLINE)$' <<<"$st"; then
+            return 0
+        fi
         sleep 0.5
     done
     return 1

@@ -73,6 +73,10 @@ for p in $presets; do
         "$pn: the block's nose drift is the JSON's"
     has "$TMP/block" "nose stiff   radial $(LC_ALL=C printf '%.4g' "$k") N/um" \
         "$pn: the block's nose stiffness is the JSON's"
+    # the set's own stiffness is not presented as the nose's (a set's line
+    # says "at the nose" only outside a spindle: the shaft bends)
+    ! grep -E -q "^stiffness .* at the nose" "$TMP/$pn.txt" && grep -q "(set alone)" "$TMP/$pn.txt"
+    t $? "$pn: the set's stiffness line says it is the set alone's, not the nose's"
     grep -E -q "^front +$(LC_ALL=C printf '%.1f' "$pre") " "$TMP/block"
     t $? "$pn: the block's front set preload is the JSON's ($(LC_ALL=C printf '%.1f' "$pre") N)"
 

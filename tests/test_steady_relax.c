@@ -60,9 +60,35 @@ static void test_7008C_steady(void)
     acbb_sim_free(sim);
 }
 
+/* The steady solve's first state (at ambient) takes one Level-2 pass: it
+ * only starts the iterations, each of which converges its passes (issue
+ * 30). The transient's first state is the start of its path: converged
+ * (QD_PASSES, until omega_m moves < 1e-9). */
+static long setup_passes(int steady)
+{
+    acbb_scene s;
+    acbb_error err = { "" };
+    if (acbb_scene_load("presets/7008C.ini", &s, &err) != ACBB_OK) return -1;
+    s.thermal_mode = steady ? ACBB_THERMAL_STEADY : ACBB_THERMAL_TRANSIENT;
+    acbb_sim *sim = NULL;
+    if (acbb_sim_create(&s, NULL, &sim, &err) != ACBB_OK) return -1;
+    acbb_snapshot snap;
+    acbb_sim_snapshot(sim, &snap);
+    acbb_sim_free(sim);
+    return snap.work.traction_solves;
+}
+
+static void test_setup_passes(void)
+{
+    long st = setup_passes(1), tr = setup_passes(0);
+    ok(st == 1, "steady set-up: one Level-2 pass (%ld)", st);
+    ok(tr >= 2, "transient set-up: converged, %ld passes", tr);
+}
+
 int main(void)
 {
     test_rule();
     test_7008C_steady();
+    test_setup_passes();
     return done_testing();
 }

@@ -273,4 +273,41 @@ code $? 0 "the same --metric set resumes"
     [ "$(wc -l <"$TMP/mm.csv")" -eq 9 ] && [ "$(wc -l <"$TMP/mm.jsonl")" -eq 9 ]
 t $? "... and merges (8 records each)"
 
+# ---- --no-stiffness: no probes, no stiffness columns (issue 30) ----
+sweep --no-stiffness --jsonl "$TMP/ns.jsonl" --csv "$TMP/ns.csv" 2>"$TMP/err"
+code $? 0 "a sweep with --no-stiffness runs"
+head -1 "$TMP/ns.jsonl" | jq -e '.acbb_sweep.stiffness == false' >/dev/null &&
+    jq -e '.acbb_sweep.stiffness == false' "$TMP/ns.csv.json" >/dev/null &&
+    head -1 "$TMP/one.jsonl" | jq -e '.acbb_sweep | has("stiffness") | not' >/dev/null
+t $? "the JSONL header and the CSV sidecar say \"stiffness\": false (a default sweep's has no such key)"
+! grep -q stiffness "$TMP/ns.csv" && ! tail -n +2 "$TMP/ns.jsonl" | grep -q stiffness &&
+    head -1 "$TMP/one.csv" | grep -q ring.stiffness_axial_N_per_um
+t $? "no record and no column carries a stiffness (the default CSV has ring.stiffness_axial_N_per_um)"
+python3 - "$TMP/ns.csv" "$TMP/one.csv" <<'PY'
+import csv, sys
+ns = {r["index"]: r for r in csv.DictReader(open(sys.argv[1]))}
+one = {r["index"]: r for r in csv.DictReader(open(sys.argv[2]))}
+assert len(ns) == 8
+for i, r in ns.items():
+    for k, v in r.items():
+        if k not in ("fingerprint", "wall_ms"):
+            assert v == one[i][k], (i, k, v, one[i][k])
+PY
+t $? "every other column equals the default sweep's, digit for digit (the probes change no state)"
+[ "$(head -1 "$TMP/ns.jsonl" | jq -r .acbb_sweep.fingerprint)" != "$(head -1 "$TMP/one.jsonl" | jq -r .acbb_sweep.fingerprint)" ]
+t $? "... the fingerprint differs (the records have other fields)"
+sweep --jsonl "$TMP/ns.jsonl" 2>"$TMP/err"
+code $? 2 "resuming a --no-stiffness output without it is refused"
+has "$TMP/err" "Differs (file vs now): stiffness (false vs absent)" "... naming stiffness"
+sweep --no-stiffness --jsonl "$TMP/ns.jsonl" --csv "$TMP/ns.csv" 2>"$TMP/err"
+code $? 0 "the same command resumes (nothing left to run)"
+"$ACBB" merge "$TMP/nsm.csv" "$TMP/ns.csv" 2>>"$TMP/log" && "$ACBB" merge "$TMP/nsm.jsonl" "$TMP/ns.jsonl" 2>>"$TMP/log" &&
+    [ "$(wc -l <"$TMP/nsm.csv")" -eq 9 ] && ! grep -q stiffness "$TMP/nsm.csv"
+t $? "... and merges (8 records, no stiffness column)"
+sweep --no-stiffness --metric ring.stiffness_tilt_Nm_per_mrad --max-points 1 --jsonl "$TMP/nsx.jsonl" 2>"$TMP/err"
+code $? 2 "--metric of a stiffness with --no-stiffness is refused"
+has "$TMP/err" "--no-stiffness computes no stiffness" "... saying why"
+"$ACBB" sweep --help >"$TMP/help" 2>&1
+has "$TMP/help" "--no-stiffness" "sweep --help documents --no-stiffness"
+
 tap_done

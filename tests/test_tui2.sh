@@ -220,7 +220,11 @@ wait_for "TE net " 60
 screen | grep -q "^Squeeze net um" && screen | grep -q "inner centrifugal" && screen | grep -q "outer ring (-)"
 ok $? "TE/WTE shows the squeeze terms, the net and what its sign means"
 
-# Stop: no ETA kept.
+# Stop: no ETA kept. At x1 the run (6700 simulated s) cannot end before
+# x arrives (at the x2000 above it took three seconds, and a late x found
+# it converged).
+keys - - - - - - - - - -
+wait_for "pace x1: 1 simulated s per second"
 keys 1 r
 wait_for "eta" 10
 keys x

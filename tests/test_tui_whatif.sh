@@ -30,7 +30,17 @@ ok $? "  and which key makes it act"
 keys A 1
 wait_for "note: mounting.preload_N has no effect here"
 ok $? "the Run screen with a baseline pinned says the edit has no effect"
+# The edit is unsaved (and the applied run may still go): q asks, y to
+# each question. (Left unanswered, the wait for the exit took its whole
+# 30 s bound in every run.)
 keys q
+quit_or_asked() { [ -s "$TMP/tw" ] || screen | grep -q "Quit anyway?\|Quit and lose it?"; }
+for _ in 1 2; do
+    wait_until quit_or_asked
+    [ -s "$TMP/tw" ] || keys y
+done
 wait_file "$TMP/tw"
+grep -q EXIT=0 "$TMP/tw"
+ok $? "q, then y to its questions, quits with exit 0"
 echo "1..$n"
 [ $failed -eq 0 ]

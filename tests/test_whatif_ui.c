@@ -89,8 +89,6 @@ static void test_sweep(const acbb_scene *s)
     ok(acbb_sweepjob_new(&j, &err) == ACBB_OK, "sweep job created");
     ok(acbb_sweepjob_start(j, s, "operating.axial_load_N=200:1000:3", metrics, 2, 2, &err) == ACBB_OK,
        "3-point sweep started (%s)", err.msg);
-    ok(acbb_sweepjob_start(j, s, "operating.axial_load_N=1,2", metrics, 2, 2, &err) != ACBB_OK ||
-       acbb_job_wait(acbb_sweepjob_job(j), 0), "a second start while running is refused");
     ok(acbb_job_wait(acbb_sweepjob_job(j), 60000), "the sweep ends");
     acbb_sweepjob_read(j, &view);
     ok(view.job.phase == ACBB_JOB_DONE && view.done == 3 && view.failed == 0 && view.total == 3,
@@ -112,6 +110,11 @@ static void test_sweep(const acbb_scene *s)
     acbb_scene_set(&dyn, "fidelity.model", "dynamic", NULL);
     ok(acbb_sweepjob_start(j, &dyn, "operating.axial_load_N=200:1000:20", metrics, 2, 2, &err) == ACBB_OK,
        "a long dynamic sweep started");
+    /* Checked on this sweep (half a CPU second a point), not on the 3-point
+     * one above: that one could end (a few ms) before the second start,
+     * which then ran and replaced its points. */
+    ok(acbb_sweepjob_start(j, s, "operating.axial_load_N=1,2", metrics, 2, 2, &err) == ACBB_EINVAL,
+       "a second start while running is refused (%s)", err.msg);
     ok(acbb_job_cancel(acbb_sweepjob_job(j)), "cancel while running");
     ok(acbb_job_wait(acbb_sweepjob_job(j), 30000), "the cancelled sweep ends");
     acbb_sweepjob_read(j, &view);

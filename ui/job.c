@@ -49,11 +49,14 @@ void acbb_job_lock(acbb_job *j)
     pthread_mutex_lock(&j->mu);
 }
 
+/* The wake-up before the unlock that makes the publication visible: whoever
+ * reads it (acbb_job_wait, a read) finds its byte already in the pipe, and
+ * a drain after the read leaves no stale byte (as worker.c's wake_ui). */
 void acbb_job_unlock(acbb_job *j)
 {
     j->info.publications++;
-    pthread_mutex_unlock(&j->mu);
     acbb_wake_signal(&j->wake);
+    pthread_mutex_unlock(&j->mu);
 }
 
 static void *job_main(void *p)

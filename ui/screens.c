@@ -9,6 +9,7 @@ extern const acbb_screen acbb_screen_run, acbb_screen_nodes, acbb_screen_balls,
     acbb_screen_accuracy, acbb_screen_sweep, acbb_screen_sensitivity;
 extern const acbb_screen acbb_screen_set;
 extern const acbb_screen acbb_screen_preload;
+extern const acbb_screen acbb_screen_spindle;
 
 const acbb_screen *const acbb_screens[] = {
     &acbb_screen_run,
@@ -22,6 +23,7 @@ const acbb_screen *const acbb_screens[] = {
     &acbb_screen_sweep,
     &acbb_screen_sensitivity,
     &acbb_screen_preload,
+    &acbb_screen_spindle,
     &acbb_screen_set,
 };
 

@@ -106,6 +106,12 @@ const char *acbb_worker_phase_name(acbb_worker_phase p)
 
 /* ---- publication (worker side) ---- */
 
+/* Called with w->mu held, before the unlock that makes a publication
+ * visible: whoever reads it (acbb_worker_read, acbb_worker_wait_done)
+ * finds its wake-up byte already in the pipe, so a drain after the read
+ * leaves no stale byte behind. (Written after the unlock, it could land
+ * after such a drain: test_worker's quiet check failed so on a loaded
+ * machine.) A byte on a non-blocking pipe: nothing waits under the lock. */
 static void wake_ui(acbb_worker *w) { acbb_wake_signal(&w->wake); }
 
 static double run_wall(const worker_ctx *c, double now)
@@ -133,8 +139,8 @@ static void publish(acbb_worker *w, const worker_ctx *c, int push_history)
     pthread_mutex_lock(&w->mu);
     publish_locked(w, c, 1);
     if (push_history) acbb_history_push(&w->hist, &c->snap);
-    pthread_mutex_unlock(&w->mu);
     wake_ui(w);
+    pthread_mutex_unlock(&w->mu);
 }
 
 /* ---- phase bookkeeping (worker side) ---- */
@@ -263,12 +269,13 @@ static int wait_step_due(acbb_worker *w, double last_step, double sim_dt)
 
 /* ---- comparison (its own thread, on the batch runner) ---- */
 
-/* Called with w->mu held: count the publication, unlock, wake the UI. */
+/* Called with w->mu held: count the publication, wake the UI, unlock
+ * (the wake-up first: see wake_ui). */
 static void compare_publish_unlock(acbb_worker *w)
 {
     w->st.publications++;
-    pthread_mutex_unlock(&w->mu);
     wake_ui(w);
+    pthread_mutex_unlock(&w->mu);
 }
 
 static acbb_status compare_scene(void *ctx, size_t v, acbb_scene *out, acbb_batch_mode *mode,
@@ -452,9 +459,9 @@ static void handle_cmd(acbb_worker *w, worker_ctx *c, const queued_cmd *q)
     }
     w->st.cmd_done = q->seq;
     publish_locked(w, c, 1);
+    wake_ui(w); /* before the command reads as done (see wake_ui) */
     pthread_cond_broadcast(&w->cv_done);
     pthread_mutex_unlock(&w->mu);
-    wake_ui(w);
 }
 
 /* ---- the loop (worker side) ---- */

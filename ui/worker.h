@@ -121,7 +121,8 @@ int acbb_worker_wake_fd(const acbb_worker *w);
 void acbb_worker_drain_wake(acbb_worker *w);
 
 /* Block until command `seq` has been handled or `timeout_ms` passed.
- * Returns 1 when done, 0 on timeout. (For tests and for quitting.) */
+ * Returns 1 when done, 0 on timeout. (For tests and for quitting.) When
+ * it returns 1, the command's wake-ups are already on the wake fd. */
 int acbb_worker_wait_done(acbb_worker *w, unsigned long seq, int timeout_ms);
 
 const char *acbb_worker_phase_name(acbb_worker_phase p);

@@ -13,6 +13,7 @@
 #include "acbb/tools/fidelity.h"
 #include "acbb/tools/measure.h"
 #include "cancel.h"
+#include "sim_priv.h"
 
 int acbb_batch_cpus(void)
 {
@@ -125,7 +126,9 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     if (st == ACBB_OK) {
         apply_mode(&w->scene, mode);
         acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness };
-        st = acbb_sim_create(&w->scene, &so, &sim, &err);
+        const acbb_warm *from = o->warm && w->scene.thermal_mode == ACBB_THERMAL_STEADY
+                              ? o->warm(o->ctx, i) : NULL;
+        st = acbb_simx_create_from(&w->scene, &so, from, &sim, &err);
     }
     if (st == ACBB_OK) {
         step_ctx sc = { o, i };
@@ -133,6 +136,8 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
         st = acbb_sim_drive(sim, &ctl);
         acbb_sim_snapshot(sim, &w->snap);
         r->snap = &w->snap;
+        acbb_warm *kept = o->keep ? acbb_simx_warm_save(sim) : NULL;
+        if (kept) o->keep(o->ctx, i, kept);
         snprintf(w->msg, sizeof w->msg, "%s", w->snap.message);
     } else {
         snprintf(w->msg, sizeof w->msg, "%s", err.msg[0] ? err.msg : acbb_status_name(st));
@@ -141,6 +146,8 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     r->status = st;
     r->wall_ms = acbb_now_ms() - t0;
 }
+
+void acbb_warm_free(acbb_warm *w) { free(w); }
 
 static void report(pool *pl, acbb_batch_result *r)
 {

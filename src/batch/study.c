@@ -16,6 +16,7 @@
 #include "acbb/units.h"
 #include "acbb/tools/scene_schema.h"
 #include "study_priv.h"
+#include "sim_priv.h"
 #include "cancel.h"
 
 #define BASE_RPM 15000.0
@@ -56,7 +57,9 @@ static void record(acbb_study_point *p, const acbb_snapshot *s)
 static int record_hook(void *ctx, const acbb_sim *sim)
 {
     acbb_study_point *p = ctx;
-    acbb_sim_snapshot(sim, &p->last);
+    /* Every step's losses and loads; the rating life is read at the end
+     * (the batch's final snapshot replaces p->last), so a step skips it. */
+    acbb_simx_snapshot_step(sim, &p->last);
     if (p->last.iteration == 0) p->first = p->last;
     record(p, &p->last);
     return 0;
@@ -75,6 +78,22 @@ static acbb_status point_scene(void *ctx, size_t i, acbb_scene *out, acbb_batch_
     *out = p->scene;
     *mode = p->record ? ACBB_BATCH_AS_SCENE : ACBB_BATCH_STEADY;
     return ACBB_OK;
+}
+
+static const acbb_warm *point_warm(void *ctx, size_t i)
+{
+    return ((const study_batch *)ctx)->pts[i]->warm_from;
+}
+
+/* On the worker, point i's alone: a base point keeps its state. */
+static void point_keep(void *ctx, size_t i, acbb_warm *w)
+{
+    acbb_study_point *p = ((study_batch *)ctx)->pts[i];
+    if (p->warm_from || p->warm) {
+        acbb_warm_free(w);
+        return;
+    }
+    p->warm = w;
 }
 
 static void point_step(void *ctx, size_t i, const acbb_sim *sim)
@@ -115,7 +134,7 @@ void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
     /* No study item reads a stiffness (issue 30 lever 2: skip the probes). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
                           .step = point_step, .done = point_done, .ctx = &b,
-                          .skip_stiffness = 1 };
+                          .skip_stiffness = 1, .warm = point_warm, .keep = point_keep };
     acbb_batch_run(n, &o, NULL);
 }
 
@@ -393,7 +412,10 @@ const acbb_scene *acbb_study_scene(const acbb_study *s) { return &s->base; }
 
 void acbb_study_free_runs(acbb_study_runs *r)
 {
-    for (size_t i = 0; r->all && i < r->n; i++) free(r->all[i].traj);
+    for (size_t i = 0; r->all && i < r->n; i++) {
+        free(r->all[i].traj);
+        acbb_warm_free(r->all[i].warm);
+    }
     free(r->all);
     r->all = NULL;
     r->n = 0;

@@ -148,6 +148,7 @@ static size_t share(rob_end *e, const acbb_study_runs *base, acbb_study_point **
             copy_point(p, &base->all[i]);
             r->n_shared++;
         } else {
+            p->warm_from = base->all[i].warm; /* steady points (batch.c) */
             list[n++] = p;
         }
     }

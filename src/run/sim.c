@@ -196,8 +196,14 @@ static acbb_status fix_preload(acbb_sim *sim, acbb_error *err)
 }
 
 /* Room-temperature mechanics at speed, reached by continuation in speed. */
-static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
+static acbb_status initial_mechanics(acbb_sim *sim, const acbb_mech_state *warm,
+                                     acbb_error *err)
 {
+    if (warm) { /* a converged state of a scene that differs in values only */
+        acbb_mech_state_copy(&sim->ms, warm);
+        acbb_mech_adopt_state(sim->mech, &sim->ms);
+        return ACBB_OK;
+    }
     acbb_status rc = acbb_mech_init_state(sim->mech, &sim->ms, err);
     if (rc != ACBB_OK) return rc;
     for (int k = 1; k <= 4 && sim->s.inner_speed > 0.0; k++) {
@@ -209,7 +215,7 @@ static acbb_status initial_mechanics(acbb_sim *sim, acbb_error *err)
 }
 
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
-                            acbb_error *err)
+                            const acbb_warm *w, acbb_error *err)
 {
     /* The scene resolved once (fidelity.h acbb_scene_resolve); the run
      * then applies its operating point to its own copy. */
@@ -243,9 +249,15 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     arm_bound(sim); /* now that the dynamic workspace exists */
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
+    if (w && w->n_nodes != sim->nw.n) w = NULL;
+    if (w) T_warm = w->T;
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
-    if ((rc = initial_mechanics(sim, err)) == ACBB_OK) rc = acbb_simx_evaluate(sim, err);
+    sim->setting_up = 1;
+    rc = initial_mechanics(sim, w ? &w->ms : NULL, err);
+    if (rc == ACBB_OK && !sim->no_first_state)
+        rc = acbb_simx_evaluate(sim, err);
+    sim->setting_up = 0;
     sim->setup_ms = acbb_now_ms() - t0;
     if (rc == ACBB_WALL_LIMIT) /* no state yet: nothing to keep */
         return acbb_error_set(err, rc, "wall-clock bound fidelity.max_wall_s = %g s reached "
@@ -302,9 +314,18 @@ static acbb_status spindle_init(acbb_sim *sim, const acbb_scene *s, acbb_error *
     return ACBB_OK;
 }
 
-static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
-                               acbb_error *err)
+/* w can start a Sim of scene s: saved from a converged single bearing with
+ * the same network, balls, model and heating (acbb_simx_warm_save). */
+static int warm_fits(const acbb_warm *w, const acbb_scene *s)
 {
+    return w && s->set_arrangement == ACBB_SET_SINGLE && s->network == w->network
+        && s->n_balls == w->n_balls && s->model == w->model && s->heating == w->heating;
+}
+
+static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
+                               const acbb_warm *w, acbb_sim **out, acbb_error *err)
+{
+    if (!warm_fits(w, s)) w = NULL;
     acbb_sim *sim = calloc(1, sizeof *sim);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))
         || !(sim->best = malloc(sizeof *sim->best))) {
@@ -316,13 +337,19 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, acbb
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     sim->skip_stiffness = o->skip_stiffness;
+    sim->no_first_state = member;
     double t0 = acbb_now_ms();
     acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
                    : s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
-                   : sim_init(sim, s, NULL, err);
+                   : sim_init(sim, s, NULL, w, err);
     if (sim->set || sim->spindle) sim->setup_ms = acbb_now_ms() - t0; /* sim_init times its own */
     if (rc != ACBB_OK) {
         acbb_sim_free(sim);
+        /* A warm start that failed starts again cold (unless stopped). */
+        if (w && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
+            if (err) *err = (acbb_error){ 0 };
+            return create_body(s, o, member, NULL, out, err);
+        }
         return rc;
     }
     *out = sim;
@@ -339,9 +366,37 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 {
     static const acbb_sim_opts defaults; /* o == NULL: all zero */
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o ? o : &defaults, out, err);
+    acbb_status rc = create_body(s, o ? o : &defaults, 0, NULL, out, err);
     acbb_gsl_leave();
     return rc;
+}
+
+acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                                    acbb_error *err)
+{
+    return create_body(s, o, 1, NULL, out, err);
+}
+
+acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
+                                  const acbb_warm *w, acbb_sim **out, acbb_error *err)
+{
+    acbb_gsl_enter();
+    acbb_status rc = create_body(s, o, 0, w, out, err);
+    acbb_gsl_leave();
+    return rc;
+}
+
+acbb_warm *acbb_simx_warm_save(const acbb_sim *sim)
+{
+    if (sim->set || sim->run.state != ACBB_RUN_CONVERGED) return NULL;
+    acbb_warm *w = malloc(sizeof *w);
+    if (!w) return NULL;
+    *w = (acbb_warm){ .network = sim->s.network, .model = sim->s.model,
+                      .n_balls = sim->s.n_balls, .heating = sim->s.heating,
+                      .n_nodes = sim->nw.n };
+    memcpy(w->T, sim->T, sizeof w->T);
+    acbb_mech_state_copy(&w->ms, &sim->ms);
+    return w;
 }
 
 void acbb_sim_free(acbb_sim *sim)
@@ -383,7 +438,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
     fresh->skip_stiffness = sim->skip_stiffness;
-    acbb_status rc = sim_init(fresh, s, keep ? T : NULL, err);
+    acbb_status rc = sim_init(fresh, s, keep ? T : NULL, NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);
         free(fresh);
@@ -408,7 +463,9 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
 
 /* ---- snapshot (the per-ball and squeeze views: sim_snapshot.c) ---- */
 
-void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
+/* full 0: o holds this Sim's snapshot already; the rating life (40 % of
+ * a snapshot) and the clearing of the whole record (30 %) are left out. */
+static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
 {
     const acbb_network *nw = &sim->nw;
     if (sim->set || sim->spindle) {
@@ -423,10 +480,14 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
         }
         return;
     }
-    memset(o, 0, sizeof *o);
+    if (full) memset(o, 0, sizeof *o);
     o->state = sim->run.state;
     o->status = sim->run.status;
-    snprintf(o->message, sizeof o->message, "%s", sim->run.msg);
+    /* snprintf's "%s", truncation included, without its formatting (a
+     * study's hook takes a snapshot every step) */
+    size_t len = strnlen(sim->run.msg, sizeof o->message - 1);
+    memcpy(o->message, sim->run.msg, len);
+    o->message[len] = '\0';
     o->iteration = sim->run.iter;
     o->time = sim->run.time;
     o->dt = sim->run.dt;
@@ -473,8 +534,15 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
-    acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
+    if (full) acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
     o->n_bearings = 1;
+}
+
+void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o) { snapshot(sim, o, 1); }
+
+void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o)
+{
+    snapshot(sim, o, sim->run.iter == 0);
 }
 
 acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out)

@@ -4,6 +4,7 @@
 #define ACBB_SIM_PRIV_H
 
 #include "acbb/sim.h"
+#include "acbb/batch.h"
 #include "mechanics.h"
 #include "expansion.h"
 #include "losses.h"
@@ -24,5 +25,35 @@ void acbb_snap_squeeze(const acbb_expansion *e, const acbb_ball_state *b, acbb_s
 int acbb_snap_contact_finite(const acbb_contact_loss *c);
 int acbb_snap_all_finite(const double *v, int n);
 double acbb_snap_max_pmax(const acbb_mech_state *ms);
+
+/* acbb_sim_snapshot for a drive hook (sim.h), which sees iteration 0
+ * first: there the whole snapshot; after a step o holds this Sim's and
+ * every value is refreshed but the rating life (a set's whole). For a
+ * hook that reads every step's losses and loads (the study's, study.c). */
+void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o);
+
+/* A converged single bearing's temperatures and mechanics (batch.h
+ * acbb_warm), the start of a run of a scene that differs in values only:
+ * the same network, balls, model and heating, or it is not used. */
+struct acbb_warm {
+    acbb_network_kind network;
+    acbb_model_level model;
+    bool heating;
+    int n_balls, n_nodes;
+    double T[ACBB_MAX_NODES];
+    acbb_mech_state ms;
+};
+/* NULL when sim is not a converged single bearing (or out of memory). */
+acbb_warm *acbb_simx_warm_save(const acbb_sim *sim);
+/* acbb_sim_create started from w when it fits (NULL: cold); a warm start
+ * that fails starts again cold. */
+acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
+                                  const acbb_warm *w, acbb_sim **out, acbb_error *err);
+
+/* acbb_sim_create of a member of a steady set (sim_set.c): its first state
+ * at ambient is not evaluated (the set's set-up evaluates every member's,
+ * under the shaft's displacements); the caller brackets GSL. */
+acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
+                                    acbb_error *err);
 
 #endif

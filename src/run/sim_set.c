@@ -101,7 +101,10 @@ static acbb_status mechanics(acbb_set_sim *ss, int transient, acbb_error *err)
     int warm = traction && transient && ss->b[0]->ms.ball[0].traction_valid;
     acbb_status rc = warm ? ACBB_OK : acbb_set_solve_shaft(ss, err);
     if (rc != ACBB_OK || !traction) return rc;
-    for (int pass = 0; pass < (transient ? 1 : QD_PASSES); pass++) {
+    /* The steady solve's first state: one pass, as a bearing's (sim.c). */
+    int start = ss->b[0]->qd && ss->setting_up && ss->s.heating
+             && ss->s.thermal_mode == ACBB_THERMAL_STEADY;
+    for (int pass = 0; pass < (transient || start ? 1 : QD_PASSES); pass++) {
         double change = 0.0;
         if ((rc = stop_check(ss, err)) != ACBB_OK) return rc;
         for (int k = 0; k < ss->n; k++) {
@@ -325,9 +328,11 @@ void acbb_set_publish(acbb_set_sim *ss)
 {
     /* heating off solves no network: no heat flows (issue 18) */
     ss->heat_out = ss->s.heating ? acbb_tnet_heat_to_fixed(ss->ns.net, ss->T) : 0.0;
+    /* The steady solve's iterates are no states the set passes through:
+     * its lift-off is searched once, at the converged state (issue 30). */
     if (ss->run.state == ACBB_RUN_RUNNING) {
         ss->preload = acbb_set_preload_now(ss);
-        live_liftoff(ss);
+        if (ss->s.thermal_mode != ACBB_THERMAL_STEADY) live_liftoff(ss);
     }
     for (int k = 0; k < ss->n; k++) { /* the run's outcome, for each member's own snapshot */
         ss->b[k]->run = ss->run;
@@ -415,7 +420,12 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     double t0 = acbb_now_ms();
     for (int k = 0; k < ss->n; k++) {
         acbb_status rc = member_bound(s, t0, &m, err);
-        if (rc == ACBB_OK) rc = acbb_sim_create(&m, o, &ss->b[k], err);
+        /* A steady solve's first state only starts it (sim.c): the set's
+         * evaluates it, so a member skips its own (issue 30). */
+        int steady = s->heating && s->thermal_mode == ACBB_THERMAL_STEADY;
+        if (rc == ACBB_OK)
+            rc = steady ? acbb_simx_create_member(&m, o, &ss->b[k], err)
+                        : acbb_sim_create(&m, o, &ss->b[k], err);
         if (rc == ACBB_WALL_LIMIT) /* the user's bound, not the member's share of it */
             return setup_wall(s, err);
         if (rc != ACBB_OK) return rc;
@@ -440,7 +450,9 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
     /* The first evaluation (at the dynamic level seconds of ball motion)
      * within what the members' set-ups left of the bound (issue 26 item 7). */
     acbb_set_sim_deadline(ss, s->max_wall_s > 0.0 ? t0 + 1e3 * s->max_wall_s : 0.0);
+    ss->setting_up = 1;
     rc = evaluate(ss, 0, 0, err);
+    ss->setting_up = 0;
     acbb_set_sim_deadline(ss, 0.0); /* the run loop arms each step's */
     if (rc == ACBB_WALL_LIMIT)
         return setup_wall(s, err);

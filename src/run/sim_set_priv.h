@@ -22,6 +22,8 @@ struct acbb_set_sim {
     acbb_stepper run;
     const atomic_int *cancel;
     double deadline_ms;        /* the run's fidelity.max_wall_s, monotonic ms; 0 none */
+    int setting_up;            /* 1 while set_up evaluates the first state */
+    const acbb_set_mech *probe_J; /* nose probes: the Jacobian to start from (NULL: the run's) */
     double total;
     double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
     /* the last lift-off search (sim_set_probe.c): its preload, speed, slope

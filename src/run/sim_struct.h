@@ -69,6 +69,8 @@ struct acbb_sim {
     acbb_stepper run;          /* the run as the stepper keeps it (stepper.h) */
     int transient_pass;        /* 1 while evaluating inside a transient step */
     int polishing;             /* 1 while evaluating inside the steady polish */
+    int setting_up;            /* 1 while sim_init evaluates the first state */
+    int no_first_state;        /* a steady set's member: the set evaluates its first state */
     double polish_relax;       /* the polish step's relaxation while it evaluates, else 1 */
     const atomic_int *cancel;  /* caller's flag (acbb_run_ctl); not owned */
     acbb_work work;            /* per-part work counters */

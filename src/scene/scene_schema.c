@@ -499,6 +499,10 @@ void acbb_sf_range_reason(const acbb_sfield *f, double v, char *buf, size_t n)
     bool lo_open = f->ends == OC || f->ends == OO, hi_open = f->ends == CO || f->ends == OO;
     bool below = lo_open ? v <= in->min : v < in->min;
     bool above = hi_open ? v >= in->max : v > in->max;
+    if (!below && !above) { /* every field of every validation: no text to make */
+        buf[0] = '\0';
+        return;
+    }
     char u[32];
     unit_suffix(f, u, sizeof u);
     if (below)
@@ -508,8 +512,6 @@ void acbb_sf_range_reason(const acbb_sfield *f, double v, char *buf, size_t n)
     else if (above)
         snprintf(buf, n, "must be %s %.15g and %s %.15g%s", lo_open ? ">" : ">=", in->min,
                  hi_open ? "<" : "<=", in->max, u);
-    else
-        buf[0] = '\0';
 }
 
 /* ---- schema introspection ---- */

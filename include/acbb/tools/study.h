@@ -73,6 +73,11 @@ typedef struct {
     double wall_ms;
     double runaway_t;            /* > 0: its transient ran away then (s); its steady values
                                   * are the steady solve's (MODEL.md 14, two branches) */
+    /* A steady point's converged state (batch.h), kept by a study whose
+     * points start none from another's; the robustness's perturbed
+     * studies start each steady point from the base study's (issue 30). */
+    acbb_warm *warm;             /* owned (acbb_study_free_runs frees it) */
+    const acbb_warm *warm_from;  /* not owned: NULL, or the base point's */
 } acbb_study_point;
 
 #define ACBB_STUDY_NPTS 8        /* points per sweep */
