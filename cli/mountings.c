@@ -26,12 +26,16 @@ void acbb_cli_mounting_scene(const acbb_scene *base, int m, acbb_scene *out)
     if (m != M_FORCE && !(out->preload_force > 0.0)) out->preload_force = out->axial_load;
     out->set_arrangement = m == M_DB ? ACBB_SET_DB : ACBB_SET_SINGLE;
     if (m != M_DB) out->set_n_bearings = 0;
+    /* The mountings are the bearing's: a spindle scene's front bearing on a
+     * rigid shaft, as for any other scene (docs/spindle.md "Questions"). */
+    out->shaft_segments = 0;
 }
 
 /* The mounting the scene itself is, or -1 (another set, a spring pair):
  * then the study of the scene is shown above and every mounting below. */
 int acbb_cli_own_mounting(const acbb_scene *base)
 {
+    if (base->shaft_segments > 0) return -1; /* a spindle is none of them */
     bool rigid = base->preload == ACBB_PRELOAD_DISPLACEMENT;
     if (base->set_arrangement == ACBB_SET_SINGLE) return rigid ? M_RIGID : M_FORCE;
     return base->set_arrangement == ACBB_SET_DB && rigid ? M_DB : -1;

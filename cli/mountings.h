@@ -15,9 +15,11 @@ typedef struct {
 } acbb_cli_mounting;
 extern const acbb_cli_mounting acbb_cli_mountings[N_MOUNTINGS];
 
-/* The scene of mounting m from the preset's scene. */
+/* The scene of mounting m from the preset's scene (a spindle's: its front
+ * bearing on a rigid shaft). */
 void acbb_cli_mounting_scene(const acbb_scene *base, int m, acbb_scene *out);
-/* The mounting the scene itself is, or -1 (another set, a spring pair). */
+/* The mounting the scene itself is, or -1 (another set, a spring pair, a
+ * spindle). */
 int acbb_cli_own_mounting(const acbb_scene *base);
 /* The check `id` of s, or its item's first check; NULL if neither. */
 const acbb_study_check *acbb_cli_find_check(const acbb_study *s, const char *id);

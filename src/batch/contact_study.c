@@ -21,6 +21,10 @@ void acbb_contact_case_scene(const acbb_scene *s, acbb_scene *out)
     out->preload_force = ACBB_CONTACT_PRELOAD_N;
     out->set_arrangement = ACBB_SET_SINGLE;
     out->set_n_bearings = 0;
+    /* The case is the bearing's own: a spindle scene's front bearing on a
+     * rigid shaft (a single front bearing on a spindle with a floating
+     * rear is refused, and the shaft would not be the case's anyway). */
+    out->shaft_segments = 0;
     out->schedule_n = 0;
     out->thermal_mode = ACBB_THERMAL_TRANSIENT;
 }

@@ -5,7 +5,8 @@
  * 16000 rpm under rigid preload (mounting.preload = displacement) set at
  * rest by 1000 N, 1000 N axial, alone (no set, no schedule): for the
  * 7008C exactly presets/runaway-rigid-preload.ini, and the top corner of
- * the report's speed and load sweeps. It is run (transient, as the preset)
+ * the report's speed and load sweeps (a spindle scene's front bearing, its
+ * shaft dropped). It is run (transient, as the preset)
  * under thermal.contact_model = stationary and moving, each at the
  * race-side multipliers acbb_contact_multipliers. Pure: the caller owns
  * `out`. */
