@@ -78,10 +78,13 @@ static const char *near_command(const char *name)
 int acbb_cli_unknown_command(const char *name)
 {
     const char *near = near_command(name);
-    acbb_cli_say("unknown command '%s'", name);
-    if (near) fprintf(stderr, "; did you mean '%s'?", near);
-    fputs("\n\n", stderr);
-    acbb_cli_print_overview(stderr);
+    acbb_cli_msg m;
+    FILE *f = acbb_cli_msg_begin(&m);
+    fprintf(f, "unknown command '%s'", name);
+    if (near) fprintf(f, "; did you mean '%s'?", near);
+    fputs("\n\n", f);
+    acbb_cli_print_overview(f);
+    acbb_cli_msg_say(&m);
     return ACBB_EXIT_INPUT;
 }
 
