@@ -259,9 +259,8 @@ static int write_plot(const char *path, const char *preset, const acbb_accuracy_
 static void progress_tick(void *ctx, size_t done, size_t total)
 {
     (void)ctx;
-    fprintf(stderr, "\racbb: bench accuracy: %zu/%zu settings", done, total);
-    if (done == total) fputs("\r\033[K", stderr);
-    fflush(stderr);
+    acbb_cli_progress_draw("\racbb: bench accuracy: %zu/%zu settings%s", done, total,
+                           done == total ? "\r\033[K" : "");
 }
 
 /* Settings that failed (not those skipped as not available): exit 3 and
@@ -308,7 +307,7 @@ static int run_bench(const acc_args *a, const acbb_scene *base)
     acbb_status st = acbb_accuracy_run(base, &opt, rows, cap, &n, tick, NULL, &err);
     acbb_cli_interrupt_end();
     if (st == ACBB_CANCELLED) {
-        if (tick) fputc('\n', stderr);
+        if (tick) acbb_cli_progress_draw("\n");
         int rc = bench_cancelled(a, rows, n);
         free(rows);
         return rc;

@@ -105,9 +105,8 @@ static void print_c_rows(const acbb_envelope_row *rows, size_t n)
 static void tick(void *ctx, size_t done, size_t total)
 {
     (void)ctx;
-    fprintf(stderr, "\racbb: bench accuracy --envelope: %zu/%zu points", done, total);
-    if (done == total) fputs("\r\033[K", stderr);
-    fflush(stderr);
+    acbb_cli_progress_draw("\racbb: bench accuracy --envelope: %zu/%zu points%s", done, total,
+                           done == total ? "\r\033[K" : "");
 }
 
 /* Settings without a converged pair (it and its reference) at every

@@ -152,22 +152,23 @@ size_t acbb_cli_wrap(FILE *f, const char *text, size_t col, size_t indent)
     return wrap(f, text, col, indent);
 }
 
-static void print_try(const acbb_cli_command *c)
+/* "try `acbb help CMD`", the second line of a usage error. */
+static const char *try_help(const acbb_cli_command *c, char *buf, size_t n)
 {
-    fprintf(stderr, "try `acbb help %s%s%s`\n", c->name, c->sub ? " " : "",
-            c->sub ? c->sub : "");
+    snprintf(buf, n, "try `acbb help %s%s%s`", c->name, c->sub ? " " : "", c->sub ? c->sub : "");
+    return buf;
 }
 
 /* Unknown `--name`: the closest accepted option when it is near enough. */
 static int unknown_option(const acbb_cli_command *c, const char *arg, size_t len)
 {
+    char hint[128];
     for (int k = 0; k < CLI_OPT_COUNT; k++) {
         if (strlen(acbb_cli_options[k].name) != len ||
             strncmp(acbb_cli_options[k].name, arg, len) != 0)
             continue;
-        acbb_cli_say("%s: --%.*s is not an option of this command\n", c->name,
-                (int)len, arg);
-        print_try(c);
+        acbb_cli_say("%s: --%.*s is not an option of this command\n%s\n", c->name,
+                (int)len, arg, try_help(c, hint, sizeof hint));
         return ACBB_EXIT_INPUT;
     }
     size_t best = (size_t)-1;
@@ -178,20 +179,19 @@ static int unknown_option(const acbb_cli_command *c, const char *arg, size_t len
         size_t d = acbb_cli_distance(arg, len, n, strlen(n));
         if (d < best) best = d, pick = k;
     }
-    acbb_cli_say("%s: unknown option --%.*s", c->name, (int)len, arg);
     /* Near enough: 1 edit in a short name, up to 3 in a long one. */
     size_t limit = 1 + len / 4 > 3 ? 3 : 1 + len / 4;
-    if (pick >= 0 && best <= limit)
-        fprintf(stderr, "; did you mean --%s?", acbb_cli_options[pick].name);
-    fputc('\n', stderr);
-    print_try(c);
+    bool near = pick >= 0 && best <= limit;
+    acbb_cli_say("%s: unknown option --%.*s%s%s%s\n%s\n", c->name, (int)len, arg,
+                 near ? "; did you mean --" : "", near ? acbb_cli_options[pick].name : "",
+                 near ? "?" : "", try_help(c, hint, sizeof hint));
     return ACBB_EXIT_INPUT;
 }
 
 static int bad(const acbb_cli_command *c, const char *what, const char *arg)
 {
-    acbb_cli_say("%s: %s%s\n", c->name, what, arg ? arg : "");
-    print_try(c);
+    char hint[128];
+    acbb_cli_say("%s: %s%s\n%s\n", c->name, what, arg ? arg : "", try_help(c, hint, sizeof hint));
     return ACBB_EXIT_INPUT;
 }
 
@@ -230,8 +230,8 @@ static int parse_option(const acbb_cli_command *c, int argc, char **argv, int *i
 static int check_positionals(const acbb_cli_command *c, acbb_cli_args *a)
 {
     if (a->n_pos < c->min_pos) {
-        acbb_cli_say("%s: missing %s\n", a->cmd, c->args);
-        print_try(c);
+        char hint[128];
+        acbb_cli_say("%s: missing %s\n%s\n", a->cmd, c->args, try_help(c, hint, sizeof hint));
         return ACBB_EXIT_INPUT;
     }
     if (c->preset_pos >= 0 && c->preset_pos < a->n_pos) {

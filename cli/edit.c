@@ -102,11 +102,12 @@ int acbb_cli_cmd_edit(const acbb_cli_args *a)
     if (!out && acbb_cli_preset_installed(a->preset, dir, sizeof dir)) {
         acbb_cli_preset_dir dirs[CLI_MAX_PRESET_DIRS];
         size_t nd = acbb_cli_preset_dirs(dirs);
+        bool user = nd && strcmp(dirs[0].role, "user") == 0;
         acbb_cli_say("edit: %s is an installed preset (in %s), shared by every user: "
-                "not edited; write your copy with --out FILE", a->preset, dir);
-        if (nd && strcmp(dirs[0].role, "user") == 0)
-            fprintf(stderr, " (your own presets, searched first: %s)", dirs[0].path);
-        fputs(", or make a preset with `acbb new`\n", stderr);
+                     "not edited; write your copy with --out FILE%s%s%s, or make a preset "
+                     "with `acbb new`\n", a->preset, dir,
+                     user ? " (your own presets, searched first: " : "",
+                     user ? dirs[0].path : "", user ? ")" : "");
         return ACBB_EXIT_INPUT;
     }
     const char *target = out ? out : a->preset;

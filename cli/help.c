@@ -78,10 +78,13 @@ static const char *near_command(const char *name)
 int acbb_cli_unknown_command(const char *name)
 {
     const char *near = near_command(name);
-    acbb_cli_say("unknown command '%s'", name);
-    if (near) fprintf(stderr, "; did you mean '%s'?", near);
-    fputs("\n\n", stderr);
-    acbb_cli_print_overview(stderr);
+    acbb_cli_msg m;
+    FILE *f = acbb_cli_msg_begin(&m);
+    fprintf(f, "unknown command '%s'", name);
+    if (near) fprintf(f, "; did you mean '%s'?", near);
+    fputs("\n\n", f);
+    acbb_cli_print_overview(f);
+    acbb_cli_msg_say(&m);
     return ACBB_EXIT_INPUT;
 }
 
@@ -331,8 +334,11 @@ static const char k_man_tail[] =
     "the Slurm and GNU parallel sweep recipes;\n"
     ".TP\n"
     ".I " ACBB_DOC_DIR "\n"
-    "README, BENCHMARKS, LICENSE, the seed report and\n"
-    ".IR physics.md ,\n"
+    "README, BENCHMARKS, LICENSE and, in\n"
+    ".IR docs/ ,\n"
+    "the documents they cite: the seed report, the spindle, contact heat,\n"
+    "ratings and loss validation notes, and\n"
+    ".IR docs/physics.md ,\n"
     "the physics reference (equations, units, sources, assumptions) whose\n"
     "numbered sections the help, the messages and the presets cite.\n"
     ".PP\n"

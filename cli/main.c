@@ -197,13 +197,16 @@ static const acbb_cli_command *find_command(int argc, char **argv, int *first, i
         *rc = acbb_cli_unknown_command(argv[1]);
         return NULL;
     }
-    acbb_cli_say("%s: expected one of:\n", argv[1]);
+    acbb_cli_msg m;
+    FILE *f = acbb_cli_msg_begin(&m);
+    fprintf(f, "%s: expected one of:\n", argv[1]);
     for (size_t i = 0; i < acbb_cli_n_commands; i++) {
         if (strcmp(acbb_cli_commands[i].name, argv[1]) != 0) continue;
-        fputs("  ", stderr);
-        acbb_cli_print_synopsis(stderr, &acbb_cli_commands[i]);
-        fputc('\n', stderr);
+        fputs("  ", f);
+        acbb_cli_print_synopsis(f, &acbb_cli_commands[i]);
+        fputc('\n', f);
     }
+    acbb_cli_msg_say(&m);
     *rc = ACBB_EXIT_INPUT;
     return NULL;
 }

@@ -124,10 +124,13 @@ int acbb_cli_resolve_preset(const char *arg, char *out, size_t n, bool report)
         }
     }
     if (!report) return -1;
-    acbb_cli_say("cannot open preset %s: no such file, and no %s%s in", arg, arg,
+    acbb_cli_msg m;
+    FILE *f = acbb_cli_msg_begin(&m);
+    fprintf(f, "cannot open preset %s: no such file, and no %s%s in", arg, arg,
             ends_with_ini(arg) ? "" : "[.ini]");
-    for (size_t i = 0; i < nd; i++) fprintf(stderr, "%s %s", i ? "," : "", dirs[i].path);
-    fputs(" (see `acbb presets`)\n", stderr);
+    for (size_t i = 0; i < nd; i++) fprintf(f, "%s %s", i ? "," : "", dirs[i].path);
+    fputs(" (see `acbb presets`)\n", f);
+    acbb_cli_msg_say(&m);
     return -1;
 }
 

@@ -202,6 +202,15 @@ void acbb_cli_progress_end(acbb_cli_progress *p)
     p->shown = 0;
 }
 
+void acbb_cli_progress_draw(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fflush(stderr);
+}
+
 void acbb_cli_counter_init(acbb_cli_counter *c, const char *name)
 {
     *c = (acbb_cli_counter){ .show = acbb_cli_progress_wanted(stderr), .t0_ms = acbb_now_ms(),

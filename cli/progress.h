@@ -84,6 +84,11 @@ typedef struct {
     const char *name;
 } acbb_cli_counter;
 
+/* Draw on the progress line (stderr, flushed): a command's own counter
+ * (sweep, bench accuracy). Only progress.c and say.c write to stderr
+ * (say.h). */
+void acbb_cli_progress_draw(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
 void acbb_cli_counter_init(acbb_cli_counter *c, const char *name);
 void acbb_cli_counter_step(acbb_cli_counter *c, size_t done, size_t total);
 

@@ -10,7 +10,24 @@
 #ifndef ACBB_CLI_SAY_H
 #define ACBB_CLI_SAY_H
 
+#include <stddef.h>
+#include <stdio.h>
+
 void acbb_cli_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* A message composed in pieces (a list printed by a function that takes
+ * a FILE *, a hint only some cases add): write the whole of it, "\n"
+ * ended, on the stream acbb_cli_msg_begin returns, then acbb_cli_msg_say
+ * says it as one message. Nothing in cli/ writes to stderr but this file
+ * and the progress line (progress.h): tests/test_json_message.sh checks. */
+typedef struct {
+    FILE *f;
+    char *text;
+    size_t len;
+} acbb_cli_msg;
+
+FILE *acbb_cli_msg_begin(acbb_cli_msg *m);
+void acbb_cli_msg_say(acbb_cli_msg *m);
 
 /* The first error reported (its first line, without "acbb: "), or NULL. */
 const char *acbb_cli_said_error(void);

@@ -324,7 +324,7 @@ int acbb_cli_cmd_sensitivity(const acbb_cli_args *a)
     acbb_status st = acbb_sensitivity_run(&sc, &o, r, &err);
     acbb_cli_interrupt_end();
     if (st == ACBB_CANCELLED) {
-        if (ps.show) fputc('\n', stderr);
+        if (ps.show) acbb_cli_progress_draw("\n");
         const char *kept = "no table and no file written (they would be partial)";
         if (a->val[CLI_OPT_JSON]) acbb_cli_cancelled_json(stdout, "sensitivity", kept);
         free(r);

@@ -57,7 +57,7 @@ static void show_progress(sweep_run *s, int final)
     s->last_shown = now;
     double rate = el > 0 ? (double)s->done / el : 0;
     double eta = rate > 0 ? (double)(s->total - s->done) / rate : 0;
-    fprintf(stderr, "\rsweep: %zu/%zu done, %zu failed, %.1f points/s, ETA %.0f s   %s",
+    acbb_cli_progress_draw("\rsweep: %zu/%zu done, %zu failed, %.1f points/s, ETA %.0f s   %s",
             s->done, s->total, s->failed, rate, eta, final ? "\n" : "");
 }
 
@@ -260,8 +260,8 @@ static int open_sink(sweep_run *s, const char *path, acbb_cli_rec_format fmt,
     int rc = acbb_cli_sink_open(o, path, fmt, &s->id, count, &found);
     if (o->fd >= 0) s->n_sinks++; /* closed (and its lock dropped) at the end */
     if (!rc && found && s->progress)
-        fprintf(stderr, "sweep: %s: resuming, %zu point%s already there\n", path, found,
-                found == 1 ? "" : "s");
+        acbb_cli_say("sweep: %s: note: resuming, %zu point%s already there\n", path, found,
+                     found == 1 ? "" : "s");
     return rc;
 }
 

@@ -29,8 +29,8 @@ t $? "every preset of presets/ is installed${miss:+ (missing:$miss)}"
 cd "$TMP" && XDG_CONFIG_HOME="$TMP/none" "$BIN" run te-wte-heavy --quiet >/dev/null 2>"$TMP/err"
 code $? 0 "the installed acbb runs te-wte-heavy by name from another directory"
 cd "$ROOT"
-for f in doc/acbb/LICENSE doc/acbb/README.md doc/acbb/BENCHMARKS.md doc/acbb/SEED_REPORT.md \
-         doc/acbb/physics.md acbb/schema/acbb.schema.json bash-completion/completions/acbb; do
+for f in doc/acbb/LICENSE doc/acbb/README.md doc/acbb/BENCHMARKS.md doc/acbb/docs/SEED_REPORT.md \
+         doc/acbb/docs/physics.md acbb/schema/acbb.schema.json bash-completion/completions/acbb; do
     [ -s "$SHARE/$f" ] || miss="$miss $f"
 done
 [ -z "$miss" ]
@@ -39,11 +39,27 @@ t $? "LICENSE, docs, the JSON Schema and the bash completion are installed${miss
 t $? "the contrib recipes are installed executable"
 grep -q "MIT License" "$SHARE/doc/acbb/LICENSE"
 t $? "LICENSE is the MIT licence meson.build declares"
-cmp -s "$SHARE/doc/acbb/physics.md" docs/physics.md && grep -q '^## §17 ' "$SHARE/doc/acbb/physics.md"
-t $? "the physics reference the help and README cite is installed whole (doc/acbb/physics.md)"
-! grep -q 'MODEL\.md' "$SHARE/doc/acbb/README.md" "$SHARE/doc/acbb/physics.md" "$SHARE/man/man1/acbb.1" \
-    "$SHARE"/acbb/presets/*.ini
-t $? "the installed README, reference, man page and presets cite no unshipped MODEL.md"
+cmp -s "$SHARE/doc/acbb/docs/physics.md" docs/physics.md && grep -q '^## §17 ' "$SHARE/doc/acbb/docs/physics.md"
+t $? "the physics reference the help and README cite is installed whole (doc/acbb/docs/physics.md)"
+! grep -q 'MODEL\.md' "$SHARE/doc/acbb/README.md" "$SHARE/doc/acbb/BENCHMARKS.md" "$SHARE"/doc/acbb/docs/*.md \
+    "$SHARE/man/man1/acbb.1" "$SHARE"/acbb/presets/*.ini
+t $? "the installed README, docs, man page and presets cite no unshipped MODEL.md"
+
+# Every document the installed ones point to is installed: a path
+# "docs/NAME" (as the text cites them, from the repository's root, which
+# share/doc/acbb mirrors) and a Markdown link [..](TARGET) (from the
+# linking file's directory). Parsed from the installed files themselves.
+DOC=$SHARE/doc/acbb
+: >"$TMP/links"
+for f in "$DOC"/*.md "$DOC"/docs/*.md; do
+    grep -oE '(^|[^A-Za-z0-9_/.-])docs/[A-Za-z0-9_.-]+[.](md|csv|png|txt)' "$f" |
+        sed "s|^[^d]*|$f $DOC/|"
+    grep -oE '\]\([^)#[:space:]]+' "$f" | sed 's/^](//' | grep -vE '^[a-z]+:' |
+        sed "s|^|$f ${f%/*}/|"
+done | sort -u >"$TMP/links"
+miss=$(while read -r from to; do [ -e "$to" ] || printf ' %s -> %s' "${from#"$DOC"/}" "${to#"$DOC"/}"; done <"$TMP/links")
+[ "$(wc -l <"$TMP/links")" -ge 10 ] && [ -z "$miss" ]
+t $? "every docs/ file the installed README, BENCHMARKS and docs cite is installed ($(wc -l <"$TMP/links") references)${miss:+; missing:$miss}"
 
 # ---- the completion: every command, and a command's options ----
 comp="$SHARE/bash-completion/completions/acbb"
