@@ -6,7 +6,7 @@
 # coolant flow: a cooler coolant outlet and a smaller nose drift; more
 # front preload: a stiffer nose and a front set running at more preload;
 # more sleeve friction: more thrust on the front pair, the rear carrying at
-# most the friction); a speed sweep's status turning from converged to
+# most the friction; none: the rear lifted off); a speed sweep's status turning from converged to
 # runaway where the docs say; a 2-D grid sharded in two and merged (the
 # Slurm job array's path) equal byte for byte to the grid run whole.
 # $1 = the acbb binary.
@@ -69,10 +69,16 @@ trend preload mounting.preload_N 150 600 spindle.nose_stiffness_N_per_um 'a > b'
 trend preload mounting.preload_N 150 600 'spindle.sets[0].preload_N' 'a > b && b > 150' \
     "more front preload: the front set runs at more, above its assembly (N)"
 
-sweep friction "$BELT" --grid spindle.rear_friction_N=40,400
+sweep friction "$BELT" --grid spindle.rear_friction_N=0,40,400
 code $? 0 "belt spindle: sweep over the rear sleeve's friction"
-jq -s -e "($finite) and length == 2 and all(.status == \"converged\")" "$TMP/friction.pts" >/dev/null
-t $? "sleeve friction: both points converged, spindle columns finite"
+jq -s -e "($finite) and length == 3 and all(.status == \"converged\")" "$TMP/friction.pts" >/dev/null
+t $? "sleeve friction: all three points converged, spindle columns finite"
+# Without friction the sleeve passes no thrust: the single rear bearing
+# carries nothing, so it has no contact (lifted off), and the run says so.
+jq -s -e '.[] | select(.grid["spindle.rear_friction_N"] == 0)
+          | (.message | contains("rear set bearing 0: contact_lost (lifted off)"))
+            and ."spindle.sets[1].axial_N" == 0' "$TMP/friction.pts" >/dev/null
+t $? "no sleeve friction: the rear bearing carries nothing and is reported lifted off"
 jq -s -e '[.[] | (."spindle.sets[1].axial_N" | if . < 0 then -. else . end)
                  <= .grid["spindle.rear_friction_N"] * (1 + 1e-9)] | all' \
     "$TMP/friction.pts" >/dev/null
