@@ -302,7 +302,7 @@ static void plant_of(acbb_spindle_sim *sp, acbb_plant *p)
 {
     *p = (acbb_plant){
         .ctx = sp, .s = &sp->s, .net = NULL, .T = sp->T, .q = sp->q, .n = sp->n,
-        .force_name = "the sets' preloads (front + rear)", .stop = plant_stop, .operate = plant_operate,
+        .force_name = "the sum of the sets' preloads (front + rear)", .stop = plant_stop, .operate = plant_operate,
         .evaluate = plant_evaluate, .loss = plant_loss, .save = plant_save,
         .restore = plant_restore, .limits = plant_limits, .force = plant_force,
         .balance = plant_balance, .converge = plant_converge, .solve = plant_solve,
