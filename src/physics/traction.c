@@ -67,7 +67,8 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
             P[1] += y;
             tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
             tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
-            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval(&visc, tc->p[k]) : 0.0;
+            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval_mirror(&visc, tc->p, tc->eta, q->n, i, j)
+                                        : 0.0;
             tc->tb[k] = tc->phi_a * s->mu_bd * tc->p[k];
             tc->tlim[k] = s->lambda_lim * fmax(tc->p[k], 0.0);
         }
