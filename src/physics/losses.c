@@ -226,7 +226,9 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
      * node of the same bits shares it (issue 30). */
     double P[ACBB_QUAD_MAX * ACBB_QUAD_MAX], eta[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
     double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
-    int n = q->n;
+    int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        if (on[l]) kinds[n_on++] = l;
     for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
@@ -242,8 +244,8 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             pt.tauV = fluid ? point_tau_lub(&pt, pt.V) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
-            for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
-                if (!on[l]) continue;
+            for (int a = 0; a < n_on; a++) {
+                int l = kinds[a];
                 double v = l == ACBB_LOSS_SPIN ? spin[node] = spin_mirror(&pt, q, P, spin, i, k)
                                                : acbb_loss_table[l].point(&pt);
                 sum[l] += v * w;

@@ -130,23 +130,36 @@ static inline double point_slip_meridional(const acbb_traction_contact *tc, int 
     return sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
 }
 
+/* point_tau for a film under the Eyring law (the callers' common case,
+ * decided once per contact): the same operations, so the same bits. */
+static inline double point_tau_eyring(const acbb_scene *s, const acbb_traction_contact *tc,
+                                      int k, double mag)
+{
+    return tc->tb[k] + tc->phi_f * acbb_eyring_capped(s->tau_eyring, tc->eta[k], mag, tc->H,
+                                                      tc->tlim[k]);
+}
+
 void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
                         const double wb[3], double race, acbb_traction *out)
 {
-    memset(out, 0, sizeof *out);
-    int merid = tc->n[1] == 0.0;
+    /* Sums in locals (out may alias nothing, but the compiler cannot know),
+     * added in the same order: the same bits. */
+    double F[3] = { 0.0, 0.0, 0.0 }, M[3] = { 0.0, 0.0, 0.0 };
+    int merid = tc->n[1] == 0.0, eyring = tc->phi_f > 0.0 && eyring_law(s);
     for (int k = 0; k < tc->np; k++) {
         double sl[3], mag = merid ? point_slip_meridional(tc, k, wb, race, sl)
                                   : point_slip(tc, k, wb, race, sl);
-        double tau = point_tau(s, tc, k, mag);
+        double tau = eyring ? point_tau_eyring(s, tc, k, mag) : point_tau(s, tc, k, mag);
         double g = -tau * tc->w[k] / sqrt(mag * mag + tc->s_reg * tc->s_reg);
         double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
         cross(tc->P + 3 * k, f, m);
         for (int d = 0; d < 3; d++) {
-            out->F[d] += f[d];
-            out->M[d] += m[d];
+            F[d] += f[d];
+            M[d] += m[d];
         }
     }
+    memcpy(out->F, F, sizeof F);
+    memcpy(out->M, M, sizeof M);
 }
 
 /* point_tau and its slip derivative d tau / d mag at once, for the
