@@ -51,6 +51,16 @@ static acbb_film film_shares(double phi_a, double hc)
     return f;
 }
 
+/* An inner contact of 150 N in a mixed film (phi_a 0.4) under Roelands. */
+static void mixed_inner(acbb_scene *s, acbb_contact_in *c, acbb_film *f)
+{
+    scene_min(s);
+    s->visc = ACBB_VISC_ROELANDS;
+    s->oil_alpha_pv = 2e-8;
+    *c = ellipse(1, 150.0, 1.0e-3, 0.15e-3, 0.35, 54e-3);
+    *f = film_shares(0.4, 2e-7);
+}
+
 static int prepared(const acbb_scene *s, const acbb_contact_in *c, const acbb_film *f,
                     acbb_traction_contact *tc)
 {
@@ -150,11 +160,9 @@ static void test_spin_moment(void)
 static void test_zero_and_reversal(void)
 {
     acbb_scene s;
-    scene_min(&s);
-    s.visc = ACBB_VISC_ROELANDS;
-    s.oil_alpha_pv = 2e-8;
-    acbb_contact_in c = ellipse(1, 150.0, 1.0e-3, 0.15e-3, 0.35, 54e-3);
-    acbb_film f = film_shares(0.4, 2e-7);
+    acbb_contact_in c;
+    acbb_film f;
+    mixed_inner(&s, &c, &f);
     acbb_traction_contact tc = { 0 };
     ok(prepared(&s, &c, &f, &tc), "inner contact, mixed film prepared");
     const double zero[3] = { 0, 0, 0 };
@@ -279,11 +287,9 @@ static void test_jacobian(void)
 static void test_mirror_viscosity(void)
 {
     acbb_scene s;
-    scene_min(&s);
-    s.visc = ACBB_VISC_ROELANDS;
-    s.oil_alpha_pv = 2e-8;
-    acbb_contact_in c = ellipse(1, 150.0, 1.0e-3, 0.15e-3, 0.35, 54e-3);
-    acbb_film f = film_shares(0.4, 2e-7);
+    acbb_contact_in c;
+    acbb_film f;
+    mixed_inner(&s, &c, &f);
     acbb_oil_state oil = { .T_C = 40, .rho = 860, .eta0 = 0.05 };
     acbb_visc_law law;
     acbb_visc_law_init(&s, &oil, &law);
