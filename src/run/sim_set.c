@@ -290,7 +290,12 @@ static void plant_converge(void *ctx)
             ss->K_ax += ss->b[k]->K_axial;
     }
     acbb_set_solve_shaft(ss, NULL); /* the stiffness probes moved the workspaces */
-    acbb_set_nose_stiffness(ss);
+    /* The caller asked for no stiffness (acbb_sim_opts.skip_stiffness: the
+     * members skipped theirs): the nose probes' four shaft solves too. */
+    if (ss->b[0]->skip_stiffness)
+        ss->K_rad = ss->K_tilt = NAN;
+    else
+        acbb_set_nose_stiffness(ss);
     ss->preload = acbb_set_preload_now(ss);
     ss->preload_stale = 0;
     ss->liftoff = acbb_set_liftoff(ss, 0.0); /* from the live one (publish) */
