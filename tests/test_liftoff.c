@@ -145,9 +145,50 @@ static void test_steady_once(void)
     is_close(st, tr, 0.0, 1e-4 * 200.0, "converged: steady lift-off = transient's to 1e-4 Fp");
 }
 
+/* A steady set's preload (a shaft solve at zero thrust) is found at the
+ * converged state, not after every iteration (issue 30): after one
+ * iteration the snapshot still shows the first state's; the converged
+ * preload is the transient's to the solve's tolerance. */
+static void test_steady_preload(void)
+{
+    const char *ed[] = { "set.arrangement=DB", "operating.inner_speed_rpm=12000",
+                         "operating.axial_load_N=300", "mounting.preload_N=200",
+                         "mounting.preload=displacement" };
+    double first[2] = { NAN, NAN }, after1[2] = { NAN, NAN }, last[2] = { NAN, NAN };
+    for (int steady = 0; steady < 2; steady++) {
+        acbb_scene s;
+        if (!load(&s, ed, sizeof ed / sizeof ed[0])) return;
+        s.thermal_mode = steady ? ACBB_THERMAL_STEADY : ACBB_THERMAL_TRANSIENT;
+        acbb_sim *sim;
+        acbb_error err = { "" };
+        if (acbb_sim_create(&s, NULL, &sim, &err) != ACBB_OK) {
+            ok(0, "sim: %s", err.msg);
+            return;
+        }
+        acbb_snapshot snap;
+        acbb_sim_snapshot(sim, &snap);
+        first[steady] = snap.set.preload_N;
+        acbb_sim_step(sim);
+        acbb_sim_snapshot(sim, &snap);
+        after1[steady] = snap.set.preload_N;
+        acbb_status rc = acbb_sim_run(sim);
+        acbb_sim_snapshot(sim, &snap);
+        last[steady] = rc == ACBB_OK ? snap.set.preload_N : NAN;
+        acbb_sim_free(sim);
+    }
+    ok(first[1] > 0.0 && after1[1] == first[1],
+       "steady: after one iteration the preload is the first state's (%.6g N), not re-solved",
+       after1[1]);
+    ok(after1[0] != first[0], "transient: the preload follows every step (%.6g -> %.6g N)",
+       first[0], after1[0]);
+    ok(last[1] != first[1], "steady: the converged preload (%.6g N) is solved at the end", last[1]);
+    is_close(last[1], last[0], 1e-3, 0.0, "converged: steady preload = transient's to 1e-3");
+}
+
 int main(void)
 {
     test_steady_once();
+    test_steady_preload();
     static const double Fp[] = { 100.0, 300.0, 1000.0 }, model[] = { 3.07, 3.30, 3.71 };
     for (int i = 0; i < 3; i++) {
         brg b;

@@ -97,8 +97,8 @@ static void test_sweep(const acbb_scene *s)
     acbb_sweep_free(g);
 }
 
-/* A set's members skip theirs too (the preload map's pairs); the set's
- * state is the same. */
+/* A set's members skip theirs too (the preload map's pairs), and so does
+ * the set; the set's state is the same. */
 static void test_set(void)
 {
     acbb_scene s;
@@ -126,6 +126,17 @@ static void test_set(void)
     for (int i = 0; i < a.n_nodes && same; i++) same = a.T[i] == b.T[i];
     ok(same, "pair: the same state bit for bit (%.17g W, %.17g W)", a.losses.total,
        b.losses.total);
+    /* The set's own nose probes are skipped with its members' (issue 30):
+     * its radial and tilt stiffness reported missing (0, as before
+     * convergence), its preload and lift-off the same bit for bit. */
+    ok(a.set.stiffness_radial > 0.0 && a.set.stiffness_tilt > 0.0 && b.set.stiffness_radial == 0.0
+       && b.set.stiffness_tilt == 0.0,
+       "pair: the set's nose stiffness computed by default (%.4g N/m), missing when skipped",
+       a.set.stiffness_radial);
+    ok(a.set.preload_N == b.set.preload_N && a.set.liftoff_thrust_N == b.set.liftoff_thrust_N
+       && a.set.liftoff_remainder_N == b.set.liftoff_remainder_N,
+       "pair: the set's preload %.17g N and lift-off %.17g N the same when skipped",
+       b.set.preload_N, b.set.liftoff_thrust_N);
 }
 
 int main(void)

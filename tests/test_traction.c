@@ -51,6 +51,16 @@ static acbb_film film_shares(double phi_a, double hc)
     return f;
 }
 
+/* An inner contact of 150 N in a mixed film (phi_a 0.4) under Roelands. */
+static void mixed_inner(acbb_scene *s, acbb_contact_in *c, acbb_film *f)
+{
+    scene_min(s);
+    s->visc = ACBB_VISC_ROELANDS;
+    s->oil_alpha_pv = 2e-8;
+    *c = ellipse(1, 150.0, 1.0e-3, 0.15e-3, 0.35, 54e-3);
+    *f = film_shares(0.4, 2e-7);
+}
+
 static int prepared(const acbb_scene *s, const acbb_contact_in *c, const acbb_film *f,
                     acbb_traction_contact *tc)
 {
@@ -150,11 +160,9 @@ static void test_spin_moment(void)
 static void test_zero_and_reversal(void)
 {
     acbb_scene s;
-    scene_min(&s);
-    s.visc = ACBB_VISC_ROELANDS;
-    s.oil_alpha_pv = 2e-8;
-    acbb_contact_in c = ellipse(1, 150.0, 1.0e-3, 0.15e-3, 0.35, 54e-3);
-    acbb_film f = film_shares(0.4, 2e-7);
+    acbb_contact_in c;
+    acbb_film f;
+    mixed_inner(&s, &c, &f);
     acbb_traction_contact tc = { 0 };
     ok(prepared(&s, &c, &f, &tc), "inner contact, mixed film prepared");
     const double zero[3] = { 0, 0, 0 };
@@ -271,8 +279,48 @@ static void test_jacobian(void)
     acbb_traction_contact_free(&tc);
 }
 
+/* The point tables share a viscosity between mirror nodes (issue 30):
+ * every node's viscosity must still be the law's at that node's own
+ * pressure, bit for bit, for even and odd grids (an odd grid has a middle
+ * row and column that are their own mirrors); the sharing pays because
+ * the Gauss nodes off the middle are exact +-x pairs of equal weight. */
+static void test_mirror_viscosity(void)
+{
+    acbb_scene s;
+    acbb_contact_in c;
+    acbb_film f;
+    mixed_inner(&s, &c, &f);
+    acbb_oil_state oil = { .T_C = 40, .rho = 860, .eta0 = 0.05 };
+    acbb_visc_law law;
+    acbb_visc_law_init(&s, &oil, &law);
+    int bad_eta = 0, bad_pair = 0, shared = 0;
+    for (int n = 1; n <= ACBB_QUAD_MAX; n++) {
+        acbb_quad q;
+        acbb_traction_contact tc = { 0 };
+        if (acbb_quad_init(&q, n) != ACBB_OK || acbb_traction_contact_init(&tc, n) != ACBB_OK
+            || acbb_traction_prepare(&s, &q, &c, &f, &oil, &tc) != ACBB_OK || tc.np != n * n) {
+            bad_eta++;
+            acbb_traction_contact_free(&tc);
+            continue;
+        }
+        for (int i = 0; i < n; i++) /* GSL's middle node of some odd rules is ~1e-17, not 0 */
+            bad_pair += i != n - 1 - i && (q.x[n - 1 - i] != -q.x[i] || q.w[n - 1 - i] != q.w[i]);
+        for (int k = 0; k < tc.np; k++) {
+            bad_eta += tc.eta[k] != acbb_visc_law_eval(&law, tc.p[k]);
+            shared += k > 0 && tc.p[k] == tc.p[k - 1];
+        }
+        acbb_traction_contact_free(&tc);
+    }
+    ok(bad_pair == 0, "Gauss rules of 1..%d nodes: nodes off the middle in exact +-x pairs "
+       "of equal weight (%d not)", ACBB_QUAD_MAX, bad_pair);
+    ok(bad_eta == 0, "grids 1..%d: every node's viscosity is the law's at its pressure (%d not)",
+       ACBB_QUAD_MAX, bad_eta);
+    ok(shared > 0, "mirror nodes do share pressures (%d neighbours in a row)", shared);
+}
+
 int main(void)
 {
+    test_mirror_viscosity();
     test_uniform_slip();
     test_spin_moment();
     test_zero_and_reversal();

@@ -196,7 +196,8 @@ typedef struct {
     /* 1: a caller that reads no stiffness skips the end-of-run stiffness
      * probes of a single bearing (a third of a steady run): the snapshot
      * then has stiffness_failed with every ACBB_STIFF_* bit and the values
-     * 0. 0 (the default): computed, as `acbb run` reports them. */
+     * 0; a set skips its members' and its nose probes (set view
+     * stiffness 0). 0 (the default): computed, as `acbb run` reports them. */
     int skip_stiffness;
 } acbb_sim_opts;
 /* The one constructor: compile the scene (validated again) and set the

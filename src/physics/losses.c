@@ -87,6 +87,17 @@ static double spin_point(const acbb_loss_point *q)
     return (fl->phi_a * q->s->mu_bd * q->p + fl->phi_f * tauS) * r;
 }
 
+/* spin_point at node (i, k), or its mirror node's value when that node
+ * (filled earlier) has the same |x|, |y| and pressure: the same bits. */
+static double spin_mirror(const acbb_loss_point *pt, const acbb_quad *q, const double *P,
+                          const double *spin, int i, int k)
+{
+    int n = q->n, node = i * n + k, mi = (n - 1 - i) * n + k, mk = i * n + (n - 1 - k);
+    if (mi < node && P[mi] == P[node] && q->x[n - 1 - i] == -q->x[i]) return spin[mi];
+    if (mk < node && P[mk] == P[node] && q->x[n - 1 - k] == -q->x[k]) return spin[mk];
+    return spin_point(pt);
+}
+
 static double spin_finish(const acbb_contact_in *c, int seed, double sum)
 {
     (void)seed;
@@ -210,22 +221,35 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
     acbb_visc_law_init(s, oil, &visc);
     pt.eyring = s->traction != ACBB_TRACTION_BAIR_WINER && s->tau_eyring > 0.0;
     pt.H = fmax(fl->hc, 1e-9);
-    for (int i = 0; i < q->n; i++) {
+    /* Per node (row-major): pressure, viscosity, and the spin integrand,
+     * which depends on the node through |x|, |y| and p alone, so a mirror
+     * node of the same bits shares it (issue 30). */
+    double P[ACBB_QUAD_MAX * ACBB_QUAD_MAX], eta[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
+    double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
+    int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        if (on[l]) kinds[n_on++] = l;
+    for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
         pt.V = acbb_slip_speed(c, pt.x);
-        for (int k = 0; k < q->n; k++) {
+        for (int k = 0; k < n; k++) {
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
-            pt.p = c->pmax * sq * sqrt(1.0 - t * t);
+            int node = i * n + k;
+            pt.p = P[node] = c->pmax * sq * sqrt(1.0 - t * t);
             pt.y = c->b * sq * t;
-            pt.eta = fluid ? acbb_visc_law_eval(&visc, pt.p) : 0.0;
+            pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
             pt.tlim = s->lambda_lim * fmax(pt.p, 0.0);
             pt.tauV = fluid ? point_tau_lub(&pt, pt.V) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
-            for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-                if (on[l]) sum[l] += acbb_loss_table[l].point(&pt) * w;
+            for (int a = 0; a < n_on; a++) {
+                int l = kinds[a];
+                double v = l == ACBB_LOSS_SPIN ? spin[node] = spin_mirror(&pt, q, P, spin, i, k)
+                                               : acbb_loss_table[l].point(&pt);
+                sum[l] += v * w;
+            }
         }
     }
     out->slide = sumP > 0.0 ? sumPV / sumP : 0.0;

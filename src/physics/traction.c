@@ -67,7 +67,8 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
             P[1] += y;
             tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
             tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
-            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval(&visc, tc->p[k]) : 0.0;
+            tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval_mirror(&visc, tc->p, tc->eta, q->n, i, j)
+                                        : 0.0;
             tc->tb[k] = tc->phi_a * s->mu_bd * tc->p[k];
             tc->tlim[k] = s->lambda_lim * fmax(tc->p[k], 0.0);
         }
@@ -112,21 +113,53 @@ static inline double point_tau(const acbb_scene *s, const acbb_traction_contact 
                                   : acbb_tau_lubricant(s, eta, mag, tc->H, tc->p[k]));
 }
 
+/* point_slip without its multiplications by the zero components of e_x
+ * and of the normal (n[1] = 0 in the meridional plane, prepare): for
+ * finite values the same bits (x * 0 only adds a signed zero), a quarter
+ * of the arithmetic of the innermost loop of Level 2 (issue 30). */
+static inline double point_slip_meridional(const acbb_traction_contact *tc, int k,
+                                           const double wb[3], double race, double sl[3])
+{
+    const double *P = tc->P + 3 * k, *n = tc->n;
+    sl[0] = wb[1] * P[2] - wb[2] * P[1];
+    sl[1] = (wb[2] * P[0] - wb[0] * P[2]) + race * (P[2] + tc->rm);
+    sl[2] = (wb[0] * P[1] - wb[1] * P[0]) - race * P[1];
+    double sn = sl[0] * n[0] + sl[2] * n[2];
+    sl[0] -= sn * n[0];
+    sl[2] -= sn * n[2];
+    return sqrt(sl[0] * sl[0] + sl[1] * sl[1] + sl[2] * sl[2]);
+}
+
+/* point_tau for a film under the Eyring law (the callers' common case,
+ * decided once per contact): the same operations, so the same bits. */
+static inline double point_tau_eyring(const acbb_scene *s, const acbb_traction_contact *tc,
+                                      int k, double mag)
+{
+    return tc->tb[k] + tc->phi_f * acbb_eyring_capped(s->tau_eyring, tc->eta[k], mag, tc->H,
+                                                      tc->tlim[k]);
+}
+
 void acbb_traction_eval(const acbb_scene *s, const acbb_traction_contact *tc,
                         const double wb[3], double race, acbb_traction *out)
 {
-    memset(out, 0, sizeof *out);
+    /* Sums in locals (out may alias nothing, but the compiler cannot know),
+     * added in the same order: the same bits. */
+    double F[3] = { 0.0, 0.0, 0.0 }, M[3] = { 0.0, 0.0, 0.0 };
+    int merid = tc->n[1] == 0.0, eyring = tc->phi_f > 0.0 && eyring_law(s);
     for (int k = 0; k < tc->np; k++) {
-        double sl[3], mag = point_slip(tc, k, wb, race, sl);
-        double tau = point_tau(s, tc, k, mag);
+        double sl[3], mag = merid ? point_slip_meridional(tc, k, wb, race, sl)
+                                  : point_slip(tc, k, wb, race, sl);
+        double tau = eyring ? point_tau_eyring(s, tc, k, mag) : point_tau(s, tc, k, mag);
         double g = -tau * tc->w[k] / sqrt(mag * mag + tc->s_reg * tc->s_reg);
         double f[3] = { g * sl[0], g * sl[1], g * sl[2] }, m[3];
         cross(tc->P + 3 * k, f, m);
         for (int d = 0; d < 3; d++) {
-            out->F[d] += f[d];
-            out->M[d] += m[d];
+            F[d] += f[d];
+            M[d] += m[d];
         }
     }
+    memcpy(out->F, F, sizeof F);
+    memcpy(out->M, M, sizeof M);
 }
 
 /* point_tau and its slip derivative d tau / d mag at once, for the

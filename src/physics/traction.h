@@ -52,6 +52,21 @@ static inline double acbb_eyring_capped(double tau_e, double eta, double mag, do
     return tau < tlim ? tau : tlim;
 }
 
+/* The viscosity at node (i, j) of an n x n Gauss grid whose pressures p
+ * and viscosities eta (row-major) are filled in order: the Hertz pressure
+ * is even in both coordinates and Gauss nodes come in +-x pairs, so a
+ * node whose mirror image (earlier in the order) has the same pressure,
+ * bit for bit, has its viscosity too (a quarter of the law's evaluations;
+ * issue 30). */
+static inline double acbb_visc_law_eval_mirror(const acbb_visc_law *v, const double *p,
+                                               const double *eta, int n, int i, int j)
+{
+    int k = i * n + j, mi = (n - 1 - i) * n + j, mj = i * n + (n - 1 - j);
+    if (mi < k && p[mi] == p[k]) return eta[mi];
+    if (mj < k && p[mj] == p[k]) return eta[mj];
+    return acbb_visc_law_eval(v, p[k]);
+}
+
 /* Point tables for contact c with film f and inlet oil o. */
 acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
                                   const acbb_contact_in *c, const acbb_film *f,

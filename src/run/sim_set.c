@@ -290,8 +290,14 @@ static void plant_converge(void *ctx)
             ss->K_ax += ss->b[k]->K_axial;
     }
     acbb_set_solve_shaft(ss, NULL); /* the stiffness probes moved the workspaces */
-    acbb_set_nose_stiffness(ss);
+    /* The caller asked for no stiffness (acbb_sim_opts.skip_stiffness: the
+     * members skipped theirs): the nose probes' four shaft solves too. */
+    if (ss->b[0]->skip_stiffness)
+        ss->K_rad = ss->K_tilt = NAN;
+    else
+        acbb_set_nose_stiffness(ss);
     ss->preload = acbb_set_preload_now(ss);
+    ss->preload_stale = 0;
     ss->liftoff = acbb_set_liftoff(ss, 0.0); /* from the live one (publish) */
 }
 
@@ -324,20 +330,32 @@ static void live_liftoff(acbb_set_sim *ss)
     ss->liftoff = acbb_set_liftoff(ss, LIFT_TOL);
 }
 
-void acbb_set_publish(acbb_set_sim *ss)
+/* The snapshot's flows, preload and lift-off. A steady solve's iterates
+ * are no states the set passes through: after a steady iteration
+ * (`iterate`) its preload (a shaft solve at zero thrust) waits for the
+ * converged state (plant_converge) or the state the run ends in, and its
+ * lift-off is searched once, at the converged state (issue 30). */
+static void publish(acbb_set_sim *ss, int iterate)
 {
     /* heating off solves no network: no heat flows (issue 18) */
     ss->heat_out = ss->s.heating ? acbb_tnet_heat_to_fixed(ss->ns.net, ss->T) : 0.0;
-    /* The steady solve's iterates are no states the set passes through:
-     * its lift-off is searched once, at the converged state (issue 30). */
-    if (ss->run.state == ACBB_RUN_RUNNING) {
+    int steady = ss->s.thermal_mode == ACBB_THERMAL_STEADY;
+    if (ss->run.state == ACBB_RUN_RUNNING && iterate && steady) {
+        ss->preload_stale = 1;
+    } else if (ss->run.state == ACBB_RUN_RUNNING || ss->preload_stale) {
         ss->preload = acbb_set_preload_now(ss);
-        if (ss->s.thermal_mode != ACBB_THERMAL_STEADY) live_liftoff(ss);
+        ss->preload_stale = 0;
+        if (ss->run.state == ACBB_RUN_RUNNING && !steady) live_liftoff(ss);
     }
     for (int k = 0; k < ss->n; k++) { /* the run's outcome, for each member's own snapshot */
         ss->b[k]->run = ss->run;
         ss->b[k]->heat_out = acbb_tnet_heat_to_fixed(ss->b[k]->nw.net, ss->b[k]->T);
     }
+}
+
+void acbb_set_publish(acbb_set_sim *ss)
+{
+    publish(ss, 0);
 }
 
 acbb_status acbb_set_sim_step(acbb_set_sim *ss)
@@ -348,7 +366,7 @@ acbb_status acbb_set_sim_step(acbb_set_sim *ss)
     acbb_set_plant(ss, &p);
     acbb_status rc = acbb_stepper_step(&p, &ss->run);
     ss->run.wall_ms += acbb_now_ms() - t0;
-    acbb_set_publish(ss);
+    publish(ss, 1);
     return rc;
 }
 

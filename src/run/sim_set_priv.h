@@ -26,6 +26,7 @@ struct acbb_set_sim {
     const acbb_set_mech *probe_J; /* nose probes: the Jacobian to start from (NULL: the run's) */
     double total;
     double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
+    int preload_stale;         /* steady solve: preload not probed since the last iterate */
     /* the last lift-off search (sim_set_probe.c): its preload, speed, slope
      * of the squeeze (um/N) and where it ended (lift_sm.n 0: none yet) */
     double lift_preload, lift_speed, lift_slope;
