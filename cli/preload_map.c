@@ -54,7 +54,7 @@ static int limit(const acbb_cli_args *a, acbb_cli_opt o, double *v)
 
 static int options(const acbb_cli_args *a, acbb_pmap_opts *o)
 {
-    long jobs;
+    long jobs = 0;
     memset(o, 0, sizeof *o);
     int rc = axis(a, CLI_OPT_SPEEDS, &o->speed_lo, &o->speed_hi, &o->n_speeds);
     if (!rc) rc = axis(a, CLI_OPT_PRELOADS, &o->preload_lo, &o->preload_hi, &o->n_preloads);

@@ -328,7 +328,7 @@ static int sweep_stream(const acbb_cli_args *a, sweep_run *s, const acbb_scene *
 
 int acbb_cli_cmd_sweep(const acbb_cli_args *a)
 {
-    long jobs, max_points;
+    long jobs = 0, max_points = 0; /* read only when every count parsed */
     int rc = acbb_cli_count(a, CLI_OPT_JOBS, 0, 1, ACBB_CLI_MAX_JOBS, &jobs);
     if (!rc) rc = acbb_cli_count(a, CLI_OPT_MAX_POINTS, 0, 1, ACBB_SWEEP_MAX_POINTS, &max_points);
     acbb_sweep_opts o = { .jobs = (int)jobs, .max_points = (size_t)max_points,

@@ -175,7 +175,7 @@ static void test_relative(void)
     acbb_scene sc;
     acbb_scene_default(&sc);
     acbb_sens_opts o = {.metric = "balls[0].Qi_N", .delta_te = 1, .jobs = 2};
-    double d, r;
+    double d = NAN, r = NAN;
     acbb_status st = acbb_sens_eval(&sc, 1, &o, &d, NULL, 0, NULL);
     o.delta_rel = 1;
     if (st == ACBB_OK) st = acbb_sens_eval(&sc, 1, &o, &r, NULL, 0, NULL);
