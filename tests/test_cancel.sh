@@ -18,9 +18,15 @@ caught() {
     local i m exe
     exe=$(readlink -f "$ACBB")
     for ((i = 0; i < 600; i++)); do
-        m=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null)
-        [ "$(readlink "/proc/$1/exe" 2>/dev/null)" = "$exe" ] && [ -n "$m" ] &&
-            (( (16#$m & 0x4002) == 0x4002 )) && return 0
+        # exe first, then the handlers: exec cannot be undone, so bits read
+        # after it are acbb's. Read the other way round, the bits could be
+        # the forked bash's (it catches both) just before exec, and the
+        # signal then landed before acbb's handler, on the SIG_IGN a
+        # background job inherits: lost, and the unending run went on for
+        # 220 s to its schedule's end (a CI rehearsal, release build).
+        [ "$(readlink "/proc/$1/exe" 2>/dev/null)" = "$exe" ] &&
+            m=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null) &&
+            [ -n "$m" ] && (( (16#$m & 0x4002) == 0x4002 )) && return 0
         kill -0 "$1" 2>/dev/null || return 1
         sleep 0.1
     done
