@@ -11,7 +11,7 @@ cp "$ROOT/presets/7008C.ini" "$TMP/one.ini"
 TUI_ARGS="--pace 0" start "env NO_COLOR=1" sp1 one.ini
 wait_for "Idle at ambient"
 keys D
-wait_for "Not a spindle. Open one: acbb presets/spindle-motor-DBT.ini, or o (presets)"
+wait_for "Not a spindle. Open one: o (presets), or acbb tui presets/spindle-motor-DBT.ini"
 ok $? "D on a bearing scene: one line naming a spindle preset"
 [ "$(screen | grep -c '#####')" -eq 0 ] && ! screen | grep -q 'nose drift'
 ok $? "and no empty shaft or side block drawn"

@@ -204,7 +204,7 @@ static void test_none(void)
     static acbb_spindle_page p;
     acbb_spindle_view none = { 0 };
     ok(acbb_spindle_page_fill(&sc, &none, 80, &p) == -1, "n_sets = 0: not a spindle, nothing laid out");
-    ok(strlen(acbb_spindle_none_text) <= 80 && strstr(acbb_spindle_none_text, "acbb presets/spindle-motor-DBT.ini"),
+    ok(strlen(acbb_spindle_none_text) <= 80 && strstr(acbb_spindle_none_text, "acbb tui presets/spindle-motor-DBT.ini"),
        "its one line fits 80 columns and names a spindle preset");
 }
 

@@ -11,7 +11,7 @@
 #include "spindle_draw.h"
 
 const char acbb_spindle_none_text[] =
-    "Not a spindle. Open one: acbb presets/spindle-motor-DBT.ini, or o (presets)";
+    "Not a spindle. Open one: o (presets), or acbb tui presets/spindle-motor-DBT.ini";
 
 int acbb_spindle_column(double x, double length, int w)
 {
