@@ -10,8 +10,8 @@
 #   (acbb help, the man page, acbb keys, acbb presets);
 # - every "docs/physics.md §N" / "docs/physics.md section N" there, and
 #   every "§N" inside docs/physics.md, names a section that exists;
-# - no "issue N" (the developers' tracker) in what the program prints or in
-#   its string literals.
+# - no "issue N" (the developers' tracker) in what the program prints, in
+#   its string literals, nor in README.md and docs/*.md.
 # Usage: test_citations.sh PATH/TO/acbb   (cwd = repo root)
 set -u
 ACBB=${1:?usage: test_citations.sh PATH/TO/acbb}
@@ -87,6 +87,16 @@ for f in cli/*.c cli/*.h src/*/*.c src/*/*.h ui/*.c ui/*.h completion/*.c includ
 done
 [ ! -s "$TMP/src" ]
 t $? "no 'issue N' in the program's strings (the TUI's help included)$( [ -s "$TMP/src" ] && printf ' (in %s)' "$(head -5 "$TMP/src" | tr '\n' ' ')")"
+# README.md and docs/*.md are read by users too: "(issue 18, tilt)" there
+# pointed at nothing they can open. BENCHMARKS.md is the developers' log
+# and may cite the tracker. docs/spindle.md is left to its owner for now
+# (its opening line names the issue that asked for it): drop it from the
+# exemption once it is reworded.
+userdocs=$(ls README.md docs/*.md | grep -v -x -e BENCHMARKS.md -e docs/spindle.md)
+# shellcheck disable=SC2086
+grep -n -E "$ISSUE" $userdocs >"$TMP/hits"
+[ -n "$userdocs" ] && [ ! -s "$TMP/hits" ]
+t $? "no 'issue N' in README.md and docs/*.md ($(echo $userdocs | wc -w) files)$( [ -s "$TMP/hits" ] && printf ' (at %s)' "$(cut -d: -f1,2 "$TMP/hits" | head -5 | tr '\n' ' ')")"
 
 # ---- every citation names an existing section ----
 # shellcheck disable=SC2086
