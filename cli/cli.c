@@ -181,7 +181,12 @@ static int start_sim(const acbb_scene *sc, bool json, const atomic_int *cancel,
     acbb_status st = acbb_sim_create(sc, &(acbb_sim_opts){ .cancel = cancel }, sim, &err);
     acbb_cli_progress_end(prog);
     if (st == ACBB_OK) return 0;
-    acbb_cli_say("%s\n", acbb_cli_err_text(&err, st));
+    /* A bound met in the set-up is the run's named ending as one met in a
+     * step: "wall_limit: wall-clock bound ... reached ...", as drive's end
+     * prints it (test wall_message); other set-up failures are the input's
+     * and print their message alone. */
+    acbb_cli_say("%s%s%s\n", st == ACBB_WALL_LIMIT ? acbb_status_name(st) : "",
+                 st == ACBB_WALL_LIMIT ? ": " : "", acbb_cli_err_text(&err, st));
     if (json) {
         acbb_cli_out o;
         acbb_cli_out_init(&o, stdout);

@@ -292,8 +292,8 @@ jq -e '.status == "wall_limit" and .iterations == 0
     and (.message | test("reached during the set-up"))
     and ([.. | numbers | select(isinfinite or isnan)] | length == 0)' "$TMP/w3.json" >/dev/null 2>&1
 t $? "... ends wall_limit in the set-up: no step taken, finite JSON, the message says so"
-grep -q "wall_limit\|during the set-up" "$TMP/err"
-t $? "... and stderr names it"
+grep -q -x -F "acbb: wall_limit: $(jq -r .message "$TMP/w3.json")" "$TMP/err"
+t $? "... and stderr names it as a step's bound: 'wall_limit: ' then the JSON's message (test wall_message)"
 # A sweep's points are bounded alike: each record says wall_limit, exit 3.
 "$ACBB" sweep presets/combined-load.ini --set fidelity.model=dynamic \
     --grid operating.axial_load_N=300,400 --max-wall 0.001 --jsonl "$TMP/w5.jsonl" >/dev/null 2>"$TMP/err"
