@@ -55,12 +55,17 @@ def _installed(key):
 def _prefix():
     """The prefix this module is installed in: its directory less the site
     directory's part (a DESTDIR or moved prefix included), else the
-    configured prefix; None in the source tree."""
+    configured prefix; None in the source tree. A site directory outside
+    the prefix (the interpreter's own, meson.build) is absolute: what
+    stands before it is a DESTDIR, before the configured prefix."""
     pydir = _installed("pydir")
     if pydir is None:
         return None
     here = os.path.dirname(os.path.abspath(__file__))
     tail = os.path.normpath(pydir)
+    if os.path.isabs(tail):
+        stage = here[:-len(tail)] if here.endswith(tail) else ""
+        return stage + _installed("prefix")
     if here.endswith(os.sep + tail):
         return here[:-len(tail) - 1]
     return _installed("prefix")

@@ -8,9 +8,10 @@
 # `acbb run --json` says for 7008C.
 # $1 acbb, $2 the build directory, $3 its b_sanitize ("none", or e.g.
 # "address,undefined": the example then needs the same -fsanitize), $4 the
-# build's C compiler.
+# build's C compiler, $5 the python3 meson found (the module's site
+# directory is chosen for it).
 set -u
-ACBB=$1 BUILD=$2 SAN=${3:-none} CC=${4:-cc}
+ACBB=$1 BUILD=$2 SAN=${3:-none} CC=${4:-cc} PY=${5:-python3}
 cd "$(dirname "$0")/.." || exit 1
 . tests/tap.sh
 TMP=$(mktemp -d)
@@ -130,6 +131,42 @@ fi
 PYMOD=$(find "$D" -name acbb.py -path '*-packages/acbb.py' | head -n 1)
 [ -n "$PYMOD" ] && [ -z "$(find "$D" -path '*/share/acbb/python*')" ]
 t $? "acbb.py is installed into the Python site directory (${PYMOD#"$D"}), not share/acbb/python"
+# ... and that directory (less the DESTDIR) is one the configured python3
+# searches without PYTHONPATH: in its sys.path, or in its site module's
+# list of site directories (which counts one not created yet). meson's own
+# choice for prefix /usr/local was searched by no interpreter under pyenv
+# (/usr/local/lib/python3.X/site-packages) nor under Debian's python3
+# (/usr/local/lib/python3/dist-packages); python/site_dir.py chooses.
+PYDIR=$(dirname "${PYMOD#"$D"}")
+env -u PYTHONPATH "$PY" -c 'import os, site, sys
+d = sys.path + site.getsitepackages() + ([site.getusersitepackages()] if site.ENABLE_USER_SITE else [])
+sys.exit(os.path.normpath(sys.argv[1]) not in [os.path.normpath(x) for x in d if x])' "$PYDIR"
+t $? "the configured $PY searches $PYDIR without PYTHONPATH"
+# site_dir.py's three rules on the site lists of Debian's python3, pyenv's
+# and a venv (any machine): meson's directory when searched, else one under
+# the prefix, else the interpreter's own.
+PYTHONPATH=python "$PY" - >"$TMP/site.txt" 2>&1 <<'PY'
+from site_dir import choose
+deb = ["/usr/local/lib/python3.11/dist-packages", "/usr/lib/python3/dist-packages",
+       "/usr/lib/python3.11/dist-packages", "/root/.local/lib/python3.11/site-packages"]
+pyenv = ["/h/.pyenv/versions/3.11.7/lib/python3.11/site-packages",
+         "/h/.local/lib/python3.11/site-packages"]
+venv = ["/h/venv/lib/python3.11/site-packages"]
+cases = [
+    ("/usr", "/usr/lib/python3/dist-packages/", deb, "/usr/lib/python3/dist-packages"),
+    ("/usr/local", "/usr/local/lib/python3/dist-packages/", deb,
+     "/usr/local/lib/python3.11/dist-packages"),
+    ("/usr/local", "/usr/local/lib/python3.11/site-packages/", pyenv, pyenv[0]),
+    ("/h/.local", "/h/.local/lib/python3.11/site-packages/", pyenv, pyenv[1]),
+    ("/usr/local", "/h/venv/lib/python3.11/site-packages", venv, venv[0]),
+    ("/opt/acbb", "/opt/acbb/lib/python3.11/site-packages", pyenv, pyenv[0]),
+]
+for prefix, meson_dir, dirs, want in cases:
+    got = choose(prefix, meson_dir, dirs, dirs[0])
+    print("ok" if got == want else "BAD", prefix, meson_dir, "->", got, "want", want)
+PY
+[ "$(grep -c '^ok ' "$TMP/site.txt")" -eq 6 ] && ! grep -q -v '^ok ' "$TMP/site.txt"
+t $? "site_dir.py: Debian /usr and /usr/local, pyenv /usr/local and ~/.local, a venv, /opt$(grep -v '^ok ' "$TMP/site.txt" | head -3 | tr '\n' ' ')"
 if [ "$SAN" = none ] && command -v python3 >/dev/null; then
     mkdir -p "$TMP/elsewhere" "$TMP/xdg"
     (cd "$TMP/elsewhere" && env -u ACBB_LIB XDG_CONFIG_HOME="$TMP/xdg" \
