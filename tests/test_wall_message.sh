@@ -10,7 +10,8 @@
 # (every ball's first window, 21 balls) takes far longer than 1 ms on any
 # machine; a quasi-static set-up takes milliseconds, and a [schedule] of
 # 9e7 s (minutes of steps) is still stepping at 0.5 s (the run's JSON says
-# which path: iterations 0 or >= 1).
+# which path: iterations 0 or >= 1). Set-up: one bearing, a set, a spindle;
+# a step: one bearing (every plant's step failure is stepper.c's one text).
 # Usage: test_wall_message.sh PATH/TO/acbb   (cwd = repo root)
 set -u
 ACBB=${1:?usage: test_wall_message.sh PATH/TO/acbb}
@@ -47,6 +48,11 @@ wall "set-up, one bearing" 0 \
 wall "set-up, a bearing set" 0 \
     "acbb: wall_limit: wall-clock bound fidelity.max_wall_s = 0.001 s reached$SETUP_TAIL" \
     -- presets/pair-DB-heated.ini --set fidelity.model=dynamic --max-wall 0.001
+# A spindle's set-up (two sets' first equilibria, over 50 ms) said "spindle
+# front set: ... reached; last good state kept" with no state to keep.
+wall "set-up, a spindle" 0 \
+    "acbb: wall_limit: wall-clock bound fidelity.max_wall_s = 0.001 s reached$SETUP_TAIL" \
+    -- presets/spindle-belt-DB.ini --max-wall 0.001
 
 cp presets/7008C.ini "$TMP/long.ini"
 sed -i 's/^max_time_s = .*/max_time_s = 1e8/; s/^max_steps = .*/max_steps = 10000000/' \
@@ -57,7 +63,7 @@ wall "a step, one bearing" 1 \
     -- "$TMP/long.ini" --set fidelity.model=quasi-static --max-wall 0.5
 
 # One form: the status name, then the bound and its key, the same words.
-[ "$(wc -l <"$TMP/heads")" -eq 3 ] && [ "$(sort -u "$TMP/heads" | wc -l)" -eq 1 ] &&
+[ "$(wc -l <"$TMP/heads")" -eq 4 ] && [ "$(sort -u "$TMP/heads" | wc -l)" -eq 1 ] &&
     grep -q -x -F 'acbb: wall_limit: wall-clock bound fidelity.max_wall_s' "$TMP/heads"
 t $? "set-up and step: one form, 'acbb: wall_limit: wall-clock bound fidelity.max_wall_s = S s reached...' ($(sort -u "$TMP/heads" | tr '\n' '|'))"
 

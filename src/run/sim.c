@@ -214,6 +214,14 @@ static acbb_status initial_mechanics(acbb_sim *sim, const acbb_mech_state *warm,
     return ACBB_OK;
 }
 
+/* The bound met in the set-up: no state yet, nothing to keep (one text for
+ * a bearing and a spindle; a set's is sim_set.c setup_wall's, the same). */
+static acbb_status setup_wall(const acbb_scene *s, acbb_error *err)
+{
+    return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = %g s "
+                          "reached during the set-up, before the first state", s->max_wall_s);
+}
+
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
                             const acbb_warm *w, acbb_error *err)
 {
@@ -259,9 +267,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
         rc = acbb_simx_evaluate(sim, err);
     sim->setting_up = 0;
     sim->setup_ms = acbb_now_ms() - t0;
-    if (rc == ACBB_WALL_LIMIT) /* no state yet: nothing to keep */
-        return acbb_error_set(err, rc, "wall-clock bound fidelity.max_wall_s = %g s reached "
-                              "during the set-up, before the first state", s->max_wall_s);
+    if (rc == ACBB_WALL_LIMIT) return setup_wall(s, err);
     if (rc != ACBB_OK) return rc;
     sim->run.dt = s->time_step;
     acbb_relax_start(&sim->run.relax);
@@ -308,6 +314,7 @@ static acbb_status spindle_init(acbb_sim *sim, const acbb_scene *s, acbb_error *
     acbb_life_static_basis(s, &sim->life_basis);
     acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
     acbb_status rc = acbb_spindle_sim_new(&sim->resolved, &o, 0, &sim->spindle, err);
+    if (rc == ACBB_WALL_LIMIT) return setup_wall(s, err); /* not "a set: ...; kept" */
     if (rc != ACBB_OK) return rc;
     sim->run.state = acbb_spindle_sim_outcome(sim->spindle, &sim->run.status, &sim->run.iter);
     sim->reported = -1;
