@@ -45,10 +45,13 @@ typedef struct {
  * start and the forward differences of acbb_fd_jacobian: J_n + 1 sets of
  * member solves) and the members' states after them. Member reactions
  * depend on the shaft position, the members' start states, expansions and
- * speed, not on the external loads, so a later solve from the same
- * position, start states, expansions and speed under other loads (the
- * nose-stiffness probes, sim_set_probe.c) replays them: the residuals,
- * Jacobian and states are the bits its own solves would give (issue 30). */
+ * speed, not on the external loads (a member's workspace carries nothing
+ * from solve to solve that moves them: its chord Jacobians serve only a
+ * single bearing's transient solves, acbb_mech_set_transient), so a later
+ * solve from the same position, start states, expansions and speed under
+ * other loads (the nose-stiffness probes, sim_set_probe.c) replays them:
+ * the residuals, Jacobian and states are the bits its own solves would
+ * give (issue 30). */
 typedef struct {
     int state;                    /* 0 empty, 1 recording, 2 recorded */
     int n_ev, mask;               /* evaluations kept and the active unknowns' mask */
