@@ -16,7 +16,7 @@
 static void test_hand(void)
 {
     double A[9] = { 4, 2, 0, 2, 5, 3, 0, 3, 10 };
-    int first[3];
+    int first[3] = { 0, 0, 0 };
     ok(acbb_skyline_factor(A, 3, 3, first), "3x3: positive definite");
     ok(A[0] == 2 && A[3] == 1 && A[4] == 2 && A[7] == 1.5 && fabs(A[8] - sqrt(7.75)) < 1e-15
        && first[0] == 0 && first[1] == 0 && first[2] == 1,
@@ -53,7 +53,7 @@ static void test_against_gsl(void)
         static double A[N * N], B[N * N];
         network(A, &seed);
         memcpy(B, A, sizeof A);
-        int first[N];
+        int first[N] = { 0 };
         double b[N], x[N], y[N];
         for (int i = 0; i < N; i++) b[i] = (rand_r(&seed) % 200) - 100.0;
         int okf = acbb_skyline_factor(A, N, N, first);
@@ -74,10 +74,36 @@ static void test_against_gsl(void)
 static void test_not_definite(void)
 {
     double A[4] = { 1, 2, 2, 1 }; /* eigenvalues 3, -1 */
-    int first[2];
+    int first[2] = { 0, 0 };
     ok(!acbb_skyline_factor(A, 2, 2, first), "[1 2; 2 1] is refused (not positive definite)");
     double Z[4] = { 1, 0, 0, 0 };
+    first[0] = first[1] = 0;
     ok(!acbb_skyline_factor(Z, 2, 2, first), "a zero pivot is refused");
+}
+
+/* first[] on entry bounds each row's envelope from the left (the thermal
+ * network passes its rows' first couplings, issue 30): what lies left of
+ * it is not read, and the factor and envelope are the bits of a factor
+ * that scans every row from column 0. */
+static void test_envelope_bound(void)
+{
+    unsigned seed = 31;
+    static double A[N * N], B[N * N];
+    network(A, &seed);
+    memcpy(B, A, sizeof A);
+    int fa[N] = { 0 }, fb[N];
+    for (int i = 0; i < N; i++) { /* the structural first, garbage left of it */
+        fb[i] = i;
+        for (int k = 0; k < i; k++)
+            if (B[i * N + k] != 0.0 && k < fb[i]) fb[i] = k;
+        for (int k = 0; k < fb[i]; k++) B[i * N + k] = NAN;
+    }
+    int oka = acbb_skyline_factor(A, N, N, fa), okb = acbb_skyline_factor(B, N, N, fb);
+    int same = oka && okb && !memcmp(fa, fb, sizeof fa);
+    for (int i = 0; i < N && same; i++)
+        same = !memcmp(A + i * N + fa[i], B + i * N + fb[i], sizeof(double) * (size_t)(i - fa[i] + 1));
+    ok(same, "40x40 network: first[] given as each row's first coupling, NaN left of it: the "
+       "factor and envelope of the scan from column 0, bit for bit");
 }
 
 int main(void)
@@ -85,5 +111,6 @@ int main(void)
     test_hand();
     test_against_gsl();
     test_not_definite();
+    test_envelope_bound();
     return done_testing();
 }

@@ -23,6 +23,8 @@ typedef struct {
     int n;
     double R;                     /* moment arm for the residual scale, m */
     acbb_status st;
+    acbb_set_mech_memo *memo;     /* NULL, or recording / replaying (replay) */
+    int replay, ev;               /* evaluations so far */
 } ctx_t;
 
 void acbb_set_mech_init(acbb_set_mech *sm, const acbb_scene *s)
@@ -87,11 +89,10 @@ static int all_unloaded(const acbb_mech_state *st)
     return 1;
 }
 
-/* Every member at shaft position q; the residuals of all four equations. */
-static int evaluate(ctx_t *c, const double *q, double r[ACBB_SET_Q])
+/* Every member solved at shaft position q into sm's reactions. */
+static int solve_members(ctx_t *c, const double *q)
 {
     acbb_set_mech *sm = c->sm;
-    double Fx = 0.0, Fz = 0.0, My = 0.0, Ff = 0.0;
     for (int k = 0; k < sm->n; k++) {
         double d[3];
         member_displacement(sm, k, q, d);
@@ -104,6 +105,68 @@ static int evaluate(ctx_t *c, const double *q, double r[ACBB_SET_Q])
         sm->Fz[k] = b->st->Fz;
         sm->My[k] = b->st->My;
         sm->lost[k] = all_unloaded(b->st);
+    }
+    return 1;
+}
+
+/* The reactions of evaluation i from the memo, and after its last one the
+ * members' states; 0 when q is not the recorded position. */
+static int replay(ctx_t *c, int i, const double *q)
+{
+    acbb_set_mech *sm = c->sm;
+    acbb_set_mech_memo *m = c->memo;
+    if (memcmp(m->q[i], q, sizeof m->q[i])) return 0;
+    for (int k = 0; k < sm->n; k++) {
+        sm->Fx[k] = m->Fx[i][k];
+        sm->Fz[k] = m->Fz[i][k];
+        sm->My[k] = m->My[i][k];
+        sm->lost[k] = m->lost[i][k];
+    }
+    if (i == m->n_ev - 1)
+        for (int k = 0; k < sm->n; k++) acbb_mech_state_copy(c->mb[k].st, m->ms[k]);
+    return 1;
+}
+
+static void record(ctx_t *c, int i, const double *q)
+{
+    acbb_set_mech *sm = c->sm;
+    acbb_set_mech_memo *m = c->memo;
+    memcpy(m->q[i], q, sizeof m->q[i]);
+    for (int k = 0; k < sm->n; k++) {
+        m->Fx[i][k] = sm->Fx[k];
+        m->Fz[i][k] = sm->Fz[k];
+        m->My[i][k] = sm->My[k];
+        m->lost[i][k] = sm->lost[k];
+    }
+    if (i < m->n_ev - 1) return;
+    for (int k = 0; k < sm->n; k++) acbb_mech_state_copy(m->ms[k], c->mb[k].st);
+    m->state = 2;
+}
+
+/* The members at q: solved, or the memo's first evaluations replayed or
+ * recorded. */
+static int members_at(ctx_t *c, const double *q)
+{
+    int i = c->ev++;
+    if (!c->memo || i >= c->memo->n_ev) return solve_members(c, q);
+    if (c->replay && replay(c, i, q)) return 1;
+    if (c->replay) { /* not the recorded path (the members still at their
+                        start before its last evaluation): solved from here on */
+        c->memo = NULL;
+        return solve_members(c, q);
+    }
+    if (!solve_members(c, q)) return 0;
+    record(c, i, q);
+    return 1;
+}
+
+/* Every member at shaft position q; the residuals of all four equations. */
+static int evaluate(ctx_t *c, const double *q, double r[ACBB_SET_Q])
+{
+    acbb_set_mech *sm = c->sm;
+    double Fx = 0.0, Fz = 0.0, My = 0.0, Ff = 0.0;
+    if (!members_at(c, q)) return 0;
+    for (int k = 0; k < sm->n; k++) {
         Fx += sm->orient[k] * sm->Fx[k];
         Fz += sm->Fz[k];
         My += sm->orient[k] * sm->My[k] - sm->x[k] * sm->Fz[k];
@@ -167,6 +230,21 @@ void acbb_set_mech_loads(const acbb_set_mech *sm, double L[3])
     L[2] = My;
 }
 
+/* A solve that starts without a Jacobian replays sm->memo's evaluations
+ * when they were recorded for the same unknowns and members, else
+ * records its own. */
+static void memo_start(ctx_t *c)
+{
+    acbb_set_mech_memo *m = c->sm->memo;
+    if (!m || c->sm->J_ok || c->n == 0) return;
+    c->memo = m;
+    c->replay = m->state == 2 && m->mask == active_mask(c) && m->n_ev == c->n + 1;
+    if (c->replay) return;
+    m->state = 1;
+    m->n_ev = c->n + 1;
+    m->mask = active_mask(c);
+}
+
 acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double omega,
                                 acbb_error *err)
 {
@@ -184,6 +262,7 @@ acbb_status acbb_set_mech_solve(acbb_set_mech *sm, acbb_set_member *mb, double o
     if (c.n != sm->J_n || active_mask(&c) != sm->J_mask) sm->J_ok = 0;
     sm->J_n = c.n;
     sm->J_mask = active_mask(&c);
+    memo_start(&c);
     double x[ACBB_SET_Q], f[ACBB_SET_Q];
     if (c.n == 0) { /* every unknown held: the members at q, nothing to solve */
         double r[ACBB_SET_Q];

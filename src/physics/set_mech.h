@@ -41,6 +41,27 @@ typedef struct {
     const acbb_expansion *e;      /* this bearing's expansions, NULL = none */
 } acbb_set_member;
 
+/* The first evaluations of a solve that starts without a Jacobian (its
+ * start and the forward differences of acbb_fd_jacobian: J_n + 1 sets of
+ * member solves) and the members' states after them. Member reactions
+ * depend on the shaft position, the members' start states, expansions and
+ * speed, not on the external loads (a member's workspace carries nothing
+ * from solve to solve that moves them: its chord Jacobians serve only a
+ * single bearing's transient solves, acbb_mech_set_transient), so a later
+ * solve from the same position, start states, expansions and speed under
+ * other loads (the nose-stiffness probes, sim_set_probe.c) replays them:
+ * the residuals, Jacobian and states are the bits its own solves would
+ * give (issue 30). */
+typedef struct {
+    int state;                    /* 0 empty, 1 recording, 2 recorded */
+    int n_ev, mask;               /* evaluations kept and the active unknowns' mask */
+    double q[ACBB_SET_Q + 1][ACBB_SET_Q];
+    double Fx[ACBB_SET_Q + 1][ACBB_MAX_SET], Fz[ACBB_SET_Q + 1][ACBB_MAX_SET];
+    double My[ACBB_SET_Q + 1][ACBB_MAX_SET];
+    int lost[ACBB_SET_Q + 1][ACBB_MAX_SET];
+    acbb_mech_state *ms[ACBB_MAX_SET]; /* the caller's storage: the members after them */
+} acbb_set_mech_memo;
+
 typedef struct {
     int n;
     int orient[ACBB_MAX_SET];     /* s_k */
@@ -61,7 +82,8 @@ typedef struct {
                                      spindle_mech.c); all 0 from init: every one free */
     double Fx[ACBB_MAX_SET], Fz[ACBB_MAX_SET], My[ACBB_MAX_SET]; /* own-frame reactions */
     int lost[ACBB_MAX_SET];       /* 1: every ball of bearing k unloaded */
-    long solves;                  /* member mechanics solves done */
+    long solves;                  /* member mechanics solves done (a replay's not) */
+    acbb_set_mech_memo *memo;     /* NULL (init), or record/replay the first evaluations */
 } acbb_set_mech;
 
 /* Layout, loads and preload mode from the scene; offsets e zero. */

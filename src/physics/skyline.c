@@ -8,7 +8,7 @@ int acbb_skyline_factor(double *A, int n, int lda, int *first)
 {
     for (int i = 0; i < n; i++) {
         double *Li = A + (long)i * lda;
-        int f = 0;
+        int f = first[i] < i ? first[i] : i;
         while (f < i && Li[f] == 0.0) f++;
         first[i] = f;
         for (int j = f; j < i; j++) {

@@ -10,8 +10,10 @@
 
 /* Factor the n x n matrix A (row-major, row stride lda; the lower
  * triangle is read) in place into L (lower triangle; the upper one is
- * left alone). first[i] receives row i's envelope start. Returns 0 if A
- * is not positive definite (a pivot <= 0 or not finite). */
+ * left alone). first[i] gives, on entry, a column left of which row i is
+ * zero (0 when not known; entries left of it are not read) and receives
+ * row i's envelope start (its first nonzero). Returns 0 if A is not
+ * positive definite (a pivot <= 0 or not finite). */
 int acbb_skyline_factor(double *A, int n, int lda, int *first);
 
 /* Solve L L^T x = b with the factor and envelope from

@@ -255,23 +255,37 @@ static acbb_status factorise(acbb_tnet *net, tn_factor *f, double inv_dt)
     }
     if (!components_ok(net, inv_dt == 0.0)) return ACBB_SINGULAR;
     gsl_matrix_view A = gsl_matrix_submatrix(f->lu, 0, 0, (size_t)nf, (size_t)nf);
-    gsl_matrix_set_zero(&A.matrix);
+    double *a = A.matrix.data;
+    size_t lda = A.matrix.tda;
+    /* Only the lower triangle from each row's first coupling is assembled
+     * (the factor reads nothing else, skyline.h): the same sums, in the
+     * same order, as the whole matrix's (issue 30). */
+    int *first = f->first;
+    for (int i = 0; i < nf; i++) first[i] = i;
+    for (int e = 0; e < net->n_edges; e++) {
+        int ia = net->fidx[net->ea[e]], ib = net->fidx[net->eb[e]];
+        if (ia >= 0 && ib >= 0) {
+            int hi = ia > ib ? ia : ib, lo = ia + ib - hi;
+            if (lo < first[hi]) first[hi] = lo;
+        }
+    }
+    for (int i = 0; i < nf; i++)
+        for (int k = first[i]; k <= i; k++) a[(size_t)i * lda + (size_t)k] = 0.0;
     for (int i = 0; i < net->n; i++)
         if (net->fidx[i] >= 0)
-            gsl_matrix_set(&A.matrix, (size_t)net->fidx[i], (size_t)net->fidx[i],
-                           net->C[i] * inv_dt);
+            a[(size_t)net->fidx[i] * (lda + 1)] = net->C[i] * inv_dt;
     for (int e = 0; e < net->n_edges; e++) {
         int ia = net->fidx[net->ea[e]], ib = net->fidx[net->eb[e]];
         double g = 1.0 / net->R[e];
-        if (ia >= 0) *gsl_matrix_ptr(&A.matrix, (size_t)ia, (size_t)ia) += g;
-        if (ib >= 0) *gsl_matrix_ptr(&A.matrix, (size_t)ib, (size_t)ib) += g;
+        if (ia >= 0) a[(size_t)ia * (lda + 1)] += g;
+        if (ib >= 0) a[(size_t)ib * (lda + 1)] += g;
         if (ia >= 0 && ib >= 0) {
-            *gsl_matrix_ptr(&A.matrix, (size_t)ia, (size_t)ib) -= g;
-            *gsl_matrix_ptr(&A.matrix, (size_t)ib, (size_t)ia) -= g;
+            int hi = ia > ib ? ia : ib, lo = ia + ib - hi;
+            a[(size_t)hi * lda + (size_t)lo] -= g;
         }
     }
     net->n_fact++;
-    if (!acbb_skyline_factor(A.matrix.data, nf, (int)A.matrix.tda, f->first))
+    if (!acbb_skyline_factor(a, nf, (int)lda, first))
         return ACBB_SINGULAR;
     f->dirty = 0;
     f->valid = 1;

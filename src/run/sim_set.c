@@ -450,7 +450,8 @@ static acbb_status set_up(acbb_set_sim *ss, const acbb_sim_opts *o, acbb_error *
         acbb_simx_deadline(ss->b[k], 0.0); /* the set's steps hand theirs down */
         nw[k] = &ss->b[k]->nw;
         if (!(ss->scratch[k] = malloc(sizeof *ss->scratch[k]))
-            || !(ss->lift_ms[k] = malloc(sizeof *ss->lift_ms[k])))
+            || !(ss->lift_ms[k] = malloc(sizeof *ss->lift_ms[k]))
+            || !(ss->memo.ms[k] = malloc(sizeof *ss->memo.ms[k])))
             return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT) {
@@ -517,6 +518,7 @@ void acbb_set_sim_free(acbb_set_sim *ss)
         acbb_sim_free(ss->b[k]);
         free(ss->scratch[k]);
         free(ss->lift_ms[k]);
+        free(ss->memo.ms[k]);
     }
     free(ss);
 }

@@ -23,7 +23,7 @@ struct acbb_set_sim {
     const atomic_int *cancel;
     double deadline_ms;        /* the run's fidelity.max_wall_s, monotonic ms; 0 none */
     int setting_up;            /* 1 while set_up evaluates the first state */
-    const acbb_set_mech *probe_J; /* nose probes: the Jacobian to start from (NULL: the run's) */
+    acbb_set_mech_memo memo;   /* the nose probes' shared first evaluations */
     double total;
     double heat_in, heat_out, preload, liftoff, K_ax, K_rad, K_tilt, spacer;
     int preload_stale;         /* steady solve: preload not probed since the last iterate */

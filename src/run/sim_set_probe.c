@@ -29,19 +29,17 @@ static void keep_members(acbb_set_sim *ss, int back)
 }
 
 /* Solve the shaft under other external loads into *out; the members and
- * the set's own solution are put back afterwards. ss->probe_J, when set,
- * is the shaft Jacobian to start from (another probe's, of the same
- * active freedoms) instead of the run's. */
-static acbb_status probe(acbb_set_sim *ss, loads L, acbb_set_mech *out)
+ * the set's own solution are put back afterwards. memo (NULL: none): the
+ * first evaluations of probes that start, as every probe does, from the
+ * run's shaft position and members (set_mech.h acbb_set_mech_memo). */
+static acbb_status probe(acbb_set_sim *ss, loads L, acbb_set_mech *out,
+                         acbb_set_mech_memo *memo)
 {
     keep_members(ss, 0);
     *out = ss->sm;
-    if (ss->probe_J && ss->probe_J->J_ok) {
-        memcpy(out->J, ss->probe_J->J, sizeof out->J);
-        out->J_ok = 1;
-        out->J_n = ss->probe_J->J_n;
-    }
+    out->memo = memo;
     acbb_status rc = solve_loads(ss, L, out);
+    out->memo = NULL;
     keep_members(ss, 1);
     return rc;
 }
@@ -70,7 +68,7 @@ double acbb_set_preload_now(acbb_set_sim *ss)
     }
     if (ss->sm.Fa == 0.0) return acbb_set_mech_preload(&ss->sm);
     acbb_set_mech p;
-    if (probe(ss, (loads){ 0.0, ss->sm.Fr, ss->sm.M }, &p) != ACBB_OK) return 0.0;
+    if (probe(ss, (loads){ 0.0, ss->sm.Fr, ss->sm.M }, &p, NULL) != ACBB_OK) return 0.0;
     return acbb_set_mech_preload(&p);
 }
 
@@ -257,46 +255,39 @@ double acbb_set_liftoff(acbb_set_sim *ss, double rel_tol)
     return root;
 }
 
-/* Probes at loads a and b into p[0], p[1]. jac (NULL: every probe from
- * the run's Jacobian): the first starts from jac's Jacobian when it has
- * one, the second from the first's; the second's into *jac. */
-static acbb_status probe_pair(acbb_set_sim *ss, loads a, loads b, acbb_set_mech p[2],
-                              acbb_set_mech *jac)
+/* Probes at loads a and b into p[0], p[1]. */
+static acbb_status probe_pair(acbb_set_sim *ss, loads a, loads b, acbb_set_mech p[2])
 {
-    ss->probe_J = jac && jac->J_ok ? jac : NULL;
-    acbb_status rc = probe(ss, a, &p[0]);
-    if (rc == ACBB_OK && jac) ss->probe_J = &p[0];
-    if (rc == ACBB_OK) rc = probe(ss, b, &p[1]);
-    if (rc == ACBB_OK && jac) *jac = p[1];
-    ss->probe_J = NULL;
+    acbb_status rc = probe(ss, a, &p[0], &ss->memo);
+    if (rc == ACBB_OK) rc = probe(ss, b, &p[1], &ss->memo);
     return rc;
 }
 
 /* Radial and tilt stiffness at the nose: central differences of the shaft
- * equilibrium in the radial force and the moment there. The steady
- * solve's probes (issue 30) start from the previous probe's Jacobian, not
- * a finite-difference one each (a radial load or moment frees shaft
- * freedoms that the run under pure thrust keeps still): 4 of 5 Jacobians
- * saved, the stiffness moved at the probes' resolution (up to 2.5e-6
- * relative), so the transient's, which the default run reports, keeps
- * its own bit for bit. */
+ * equilibrium in the radial force and the moment there. A radial load or
+ * moment frees shaft freedoms that the run under pure thrust keeps still,
+ * so each probe starts with a finite-difference Jacobian at the run's
+ * shaft position: the same member solves in all four, made by the first
+ * and replayed by the others (issue 30: bit for bit the four solves'
+ * own). */
 void acbb_set_nose_stiffness(acbb_set_sim *ss)
 {
     double R = 0.5 * ss->s.pitch_diameter;
     double h = fmax(1e-3 * (fabs(ss->sm.Fr) + ss->sm.Fp + fabs(ss->sm.Fa)), 1.0);
-    acbb_set_mech p[2], jac = { .J_ok = 0 };
-    acbb_set_mech *j = ss->s.thermal_mode == ACBB_THERMAL_STEADY ? &jac : NULL;
+    acbb_set_mech p[2];
     loads base = { ss->sm.Fa, ss->sm.Fr, ss->sm.M };
     ss->K_rad = ss->K_tilt = 0.0;
+    ss->memo.state = 0;
     if (probe_pair(ss, (loads){ base.Fa, base.Fr + h, base.M },
-                   (loads){ base.Fa, base.Fr - h, base.M }, p, j) == ACBB_OK) {
+                   (loads){ base.Fa, base.Fr - h, base.M }, p) == ACBB_OK) {
         double xn = ss->sm.x_nose;
         double d = (p[0].q[1] - p[0].q[2] * xn) - (p[1].q[1] - p[1].q[2] * xn);
         ss->K_rad = d != 0.0 ? 2.0 * h / d : 0.0;
     }
     if (probe_pair(ss, (loads){ base.Fa, base.Fr, base.M + h * R },
-                   (loads){ base.Fa, base.Fr, base.M - h * R }, p, j) == ACBB_OK) {
+                   (loads){ base.Fa, base.Fr, base.M - h * R }, p) == ACBB_OK) {
         double d = p[0].q[2] - p[1].q[2];
         ss->K_tilt = d != 0.0 ? 2.0 * h * R / d : 0.0;
     }
+    ss->memo.state = 0;
 }
