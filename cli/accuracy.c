@@ -125,9 +125,10 @@ static void print_row(const acbb_accuracy_row *r)
     char ms[16], wu[16];
     if (isfinite(r->wall_ms)) snprintf(ms, sizeof ms, "%7.1f", r->wall_ms);
     else snprintf(ms, sizeof ms, "%7s", "-");
-    if (isfinite(r->work)) snprintf(wu, sizeof wu, "%7.1f", r->work);
-    else snprintf(wu, sizeof wu, "%7s", "-");
-    printf("%-19s %-2s %-10s %s %s %6s %6s %6s %6s %6s\n", label, mark(r), row_status(r), ms,
+    /* 80 columns: work keeps a decimal below 1000 M */
+    if (isfinite(r->work)) snprintf(wu, sizeof wu, "%6.*f", r->work < 999.95 ? 1 : 0, r->work);
+    else snprintf(wu, sizeof wu, "%6s", "-");
+    printf("%-19s %-2s %-9s%s%s%7s%7s%7s%7s%7s\n", label, mark(r), row_status(r), ms,
            wu, e[0], e[1], e[2], e[3], e[4]);
 }
 
@@ -143,7 +144,7 @@ static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t
            "inner contact the load Qi, angle alpha and sliding speed slide. work: cost in\n"
            "work units (M instructions, from the Sim's counters: repeatable).\n\n",
            ACBB_ACCURACY_T_FLOOR_K);
-    printf("%-19s %-2s %-10s %7s %7s %6s %6s %6s %6s %6s\n", "setting", "", "status", "ms",
+    printf("%-19s %-2s %-9s%7s%6s%7s%7s%7s%7s%7s\n", "setting", "", "status", "ms",
            "work", "loss%", "T%", "Qi%", "alpha%", "slide%");
     acbb_accuracy_knob last = ACBB_KNOB_COUNT;
     for (size_t i = 0; i < n; i++) {

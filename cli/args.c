@@ -126,32 +126,6 @@ size_t acbb_cli_distance(const char *a, size_t la, const char *b, size_t lb)
     return d[(la + 1) % 3][lb];
 }
 
-/* `text` word-wrapped to 79 columns, continuation lines indented by
- * `indent`; `col` is where the cursor stands. Returns the new column. */
-static size_t wrap(FILE *f, const char *text, size_t col, size_t indent)
-{
-    while (*text) {
-        size_t word = strcspn(text, " ");
-        if (col > indent && col + 1 + word > 79) {
-            fprintf(f, "\n%*s", (int)indent, "");
-            col = indent;
-        } else if (col > indent) {
-            fputc(' ', f);
-            col++;
-        }
-        fprintf(f, "%.*s", (int)word, text);
-        col += word;
-        text += word;
-        text += strspn(text, " ");
-    }
-    return col;
-}
-
-size_t acbb_cli_wrap(FILE *f, const char *text, size_t col, size_t indent)
-{
-    return wrap(f, text, col, indent);
-}
-
 /* "try `acbb help CMD`", the second line of a usage error. */
 static const char *try_help(const acbb_cli_command *c, char *buf, size_t n)
 {
@@ -279,7 +253,7 @@ void acbb_cli_print_synopsis(FILE *f, const acbb_cli_command *c)
     char word[96];
     snprintf(word, sizeof word, "acbb %s%s%s%s%s", c->name, c->sub ? " " : "",
              c->sub ? c->sub : "", c->args[0] ? " " : "", c->args);
-    size_t col = wrap(f, word, 7, 9);
+    size_t col = acbb_cli_wrap(f, word, 7, 9);
     for (int k = 0; k < CLI_OPT_COUNT; k++) {
         if (!(c->options & CLI_BIT(k))) continue;
         const acbb_cli_option *o = &acbb_cli_options[k];
@@ -311,7 +285,7 @@ void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c)
                  o->metavar ? o->metavar : "");
         if (strlen(head) > 20) fprintf(f, "  %s\n%24s", head, "");
         else fprintf(f, "  %-20s  ", head);
-        wrap(f, o->help, 24, 24);
+        acbb_cli_wrap(f, o->help, 24, 24);
         fputc('\n', f);
     }
 }

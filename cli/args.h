@@ -16,6 +16,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "wrap.h"
 
 typedef enum {
     CLI_OPT_SET, CLI_OPT_JSON, CLI_OPT_CSV, CLI_OPT_QUIET, CLI_OPT_PLOT,
@@ -107,9 +108,6 @@ void acbb_cli_print_usage(FILE *f, const acbb_cli_command *c);
  * all from the two tables. */
 void acbb_cli_print_overview(FILE *f);
 void acbb_cli_print_man(FILE *f, const char *version);
-/* `text` word-wrapped to 79 columns from column `col`, continuation lines
- * indented by `indent`; returns the column the cursor ends in. */
-size_t acbb_cli_wrap(FILE *f, const char *text, size_t col, size_t indent);
 /* The bash completion script from the same tables (completion/bash.c). */
 void acbb_cli_print_bash_completion(FILE *f);
 int acbb_cli_unknown_command(const char *name);

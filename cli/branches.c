@@ -7,20 +7,26 @@
 #include "acbb/tools/schedule.h"
 #include "acbb/units.h"
 #include "branches.h"
+#include "wrap.h"
 
 bool acbb_cli_branches_wanted(const acbb_cli_args *a, const acbb_scene *sc)
 {
     return a->val[CLI_OPT_BRANCHES] != NULL || acbb_branches_wanted(sc);
 }
 
+/* One branch within 80 columns (78): its simulated time is the summary's
+ * own for the transient and none for the steady solve (the JSON has it);
+ * a branch that never reached a state (0 steps, all zero) shows "-". */
 static void branch_row(acbb_cli_out *o, const char *name, const acbb_branch_state *b)
 {
-    const double v[] = { b->time_s, b->Qi_N, b->reaction_x_N, b->loss_total_W,
+    const double v[] = { b->Qi_N, b->reaction_x_N, b->loss_total_W,
                          b->T_outer_ring_C, b->T_inner_ring_C, b->T_ball_C };
-    fprintf(o->f, "  %-13s%-14s", name, b->status);
+    bool none = b->iterations == 0 && b->Qi_N == 0.0 && b->loss_total_W == 0.0;
+    fprintf(o->f, "%-10s%-14s", name, b->status);
     for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) {
         if (!isfinite(v[i])) o->nonfinite++;
-        fprintf(o->f, "%9.2f", isfinite(v[i]) ? v[i] : 0.0);
+        if (none) fprintf(o->f, "%9s", "-");
+        else fprintf(o->f, "%9.2f", isfinite(v[i]) ? v[i] : 0.0);
     }
     fputc('\n', o->f);
 }
@@ -28,14 +34,17 @@ static void branch_row(acbb_cli_out *o, const char *name, const acbb_branch_stat
 void acbb_cli_print_branches(acbb_cli_out *o, const acbb_branches *b)
 {
     FILE *f = o->f;
-    fprintf(f, "\n%-13s%s\n", "branches", b->agree
-            ? "the steady solve and the transient reach the same state"
-            : "DIFFERENT: the steady solve and the transient end on different branches");
-    fprintf(f, "%-13s%s\n%-13smax node difference %.3g K, total loss %.3g relative\n",
-            "agree if", b->criterion, "", b->max_dT_K, b->loss_rel);
-    fprintf(f, "  %-13s%-14s%9s%9s%9s%9s%9s%9s%9s\n", "", "status", "time s", "Qi N", "Fx N",
-            "loss W", "T_or C", "T_ir C", "T_ball C");
-    branch_row(o, "steady solve", &b->steady);
+    char line[320];
+    fprintf(f, "\n%-13s", "branches");
+    fputs(b->agree ? "the steady solve and the transient reach the same state"
+                   : "DIFFERENT: steady solve and transient end on different branches", f);
+    snprintf(line, sizeof line, "%s; max node difference %.3g K, total loss %.3g relative",
+             b->criterion, b->max_dT_K, b->loss_rel);
+    fprintf(f, "\n%-13s", "agree if");
+    acbb_cli_wrap(f, line, 13, 13);
+    fprintf(f, "\n%-10s%-14s%9s%9s%9s%9s%9s%9s\n", "", "status", "Qi N", "Fx N", "loss W",
+            "T_or C", "T_ir C", "T_ball C");
+    branch_row(o, "steady", &b->steady);
     branch_row(o, "transient", &b->transient);
 }
 
@@ -54,9 +63,13 @@ void acbb_cli_print_schedule(acbb_cli_out *o, const acbb_scene *sc, const acbb_s
     bool steady = sc->thermal_mode == ACBB_THERMAL_STEADY || !sc->heating;
     if (steady) acbb_schedule_final(sc, &op);
     else acbb_schedule_at(sc, s->time, &op);
-    fprintf(o->f, "%-13srow %d/%d at %.0f rpm, Fx %g N, Fr %g N, %s (last row at t = %g s)\n",
-            "schedule", op.row, op.n_rows, acbb_rads_to_rpm(op.inner_speed), op.axial_load,
-            op.radial_load, steady ? "steady solve at the last row"
-                            : op.finished ? "finished" : "not finished",
-            acbb_schedule_end(sc));
+    char line[256];
+    snprintf(line, sizeof line, "row %d/%d at %.0f rpm, Fx %g N, Fr %g N, %s (last row at "
+             "t = %g s)", op.row, op.n_rows, acbb_rads_to_rpm(op.inner_speed), op.axial_load,
+             op.radial_load, steady ? "steady solve at the last row"
+                             : op.finished ? "finished" : "not finished",
+             acbb_schedule_end(sc));
+    fprintf(o->f, "%-13s", "schedule");
+    acbb_cli_wrap(o->f, line, 13, 13);
+    fputc('\n', o->f);
 }

@@ -13,6 +13,7 @@
 #include "acbb/tools/physics_profile.h"
 #include "acbb/units.h"
 #include "acbb/tools/set.h"
+#include "wrap.h"
 #include "acbb/tools/scene_schema.h"
 #include "output.h"
 
@@ -157,8 +158,11 @@ static void summary_header(acbb_cli_out *o, const char *preset,
             onoff(sc->thermal_expansion), acbb_model_level_name(sc->model));
     fprintf(f, "%-13s%s profile (physics.profile)\n", "physics", acbb_profile_name(sc->profile));
     summary_mounting(f, sc);
-    fprintf(f, "%-13s%s", "status", acbb_run_status_name(s));
-    if (s->message[0]) fprintf(f, ": %.60s", s->message);
+    /* The whole message, wrapped under itself within 80 columns (it was
+     * cut at 60 characters, mid-word). */
+    int col = fprintf(f, "%-13s%s%s", "status", acbb_run_status_name(s),
+                      s->message[0] ? ":" : "");
+    if (s->message[0]) acbb_cli_wrap(f, s->message, col > 0 ? (size_t)col : 0, 13);
     fprintf(f, "\n%-13s%-10ld simulated time ", "iterations", s->iteration);
     put_num(o, 1, 1, 'f', s->time);
     fputs(" s   wall ", f);
@@ -325,18 +329,23 @@ static void summary_set(acbb_cli_out *o, const acbb_snapshot *s)
 {
     const acbb_set_view *v = &s->set;
     if (s->n_bearings < 2) return;
-    fprintf(o->f, "\nset          preload %.1f N (assembly %.1f N), lift-off thrust %.0f N "
-            "(the other side keeps %.1f N there)\n", v->preload_N, v->preload_assembly_N,
-            v->liftoff_thrust_N, v->liftoff_remainder_N);
+    char line[256];
+    snprintf(line, sizeof line, "preload %.1f N (assembly %.1f N), lift-off thrust %.0f N "
+             "(the other side keeps %.1f N there)", v->preload_N, v->preload_assembly_N,
+             v->liftoff_thrust_N, v->liftoff_remainder_N);
+    fprintf(o->f, "\n%-13s", "set");
+    acbb_cli_wrap(o->f, line, 13, 13);
     /* In a spindle the set's own stiffness is not the nose's (the shaft
      * bends; the spindle block gives the nose's): say whose it is. */
-    if (s->state == ACBB_RUN_CONVERGED)
-        fprintf(o->f, "%s axial %.2f N/um, radial %.2f N/um, tilt %.2f N m/mrad %s\n",
-                s->spindle.n_sets ? "set stiff   " : "stiffness   ", v->stiffness_axial * 1e-6,
-                v->stiffness_radial * 1e-6, v->stiffness_tilt * 1e-3,
-                s->spindle.n_sets ? "(set alone)" : "at the nose");
-    else
-        fputs("stiffness    not computed (only at convergence)\n", o->f);
+    if (s->state == ACBB_RUN_CONVERGED) {
+        snprintf(line, sizeof line, "axial %.2f, radial %.2f N/um, tilt %.2f N m/mrad %s",
+                 v->stiffness_axial * 1e-6, v->stiffness_radial * 1e-6,
+                 v->stiffness_tilt * 1e-3, s->spindle.n_sets ? "(set alone)" : "at the nose");
+        fprintf(o->f, "\n%-13s", s->spindle.n_sets ? "set stiff" : "stiffness");
+        acbb_cli_wrap(o->f, line, 13, 13);
+        fputc('\n', o->f);
+    } else
+        fputs("\nstiffness    not computed (only at convergence)\n", o->f);
     fputs("bearing  thrust  axial N  outer C  inner C   loss W\n", o->f);
     for (int k = 0; k < s->n_bearings && k < ACBB_MAX_SET; k++)
         fprintf(o->f, "%7d  %6s %8.1f %8.2f %8.2f %8.2f%s\n", k,
@@ -468,7 +477,11 @@ void acbb_cli_list_metrics(FILE *f)
     for (size_t i = 0; acbb_output_get(i, &e); i++) {
         char path[64];
         acbb_output_path(&e, "i", path, sizeof path);
-        fprintf(f, "%-32s %-9s %s\n", path, e.unit, e.label);
+        /* the label wrapped under its column (43) within 80 columns */
+        int col = fprintf(f, "%-32s %-9s", path, e.unit);
+        if (col < 43) col += fprintf(f, "%*s", 43 - col, "");
+        acbb_cli_wrap(f, e.label, col > 0 ? (size_t)col : 0, 43);
+        fputc('\n', f);
     }
 }
 
@@ -695,8 +708,8 @@ static void study_cells(acbb_cli_out *o, const acbb_cli_point *te,
     /* What heat costs in life (MODEL.md 15): L_nmr(TE) against L_nmr(WTE). */
     double lw = wte->snap.life.Lnmr_h;
     if (te->have_snap && wte->have_snap && lw > 0.0)
-        cell(o, 8, 1, 'f', 100.0 * (te->snap.life.Lnmr_h - lw) / lw);
-    else fprintf(o->f, "%8s", "-");
+        cell(o, 7, 1, 'f', 100.0 * (te->snap.life.Lnmr_h - lw) / lw);
+    else fprintf(o->f, "%7s", "-");
     if (!acbb_cli_point_ok(te) || !acbb_cli_point_ok(wte)) fputs(" *", o->f);
     fputc('\n', o->f);
 }
@@ -725,9 +738,10 @@ void acbb_cli_study_table(acbb_cli_out *o, const acbb_cli_point *pts,
     for (size_t i = 0; i < nb; i++) {
         const acbb_cli_study_block *b = &blocks[i];
         fprintf(f, "\n%s\n", b->title);
-        fprintf(f, "%7s %16s %18s %16s %16s %7s\n", "", "T outer ring C",
+        /* 80 columns: the group labels right-aligned over their pairs */
+        fprintf(f, "%7s%16s%18s%16s%16s%7s\n", "", "T outer ring C",
                 "total loss W", "dP", "Qi ball 0 N", "dL");
-        fprintf(f, "%7s%8s%8s%9s%9s%9s%7s%8s%8s%8s\n", b->x_label, "TE", "WTE",
+        fprintf(f, "%7s%8s%8s%9s%9s%9s%7s%8s%8s%7s\n", b->x_label, "TE", "WTE",
                 "TE", "WTE", "W", "%", "TE", "WTE", "%");
         for (size_t k = b->first; k < b->first + b->count; k++) {
             fprintf(f, "%7s", pts[2 * k].value);

@@ -56,6 +56,17 @@ has "$TMP/run.txt" "all 21 balls" "identical balls collapse to one row"
 awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/run.txt"
 t $? "plain output fits 80 columns"
 
+# Every shipped preset's summary fits 80 columns: sets (the set and
+# stiffness lines), spindles, the branches block of a rigid preload (its
+# table was 92 columns wide, the set lines up to 108).
+wide=""
+for p in "$(dirname "$PRESET")"/*.ini; do
+    "$ACBB" run "$p" >"$TMP/p.txt" 2>/dev/null
+    awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/p.txt" || wide="$wide $(basename "$p")"
+done
+[ -z "$wide" ]
+t $? "every preset's summary fits 80 columns${wide:+ (wider:$wide)}"
+
 # combined load: balls differ, so one row pair per ball; radial equilibrium
 "$ACBB" run "$PRESET" --set operating.radial_load_N=300 >"$TMP/rad.txt" 2>"$TMP/err"
 code $? 0 "combined load (1000 N axial, 300 N radial) exits 0"
@@ -667,9 +678,15 @@ t $? "sweep --csv: losses_W.total $csv_total, the JSONL's double to the last dig
 
 # Progress of the batch commands (issue 28 item 13): study counts its runs,
 # sensitivity's count has an ETA (the first run always draws the line).
-ACBB_PROGRESS=1 "$ACBB" study "$PRESET" >/dev/null 2>"$TMP/err"
+ACBB_PROGRESS=1 "$ACBB" study "$PRESET" >"$TMP/study.txt" 2>"$TMP/err"
 tr '\r' '\n' <"$TMP/err" | grep -q '^study: 48/48 runs, [0-9.]* runs/s$'
 t $? "study PRESET shows its progress (study: N/48 runs)"
+# ... and its tables fit 80 columns (they were 85), as does the fidelity
+# ladder's (84)
+"$ACBB" bench accuracy "$PRESET" --knobs mech_tol --repeat 1 >"$TMP/acc.txt" 2>/dev/null
+grep -q '^mech_tol=1e-8 ' "$TMP/acc.txt" && grep -q 'total loss W' "$TMP/study.txt" &&
+    awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/study.txt" "$TMP/acc.txt"
+t $? "study and bench accuracy tables fit 80 columns"
 ACBB_PROGRESS=1 "$ACBB" sensitivity "$PRESET" --metric losses_W.total \
     --set fidelity.thermal_mode=steady >/dev/null 2>"$TMP/err"
 tr '\r' '\n' <"$TMP/err" | grep -q '^sensitivity: 1/[0-9]* runs, [0-9.]* runs/s, ETA [0-9]* s'

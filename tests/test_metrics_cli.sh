@@ -18,9 +18,13 @@ grep -E -q '^balls\[i\]\.slide_i_mps +m/s ' "$TMP/out"
 t $? "balls[i].slide_i_mps is in m/s"
 grep -E -q '^losses_W\.spin +W +spinning$' "$TMP/out"
 t $? "a loss of the loss table is listed with its label"
-# Every line after the heading: a path, a unit, a label.
+# Every line after the heading: a path, a unit, a label; a label too long
+# for 80 columns goes on under itself (column 44), and no line is wider.
 # (a spindle set's index is a number: spindle.sets[0].preload_N)
-bad=$(tail -n +2 "$TMP/out" | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_][a-zA-Z0-9_]*(\[[01]\])?)+$/ || NF < 3' | wc -l)
+wide=$( (awk 'length > 80' "$TMP/out"; grep '^ ' "$TMP/out" | grep -E -v '^ {43}[^ ]') | wc -l)
+[ "$wide" -eq 0 ] && grep -q -x ' \{43\}radially' "$TMP/out"
+t $? "80 columns: long labels go on under their column ($wide lines wider or misplaced)"
+bad=$(tail -n +2 "$TMP/out" | grep -v '^ ' | awk '$1 !~ /^[a-zA-Z_]+(\[i\])?(\.[a-zA-Z_][a-zA-Z0-9_]*(\[[01]\])?)+$/ || NF < 3' | wc -l)
 rows=$(tail -n +2 "$TMP/out" | wc -l)
 [ "$bad" -eq 0 ] && [ "$rows" -gt 50 ]
 t $? "$rows rows, each a path with a unit and a label ($bad malformed)"

@@ -27,8 +27,9 @@ finite "$TMP/step.json"
 t $? "  every number finite"
 
 "$ACBB" run presets/runaway-rigid-preload.ini >"$TMP/step.txt" 2>/dev/null
-grep -q '^branches     DIFFERENT: the steady solve and the transient end on different branches' \
-    "$TMP/step.txt" && grep -q '^  transient    runaway ' "$TMP/step.txt"
+grep -q '^branches     DIFFERENT: steady solve and transient end on different branches$' \
+    "$TMP/step.txt" && grep -q '^transient runaway  ' "$TMP/step.txt" &&
+    grep -q '^steady    converged  ' "$TMP/step.txt"
 t $? "runaway preset: the table says DIFFERENT, both states listed"
 
 # The staged run-in: one branch, schedule finished.

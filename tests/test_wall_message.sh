@@ -62,6 +62,15 @@ wall "a step, one bearing" 1 \
     "acbb: wall_limit: wall-clock bound fidelity.max_wall_s = 0.5 s reached$STEP_TAIL" \
     -- "$TMP/long.ini" --set fidelity.model=quasi-static --max-wall 0.5
 
+# The run summary's status line carries the whole message, wrapped under
+# itself within 80 columns (it was cut at 60 characters: "...; last g").
+"$ACBB" run "$TMP/long.ini" --set fidelity.model=quasi-static --max-wall 0.5 \
+    >"$TMP/sum" 2>/dev/null
+sed -n '/^status /{N;p}' "$TMP/sum" | tr -s ' \n' ' ' >"$TMP/st"
+grep -q -x -F "status wall_limit: wall-clock bound fidelity.max_wall_s = 0.5 s reached; last good state kept " \
+    "$TMP/st" && [ "$(awk 'length > 80' "$TMP/sum" | wc -l)" -eq 0 ]
+t $? "the run summary's status: the whole message within 80 columns (got: $(cat "$TMP/st"))"
+
 # One form: the status name, then the bound and its key, the same words.
 [ "$(wc -l <"$TMP/heads")" -eq 4 ] && [ "$(sort -u "$TMP/heads" | wc -l)" -eq 1 ] &&
     grep -q -x -F 'acbb: wall_limit: wall-clock bound fidelity.max_wall_s' "$TMP/heads"
