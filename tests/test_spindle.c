@@ -856,8 +856,56 @@ static void test_nose_drift(void)
     acbb_sim_free(sim);
 }
 
+/* The stepper's two checkpoints (stepper.h: the last state, the polish's
+ * best) are each the spindle's own: a floating rear's sleeve slides
+ * while the heated shaft grows, so two states a step apart have their
+ * sleeves at different places; a restore gives back the saved state's
+ * slip, temperatures and nose, whichever slot was saved last (the slip
+ * was one value shared by both: restoring the last state after saving
+ * the best gave the best's slip). The next evaluation's sleeve starts at
+ * the restored state's. */
+static void test_keep_slots(void)
+{
+    static acbb_scene s, r;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return;
+    s.heating = 1;
+    s.spindle_rear_support = ACBB_REAR_FLOATING;
+    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_friction = 40.0;
+    s.radial_load = 0.0;
+    acbb_scene_resolve(&s, &r, NULL);
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+            "slots: spindle builds: %s", err.msg))
+        return;
+    acbb_plant p;
+    acbb_spindle_plant(sp, &p);
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    for (int i = 0; i < 3; i++) acbb_spindle_sim_step(sp);
+    p.save(p.ctx, ACBB_KEEP_LAST);
+    double slip_a = rear->slip, T_a = sp->T[0], u_a = sp->res.nose[0];
+    acbb_spindle_sim_step(sp); /* saves the state before it (A) as the last: B follows */
+    p.save(p.ctx, ACBB_KEEP_BEST);
+    double slip_b = rear->slip, T_b = sp->T[0], u_b = sp->res.nose[0];
+    ok(sp->run.state == ACBB_RUN_RUNNING && slip_a > 0.0 && slip_b != slip_a && T_b != T_a,
+       "slots: the sleeve slides from %.6f to %.6f um between two states", slip_a * 1e6,
+       slip_b * 1e6);
+    p.restore(p.ctx, ACBB_KEEP_LAST);
+    ok(rear->slip == slip_a && rear->slip_rest == slip_a && sp->T[0] == T_a
+       && sp->res.nose[0] == u_a, "slots: the last state restored after the best was saved: "
+       "its slip %.6f um (got %.6f), temperature, nose", slip_a * 1e6, rear->slip * 1e6);
+    p.restore(p.ctx, ACBB_KEEP_BEST);
+    ok(rear->slip == slip_b && rear->slip_rest == slip_b && sp->T[0] == T_b
+       && sp->res.nose[0] == u_b, "slots: the best state restored: its slip %.6f um (got "
+       "%.6f), temperature, nose", slip_b * 1e6, rear->slip * 1e6);
+    acbb_spindle_sim_free(sp);
+}
+
 int main(void)
 {
+    test_keep_slots();
     test_watched_force();
     test_nose_drift();
     test_runaway_names();

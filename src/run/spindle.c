@@ -148,12 +148,17 @@ static void set_plant(acbb_spindle_sim *sp, int k, acbb_plant *p)
     acbb_set_plant(sp->st[k].ss, p);
 }
 
+/* Each slot its own checkpoint (acbb_spindle_keep). The sleeve's rest
+ * position follows the state saved or restored: the next evaluation's
+ * sleeve starts there (spindle_mech.c). */
 static void plant_save(void *ctx, int slot)
 {
     acbb_spindle_sim *sp = ctx;
-    memcpy(sp->T_keep, sp->T, sizeof(double) * (size_t)sp->n);
-    sp->res_keep = sp->res;
-    sp->st[ACBB_REAR].slip_keep = sp->st[ACBB_REAR].slip;
+    acbb_spindle_keep *c = &sp->keep[slot == ACBB_KEEP_BEST];
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    memcpy(c->T, sp->T, sizeof(double) * (size_t)sp->n);
+    c->res = sp->res;
+    c->slip = rear->slip_rest = rear->slip;
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
         set_plant(sp, k, &p);
@@ -164,9 +169,11 @@ static void plant_save(void *ctx, int slot)
 static void plant_restore(void *ctx, int slot)
 {
     acbb_spindle_sim *sp = ctx;
-    memcpy(sp->T, sp->T_keep, sizeof(double) * (size_t)sp->n);
-    sp->res = sp->res_keep;
-    sp->st[ACBB_REAR].slip = sp->st[ACBB_REAR].slip_keep;
+    const acbb_spindle_keep *c = &sp->keep[slot == ACBB_KEEP_BEST];
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    memcpy(sp->T, c->T, sizeof(double) * (size_t)sp->n);
+    sp->res = c->res;
+    rear->slip = rear->slip_rest = c->slip;
     schedule_point(sp, sp->run.time);
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
@@ -298,7 +305,7 @@ static double plant_capacity(void *ctx, int i)
     return acbb_spindle_net_capacity(((acbb_spindle_sim *)ctx)->net, i);
 }
 
-static void plant_of(acbb_spindle_sim *sp, acbb_plant *p)
+void acbb_spindle_plant(acbb_spindle_sim *sp, acbb_plant *p)
 {
     *p = (acbb_plant){
         .ctx = sp, .s = &sp->s, .net = NULL, .T = sp->T, .q = sp->q, .n = sp->n,
@@ -326,7 +333,7 @@ acbb_status acbb_spindle_sim_step(acbb_spindle_sim *sp)
     if (sp->run.state != ACBB_RUN_RUNNING) return sp->run.status;
     double t0 = acbb_now_ms();
     acbb_plant p;
-    plant_of(sp, &p);
+    acbb_spindle_plant(sp, &p);
     acbb_status rc = acbb_stepper_step(&p, &sp->run);
     sp->run.wall_ms += acbb_now_ms() - t0;
     publish(sp);

@@ -274,9 +274,10 @@ acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err)
     acbb_spindle_station *rear = &sp->st[ACBB_REAR];
     /* Every evaluation of a step (or of a steady or isothermal solve's
      * iterations) starts from where the sleeve was at the last state kept
-     * (spindle.c plant_save): an evaluation's ball speeds are those of the
-     * pass before, so a slide decided on them is a trial, not history. */
-    rear->slip = rear->slip_keep;
+     * or restored (spindle.c plant_save, plant_restore): an evaluation's
+     * ball speeds are those of the pass before, so a slide decided on them
+     * is a trial, not history. */
+    rear->slip = rear->slip_rest;
     for (int k = 0; k < 2; k++) axial_mode(sp, &sp->st[k]);
     acbb_error e2 = { "" };
     acbb_status rc = solve_shaft(sp, &e2);
