@@ -324,6 +324,7 @@ static void publish(acbb_spindle_sim *sp)
         sp->st[k].ss->run = sp->run;
         acbb_set_publish(sp->st[k].ss);
     }
+    acbb_spindle_preloads(sp);
     sp->heat_out = sp->s.heating ? heat_to_fixed(sp) : 0.0;
     sp->heat_all = sp->s.heating ? heat_sources(sp) : 0.0;
 }
@@ -484,6 +485,7 @@ void acbb_spindle_sim_free(acbb_spindle_sim *sp)
 {
     if (!sp) return;
     acbb_shaft_beam_free(sp->beam);
+    free(sp->beam_start);
     acbb_spindle_net_free(sp->net); /* before the sets it refers to */
     for (int k = 0; k < 2; k++) acbb_set_sim_free(sp->st[k].ss);
     free(sp);

@@ -60,6 +60,9 @@ struct acbb_spindle_sim {
     acbb_spindle_keep keep[2];    /* by slot */
     acbb_spindle_net *net;        /* the one network: both sets, shaft, housing, motor, coolant */
     acbb_shaft_beam *beam;
+    double *beam_start;           /* the shaft's warm start kept across a probe (owned) */
+    acbb_mech_state probe_ms[2][ACBB_MAX_SET]; /* the members' states kept across a probe */
+    double preload[2];            /* each set's preload as the view reports it, N */
     acbb_shaft_result res;
     double shift;                 /* shaft minus housing axial growth between the sets, m */
     double h_d, h_theta;          /* the supports' difference steps, m and rad */
@@ -85,9 +88,14 @@ void acbb_spindle_plant(acbb_spindle_sim *sp, acbb_plant *p);
  * reaction. */
 acbb_status acbb_spindle_beam_build(acbb_spindle_sim *sp, acbb_error *err);
 acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err);
+/* Each set's axial load (its frame) at zero nose thrust, the shaft solved
+ * again with everything else as it is and then put back. */
+acbb_status acbb_spindle_zero_thrust(acbb_spindle_sim *sp, double Fa[2]);
 /* The loads on each set from the rigid shaft's statics (the first state). */
 void acbb_spindle_initial_loads(const acbb_scene *s, int one_support, double L[2][3]);
-/* Set k's preload as the view reports it (spindle_view.c). */
+/* spindle_view.c: each set's preload (sp->preload; a one-way set's may
+ * probe the shaft at zero nose thrust), then the view from the state. */
+void acbb_spindle_preloads(acbb_spindle_sim *sp);
 void acbb_spindle_view_fill(const acbb_spindle_sim *sp, acbb_spindle_view *v);
 
 #endif

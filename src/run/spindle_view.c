@@ -21,12 +21,35 @@ static int opposed(const acbb_set_mech *sm)
     return plus && minus;
 }
 
-/* An opposed set's own preload (sim_set_probe.c); a single or tandem set
- * is preloaded only by the rear spring, which passes through both sets. */
-static double preload(const acbb_spindle_sim *sp, const acbb_set_sim *ss)
+/* Set k's preload (docs/spindle.md "Results"): the axial force between
+ * its rings with no thrust at the nose. An opposed set's is its own (the
+ * set at zero thrust of its own, sim_set_probe.c), whatever the other set
+ * carries, as a set scene reports it. A one-way set (single, tandem) has
+ * none of its own: the other set (an "O" pair of fixed sets), the rear
+ * spring or the sleeve's friction preloads it through the shaft, and its
+ * preload is the thrust it carries then, along the way its bearings face:
+ * the state's own under no nose thrust, else the shaft solved again
+ * without it (a spring rear's is its spring either way). A failed probe
+ * keeps the last value. */
+void acbb_spindle_preloads(acbb_spindle_sim *sp)
 {
-    if (opposed(&ss->sm)) return ss->preload;
-    return sp->s.spindle_rear_support == ACBB_REAR_SPRING ? sp->s.spindle_rear_spring : 0.0;
+    double Fa[2] = { sp->st[ACBB_FRONT].load[0], sp->st[ACBB_REAR].load[0] };
+    int probe = 0, own[2];
+    for (int k = 0; k < 2; k++) {
+        own[k] = opposed(&sp->st[k].ss->sm);
+        probe |= !own[k] && !(k == ACBB_REAR && sp->s.spindle_rear_support == ACBB_REAR_SPRING);
+    }
+    int steady_iterate = sp->s.thermal_mode == ACBB_THERMAL_STEADY && sp->run.iter > 0
+                         && sp->run.state == ACBB_RUN_RUNNING; /* no state passed through */
+    if (probe && sp->s.axial_load != 0.0
+        && (steady_iterate || acbb_spindle_zero_thrust(sp, Fa) != ACBB_OK))
+        probe = -1;
+    for (int k = 0; k < 2; k++) {
+        const acbb_set_sim *ss = sp->st[k].ss;
+        if (own[k]) sp->preload[k] = ss->preload;
+        else if (probe >= 0 || (k == ACBB_REAR && sp->s.spindle_rear_support == ACBB_REAR_SPRING))
+            sp->preload[k] = ss->sm.orient[0] * Fa[k];
+    }
 }
 
 /* Bearing b's most loaded ball: its contact angles (deg) and load (N). */
@@ -48,7 +71,7 @@ static void set_view(const acbb_spindle_sim *sp, int k, acbb_spindle_set_view *v
     const acbb_set_sim *ss = t->ss;
     v->x = k == ACBB_FRONT ? sp->s.spindle_front_x : sp->s.spindle_rear_x;
     v->n_bearings = ss->n;
-    v->preload_N = acbb_snap_fin(preload(sp, ss));
+    v->preload_N = acbb_snap_fin(sp->preload[k]);
     v->axial_N = acbb_snap_fin(t->load[0]);
     v->radial_N = acbb_snap_fin(t->load[1]);
     v->moment_Nm = acbb_snap_fin(t->load[2]);
