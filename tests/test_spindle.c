@@ -856,6 +856,27 @@ static void test_nose_drift(void)
     acbb_sim_free(sim);
 }
 
+/* The test spindle heated, transient, on a floating single rear with 40 N
+ * of sleeve friction (the heated shaft's growth makes it slide), built
+ * (not yet run); NULL when it does not build. */
+static acbb_spindle_sim *sliding_spindle(const char *what)
+{
+    static acbb_scene s, r;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return NULL;
+    s.heating = 1;
+    s.spindle_rear_support = ACBB_REAR_FLOATING;
+    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_friction = 40.0;
+    s.radial_load = 0.0;
+    acbb_scene_resolve(&s, &r, NULL);
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+       "%s: spindle builds: %s", what, err.msg);
+    return sp;
+}
+
 /* The stepper's two checkpoints (stepper.h: the last state, the polish's
  * best) are each the spindle's own: a floating rear's sleeve slides
  * while the heated shaft grows, so two states a step apart have their
@@ -866,20 +887,8 @@ static void test_nose_drift(void)
  * the restored state's. */
 static void test_keep_slots(void)
 {
-    static acbb_scene s, r;
-    const char *edits[] = { "fidelity.thermal_mode=transient" };
-    if (!spindle_scene(&s, edits, 1)) return;
-    s.heating = 1;
-    s.spindle_rear_support = ACBB_REAR_FLOATING;
-    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
-    s.spindle_rear_friction = 40.0;
-    s.radial_load = 0.0;
-    acbb_scene_resolve(&s, &r, NULL);
-    acbb_error err = { "" };
-    acbb_spindle_sim *sp = NULL;
-    if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
-            "slots: spindle builds: %s", err.msg))
-        return;
+    acbb_spindle_sim *sp = sliding_spindle("slots");
+    if (!sp) return;
     acbb_plant p;
     acbb_spindle_plant(sp, &p);
     acbb_spindle_station *rear = &sp->st[ACBB_REAR];
@@ -986,8 +995,36 @@ static void test_oneway_preload(void)
     }
 }
 
+/* While the floating rear's sleeve goes on sliding the same way (the
+ * heated shaft's growth pushes it through the warm-up), each evaluation
+ * solves the shaft once, sliding from the start (spindle_mech.c
+ * slide_on); it solved it twice, stuck and then sliding (the belt
+ * spindle's warm-up: 2.0 shaft solves an evaluation). The slide still
+ * carries the friction exactly and moves the sleeve on. */
+static void test_slide_on(void)
+{
+    static acbb_snapshot o;
+    acbb_spindle_sim *sp = sliding_spindle("slide on");
+    if (!sp) return;
+    for (int i = 0; i < 3; i++) acbb_spindle_sim_step(sp);
+    long solves = sp->beam_solves, evals = sp->evaluations;
+    double slip = sp->st[ACBB_REAR].slip;
+    for (int i = 0; i < 20; i++) acbb_spindle_sim_step(sp);
+    acbb_spindle_sim_snapshot(sp, &o);
+    solves = sp->beam_solves - solves;
+    evals = sp->evaluations - evals;
+    ok(o.state == ACBB_RUN_RUNNING && evals >= 20 && solves == evals,
+       "slide on: 20 steps, one shaft solve an evaluation (%ld in %ld)", solves, evals);
+    ok(sp->st[ACBB_REAR].slide == 1 && sp->st[ACBB_REAR].slip > slip, "slide on: the sleeve "
+       "slides on rearwards (%.4f to %.4f um)", slip * 1e6, sp->st[ACBB_REAR].slip * 1e6);
+    is_close(o.spindle.sets[1].axial_N, 40.0, 1e-12, 0.0, "slide on: the rear carries the "
+             "friction, N");
+    acbb_spindle_sim_free(sp);
+}
+
 int main(void)
 {
+    test_slide_on();
     test_oneway_preload();
     test_keep_slots();
     test_watched_force();

@@ -83,6 +83,7 @@ static void landing(acbb_spindle_sim *sp)
 
 static acbb_status evaluate(acbb_spindle_sim *sp, int transient, int polishing, acbb_error *err)
 {
+    sp->evaluations++;
     distribute(sp);
     growth(sp);
     for (int k = 0; k < 2; k++) acbb_set_prepare(sp->st[k].ss, transient, polishing);
@@ -159,6 +160,7 @@ static void plant_save(void *ctx, int slot)
     memcpy(c->T, sp->T, sizeof(double) * (size_t)sp->n);
     c->res = sp->res;
     c->slip = rear->slip_rest = rear->slip;
+    c->slide = rear->slide_rest = rear->slide;
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
         set_plant(sp, k, &p);
@@ -174,6 +176,7 @@ static void plant_restore(void *ctx, int slot)
     memcpy(sp->T, c->T, sizeof(double) * (size_t)sp->n);
     sp->res = c->res;
     rear->slip = rear->slip_rest = c->slip;
+    rear->slide = rear->slide_rest = c->slide;
     schedule_point(sp, sp->run.time);
     for (int k = 0; k < 2; k++) {
         acbb_plant p;

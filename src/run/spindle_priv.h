@@ -37,6 +37,8 @@ struct acbb_spindle_station {
                                      (+x, m), in the last evaluation */
     double slip_rest;             /* the same in the state last kept or restored: where
                                      every evaluation's sleeve starts */
+    int slide, slide_rest;        /* floating: the way it slides (the sign of the thrust
+                                     it carries; 0 stuck), now and in that state */
     double load[3];               /* the last evaluation's loads on the set (its frame) */
     double K[9];                  /* the support's last tangent -df/dd (u, w, theta rows) */
     double landing;               /* the set's own solve minus the shaft's station: m, m, rad (max) */
@@ -49,6 +51,7 @@ typedef struct {
     double T[ACBB_SPINDLE_NMAX];
     acbb_shaft_result res;
     double slip;
+    int slide;
 } acbb_spindle_keep;
 
 struct acbb_spindle_sim {
@@ -66,7 +69,7 @@ struct acbb_spindle_sim {
     acbb_shaft_result res;
     double shift;                 /* shaft minus housing axial growth between the sets, m */
     double h_d, h_theta;          /* the supports' difference steps, m and rad */
-    long beam_solves;
+    long beam_solves, evaluations;
     long probe_solves;            /* the supports' member solves */
     acbb_stepper run;
     const atomic_int *cancel;

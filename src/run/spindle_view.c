@@ -21,34 +21,33 @@ static int opposed(const acbb_set_mech *sm)
     return plus && minus;
 }
 
-/* Set k's preload (docs/spindle.md "Results"): the axial force between
+/* Set k's preload (docs/spindle.md "Preload"): the axial force between
  * its rings with no thrust at the nose. An opposed set's is its own (the
  * set at zero thrust of its own, sim_set_probe.c), whatever the other set
  * carries, as a set scene reports it. A one-way set (single, tandem) has
  * none of its own: the other set (an "O" pair of fixed sets), the rear
  * spring or the sleeve's friction preloads it through the shaft, and its
- * preload is the thrust it carries then, along the way its bearings face:
- * the state's own under no nose thrust, else the shaft solved again
- * without it (a spring rear's is its spring either way). A failed probe
- * keeps the last value. */
+ * preload is the thrust it carries then, along the way its bearings face.
+ * A spring rear carries its spring and a floating one what its sleeve
+ * holds whatever the nose thrust (the located front set takes that): the
+ * thrust they carry now. With a fixed rear both sets share the nose
+ * thrust: under one the shaft is solved again without it (a steady
+ * solve's iterates wait for the converged state, as a set's own preload
+ * does; a failed probe keeps the last value). */
 void acbb_spindle_preloads(acbb_spindle_sim *sp)
 {
     double Fa[2] = { sp->st[ACBB_FRONT].load[0], sp->st[ACBB_REAR].load[0] };
-    int probe = 0, own[2];
-    for (int k = 0; k < 2; k++) {
-        own[k] = opposed(&sp->st[k].ss->sm);
-        probe |= !own[k] && !(k == ACBB_REAR && sp->s.spindle_rear_support == ACBB_REAR_SPRING);
-    }
+    int own[2], probe = 0;
+    for (int k = 0; k < 2; k++) own[k] = opposed(&sp->st[k].ss->sm);
+    int shared = sp->s.spindle_rear_support == ACBB_REAR_FIXED && (!own[0] || !own[1])
+                 && sp->s.axial_load != 0.0;
     int steady_iterate = sp->s.thermal_mode == ACBB_THERMAL_STEADY && sp->run.iter > 0
                          && sp->run.state == ACBB_RUN_RUNNING; /* no state passed through */
-    if (probe && sp->s.axial_load != 0.0
-        && (steady_iterate || acbb_spindle_zero_thrust(sp, Fa) != ACBB_OK))
-        probe = -1;
+    if (shared) probe = !steady_iterate && acbb_spindle_zero_thrust(sp, Fa) == ACBB_OK ? 1 : -1;
     for (int k = 0; k < 2; k++) {
         const acbb_set_sim *ss = sp->st[k].ss;
         if (own[k]) sp->preload[k] = ss->preload;
-        else if (probe >= 0 || (k == ACBB_REAR && sp->s.spindle_rear_support == ACBB_REAR_SPRING))
-            sp->preload[k] = ss->sm.orient[0] * Fa[k];
+        else if (probe >= 0) sp->preload[k] = ss->sm.orient[0] * Fa[k];
     }
 }
 
