@@ -73,7 +73,8 @@ static void check_inputs(const char *preset, const expect *e, size_t n_e)
  * that has the part they describe (was: none of them, they had no range);
  * not on a scene without a spindle (the 7008C's inputs stay as they were),
  * nor the motor's on a belt spindle or the coolant's without a flow (the
- * rules would refuse those runs). Then the motor spindle's nose drift
+ * rules would refuse those runs), nor on a spindle the bearing's housing
+ * film and shaft bore coolant, which the spindle's own replace. Then the motor spindle's nose drift
  * through the sensitivity's own evaluation (acbb_sens_eval, the steady
  * solve) at both ends of two of them, a narrowed list that keeps the test
  * fast: each moves it. */
@@ -85,7 +86,8 @@ static void test_sensitivity(void)
         { "motor.stator_loss_W", 1 }, { "motor.gap_conductance_W_K", 1 },
         { "spindle.rear_spring_N", 1 }, { "housing.outer_film_W_m2K", 1 },
         { "shaft.end_film_W_m2K", 1 }, { "spindle.rear_friction_N", 0 },
-        { "mounting.h_fit_inner_W_m2K", 1 } };
+        { "mounting.h_fit_inner_W_m2K", 1 }, { "mounting.h_natural_W_m2K", 0 },
+        { "surroundings.shaft_bore", 0 }, { "surroundings.shaft_bore_h_W_m2K", 0 } };
     static const expect belt[] = {
         { "spindle.rear_friction_N", 1 }, { "housing.outer_film_W_m2K", 1 },
         { "shaft.end_film_W_m2K", 1 }, { "spindle.jacket_hA_W_K", 0 },
@@ -95,7 +97,8 @@ static void test_sensitivity(void)
         { "spindle.jacket_hA_W_K", 0 }, { "spindle.rear_friction_N", 0 },
         { "spindle.rear_spring_N", 0 }, { "housing.outer_film_W_m2K", 0 },
         { "shaft.end_film_W_m2K", 0 }, { "motor.rotor_loss_W", 0 },
-        { "mounting.h_fit_inner_W_m2K", 1 } };
+        { "mounting.h_fit_inner_W_m2K", 1 }, { "mounting.h_natural_W_m2K", 1 },
+        { "surroundings.shaft_bore", 1 } };
     check_inputs(MOTOR, motor, sizeof motor / sizeof motor[0]);
     check_inputs(BELT, belt, sizeof belt / sizeof belt[0]);
     check_inputs("presets/7008C.ini", bearing, sizeof bearing / sizeof bearing[0]);

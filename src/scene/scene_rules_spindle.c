@@ -502,10 +502,21 @@ static bool part_missing(const acbb_scene *s, const acbb_field_info *f)
     return false;
 }
 
+/* A bearing key a spindle replaces: the bearing's films to the ambient
+ * and its shaft bore's coolant go, the spindle's housing and shaft have
+ * their own (docs/spindle.md "Joining the bearings' networks"). */
+static bool replaced(const acbb_scene *s, const acbb_field_info *f)
+{
+    return s->shaft_segments > 0 && (is(f, "mounting", "h_natural_W_m2K")
+                                     || (is(f, "surroundings", NULL)
+                                         && strncmp(f->key, "shaft_bore", 10) == 0));
+}
+
 bool acbb_scene_field_unused(const acbb_scene *s, size_t i)
 {
     if (i >= acbb_sf_n) return false;
     const acbb_field_info *f = &acbb_sf_table[i].info;
+    if (replaced(s, f)) return true;
     if (!is(f, "shaft", NULL) && !is(f, "housing", NULL) && !is(f, "motor", NULL)
         && !is(f, "spindle", NULL))
         return false;
