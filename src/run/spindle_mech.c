@@ -279,11 +279,11 @@ static acbb_status solve_shaft(acbb_spindle_sim *sp, acbb_error *err)
  * shaft solve instead of two (the stuck one, then the slide; the belt
  * spindle's warm-up slides nearly throughout: 2.0 shaft solves an
  * evaluation, BENCHMARKS.md "Spindle"). The slide stands when the sleeve
- * moved on the way its thrust pushes it: the thrust a set carries falls
- * as its outer rings slide along +x (its inner rings' approach shrinks),
- * so a slide at +friction past where it rested means the set held there
- * would have needed more than the friction, the test `slides` makes
- * (likewise at -friction). Else, or when that solve fails, the
+ * moved on the way its thrust pushes it: the thrust (along +x) a held set
+ * carries falls as its outer rings slide along +x (the set's axial
+ * stiffness is positive), so a slide at +friction to past where it rested
+ * means the set held there would have needed more than the friction, the
+ * test `slides` makes (likewise at -friction). Else, or when that solve fails, the
  * evaluation decides from the stuck set. 1: it slides, solved. */
 static int slide_on(acbb_spindle_sim *sp, acbb_spindle_station *t, acbb_error *err)
 {
