@@ -856,8 +856,177 @@ static void test_nose_drift(void)
     acbb_sim_free(sim);
 }
 
+/* The test spindle heated, transient, on a floating single rear with 40 N
+ * of sleeve friction (the heated shaft's growth makes it slide), built
+ * (not yet run); NULL when it does not build. */
+static acbb_spindle_sim *sliding_spindle(const char *what)
+{
+    static acbb_scene s, r;
+    const char *edits[] = { "fidelity.thermal_mode=transient" };
+    if (!spindle_scene(&s, edits, 1)) return NULL;
+    s.heating = 1;
+    s.spindle_rear_support = ACBB_REAR_FLOATING;
+    s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+    s.spindle_rear_friction = 40.0;
+    s.radial_load = 0.0;
+    acbb_scene_resolve(&s, &r, NULL);
+    acbb_error err = { "" };
+    acbb_spindle_sim *sp = NULL;
+    ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+       "%s: spindle builds: %s", what, err.msg);
+    return sp;
+}
+
+/* The stepper's two checkpoints (stepper.h: the last state, the polish's
+ * best) are each the spindle's own: a floating rear's sleeve slides
+ * while the heated shaft grows, so two states a step apart have their
+ * sleeves at different places; a restore gives back the saved state's
+ * slip, temperatures and nose, whichever slot was saved last (the slip
+ * was one value shared by both: restoring the last state after saving
+ * the best gave the best's slip). The next evaluation's sleeve starts at
+ * the restored state's. */
+static void test_keep_slots(void)
+{
+    acbb_spindle_sim *sp = sliding_spindle("slots");
+    if (!sp) return;
+    acbb_plant p;
+    acbb_spindle_plant(sp, &p);
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    for (int i = 0; i < 3; i++) acbb_spindle_sim_step(sp);
+    p.save(p.ctx, ACBB_KEEP_LAST);
+    double slip_a = rear->slip, T_a = sp->T[0], u_a = sp->res.nose[0];
+    acbb_spindle_sim_step(sp); /* saves the state before it (A) as the last: B follows */
+    p.save(p.ctx, ACBB_KEEP_BEST);
+    double slip_b = rear->slip, T_b = sp->T[0], u_b = sp->res.nose[0];
+    ok(sp->run.state == ACBB_RUN_RUNNING && slip_a > 0.0 && slip_b != slip_a && T_b != T_a,
+       "slots: the sleeve slides from %.6f to %.6f um between two states", slip_a * 1e6,
+       slip_b * 1e6);
+    p.restore(p.ctx, ACBB_KEEP_LAST);
+    ok(rear->slip == slip_a && rear->slip_rest == slip_a && sp->T[0] == T_a
+       && sp->res.nose[0] == u_a, "slots: the last state restored after the best was saved: "
+       "its slip %.6f um (got %.6f), temperature, nose", slip_a * 1e6, rear->slip * 1e6);
+    p.restore(p.ctx, ACBB_KEEP_BEST);
+    ok(rear->slip == slip_b && rear->slip_rest == slip_b && sp->T[0] == T_b
+       && sp->res.nose[0] == u_b, "slots: the best state restored: its slip %.6f um (got "
+       "%.6f), temperature, nose", slip_b * 1e6, rear->slip * 1e6);
+    acbb_spindle_sim_free(sp);
+}
+
+/* A one-way set's preload (spindle_view.c): an "O" pair of single
+ * bearings (front "+", the fixed rear turned round and set in at
+ * assembly by the approach e_r its bearing takes under rear_preload_N =
+ * 100 N at rest). On a practically rigid shaft the two bearings are
+ * springs in series across the set-in: each approaches by e_r / 2 and
+ * carries the same thrust P. Hand calculations: (1) P is the thrust under
+ * which the bearing alone, at the same speed, approaches by e_r / 2;
+ * (2) at rest (10 rpm) Hertz's approach ~ P^(2/3) at a fixed contact
+ * angle gives P = 100 / 2^1.5 = 35.36 N (to 5 %: the contact angle grows
+ * with the load, 33.86 N here). Each set reports P as its preload_N (was
+ * 0); under no nose thrust it is the state's thrust, under 300 N the
+ * shaft probed at zero nose thrust gives the zero-thrust run's P, and the
+ * probe puts the state back. At the quasi-static level (ball speeds by
+ * race control) the probe and the run agree to the solvers' tolerance;
+ * at the quasi-dynamic level the probe keeps the state's ball speeds, as
+ * a set's own preload does. */
+static void test_oneway_preload(void)
+{
+    static acbb_scene s, r, alone;
+    static acbb_snapshot o, a;
+    const char *edits[] = { "fidelity.model=quasi-static" };
+    const double rpm[3] = { 10.0, 8000.0, 8000.0 }, thrust[3] = { 0.0, 0.0, 300.0 };
+    double P0 = 0.0;
+    for (int i = 0; i < 3; i++) {
+        if (!spindle_scene(&s, edits, 1)) return;
+        s.set_arrangement = s.spindle_rear_arrangement = ACBB_SET_SINGLE;
+        s.spindle_rear_preload = 100.0;
+        s.inner_speed = rpm[i] * M_PI / 30.0;
+        s.axial_load = thrust[i];
+        s.radial_load = 0.0;
+        acbb_scene_resolve(&s, &r, NULL);
+        acbb_error err = { "" };
+        acbb_spindle_sim *sp = NULL;
+        char what[80];
+        snprintf(what, sizeof what, "one-way preload, %g rpm, %g N thrust", rpm[i], thrust[i]);
+        if (!ok(acbb_spindle_sim_new(&r, &(acbb_sim_opts){ 0 }, 0, &sp, &err) == ACBB_OK,
+                "%s: spindle builds: %s", what, err.msg))
+            return;
+        acbb_shaft_beam_free(sp->beam); /* practically rigid (test (a)'s) */
+        sp->beam = NULL;
+        acbb_scene keep = sp->s;
+        sp->s.shaft.E = 1e13;
+        for (int g = 0; g < sp->s.shaft_segments; g++) sp->s.shaft_seg[g].od = 0.4;
+        ok(acbb_spindle_beam_build(sp, &err) == ACBB_OK, "%s: rigid shaft: %s", what, err.msg);
+        sp->s = keep;
+        ok(run_spindle(sp, &o), "%s: converged: %s", what, o.message);
+        const acbb_spindle_set_view *v = o.spindle.sets;
+        double P = v[0].preload_N, e_r = sp->st[ACBB_REAR].ss->sm.e[0];
+        if (i < 2) {
+            P0 = P;
+            ok(P > 0.0 && P == v[0].axial_N && v[1].preload_N == -v[1].axial_N,
+               "%s: each set's preload is its thrust (%.4f N, %.4f N)", what, P,
+               v[1].preload_N);
+            is_close(v[1].preload_N, P, 1e-8, 0.0, "front and rear carry the same (to the "
+                     "members' mech_tol), N");
+            alone = s;
+            alone.shaft_segments = alone.housing_segments = 0;
+            alone.axial_load = P;
+            alone.preload = ACBB_PRELOAD_FORCE; /* a thrust, not a held position */
+            acbb_sim *sim = NULL;
+            if (ok(acbb_sim_create(&alone, &(acbb_sim_opts){ 0 }, &sim, &err) == ACBB_OK
+                   && run_sim(sim, &a), "%s: the bearing alone under %.4f N: %s", what, P,
+                   a.message))
+                is_close(2.0 * sim->ms.dx * 1e6, e_r * 1e6, 1e-5, 0.0, "two bearings in "
+                         "series across the set-in: 2 x the lone bearing's approach under "
+                         "P = e_r, um");
+            acbb_sim_free(sim);
+            if (i == 0)
+                is_close(P, 100.0 / pow(2.0, 1.5), 0.05, 0.0, "at rest: Hertz in series, "
+                         "100 / 2^1.5 N");
+        } else {
+            double d0 = sp->st[0].ss->b[0]->ms.dx, u0 = o.spindle.nose_u, Fa[2];
+            ok(v[0].axial_N > P0 + 50.0, "%s: the front carries %.2f N", what, v[0].axial_N);
+            is_close(P, P0, 1e-6, 0.0, "under thrust: the front's preload is the zero-thrust "
+                     "one, N");
+            is_close(v[1].preload_N, P0, 1e-6, 0.0, "under thrust: the rear's, N");
+            ok(acbb_spindle_zero_thrust(sp, Fa) == ACBB_OK && sp->st[0].ss->b[0]->ms.dx == d0
+               && sp->res.nose[0] == u0, "%s: the probe puts the state back", what);
+        }
+        acbb_spindle_sim_free(sp);
+    }
+}
+
+/* While the floating rear's sleeve goes on sliding the same way (the
+ * heated shaft's growth pushes it through the warm-up), each evaluation
+ * solves the shaft once, sliding from the start (spindle_mech.c
+ * slide_on); it solved it twice, stuck and then sliding (the belt
+ * spindle's warm-up: 2.0 shaft solves an evaluation). The slide still
+ * carries the friction exactly and moves the sleeve on. */
+static void test_slide_on(void)
+{
+    static acbb_snapshot o;
+    acbb_spindle_sim *sp = sliding_spindle("slide on");
+    if (!sp) return;
+    for (int i = 0; i < 3; i++) acbb_spindle_sim_step(sp);
+    long solves = sp->beam_solves, evals = sp->evaluations;
+    double slip = sp->st[ACBB_REAR].slip;
+    for (int i = 0; i < 20; i++) acbb_spindle_sim_step(sp);
+    acbb_spindle_sim_snapshot(sp, &o);
+    solves = sp->beam_solves - solves;
+    evals = sp->evaluations - evals;
+    ok(o.state == ACBB_RUN_RUNNING && evals >= 20 && solves == evals,
+       "slide on: 20 steps, one shaft solve an evaluation (%ld in %ld)", solves, evals);
+    ok(sp->st[ACBB_REAR].slide == 1 && sp->st[ACBB_REAR].slip > slip, "slide on: the sleeve "
+       "slides on rearwards (%.4f to %.4f um)", slip * 1e6, sp->st[ACBB_REAR].slip * 1e6);
+    is_close(o.spindle.sets[1].axial_N, 40.0, 1e-12, 0.0, "slide on: the rear carries the "
+             "friction, N");
+    acbb_spindle_sim_free(sp);
+}
+
 int main(void)
 {
+    test_slide_on();
+    test_oneway_preload();
+    test_keep_slots();
     test_watched_force();
     test_nose_drift();
     test_runaway_names();

@@ -18,6 +18,7 @@ size_t acbb_sens_inputs(const acbb_scene *s, acbb_sens_input *out, size_t cap)
     for (size_t i = 0; i < n && k < cap; i++) {
         const acbb_field_info *f = acbb_scene_field(i);
         if (!f->plaus_src || (f->type != ACBB_FIELD_REAL && f->type != ACBB_FIELD_ENUM)) continue;
+        if (acbb_scene_field_unused(s, i)) continue; /* a spindle key with no spindle, ... */
         acbb_sens_input *in = &out[k++];
         in->field = i;
         in->src = f->plaus_src;

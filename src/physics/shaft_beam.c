@@ -381,6 +381,13 @@ void acbb_shaft_beam_set_floor(acbb_shaft_beam *b, double floor)
 
 int acbb_shaft_beam_nodes(const acbb_shaft_beam *b) { return b ? b->n_nodes : 0; }
 
+void acbb_shaft_beam_start(acbb_shaft_beam *b, double *d, int put)
+{
+    size_t n = (size_t)b->n_dof * sizeof *b->d;
+    if (put) memcpy(b->d, d, n);
+    else memcpy(d, b->d, n);
+}
+
 acbb_status acbb_shaft_beam_node(const acbb_shaft_beam *b, int i, double *x, double d[3])
 {
     if (!b || i < 0 || i >= b->n_nodes) return ACBB_EINVAL;

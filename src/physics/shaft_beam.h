@@ -83,6 +83,10 @@ void acbb_shaft_beam_set_tol(acbb_shaft_beam *b, double tol);
 void acbb_shaft_beam_set_floor(acbb_shaft_beam *b, double floor);
 
 int acbb_shaft_beam_nodes(const acbb_shaft_beam *b);
+/* The displacements the next solve starts from (3 per node), copied out
+ * (put 0) or in (put 1): a probe's solve under other loads gives the
+ * run's warm start back afterwards (spindle_mech.c). */
+void acbb_shaft_beam_start(acbb_shaft_beam *b, double *d, int put);
 /* Position (m) and displacement (u, w, theta) of node i after a solve. */
 acbb_status acbb_shaft_beam_node(const acbb_shaft_beam *b, int i, double *x, double d[3]);
 

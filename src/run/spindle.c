@@ -83,6 +83,7 @@ static void landing(acbb_spindle_sim *sp)
 
 static acbb_status evaluate(acbb_spindle_sim *sp, int transient, int polishing, acbb_error *err)
 {
+    sp->evaluations++;
     distribute(sp);
     growth(sp);
     for (int k = 0; k < 2; k++) acbb_set_prepare(sp->st[k].ss, transient, polishing);
@@ -148,12 +149,18 @@ static void set_plant(acbb_spindle_sim *sp, int k, acbb_plant *p)
     acbb_set_plant(sp->st[k].ss, p);
 }
 
+/* Each slot its own checkpoint (acbb_spindle_keep). The sleeve's rest
+ * position follows the state saved or restored: the next evaluation's
+ * sleeve starts there (spindle_mech.c). */
 static void plant_save(void *ctx, int slot)
 {
     acbb_spindle_sim *sp = ctx;
-    memcpy(sp->T_keep, sp->T, sizeof(double) * (size_t)sp->n);
-    sp->res_keep = sp->res;
-    sp->st[ACBB_REAR].slip_keep = sp->st[ACBB_REAR].slip;
+    acbb_spindle_keep *c = &sp->keep[slot == ACBB_KEEP_BEST];
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    memcpy(c->T, sp->T, sizeof(double) * (size_t)sp->n);
+    c->res = sp->res;
+    c->slip = rear->slip_rest = rear->slip;
+    c->slide = rear->slide_rest = rear->slide;
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
         set_plant(sp, k, &p);
@@ -164,9 +171,12 @@ static void plant_save(void *ctx, int slot)
 static void plant_restore(void *ctx, int slot)
 {
     acbb_spindle_sim *sp = ctx;
-    memcpy(sp->T, sp->T_keep, sizeof(double) * (size_t)sp->n);
-    sp->res = sp->res_keep;
-    sp->st[ACBB_REAR].slip = sp->st[ACBB_REAR].slip_keep;
+    const acbb_spindle_keep *c = &sp->keep[slot == ACBB_KEEP_BEST];
+    acbb_spindle_station *rear = &sp->st[ACBB_REAR];
+    memcpy(sp->T, c->T, sizeof(double) * (size_t)sp->n);
+    sp->res = c->res;
+    rear->slip = rear->slip_rest = c->slip;
+    rear->slide = rear->slide_rest = c->slide;
     schedule_point(sp, sp->run.time);
     for (int k = 0; k < 2; k++) {
         acbb_plant p;
@@ -298,7 +308,7 @@ static double plant_capacity(void *ctx, int i)
     return acbb_spindle_net_capacity(((acbb_spindle_sim *)ctx)->net, i);
 }
 
-static void plant_of(acbb_spindle_sim *sp, acbb_plant *p)
+void acbb_spindle_plant(acbb_spindle_sim *sp, acbb_plant *p)
 {
     *p = (acbb_plant){
         .ctx = sp, .s = &sp->s, .net = NULL, .T = sp->T, .q = sp->q, .n = sp->n,
@@ -317,6 +327,7 @@ static void publish(acbb_spindle_sim *sp)
         sp->st[k].ss->run = sp->run;
         acbb_set_publish(sp->st[k].ss);
     }
+    acbb_spindle_preloads(sp);
     sp->heat_out = sp->s.heating ? heat_to_fixed(sp) : 0.0;
     sp->heat_all = sp->s.heating ? heat_sources(sp) : 0.0;
 }
@@ -326,7 +337,7 @@ acbb_status acbb_spindle_sim_step(acbb_spindle_sim *sp)
     if (sp->run.state != ACBB_RUN_RUNNING) return sp->run.status;
     double t0 = acbb_now_ms();
     acbb_plant p;
-    plant_of(sp, &p);
+    acbb_spindle_plant(sp, &p);
     acbb_status rc = acbb_stepper_step(&p, &sp->run);
     sp->run.wall_ms += acbb_now_ms() - t0;
     publish(sp);
@@ -477,6 +488,7 @@ void acbb_spindle_sim_free(acbb_spindle_sim *sp)
 {
     if (!sp) return;
     acbb_shaft_beam_free(sp->beam);
+    free(sp->beam_start);
     acbb_spindle_net_free(sp->net); /* before the sets it refers to */
     for (int k = 0; k < 2; k++) acbb_set_sim_free(sp->st[k].ss);
     free(sp);

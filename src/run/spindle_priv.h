@@ -33,25 +33,43 @@ struct acbb_spindle_station {
     double Fa_given;              /* else the axial load the set carries, N */
     acbb_set_mech w;              /* the support's copy of the set's mechanics */
     double d[3];                  /* the station's displacement of the last reaction */
-    double slip, slip_keep;       /* floating: how far its outer rings slid in the sleeve
-                                     (+x, m), and at the last accepted state */
+    double slip;                  /* floating: how far its outer rings slid in the sleeve
+                                     (+x, m), in the last evaluation */
+    double slip_rest;             /* the same in the state last kept or restored: where
+                                     every evaluation's sleeve starts */
+    int slide, slide_rest;        /* floating: the way it slides (the sign of the thrust
+                                     it carries; 0 stuck), now and in that state */
     double load[3];               /* the last evaluation's loads on the set (its frame) */
     double K[9];                  /* the support's last tangent -df/dd (u, w, theta rows) */
     double landing;               /* the set's own solve minus the shaft's station: m, m, rad (max) */
 };
+
+/* One of the stepper's checkpoints (stepper.h: ACBB_KEEP_LAST, ACBB_KEEP_BEST),
+ * each its own: the network's temperatures, the shaft's solution and the
+ * rear sleeve's slip of the state saved there. */
+typedef struct {
+    double T[ACBB_SPINDLE_NMAX];
+    acbb_shaft_result res;
+    double slip;
+    int slide;
+} acbb_spindle_keep;
 
 struct acbb_spindle_sim {
     acbb_scene s;                 /* resolved, at the run's operating point */
     int one_support;
     acbb_spindle_station st[2];
     int off[2], n;                /* set k's nodes start at off[k] of T */
-    double T[ACBB_SPINDLE_NMAX], q[ACBB_SPINDLE_NMAX], T_keep[ACBB_SPINDLE_NMAX];
+    double T[ACBB_SPINDLE_NMAX], q[ACBB_SPINDLE_NMAX];
+    acbb_spindle_keep keep[2];    /* by slot */
     acbb_spindle_net *net;        /* the one network: both sets, shaft, housing, motor, coolant */
     acbb_shaft_beam *beam;
-    acbb_shaft_result res, res_keep;
+    double *beam_start;           /* the shaft's warm start kept across a probe (owned) */
+    acbb_mech_state probe_ms[2][ACBB_MAX_SET]; /* the members' states kept across a probe */
+    double preload[2];            /* each set's preload as the view reports it, N */
+    acbb_shaft_result res;
     double shift;                 /* shaft minus housing axial growth between the sets, m */
     double h_d, h_theta;          /* the supports' difference steps, m and rad */
-    long beam_solves;
+    long beam_solves, evaluations;
     long probe_solves;            /* the supports' member solves */
     acbb_stepper run;
     const atomic_int *cancel;
@@ -63,15 +81,24 @@ struct acbb_spindle_sim {
                                      (ambient, the first loads), m */
 };
 
+/* The spindle as the stepper's plant (spindle.c; tests call its save and
+ * restore). */
+void acbb_spindle_plant(acbb_spindle_sim *sp, acbb_plant *p);
+
 /* spindle_mech.c: the shaft built from the scene (its supports the two
  * stations); the shaft solved with the sets as supports at the members'
  * current expansions, then each set's loads set to its station's
  * reaction. */
 acbb_status acbb_spindle_beam_build(acbb_spindle_sim *sp, acbb_error *err);
 acbb_status acbb_spindle_mechanics(acbb_spindle_sim *sp, acbb_error *err);
+/* Each set's axial load (its frame) at zero nose thrust, the shaft solved
+ * again with everything else as it is and then put back. */
+acbb_status acbb_spindle_zero_thrust(acbb_spindle_sim *sp, double Fa[2]);
 /* The loads on each set from the rigid shaft's statics (the first state). */
 void acbb_spindle_initial_loads(const acbb_scene *s, int one_support, double L[2][3]);
-/* Set k's preload as the view reports it (spindle_view.c). */
+/* spindle_view.c: each set's preload (sp->preload; a one-way set's may
+ * probe the shaft at zero nose thrust), then the view from the state. */
+void acbb_spindle_preloads(acbb_spindle_sim *sp);
 void acbb_spindle_view_fill(const acbb_spindle_sim *sp, acbb_spindle_view *v);
 
 #endif

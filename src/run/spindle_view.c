@@ -21,12 +21,34 @@ static int opposed(const acbb_set_mech *sm)
     return plus && minus;
 }
 
-/* An opposed set's own preload (sim_set_probe.c); a single or tandem set
- * is preloaded only by the rear spring, which passes through both sets. */
-static double preload(const acbb_spindle_sim *sp, const acbb_set_sim *ss)
+/* Set k's preload (docs/spindle.md "Preload"): the axial force between
+ * its rings with no thrust at the nose. An opposed set's is its own (the
+ * set at zero thrust of its own, sim_set_probe.c), whatever the other set
+ * carries, as a set scene reports it. A one-way set (single, tandem) has
+ * none of its own: the other set (an "O" pair of fixed sets), the rear
+ * spring or the sleeve's friction preloads it through the shaft, and its
+ * preload is the thrust it carries then, along the way its bearings face.
+ * A spring rear carries its spring and a floating one what its sleeve
+ * holds whatever the nose thrust (the located front set takes that): the
+ * thrust they carry now. With a fixed rear both sets share the nose
+ * thrust: under one the shaft is solved again without it (a steady
+ * solve's iterates wait for the converged state, as a set's own preload
+ * does; a failed probe keeps the last value). */
+void acbb_spindle_preloads(acbb_spindle_sim *sp)
 {
-    if (opposed(&ss->sm)) return ss->preload;
-    return sp->s.spindle_rear_support == ACBB_REAR_SPRING ? sp->s.spindle_rear_spring : 0.0;
+    double Fa[2] = { sp->st[ACBB_FRONT].load[0], sp->st[ACBB_REAR].load[0] };
+    int own[2], probe = 0;
+    for (int k = 0; k < 2; k++) own[k] = opposed(&sp->st[k].ss->sm);
+    int shared = sp->s.spindle_rear_support == ACBB_REAR_FIXED && (!own[0] || !own[1])
+                 && sp->s.axial_load != 0.0;
+    int steady_iterate = sp->s.thermal_mode == ACBB_THERMAL_STEADY && sp->run.iter > 0
+                         && sp->run.state == ACBB_RUN_RUNNING; /* no state passed through */
+    if (shared) probe = !steady_iterate && acbb_spindle_zero_thrust(sp, Fa) == ACBB_OK ? 1 : -1;
+    for (int k = 0; k < 2; k++) {
+        const acbb_set_sim *ss = sp->st[k].ss;
+        if (own[k]) sp->preload[k] = ss->preload;
+        else if (probe >= 0) sp->preload[k] = ss->sm.orient[0] * Fa[k];
+    }
 }
 
 /* Bearing b's most loaded ball: its contact angles (deg) and load (N). */
@@ -48,7 +70,7 @@ static void set_view(const acbb_spindle_sim *sp, int k, acbb_spindle_set_view *v
     const acbb_set_sim *ss = t->ss;
     v->x = k == ACBB_FRONT ? sp->s.spindle_front_x : sp->s.spindle_rear_x;
     v->n_bearings = ss->n;
-    v->preload_N = acbb_snap_fin(preload(sp, ss));
+    v->preload_N = acbb_snap_fin(sp->preload[k]);
     v->axial_N = acbb_snap_fin(t->load[0]);
     v->radial_N = acbb_snap_fin(t->load[1]);
     v->moment_Nm = acbb_snap_fin(t->load[2]);

@@ -475,3 +475,50 @@ size_t acbb_sf_spindle_inactive(const acbb_scene *s, const acbb_scene *d,
         if (rows[i].when && n < cap) out[n++] = rows[i].e;
     return n;
 }
+
+/* ---- keys that are no input of this scene (sensitivity) ---- */
+
+static bool is(const acbb_field_info *f, const char *sec, const char *key)
+{
+    return strcmp(f->section, sec) == 0 && (!key || strcmp(f->key, key) == 0);
+}
+
+/* A key of the spindle's parts that this spindle does not have: varying
+ * it changes nothing, or makes the scene one the rules refuse (a coolant
+ * flow without a jacket, motor losses without a span). */
+static bool part_missing(const acbb_scene *s, const acbb_field_info *f)
+{
+    bool motor = s->motor_x1 > s->motor_x0, coolant = s->coolant_flow > 0.0;
+    acbb_rear_support rear = s->spindle_rear_support;
+    if (is(f, "motor", NULL)) return !motor && !is(f, "motor", "x0_mm") && !is(f, "motor", "x1_mm");
+    if (!is(f, "spindle", NULL)) return false;
+    if (strncmp(f->key, "coolant_", 8) == 0 || strncmp(f->key, "jacket_", 7) == 0)
+        return !coolant;
+    if (is(f, "spindle", "rear_spring_N")) return rear != ACBB_REAR_SPRING;
+    if (is(f, "spindle", "rear_friction_N")) return rear != ACBB_REAR_FLOATING;
+    if (is(f, "spindle", "rear_preload_N"))
+        return !opposed(s->spindle_rear_arrangement) && rear != ACBB_REAR_FIXED;
+    if (is(f, "spindle", "rear_spacing_mm")) return s->spindle_rear_arrangement == ACBB_SET_SINGLE;
+    return false;
+}
+
+/* A bearing key a spindle replaces: the bearing's films to the ambient
+ * and its shaft bore's coolant go, the spindle's housing and shaft have
+ * their own (docs/spindle.md "Joining the bearings' networks"). */
+static bool replaced(const acbb_scene *s, const acbb_field_info *f)
+{
+    return s->shaft_segments > 0 && (is(f, "mounting", "h_natural_W_m2K")
+                                     || (is(f, "surroundings", NULL)
+                                         && strncmp(f->key, "shaft_bore", 10) == 0));
+}
+
+bool acbb_scene_field_unused(const acbb_scene *s, size_t i)
+{
+    if (i >= acbb_sf_n) return false;
+    const acbb_field_info *f = &acbb_sf_table[i].info;
+    if (replaced(s, f)) return true;
+    if (!is(f, "shaft", NULL) && !is(f, "housing", NULL) && !is(f, "motor", NULL)
+        && !is(f, "spindle", NULL))
+        return false;
+    return s->shaft_segments == 0 || part_missing(s, f);
+}

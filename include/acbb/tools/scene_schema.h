@@ -56,6 +56,13 @@ void acbb_scene_field_interval(size_t i, char *buf, size_t n);
  * ..."; "" when the key is not an uncertain input. */
 void acbb_scene_field_plausible(size_t i, char *buf, size_t n);
 
+/* Whether field i is no input of scene s: a spindle key of a scene
+ * without a spindle, or of a part its spindle does not have (the motor's
+ * losses without a motor, the coolant's keys without a flow, the spring's
+ * force under another rear support, ...; src/scene/scene_rules_spindle.c).
+ * The sensitivity analysis varies only the inputs a scene has. */
+bool acbb_scene_field_unused(const acbb_scene *s, size_t i);
+
 const char *acbb_model_level_name(acbb_model_level m);
 
 #ifdef __cplusplus
