@@ -89,10 +89,8 @@ done
 t $? "no 'issue N' in the program's strings (the TUI's help included)$( [ -s "$TMP/src" ] && printf ' (in %s)' "$(head -5 "$TMP/src" | tr '\n' ' ')")"
 # README.md and docs/*.md are read by users too: "(issue 18, tilt)" there
 # pointed at nothing they can open. BENCHMARKS.md is the developers' log
-# and may cite the tracker. docs/spindle.md is left to its owner for now
-# (its opening line names the issue that asked for it): drop it from the
-# exemption once it is reworded.
-userdocs=$(ls README.md docs/*.md | grep -v -x -e BENCHMARKS.md -e docs/spindle.md)
+# and may cite the tracker.
+userdocs=$(ls README.md docs/*.md | grep -v -x -e BENCHMARKS.md)
 # shellcheck disable=SC2086
 grep -n -E "$ISSUE" $userdocs >"$TMP/hits"
 [ -n "$userdocs" ] && [ ! -s "$TMP/hits" ]
