@@ -410,6 +410,51 @@ static void test_adopt_state(void)
     acbb_mech_free(m1);
 }
 
+/* The end-of-run axial stiffness probe (acbb_axial_stiffness) under a
+ * combined load at the runs' default mech_tol 1e-8: the converged
+ * central difference (the same nudge, every solve at 1e-13) to 1e-7,
+ * and the same from a start whose last bits differ. Its solves at the
+ * run's own tolerance were resolved only to ~1e-4 (issue 30). */
+static double held_force(acbb_mech *m, const acbb_mech_state *at, double dx, double w)
+{
+    static acbb_mech_state st;
+    acbb_mech_state_copy(&st, at);
+    acbb_mech_fix_axial(m, 1, dx);
+    acbb_status rc = acbb_mech_solve(m, w, NULL, &st, NULL);
+    return rc == ACBB_OK ? st.Fx : NAN;
+}
+
+static void test_axial_probe(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    s.axial_load = 250;
+    s.radial_load = 600;
+    s.mech_tol = 1e-8;
+    acbb_mech *m, *fine;
+    static acbb_mech_state st, nudged;
+    acbb_mech_new(&s, &m, NULL);
+    acbb_status rc = acbb_mech_init_state(m, &st, NULL);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, NULL);
+    ok(rc == ACBB_OK, "600 N radial, 250 N axial: equilibrium");
+    double K = acbb_axial_stiffness(m, s.inner_speed, NULL, &st, 0);
+    s.mech_tol = 1e-13;
+    acbb_mech_new(&s, &fine, NULL);
+    double h = fmax(1e-9, 1e-4 * fabs(st.dx));
+    double ref = (held_force(fine, &st, st.dx + h, s.inner_speed)
+                  - held_force(fine, &st, st.dx - h, s.inner_speed)) / (2.0 * h);
+    ok(fabs(K - ref) <= 1e-7 * ref, "axial stiffness %.7f N/um = the difference solved at "
+       "1e-13 (%.7f) to 1e-7", K * 1e-6, ref * 1e-6);
+    acbb_mech_state_copy(&nudged, &st);
+    nudged.dz *= 1.0 + 1e-12;
+    for (int j = 0; j < acbb_mech_distinct(&nudged); j++) nudged.ball[j].Qi *= 1.0 + 1e-12;
+    double Kn = acbb_axial_stiffness(m, s.inner_speed, NULL, &nudged, 0);
+    ok(fabs(Kn - K) <= 1e-7 * K, "the same from a start 1e-12 away (%.7f N/um)", Kn * 1e-6);
+    acbb_mech_free(m);
+    acbb_mech_free(fine);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -423,5 +468,6 @@ int main(void)
     test_broyden();
     test_transient_mode();
     test_adopt_state();
+    test_axial_probe();
     return done_testing();
 }
