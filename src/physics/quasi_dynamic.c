@@ -99,17 +99,27 @@ static int qd_fj(const double *x, qd_ctx *c, double f[4], double J[16])
 
 /* Newton with the analytic Jacobian from x (transient steps): 1 with x
  * the root, c's tractions there and J its Jacobian; 0 if the law has no
- * analytic derivative or a full step does not lower sum |f|. */
+ * analytic derivative or a step halved 4 times does not lower sum |f|
+ * (a full step that overshoots is damped rather than handed to the
+ * hybrid solver's ~17 iterations of five evaluations: issue 30). */
 static int newton_analytic(qd_ctx *c, double x[4], double J[16])
 {
-    double f[4], d[4], prev = INFINITY;
-    for (int it = 0; it < 8; it++) {
+    double f[4], d[4] = { 0 }, x0[4] = { 0 }, prev = INFINITY;
+    int halvings = 0;
+    for (int it = 0; it < 16; it++) {
         if (!qd_fj(x, c, f, J)) return 0;
         double r = fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
         if (r < RES_TOL) return 1;
-        if (!(r < prev) || !acbb_newton_step(4, J, f, d)) return 0;
+        if (!(r < prev)) {
+            if (++halvings > 4) return 0;
+            for (int k = 0; k < 4; k++) x[k] = x0[k] + (d[k] *= 0.5);
+            continue;
+        }
+        if (!acbb_newton_step(4, J, f, d)) return 0;
+        memcpy(x0, x, sizeof x0);
         for (int k = 0; k < 4; k++) x[k] += d[k];
         prev = r;
+        halvings = 0;
     }
     return 0;
 }
