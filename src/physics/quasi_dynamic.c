@@ -17,6 +17,7 @@
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
 #define RES_TOL 1e-10
+#define PRED_INPUTS 7  /* loads, angles, inlet viscosities, inner-ring speed */
 
 struct acbb_qd {
     acbb_traction_contact ci, co;
@@ -29,6 +30,10 @@ struct acbb_qd {
     double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
     int in_ok[ACBB_MAX_BALLS];
     double skip_tol;    /* 0: every update solves every ball */
+    /* Each ball's last two roots and the inputs they were solved at
+     * (PRED_INPUTS of them), newest first; nh[j]: how many are kept. */
+    double xh[ACBB_MAX_BALLS][2][4], uh[ACBB_MAX_BALLS][2][PRED_INPUTS];
+    int nh[ACBB_MAX_BALLS];
 };
 
 typedef struct {
@@ -291,7 +296,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
                               const acbb_mixture *mix, acbb_ball_state *b, int j,
-                              const acbb_ball_state *bn, int jn)
+                              const acbb_ball_state *bn, int jn, const double *x0)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -301,6 +306,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
     double x[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
                     b->kin.wz / omega_i };
+    if (x0) memcpy(x, x0, sizeof x);
     double xn[4];
     for (int d = 0; bn && d < 4; d++) xn[d] = bn->qd_w[d] / omega_i;
     if (solve_speeds(q, &c, j, x, bn ? xn : NULL, jn) != ACBB_OK)
@@ -314,6 +320,39 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, omega_i, b->qd_w[0],
                                b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
     return ACBB_OK;
+}
+
+/* The start of ball j's solve at inputs u: its last root moved on along
+ * the secant of its last two, by the projection of the inputs' move on
+ * the last one (the transient's inputs drift one way, so each solve
+ * starts closer than the last root: fewer Broyden residuals; the root
+ * is the same to RES_TOL, issue 30). 0: no history or the inputs turned. */
+static int predict(const acbb_qd *q, int j, const double u[PRED_INPUTS], double x[4])
+{
+    if (q->nh[j] < 2 || !q->J_ok[j]) return 0;
+    const double *u0 = q->uh[j][0], *u1 = q->uh[j][1];
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < PRED_INPUTS; k++) {
+        /* Angles (2, 3) in radians, the others relative. */
+        double sc = k == 2 || k == 3 ? 1.0 : fmax(fabs(u0[k]), 1e-300);
+        double a = (u[k] - u0[k]) / sc, b = (u0[k] - u1[k]) / sc;
+        num += a * b;
+        den += b * b;
+    }
+    double t = num / den;
+    if (!(den > 0.0) || !(t > 0.0 && t < 4.0)) return 0;
+    for (int d = 0; d < 4; d++) x[d] = q->xh[j][0][d] + t * (q->xh[j][0][d] - q->xh[j][1][d]);
+    return 1;
+}
+
+/* Ball j's root x at inputs u into its history. */
+static void remember(acbb_qd *q, int j, const double u[PRED_INPUTS], const double *w, double wi)
+{
+    memcpy(q->xh[j][1], q->xh[j][0], sizeof q->xh[j][0]);
+    memcpy(q->uh[j][1], q->uh[j][0], sizeof q->uh[j][0]);
+    for (int d = 0; d < 4; d++) q->xh[j][0][d] = w[d] / wi;
+    memcpy(q->uh[j][0], u, sizeof q->uh[j][0]);
+    q->nh[j] = q->nh[j] < 2 ? q->nh[j] + 1 : 2;
 }
 
 /* Weights of the transient-step skip (acbb_ball_moved, inputs in the order
@@ -343,7 +382,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
             b->traction_valid = 0;
-            q->J_ok[j] = q->in_ok[j] = 0;
+            q->J_ok[j] = q->in_ok[j] = q->nh[j] = 0;
             continue;
         }
         /* Inside a transient step a ball whose inputs barely moved keeps
@@ -354,10 +393,15 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
             && acbb_ball_moved(q->in[j], in, skip_weights) < q->skip_tol)
             continue;
-        double wm0 = b->kin.omega_m;
+        double wm0 = b->kin.omega_m, u[PRED_INPUTS], x0[4];
+        memcpy(u, in, sizeof u[0] * 6);
+        u[6] = omega_i;
+        int pr = predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
-                                    jn >= 0 ? &st->ball[jn] : NULL, jn);
+                                    jn >= 0 ? &st->ball[jn] : NULL, jn, pr ? x0 : NULL);
         q->in_ok[j] = rc == ACBB_OK;
+        if (rc == ACBB_OK) remember(q, j, u, b->qd_w, omega_i);
+        else q->nh[j] = 0;
         if (rc == ACBB_OK && q->J_ok[j]) jn = j;
         /* Recorded after the solve: its speeds are the reference. */
         acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);
