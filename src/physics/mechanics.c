@@ -773,6 +773,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (m->prescribed) prescribed_state(m, w);
     if (m->hold_radial) w->dz = m->dz_hold;
     if (m->hold_tilt) w->thy = m->thy_hold;
+    acbb_mechx_predict(m, w);
     for (int j = 0; j < acbb_mech_distinct(w); j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
@@ -813,6 +814,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
                               omega_i * 30.0 / M_PI);
     }
     finish_contacts(m, w);
+    acbb_mechx_remember(m, w);
     free(keep);
     return ACBB_OK;
 }
