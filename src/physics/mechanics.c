@@ -773,11 +773,11 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
     if (m->prescribed) prescribed_state(m, w);
     if (m->hold_radial) w->dz = m->dz_hold;
     if (m->hold_tilt) w->thy = m->thy_hold;
-    acbb_mechx_predict(m, w);
     for (int j = 0; j < acbb_mech_distinct(w); j++) {
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
     }
+    acbb_mechx_predict(m, w);
     acbb_status rc = ACBB_OK;
     /* The Hertz constants depend on the operating angles: iterate the
      * solve with refreshed constants until the angles stop moving. */

@@ -48,6 +48,8 @@ void acbb_mechx_predict(acbb_mech *m, acbb_mech_state *st)
     for (int j = 0; j < m->ph_nb; j++) {
         st->ball[j].X1 += t * (m->ph_b[0][j][0] - m->ph_b[1][j][0]);
         st->ball[j].X2 += t * (m->ph_b[0][j][1] - m->ph_b[1][j][1]);
+        st->ball[j].alpha_i += t * (m->ph_b[0][j][2] - m->ph_b[1][j][2]);
+        st->ball[j].alpha_o += t * (m->ph_b[0][j][3] - m->ph_b[1][j][3]);
     }
 }
 
@@ -65,6 +67,8 @@ void acbb_mechx_remember(acbb_mech *m, const acbb_mech_state *st)
     for (int j = 0; j < nb; j++) {
         m->ph_b[0][j][0] = st->ball[j].X1;
         m->ph_b[0][j][1] = st->ball[j].X2;
+        m->ph_b[0][j][2] = st->ball[j].alpha_i;
+        m->ph_b[0][j][3] = st->ball[j].alpha_o;
     }
     inputs(m->e, m->ph_u[0]);
     m->ph_nb = nb;

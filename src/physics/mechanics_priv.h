@@ -51,9 +51,10 @@ struct acbb_mech {
     acbb_mech_state *trial;
     acbb_status inner_status;
     /* The last two roots of transient steps (mechanics_predict.c), newest
-     * first: ring dx, dz, thy, the solved balls' X1, X2, the expansions;
+     * first: ring dx, dz, thy, the solved balls' X1, X2, alpha_i, alpha_o,
+ * the expansions;
      * ph_n of them kept, made with ph_nb balls, these loads and speed. */
-    double ph_x[2][3], ph_b[2][ACBB_MAX_BALLS][2], ph_u[2][MECH_PRED_U];
+    double ph_x[2][3], ph_b[2][ACBB_MAX_BALLS][4], ph_u[2][MECH_PRED_U];
     double ph_omega, ph_F[3];
     int ph_n, ph_nb, ph_fix;
 };
