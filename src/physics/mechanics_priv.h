@@ -57,6 +57,7 @@ struct acbb_mech {
     double ph_x[2][3], ph_b[2][ACBB_MAX_BALLS][4], ph_u[2][MECH_PRED_U];
     double ph_omega, ph_F[3];
     int ph_n, ph_nb, ph_fix;
+    long ring_evals;            /* ring residuals evaluated (ring_broyden's speed) */
 };
 
 /* The predicted start of a transient step's solve into st (unchanged
