@@ -451,6 +451,18 @@ static void test_axial_probe(void)
     for (int j = 0; j < acbb_mech_distinct(&nudged); j++) nudged.ball[j].Qi *= 1.0 + 1e-12;
     double Kn = acbb_axial_stiffness(m, s.inner_speed, NULL, &nudged, 0);
     ok(fabs(Kn - K) <= 1e-7 * K, "the same from a start 1e-12 away (%.7f N/um)", Kn * 1e-6);
+    /* The ring probes likewise: at mech_tol 1e-8 the 1e-10 one's to 5e-8
+     * (their solves at the run's own tolerance were 5e-7 apart). */
+    acbb_stiffness k8, k10;
+    s.mech_tol = 1e-8;
+    acbb_ring_stiffness(&s, NULL, 0.0, &st, &k8);
+    s.mech_tol = 1e-10;
+    acbb_ring_stiffness(&s, NULL, 0.0, &st, &k10);
+    double worst = fmax(fabs(k8.radial / k10.radial - 1.0), fabs(k8.tilt / k10.tilt - 1.0));
+    worst = fmax(worst, fabs(k8.tilt_held / k10.tilt_held - 1.0));
+    ok(worst <= 5e-8, "ring stiffness at mech_tol 1e-8 = at 1e-10 to 5e-8 (%.1e; radial %.4f "
+       "N/um, tilt %.5f, held %.5f N m/mrad)", worst, k8.radial * 1e-6, k8.tilt * 1e-3,
+       k8.tilt_held * 1e-3);
     acbb_mech_free(m);
     acbb_mech_free(fine);
 }

@@ -36,6 +36,10 @@ static acbb_status probe_mech(const acbb_scene *s, double dx_held, const acbb_me
     if (probe == PROBE_TILT_HELD) acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
     if (probe == PROBE_RADIAL) acbb_mech_hold_tilt(m, warm ? warm->thy : 0.0);
     acbb_mech_broyden_held(m, 1);
+    /* 1e-2 of the run's tolerance: the response to a 1 % nudge is then
+     * resolved to ~1e-9 (at the run's own to ~5e-7, which a path's last
+     * bits moved: issue 30, BENCHMARKS.md fourth round). */
+    acbb_mech_set_tol(m, 1e-2 * s->mech_tol);
     *out = m;
     return ACBB_OK;
 }
