@@ -17,6 +17,7 @@
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
 #define RES_TOL 1e-10
+#define STALE_EVALS 4 /* a Broyden solve of more residuals: its Jacobian had gone stale */
 #define PRED_INPUTS 7  /* loads, angles, inlet viscosities, inner-ring speed */
 
 struct acbb_qd {
@@ -26,6 +27,9 @@ struct acbb_qd {
      * Broyden steps of the next update; J_ok[j] = 0: none yet. */
     double J[ACBB_MAX_BALLS][16];
     int J_ok[ACBB_MAX_BALLS];
+    /* 1: ball j's last Broyden solve was slow, its next one starts from
+     * the analytic Jacobian (the kept one had gone stale) */
+    int J_stale[ACBB_MAX_BALLS];
     /* Inputs of each ball's last solve (acbb_ball_inputs); in_ok[j] = 0: none. */
     double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
     int in_ok[ACBB_MAX_BALLS];
@@ -42,6 +46,7 @@ typedef struct {
     double omega_i, J, D, Fscale;
     const acbb_mixture *mix;
     acbb_traction tri, tro;
+    int evals;          /* residuals evaluated by eval (the Broyden steps) */
 } qd_ctx;
 
 static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
@@ -212,6 +217,7 @@ static int eval(const double *x, void *p, double *f)
 {
     gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
     gsl_vector_view F = gsl_vector_view_array(f, 4);
+    ((qd_ctx *)p)->evals++;
     return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
 }
 
@@ -239,13 +245,23 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
 }
 
 /* Broyden for ball j from x0 with the Jacobian of ball `from`: 1 with x
- * the root and J kept as ball j's. */
+ * the root and J kept as ball j's. After a slow solve of its own (more
+ * than STALE_EVALS residuals) ball j's next one starts from the analytic
+ * Jacobian at x0 (with its residual: about 2.5 evaluations) instead of
+ * the kept one, which Broyden's rank-one updates had let go stale
+ * (issue 30: 5.4 residuals a solve in the combined-load run). */
 static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0, double x[4])
 {
     double J[16], f[4], xa[4];
     memcpy(J, q->J[from], sizeof J);
     memcpy(xa, x0, sizeof xa);
-    if (!acbb_broyden(eval, c, 4, J, xa, f, RES_TOL, 8, 0)) return 0;
+    acbb_broyden_opts o = { 0 };
+    double Ja[16];
+    if (from == j && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
+        memcpy(J, Ja, sizeof J);
+    int before = c->evals;
+    if (!acbb_broyden_ex(eval, c, 4, J, xa, f, RES_TOL, 8, &o)) return 0;
+    q->J_stale[j] = c->evals - before > STALE_EVALS;
     memcpy(q->J[j], J, sizeof J);
     q->J_ok[j] = 1;
     memcpy(x, xa, sizeof xa);
