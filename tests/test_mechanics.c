@@ -366,6 +366,44 @@ static void test_transient_mode(void)
     acbb_mech_free(m);
 }
 
+/* Transient steps start from the secant-predicted root (mechanics_predict.c,
+ * issue 30) once two steps are kept: each step of a warming (the
+ * expansions grow) reaches the root a workspace without that history
+ * reaches from the same state, to the solve's tolerance. */
+static void test_predicted_start(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    s.axial_load = 300;
+    s.radial_load = 800;
+    s.inner_speed = 10000 * RPM;
+    acbb_mech *m, *fresh;
+    static acbb_mech_state st, ref;
+    acbb_mech_new(&s, &m, NULL);
+    acbb_status rc = acbb_mech_init_state(m, &st, NULL);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, NULL);
+    double worst = 0.0, moved = 0.0;
+    for (int k = 1; k <= 5 && rc == ACBB_OK; k++) {
+        acbb_expansion e = { 0.05e-6 * k, 0.3e-6 * k, 0.1e-6 * k, 0.15e-6 * k };
+        acbb_mech_state_copy(&ref, &st);
+        acbb_mech_new(&s, &fresh, NULL);
+        acbb_mech_set_transient(fresh, 1e-12); /* constants refreshed as in exact solves */
+        acbb_mech_set_transient(m, 1e-12);
+        double dz0 = st.dz;
+        rc = acbb_mech_solve(m, s.inner_speed, &e, &st, NULL);
+        if (rc == ACBB_OK) rc = acbb_mech_solve(fresh, s.inner_speed, &e, &ref, NULL);
+        acbb_mech_free(fresh);
+        for (int j = 0; j < st.n && rc == ACBB_OK; j++)
+            worst = fmax(worst, fabs(st.ball[j].Qi - ref.ball[j].Qi) / ref.ball[0].Qi);
+        moved = fmax(moved, fabs(st.dz - dz0));
+    }
+    ok(rc == ACBB_OK && worst <= 1e-7 && moved > 1e-8, "five warming steps: the predicted "
+       "starts' roots = a fresh workspace's to %.1e (<= 1e-7; dz moved %.2g um a step)", worst,
+       moved * 1e6);
+    acbb_mech_free(m);
+}
+
 /* Warm starts across workspaces (acbb_mech_adopt_state, the stiffness
  * probes): a pure-thrust state is spread over the ring for a workspace
  * with a radial load, and the warm solve reaches the same equilibrium as
@@ -480,6 +518,7 @@ int main(void)
     test_broyden();
     test_transient_mode();
     test_adopt_state();
+    test_predicted_start();
     test_axial_probe();
     return done_testing();
 }

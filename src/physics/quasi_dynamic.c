@@ -34,6 +34,7 @@ struct acbb_qd {
     double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
     int in_ok[ACBB_MAX_BALLS];
     double skip_tol;    /* 0: every update solves every ball */
+    int path;           /* 1: transient steps (acbb_qd_set_path): predicted starts */
     /* Each ball's last two roots and the inputs they were solved at
      * (PRED_INPUTS of them), newest first; nh[j]: how many are kept. */
     double xh[ACBB_MAX_BALLS][2][4], uh[ACBB_MAX_BALLS][2][PRED_INPUTS];
@@ -245,11 +246,12 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
 }
 
 /* Broyden for ball j from x0 with the Jacobian of ball `from`: 1 with x
- * the root and J kept as ball j's. After a slow solve of its own (more
- * than STALE_EVALS residuals) ball j's next one starts from the analytic
- * Jacobian at x0 (with its residual: about 2.5 evaluations) instead of
- * the kept one, which Broyden's rank-one updates had let go stale
- * (issue 30: 5.4 residuals a solve in the combined-load run). */
+ * the root and J kept as ball j's. In a transient's steps, after a slow
+ * solve of its own (more than STALE_EVALS residuals) ball j's next one
+ * starts from the analytic Jacobian at x0 (with its residual: about 2.5
+ * evaluations) instead of the kept one, which Broyden's rank-one updates
+ * had let go stale (issue 30: 5.4 residuals a solve in the combined-load
+ * run). A steady solve's iterates are no path: they keep Broyden's. */
 static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0, double x[4])
 {
     double J[16], f[4], xa[4];
@@ -257,11 +259,11 @@ static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0
     memcpy(xa, x0, sizeof xa);
     acbb_broyden_opts o = { 0 };
     double Ja[16];
-    if (from == j && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
+    if (q->path && from == j && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
         memcpy(J, Ja, sizeof J);
     int before = c->evals;
     if (!acbb_broyden_ex(eval, c, 4, J, xa, f, RES_TOL, 8, &o)) return 0;
-    q->J_stale[j] = c->evals - before > STALE_EVALS;
+    q->J_stale[j] = q->path && c->evals - before > STALE_EVALS;
     memcpy(q->J[j], J, sizeof J);
     q->J_ok[j] = 1;
     memcpy(x, xa, sizeof xa);
@@ -385,6 +387,8 @@ void acbb_qd_set_skip(acbb_qd *q, double tol)
     q->skip_tol = tol > 0.0 ? tol : 0.0;
 }
 
+void acbb_qd_set_path(acbb_qd *q, int transient) { q->path = transient; }
+
 acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                            const acbb_geometry *g, double omega_i,
                            const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
@@ -412,7 +416,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         double wm0 = b->kin.omega_m, u[PRED_INPUTS], x0[4];
         memcpy(u, in, sizeof u[0] * 6);
         u[6] = omega_i;
-        int pr = predict(q, j, u, x0);
+        int pr = q->path && predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
                                     jn >= 0 ? &st->ball[jn] : NULL, jn, pr ? x0 : NULL);
         q->in_ok[j] = rc == ACBB_OK;
