@@ -326,20 +326,28 @@ static void test_broyden(void)
  * after a 2 % and a 0.5 % speed change, the equilibrium balances the loads to
  * 1e-6 and every ball load agrees with the exact solve within 1e-4 (Kc
  * moves ~0.06 per rad: 6e-5 at the tolerance). */
+/* 7008C under 300 N axial and 800 N radial at 10000 rpm: s, its
+ * workspace *m and the equilibrium st by continuation in speed. */
+static acbb_status combined_800(acbb_scene *s, acbb_mech **m, acbb_mech_state *st)
+{
+    scene_7008c(s);
+    s->axial_load = 300;
+    s->radial_load = 800;
+    s->inner_speed = 10000 * RPM;
+    acbb_mech_new(s, m, NULL);
+    acbb_status rc = acbb_mech_init_state(*m, st, NULL);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(*m, s->inner_speed * r / 4, NULL, st, NULL);
+    return rc;
+}
+
 static void test_transient_mode(void)
 {
     acbb_scene s;
-    scene_7008c(&s);
-    s.axial_load = 300;
-    s.radial_load = 800;
-    s.inner_speed = 10000 * RPM;
     acbb_mech *m;
     acbb_error err;
     acbb_mech_state st, ex, tr;
-    acbb_mech_new(&s, &m, &err);
-    acbb_status rc = acbb_mech_init_state(m, &st, &err);
-    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
-        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, &err);
+    acbb_status rc = combined_800(&s, &m, &st);
     ok(rc == ACBB_OK, "combined load at 10000 rpm: warm start");
     const double f[2] = { 1.02, 1.005 }; /* angles move past / within 1e-3 rad */
     for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
@@ -373,16 +381,9 @@ static void test_transient_mode(void)
 static void test_predicted_start(void)
 {
     acbb_scene s;
-    scene_7008c(&s);
-    s.axial_load = 300;
-    s.radial_load = 800;
-    s.inner_speed = 10000 * RPM;
     acbb_mech *m, *fresh;
     static acbb_mech_state st, ref;
-    acbb_mech_new(&s, &m, NULL);
-    acbb_status rc = acbb_mech_init_state(m, &st, NULL);
-    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
-        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, NULL);
+    acbb_status rc = combined_800(&s, &m, &st);
     double worst = 0.0, moved = 0.0;
     for (int k = 1; k <= 5 && rc == ACBB_OK; k++) {
         acbb_expansion e = { 0.05e-6 * k, 0.3e-6 * k, 0.1e-6 * k, 0.15e-6 * k };
