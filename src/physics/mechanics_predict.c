@@ -40,8 +40,8 @@ void acbb_mechx_predict(acbb_mech *m, acbb_mech_state *st)
         num += a * b;
         den += b * b;
     }
-    double t = num / den;
-    if (!(den > 0.0) || !(t > 0.0 && t < 4.0)) return;
+    double t = den > 0.0 ? num / den : 0.0; /* 0: the inputs did not move */
+    if (!(t > 0.0 && t < 4.0)) return;
     if (!m->fix_axial) st->dx += t * (x0[0] - x1[0]);
     if (m->dof_dz && !m->hold_radial) st->dz += t * (x0[1] - x1[1]);
     if (m->dof_thy && !m->hold_tilt) st->thy += t * (x0[2] - x1[2]);

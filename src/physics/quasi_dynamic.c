@@ -357,8 +357,8 @@ static int predict(const acbb_qd *q, int j, const double u[PRED_INPUTS], double 
         num += a * b;
         den += b * b;
     }
-    double t = num / den;
-    if (!(den > 0.0) || !(t > 0.0 && t < 4.0)) return 0;
+    double t = den > 0.0 ? num / den : 0.0; /* 0: the inputs did not move */
+    if (!(t > 0.0 && t < 4.0)) return 0;
     for (int d = 0; d < 4; d++) x[d] = q->xh[j][0][d] + t * (q->xh[j][0][d] - q->xh[j][1][d]);
     return 1;
 }
