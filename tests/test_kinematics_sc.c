@@ -7,11 +7,13 @@
 #include "tap.h"
 #include "kinematics.h"
 
+/* beta and omega_R: the angle forms' only (the sine/cosine forms leave
+ * them, kinematics.h); they are hypot and atan2 of the compared wx, wz. */
 static double worst_diff(const acbb_kin *a, const acbb_kin *b)
 {
-    const double x[] = { a->omega_m, a->wx, a->wz, a->omega_R, a->beta, a->spin_i, a->spin_o,
+    const double x[] = { a->omega_m, a->wx, a->wz, a->spin_i, a->spin_o,
                          a->roll_i, a->roll_o, a->u_i, a->u_o, a->v_ball_i, a->v_race_i };
-    const double y[] = { b->omega_m, b->wx, b->wz, b->omega_R, b->beta, b->spin_i, b->spin_o,
+    const double y[] = { b->omega_m, b->wx, b->wz, b->spin_i, b->spin_o,
                          b->roll_i, b->roll_o, b->u_i, b->u_o, b->v_ball_i, b->v_race_i };
     double w = 0.0;
     for (size_t i = 0; i < sizeof x / sizeof x[0]; i++)

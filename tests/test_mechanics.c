@@ -326,20 +326,28 @@ static void test_broyden(void)
  * after a 2 % and a 0.5 % speed change, the equilibrium balances the loads to
  * 1e-6 and every ball load agrees with the exact solve within 1e-4 (Kc
  * moves ~0.06 per rad: 6e-5 at the tolerance). */
+/* 7008C under 300 N axial and 800 N radial at 10000 rpm: s, its
+ * workspace *m and the equilibrium st by continuation in speed. */
+static acbb_status combined_800(acbb_scene *s, acbb_mech **m, acbb_mech_state *st)
+{
+    scene_7008c(s);
+    s->axial_load = 300;
+    s->radial_load = 800;
+    s->inner_speed = 10000 * RPM;
+    acbb_mech_new(s, m, NULL);
+    acbb_status rc = acbb_mech_init_state(*m, st, NULL);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(*m, s->inner_speed * r / 4, NULL, st, NULL);
+    return rc;
+}
+
 static void test_transient_mode(void)
 {
     acbb_scene s;
-    scene_7008c(&s);
-    s.axial_load = 300;
-    s.radial_load = 800;
-    s.inner_speed = 10000 * RPM;
     acbb_mech *m;
     acbb_error err;
     acbb_mech_state st, ex, tr;
-    acbb_mech_new(&s, &m, &err);
-    acbb_status rc = acbb_mech_init_state(m, &st, &err);
-    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
-        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, &err);
+    acbb_status rc = combined_800(&s, &m, &st);
     ok(rc == ACBB_OK, "combined load at 10000 rpm: warm start");
     const double f[2] = { 1.02, 1.005 }; /* angles move past / within 1e-3 rad */
     for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
@@ -363,6 +371,37 @@ static void test_transient_mode(void)
         ok(worst <= 1e-4, "ball loads within %.1e of the exact solve (<= 1e-4; angles moved "
            "%.1e rad)", worst, moved);
     }
+    acbb_mech_free(m);
+}
+
+/* Transient steps start from the secant-predicted root (mechanics_predict.c,
+ * issue 30) once two steps are kept: each step of a warming (the
+ * expansions grow) reaches the root a workspace without that history
+ * reaches from the same state, to the solve's tolerance. */
+static void test_predicted_start(void)
+{
+    acbb_scene s;
+    acbb_mech *m, *fresh;
+    static acbb_mech_state st, ref;
+    acbb_status rc = combined_800(&s, &m, &st);
+    double worst = 0.0, moved = 0.0;
+    for (int k = 1; k <= 5 && rc == ACBB_OK; k++) {
+        acbb_expansion e = { 0.05e-6 * k, 0.3e-6 * k, 0.1e-6 * k, 0.15e-6 * k };
+        acbb_mech_state_copy(&ref, &st);
+        acbb_mech_new(&s, &fresh, NULL);
+        acbb_mech_set_transient(fresh, 1e-12); /* constants refreshed as in exact solves */
+        acbb_mech_set_transient(m, 1e-12);
+        double dz0 = st.dz;
+        rc = acbb_mech_solve(m, s.inner_speed, &e, &st, NULL);
+        if (rc == ACBB_OK) rc = acbb_mech_solve(fresh, s.inner_speed, &e, &ref, NULL);
+        acbb_mech_free(fresh);
+        for (int j = 0; j < st.n && rc == ACBB_OK; j++)
+            worst = fmax(worst, fabs(st.ball[j].Qi - ref.ball[j].Qi) / ref.ball[0].Qi);
+        moved = fmax(moved, fabs(st.dz - dz0));
+    }
+    ok(rc == ACBB_OK && worst <= 1e-7 && moved > 1e-8, "five warming steps: the predicted "
+       "starts' roots = a fresh workspace's to %.1e (<= 1e-7; dz moved %.2g um a step)", worst,
+       moved * 1e6);
     acbb_mech_free(m);
 }
 
@@ -410,6 +449,63 @@ static void test_adopt_state(void)
     acbb_mech_free(m1);
 }
 
+/* The end-of-run axial stiffness probe (acbb_axial_stiffness) under a
+ * combined load at the runs' default mech_tol 1e-8: the converged
+ * central difference (the same nudge, every solve at 1e-13) to 1e-7,
+ * and the same from a start whose last bits differ. Its solves at the
+ * run's own tolerance were resolved only to ~1e-4 (issue 30). */
+static double held_force(acbb_mech *m, const acbb_mech_state *at, double dx, double w)
+{
+    static acbb_mech_state st;
+    acbb_mech_state_copy(&st, at);
+    acbb_mech_fix_axial(m, 1, dx);
+    acbb_status rc = acbb_mech_solve(m, w, NULL, &st, NULL);
+    return rc == ACBB_OK ? st.Fx : NAN;
+}
+
+static void test_axial_probe(void)
+{
+    acbb_scene s;
+    scene_7008c(&s);
+    s.axial_load = 250;
+    s.radial_load = 600;
+    s.mech_tol = 1e-8;
+    acbb_mech *m, *fine;
+    static acbb_mech_state st, nudged;
+    acbb_mech_new(&s, &m, NULL);
+    acbb_status rc = acbb_mech_init_state(m, &st, NULL);
+    for (int r = 1; r <= 4 && rc == ACBB_OK; r++)
+        rc = acbb_mech_solve(m, s.inner_speed * r / 4, NULL, &st, NULL);
+    ok(rc == ACBB_OK, "600 N radial, 250 N axial: equilibrium");
+    double K = acbb_axial_stiffness(m, s.inner_speed, NULL, &st, 0);
+    s.mech_tol = 1e-13;
+    acbb_mech_new(&s, &fine, NULL);
+    double h = fmax(1e-9, 1e-4 * fabs(st.dx));
+    double ref = (held_force(fine, &st, st.dx + h, s.inner_speed)
+                  - held_force(fine, &st, st.dx - h, s.inner_speed)) / (2.0 * h);
+    ok(fabs(K - ref) <= 1e-7 * ref, "axial stiffness %.7f N/um = the difference solved at "
+       "1e-13 (%.7f) to 1e-7", K * 1e-6, ref * 1e-6);
+    acbb_mech_state_copy(&nudged, &st);
+    nudged.dz *= 1.0 + 1e-12;
+    for (int j = 0; j < acbb_mech_distinct(&nudged); j++) nudged.ball[j].Qi *= 1.0 + 1e-12;
+    double Kn = acbb_axial_stiffness(m, s.inner_speed, NULL, &nudged, 0);
+    ok(fabs(Kn - K) <= 1e-7 * K, "the same from a start 1e-12 away (%.7f N/um)", Kn * 1e-6);
+    /* The ring probes likewise: at mech_tol 1e-8 the 1e-10 one's to 5e-8
+     * (their solves at the run's own tolerance were 5e-7 apart). */
+    acbb_stiffness k8, k10;
+    s.mech_tol = 1e-8;
+    acbb_ring_stiffness(&s, NULL, 0.0, &st, &k8);
+    s.mech_tol = 1e-10;
+    acbb_ring_stiffness(&s, NULL, 0.0, &st, &k10);
+    double worst = fmax(fabs(k8.radial / k10.radial - 1.0), fabs(k8.tilt / k10.tilt - 1.0));
+    worst = fmax(worst, fabs(k8.tilt_held / k10.tilt_held - 1.0));
+    ok(worst <= 5e-8, "ring stiffness at mech_tol 1e-8 = at 1e-10 to 5e-8 (%.1e; radial %.4f "
+       "N/um, tilt %.5f, held %.5f N m/mrad)", worst, k8.radial * 1e-6, k8.tilt * 1e-3,
+       k8.tilt_held * 1e-3);
+    acbb_mech_free(m);
+    acbb_mech_free(fine);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -423,5 +519,7 @@ int main(void)
     test_broyden();
     test_transient_mode();
     test_adopt_state();
+    test_predicted_start();
+    test_axial_probe();
     return done_testing();
 }

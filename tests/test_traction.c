@@ -318,8 +318,29 @@ static void test_mirror_viscosity(void)
     ok(shared > 0, "mirror nodes do share pressures (%d neighbours in a row)", shared);
 }
 
+/* The inline asinh of the Eyring stresses (traction.h acbb_asinh_pos)
+ * against the C library's over 1e-12 .. 1e12 and at its branch edges
+ * (2^-28, 2, 2^28): to 1 ulp (the same identities: on glibc the same
+ * bits, which the run JSON's bit-identity relies on there). */
+static void test_asinh(void)
+{
+    double worst = 0.0;
+    const double edges[] = { 0x1p-28, 2.0, 0x1p28 };
+    for (double x = 1e-12; x < 1e12; x *= 1.0137) {
+        double a = acbb_asinh_pos(x), b = asinh(x);
+        worst = fmax(worst, fabs(a - b) / b);
+    }
+    for (int e = 0; e < 3; e++)
+        for (int k = -3; k <= 3; k++) {
+            double x = edges[e] * (1.0 + k * 0x1p-52), a = acbb_asinh_pos(x), b = asinh(x);
+            worst = fmax(worst, fabs(a - b) / b);
+        }
+    ok(worst <= 0x1p-52, "inline asinh = the C library's to %.1e (<= 1 ulp)", worst);
+}
+
 int main(void)
 {
+    test_asinh();
     test_mirror_viscosity();
     test_uniform_slip();
     test_spin_moment();

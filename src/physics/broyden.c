@@ -61,14 +61,27 @@ static int damped_step(acbb_broyden_fn fn, void *ctx, int n, const double *x, do
 int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
                  double tol, int maxit, int halvings)
 {
+    acbb_broyden_opts o = { .halvings = halvings };
+    return acbb_broyden_ex(fn, ctx, n, J, x, f, tol, maxit, &o);
+}
+
+int acbb_broyden_ex(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
+                    double tol, int maxit, const acbb_broyden_opts *o)
+{
     double d[ACBB_BROYDEN_MAX], xn[ACBB_BROYDEN_MAX], fn_[ACBB_BROYDEN_MAX];
-    if (n < 1 || n > ACBB_BROYDEN_MAX || !fn(x, ctx, f)) return 0;
+    if (n < 1 || n > ACBB_BROYDEN_MAX || (!o->have_f && !fn(x, ctx, f))) return 0;
     for (int it = 0; it < maxit; it++) {
         double r = sum_abs(n, f);
         if (r < tol) return 1;
         if (!acbb_newton_step(n, J, f, d)) return 0;
-        if (!damped_step(fn, ctx, n, x, d, r, halvings, xn, fn_)) return 0;
-        /* Good Broyden: J += (df - J d) d^T / (d . d). */
+        if (!damped_step(fn, ctx, n, x, d, r, o->halvings, xn, fn_)) return 0;
+        /* Good Broyden: J += (df - J d) d^T / (d . d), unless the step
+         * started inside the residual's noise (its df is mostly noise). */
+        if (r < o->noise) {
+            memcpy(x, xn, sizeof x[0] * (size_t)n);
+            memcpy(f, fn_, sizeof f[0] * (size_t)n);
+            continue;
+        }
         double dd = 0.0;
         for (int k = 0; k < n; k++) dd += d[k] * d[k];
         for (int i = 0; i < n; i++) {

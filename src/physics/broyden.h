@@ -21,6 +21,21 @@ typedef int (*acbb_broyden_fn)(const double *x, void *ctx, double *f);
 int acbb_broyden(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
                  double tol, int maxit, int halvings);
 
+/* acbb_broyden with options: halvings as there; a step from a residual
+ * sum below `noise` leaves J as it is (a residual with noise, the ring's:
+ * sums of ball solves each converged to its tolerance; such a step's
+ * change of f is mostly noise and would corrupt the Jacobian the next
+ * solves start from); have_f: f holds f(x) already (not evaluated again;
+ * the last evaluation may then have been elsewhere until the first step). */
+typedef struct {
+    int halvings;
+    double noise;
+    int have_f;
+} acbb_broyden_opts;
+
+int acbb_broyden_ex(acbb_broyden_fn fn, void *ctx, int n, double *J, double *x, double *f,
+                    double tol, int maxit, const acbb_broyden_opts *o);
+
 /* The Newton step: solve J d = -f (J row-major n x n, n <= 4) by Gaussian
  * elimination with partial pivoting; 0 if J is singular or d not finite. */
 int acbb_newton_step(int n, const double *J, const double *f, double *d);

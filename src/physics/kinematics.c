@@ -7,11 +7,21 @@ static acbb_kin_angles angles(double alpha_i, double alpha_o)
     return (acbb_kin_angles){ alpha_o, sin(alpha_i), cos(alpha_i), sin(alpha_o), cos(alpha_o) };
 }
 
+/* The spin axis (beta, omega_R) from (wx, wz): for the angle forms only.
+ * The sine/cosine forms are the mechanics' inner loop, where nothing reads
+ * them (a hypot and an atan2 per ball evaluation saved, issue 30). */
+static void spin_axis(acbb_kin *k)
+{
+    k->omega_R = hypot(k->wx, k->wz);
+    k->beta = atan2(k->wz, -k->wx);
+}
+
 void acbb_kinematics_race_control(double alpha_i, double alpha_o, double D, double dm,
                                   double omega_i, acbb_control control, acbb_kin *k)
 {
     acbb_kin_angles a = angles(alpha_i, alpha_o);
     acbb_kinematics_race_control_sc(&a, D, dm, omega_i, control, k);
+    spin_axis(k);
 }
 
 void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double dm,
@@ -20,6 +30,7 @@ void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double
 {
     acbb_kin_angles a = angles(alpha_i, alpha_o);
     acbb_kinematics_from_omega_sc(&a, D, dm, omega_i, omega_m, wx, wy, wz, k);
+    spin_axis(k);
 }
 
 void acbb_kinematics_race_control_sc(const acbb_kin_angles *a, double D, double dm,
@@ -47,8 +58,6 @@ void acbb_kinematics_from_omega_sc(const acbb_kin_angles *a, double D, double dm
     k->wx = wx;
     k->wy = wy;
     k->wz = wz;
-    k->omega_R = hypot(wx, wz);
-    k->beta = atan2(wz, -wx);
     /* Relative angular velocity ball - race along each contact normal. */
     k->spin_o = (wx + wm) * so + wz * co;
     k->spin_i = (omega_i - wm) * si - wx * si - wz * ci;

@@ -33,7 +33,9 @@ void acbb_kinematics_from_omega(double alpha_i, double alpha_o, double D, double
 
 /* The same from the angles' sines and cosines, which a caller that has
  * them (mechanics.c ball_eval: the ratios of the contact geometry) passes
- * instead of recomputing them in each (issue 30 lever 4). */
+ * instead of recomputing them in each (issue 30 lever 4). These leave
+ * beta and omega_R as they were (the mechanics' inner loop reads neither:
+ * a hypot and an atan2 per ball evaluation; issue 30's fourth round). */
 typedef struct {
     double alpha_o;        /* rad (the race-control beta needs it) */
     double si, ci, so, co; /* sin, cos of alpha_i and alpha_o */

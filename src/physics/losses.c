@@ -98,6 +98,18 @@ static double spin_mirror(const acbb_loss_point *pt, const acbb_quad *q, const d
     return spin_point(pt);
 }
 
+/* The lubricant stress at the row's slip speed at node (i, k), or that of
+ * its mirror node across the row (filled earlier) when the pressure bits
+ * agree: the same row's slip speed, pressure and viscosity, so the same
+ * bits (half the Eyring asinh of the quadrature, issue 30). */
+static double tauV_mirror(const acbb_loss_point *pt, const double *P, const double *tauV,
+                          int n, int i, int k)
+{
+    int node = i * n + k, mk = i * n + (n - 1 - k);
+    if (mk < node && P[mk] == P[node]) return tauV[mk];
+    return point_tau_lub(pt, pt->V);
+}
+
 static double spin_finish(const acbb_contact_in *c, int seed, double sum)
 {
     (void)seed;
@@ -225,7 +237,7 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
      * which depends on the node through |x|, |y| and p alone, so a mirror
      * node of the same bits shares it (issue 30). */
     double P[ACBB_QUAD_MAX * ACBB_QUAD_MAX], eta[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
-    double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
+    double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX], tauV[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
     int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
     for (int l = 0; l < ACBB_LOSS_KINDS; l++)
         if (on[l]) kinds[n_on++] = l;
@@ -241,7 +253,7 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             pt.y = c->b * sq * t;
             pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
             pt.tlim = s->lambda_lim * fmax(pt.p, 0.0);
-            pt.tauV = fluid ? point_tau_lub(&pt, pt.V) : 0.0;
+            pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, n, i, k) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
             for (int a = 0; a < n_on; a++) {

@@ -588,17 +588,25 @@ static int ring_eval(const double *x, void *p, double *f)
     acbb_mech *m = p;
     gsl_vector_const_view X = gsl_vector_const_view_array(x, (size_t)ring_dof(m));
     gsl_vector_view F = gsl_vector_view_array(f, (size_t)ring_dof(m));
+    m->ring_evals++;
     return ring_f(&X.vector, m, &F.vector) == GSL_SUCCESS;
 }
 
 /* Broyden from the last ring Jacobian of this DOF set (broyden.h); the
  * first solve builds one by forward steps of 1e-6 relative (the residual
  * carries the ball solves' noise, far above round-off), steps halved up to
- * 6 times (a stiffness probe starts far off); then GSL's hybrid. 1: at root. */
+ * 6 times (a stiffness probe starts far off); then GSL's hybrid. 1: at root.
+ * Transient steps (hertz_tol > 0; issue 30): the ring residual is a sum of
+ * ball solves each converged to its tolerance, so steps from below 100
+ * times the ring's tolerance leave the Jacobian as it is (their change of
+ * the residual is mostly noise, which would corrupt the Jacobian the next
+ * solves start from), and a solve that took more than 4 residuals builds
+ * the next solve's Jacobian afresh (it had gone stale). */
 static int ring_broyden(acbb_mech *m, int n, const double *x0)
 {
     double x[MAX_RING_DOF], f[MAX_RING_DOF], *J = m->ring_J[n];
     double tol = m->tol * ring_force_scale(m);
+    int transient = m->hertz_tol > 0.0, have_f = 0;
     memcpy(x, x0, sizeof x[0] * (size_t)n);
     if (!m->ring_J_ok[n]) {
         if (!ring_eval(x, m, f)) return 0;
@@ -607,8 +615,15 @@ static int ring_broyden(acbb_mech *m, int n, const double *x0)
         if (r < tol) return 1;
         if (!acbb_fd_jacobian(ring_eval, m, n, x, f, 1e-6, J)) return 0;
         m->ring_J_ok[n] = 1;
+        have_f = transient; /* f is x's: not evaluated again */
     }
-    if (acbb_broyden(ring_eval, m, n, J, x, f, tol, 12, 6)) return 1;
+    long before = m->ring_evals;
+    acbb_broyden_opts o = { .halvings = 6, .noise = transient ? 100.0 * tol : 0.0,
+                            .have_f = have_f };
+    if (acbb_broyden_ex(ring_eval, m, n, J, x, f, tol, 12, &o)) {
+        if (transient && m->ring_evals - before > 4) m->ring_J_ok[n] = 0;
+        return 1;
+    }
     m->ring_J_ok[n] = 0;
     return 0;
 }
@@ -777,6 +792,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
         w->ball[j].alpha_i_lag = w->ball[j].alpha_i;
         w->ball[j].alpha_o_lag = w->ball[j].alpha_o;
     }
+    acbb_mechx_predict(m, w);
     acbb_status rc = ACBB_OK;
     /* The Hertz constants depend on the operating angles: iterate the
      * solve with refreshed constants until the angles stop moving. */
@@ -813,6 +829,7 @@ acbb_status acbb_mech_solve(acbb_mech *m, double omega_i, const acbb_expansion *
                               omega_i * 30.0 / M_PI);
     }
     finish_contacts(m, w);
+    acbb_mechx_remember(m, w);
     free(keep);
     return ACBB_OK;
 }

@@ -165,6 +165,11 @@ void acbb_mech_set_transient(acbb_mech *m, double angle_tol);
  * and tilt stiffness probes (a 1 % load nudge; issue 30 lever 2). */
 void acbb_mech_broyden_held(acbb_mech *m, int on);
 
+/* The relative tolerance of the next solves (fidelity.mech_tol when
+ * made: MODEL.md section 3); returns the previous one. For a probe that
+ * resolves a difference finer than the run's solves (stiffness.c). */
+double acbb_mech_set_tol(acbb_mech *m, double tol);
+
 /* New applied loads (N, N, N m) for the next solves, the unknowns kept:
  * for loads whose radial load and moment are nonzero as the built ones
  * were (a stiffness probe's other end); its Jacobians stay. */

@@ -9,6 +9,7 @@
 #include "mechanics.h"
 
 #define MAX_RING_DOF 3
+#define MECH_PRED_U 4   /* the predictor's inputs: the four expansions */
 
 struct acbb_mech {
     acbb_geometry g;
@@ -49,6 +50,19 @@ struct acbb_mech {
     acbb_expansion e_copy;
     acbb_mech_state *trial;
     acbb_status inner_status;
+    /* The last two roots of transient steps (mechanics_predict.c), newest
+     * first: ring dx, dz, thy, the solved balls' X1, X2, alpha_i, alpha_o,
+ * the expansions;
+     * ph_n of them kept, made with ph_nb balls, these loads and speed. */
+    double ph_x[2][3], ph_b[2][ACBB_MAX_BALLS][4], ph_u[2][MECH_PRED_U];
+    double ph_omega, ph_F[3];
+    int ph_n, ph_nb, ph_fix;
+    long ring_evals;            /* ring residuals evaluated (ring_broyden's speed) */
 };
+
+/* The predicted start of a transient step's solve into st (unchanged
+ * without a history that applies); a solved state into the history. */
+void acbb_mechx_predict(acbb_mech *m, acbb_mech_state *st);
+void acbb_mechx_remember(acbb_mech *m, const acbb_mech_state *st);
 
 #endif

@@ -92,6 +92,13 @@ void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
 
 void acbb_mech_broyden_held(acbb_mech *m, int on) { m->broyden_held = on; }
 
+double acbb_mech_set_tol(acbb_mech *m, double tol)
+{
+    double old = m->tol;
+    m->tol = tol;
+    return old;
+}
+
 void acbb_mech_set_loads(acbb_mech *m, double Fx, double Fz, double My)
 {
     m->Fx = Fx;

@@ -17,6 +17,8 @@
 #define FD_STEP 1e-7
 #define MIN_LOAD 1e-3      /* N: below this a contact cannot drive the ball */
 #define RES_TOL 1e-10
+#define STALE_EVALS 4 /* a Broyden solve of more residuals: its Jacobian had gone stale */
+#define PRED_INPUTS 7  /* loads, angles, inlet viscosities, inner-ring speed */
 
 struct acbb_qd {
     acbb_traction_contact ci, co;
@@ -25,10 +27,18 @@ struct acbb_qd {
      * Broyden steps of the next update; J_ok[j] = 0: none yet. */
     double J[ACBB_MAX_BALLS][16];
     int J_ok[ACBB_MAX_BALLS];
+    /* 1: ball j's last Broyden solve was slow, its next one starts from
+     * the analytic Jacobian (the kept one had gone stale) */
+    int J_stale[ACBB_MAX_BALLS];
     /* Inputs of each ball's last solve (acbb_ball_inputs); in_ok[j] = 0: none. */
     double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
     int in_ok[ACBB_MAX_BALLS];
     double skip_tol;    /* 0: every update solves every ball */
+    int path;           /* 1: transient steps (acbb_qd_set_path): predicted starts */
+    /* Each ball's last two roots and the inputs they were solved at
+     * (PRED_INPUTS of them), newest first; nh[j]: how many are kept. */
+    double xh[ACBB_MAX_BALLS][2][4], uh[ACBB_MAX_BALLS][2][PRED_INPUTS];
+    int nh[ACBB_MAX_BALLS];
 };
 
 typedef struct {
@@ -37,6 +47,7 @@ typedef struct {
     double omega_i, J, D, Fscale;
     const acbb_mixture *mix;
     acbb_traction tri, tro;
+    int evals;          /* residuals evaluated by eval (the Broyden steps) */
 } qd_ctx;
 
 static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
@@ -99,17 +110,27 @@ static int qd_fj(const double *x, qd_ctx *c, double f[4], double J[16])
 
 /* Newton with the analytic Jacobian from x (transient steps): 1 with x
  * the root, c's tractions there and J its Jacobian; 0 if the law has no
- * analytic derivative or a full step does not lower sum |f|. */
+ * analytic derivative or a step halved 4 times does not lower sum |f|
+ * (a full step that overshoots is damped rather than handed to the
+ * hybrid solver's ~17 iterations of five evaluations: issue 30). */
 static int newton_analytic(qd_ctx *c, double x[4], double J[16])
 {
-    double f[4], d[4], prev = INFINITY;
-    for (int it = 0; it < 8; it++) {
+    double f[4], d[4] = { 0 }, x0[4] = { 0 }, prev = INFINITY;
+    int halvings = 0;
+    for (int it = 0; it < 16; it++) {
         if (!qd_fj(x, c, f, J)) return 0;
         double r = fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
         if (r < RES_TOL) return 1;
-        if (!(r < prev) || !acbb_newton_step(4, J, f, d)) return 0;
+        if (!(r < prev)) {
+            if (++halvings > 4) return 0;
+            for (int k = 0; k < 4; k++) x[k] = x0[k] + (d[k] *= 0.5);
+            continue;
+        }
+        if (!acbb_newton_step(4, J, f, d)) return 0;
+        memcpy(x0, x, sizeof x0);
         for (int k = 0; k < 4; k++) x[k] += d[k];
         prev = r;
+        halvings = 0;
     }
     return 0;
 }
@@ -197,6 +218,7 @@ static int eval(const double *x, void *p, double *f)
 {
     gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
     gsl_vector_view F = gsl_vector_view_array(f, 4);
+    ((qd_ctx *)p)->evals++;
     return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
 }
 
@@ -224,13 +246,24 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
 }
 
 /* Broyden for ball j from x0 with the Jacobian of ball `from`: 1 with x
- * the root and J kept as ball j's. */
+ * the root and J kept as ball j's. In a transient's steps, after a slow
+ * solve of its own (more than STALE_EVALS residuals) ball j's next one
+ * starts from the analytic Jacobian at x0 (with its residual: about 2.5
+ * evaluations) instead of the kept one, which Broyden's rank-one updates
+ * had let go stale (issue 30: 5.4 residuals a solve in the combined-load
+ * run). A steady solve's iterates are no path: they keep Broyden's. */
 static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0, double x[4])
 {
     double J[16], f[4], xa[4];
     memcpy(J, q->J[from], sizeof J);
     memcpy(xa, x0, sizeof xa);
-    if (!acbb_broyden(eval, c, 4, J, xa, f, RES_TOL, 8, 0)) return 0;
+    acbb_broyden_opts o = { 0 };
+    double Ja[16];
+    if (q->path && from == j && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
+        memcpy(J, Ja, sizeof J);
+    int before = c->evals;
+    if (!acbb_broyden_ex(eval, c, 4, J, xa, f, RES_TOL, 8, &o)) return 0;
+    q->J_stale[j] = q->path && c->evals - before > STALE_EVALS;
     memcpy(q->J[j], J, sizeof J);
     q->J_ok[j] = 1;
     memcpy(x, xa, sizeof xa);
@@ -281,7 +314,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
                               const acbb_mixture *mix, acbb_ball_state *b, int j,
-                              const acbb_ball_state *bn, int jn)
+                              const acbb_ball_state *bn, int jn, const double *x0)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -291,6 +324,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     c.Fscale = fmax(s->mu_bd * (b->Qi + b->Qo), 1e-6);
     double x[4] = { b->kin.omega_m / omega_i, b->kin.wx / omega_i, b->kin.wy / omega_i,
                     b->kin.wz / omega_i };
+    if (x0) memcpy(x, x0, sizeof x);
     double xn[4];
     for (int d = 0; bn && d < 4; d++) xn[d] = bn->qd_w[d] / omega_i;
     if (solve_speeds(q, &c, j, x, bn ? xn : NULL, jn) != ACBB_OK)
@@ -304,6 +338,39 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     acbb_kinematics_from_omega(b->alpha_i, b->alpha_o, g->D, g->dm, omega_i, b->qd_w[0],
                                b->qd_w[1], b->qd_w[2], b->qd_w[3], &b->kin);
     return ACBB_OK;
+}
+
+/* The start of ball j's solve at inputs u: its last root moved on along
+ * the secant of its last two, by the projection of the inputs' move on
+ * the last one (the transient's inputs drift one way, so each solve
+ * starts closer than the last root: fewer Broyden residuals; the root
+ * is the same to RES_TOL, issue 30). 0: no history or the inputs turned. */
+static int predict(const acbb_qd *q, int j, const double u[PRED_INPUTS], double x[4])
+{
+    if (q->nh[j] < 2 || !q->J_ok[j]) return 0;
+    const double *u0 = q->uh[j][0], *u1 = q->uh[j][1];
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < PRED_INPUTS; k++) {
+        /* Angles (2, 3) in radians, the others relative. */
+        double sc = k == 2 || k == 3 ? 1.0 : fmax(fabs(u0[k]), 1e-300);
+        double a = (u[k] - u0[k]) / sc, b = (u0[k] - u1[k]) / sc;
+        num += a * b;
+        den += b * b;
+    }
+    double t = den > 0.0 ? num / den : 0.0; /* 0: the inputs did not move */
+    if (!(t > 0.0 && t < 4.0)) return 0;
+    for (int d = 0; d < 4; d++) x[d] = q->xh[j][0][d] + t * (q->xh[j][0][d] - q->xh[j][1][d]);
+    return 1;
+}
+
+/* Ball j's root x at inputs u into its history. */
+static void remember(acbb_qd *q, int j, const double u[PRED_INPUTS], const double *w, double wi)
+{
+    memcpy(q->xh[j][1], q->xh[j][0], sizeof q->xh[j][0]);
+    memcpy(q->uh[j][1], q->uh[j][0], sizeof q->uh[j][0]);
+    for (int d = 0; d < 4; d++) q->xh[j][0][d] = w[d] / wi;
+    memcpy(q->uh[j][0], u, sizeof q->uh[j][0]);
+    q->nh[j] = q->nh[j] < 2 ? q->nh[j] + 1 : 2;
 }
 
 /* Weights of the transient-step skip (acbb_ball_moved, inputs in the order
@@ -320,6 +387,8 @@ void acbb_qd_set_skip(acbb_qd *q, double tol)
     q->skip_tol = tol > 0.0 ? tol : 0.0;
 }
 
+void acbb_qd_set_path(acbb_qd *q, int transient) { q->path = transient; }
+
 acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                            const acbb_geometry *g, double omega_i,
                            const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
@@ -333,7 +402,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
             b->traction_valid = 0;
-            q->J_ok[j] = q->in_ok[j] = 0;
+            q->J_ok[j] = q->in_ok[j] = q->nh[j] = 0;
             continue;
         }
         /* Inside a transient step a ball whose inputs barely moved keeps
@@ -344,10 +413,15 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
             && acbb_ball_moved(q->in[j], in, skip_weights) < q->skip_tol)
             continue;
-        double wm0 = b->kin.omega_m;
+        double wm0 = b->kin.omega_m, u[PRED_INPUTS], x0[4];
+        memcpy(u, in, sizeof u[0] * 6);
+        u[6] = omega_i;
+        int pr = q->path && predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
-                                    jn >= 0 ? &st->ball[jn] : NULL, jn);
+                                    jn >= 0 ? &st->ball[jn] : NULL, jn, pr ? x0 : NULL);
         q->in_ok[j] = rc == ACBB_OK;
+        if (rc == ACBB_OK) remember(q, j, u, b->qd_w, omega_i);
+        else q->nh[j] = 0;
         if (rc == ACBB_OK && q->J_ok[j]) jn = j;
         /* Recorded after the solve: its speeds are the reference. */
         acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);

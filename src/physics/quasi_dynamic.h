@@ -30,6 +30,12 @@ void acbb_qd_free(acbb_qd *q);
  * every ball at every update, as the steady polish must. */
 void acbb_qd_set_skip(acbb_qd *q, double tol);
 
+/* 1: the next updates are a transient's steps, whose inputs drift one
+ * way, so each ball starts from its secant-predicted root (issue 30);
+ * 0 (the default): from its last root (the set-up, a steady solve's
+ * iterates and the polish are no path). */
+void acbb_qd_set_path(acbb_qd *q, int transient);
+
 acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *quad,
                            const acbb_geometry *g, double omega_i,
                            const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,

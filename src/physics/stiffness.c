@@ -36,6 +36,10 @@ static acbb_status probe_mech(const acbb_scene *s, double dx_held, const acbb_me
     if (probe == PROBE_TILT_HELD) acbb_mech_hold_radial(m, warm ? warm->dz : 0.0);
     if (probe == PROBE_RADIAL) acbb_mech_hold_tilt(m, warm ? warm->thy : 0.0);
     acbb_mech_broyden_held(m, 1);
+    /* 1e-2 of the run's tolerance: the response to a 1 % nudge is then
+     * resolved to ~1e-9 (at the run's own to ~5e-7, which a path's last
+     * bits moved: issue 30, BENCHMARKS.md fourth round). */
+    acbb_mech_set_tol(m, 1e-2 * s->mech_tol);
     *out = m;
     return ACBB_OK;
 }
@@ -114,4 +118,42 @@ acbb_status acbb_ring_stiffness(const acbb_scene *s, const acbb_expansion *e, do
     out->tilt_held = difference(&t, &t.moment_load, hm, e, dx_held, warm, from, PROBE_TILT_HELD);
     free(start);
     return ACBB_OK;
+}
+
+/* One end of the axial difference: the equilibrium with dx held, at a
+ * tolerance 1e-4 times m's (the nudge's share of the displacement): at
+ * m's own 1e-8 the held solve stops with a force error of ~1e-8 of the
+ * load, 1e-4 of the difference it feeds (issue 30: combined-load's axial
+ * stiffness landed 5e-5 off the converged derivative, by a path's last
+ * bits). Should the finer solve fail, m's own tolerance. */
+static acbb_status axial_point(acbb_mech *m, double omega_i, const acbb_expansion *e,
+                               const acbb_mech_state *at, double dx, acbb_mech_state *st)
+{
+    acbb_mech_fix_axial(m, 1, dx);
+    double tol = acbb_mech_set_tol(m, 0.0);
+    acbb_status rc = ACBB_DIVERGED;
+    for (int k = 0; k < 2 && rc != ACBB_OK; k++) {
+        acbb_mech_set_tol(m, k ? tol : fmax(1e-4 * tol, 1e-14));
+        acbb_mech_state_copy(st, at);
+        rc = acbb_mech_solve(m, omega_i, e, st, NULL);
+    }
+    acbb_mech_set_tol(m, tol);
+    return rc;
+}
+
+double acbb_axial_stiffness(acbb_mech *m, double omega_i, const acbb_expansion *e,
+                            const acbb_mech_state *at, int held)
+{
+    acbb_mech_state *st = malloc(sizeof *st);
+    if (!st) return NAN;
+    double dx = at->dx, h = fmax(1e-9, 1e-4 * fabs(dx)), F[2] = { 0, 0 };
+    acbb_status rc = ACBB_OK;
+    for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
+        rc = axial_point(m, omega_i, e, at, dx + (k ? -h : h), st);
+        F[k] = st->Fx;
+    }
+    acbb_mech_fix_axial(m, held, held ? dx : 0.0);
+    free(st);
+    double K = (F[0] - F[1]) / (2.0 * h);
+    return rc == ACBB_OK && isfinite(K) ? K : NAN;
 }

@@ -177,7 +177,7 @@ static inline double point_tau_dtau(const acbb_scene *s, const acbb_traction_con
     double te = s->tau_eyring, eta = tc->eta[k], tn = eta * (mag / tc->H), fl = 0.0;
     if (tc->tlim[k] > 0.0 && tn > 0.0) {
         double x = tn / te;
-        fl = te * asinh(x);
+        fl = te * acbb_asinh_pos(x);
         if (fl < tc->tlim[k]) *dtau = tc->phi_f * (eta / tc->H) / sqrt(1.0 + x * x);
         else fl = tc->tlim[k];
     }

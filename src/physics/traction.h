@@ -14,6 +14,8 @@
 #include "lubrication.h"
 #include "acbb/scene.h"
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 typedef struct {
     double F[3];    /* force on the ball, N */
@@ -39,6 +41,24 @@ typedef struct {
 acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid);
 void acbb_traction_contact_free(acbb_traction_contact *tc);
 
+/* asinh(x) for x > 0 by the identities a C library uses (W. Kahan's, in
+ * fdlibm's s_asinh.c and glibc's): log(x) + ln 2 above 2^28, log(2x +
+ * 1/(sqrt(x^2 + 1) + x)) above 2, log1p(x + x^2/(1 + sqrt(1 + x^2)))
+ * below, x itself below 2^-28, split on the high word as there; inline,
+ * without the call, the sign and special-value work of every Eyring
+ * stress of Level 2 and the loss quadrature (issue 30). Finite x > 0. */
+static inline double acbb_asinh_pos(double x)
+{
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    uint32_t hi = (uint32_t)(bits >> 32);
+    if (hi < 0x3e300000u) return x;
+    if (hi > 0x41b00000u) return log(x) + 6.93147180559945286227e-01;
+    if (hi > 0x40000000u) return log(2.0 * x + 1.0 / (sqrt(x * x + 1.0) + x));
+    double t = x * x;
+    return log1p(x + t / (1.0 + sqrt(1.0 + t)));
+}
+
 /* acbb_tau_lubricant's Eyring branch (tau_e > 0) with its film floor and
  * limiting stress taken from the tables: the same operations in the same
  * order, so the same bits, without a call and three fmax per point (the
@@ -48,7 +68,7 @@ static inline double acbb_eyring_capped(double tau_e, double eta, double mag, do
 {
     double tn = eta * (mag / H);
     if (!(tlim > 0.0) || !(tn > 0.0)) return 0.0;
-    double tau = tau_e * asinh(tn / tau_e);
+    double tau = tau_e * acbb_asinh_pos(tn / tau_e);
     return tau < tlim ? tau : tlim;
 }
 

@@ -229,6 +229,7 @@ static acbb_status level2_pass(acbb_sim *sim, const acbb_oil_state *oi, const ac
     /* Skipping pays only when many distinct balls are solved; with
      * one (pure thrust) it would only perturb the transient path. */
     acbb_qd_set_skip(sim->qd, skip_tol(sim, QD_SKIP_TOL));
+    acbb_qd_set_path(sim->qd, sim->transient_pass);
     if (relax < 1.0) acbb_qd_keep(&sim->ms, kept);
     acbb_status rc = acbb_qd_update(sim->qd, &sim->s, &sim->quad, acbb_mech_geometry(sim->mech),
                                     sim->s.inner_speed, oi, oo, mix, &sim->ms, change, err);
@@ -339,6 +340,7 @@ acbb_status acbb_simx_traction(acbb_sim *b, double *change, acbb_error *err)
     if (b->dyn) return ball_dynamics(b, &oi, &oo, &mix, change, err);
     b->work.traction_solves++;
     acbb_qd_set_skip(b->qd, skip_tol(b, QD_SKIP_TOL));
+    acbb_qd_set_path(b->qd, b->transient_pass);
     return acbb_qd_update(b->qd, &b->s, &b->quad, acbb_mech_geometry(b->mech), b->s.inner_speed,
                           &oi, &oo, &mix, &b->ms, change, err);
 }

@@ -144,29 +144,6 @@ static acbb_status plant_balance(void *ctx, acbb_error *err)
     return acbb_balance_check(in, sim->heat_out, err);
 }
 
-/* Axial stiffness dFx/d(delta_x) at the converged state: central
- * difference with the axial displacement held, the other ring freedoms
- * free, ball speeds and tractions as converged. NAN if a solve fails (the
- * snapshot reports it missing: acbb_snap_stiffness). */
-static double axial_stiffness(acbb_sim *sim)
-{
-    acbb_mech_state *st = malloc(sizeof *st);
-    if (!st) return NAN;
-    double dx = sim->ms.dx, h = fmax(1e-9, 1e-4 * fabs(dx)), F[2] = { 0, 0 };
-    acbb_status rc = ACBB_OK;
-    for (int k = 0; k < 2 && rc == ACBB_OK; k++) {
-        acbb_mech_state_copy(st, &sim->ms);
-        acbb_mech_fix_axial(sim->mech, 1, dx + (k ? -h : h));
-        rc = acbb_mech_solve(sim->mech, sim->s.inner_speed, &sim->exp, st, NULL);
-        F[k] = st->Fx;
-    }
-    int held = sim->s.preload == ACBB_PRELOAD_DISPLACEMENT;
-    acbb_mech_fix_axial(sim->mech, held, held ? dx : 0.0);
-    free(st);
-    double K = (F[0] - F[1]) / (2.0 * h);
-    return rc == ACBB_OK && isfinite(K) ? K : NAN;
-}
-
 /* The end-of-run stiffness, unless the caller asked for none (then
  * reported missing: acbb_sim_opts.skip_stiffness; a set's members too). */
 static void plant_converge(void *ctx)
@@ -177,7 +154,8 @@ static void plant_converge(void *ctx)
         sim->K_ring = (acbb_stiffness){ NAN, NAN, NAN };
         return;
     }
-    sim->K_axial = axial_stiffness(sim);
+    int held = sim->s.preload == ACBB_PRELOAD_DISPLACEMENT;
+    sim->K_axial = acbb_axial_stiffness(sim->mech, sim->s.inner_speed, &sim->exp, &sim->ms, held);
     acbb_ring_stiffness(&sim->s, &sim->exp, sim->ms.dx, &sim->ms, &sim->K_ring);
 }
 
