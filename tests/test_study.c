@@ -26,6 +26,7 @@
 #include "acbb/units.h"
 
 #include "study_priv.h"
+#include "sim_priv.h"
 #include "test_study_preset.h"
 
 /* ---- 1. the check table on constructed results ---- */
@@ -599,6 +600,46 @@ static void test_peak_tail(void)
     ok(acbb_study_peak(small, 0, 8) && !acbb_study_peak(big, 0, 7), "peak_shape is the same rule");
 }
 
+
+/* Issue 30: the study's per-step snapshot (acbb_simx_snapshot_step) makes
+ * of each ball only the loads and the loss its hook reads, the same bits
+ * as the whole snapshot's, and leaves the rest of every ball view alone.
+ * A radial load, so the balls differ (mirror images). */
+static void test_step_snapshot(void)
+{
+    static acbb_snapshot step, whole;
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.radial_load = 300.0;
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    acbb_status rc = acbb_sim_create(&s, NULL, &sim, &err);
+    ok(rc == ACBB_OK, "a combined-load Sim (%s)", err.msg);
+    if (rc != ACBB_OK) return;
+    acbb_simx_snapshot_step(sim, &step); /* iteration 0: whole */
+    int same = 1, kept = 1, steps = 0;
+    for (; steps < 4 && acbb_sim_step(sim) == ACBB_OK; steps++) {
+        for (int j = 0; j < step.n_balls; j++) step.balls[j].psi = -1.0 - j; /* stale */
+        acbb_simx_snapshot_step(sim, &step);
+        acbb_sim_snapshot(sim, &whole);
+        same = same && step.n_balls == whole.n_balls && step.time == whole.time
+               && acbb_study_min_loss(&step) == acbb_study_min_loss(&whole)
+               && step.losses.total == whole.losses.total && step.delta_x == whole.delta_x
+               && step.exp_inner == whole.exp_inner;
+        for (int j = 0; j < whole.n_balls; j++) {
+            same = same && step.balls[j].Qi == whole.balls[j].Qi
+                   && step.balls[j].Qo == whole.balls[j].Qo
+                   && step.balls[j].loss == whole.balls[j].loss;
+            kept = kept && step.balls[j].psi == -1.0 - j;
+        }
+    }
+    ok(steps == 4 && same && whole.balls[1].Qi != whole.balls[3].Qi,
+       "step snapshot: every ball's Qi, Qo, loss and the smallest loss the whole "
+       "snapshot's, bit for bit, over %d steps (balls differ)", steps);
+    ok(kept, "step snapshot: the rest of each ball view is not made (a stale azimuth stays)");
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -609,5 +650,6 @@ int main(void)
     test_be_vs_steady();
     test_whole();
     test_compare();
+    test_step_snapshot();
     return done_testing();
 }
