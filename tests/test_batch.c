@@ -412,6 +412,8 @@ static void test_warm(void)
            worst_T <= 1e-6,
        "warm start from another point: the cold start's losses and Qi to %.2g (<= 2e-8), "
        "nodes to %.2g K (<= 1e-6)", worst, worst_T);
+    ok(warm.kept == NULL && cold.kept != NULL, "a warm-started point keeps no state (its "
+       "caller has one), a cold one does");
     ok(b->work.mechanics_solves < a->work.mechanics_solves && b->iteration <= a->iteration,
        "... with %ld mechanics solves instead of %ld, %ld iterations instead of %ld",
        b->work.mechanics_solves, a->work.mechanics_solves, b->iteration, a->iteration);

@@ -85,11 +85,12 @@ static const acbb_warm *point_warm(void *ctx, size_t i)
     return ((const study_batch *)ctx)->pts[i]->warm_from;
 }
 
-/* On the worker, point i's alone: a base point keeps its state. */
+/* On the worker, point i's alone: a base point keeps its state (a
+ * perturbed study's, started from the base's, is given none). */
 static void point_keep(void *ctx, size_t i, acbb_warm *w)
 {
     acbb_study_point *p = ((study_batch *)ctx)->pts[i];
-    if (p->warm_from || p->warm) {
+    if (p->warm) {
         acbb_warm_free(w);
         return;
     }
