@@ -306,7 +306,9 @@ acbb_status acbb_simx_evaluate(acbb_sim *sim, acbb_error *err)
 }
 
 /* Every value a snapshot publishes, checked where it is made, so that a
- * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. */
+ * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. The
+ * solved balls only: the others are their images (acbb_mech_spread; their
+ * losses copied by losses()), the same values. */
 int acbb_simx_outputs_finite(const acbb_sim *sim)
 {
     const acbb_expansion *e = &sim->exp;
@@ -314,7 +316,7 @@ int acbb_simx_outputs_finite(const acbb_sim *sim)
         || !isfinite(e->outer) || !isfinite(sim->loss.total) || !isfinite(sim->heat.inner_contact)
         || !isfinite(sim->heat.outer_contact) || !isfinite(sim->ms.Fx))
         return 0;
-    for (int j = 0; j < sim->ms.n; j++) {
+    for (int j = 0; j < acbb_mech_distinct(&sim->ms); j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
         if (!acbb_snap_contact_finite(&sim->bl[j].in) || !acbb_snap_contact_finite(&sim->bl[j].out)
             || !isfinite(b->ct_i.pmax) || !isfinite(b->ct_o.pmax) || !isfinite(b->kin.spin_i)
