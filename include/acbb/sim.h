@@ -199,6 +199,10 @@ typedef struct {
      * 0; a set skips its members' and its nose probes (set view
      * stiffness 0). 0 (the default): computed, as `acbb run` reports them. */
     int skip_stiffness;
+    /* 1: a caller that reads no rating life skips a single bearing's (its
+     * static basis at the set-up and its evaluation in each snapshot): the
+     * snapshot's `life` is then all zero. 0 (the default): computed. */
+    int skip_life;
 } acbb_sim_opts;
 /* The one constructor: compile the scene (validated again) and set the
  * initial state: all temperatures at ambient, mechanics solved at

@@ -128,14 +128,15 @@ static void point_done(void *ctx, const acbb_batch_result *r)
 
 /* One batch over any list of points (the study's own, or every perturbed
  * study's at once: study_robust.c). */
-void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
+void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int no_life,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
     study_batch b = { .pts = pts, .n = n, .progress = progress, .ctx = ctx };
     /* No study item reads a stiffness (issue 30 lever 2: skip the probes). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
                           .step = point_step, .done = point_done, .ctx = &b,
-                          .skip_stiffness = 1, .warm = point_warm, .keep = point_keep };
+                          .skip_stiffness = 1, .skip_life = no_life, .warm = point_warm,
+                          .keep = point_keep };
     acbb_batch_run(n, &o, NULL);
 }
 
@@ -150,7 +151,7 @@ static void run_all(acbb_study_point *pts, size_t n, int jobs, const atomic_int 
         return;
     }
     for (size_t i = 0; i < n; i++) list[i] = &pts[i];
-    acbb_study_run_list(list, n, jobs, cancel, NULL, NULL);
+    acbb_study_run_list(list, n, jobs, 0, cancel, NULL, NULL);
     free(list);
 }
 
@@ -281,7 +282,7 @@ static void steady_branch(acbb_study_runs *r, int jobs, const atomic_int *cancel
         p->record = 0;   /* the steady solve (point_scene) */
         list[n++] = p;
     }
-    acbb_study_run_list(list, n, jobs, cancel, NULL, NULL);
+    acbb_study_run_list(list, n, jobs, 0, cancel, NULL, NULL);
     for (size_t k = 0; k < n; k++) {
         list[k]->runaway_t = t[k];
         list[k]->record = 1;

@@ -222,7 +222,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     acbb_scene_resolve(s, &sim->resolved, NULL);
     sim->s = sim->resolved;
     s = &sim->s;
-    acbb_life_static_basis(s, &sim->life_basis); /* once per scene, not per snapshot */
+    if (!sim->skip_life) /* once per scene, not per snapshot */
+        acbb_life_static_basis(s, &sim->life_basis);
     double t0 = acbb_now_ms();
     arm_bound(sim); /* the set-up counts against fidelity.max_wall_s */
     acbb_operating op; /* schedule.h: the first row, or the last for the steady solve */
@@ -292,7 +293,8 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     acbb_scene_resolve(s, &sim->resolved, NULL);
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
-    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
+    acbb_sim_opts o = { .cancel = sim->cancel, .threads = sim->threads,
+                        .skip_stiffness = sim->skip_stiffness };
     acbb_status rc = acbb_set_sim_new(&sim->resolved, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
     sim->run.state = acbb_set_sim_outcome(sim->set, &sim->run.status, &sim->run.iter);
@@ -306,7 +308,8 @@ static acbb_status spindle_init(acbb_sim *sim, const acbb_scene *s, acbb_error *
     acbb_scene_resolve(s, &sim->resolved, NULL);
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
-    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
+    acbb_sim_opts o = { .cancel = sim->cancel, .threads = sim->threads,
+                        .skip_stiffness = sim->skip_stiffness };
     acbb_status rc = acbb_spindle_sim_new(&sim->resolved, &o, 0, &sim->spindle, err);
     if (rc != ACBB_OK) return rc;
     sim->run.state = acbb_spindle_sim_outcome(sim->spindle, &sim->run.status, &sim->run.iter);
@@ -337,6 +340,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     sim->skip_stiffness = o->skip_stiffness;
+    sim->skip_life = o->skip_life;
     sim->no_first_state = member;
     double t0 = acbb_now_ms();
     acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
@@ -414,7 +418,7 @@ void acbb_sim_free(acbb_sim *sim)
 static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     acbb_sim *fresh;
-    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness };
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness, sim->skip_life };
     acbb_status rc = acbb_sim_create(s, &o, &fresh, err);
     if (rc != ACBB_OK) return rc; /* the running sim is untouched */
     acbb_sim old = *sim;
@@ -438,6 +442,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
     fresh->skip_stiffness = sim->skip_stiffness;
+    fresh->skip_life = sim->skip_life;
     acbb_status rc = sim_init(fresh, s, keep ? T : NULL, NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);
@@ -556,7 +561,7 @@ static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
     }
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
-    acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
+    if (!sim->skip_life) acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
     o->n_bearings = 1;
 }
 
