@@ -118,6 +118,7 @@ typedef struct {
     void *ctx;                  /* passed to scene, step and done */
     int skip_stiffness;         /* acbb_sim_opts.skip_stiffness of every run */
     int skip_life;              /* acbb_sim_opts.skip_life of every run */
+    int skip_liftoff;           /* acbb_sim_opts.skip_liftoff of every run */
     acbb_batch_warm_fn warm;    /* may be NULL: every point from ambient */
     acbb_batch_keep_fn keep;    /* may be NULL: no state kept */
 } acbb_batch_opts;

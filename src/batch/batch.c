@@ -126,7 +126,8 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     acbb_status st = o->scene(o->ctx, i, &w->scene, &mode, &err);
     if (st == ACBB_OK) {
         apply_mode(&w->scene, mode);
-        acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness, o->skip_life };
+        acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness, o->skip_life,
+                             o->skip_liftoff };
         from = o->warm && w->scene.thermal_mode == ACBB_THERMAL_STEADY ? o->warm(o->ctx, i)
                                                                         : NULL;
         st = acbb_simx_create_from(&w->scene, &so, from, &sim, &err);

@@ -132,10 +132,12 @@ void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int n
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
     study_batch b = { .pts = pts, .n = n, .progress = progress, .ctx = ctx };
-    /* No study item reads a stiffness (issue 30 lever 2: skip the probes). */
+    /* No study item reads a stiffness (issue 30 lever 2: skip the probes),
+     * nor a set's preload or lift-off (the DB pair's study). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
                           .step = point_step, .done = point_done, .ctx = &b,
-                          .skip_stiffness = 1, .skip_life = no_life, .warm = point_warm,
+                          .skip_stiffness = 1, .skip_life = no_life, .skip_liftoff = 1,
+                          .warm = point_warm,
                           .keep = point_keep };
     acbb_batch_run(n, &o, NULL);
 }

@@ -294,7 +294,8 @@ static acbb_status set_init(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
     sim->s = *s;
     acbb_life_static_basis(s, &sim->life_basis);
     acbb_sim_opts o = { .cancel = sim->cancel, .threads = sim->threads,
-                        .skip_stiffness = sim->skip_stiffness };
+                        .skip_stiffness = sim->skip_stiffness,
+                        .skip_liftoff = sim->skip_liftoff };
     acbb_status rc = acbb_set_sim_new(&sim->resolved, &o, &sim->set, err);
     if (rc != ACBB_OK) return rc;
     sim->run.state = acbb_set_sim_outcome(sim->set, &sim->run.status, &sim->run.iter);
@@ -341,6 +342,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
     sim->skip_stiffness = o->skip_stiffness;
     sim->skip_life = o->skip_life;
+    sim->skip_liftoff = o->skip_liftoff;
     sim->no_first_state = member;
     double t0 = acbb_now_ms();
     acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
@@ -418,7 +420,8 @@ void acbb_sim_free(acbb_sim *sim)
 static acbb_status set_restart(acbb_sim *sim, const acbb_scene *s, acbb_error *err)
 {
     acbb_sim *fresh;
-    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness, sim->skip_life };
+    acbb_sim_opts o = { sim->cancel, sim->threads, sim->skip_stiffness, sim->skip_life,
+                        sim->skip_liftoff };
     acbb_status rc = acbb_sim_create(s, &o, &fresh, err);
     if (rc != ACBB_OK) return rc; /* the running sim is untouched */
     acbb_sim old = *sim;
@@ -443,6 +446,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     fresh->threads = sim->threads;
     fresh->skip_stiffness = sim->skip_stiffness;
     fresh->skip_life = sim->skip_life;
+    fresh->skip_liftoff = sim->skip_liftoff;
     acbb_status rc = sim_init(fresh, s, keep ? T : NULL, NULL, err);
     if (rc != ACBB_OK) {
         sim_release(fresh);
