@@ -472,11 +472,33 @@ acbb_status acbb_sim_restart(acbb_sim *sim, const acbb_scene *s, int warm, acbb_
 
 /* ---- snapshot (the per-ball and squeeze views: sim_snapshot.c) ---- */
 
-/* A step's per-ball values (acbb_simx_snapshot_step): the loads and the
- * loss, as acbb_snap_ball_view makes them; the whole views were 70 % of a
- * study's per-step snapshot (issue 30). */
-static void step_balls(const acbb_sim *sim, acbb_snapshot *o)
+/* The snapshot's losses, expansions and axial displacement. */
+static void losses_expansions(const acbb_sim *sim, acbb_snapshot *o)
 {
+    const acbb_losses *L = &sim->loss;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++) o->losses.P[l] = acbb_snap_fin(L->P[l]);
+    o->losses.total = acbb_snap_fin(L->total);
+    o->losses.inner = acbb_snap_fin(L->inner);
+    o->losses.outer = acbb_snap_fin(L->outer);
+    o->exp_ball = acbb_snap_fin(sim->exp.ball);
+    o->exp_inner = acbb_snap_fin(sim->exp.inner);
+    o->exp_inner_cen = acbb_snap_fin(sim->exp.inner_cen);
+    o->exp_outer = acbb_snap_fin(sim->exp.outer);
+    o->delta_x = acbb_snap_fin(sim->ms.dx);
+}
+
+/* A step's values for a hook that reads the losses and loads
+ * (acbb_simx_snapshot_step), each as snapshot() makes it; of each ball the
+ * loads and the loss only, as acbb_snap_ball_view makes them. The whole
+ * snapshot (ball views 70 % of it) every step cost a study 4 % (issue 30). */
+static void step_snapshot(const acbb_sim *sim, acbb_snapshot *o)
+{
+    o->state = sim->run.state;
+    o->status = sim->run.status;
+    o->iteration = sim->run.iter;
+    o->time = sim->run.time;
+    losses_expansions(sim, o);
+    o->n_balls = sim->ms.n;
     for (int j = 0; j < sim->ms.n; j++) {
         const acbb_contact_loss *in = &sim->bl[j].in, *out = &sim->bl[j].out;
         acbb_ball_view *v = &o->balls[j];
@@ -489,8 +511,7 @@ static void step_balls(const acbb_sim *sim, acbb_snapshot *o)
 }
 
 /* full 0: o holds this Sim's snapshot already; the rating life (40 % of
- * a snapshot), the clearing of the whole record (30 %) and the per-ball
- * views but their loads and loss are left out. */
+ * a snapshot) and the clearing of the whole record (30 %) are left out. */
 static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
 {
     const acbb_network *nw = &sim->nw;
@@ -530,16 +551,7 @@ static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
     o->T_housing = acbb_snap_fin(pt.housing);
     o->T_shaft = acbb_snap_fin(pt.shaft);
     o->T_cavity = acbb_snap_fin(sim->T[nw->node_cavity]);
-    const acbb_losses *L = &sim->loss;
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) o->losses.P[l] = acbb_snap_fin(L->P[l]);
-    o->losses.total = acbb_snap_fin(L->total);
-    o->losses.inner = acbb_snap_fin(L->inner);
-    o->losses.outer = acbb_snap_fin(L->outer);
-    o->exp_ball = acbb_snap_fin(sim->exp.ball);
-    o->exp_inner = acbb_snap_fin(sim->exp.inner);
-    o->exp_inner_cen = acbb_snap_fin(sim->exp.inner_cen);
-    o->exp_outer = acbb_snap_fin(sim->exp.outer);
-    o->delta_x = acbb_snap_fin(sim->ms.dx);
+    losses_expansions(sim, o);
     o->delta_z = acbb_snap_fin(sim->ms.dz);
     o->tilt_y = acbb_snap_fin(sim->ms.thy);
     o->stiffness_axial = acbb_snap_fin(sim->K_axial);
@@ -558,14 +570,9 @@ static void snapshot(const acbb_sim *sim, acbb_snapshot *o, int full)
                                 : 0.0; /* no network: no heat flows (acbb_simx_energy) */
     o->heat_out = acbb_snap_fin(sim->heat_out);
     o->n_balls = sim->ms.n;
-    if (!full) {
-        step_balls(sim, o);
-        o->n_bearings = 1;
-        return;
-    }
     for (int j = 0; j < sim->ms.n; j++)
         acbb_snap_ball_view(&sim->ms.ball[j], &sim->bl[j].in, &sim->bl[j].out, &o->balls[j]);
-    if (!sim->skip_life) acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
+    if (full && !sim->skip_life) acbb_life_compute_with(&sim->s, o, &sim->life_basis, &o->life);
     o->n_bearings = 1;
 }
 
@@ -573,7 +580,8 @@ void acbb_sim_snapshot(const acbb_sim *sim, acbb_snapshot *o) { snapshot(sim, o,
 
 void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o)
 {
-    snapshot(sim, o, sim->run.iter == 0);
+    if (sim->run.iter > 0 && !sim->set && !sim->spindle) step_snapshot(sim, o);
+    else snapshot(sim, o, sim->run.iter == 0);
 }
 
 acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out)
