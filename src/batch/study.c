@@ -86,7 +86,7 @@ static const acbb_warm *point_warm(void *ctx, size_t i)
 }
 
 /* On the worker, point i's alone: a base point keeps its state (a
- * perturbed study's, started from the base's, is given none). */
+ * perturbed study's is given none: acbb_study_run_list checks_only). */
 static void point_keep(void *ctx, size_t i, acbb_warm *w)
 {
     acbb_study_point *p = ((study_batch *)ctx)->pts[i];
@@ -128,7 +128,7 @@ static void point_done(void *ctx, const acbb_batch_result *r)
 
 /* One batch over any list of points (the study's own, or every perturbed
  * study's at once: study_robust.c). */
-void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int no_life,
+void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int checks_only,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
     study_batch b = { .pts = pts, .n = n, .progress = progress, .ctx = ctx };
@@ -136,9 +136,8 @@ void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int n
      * nor a set's preload or lift-off (the DB pair's study). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
                           .step = point_step, .done = point_done, .ctx = &b,
-                          .skip_stiffness = 1, .skip_life = no_life, .skip_liftoff = 1,
-                          .warm = point_warm,
-                          .keep = point_keep };
+                          .skip_stiffness = 1, .skip_life = checks_only, .skip_liftoff = 1,
+                          .warm = point_warm, .keep = checks_only ? NULL : point_keep };
     acbb_batch_run(n, &o, NULL);
 }
 

@@ -64,10 +64,11 @@ struct acbb_study {
 acbb_status acbb_study_plan_runs(acbb_study_runs *r, const acbb_scene *base);
 void acbb_study_free_runs(acbb_study_runs *r);
 /* Run the listed points on one pool of `jobs` threads; `progress` (may be
- * NULL) after each finished point, under a lock. no_life: the points'
- * snapshots without the rating life (acbb_sim_opts.skip_life), for run
- * sets that only the check table reads (the robustness's). */
-void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int no_life,
+ * NULL) after each finished point, under a lock. checks_only: for run sets
+ * that only the check table reads (the robustness's perturbed studies):
+ * no rating life (acbb_sim_opts.skip_life) and no state kept to start
+ * others from. */
+void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int checks_only,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx);
 
 /* The sign conditions from a run set (study_sens.c): the scene's value

@@ -226,7 +226,8 @@ static acbb_status run_ends(const acbb_study *base, const acbb_study_rob_opts *o
     if (st == ACBB_OK && !list) st = acbb_error_set(err, ACBB_ENOMEM, "robustness: out of memory");
     for (size_t j = 0; st == ACBB_OK && j < *n_ends; j++)
         n += share(&(*e)[j], &base->runs, list + n, r);
-    /* The check table reads no rating life (issue 30: 2 % of a perturbed study). */
+    /* The check table reads no rating life (issue 30: 2 % of a perturbed
+     * study), and no perturbed point starts another. */
     if (st == ACBB_OK) acbb_study_run_list(list, n, o->jobs, 1, o->cancel, o->progress, o->ctx);
     r->n_runs = st == ACBB_OK ? n : 0;
     for (size_t i = 0; i < r->n_runs; i++) r->n_failed += !list[i]->ok;
