@@ -499,7 +499,8 @@ static void step_snapshot(const acbb_sim *sim, acbb_snapshot *o)
     o->time = sim->run.time;
     losses_expansions(sim, o);
     o->n_balls = sim->ms.n;
-    for (int j = 0; j < sim->ms.n; j++) {
+    int nd = acbb_mech_distinct(&sim->ms);
+    for (int j = 0; j < nd; j++) {
         const acbb_contact_loss *in = &sim->bl[j].in, *out = &sim->bl[j].out;
         acbb_ball_view *v = &o->balls[j];
         v->Qi = acbb_snap_fin(sim->ms.ball[j].Qi);
@@ -507,6 +508,14 @@ static void step_snapshot(const acbb_sim *sim, acbb_snapshot *o)
         v->loss = 0.0;
         for (int l = 0; l < ACBB_LOSS_KINDS; l++) v->loss += in->P[l] + out->P[l];
         v->loss = acbb_snap_fin(v->loss);
+    }
+    /* the other balls are the solved ones' images (acbb_mech_spread; their
+     * losses copied by the evaluation), the same values */
+    for (int j = nd; j < sim->ms.n; j++) {
+        const acbb_ball_view *src = &o->balls[acbb_mech_source(&sim->ms, j)];
+        o->balls[j].Qi = src->Qi;
+        o->balls[j].Qo = src->Qo;
+        o->balls[j].loss = src->loss;
     }
 }
 
