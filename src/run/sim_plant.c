@@ -18,7 +18,7 @@
  * evaluation leaves the others their images (acbb_mech_spread; losses()
  * copies their losses), so restore() makes them again, the same bits.
  * Copying every ball was 3.5 % of a perturbed study of `report
- * --sensitivity` (issue 30; pure thrust solves 1 ball of 16). */
+ * --sensitivity` (issue 30; pure thrust solves 1 ball of the 7008C's 21). */
 static void save(acbb_sim *sim, checkpoint *k)
 {
     size_t nd = (size_t)acbb_mech_distinct(&sim->ms);
