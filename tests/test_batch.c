@@ -412,6 +412,8 @@ static void test_warm(void)
            worst_T <= 1e-6,
        "warm start from another point: the cold start's losses and Qi to %.2g (<= 2e-8), "
        "nodes to %.2g K (<= 1e-6)", worst, worst_T);
+    ok(warm.kept == NULL && cold.kept != NULL, "a warm-started point keeps no state (its "
+       "caller has one), a cold one does");
     ok(b->work.mechanics_solves < a->work.mechanics_solves && b->iteration <= a->iteration,
        "... with %ld mechanics solves instead of %ld, %ld iterations instead of %ld",
        b->work.mechanics_solves, a->work.mechanics_solves, b->iteration, a->iteration);
@@ -427,6 +429,30 @@ static void test_warm(void)
     acbb_warm_free(tw.kept);
 }
 
+/* Issue 30: skip_life (the robustness's runs): the rating life is neither
+ * made nor published (all zero), every other result the same bits. */
+static void test_skip_life(void)
+{
+    static acbb_snapshot with, without;
+    acbb_scene s = load("presets/7008C.ini");
+    s.thermal_mode = ACBB_THERMAL_STEADY;
+    acbb_snapshot *out[2] = { &with, &without };
+    for (int k = 0; k < 2; k++) {
+        acbb_sim_opts o = { .skip_stiffness = 1, .skip_life = k };
+        acbb_sim *sim = NULL;
+        acbb_error err = { { 0 } };
+        if (acbb_sim_create(&s, &o, &sim, &err) == ACBB_OK) acbb_sim_run(sim);
+        acbb_sim_snapshot(sim, out[k]);
+        acbb_sim_free(sim);
+    }
+    static const acbb_life zero;
+    ok(with.life.C > 0.0 && with.life.C0 > 0.0 && with.life.L10r_h > 0.0
+       && memcmp(&without.life, &zero, sizeof zero) == 0,
+       "skip_life: the life is made by default (C %.0f N), all zero when skipped", with.life.C);
+    ok(with.state == ACBB_RUN_CONVERGED && same_snap(&with, &without),
+       "skip_life: every other result bit for bit the same");
+}
+
 int main(void)
 {
     /* No gsl_set_error_handler_off here: the engine turns GSL's aborting
@@ -438,6 +464,7 @@ int main(void)
         return 1;
     }
     test_warm();
+    test_skip_life();
     test_jobs_independent(&base);
     test_cancel_serial(&base);
     test_cancel_parallel(&base);

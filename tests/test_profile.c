@@ -13,6 +13,7 @@
 #include "acbb/sim.h"
 #include "acbb/tools/scene_edit.h"
 #include "acbb/tools/scene_inactive.h"
+#include "scene_internal.h"
 
 static acbb_scene load(const char *text)
 {
@@ -58,6 +59,15 @@ static void test_table(void)
     }
     ok(acbb_profile_row_key(n) == NULL && acbb_profile_row_value(n, ACBB_PROFILE_SEED) == NULL,
        "past the table: NULL");
+    /* The row of a field, found by name (issue 30), is the row naming it. */
+    int rows_ok = 1;
+    for (size_t k = 0; k < n; k++)
+        rows_ok = rows_ok && acbb_sf_profile_field(k) != NULL
+                  && acbb_sf_profile_row(acbb_sf_profile_field(k)) == (int)k;
+    ok(rows_ok && acbb_sf_profile_row(acbb_sf_find("operating", "axial_load_N")) == -1
+       && acbb_sf_profile_row(acbb_sf_find("effects", "thermal_expansion")) == -1
+       && acbb_sf_profile_row(NULL) == -1,
+       "each row's field has that row; other keys of the same sections none");
 }
 
 static void test_load(void)

@@ -243,6 +243,31 @@ static void test_branches(acbb_snapshot *snap)
        "shared bound with time left: the other branch runs (%s)", b.steady.status);
 }
 
+/* Issue 30: a branch runs without what its summary does not read (the
+ * stiffness probes, the rating life): the summary is a full run's, bit for
+ * bit, and the skipped parts are missing (the steady solve of the runaway
+ * preset). */
+static void test_branch_run(acbb_snapshot *full, acbb_snapshot *br)
+{
+    acbb_scene s;
+    acbb_error e;
+    if (!ok(acbb_scene_load("presets/runaway-rigid-preload.ini", &s, &e) == ACBB_OK, "preset"))
+        return;
+    s.thermal_mode = ACBB_THERMAL_STEADY;
+    run(&s, full);
+    ok(acbb_branch_run(&s, NULL, br) == ACBB_OK, "branch run");
+    acbb_branch_state a, b;
+    acbb_branch_summarize(full, &a);
+    acbb_branch_summarize(br, &b);
+    ok(full->state == ACBB_RUN_CONVERGED && memcmp(&a, &b, sizeof a) == 0
+       && memcmp(full->T, br->T, sizeof full->T) == 0,
+       "branch run: the summary and temperatures of a full run, bit for bit");
+    ok(full->stiffness_failed == 0 && full->life.C > 0.0
+       && br->stiffness_failed == (ACBB_STIFF_AXIAL | ACBB_STIFF_RADIAL | ACBB_STIFF_TILT
+                                   | ACBB_STIFF_TILT_HELD) && br->life.C == 0.0,
+       "branch run: no stiffness probes, no rating life (a full run has both)");
+}
+
 int main(void)
 {
     printf("TAP version 13\n");
@@ -257,6 +282,7 @@ int main(void)
     if (a && b) {
         test_one_row(a, b);
         test_branches(a);
+        test_branch_run(a, b);
     }
     free(a);
     free(b);

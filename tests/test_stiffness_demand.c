@@ -137,6 +137,25 @@ static void test_set(void)
        && a.set.liftoff_remainder_N == b.set.liftoff_remainder_N,
        "pair: the set's preload %.17g N and lift-off %.17g N the same when skipped",
        b.set.preload_N, b.set.liftoff_thrust_N);
+    /* skip_liftoff (issue 30: the study's DB pair): no preload or lift-off
+     * probe, while running or at the end; the run's path the same bits. */
+    static acbb_snapshot c, mc;
+    acbb_sim *sim = NULL;
+    acbb_status rc = acbb_sim_create(&s, &(acbb_sim_opts){ .skip_stiffness = 1,
+                                                          .skip_liftoff = 1 }, &sim, &err);
+    if (rc == ACBB_OK) rc = acbb_sim_run(sim);
+    if (rc == ACBB_OK) {
+        acbb_sim_snapshot(sim, &c);
+        acbb_sim_bearing_snapshot(sim, 0, &mc);
+    }
+    acbb_sim_free(sim);
+    same = rc == ACBB_OK && c.losses.total == b.losses.total && c.n_nodes == b.n_nodes
+           && c.iteration == b.iteration && c.time == b.time && mc.balls[0].Qi == mb.balls[0].Qi;
+    for (int i = 0; i < c.n_nodes && same; i++) same = c.T[i] == b.T[i];
+    ok(same && b.set.preload_N > 0.0 && b.set.liftoff_thrust_N > 0.0 && c.set.preload_N == 0.0
+       && c.set.liftoff_thrust_N == 0.0,
+       "pair, skip_liftoff: no preload or lift-off (0; %.4g N and %.4g N otherwise), the same "
+       "%ld steps and state bit for bit", b.set.preload_N, b.set.liftoff_thrust_N, c.iteration);
 }
 
 int main(void)

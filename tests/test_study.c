@@ -26,6 +26,8 @@
 #include "acbb/units.h"
 
 #include "study_priv.h"
+#include "sim_priv.h"
+#include "sim_struct.h"
 #include "test_study_preset.h"
 
 /* ---- 1. the check table on constructed results ---- */
@@ -599,6 +601,90 @@ static void test_peak_tail(void)
     ok(acbb_study_peak(small, 0, 8) && !acbb_study_peak(big, 0, 7), "peak_shape is the same rule");
 }
 
+
+/* The default scene under a 300 N radial load (its balls differ: mirror
+ * images), set up; NULL (and a failed check) if it does not. */
+static acbb_sim *combined_sim(void)
+{
+    acbb_scene s;
+    acbb_scene_default(&s);
+    s.radial_load = 300.0;
+    acbb_sim *sim = NULL;
+    acbb_error err = { { 0 } };
+    if (acbb_sim_create(&s, NULL, &sim, &err) != ACBB_OK) ok(0, "a combined-load Sim (%s)", err.msg);
+    return sim;
+}
+
+/* Issue 30: a single bearing's step checkpoint (sim_plant.c) holds the
+ * solved balls only and restores the others as their images: every ball
+ * view (loads, angles, speeds, film, losses) comes back bit for bit, and
+ * the checkpoint's other balls are never written. A radial load: 11 of 21
+ * balls solved (mirror images). */
+static void test_checkpoint(void)
+{
+    static acbb_snapshot before, after;
+    acbb_sim *sim = combined_sim();
+    if (!sim) return;
+    for (int k = 0; k < 3; k++) acbb_sim_step(sim);
+    acbb_plant p;
+    acbb_simx_plant(sim, &p);
+    int n = sim->ms.n, nd = acbb_mech_distinct(&sim->ms);
+    for (int j = 0; j < ACBB_MAX_BALLS; j++) sim->keep->ms.ball[j].Qi = -1.0; /* untouched mark */
+    acbb_sim_snapshot(sim, &before);
+    p.save(p.ctx, ACBB_KEEP_LAST);
+    int untouched = 1;
+    for (int j = nd; j < n; j++) untouched = untouched && sim->keep->ms.ball[j].Qi == -1.0;
+    acbb_sim_step(sim); /* moves every ball */
+    int moved = sim->ms.ball[n - 1].Qi != before.balls[n - 1].Qi;
+    p.restore(p.ctx, ACBB_KEEP_LAST);
+    acbb_sim_snapshot(sim, &after);
+    int same = after.n_balls == n && after.delta_x == before.delta_x
+               && after.reaction_x == before.reaction_x
+               && memcmp(&after.losses, &before.losses, sizeof before.losses) == 0
+               && memcmp(after.balls, before.balls, sizeof before.balls[0] * (size_t)n) == 0;
+    ok(nd < n && untouched && moved && same,
+       "checkpoint: %d of %d balls kept, the other %d never written; after a step, every ball "
+       "view and the losses restored bit for bit", nd, n, n - nd);
+    acbb_sim_free(sim);
+}
+
+/* Issue 30: the study's per-step snapshot (acbb_simx_snapshot_step) makes
+ * of each ball only the loads and the loss its hook reads, the same bits
+ * as the whole snapshot's, and leaves the rest of every ball view alone.
+ * A radial load, so the balls differ (mirror images). */
+static void test_step_snapshot(void)
+{
+    static acbb_snapshot step, whole;
+    acbb_sim *sim = combined_sim();
+    if (!sim) return;
+    acbb_simx_snapshot_step(sim, &step); /* iteration 0: whole */
+    int same = 1, kept = 1, steps = 0;
+    for (; steps < 4 && acbb_sim_step(sim) == ACBB_OK; steps++) {
+        for (int j = 0; j < step.n_balls; j++) step.balls[j].psi = -1.0 - j; /* stale */
+        step.T[0] = -1.0;
+        acbb_simx_snapshot_step(sim, &step);
+        acbb_sim_snapshot(sim, &whole);
+        same = same && step.n_balls == whole.n_balls && step.time == whole.time
+               && acbb_study_min_loss(&step) == acbb_study_min_loss(&whole)
+               && step.losses.total == whole.losses.total && step.delta_x == whole.delta_x
+               && step.exp_inner == whole.exp_inner && step.exp_inner_cen == whole.exp_inner_cen
+               && step.exp_outer == whole.exp_outer && step.exp_ball == whole.exp_ball
+               && step.iteration == whole.iteration && step.state == whole.state;
+        for (int j = 0; j < whole.n_balls; j++) {
+            same = same && step.balls[j].Qi == whole.balls[j].Qi
+                   && step.balls[j].Qo == whole.balls[j].Qo
+                   && step.balls[j].loss == whole.balls[j].loss;
+            kept = kept && step.balls[j].psi == -1.0 - j;
+        }
+        kept = kept && step.T[0] == -1.0;
+    }
+    ok(steps == 4 && same && whole.balls[1].Qi != whole.balls[3].Qi,
+       "step snapshot: every ball's Qi, Qo, loss and the smallest loss the whole "
+       "snapshot's, bit for bit, over %d steps (balls differ)", steps);
+    ok(kept, "step snapshot: the rest is not made (a stale azimuth and temperature stay)");
+    acbb_sim_free(sim);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -609,5 +695,7 @@ int main(void)
     test_be_vs_steady();
     test_whole();
     test_compare();
+    test_step_snapshot();
+    test_checkpoint();
     return done_testing();
 }

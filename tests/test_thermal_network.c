@@ -194,6 +194,15 @@ static void test_singular(void)
     is_close(0.5 * (T[1] + T[2]), 20.0 + 1.0 * 1.0 / 4.0, 1e-13, 0,
              "floating pair mean rises by q dt / C_total");
     ok(acbb_tnet_steady(n, Q, T) == ACBB_SINGULAR, "still SINGULAR for steady");
+    /* The connectivity check is kept between factorisations (issue 30)
+     * until a capacity, a fixed node or an edge changes. */
+    acbb_tnet_set_capacity(n, 1, 0.0);
+    acbb_tnet_set_capacity(n, 2, 0.0);
+    ok(acbb_tnet_step(n, Q, 2.0, T) == ACBB_SINGULAR,
+       "capacities back to zero: step SINGULAR again");
+    acbb_tnet_add_edge(n, 2, 3, 1.0);
+    ok(acbb_tnet_steady(n, Q, T) == ACBB_OK && acbb_tnet_step(n, Q, 2.0, T) == ACBB_OK,
+       "an edge to the fixed node's side: steady and step OK");
     acbb_tnet_free(n);
 
     acbb_tnet *m = acbb_tnet_new(2);   /* no fixed node at all */

@@ -73,7 +73,8 @@ void acbb_warm_free(acbb_warm *w);
  * while the point sets up. Used for steady points: a transient's path
  * starts from ambient whatever is given. */
 typedef const acbb_warm *(*acbb_batch_warm_fn)(void *ctx, size_t i);
-/* Point i converged as a single bearing: its state, now the callee's. */
+/* Point i converged as a single bearing from no warm start: its state,
+ * now the callee's (a point started from one keeps none). */
 typedef void (*acbb_batch_keep_fn)(void *ctx, size_t i, acbb_warm *w);
 
 typedef enum {
@@ -116,6 +117,8 @@ typedef struct {
     acbb_batch_done_fn done;    /* may be NULL */
     void *ctx;                  /* passed to scene, step and done */
     int skip_stiffness;         /* acbb_sim_opts.skip_stiffness of every run */
+    int skip_life;              /* acbb_sim_opts.skip_life of every run */
+    int skip_liftoff;           /* acbb_sim_opts.skip_liftoff of every run */
     acbb_batch_warm_fn warm;    /* may be NULL: every point from ambient */
     acbb_batch_keep_fn keep;    /* may be NULL: no state kept */
 } acbb_batch_opts;

@@ -199,6 +199,14 @@ typedef struct {
      * 0; a set skips its members' and its nose probes (set view
      * stiffness 0). 0 (the default): computed, as `acbb run` reports them. */
     int skip_stiffness;
+    /* 1: a caller that reads no rating life skips a single bearing's (its
+     * static basis at the set-up and its evaluation in each snapshot): the
+     * snapshot's `life` is then all zero. 0 (the default): computed. */
+    int skip_life;
+    /* 1: a caller that reads neither skips a bearing set's preload and
+     * lift-off probes (shaft solves after every transient step and at the
+     * end): the set view's preload_N and liftoff_N are then 0. */
+    int skip_liftoff;
 } acbb_sim_opts;
 /* The one constructor: compile the scene (validated again) and set the
  * initial state: all temperatures at ambient, mechanics solved at

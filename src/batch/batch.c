@@ -122,12 +122,14 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     acbb_error err = { { 0 } };
     acbb_batch_mode mode = o->mode;
     acbb_sim *sim = NULL;
+    const acbb_warm *from = NULL;
     acbb_status st = o->scene(o->ctx, i, &w->scene, &mode, &err);
     if (st == ACBB_OK) {
         apply_mode(&w->scene, mode);
-        acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness };
-        const acbb_warm *from = o->warm && w->scene.thermal_mode == ACBB_THERMAL_STEADY
-                              ? o->warm(o->ctx, i) : NULL;
+        acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness, o->skip_life,
+                             o->skip_liftoff };
+        from = o->warm && w->scene.thermal_mode == ACBB_THERMAL_STEADY ? o->warm(o->ctx, i)
+                                                                        : NULL;
         st = acbb_simx_create_from(&w->scene, &so, from, &sim, &err);
     }
     if (st == ACBB_OK) {
@@ -136,7 +138,8 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
         st = acbb_sim_drive(sim, &ctl);
         acbb_sim_snapshot(sim, &w->snap);
         r->snap = &w->snap;
-        acbb_warm *kept = o->keep ? acbb_simx_warm_save(sim) : NULL;
+        /* a warm-started point's state starts nothing: its caller has one */
+        acbb_warm *kept = o->keep && !from ? acbb_simx_warm_save(sim) : NULL;
         if (kept) o->keep(o->ctx, i, kept);
         snprintf(w->msg, sizeof w->msg, "%s", w->snap.message);
     } else {

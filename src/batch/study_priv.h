@@ -63,9 +63,22 @@ struct acbb_study {
 /* The run set of `base` (nothing runs yet); ACBB_ENOMEM. */
 acbb_status acbb_study_plan_runs(acbb_study_runs *r, const acbb_scene *base);
 void acbb_study_free_runs(acbb_study_runs *r);
+/* End `hi` of input `in` planned from the base study's run set `b`: each
+ * point's scene is b's with the end applied. The study's edits touch
+ * other keys than the input's, so every scene is the one
+ * acbb_study_plan_runs makes from the base scene with the end applied,
+ * with one key edit a point instead of four or five (issue 30); the
+ * cross-field rules run as there, once on the final scene. 1; 0 (nothing
+ * planned) when a point of b was skipped (no base scene to start from) or
+ * out of memory. */
+int acbb_study_plan_end(acbb_study_runs *r, const acbb_study_runs *b, const acbb_sens_input *in,
+                        int hi);
 /* Run the listed points on one pool of `jobs` threads; `progress` (may be
- * NULL) after each finished point, under a lock. */
-void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs,
+ * NULL) after each finished point, under a lock. checks_only: for run sets
+ * that only the check table reads (the robustness's perturbed studies):
+ * no rating life (acbb_sim_opts.skip_life) and no state kept to start
+ * others from. */
+void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int checks_only,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx);
 
 /* The sign conditions from a run set (study_sens.c): the scene's value

@@ -74,10 +74,41 @@ acbb_status acbb_study_rob_check_keys(const acbb_scene *s, const acbb_study_rob_
     return check_keys(o, in, acbb_sens_inputs(s, in, ACBB_SENS_MAX), err);
 }
 
+int acbb_study_plan_end(acbb_study_runs *r, const acbb_study_runs *b, const acbb_sens_input *in,
+                        int hi)
+{
+    for (size_t i = 0; i < b->n; i++)
+        if (b->all[i].skip) return 0;
+    *r = (acbb_study_runs){ .model = b->model, .n = b->n };
+    if (!(r->all = calloc(b->n, sizeof *r->all))) return 0;
+    for (int lv = 0; lv < 2; lv++)
+        for (int k = 0; k < ACBB_STUDY_NSWEEPS; k++)
+            r->sweep[lv][k] = r->all + (b->sweep[lv][k] - b->all);
+    r->zero = r->all + (b->zero - b->all);
+    r->statics = r->all + (b->statics - b->all);
+    for (size_t i = 0; i < b->n; i++) {
+        acbb_study_point *p = &r->all[i];
+        acbb_error err = { { 0 } };
+        p->scene = b->all[i].scene;
+        p->record = b->all[i].record;
+        p->min_loss = INFINITY;
+        memcpy(p->label, b->all[i].label, sizeof p->label);
+        acbb_status st = acbb_sens_apply(&p->scene, in, hi, &err);
+        if (st == ACBB_OK) st = acbb_scene_validate(&p->scene, &err);
+        if (st != ACBB_OK) {
+            p->status = st;
+            p->skip = 1;
+            snprintf(p->message, sizeof p->message, "%s", err.msg);
+        }
+    }
+    return 1;
+}
+
 /* The ends of the selected inputs that differ from the scene's value, each
  * with its (unrun) run set. */
-static acbb_status plan_ends(const acbb_scene *base, const acbb_study_rob_opts *o, rob_end **out,
-                             size_t *n_out, acbb_study_rob *r, acbb_error *err)
+static acbb_status plan_ends(const acbb_scene *base, const acbb_study_runs *base_runs,
+                             const acbb_study_rob_opts *o, rob_end **out, size_t *n_out,
+                             acbb_study_rob *r, acbb_error *err)
 {
     acbb_sens_input in[ACBB_SENS_MAX];
     size_t n = acbb_sens_inputs(base, in, ACBB_SENS_MAX), m = 0;
@@ -99,7 +130,8 @@ static acbb_status plan_ends(const acbb_scene *base, const acbb_study_rob_opts *
             }
             e[m].in = in[i];
             snprintf(e[m].value, sizeof e[m].value, "%s", hi ? in[i].hi : in[i].lo);
-            if (acbb_study_plan_runs(&e[m].runs, &t) != ACBB_OK)
+            if (!acbb_study_plan_end(&e[m].runs, base_runs, &in[i], hi)
+                && acbb_study_plan_runs(&e[m].runs, &t) != ACBB_OK)
                 st = acbb_error_set(err, ACBB_ENOMEM, "robustness: out of memory");
             m++;
         }
@@ -219,14 +251,16 @@ static void signs(const acbb_study_runs *base, const rob_end *e, size_t n_ends, 
 static acbb_status run_ends(const acbb_study *base, const acbb_study_rob_opts *o, rob_end **e,
                             size_t *n_ends, acbb_study_rob *r, acbb_error *err)
 {
-    acbb_status st = plan_ends(&base->base, o, e, n_ends, r, err);
+    acbb_status st = plan_ends(&base->base, &base->runs, o, e, n_ends, r, err);
     size_t cap = 0, n = 0;
     for (size_t j = 0; st == ACBB_OK && j < *n_ends; j++) cap += (*e)[j].runs.n;
     acbb_study_point **list = st == ACBB_OK ? malloc((cap ? cap : 1) * sizeof *list) : NULL;
     if (st == ACBB_OK && !list) st = acbb_error_set(err, ACBB_ENOMEM, "robustness: out of memory");
     for (size_t j = 0; st == ACBB_OK && j < *n_ends; j++)
         n += share(&(*e)[j], &base->runs, list + n, r);
-    if (st == ACBB_OK) acbb_study_run_list(list, n, o->jobs, o->cancel, o->progress, o->ctx);
+    /* The check table reads no rating life (issue 30: 2 % of a perturbed
+     * study), and no perturbed point starts another. */
+    if (st == ACBB_OK) acbb_study_run_list(list, n, o->jobs, 1, o->cancel, o->progress, o->ctx);
     r->n_runs = st == ACBB_OK ? n : 0;
     for (size_t i = 0; i < r->n_runs; i++) r->n_failed += !list[i]->ok;
     free(list);

@@ -13,6 +13,7 @@
  * GSL's dense one on the 46-node network (issue 30 lever 3). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_vector.h>
 #include "thermal_network.h"
@@ -26,6 +27,7 @@ typedef struct {
     int dirty;               /* matrix inputs changed since factorisation */
     int valid;               /* a successful factorisation is stored */
     double dt;               /* transient only: dt of the stored factors */
+    long conn_topo;          /* the net's topo when components_ok last held (0: never) */
 } tn_factor;
 
 struct acbb_tnet {
@@ -36,6 +38,9 @@ struct acbb_tnet {
     int *fidx;               /* node -> free index, or -1 */
     int nf;                  /* number of free nodes */
     int map_dirty;           /* fidx/nf need recomputing */
+    long topo;               /* bumped when components_ok's answer may change (fixed
+                              * nodes, capacities, edges): most factorisations follow
+                              * a new resistance only (issue 30) */
 
     int n_edges, cap_edges;
     int *ea, *eb;
@@ -83,6 +88,7 @@ acbb_tnet *acbb_tnet_new(int n_nodes)
         return NULL;
     }
     net->map_dirty = 1;
+    net->topo = 1;
     net->tr.dirty = net->st.dirty = 1;
     return net;
 }
@@ -116,6 +122,7 @@ acbb_status acbb_tnet_set_capacity(acbb_tnet *net, int node, double C)
     if (!node_ok(net, node) || !isfinite(C) || C < 0.0) return ACBB_EINVAL;
     if (net->C[node] != C) {
         net->C[node] = C;
+        net->topo++;
         mark_dirty(net, 1, 0);   /* the steady matrix G does not use C */
     }
     return ACBB_OK;
@@ -133,6 +140,7 @@ acbb_status acbb_tnet_set_fixed(acbb_tnet *net, int node, double T)
     if (!net->fixed[node]) {
         net->fixed[node] = 1;
         net->map_dirty = 1;
+        net->topo++;
         mark_dirty(net, 1, 1);
     }
     return ACBB_OK;
@@ -159,6 +167,7 @@ int acbb_tnet_add_edge(acbb_tnet *net, int a, int b, double R)
         net->cap_edges = cap;
     }
     int e = net->n_edges++;
+    net->topo++;
     net->ea[e] = a;
     net->eb[e] = b;
     net->R[e] = R;
@@ -253,7 +262,10 @@ static acbb_status factorise(acbb_tnet *net, tn_factor *f, double inv_dt)
         f->valid = 1;
         return ACBB_OK;
     }
-    if (!components_ok(net, inv_dt == 0.0)) return ACBB_SINGULAR;
+    if (f->conn_topo != net->topo) {
+        if (!components_ok(net, inv_dt == 0.0)) return ACBB_SINGULAR;
+        f->conn_topo = net->topo;
+    }
     gsl_matrix_view A = gsl_matrix_submatrix(f->lu, 0, 0, (size_t)nf, (size_t)nf);
     double *a = A.matrix.data;
     size_t lda = A.matrix.tda;

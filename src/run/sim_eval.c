@@ -29,18 +29,23 @@ static void contact_input(const acbb_sim *sim, const acbb_ball_state *b, int inn
     acbb_mech_contact_input(acbb_mech_geometry(sim->mech), b, inner, sim->s.inner_speed, c);
 }
 
-/* Oil at the two contact inlets and the oil-air mixture of the cavity. */
-static void lubricant(const acbb_sim *sim, acbb_oil_state *oi, acbb_oil_state *oo,
-                      acbb_oil_state *oc_out, acbb_mixture *mix)
+/* The oil at the two contact inlets and the oil-air mixture of the cavity
+ * at T^k: made once per evaluation, for the Level-2 passes and the losses
+ * alike (they read the same temperatures; 2.4 % of a perturbed study of
+ * `report --sensitivity` when made twice, issue 30). */
+typedef struct {
+    acbb_oil_state i, o, c;
+    acbb_mixture mix;
+} oil_env;
+
+static void lubricant(const acbb_sim *sim, oil_env *e)
 {
     double Tin_i, Tin_o;
-    acbb_oil_state oc;
     acbb_network_inlet_temps(&sim->nw, sim->T, &Tin_i, &Tin_o);
-    acbb_oil_at(&sim->s, Tin_i, oi);
-    acbb_oil_at(&sim->s, Tin_o, oo);
-    acbb_oil_at(&sim->s, sim->T[sim->nw.node_cavity], &oc);
-    acbb_mixture_at(&sim->s, &oc, mix);
-    *oc_out = oc;
+    acbb_oil_at(&sim->s, Tin_i, &e->i);
+    acbb_oil_at(&sim->s, Tin_o, &e->o);
+    acbb_oil_at(&sim->s, sim->T[sim->nw.node_cavity], &e->c);
+    acbb_mixture_at(&sim->s, &e->c, &e->mix);
 }
 
 /* Contact heat of one contact, by where the table sends it. */
@@ -107,11 +112,8 @@ static double skip_tol(const acbb_sim *sim, double transient)
 }
 
 /* Every loss of the table at the current mechanics; fills sim->loss and heat. */
-static acbb_status losses(acbb_sim *sim)
+static acbb_status losses(acbb_sim *sim, const oil_env *oil)
 {
-    acbb_oil_state oil_i, oil_o, oil_c;
-    acbb_mixture mix;
-    lubricant(sim, &oil_i, &oil_o, &oil_c, &mix);
     int nb = acbb_mech_distinct(&sim->ms);
     /* As the Level-2 skip (mechanics()): transient steps of non-symmetric
      * scenes only, so pure thrust and the steady polish compute every ball. */
@@ -123,7 +125,7 @@ static acbb_status losses(acbb_sim *sim)
         const acbb_ball_state *b = &sim->ms.ball[j];
         double w = acbb_mech_weight(&sim->ms, j);
         ball_loss *bl = &sim->bl[j];
-        acbb_status rc = ball_losses(sim, b, &oil_i, &oil_o, tol, bl);
+        acbb_status rc = ball_losses(sim, b, &oil->i, &oil->o, tol, bl);
         if (rc != ACBB_OK)
             return rc;
         for (int l = 0; l < ACBB_LOSS_KINDS; l++)
@@ -133,7 +135,7 @@ static acbb_status losses(acbb_sim *sim)
         wm_sum += w * b->kin.omega_m;
     }
     for (int j = nb; j < sim->ms.n; j++) sim->bl[j] = sim->bl[acbb_mech_source(&sim->ms, j)];
-    bearing_losses(sim, &mix, &oil_c, wm_sum / sim->ms.n, &L, &H);
+    bearing_losses(sim, &oil->mix, &oil->c, wm_sum / sim->ms.n, &L, &H);
     for (int l = 0; l < ACBB_LOSS_KINDS; l++) L.total += L.P[l];
     L.inner = H.inner_contact;
     L.outer = H.outer_contact;
@@ -240,7 +242,7 @@ static acbb_status level2_pass(acbb_sim *sim, const acbb_oil_state *oi, const ac
 /* Equilibrium, and at the quasi-dynamic level the ball speeds from
  * traction equilibrium, iterated a few passes (the remaining mismatch
  * shrinks over the thermal steps; the final polish converges it). */
-static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
+static acbb_status mechanics(acbb_sim *sim, const oil_env *oil, acbb_error *err)
 {
     /* Inside a transient step with warm ball speeds the Level-2 pass below
      * re-solves the equilibrium anyway, so the first solve is skipped (the
@@ -248,9 +250,6 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
     int warm = (sim->qd || sim->dyn) && sim->transient_pass && sim->ms.ball[0].traction_valid;
     acbb_status rc = warm ? ACBB_OK : mech_solve(sim, err);
     if (rc != ACBB_OK || (!sim->qd && !sim->dyn)) return rc;
-    acbb_oil_state oi, oo, oc;
-    acbb_mixture mix;
-    lubricant(sim, &oi, &oo, &oc, &mix);
     /* One pass per transient step: the thermal steps iterate the coupling
      * anyway; the set-up converges it fully. So does the steady polish,
      * whose Picard iterations (to 1e-9 K) also carry the coupling when
@@ -269,9 +268,10 @@ static acbb_status mechanics(acbb_sim *sim, acbb_error *err)
         double change = 0.0;
         if ((rc = acbb_simx_stop_check(sim, err)) != ACBB_OK) return rc;
         if (sim->dyn)
-            rc = ball_dynamics(sim, &oi, &oo, &mix, &change, err);
+            rc = ball_dynamics(sim, &oil->i, &oil->o, &oil->mix, &change, err);
         else
-            rc = level2_pass(sim, &oi, &oo, &mix, many ? sim->polish_relax : 1.0, &change, err);
+            rc = level2_pass(sim, &oil->i, &oil->o, &oil->mix, many ? sim->polish_relax : 1.0,
+                             &change, err);
         if (rc != ACBB_OK) return rc;
         rc = mech_solve(sim, err);
         if (rc != ACBB_OK || change < QD_TOL) return rc;
@@ -286,9 +286,11 @@ acbb_status acbb_simx_evaluate(acbb_sim *sim, acbb_error *err)
         expansions(sim);
     else
         sim->exp = (acbb_expansion){ 0 };
-    acbb_status rc = mechanics(sim, err);
+    oil_env oil;
+    lubricant(sim, &oil);
+    acbb_status rc = mechanics(sim, &oil, err);
     if (rc != ACBB_OK) return rc;
-    rc = losses(sim);
+    rc = losses(sim, &oil);
     if (rc == ACBB_OK && !acbb_simx_outputs_finite(sim)) rc = ACBB_NONFINITE;
     if (rc != ACBB_OK)
         return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "
@@ -305,7 +307,9 @@ acbb_status acbb_simx_evaluate(acbb_sim *sim, acbb_error *err)
 }
 
 /* Every value a snapshot publishes, checked where it is made, so that a
- * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. */
+ * NaN ends the run with ACBB_NONFINITE instead of reaching a screen. The
+ * solved balls only: the others are their images (acbb_mech_spread; their
+ * losses copied by losses()), the same values. */
 int acbb_simx_outputs_finite(const acbb_sim *sim)
 {
     const acbb_expansion *e = &sim->exp;
@@ -313,7 +317,7 @@ int acbb_simx_outputs_finite(const acbb_sim *sim)
         || !isfinite(e->outer) || !isfinite(sim->loss.total) || !isfinite(sim->heat.inner_contact)
         || !isfinite(sim->heat.outer_contact) || !isfinite(sim->ms.Fx))
         return 0;
-    for (int j = 0; j < sim->ms.n; j++) {
+    for (int j = 0; j < acbb_mech_distinct(&sim->ms); j++) {
         const acbb_ball_state *b = &sim->ms.ball[j];
         if (!acbb_snap_contact_finite(&sim->bl[j].in) || !acbb_snap_contact_finite(&sim->bl[j].out)
             || !isfinite(b->ct_i.pmax) || !isfinite(b->ct_o.pmax) || !isfinite(b->kin.spin_i)
@@ -333,22 +337,23 @@ void acbb_simx_expand(acbb_sim *b)
  * (mechanics() without the equilibrium solves: the set solves those). */
 acbb_status acbb_simx_traction(acbb_sim *b, double *change, acbb_error *err)
 {
-    acbb_oil_state oi, oo, oc;
-    acbb_mixture mix;
-    lubricant(b, &oi, &oo, &oc, &mix);
+    oil_env oil;
+    lubricant(b, &oil);
     *change = 0.0;
-    if (b->dyn) return ball_dynamics(b, &oi, &oo, &mix, change, err);
+    if (b->dyn) return ball_dynamics(b, &oil.i, &oil.o, &oil.mix, change, err);
     b->work.traction_solves++;
     acbb_qd_set_skip(b->qd, skip_tol(b, QD_SKIP_TOL));
     acbb_qd_set_path(b->qd, b->transient_pass);
     return acbb_qd_update(b->qd, &b->s, &b->quad, acbb_mech_geometry(b->mech), b->s.inner_speed,
-                          &oi, &oo, &mix, &b->ms, change, err);
+                          &oil.i, &oil.o, &oil.mix, &b->ms, change, err);
 }
 
 /* acbb_simx_evaluate() after the mechanics: losses, network resistances, heat. */
 acbb_status acbb_simx_heat(acbb_sim *b, acbb_error *err)
 {
-    acbb_status rc = losses(b);
+    oil_env oil;
+    lubricant(b, &oil);
+    acbb_status rc = losses(b, &oil);
     if (rc == ACBB_OK && !acbb_simx_outputs_finite(b)) rc = ACBB_NONFINITE;
     if (rc != ACBB_OK)
         return acbb_error_set(err, rc, "non-finite loss, film or kinematics value caught; "

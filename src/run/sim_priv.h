@@ -28,8 +28,10 @@ double acbb_snap_max_pmax(const acbb_mech_state *ms);
 
 /* acbb_sim_snapshot for a drive hook (sim.h), which sees iteration 0
  * first: there the whole snapshot; after a step o holds this Sim's and
- * every value is refreshed but the rating life (a set's whole). For a
- * hook that reads every step's losses and loads (the study's, study.c). */
+ * only the state, status, iteration, time, losses, expansions, delta_x and
+ * each ball's Qi, Qo and loss are refreshed (a set's whole but its rating
+ * life). For a hook that reads every step's losses and loads (the
+ * study's, study.c). */
 void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o);
 
 /* A converged single bearing's temperatures and mechanics (batch.h

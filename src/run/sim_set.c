@@ -296,6 +296,7 @@ static void plant_converge(void *ctx)
         ss->K_rad = ss->K_tilt = NAN;
     else
         acbb_set_nose_stiffness(ss);
+    if (ss->b[0]->skip_liftoff) return; /* none read (acbb_sim_opts.skip_liftoff) */
     ss->preload = acbb_set_preload_now(ss);
     ss->preload_stale = 0;
     ss->liftoff = acbb_set_liftoff(ss, 0.0); /* from the live one (publish) */
@@ -342,7 +343,8 @@ static void publish(acbb_set_sim *ss, int iterate)
     int steady = ss->s.thermal_mode == ACBB_THERMAL_STEADY;
     if (ss->run.state == ACBB_RUN_RUNNING && iterate && steady) {
         ss->preload_stale = 1;
-    } else if (ss->run.state == ACBB_RUN_RUNNING || ss->preload_stale) {
+    } else if (!ss->b[0]->skip_liftoff /* none read (acbb_sim_opts.skip_liftoff) */
+               && (ss->run.state == ACBB_RUN_RUNNING || ss->preload_stale)) {
         ss->preload = acbb_set_preload_now(ss);
         ss->preload_stale = 0;
         if (ss->run.state == ACBB_RUN_RUNNING && !steady) live_liftoff(ss);

@@ -80,6 +80,8 @@ struct acbb_sim {
     int fixed_axial;           /* displacement preload: dx held at fixed_dx */
     int threads;               /* dynamic-level workers over the balls (acbb_sim_opts) */
     int skip_stiffness;        /* acbb_sim_opts.skip_stiffness */
+    int skip_life;             /* acbb_sim_opts.skip_life */
+    int skip_liftoff;          /* acbb_sim_opts.skip_liftoff (a set reads its members') */
     double fixed_dx;
     long reported;             /* last iteration handed to a drive hook; -1 none */
     acbb_set_sim *set;         /* a bearing set (sim_set.c, MODEL.md 14), else NULL */

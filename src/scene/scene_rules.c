@@ -249,7 +249,9 @@ static acbb_status rule_surroundings(const acbb_scene *s, acbb_error *err)
     acbb_surroundings u;
     acbb_scene_surroundings(s, &u);
     char a[40], b[40];
-    const char *od = show(s, "bearing", "outer_diameter_mm", b);
+    /* The bearing OD is formatted only for a message: every validation
+     * formatted it (each `--set`-style edit of a study point validates the
+     * scene), 2 % of a perturbed study of `report --sensitivity` (issue 30). */
     if (s->housing_bc == ACBB_BC_DERIVED)
         return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_exterior = derived: only "
                               "the shaft bore and the end cap derive their boundary; the housing "
@@ -258,13 +260,15 @@ static acbb_status rule_surroundings(const acbb_scene *s, acbb_error *err)
         return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_outer_diameter_mm = %s "
                               "with bearing.outer_diameter_mm = %s: the housing must be larger "
                               "than the bearing (0 = derive %.4g mm)",
-                              show(s, "surroundings", "housing_outer_diameter_mm", a), od,
+                              show(s, "surroundings", "housing_outer_diameter_mm", a),
+                              show(s, "bearing", "outer_diameter_mm", b),
                               0.120e3 * s->outer_diameter / (68 * 1e-3));
     if (!(u.cap_od > s->outer_diameter))
         return acbb_error_set(err, ACBB_EINVAL, "surroundings.cap_outer_diameter_mm = %s with "
                               "bearing.outer_diameter_mm = %s: the end cap must cover the outer "
                               "ring face and reach the housing (> the bearing OD; 0 = the housing "
-                              "outer diameter)", show(s, "surroundings", "cap_outer_diameter_mm", a), od);
+                              "outer diameter)", show(s, "surroundings", "cap_outer_diameter_mm", a),
+                              show(s, "bearing", "outer_diameter_mm", b));
     double need = s->width + 2.0 * fmax(u.shoulder_thickness, u.cap_thickness);
     if (u.housing_length < need * (1.0 - 1e-12))
         return acbb_error_set(err, ACBB_EINVAL, "surroundings.housing_length_mm = %s (%.4g mm "

@@ -62,8 +62,10 @@ acbb_status acbb_branches_compare(const acbb_scene *s, const acbb_snapshot *run,
                                   acbb_branches *out, acbb_error *err);
 
 /* One run of s as it is, to its end, into `snap` (a run that never
- * started: state failed, its status and message). ACBB_OK also when the
- * run fails; ACBB_CANCELLED, ACBB_ENOMEM. */
+ * started: state failed, its status and message), without what no branch
+ * summary reads: the end-of-run stiffness (reported missing, as
+ * acbb_sim_opts.skip_stiffness) and the rating life (zero, skip_life).
+ * ACBB_OK also when the run fails; ACBB_CANCELLED, ACBB_ENOMEM. */
 acbb_status acbb_branch_run(const acbb_scene *s, const acbb_atomic_int *cancel, acbb_snapshot *snap);
 
 /* The summary above of a finished run. */
