@@ -282,18 +282,21 @@ static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const
                                 int jn)
 {
     double J[16], f[4], xa[4];
-    if (q->J_ok[j] && broyden_from(q, c, j, j, x, x))
+    int own = q->J_ok[j];
+    if (own && broyden_from(q, c, j, j, x, x))
         return ACBB_OK;
-    int from_nb = !q->J_ok[j] && xn;
+    int from_nb = !own && xn;
     if (from_nb && broyden_from(q, c, j, jn, xn, x))
         return ACBB_OK;
-    /* Transient steps (skip_tol > 0, non-symmetric scenes) and starts from
-     * a neighbour: Newton with the analytic Jacobian before the hybrid
+    /* Transient steps (skip_tol > 0, non-symmetric scenes), starts from a
+     * neighbour and a failed Broyden solve from the ball's own Jacobian
+     * (the set-up's second pass, after the first equilibrium moved every
+     * load: issue 30): Newton with the analytic Jacobian before the hybrid
      * solver (3-4 steps of about three evaluations each against ~30
      * evaluations; as the first choice it cost more than Broyden's ~5.7,
      * BENCHMARKS.md round 3). */
     memcpy(xa, from_nb ? xn : x, sizeof xa);
-    if ((q->skip_tol > 0.0 || from_nb) && newton_analytic(c, xa, J)) {
+    if ((q->skip_tol > 0.0 || from_nb || own) && newton_analytic(c, xa, J)) {
         memcpy(q->J[j], J, sizeof J);
         q->J_ok[j] = 1;
         memcpy(x, xa, sizeof xa);
