@@ -245,21 +245,21 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
     return newton(q, F, x); /* leave the solver at the accepted root */
 }
 
-/* Broyden for ball j from x0 with the Jacobian of ball `from`: 1 with x
- * the root and J kept as ball j's. In a transient's steps, after a slow
+/* Broyden for ball j from x0 with its kept Jacobian: 1 with x the root
+ * and J kept. In a transient's steps, after a slow
  * solve of its own (more than STALE_EVALS residuals) ball j's next one
  * starts from the analytic Jacobian at x0 (with its residual: about 2.5
  * evaluations) instead of the kept one, which Broyden's rank-one updates
  * had let go stale (issue 30: 5.4 residuals a solve in the combined-load
  * run). A steady solve's iterates are no path: they keep Broyden's. */
-static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0, double x[4])
+static int broyden_from(acbb_qd *q, qd_ctx *c, int j, const double *x0, double x[4])
 {
     double J[16], f[4], xa[4];
-    memcpy(J, q->J[from], sizeof J);
+    memcpy(J, q->J[j], sizeof J);
     memcpy(xa, x0, sizeof xa);
     acbb_broyden_opts o = { 0 };
     double Ja[16];
-    if (q->path && from == j && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
+    if (q->path && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
         memcpy(J, Ja, sizeof J);
     int before = c->evals;
     if (!acbb_broyden_ex(eval, c, 4, J, xa, f, RES_TOL, 8, &o)) return 0;
@@ -273,21 +273,20 @@ static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0
 /* Level 2 of ball j: Broyden from its last Jacobian if there is one (two
  * or three traction evaluations between thermal steps instead of five per
  * hybrid iteration); a ball without one (the set-up's first pass) starts
- * from the root xn and the Jacobian of its neighbour jn if given
- * (neighbours in azimuth carry similar loads, MODEL.md section 4; the root
- * is the same to RES_TOL); else or if that stalls the hybrid Newton, with
+ * Newton with the analytic Jacobian from the root xn of its neighbour if
+ * given (neighbours in azimuth carry similar loads, MODEL.md section 4;
+ * the root is the same to RES_TOL; Broyden with the neighbour's Jacobian
+ * failed for 9 of the combined-load run's 10 such balls after 4 to 9
+ * residuals, issue 30); else or if that stalls the hybrid Newton, with
  * continuation as the last resort. On success c holds the tractions at the root. The
  * Jacobian is kept only from a solve at the nominal s_reg. */
-static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn,
-                                int jn)
+static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn)
 {
     double J[16], f[4], xa[4];
     int own = q->J_ok[j];
-    if (own && broyden_from(q, c, j, j, x, x))
+    if (own && broyden_from(q, c, j, x, x))
         return ACBB_OK;
     int from_nb = !own && xn;
-    if (from_nb && broyden_from(q, c, j, jn, xn, x))
-        return ACBB_OK;
     /* Transient steps (skip_tol > 0, non-symmetric scenes), starts from a
      * neighbour and a failed Broyden solve from the ball's own Jacobian
      * (the set-up's second pass, after the first equilibrium moved every
@@ -317,7 +316,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
                               const acbb_mixture *mix, acbb_ball_state *b, int j,
-                              const acbb_ball_state *bn, int jn, const double *x0)
+                              const acbb_ball_state *bn, const double *x0)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -330,7 +329,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     if (x0) memcpy(x, x0, sizeof x);
     double xn[4];
     for (int d = 0; bn && d < 4; d++) xn[d] = bn->qd_w[d] / omega_i;
-    if (solve_speeds(q, &c, j, x, bn ? xn : NULL, jn) != ACBB_OK)
+    if (solve_speeds(q, &c, j, x, bn ? xn : NULL) != ACBB_OK)
         return ACBB_DIVERGED;
     for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * x[d];
     memcpy(b->tr_i, c.tri.F, sizeof b->tr_i);
@@ -421,7 +420,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         u[6] = omega_i;
         int pr = q->path && predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
-                                    jn >= 0 ? &st->ball[jn] : NULL, jn, pr ? x0 : NULL);
+                                    jn >= 0 ? &st->ball[jn] : NULL, pr ? x0 : NULL);
         q->in_ok[j] = rc == ACBB_OK;
         if (rc == ACBB_OK) remember(q, j, u, b->qd_w, omega_i);
         else q->nh[j] = 0;
