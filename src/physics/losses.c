@@ -101,13 +101,29 @@ static double spin_mirror(const acbb_loss_point *pt, const acbb_quad *q, const d
 /* The lubricant stress at the row's slip speed at node (i, k), or that of
  * its mirror node across the row (filled earlier) when the pressure bits
  * agree: the same row's slip speed, pressure and viscosity, so the same
- * bits (half the Eyring asinh of the quadrature, issue 30). */
+ * bits (half the Eyring asinh of the quadrature, issue 30); likewise the
+ * mirror node of the mirror row when its slip speed V has the same bits
+ * (a row's slip speed depends on x through x^2: a quarter in all). */
 static double tauV_mirror(const acbb_loss_point *pt, const double *P, const double *tauV,
-                          int n, int i, int k)
+                          const double *V, int n, int i, int k)
 {
-    int node = i * n + k, mk = i * n + (n - 1 - k);
+    int node = i * n + k, mk = i * n + (n - 1 - k), mi = (n - 1 - i) * n + k;
     if (mk < node && P[mk] == P[node]) return tauV[mk];
+    if (mi < node && P[mi] == P[node] && V[n - 1 - i] == V[i]) return tauV[mi];
     return point_tau_lub(pt, pt->V);
+}
+
+/* fmax(x, 0.0) without the library call for the quadrature's per-node
+ * limiting stress: the same value for every x (NaN gives 0 as there). */
+static inline double nonneg(double x) { return x > 0.0 ? x : 0.0; }
+
+/* The integrand of loss kind l at pt: the table's, with the two common
+ * ones called directly (inlined: no call through the table per node). */
+static inline double point_value(int l, const acbb_loss_point *pt)
+{
+    if (l == ACBB_LOSS_SHEAR) return shear_point(pt);
+    if (l == ACBB_LOSS_SLIP) return slip_point(pt);
+    return acbb_loss_table[l].point(pt);
 }
 
 static double spin_finish(const acbb_contact_in *c, int seed, double sum)
@@ -241,10 +257,14 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
     int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
     for (int l = 0; l < ACBB_LOSS_KINDS; l++)
         if (on[l]) kinds[n_on++] = l;
+    double Vrow[ACBB_QUAD_MAX];
     for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
-        pt.V = acbb_slip_speed(c, pt.x);
+        /* The mirror row at -x (filled earlier) has the same slip speed:
+         * it depends on x through x^2 alone (acbb_slip_velocity). */
+        int mr = n - 1 - i;
+        pt.V = Vrow[i] = mr < i && q->x[mr] == -xi ? Vrow[mr] : acbb_slip_speed(c, pt.x);
         for (int k = 0; k < n; k++) {
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
@@ -252,14 +272,14 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             pt.p = P[node] = c->pmax * sq * sqrt(1.0 - t * t);
             pt.y = c->b * sq * t;
             pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
-            pt.tlim = s->lambda_lim * fmax(pt.p, 0.0);
-            pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, n, i, k) : 0.0;
+            pt.tlim = s->lambda_lim * nonneg(pt.p);
+            pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, Vrow, n, i, k) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
             for (int a = 0; a < n_on; a++) {
                 int l = kinds[a];
                 double v = l == ACBB_LOSS_SPIN ? spin[node] = spin_mirror(&pt, q, P, spin, i, k)
-                                               : acbb_loss_table[l].point(&pt);
+                                               : point_value(l, &pt);
                 sum[l] += v * w;
             }
         }
