@@ -192,9 +192,11 @@ int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
     memset(dF, 0, sizeof(double) * 12);
     memset(dM, 0, sizeof(double) * 12);
     if (tc->phi_f > 0.0 && !eyring_law(s)) return 0;
+    int merid = tc->n[1] == 0.0;
     for (int k = 0; k < tc->np; k++) {
         const double *P = tc->P + 3 * k, *n = tc->n;
-        double sl[3], mag = point_slip(tc, k, wb, race, sl);
+        double sl[3], mag = merid ? point_slip_meridional(tc, k, wb, race, sl)
+                                  : point_slip(tc, k, wb, race, sl);
         double dtau, tau = point_tau_dtau(s, tc, k, mag, &dtau);
         double R2 = mag * mag + tc->s_reg * tc->s_reg, R = sqrt(R2), g = -tau * tc->w[k] / R;
         /* dg/dmag of g = -tau(mag) w / sqrt(mag^2 + s_reg^2). */
