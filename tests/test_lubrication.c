@@ -320,6 +320,23 @@ static void test_mixture(const acbb_scene *s)
     ok(m.X == 0.0 && m.rho == 1.128, "no flow at all: pure air");
 }
 
+/* acbb_nonneg stands for fmax(x, 0.0) in the contact tables (issue 30):
+ * the same bits for signed zeros, NaN, infinities, subnormals and both
+ * signs, so the tables it fills are those fmax filled. */
+static void test_nonneg(void)
+{
+    volatile double z = 0.0;
+    const double xs[] = { -0.0, 0.0, NAN, -NAN, INFINITY, -INFINITY, 4.9e-324, -4.9e-324,
+                          1e-300, -1e-300, 1.5, -1.5, 1e300, -1e300 };
+    int same = 1;
+    for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+        double x = xs[i] * (1.0 + z); /* through memory: no folding */
+        double a = acbb_nonneg(x), b = fmax(x, 0.0);
+        same &= memcmp(&a, &b, sizeof a) == 0;
+    }
+    ok(same, "acbb_nonneg(x) = fmax(x, 0) bit for bit (-0, NaN, inf, subnormal, +-)");
+}
+
 int main(void)
 {
     acbb_scene s;
@@ -331,5 +348,6 @@ int main(void)
     test_share_and_guards(&s);
     test_tau(&s);
     test_mixture(&s);
+    test_nonneg();
     return done_testing();
 }

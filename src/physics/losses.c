@@ -29,8 +29,8 @@ static double surface_height(const acbb_contact_in *c, double x)
 {
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0);
     double a2 = c->a * c->a;
-    return sqrt(fmax(Rd * Rd - x * x, 0.0)) - sqrt(fmax(Rd * Rd - a2, 0.0))
-         + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    return sqrt(acbb_nonneg(Rd * Rd - x * x)) - sqrt(acbb_nonneg(Rd * Rd - a2))
+         + sqrt(acbb_nonneg(0.25 * c->D * c->D - a2));
 }
 
 double acbb_slip_velocity(const acbb_contact_in *c, double x)
@@ -112,10 +112,6 @@ static double tauV_mirror(const acbb_loss_point *pt, const double *P, const doub
     if (mi < node && P[mi] == P[node] && V[n - 1 - i] == V[i]) return tauV[mi];
     return point_tau_lub(pt, pt->V);
 }
-
-/* fmax(x, 0.0) without the library call for the quadrature's per-node
- * limiting stress: the same value for every x (NaN gives 0 as there). */
-static inline double nonneg(double x) { return x > 0.0 ? x : 0.0; }
 
 /* The integrand of loss kind l at pt: the table's, with the two common
  * ones called directly (inlined: no call through the table per node). */
@@ -272,7 +268,7 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             pt.p = P[node] = c->pmax * sq * sqrt(1.0 - t * t);
             pt.y = c->b * sq * t;
             pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
-            pt.tlim = s->lambda_lim * nonneg(pt.p);
+            pt.tlim = s->lambda_lim * acbb_nonneg(pt.p);
             pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, Vrow, n, i, k) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;

@@ -97,7 +97,7 @@ void acbb_visc_law_init(const acbb_scene *s, const acbb_oil_state *o, acbb_visc_
 double acbb_visc_law_eval(const acbb_visc_law *v, double p)
 {
     /* Negative gauge pressure (cavitated outlet) does not thin the oil. */
-    p = fmax(p, 0.0);
+    p = acbb_nonneg(p);
     switch (v->kind) {
     case ACBB_VISC_CONST:
         return v->eta0;

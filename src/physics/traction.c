@@ -53,13 +53,13 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
     tc->phi_f = f->phi_f;
     tc->s_reg = S_REG;
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
-    double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    double h0 = -sqrt(acbb_nonneg(Rd * Rd - a2)) + sqrt(acbb_nonneg(0.25 * c->D * c->D - a2));
     acbb_visc_law visc;
     acbb_visc_law_init(s, o, &visc);
     int k = 0;
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi), x = c->a * xi;
-        double h = sqrt(fmax(Rd * Rd - x * x, 0.0)) + h0; /* deformed surface, section 4 */
+        double h = sqrt(acbb_nonneg(Rd * Rd - x * x)) + h0; /* deformed surface, section 4 */
         for (int j = 0; j < q->n; j++, k++) {
             double t = q->x[j], y = c->b * sq * t;
             double *P = tc->P + 3 * k;
@@ -70,7 +70,7 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
             tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval_mirror(&visc, tc->p, tc->eta, q->n, i, j)
                                         : 0.0;
             tc->tb[k] = tc->phi_a * s->mu_bd * tc->p[k];
-            tc->tlim[k] = s->lambda_lim * fmax(tc->p[k], 0.0);
+            tc->tlim[k] = s->lambda_lim * acbb_nonneg(tc->p[k]);
         }
     }
     tc->np = k;
