@@ -118,6 +118,18 @@ static void test_slip_field(void)
     is_close(acbb_slip_velocity(&c, 0.0), 0.0, 0, 1e-9, "outer contact rolls at x = 0");
     c.a = 1e-3;
     ok(fabs(acbb_slip_velocity(&c, 0.9e-3)) > 1e-3, "Heathcote slip off the centre");
+    /* The quadrature takes a row's slip speed from its mirror row at -x
+     * (issue 30): it depends on x through x^2 alone, bit for bit, with
+     * and without pivoting. */
+    int same = 1;
+    for (int pv = 0; pv < 2; pv++) {
+        c.pivot = pv ? 2.0 : 0.0;
+        for (double x = 0.05e-3; x < 1e-3; x += 0.0937e-3) {
+            double p = acbb_slip_speed(&c, x), m = acbb_slip_speed(&c, -x);
+            same &= memcmp(&p, &m, sizeof p) == 0 && p > 0.0;
+        }
+    }
+    ok(same, "slip speed at -x = at x, bit for bit (with and without pivot)");
 }
 
 static void test_drag(void)

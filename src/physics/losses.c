@@ -33,20 +33,32 @@ static double surface_height(const acbb_contact_in *c, double x)
          + sqrt(acbb_nonneg(0.25 * c->D * c->D - a2));
 }
 
+/* V = s h w_roll + w_race (r_m + s h cos(alpha)), s = +1 outer, -1 inner:
+ * ball surface speed minus race surface speed in the rolling direction,
+ * at surface height h, ca = cos(alpha). */
+static double slip_velocity_at(const acbb_contact_in *c, double h, double ca)
+{
+    double sg = c->inner ? -1.0 : 1.0;
+    return sg * h * c->roll + c->race * (0.5 * c->dm + sg * h * ca);
+}
+
 double acbb_slip_velocity(const acbb_contact_in *c, double x)
 {
-    /* V = s h w_roll + w_race (r_m + s h cos(alpha)), s = +1 outer, -1 inner:
-     * ball surface speed minus race surface speed in the rolling direction. */
-    double sg = c->inner ? -1.0 : 1.0;
-    double h = surface_height(c, x);
-    return sg * h * c->roll + c->race * (0.5 * c->dm + sg * h * cos(c->alpha));
+    return slip_velocity_at(c, surface_height(c, x), cos(c->alpha));
+}
+
+/* acbb_slip_speed with cos(alpha) given (once per contact, not per row)
+ * and the surface height computed once for both terms: the same bits. */
+static double slip_speed_ca(const acbb_contact_in *c, double x, double ca)
+{
+    double h = surface_height(c, x), V = slip_velocity_at(c, h, ca);
+    if (c->pivot == 0.0) return fabs(V);
+    return hypot(V, c->pivot * h);
 }
 
 double acbb_slip_speed(const acbb_contact_in *c, double x)
 {
-    double V = acbb_slip_velocity(c, x);
-    if (c->pivot == 0.0) return fabs(V);
-    return hypot(V, c->pivot * surface_height(c, x));
+    return slip_speed_ca(c, x, cos(c->alpha));
 }
 
 /* ---- the formulas (MODEL.md section 6, clean form unless seed) ---- */
@@ -253,14 +265,14 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
     int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
     for (int l = 0; l < ACBB_LOSS_KINDS; l++)
         if (on[l]) kinds[n_on++] = l;
-    double Vrow[ACBB_QUAD_MAX];
+    double Vrow[ACBB_QUAD_MAX], ca = cos(c->alpha);
     for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
         /* The mirror row at -x (filled earlier) has the same slip speed:
          * it depends on x through x^2 alone (acbb_slip_velocity). */
         int mr = n - 1 - i;
-        pt.V = Vrow[i] = mr < i && q->x[mr] == -xi ? Vrow[mr] : acbb_slip_speed(c, pt.x);
+        pt.V = Vrow[i] = mr < i && q->x[mr] == -xi ? Vrow[mr] : slip_speed_ca(c, pt.x, ca);
         for (int k = 0; k < n; k++) {
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
