@@ -219,11 +219,9 @@ static void test_relax(void)
 }
 
 /* Combined load: balls without a Jacobian of their own (the set-up's
- * first pass) start from their neighbour's root, moved on along the
- * difference of the two before (ball 3 from balls 1 and 2); every
- * distinct ball still satisfies its balances, and ball 3 has the speeds a
- * cold solve of it alone finds, to 1e-9 (the root is unique, MODEL.md
- * section 4). */
+ * first pass) start from their neighbour's root; every distinct ball
+ * still satisfies its balances, and ball 3 has the speeds a cold solve of
+ * it alone finds (the root is unique, MODEL.md section 4). */
 static void test_neighbour_start(void)
 {
     static ball_fixture f;
@@ -249,7 +247,7 @@ static void test_neighbour_start(void)
     double d = 0.0;
     for (int k = 0; k < 4; k++)
         d = fmax(d, fabs(one.ball[0].qd_w[k] - f.st.ball[3].qd_w[k]) / f.wi);
-    ok(d < 1e-9, "ball 3 from balls 1 and 2 = ball 3 cold (%.1e of the ring speed)", d);
+    ok(d < 1e-9, "ball 3 from its neighbour = ball 3 cold (%.1e of the ring speed)", d);
     acbb_qd_free(qd);
     acbb_qd_free(q1);
     acbb_mech_free(f.m);

@@ -316,8 +316,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
                               const acbb_mixture *mix, acbb_ball_state *b, int j,
-                              const acbb_ball_state *bn, const acbb_ball_state *bn2,
-                              const double *x0)
+                              const acbb_ball_state *bn, const double *x0)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -329,10 +328,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
                     b->kin.wz / omega_i };
     if (x0) memcpy(x, x0, sizeof x);
     double xn[4];
-    /* From the two balls before it, the neighbour's root moved on along
-     * their difference (the loads vary smoothly with azimuth). */
-    for (int d = 0; bn && d < 4; d++)
-        xn[d] = (bn2 ? 2.0 * bn->qd_w[d] - bn2->qd_w[d] : bn->qd_w[d]) / omega_i;
+    for (int d = 0; bn && d < 4; d++) xn[d] = bn->qd_w[d] / omega_i;
     if (solve_speeds(q, &c, j, x, bn ? xn : NULL) != ACBB_OK)
         return ACBB_DIVERGED;
     for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * x[d];
@@ -403,7 +399,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
 {
     *change = 0.0;
     if (omega_i <= 0.0) return ACBB_OK;
-    int nb = acbb_mech_distinct(st), jn = -1, jn2 = -1; /* last two balls solved here with a Jacobian */
+    int nb = acbb_mech_distinct(st), jn = -1; /* last ball solved here with a Jacobian */
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
@@ -424,16 +420,11 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         u[6] = omega_i;
         int pr = q->path && predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
-                                    jn >= 0 ? &st->ball[jn] : NULL,
-                                    jn2 >= 0 && jn == j - 1 && jn2 == j - 2 ? &st->ball[jn2] : NULL,
-                                    pr ? x0 : NULL);
+                                    jn >= 0 ? &st->ball[jn] : NULL, pr ? x0 : NULL);
         q->in_ok[j] = rc == ACBB_OK;
         if (rc == ACBB_OK) remember(q, j, u, b->qd_w, omega_i);
         else q->nh[j] = 0;
-        if (rc == ACBB_OK && q->J_ok[j]) {
-            jn2 = jn;
-            jn = j;
-        }
+        if (rc == ACBB_OK && q->J_ok[j]) jn = j;
         /* Recorded after the solve: its speeds are the reference. */
         acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);
         if (rc != ACBB_OK)
