@@ -125,14 +125,6 @@ static double tauV_mirror(const acbb_loss_point *pt, const double *P, const doub
     return point_tau_lub(pt, pt->V);
 }
 
-/* The integrand of loss kind l at pt: the table's, with the two common
- * ones called directly (inlined: no call through the table per node). */
-static inline double point_value(int l, const acbb_loss_point *pt)
-{
-    if (l == ACBB_LOSS_SHEAR) return shear_point(pt);
-    if (l == ACBB_LOSS_SLIP) return slip_point(pt);
-    return acbb_loss_table[l].point(pt);
-}
 
 static double spin_finish(const acbb_contact_in *c, int seed, double sum)
 {
@@ -262,10 +254,17 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
      * node of the same bits shares it (issue 30). */
     double P[ACBB_QUAD_MAX * ACBB_QUAD_MAX], eta[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
     double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX], tauV[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
-    int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
+    /* The shear, slip and spin integrands are called directly (inlined,
+     * no call through the table per node); any other kind with an
+     * integrand goes through the table. Each kind's sum runs over the
+     * nodes in the same order as before: the same bits. */
+    int n = q->n, other[ACBB_LOSS_KINDS], n_other = 0;
+    int shear = on[ACBB_LOSS_SHEAR], slip = on[ACBB_LOSS_SLIP], spins = on[ACBB_LOSS_SPIN];
     for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-        if (on[l]) kinds[n_on++] = l;
-    double Vrow[ACBB_QUAD_MAX], ca = cos(c->alpha);
+        if (on[l] && l != ACBB_LOSS_SHEAR && l != ACBB_LOSS_SLIP && l != ACBB_LOSS_SPIN)
+            other[n_other++] = l;
+    double Vrow[ACBB_QUAD_MAX], ca = cos(c->alpha), st[ACBB_QUAD_MAX];
+    for (int k = 0; k < n; k++) st[k] = sqrt(1.0 - q->x[k] * q->x[k]);
     for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
@@ -277,19 +276,18 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
             int node = i * n + k;
-            pt.p = P[node] = c->pmax * sq * sqrt(1.0 - t * t);
+            pt.p = P[node] = c->pmax * sq * st[k];
             pt.y = c->b * sq * t;
             pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
             pt.tlim = s->lambda_lim * acbb_nonneg(pt.p);
             pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, Vrow, n, i, k) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
-            for (int a = 0; a < n_on; a++) {
-                int l = kinds[a];
-                double v = l == ACBB_LOSS_SPIN ? spin[node] = spin_mirror(&pt, q, P, spin, i, k)
-                                               : point_value(l, &pt);
-                sum[l] += v * w;
-            }
+            if (shear) sum[ACBB_LOSS_SHEAR] += shear_point(&pt) * w;
+            if (slip) sum[ACBB_LOSS_SLIP] += slip_point(&pt) * w;
+            if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin_mirror(&pt, q, P, spin, i, k)) * w;
+            for (int a = 0; a < n_other; a++)
+                sum[other[a]] += acbb_loss_table[other[a]].point(&pt) * w;
         }
     }
     out->slide = sumP > 0.0 ? sumPV / sumP : 0.0;
