@@ -50,13 +50,13 @@ typedef struct {
     int evals;          /* residuals evaluated by eval (the Broyden steps) */
 } qd_ctx;
 
-static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
+/* The Level-2 residual f at scaled speeds x (plain arrays): 0 on a
+ * non-finite value. */
+static int residual(const double *x, qd_ctx *c, double *f)
 {
-    qd_ctx *c = p;
     double wi = c->omega_i;
-    double wm = wi * gsl_vector_get(x, 0);
-    double wb[3] = { wi * gsl_vector_get(x, 1), wi * gsl_vector_get(x, 2),
-                     wi * gsl_vector_get(x, 3) };
+    double wm = wi * x[0];
+    double wb[3] = { wi * x[1], wi * x[2], wi * x[3] };
     acbb_traction_eval(c->s, c->ci, wb, wi - wm, &c->tri);
     acbb_traction_eval(c->s, c->co, wb, -wm, &c->tro);
     double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
@@ -64,12 +64,21 @@ static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
     double gy = c->s->gyroscopic ? c->J : 0.0;
     double Mreq[3] = { 0.0, -gy * wm * wb[2], gy * wm * wb[1] };
     double Ms = c->Fscale * 0.5 * c->D;
-    gsl_vector_set(f, 0, (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale);
-    for (int d = 0; d < 3; d++)
-        gsl_vector_set(f, 1 + d, (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms);
+    f[0] = (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale;
+    for (int d = 0; d < 3; d++) f[1 + d] = (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms;
     for (int d = 0; d < 4; d++)
-        if (!isfinite(gsl_vector_get(f, d))) return GSL_EBADFUNC;
-    return GSL_SUCCESS;
+        if (!isfinite(f[d])) return 0;
+    return 1;
+}
+
+/* residual for GSL's solvers (vectors of any stride). */
+static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
+{
+    double xv[4], fv[4];
+    for (int d = 0; d < 4; d++) xv[d] = gsl_vector_get(x, d);
+    int ok = residual(xv, p, fv);
+    for (int d = 0; d < 4; d++) gsl_vector_set(f, d, fv[d]);
+    return ok ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
 /* Residual as qd_f and its Jacobian J (row-major, scaled unknowns) from
@@ -216,10 +225,8 @@ static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const doubl
 /* Residual at x (scaled, as qd_f) for acbb_broyden; 0 on a non-finite value. */
 static int eval(const double *x, void *p, double *f)
 {
-    gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
-    gsl_vector_view F = gsl_vector_view_array(f, 4);
     ((qd_ctx *)p)->evals++;
-    return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
+    return residual(x, p, f);
 }
 
 /* Continuation in the slip regularisation: the traction field is nearly
