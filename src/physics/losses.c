@@ -254,6 +254,7 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
      * node of the same bits shares it (issue 30). */
     double P[ACBB_QUAD_MAX * ACBB_QUAD_MAX], eta[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
     double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX], tauV[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
+    double sh[ACBB_QUAD_MAX * ACBB_QUAD_MAX], sl[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
     /* The shear, slip and spin integrands are called directly (inlined,
      * no call through the table per node); any other kind with an
      * integrand goes through the table. Each kind's sum runs over the
@@ -270,21 +271,35 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
         pt.x = c->a * xi;
         /* The mirror row at -x (filled earlier) has the same slip speed:
          * it depends on x through x^2 alone (acbb_slip_velocity). */
-        int mr = n - 1 - i;
+        int mr = n - 1 - i, mirror = mr < i && q->x[mr] == -xi && !n_other;
         pt.V = Vrow[i] = mr < i && q->x[mr] == -xi ? Vrow[mr] : slip_speed_ca(c, pt.x, ca);
         for (int k = 0; k < n; k++) {
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
-            int node = i * n + k;
+            int node = i * n + k, mi = mr * n + k;
             pt.p = P[node] = c->pmax * sq * st[k];
+            /* A node of the mirror row at -x with the same pressure bits (the
+             * same sq and column): its slip speed, viscosity, stresses and so
+             * every integrand are its mirror node's; only the weight is its
+             * own (issue 30: half the nodes without the per-node work). */
+            if (mirror && P[mi] == pt.p) {
+                eta[node] = eta[mi];
+                tauV[node] = tauV[mi];
+                sumP += pt.p * w;
+                sumPV += pt.p * pt.V * w;
+                if (shear) sum[ACBB_LOSS_SHEAR] += (sh[node] = sh[mi]) * w;
+                if (slip) sum[ACBB_LOSS_SLIP] += (sl[node] = sl[mi]) * w;
+                if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin[mi]) * w;
+                continue;
+            }
             pt.y = c->b * sq * t;
             pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
             pt.tlim = s->lambda_lim * acbb_nonneg(pt.p);
             pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, Vrow, n, i, k) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
-            if (shear) sum[ACBB_LOSS_SHEAR] += shear_point(&pt) * w;
-            if (slip) sum[ACBB_LOSS_SLIP] += slip_point(&pt) * w;
+            if (shear) sum[ACBB_LOSS_SHEAR] += (sh[node] = shear_point(&pt)) * w;
+            if (slip) sum[ACBB_LOSS_SLIP] += (sl[node] = slip_point(&pt)) * w;
             if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin_mirror(&pt, q, P, spin, i, k)) * w;
             for (int a = 0; a < n_other; a++)
                 sum[other[a]] += acbb_loss_table[other[a]].point(&pt) * w;
