@@ -265,7 +265,11 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
         if (on[l] && l != ACBB_LOSS_SHEAR && l != ACBB_LOSS_SLIP && l != ACBB_LOSS_SPIN)
             other[n_other++] = l;
     double Vrow[ACBB_QUAD_MAX], ca = cos(c->alpha), st[ACBB_QUAD_MAX];
-    for (int k = 0; k < n; k++) st[k] = sqrt(1.0 - q->x[k] * q->x[k]);
+    int colmir[ACBB_QUAD_MAX]; /* column k mirrors an earlier one at -y */
+    for (int k = 0; k < n; k++) {
+        st[k] = sqrt(1.0 - q->x[k] * q->x[k]);
+        colmir[k] = n - 1 - k < k && q->x[n - 1 - k] == -q->x[k] && !n_other;
+    }
     for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
@@ -282,14 +286,18 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
              * same sq and column): its slip speed, viscosity, stresses and so
              * every integrand are its mirror node's; only the weight is its
              * own (issue 30: half the nodes without the per-node work). */
-            if (mirror && P[mi] == pt.p) {
-                eta[node] = eta[mi];
-                tauV[node] = tauV[mi];
+            /* Likewise a node of the mirror column at -y in the same row
+             * (the same row's slip speed and |y|). */
+            int src = mirror && P[mi] == pt.p ? mi
+                    : colmir[k] && P[node + n - 1 - 2 * k] == pt.p ? node + n - 1 - 2 * k : -1;
+            if (src >= 0) {
+                eta[node] = eta[src];
+                tauV[node] = tauV[src];
                 sumP += pt.p * w;
                 sumPV += pt.p * pt.V * w;
-                if (shear) sum[ACBB_LOSS_SHEAR] += (sh[node] = sh[mi]) * w;
-                if (slip) sum[ACBB_LOSS_SLIP] += (sl[node] = sl[mi]) * w;
-                if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin[mi]) * w;
+                if (shear) sum[ACBB_LOSS_SHEAR] += (sh[node] = sh[src]) * w;
+                if (slip) sum[ACBB_LOSS_SLIP] += (sl[node] = sl[src]) * w;
+                if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin[src]) * w;
                 continue;
             }
             pt.y = c->b * sq * t;
