@@ -195,6 +195,11 @@ int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
     memset(dF, 0, sizeof(double) * 12);
     memset(dM, 0, sizeof(double) * 12);
     if (tc->phi_f > 0.0 && !eyring_law(s)) return 0;
+    /* Sums in locals (the compiler cannot know the outputs alias none of
+     * the tables, so it stored and reloaded them every point), added in
+     * the same order: the same bits (issue 30). */
+    double F[3] = { 0.0, 0.0, 0.0 }, Mo[3] = { 0.0, 0.0, 0.0 };
+    double JF[3][4] = { { 0.0 } }, JM[3][4] = { { 0.0 } };
     int merid = tc->n[1] == 0.0;
     for (int k = 0; k < tc->np; k++) {
         const double *P = tc->P + 3 * k, *n = tc->n;
@@ -218,14 +223,18 @@ int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
             for (int d = 0; d < 3; d++) df[d] = g * D[j][d] + dg * dmag * sl[d];
             cross(P, df, dm);
             for (int d = 0; d < 3; d++) {
-                dF[d][j] += df[d];
-                dM[d][j] += dm[d];
+                JF[d][j] += df[d];
+                JM[d][j] += dm[d];
             }
         }
         for (int d = 0; d < 3; d++) {
-            out->F[d] += f[d];
-            out->M[d] += m[d];
+            F[d] += f[d];
+            Mo[d] += m[d];
         }
     }
+    memcpy(out->F, F, sizeof F);
+    memcpy(out->M, Mo, sizeof Mo);
+    memcpy(dF, JF, sizeof JF);
+    memcpy(dM, JM, sizeof JM);
     return 1;
 }
