@@ -169,6 +169,15 @@ static void test_film(acbb_scene *s)
     is_close(f.phi_f, share, 1e-14, 0, "Zhou-Hoeprich share by hand");
     is_close(f.phi_a, 1.0 - f.phi_f, 0, 1e-16, "phi_a = 1 - phi_f");
 
+    /* The last G's powers are kept (g_powers): a film of another modulus
+     * between two of this one gives its own hand values and leaves this
+     * one's bits as they were. */
+    acbb_film_compute(s, &iso, u, Q, Rx, k, 0.5 * Ep, pmax, 0.0, &f2);
+    is_close(f2.hc, hd_hc(o.eta0, 2e-8, u, Q, Rx, k, 0.5 * Ep), 1e-12, 0,
+             "hc by hand at half the modulus, after the first");
+    acbb_film_compute(s, &iso, u, Q, Rx, k, Ep, pmax, 0.0, &f2);
+    ok(f2.hc == f.hc && f2.hmin == f.hmin, "the first modulus again: hc, hmin bit for bit");
+
     acbb_film_compute(s, &iso, 2.0 * u, Q, Rx, k, Ep, pmax, 0.0, &f2);
     is_close(f2.hc / f.hc, pow(2.0, 0.67), 1e-12, 0, "hc scales as u^0.67");
     is_close(f2.hmin / f.hmin, pow(2.0, 0.68), 1e-12, 0, "hmin scales as u^0.68");
@@ -311,6 +320,23 @@ static void test_mixture(const acbb_scene *s)
     ok(m.X == 0.0 && m.rho == 1.128, "no flow at all: pure air");
 }
 
+/* acbb_nonneg stands for fmax(x, 0.0) in the contact tables (issue 30):
+ * the same bits for signed zeros, NaN, infinities, subnormals and both
+ * signs, so the tables it fills are those fmax filled. */
+static void test_nonneg(void)
+{
+    volatile double z = 0.0;
+    const double xs[] = { -0.0, 0.0, NAN, -NAN, INFINITY, -INFINITY, 4.9e-324, -4.9e-324,
+                          1e-300, -1e-300, 1.5, -1.5, 1e300, -1e300 };
+    int same = 1;
+    for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+        double x = xs[i] * (1.0 + z); /* through memory: no folding */
+        double a = acbb_nonneg(x), b = fmax(x, 0.0);
+        same &= memcmp(&a, &b, sizeof a) == 0;
+    }
+    ok(same, "acbb_nonneg(x) = fmax(x, 0) bit for bit (-0, NaN, inf, subnormal, +-)");
+}
+
 int main(void)
 {
     acbb_scene s;
@@ -322,5 +348,6 @@ int main(void)
     test_share_and_guards(&s);
     test_tau(&s);
     test_mixture(&s);
+    test_nonneg();
     return done_testing();
 }

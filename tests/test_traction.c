@@ -293,7 +293,7 @@ static void test_mirror_viscosity(void)
     acbb_oil_state oil = { .T_C = 40, .rho = 860, .eta0 = 0.05 };
     acbb_visc_law law;
     acbb_visc_law_init(&s, &oil, &law);
-    int bad_eta = 0, bad_pair = 0, shared = 0;
+    int bad_eta = 0, bad_pair = 0, shared = 0, transposed = 0;
     for (int n = 1; n <= ACBB_QUAD_MAX; n++) {
         acbb_quad q;
         acbb_traction_contact tc = { 0 };
@@ -308,6 +308,8 @@ static void test_mirror_viscosity(void)
         for (int k = 0; k < tc.np; k++) {
             bad_eta += tc.eta[k] != acbb_visc_law_eval(&law, tc.p[k]);
             shared += k > 0 && tc.p[k] == tc.p[k - 1];
+            int i = k / n, j = k % n; /* the transposed node (j, i) before it */
+            transposed += j < i && tc.p[j * n + i] == tc.p[k];
         }
         acbb_traction_contact_free(&tc);
     }
@@ -316,6 +318,7 @@ static void test_mirror_viscosity(void)
     ok(bad_eta == 0, "grids 1..%d: every node's viscosity is the law's at its pressure (%d not)",
        ACBB_QUAD_MAX, bad_eta);
     ok(shared > 0, "mirror nodes do share pressures (%d neighbours in a row)", shared);
+    ok(transposed > 0, "transposed nodes share pressures too (%d)", transposed);
 }
 
 /* The inline asinh of the Eyring stresses (traction.h acbb_asinh_pos)

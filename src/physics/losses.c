@@ -29,24 +29,36 @@ static double surface_height(const acbb_contact_in *c, double x)
 {
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0);
     double a2 = c->a * c->a;
-    return sqrt(fmax(Rd * Rd - x * x, 0.0)) - sqrt(fmax(Rd * Rd - a2, 0.0))
-         + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    return sqrt(acbb_nonneg(Rd * Rd - x * x)) - sqrt(acbb_nonneg(Rd * Rd - a2))
+         + sqrt(acbb_nonneg(0.25 * c->D * c->D - a2));
+}
+
+/* V = s h w_roll + w_race (r_m + s h cos(alpha)), s = +1 outer, -1 inner:
+ * ball surface speed minus race surface speed in the rolling direction,
+ * at surface height h, ca = cos(alpha). */
+static double slip_velocity_at(const acbb_contact_in *c, double h, double ca)
+{
+    double sg = c->inner ? -1.0 : 1.0;
+    return sg * h * c->roll + c->race * (0.5 * c->dm + sg * h * ca);
 }
 
 double acbb_slip_velocity(const acbb_contact_in *c, double x)
 {
-    /* V = s h w_roll + w_race (r_m + s h cos(alpha)), s = +1 outer, -1 inner:
-     * ball surface speed minus race surface speed in the rolling direction. */
-    double sg = c->inner ? -1.0 : 1.0;
-    double h = surface_height(c, x);
-    return sg * h * c->roll + c->race * (0.5 * c->dm + sg * h * cos(c->alpha));
+    return slip_velocity_at(c, surface_height(c, x), cos(c->alpha));
+}
+
+/* acbb_slip_speed with cos(alpha) given (once per contact, not per row)
+ * and the surface height computed once for both terms: the same bits. */
+static double slip_speed_ca(const acbb_contact_in *c, double x, double ca)
+{
+    double h = surface_height(c, x), V = slip_velocity_at(c, h, ca);
+    if (c->pivot == 0.0) return fabs(V);
+    return hypot(V, c->pivot * h);
 }
 
 double acbb_slip_speed(const acbb_contact_in *c, double x)
 {
-    double V = acbb_slip_velocity(c, x);
-    if (c->pivot == 0.0) return fabs(V);
-    return hypot(V, c->pivot * surface_height(c, x));
+    return slip_speed_ca(c, x, cos(c->alpha));
 }
 
 /* ---- the formulas (MODEL.md section 6, clean form unless seed) ---- */
@@ -101,14 +113,18 @@ static double spin_mirror(const acbb_loss_point *pt, const acbb_quad *q, const d
 /* The lubricant stress at the row's slip speed at node (i, k), or that of
  * its mirror node across the row (filled earlier) when the pressure bits
  * agree: the same row's slip speed, pressure and viscosity, so the same
- * bits (half the Eyring asinh of the quadrature, issue 30). */
+ * bits (half the Eyring asinh of the quadrature, issue 30); likewise the
+ * mirror node of the mirror row when its slip speed V has the same bits
+ * (a row's slip speed depends on x through x^2: a quarter in all). */
 static double tauV_mirror(const acbb_loss_point *pt, const double *P, const double *tauV,
-                          int n, int i, int k)
+                          const double *V, int n, int i, int k)
 {
-    int node = i * n + k, mk = i * n + (n - 1 - k);
+    int node = i * n + k, mk = i * n + (n - 1 - k), mi = (n - 1 - i) * n + k;
     if (mk < node && P[mk] == P[node]) return tauV[mk];
+    if (mi < node && P[mi] == P[node] && V[n - 1 - i] == V[i]) return tauV[mi];
     return point_tau_lub(pt, pt->V);
 }
+
 
 static double spin_finish(const acbb_contact_in *c, int seed, double sum)
 {
@@ -238,30 +254,63 @@ static void integrate(const acbb_scene *s, const acbb_quad *q, const acbb_contac
      * node of the same bits shares it (issue 30). */
     double P[ACBB_QUAD_MAX * ACBB_QUAD_MAX], eta[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
     double spin[ACBB_QUAD_MAX * ACBB_QUAD_MAX], tauV[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
-    int n = q->n, kinds[ACBB_LOSS_KINDS], n_on = 0; /* the integrands switched on, in order */
+    double sh[ACBB_QUAD_MAX * ACBB_QUAD_MAX], sl[ACBB_QUAD_MAX * ACBB_QUAD_MAX];
+    /* The shear, slip and spin integrands are called directly (inlined,
+     * no call through the table per node); any other kind with an
+     * integrand goes through the table. Each kind's sum runs over the
+     * nodes in the same order as before: the same bits. */
+    int n = q->n, other[ACBB_LOSS_KINDS], n_other = 0;
+    int shear = on[ACBB_LOSS_SHEAR], slip = on[ACBB_LOSS_SLIP], spins = on[ACBB_LOSS_SPIN];
     for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-        if (on[l]) kinds[n_on++] = l;
+        if (on[l] && l != ACBB_LOSS_SHEAR && l != ACBB_LOSS_SLIP && l != ACBB_LOSS_SPIN)
+            other[n_other++] = l;
+    double Vrow[ACBB_QUAD_MAX], ca = cos(c->alpha), st[ACBB_QUAD_MAX];
+    int colmir[ACBB_QUAD_MAX]; /* column k mirrors an earlier one at -y */
+    for (int k = 0; k < n; k++) {
+        st[k] = sqrt(1.0 - q->x[k] * q->x[k]);
+        colmir[k] = n - 1 - k < k && q->x[n - 1 - k] == -q->x[k] && !n_other;
+    }
     for (int i = 0; i < n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi);
         pt.x = c->a * xi;
-        pt.V = acbb_slip_speed(c, pt.x);
+        /* The mirror row at -x (filled earlier) has the same slip speed:
+         * it depends on x through x^2 alone (acbb_slip_velocity). */
+        int mr = n - 1 - i, mirror = mr < i && q->x[mr] == -xi && !n_other;
+        pt.V = Vrow[i] = mr < i && q->x[mr] == -xi ? Vrow[mr] : slip_speed_ca(c, pt.x, ca);
         for (int k = 0; k < n; k++) {
             double t = q->x[k];
             double w = q->w[i] * q->w[k] * ab * sq;   /* dA */
-            int node = i * n + k;
-            pt.p = P[node] = c->pmax * sq * sqrt(1.0 - t * t);
+            int node = i * n + k, mi = mr * n + k;
+            pt.p = P[node] = c->pmax * sq * st[k];
+            /* A node of the mirror row at -x with the same pressure bits (the
+             * same sq and column): its slip speed, viscosity, stresses and so
+             * every integrand are its mirror node's; only the weight is its
+             * own (issue 30: half the nodes without the per-node work). */
+            /* Likewise a node of the mirror column at -y in the same row
+             * (the same row's slip speed and |y|). */
+            int src = mirror && P[mi] == pt.p ? mi
+                    : colmir[k] && P[node + n - 1 - 2 * k] == pt.p ? node + n - 1 - 2 * k : -1;
+            if (src >= 0) {
+                eta[node] = eta[src];
+                tauV[node] = tauV[src];
+                sumP += pt.p * w;
+                sumPV += pt.p * pt.V * w;
+                if (shear) sum[ACBB_LOSS_SHEAR] += (sh[node] = sh[src]) * w;
+                if (slip) sum[ACBB_LOSS_SLIP] += (sl[node] = sl[src]) * w;
+                if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin[src]) * w;
+                continue;
+            }
             pt.y = c->b * sq * t;
             pt.eta = eta[node] = fluid ? acbb_visc_law_eval_mirror(&visc, P, eta, n, i, k) : 0.0;
-            pt.tlim = s->lambda_lim * fmax(pt.p, 0.0);
-            pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, n, i, k) : 0.0;
+            pt.tlim = s->lambda_lim * acbb_nonneg(pt.p);
+            pt.tauV = tauV[node] = fluid ? tauV_mirror(&pt, P, tauV, Vrow, n, i, k) : 0.0;
             sumP += pt.p * w;
             sumPV += pt.p * pt.V * w;
-            for (int a = 0; a < n_on; a++) {
-                int l = kinds[a];
-                double v = l == ACBB_LOSS_SPIN ? spin[node] = spin_mirror(&pt, q, P, spin, i, k)
-                                               : acbb_loss_table[l].point(&pt);
-                sum[l] += v * w;
-            }
+            if (shear) sum[ACBB_LOSS_SHEAR] += (sh[node] = shear_point(&pt)) * w;
+            if (slip) sum[ACBB_LOSS_SLIP] += (sl[node] = slip_point(&pt)) * w;
+            if (spins) sum[ACBB_LOSS_SPIN] += (spin[node] = spin_mirror(&pt, q, P, spin, i, k)) * w;
+            for (int a = 0; a < n_other; a++)
+                sum[other[a]] += acbb_loss_table[other[a]].point(&pt) * w;
         }
     }
     out->slide = sumP > 0.0 ? sumPV / sumP : 0.0;

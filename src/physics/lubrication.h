@@ -5,6 +5,11 @@
 
 #include "acbb/scene.h"
 
+/* fmax(x, 0.0) without the library call, for the per-node tables of the
+ * contact integrals: the same value for every x (glibc's fmax returns its
+ * second operand, +0, for -0 and for NaN, as this does). */
+static inline double acbb_nonneg(double x) { return x > 0.0 ? x : 0.0; }
+
 /* Oil properties at one temperature (ambient pressure). */
 typedef struct {
     double T_C;         /* temperature, C */

@@ -50,13 +50,13 @@ typedef struct {
     int evals;          /* residuals evaluated by eval (the Broyden steps) */
 } qd_ctx;
 
-static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
+/* The Level-2 residual f at scaled speeds x (plain arrays): 0 on a
+ * non-finite value. */
+static int residual(const double *x, qd_ctx *c, double *f)
 {
-    qd_ctx *c = p;
     double wi = c->omega_i;
-    double wm = wi * gsl_vector_get(x, 0);
-    double wb[3] = { wi * gsl_vector_get(x, 1), wi * gsl_vector_get(x, 2),
-                     wi * gsl_vector_get(x, 3) };
+    double wm = wi * x[0];
+    double wb[3] = { wi * x[1], wi * x[2], wi * x[3] };
     acbb_traction_eval(c->s, c->ci, wb, wi - wm, &c->tri);
     acbb_traction_eval(c->s, c->co, wb, -wm, &c->tro);
     double Fv = c->s->loss_drag ? acbb_drag_force(c->s, c->mix, wm) : 0.0;
@@ -64,12 +64,21 @@ static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
     double gy = c->s->gyroscopic ? c->J : 0.0;
     double Mreq[3] = { 0.0, -gy * wm * wb[2], gy * wm * wb[1] };
     double Ms = c->Fscale * 0.5 * c->D;
-    gsl_vector_set(f, 0, (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale);
-    for (int d = 0; d < 3; d++)
-        gsl_vector_set(f, 1 + d, (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms);
+    f[0] = (c->tri.F[1] + c->tro.F[1] + Fv) / c->Fscale;
+    for (int d = 0; d < 3; d++) f[1 + d] = (c->tri.M[d] + c->tro.M[d] - Mreq[d]) / Ms;
     for (int d = 0; d < 4; d++)
-        if (!isfinite(gsl_vector_get(f, d))) return GSL_EBADFUNC;
-    return GSL_SUCCESS;
+        if (!isfinite(f[d])) return 0;
+    return 1;
+}
+
+/* residual for GSL's solvers (vectors of any stride). */
+static int qd_f(const gsl_vector *x, void *p, gsl_vector *f)
+{
+    double xv[4], fv[4];
+    for (int d = 0; d < 4; d++) xv[d] = gsl_vector_get(x, d);
+    int ok = residual(xv, p, fv);
+    for (int d = 0; d < 4; d++) gsl_vector_set(f, d, fv[d]);
+    return ok ? GSL_SUCCESS : GSL_EBADFUNC;
 }
 
 /* Residual as qd_f and its Jacobian J (row-major, scaled unknowns) from
@@ -216,10 +225,8 @@ static acbb_status newton(acbb_qd *q, gsl_multiroot_function_fdf *F, const doubl
 /* Residual at x (scaled, as qd_f) for acbb_broyden; 0 on a non-finite value. */
 static int eval(const double *x, void *p, double *f)
 {
-    gsl_vector_const_view X = gsl_vector_const_view_array(x, 4);
-    gsl_vector_view F = gsl_vector_view_array(f, 4);
     ((qd_ctx *)p)->evals++;
-    return qd_f(&X.vector, p, &F.vector) == GSL_SUCCESS;
+    return residual(x, p, f);
 }
 
 /* Continuation in the slip regularisation: the traction field is nearly
@@ -245,21 +252,21 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
     return newton(q, F, x); /* leave the solver at the accepted root */
 }
 
-/* Broyden for ball j from x0 with the Jacobian of ball `from`: 1 with x
- * the root and J kept as ball j's. In a transient's steps, after a slow
+/* Broyden for ball j from x0 with its kept Jacobian: 1 with x the root
+ * and J kept. In a transient's steps, after a slow
  * solve of its own (more than STALE_EVALS residuals) ball j's next one
  * starts from the analytic Jacobian at x0 (with its residual: about 2.5
  * evaluations) instead of the kept one, which Broyden's rank-one updates
  * had let go stale (issue 30: 5.4 residuals a solve in the combined-load
  * run). A steady solve's iterates are no path: they keep Broyden's. */
-static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0, double x[4])
+static int broyden_from(acbb_qd *q, qd_ctx *c, int j, const double *x0, double x[4])
 {
     double J[16], f[4], xa[4];
-    memcpy(J, q->J[from], sizeof J);
+    memcpy(J, q->J[j], sizeof J);
     memcpy(xa, x0, sizeof xa);
     acbb_broyden_opts o = { 0 };
     double Ja[16];
-    if (q->path && from == j && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
+    if (q->path && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
         memcpy(J, Ja, sizeof J);
     int before = c->evals;
     if (!acbb_broyden_ex(eval, c, 4, J, xa, f, RES_TOL, 8, &o)) return 0;
@@ -273,27 +280,29 @@ static int broyden_from(acbb_qd *q, qd_ctx *c, int j, int from, const double *x0
 /* Level 2 of ball j: Broyden from its last Jacobian if there is one (two
  * or three traction evaluations between thermal steps instead of five per
  * hybrid iteration); a ball without one (the set-up's first pass) starts
- * from the root xn and the Jacobian of its neighbour jn if given
- * (neighbours in azimuth carry similar loads, MODEL.md section 4; the root
- * is the same to RES_TOL); else or if that stalls the hybrid Newton, with
+ * Newton with the analytic Jacobian from the root xn of its neighbour if
+ * given (neighbours in azimuth carry similar loads, MODEL.md section 4;
+ * the root is the same to RES_TOL; Broyden with the neighbour's Jacobian
+ * failed for 9 of the combined-load run's 10 such balls after 4 to 9
+ * residuals, issue 30); else or if that stalls the hybrid Newton, with
  * continuation as the last resort. On success c holds the tractions at the root. The
  * Jacobian is kept only from a solve at the nominal s_reg. */
-static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn,
-                                int jn)
+static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn)
 {
     double J[16], f[4], xa[4];
-    if (q->J_ok[j] && broyden_from(q, c, j, j, x, x))
+    int own = q->J_ok[j];
+    if (own && broyden_from(q, c, j, x, x))
         return ACBB_OK;
-    int from_nb = !q->J_ok[j] && xn;
-    if (from_nb && broyden_from(q, c, j, jn, xn, x))
-        return ACBB_OK;
-    /* Transient steps (skip_tol > 0, non-symmetric scenes) and starts from
-     * a neighbour: Newton with the analytic Jacobian before the hybrid
+    int from_nb = !own && xn;
+    /* Transient steps (skip_tol > 0, non-symmetric scenes), starts from a
+     * neighbour and a failed Broyden solve from the ball's own Jacobian
+     * (the set-up's second pass, after the first equilibrium moved every
+     * load: issue 30): Newton with the analytic Jacobian before the hybrid
      * solver (3-4 steps of about three evaluations each against ~30
      * evaluations; as the first choice it cost more than Broyden's ~5.7,
      * BENCHMARKS.md round 3). */
     memcpy(xa, from_nb ? xn : x, sizeof xa);
-    if ((q->skip_tol > 0.0 || from_nb) && newton_analytic(c, xa, J)) {
+    if ((q->skip_tol > 0.0 || from_nb || own) && newton_analytic(c, xa, J)) {
         memcpy(q->J[j], J, sizeof J);
         q->J_ok[j] = 1;
         memcpy(x, xa, sizeof xa);
@@ -314,7 +323,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
                               const acbb_geometry *g, double omega_i,
                               const acbb_oil_state *oil_i, const acbb_oil_state *oil_o,
                               const acbb_mixture *mix, acbb_ball_state *b, int j,
-                              const acbb_ball_state *bn, int jn, const double *x0)
+                              const acbb_ball_state *bn, const double *x0)
 {
     acbb_status rc = prepare(s, quad, g, b, 1, omega_i, oil_i, &q->ci);
     if (rc == ACBB_OK) rc = prepare(s, quad, g, b, 0, omega_i, oil_o, &q->co);
@@ -327,7 +336,7 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
     if (x0) memcpy(x, x0, sizeof x);
     double xn[4];
     for (int d = 0; bn && d < 4; d++) xn[d] = bn->qd_w[d] / omega_i;
-    if (solve_speeds(q, &c, j, x, bn ? xn : NULL, jn) != ACBB_OK)
+    if (solve_speeds(q, &c, j, x, bn ? xn : NULL) != ACBB_OK)
         return ACBB_DIVERGED;
     for (int d = 0; d < 4; d++) b->qd_w[d] = omega_i * x[d];
     memcpy(b->tr_i, c.tri.F, sizeof b->tr_i);
@@ -418,7 +427,7 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         u[6] = omega_i;
         int pr = q->path && predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
-                                    jn >= 0 ? &st->ball[jn] : NULL, jn, pr ? x0 : NULL);
+                                    jn >= 0 ? &st->ball[jn] : NULL, pr ? x0 : NULL);
         q->in_ok[j] = rc == ACBB_OK;
         if (rc == ACBB_OK) remember(q, j, u, b->qd_w, omega_i);
         else q->nh[j] = 0;

@@ -53,24 +53,27 @@ acbb_status acbb_traction_prepare(const acbb_scene *s, const acbb_quad *q,
     tc->phi_f = f->phi_f;
     tc->s_reg = S_REG;
     double Rd = 2.0 * c->f * c->D / (2.0 * c->f + 1.0), a2 = c->a * c->a;
-    double h0 = -sqrt(fmax(Rd * Rd - a2, 0.0)) + sqrt(fmax(0.25 * c->D * c->D - a2, 0.0));
+    double h0 = -sqrt(acbb_nonneg(Rd * Rd - a2)) + sqrt(acbb_nonneg(0.25 * c->D * c->D - a2));
     acbb_visc_law visc;
     acbb_visc_law_init(s, o, &visc);
+    /* sqrt(1 - t^2) once per column (the same bits as per node). */
+    double st[ACBB_QUAD_MAX];
+    for (int j = 0; j < q->n; j++) st[j] = sqrt(1.0 - q->x[j] * q->x[j]);
     int k = 0;
     for (int i = 0; i < q->n; i++) {
         double xi = q->x[i], sq = sqrt(1.0 - xi * xi), x = c->a * xi;
-        double h = sqrt(fmax(Rd * Rd - x * x, 0.0)) + h0; /* deformed surface, section 4 */
+        double h = sqrt(acbb_nonneg(Rd * Rd - x * x)) + h0; /* deformed surface, section 4 */
         for (int j = 0; j < q->n; j++, k++) {
             double t = q->x[j], y = c->b * sq * t;
             double *P = tc->P + 3 * k;
             for (int d = 0; d < 3; d++) P[d] = h * tc->n[d] + x * tc->t[d];
             P[1] += y;
             tc->w[k] = q->w[i] * q->w[j] * c->a * c->b * sq;
-            tc->p[k] = c->pmax * sq * sqrt(1.0 - t * t);
+            tc->p[k] = c->pmax * sq * st[j];
             tc->eta[k] = f->phi_f > 0.0 ? acbb_visc_law_eval_mirror(&visc, tc->p, tc->eta, q->n, i, j)
                                         : 0.0;
             tc->tb[k] = tc->phi_a * s->mu_bd * tc->p[k];
-            tc->tlim[k] = s->lambda_lim * fmax(tc->p[k], 0.0);
+            tc->tlim[k] = s->lambda_lim * acbb_nonneg(tc->p[k]);
         }
     }
     tc->np = k;
@@ -192,9 +195,16 @@ int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
     memset(dF, 0, sizeof(double) * 12);
     memset(dM, 0, sizeof(double) * 12);
     if (tc->phi_f > 0.0 && !eyring_law(s)) return 0;
+    /* Sums in locals (the compiler cannot know the outputs alias none of
+     * the tables, so it stored and reloaded them every point), added in
+     * the same order: the same bits (issue 30). */
+    double F[3] = { 0.0, 0.0, 0.0 }, Mo[3] = { 0.0, 0.0, 0.0 };
+    double JF[3][4] = { { 0.0 } }, JM[3][4] = { { 0.0 } };
+    int merid = tc->n[1] == 0.0;
     for (int k = 0; k < tc->np; k++) {
         const double *P = tc->P + 3 * k, *n = tc->n;
-        double sl[3], mag = point_slip(tc, k, wb, race, sl);
+        double sl[3], mag = merid ? point_slip_meridional(tc, k, wb, race, sl)
+                                  : point_slip(tc, k, wb, race, sl);
         double dtau, tau = point_tau_dtau(s, tc, k, mag, &dtau);
         double R2 = mag * mag + tc->s_reg * tc->s_reg, R = sqrt(R2), g = -tau * tc->w[k] / R;
         /* dg/dmag of g = -tau(mag) w / sqrt(mag^2 + s_reg^2). */
@@ -213,14 +223,18 @@ int acbb_traction_eval_jac(const acbb_scene *s, const acbb_traction_contact *tc,
             for (int d = 0; d < 3; d++) df[d] = g * D[j][d] + dg * dmag * sl[d];
             cross(P, df, dm);
             for (int d = 0; d < 3; d++) {
-                dF[d][j] += df[d];
-                dM[d][j] += dm[d];
+                JF[d][j] += df[d];
+                JM[d][j] += dm[d];
             }
         }
         for (int d = 0; d < 3; d++) {
-            out->F[d] += f[d];
-            out->M[d] += m[d];
+            F[d] += f[d];
+            Mo[d] += m[d];
         }
     }
+    memcpy(out->F, F, sizeof F);
+    memcpy(out->M, Mo, sizeof Mo);
+    memcpy(dF, JF, sizeof JF);
+    memcpy(dM, JM, sizeof JM);
     return 1;
 }

@@ -77,13 +77,16 @@ static inline double acbb_eyring_capped(double tau_e, double eta, double mag, do
  * is even in both coordinates and Gauss nodes come in +-x pairs, so a
  * node whose mirror image (earlier in the order) has the same pressure,
  * bit for bit, has its viscosity too (a quarter of the law's evaluations;
- * issue 30). */
+ * issue 30). The pressure pmax sqrt(1 - x_i^2) sqrt(1 - x_j^2) is also
+ * symmetric in i and j on the unit-square map, so the transposed node
+ * (j, i) shares it when the rounding gave the same bits. */
 static inline double acbb_visc_law_eval_mirror(const acbb_visc_law *v, const double *p,
                                                const double *eta, int n, int i, int j)
 {
-    int k = i * n + j, mi = (n - 1 - i) * n + j, mj = i * n + (n - 1 - j);
+    int k = i * n + j, mi = (n - 1 - i) * n + j, mj = i * n + (n - 1 - j), mt = j * n + i;
     if (mi < k && p[mi] == p[k]) return eta[mi];
     if (mj < k && p[mj] == p[k]) return eta[mj];
+    if (mt < k && p[mt] == p[k]) return eta[mt];
     return acbb_visc_law_eval(v, p[k]);
 }
 
