@@ -71,6 +71,14 @@ grep -q -x -F "status wall_limit: wall-clock bound fidelity.max_wall_s = 0.5 s r
     "$TMP/st" && [ "$(awk 'length > 80' "$TMP/sum" | wc -l)" -eq 0 ]
 t $? "the run summary's status: the whole message within 80 columns (got: $(cat "$TMP/st"))"
 
+# A sensitivity's base run that met the bound says so in the same form
+# (it said "the base run: wall-clock bound ..." without the status name).
+# shellcheck disable=SC2086
+"$ACBB" sensitivity $CL --metric losses_W.total --max-wall 0.001 >/dev/null 2>"$TMP/err"
+grep -q -F "; the base run: wall_limit: wall-clock bound fidelity.max_wall_s = 0.001 s reached$SETUP_TAIL" \
+    "$TMP/err"
+t $? "sensitivity: the base run's failure names its status ($(tail -c 160 "$TMP/err"))"
+
 # One form: the status name, then the bound and its key, the same words.
 [ "$(wc -l <"$TMP/heads")" -eq 4 ] && [ "$(sort -u "$TMP/heads" | wc -l)" -eq 1 ] &&
     grep -q -x -F 'acbb: wall_limit: wall-clock bound fidelity.max_wall_s' "$TMP/heads"

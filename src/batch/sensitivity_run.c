@@ -40,8 +40,10 @@ static void task_done(void *ctx, const acbb_batch_result *r)
     acbb_error err = { { 0 } };
     acbb_status st = r->status;
     double v = NAN;
+    /* A failed run says its status first, as every named ending does
+     * ("wall_limit: wall-clock bound ..."). */
     if (st == ACBB_OK) st = acbb_metric_value(r->snap, b->o->metric, &v, &err);
-    else acbb_error_set(&err, st, "%s", r->message);
+    else if (r->message[0]) acbb_error_set(&err, st, "%s: %s", acbb_status_name(st), r->message);
     b->val[r->index] = st == ACBB_OK && isfinite(v) ? v : NAN;
     if (st != ACBB_OK && b->first_fail && !b->first_fail[0])
         snprintf(b->first_fail, b->fail_n, "%s", err.msg[0] ? err.msg : acbb_status_name(st));
