@@ -141,22 +141,6 @@ static double fluid_share(double lambda)
     return fmin(1.0, c1 * pow(L, e1) / (1.0 + c2 * pow(L, e2)));
 }
 
-/* G^0.53 and G^0.49 of the Hamrock-Dowson fits: G = alpha E' is the same
- * for every contact of a material pair, so the last G's powers are kept
- * (per thread) and returned when G has the same bits: the same values
- * without two of the film's eleven pow calls per contact (issue 30). */
-static void g_powers(double G, double *G53, double *G49)
-{
-    static _Thread_local double last = NAN, p53, p49;
-    if (!(G == last)) {
-        p53 = pow(G, 0.53);
-        p49 = pow(G, 0.49);
-        last = G;
-    }
-    *G53 = p53;
-    *G49 = p49;
-}
-
 void acbb_film_compute(const acbb_scene *s, const acbb_oil_state *o, double u,
                        double Q, double Rx, double kappa, double E_eff,
                        double pmax, double srr, acbb_film *f)
@@ -171,11 +155,9 @@ void acbb_film_compute(const acbb_scene *s, const acbb_oil_state *o, double u,
     double U = o->eta0 * u / (E_eff * Rx);
     double G = s->oil_alpha_pv * E_eff;
     double W = Q / (E_eff * Rx * Rx);
-    double G53, G49;
-    g_powers(G, &G53, &G49);
-    double hc = Rx * 2.69 * pow(U, 0.67) * G53 * pow(W, -0.067) *
+    double hc = Rx * 2.69 * pow(U, 0.67) * pow(G, 0.53) * pow(W, -0.067) *
                 (1.0 - 0.61 * exp(-0.73 * kappa));
-    double hmin = Rx * 3.63 * pow(U, 0.68) * G49 * pow(W, -0.073) *
+    double hmin = Rx * 3.63 * pow(U, 0.68) * pow(G, 0.49) * pow(W, -0.073) *
                   (1.0 - exp(-0.68 * kappa));
 
     f->phi_T = thermal_factor(o, s, u, pmax, E_eff, srr);
