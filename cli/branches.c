@@ -17,11 +17,16 @@ bool acbb_cli_branches_wanted(const acbb_cli_args *a, const acbb_scene *sc)
 /* One branch within 80 columns (78): its simulated time is the summary's
  * own for the transient and none for the steady solve (the JSON has it);
  * a branch that never reached a state (0 steps, all zero) shows "-". */
+static bool no_state(const acbb_branch_state *b)
+{
+    return b->iterations == 0 && b->Qi_N == 0.0 && b->loss_total_W == 0.0;
+}
+
 static void branch_row(acbb_cli_out *o, const char *name, const acbb_branch_state *b)
 {
     const double v[] = { b->Qi_N, b->reaction_x_N, b->loss_total_W,
                          b->T_outer_ring_C, b->T_inner_ring_C, b->T_ball_C };
-    bool none = b->iterations == 0 && b->Qi_N == 0.0 && b->loss_total_W == 0.0;
+    bool none = no_state(b);
     fprintf(o->f, "%-10s%-14s", name, b->status);
     for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) {
         if (!isfinite(v[i])) o->nonfinite++;
@@ -36,10 +41,18 @@ void acbb_cli_print_branches(acbb_cli_out *o, const acbb_branches *b)
     FILE *f = o->f;
     char line[320];
     fprintf(f, "\n%-13s", "branches");
-    fputs(b->agree ? "the steady solve and the transient reach the same state"
-                   : "DIFFERENT: steady solve and transient end on different branches", f);
-    snprintf(line, sizeof line, "%s; max node difference %.3g K, total loss %.3g relative",
-             b->criterion, b->max_dT_K, b->loss_rel);
+    bool none = no_state(&b->steady) || no_state(&b->transient);
+    fputs(none ? no_state(&b->steady) ? "not compared: the steady solve reached no state"
+                                      : "not compared: the transient reached no state"
+          : b->agree ? "the steady solve and the transient reach the same state"
+                     : "DIFFERENT: steady solve and transient end on different branches", f);
+    /* With a branch that never reached a state there is nothing to
+     * compare: its zeros would read as differences. */
+    if (none)
+        snprintf(line, sizeof line, "%s", b->criterion);
+    else
+        snprintf(line, sizeof line, "%s; max node difference %.3g K, total loss %.3g relative",
+                 b->criterion, b->max_dT_K, b->loss_rel);
     fprintf(f, "\n%-13s", "agree if");
     acbb_cli_wrap(f, line, 13, 13);
     fprintf(f, "\n%-10s%-14s%9s%9s%9s%9s%9s%9s\n", "", "status", "Qi N", "Fx N", "loss W",
