@@ -59,6 +59,10 @@ void acbb_cli_print_branches(acbb_cli_out *o, const acbb_branches *b)
             "T_or C", "T_ir C", "T_ball C");
     branch_row(o, "steady", &b->steady);
     branch_row(o, "transient", &b->transient);
+    /* the transient's time (the table has no room for it; a steady run
+     * shows no other) */
+    if (!no_state(&b->transient))
+        fprintf(f, "%-10sthe transient ran to t = %.1f s simulated\n", "", b->transient.time_s);
 }
 
 void acbb_cli_schedule_shown(const acbb_scene *sc, acbb_scene *shown)

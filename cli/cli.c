@@ -466,7 +466,7 @@ int acbb_cli_cmd_bench_speed(const acbb_cli_args *a)
 
     size_t ran = 0;
     if ((rc = bench_points(&base, NULL, 1, 1, repeat, times, pts, NULL, &ran))) goto fail;
-    printf("one run            %10.2f ms  (%ld iterations, %s, model %s)\n",
+    printf("one run            %10.2f ms (%ld iterations, %s, %s)\n",
            acbb_median(times, (size_t)repeat), pts[0].snap.iteration,
            acbb_cli_point_status(&pts[0]), acbb_model_level_name(base.model));
     if ((rc = bench_points(&base, acbb_study_loads, ACBB_STUDY_NPTS, 1, repeat, times, pts,

@@ -566,8 +566,62 @@ static void sweep_failures(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
     for (size_t i = 0; i < n; i++) {
         const acbb_cli_point *p = &pts[i];
         if (acbb_cli_point_ok(p)) continue;
-        fprintf(o->f, "  %s: %s: %s\n", p->value, acbb_cli_point_status(p),
-                p->have_snap ? p->snap.message : p->message);
+        char line[600];
+        snprintf(line, sizeof line, "%s: %s: %s", p->value, acbb_cli_point_status(p),
+                 p->have_snap ? p->snap.message : p->message);
+        fputs("  ", o->f);
+        acbb_cli_wrap(o->f, line, 2, 4);
+        fputc('\n', o->f);
+    }
+}
+
+/* The sweep's losses (the switched-on kinds), total and wall time, in
+ * blocks that keep to 80 columns: a column is 9 wide or its name's width
+ * plus one ("ehl_rolling"); the reference profile's eight kinds take two
+ * blocks (one line was 103 columns). */
+static void sweep_losses(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
+{
+    FILE *f = o->f;
+    int col[ACBB_LOSS_KINDS + 2], nc = 0;
+    for (int l = 0; l < ACBB_LOSS_KINDS; l++)
+        if (n > 0 && acbb_loss_enabled(&pts[0].scene, (acbb_loss_kind)l)) col[nc++] = l;
+    col[nc++] = -1; /* total */
+    col[nc++] = -2; /* wall ms */
+    for (int c0 = 0; c0 < nc;) {
+        int c1 = c0, w = 10;
+        while (c1 < nc) {
+            const char *name = col[c1] >= 0 ? acbb_loss_name((acbb_loss_kind)col[c1]) : "total";
+            int cw = (int)strlen(name) + 1 > 9 ? (int)strlen(name) + 1 : 9;
+            if (c1 > c0 && w + cw > 80) break;
+            w += cw;
+            c1++;
+        }
+        fprintf(f, "\n%-10s", "losses W");
+        for (int c = c0; c < c1; c++) {
+            const char *name = col[c] >= 0 ? acbb_loss_name((acbb_loss_kind)col[c])
+                               : col[c] == -1 ? "total" : "wall ms";
+            fprintf(f, " %8s", name);
+        }
+        fputc('\n', f);
+        for (size_t i = 0; i < n; i++) {
+            const acbb_cli_point *p = &pts[i];
+            fprintf(f, "%-10s", p->value);
+            if (!p->have_snap) {
+                fputs("        -\n", f);
+                continue;
+            }
+            double v[SW_N];
+            sweep_values(o, p, v);
+            for (int c = c0; c < c1; c++) {
+                int cw = col[c] >= 0 && strlen(acbb_loss_name((acbb_loss_kind)col[c])) + 1 > 9
+                             ? (int)strlen(acbb_loss_name((acbb_loss_kind)col[c])) + 1 : 9;
+                if (col[c] >= 0) cell(o, cw, 4, 'g', v[SW_LOSS0 + col[c]]);
+                else if (col[c] == -1) cell(o, cw, 4, 'g', v[SW_TOTAL]);
+                else cell(o, cw, 1, 'f', p->wall_ms);
+            }
+            fputc('\n', f);
+        }
+        c0 = c1;
     }
 }
 
@@ -595,28 +649,7 @@ void acbb_cli_sweep_table(acbb_cli_out *o, const char *param,
         cell(o, 8, 3, 'f', v[SW_AO]);
         fputc('\n', f);
     }
-    bool on[ACBB_LOSS_KINDS];
-    fprintf(f, "\n%-10s", "losses W");
-    for (int l = 0; l < ACBB_LOSS_KINDS; l++) {
-        on[l] = n > 0 && acbb_loss_enabled(&pts[0].scene, (acbb_loss_kind)l);
-        if (on[l]) fprintf(f, " %8s", acbb_loss_name((acbb_loss_kind)l));
-    }
-    fprintf(f, " %8s %8s\n", "total", "wall ms");
-    for (size_t i = 0; i < n; i++) {
-        const acbb_cli_point *p = &pts[i];
-        fprintf(f, "%-10s", p->value);
-        if (!p->have_snap) {
-            fputs("        -\n", f);
-            continue;
-        }
-        double v[SW_N];
-        sweep_values(o, p, v);
-        for (int l = 0; l < ACBB_LOSS_KINDS; l++)
-            if (on[l]) cell(o, 9, 4, 'g', v[SW_LOSS0 + l]);
-        cell(o, 9, 4, 'g', v[SW_TOTAL]);
-        cell(o, 9, 1, 'f', p->wall_ms);
-        fputc('\n', f);
-    }
+    sweep_losses(o, pts, n);
     for (size_t i = 0; i < n; i++) {
         if (!acbb_cli_point_ok(&pts[i])) {
             fputs("\nfailed points:\n", f);
@@ -710,7 +743,6 @@ static void study_cells(acbb_cli_out *o, const acbb_cli_point *te,
     if (te->have_snap && wte->have_snap && lw > 0.0)
         cell(o, 7, 1, 'f', 100.0 * (te->snap.life.Lnmr_h - lw) / lw);
     else fprintf(o->f, "%7s", "-");
-    if (!acbb_cli_point_ok(te) || !acbb_cli_point_ok(wte)) fputs(" *", o->f);
     fputc('\n', o->f);
 }
 
@@ -721,9 +753,13 @@ static void study_block_failures(acbb_cli_out *o, const acbb_cli_point *pts,
         for (int m = 0; m < 2; m++) {
             const acbb_cli_point *p = &pts[2 * k + (size_t)m];
             if (acbb_cli_point_ok(p)) continue;
-            fprintf(o->f, "  * %s at %s %s: %s: %.50s\n", m == 0 ? "TE" : "WTE",
-                    b->x_label, p->value, acbb_cli_point_status(p),
-                    p->have_snap ? p->snap.message : p->message);
+            char line[600];
+            snprintf(line, sizeof line, "%s at %s %s: %s: %s", m == 0 ? "TE" : "WTE",
+                     b->x_label, p->value, acbb_cli_point_status(p),
+                     p->have_snap ? p->snap.message : p->message);
+            fputs("  * ", o->f);
+            acbb_cli_wrap(o->f, line, 4, 4);   /* whole, within 80 columns */
+            fputc('\n', o->f);
         }
     }
 }
@@ -744,7 +780,9 @@ void acbb_cli_study_table(acbb_cli_out *o, const acbb_cli_point *pts,
         fprintf(f, "%7s%8s%8s%9s%9s%9s%7s%8s%8s%7s\n", b->x_label, "TE", "WTE",
                 "TE", "WTE", "W", "%", "TE", "WTE", "%");
         for (size_t k = b->first; k < b->first + b->count; k++) {
-            fprintf(f, "%7s", pts[2 * k].value);
+            /* a '*' before the value: a run of the row failed (below) */
+            bool bad = !acbb_cli_point_ok(&pts[2 * k]) || !acbb_cli_point_ok(&pts[2 * k + 1]);
+            fprintf(f, "%c%6s", bad ? '*' : ' ', pts[2 * k].value);
             study_cells(o, &pts[2 * k], &pts[2 * k + 1]);
         }
         study_block_failures(o, pts, b);

@@ -75,8 +75,9 @@ static void table(const acbb_pmap_opts *o, const acbb_pmap_cell *c, const acbb_p
     if (o->max_rise_K > 0) printf(", rise <= %g K", o->max_rise_K);
     if (o->min_life_h > 0) printf(", L_nmr >= %g h", o->min_life_h);
     if (o->min_s0 > 0) printf(", s0 >= %g", o->min_s0);
-    printf(", no runaway\n\n%9s  %-*s  %s\n", "n rpm", o->n_preloads * 2, "cells (. ok, s skid, "
-           "h hot, l life, 0 s0, R runaway, x failed)", "window N");
+    /* the legend on its own line: in the header it made 83 columns */
+    printf(", no runaway\ncells: . ok, s skid, h hot, l life, 0 s0, R runaway, x failed\n\n"
+           "%9s  %-*s  %s\n", "n rpm", o->n_preloads * 2, "cells", "window N");
     for (int s = 0; s < o->n_speeds; s++) {
         printf("%9.0f  ", r[s].speed_rpm);
         for (int p = 0; p < o->n_preloads; p++) {

@@ -687,6 +687,18 @@ t $? "study PRESET shows its progress (study: N/48 runs)"
 grep -q '^mech_tol=1e-8 ' "$TMP/acc.txt" && grep -q 'total loss W' "$TMP/study.txt" &&
     awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/study.txt" "$TMP/acc.txt"
 t $? "study and bench accuracy tables fit 80 columns"
+# ... with failed points (a row's mark, the reasons whole and wrapped), the
+# reference profile's eight losses in a sweep (one line was 103 columns),
+# the preload window's legend (83)
+"$ACBB" study presets/combined-load.ini >"$TMP/st2.txt" 2>/dev/null
+"$ACBB" sweep presets/combined-load.ini --param operating.radial_load_N --values 300,600 \
+    >"$TMP/sw2.txt" 2>/dev/null
+"$ACBB" preload-map presets/preload-window.ini --speeds 4000:16000:3 --preloads 50:1500:3 \
+    >"$TMP/pm2.txt" 2>/dev/null
+grep -q '^\*    50 ' "$TMP/st2.txt" && grep -q 'or mounting.preload = displacement$' "$TMP/st2.txt" &&
+    grep -q 'ehl_rolling' "$TMP/sw2.txt" && grep -q '^cells: \. ok' "$TMP/pm2.txt" &&
+    awk 'length($0) > 80 { bad = 1 } END { exit bad }' "$TMP/st2.txt" "$TMP/sw2.txt" "$TMP/pm2.txt"
+t $? "a study with failed points, an eight-loss sweep and the preload window fit 80 columns"
 ACBB_PROGRESS=1 "$ACBB" sensitivity "$PRESET" --metric losses_W.total \
     --set fidelity.thermal_mode=steady >/dev/null 2>"$TMP/err"
 tr '\r' '\n' <"$TMP/err" | grep -q '^sensitivity: 1/[0-9]* runs, [0-9.]* runs/s, ETA [0-9]* s'

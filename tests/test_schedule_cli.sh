@@ -29,7 +29,8 @@ t $? "  every number finite"
 "$ACBB" run presets/runaway-rigid-preload.ini >"$TMP/step.txt" 2>/dev/null
 grep -q '^branches     DIFFERENT: steady solve and transient end on different branches$' \
     "$TMP/step.txt" && grep -q '^transient runaway  ' "$TMP/step.txt" &&
-    grep -q '^steady    converged  ' "$TMP/step.txt"
+    grep -q '^steady    converged  ' "$TMP/step.txt" &&
+    grep -q '^          the transient ran to t = [0-9.]* s simulated$' "$TMP/step.txt"
 t $? "runaway preset: the table says DIFFERENT, both states listed"
 
 # The staged run-in: one branch, schedule finished.

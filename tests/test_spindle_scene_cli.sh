@@ -42,6 +42,17 @@ code $? 0 "acbb check: a spindle key on a bearing scene is valid"
 has "$TMP/err" "note: shaft.seg*_mm, shaft.n_div, shaft.end_film_W_m2K, housing.*, motor.*, spindle.* has no effect here: shaft.segments = 0 is no spindle" \
     "  and said to have no effect"
 
+# A single front set with a displacement preload in a spindle: the nose
+# thrust acts through the shaft (the rule that sends a lone bearing's thrust
+# to the fixture is not a spindle's; it said "no effect" while the front
+# set's load went 106 -> 336 N)
+"$ACBB" check presets/spindle-belt-DB.ini --set spindle.rear_support=fixed --set set.arrangement=single \
+    --set spindle.rear_arrangement=single --set spindle.rear_preload_N=200 \
+    --set mounting.preload=displacement --set operating.axial_load_N=300 >/dev/null 2>"$TMP/err"
+code $? 0 "acbb check: a single front set with a displacement preload and a nose thrust"
+! grep -q "operating.axial_load_N has no effect" "$TMP/err"
+t $? "  the nose thrust is not said to have no effect ($(head -c 200 "$TMP/err"))"
+
 cp presets/spindle-belt-DB.ini "$TMP/e.ini"
 "$ACBB" edit "$TMP/e.ini" --set spindle.rear_friction_N=100 >/dev/null 2>"$TMP/err"
 code $? 0 "acbb edit: a spindle key"

@@ -554,7 +554,10 @@ size_t acbb_scene_inactive_effects(const acbb_scene *s, acbb_inactive_effect *ou
           { "preload_N", "mounting.preload = force: the axial load (operating.axial_load_N) "
             "preloads a single bearing; preload_N acts under mounting.preload = displacement",
             "mounting.preload_N" } },
-        { single && s->preload == ACBB_PRELOAD_DISPLACEMENT && s->axial_load != 0.0,
+        /* Not in a spindle: its nose thrust goes through the shaft to
+         * the front set (a fixed rear shares it), whatever the preload. */
+        { single && s->preload == ACBB_PRELOAD_DISPLACEMENT && s->axial_load != 0.0
+              && s->shaft_segments == 0,
           { "axial_load", "mounting.preload = displacement holds the ring where "
             "mounting.preload_N put it at rest: the thrust goes to the fixture; the axial load "
             "acts under mounting.preload = force",
