@@ -142,7 +142,7 @@ for sig in INT TERM; do
     awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
              { te = $c["te_status"] == "cancelled"; wte = $c["wte_status"] == "cancelled"
                print 3 * te + 3 * wte + 2 * (te || wte) }' "$TMP/s.csv" >"$TMP/s.want"
-    awk '/^ *[0-9]+  / { d = 0; for (i = 2; i <= 9; i++) d += $i == "-"; print d }' \
+    awk '/^[*]? *[0-9]+  / { sub(/^[*]/, ""); d = 0; for (i = 2; i <= 9; i++) d += $i == "-"; print d }' \
         "$TMP/out" >"$TMP/s.got"
     [ -s "$TMP/s.want" ] && cmp -s "$TMP/s.want" "$TMP/s.got"
     t $? "study PRESET, $S: a cancelled run shows no numbers in the table"
