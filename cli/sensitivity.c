@@ -128,7 +128,8 @@ static void print_table(FILE *f, const char *preset, const acbb_sens_result *r)
         fprintf(f, "%-33s", w->in.key);
         print_value(f, w->ok_lo, w->y_lo);
         print_value(f, w->ok_hi, w->y_hi);
-        fprintf(f, " %9.3g%s\n", w->effect, w->flips ? " FLIPS SIGN" : "");
+        if (w->ok_effect) fprintf(f, " %9.3g%s\n", w->effect, w->flips ? " FLIPS SIGN" : "");
+        else fprintf(f, " %9s\n", "-");
         fprintf(f, "  %s..%s\n", w->in.lo, w->in.hi);
     }
     if (!r->morris_r) return;
@@ -175,7 +176,7 @@ static cJSON *result_json(const acbb_sens_result *r)
         cJSON_AddStringToObject(o, "source", w->in.src);
         json_number(o, "at_low", w->ok_lo, w->y_lo);
         json_number(o, "at_high", w->ok_hi, w->y_hi);
-        json_number(o, "effect", 1, w->effect);
+        json_number(o, "effect", w->ok_effect, w->effect);
         cJSON_AddBoolToObject(o, "flips", w->flips);
         if (r->morris_r) {
             json_number(o, "mu_star", w->n_ee > 0, w->mu_star);
@@ -226,7 +227,8 @@ static void write_csv(FILE *f, const acbb_sens_result *r)
         csv_number(f, r->ok0, r->y0);
         csv_number(f, w->ok_lo, w->y_lo);
         csv_number(f, w->ok_hi, w->y_hi);
-        fprintf(f, ",%.17g,%d", w->effect, w->flips);
+        csv_number(f, w->ok_effect, w->effect);
+        fprintf(f, ",%d", w->flips);
         csv_number(f, w->n_ee > 0, w->mu_star);
         csv_number(f, w->n_ee > 0, w->mu);
         csv_number(f, w->n_ee > 0, w->sigma);

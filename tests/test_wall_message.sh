@@ -83,6 +83,15 @@ t $? "the branches block: not compared, the steady row without numbers"
 grep -q -F "; the base run: wall_limit: wall-clock bound fidelity.max_wall_s = 0.001 s reached$SETUP_TAIL" \
     "$TMP/err"
 t $? "sensitivity: the base run's failure names its status ($(tail -c 160 "$TMP/err"))"
+# ... and with every run failed no input shows an effect (it showed 0, as
+# if the input did nothing): '-' in the table, null in the JSON
+# shellcheck disable=SC2086
+"$ACBB" sensitivity $CL --metric losses_W.total --max-wall 0.001 >"$TMP/sens.txt" 2>/dev/null
+# shellcheck disable=SC2086
+"$ACBB" sensitivity $CL --metric losses_W.total --max-wall 0.001 --json >"$TMP/sens.json" 2>/dev/null
+grep -E -q '^lubricant\.boundary_friction +failed +failed +-$' "$TMP/sens.txt" &&
+    jq -e '(.inputs | length) > 10 and all(.inputs[]; .effect == null)' "$TMP/sens.json" >/dev/null
+t $? "sensitivity: all runs failed, no effect shown ('-', null)"
 
 # One form: the status name, then the bound and its key, the same words.
 [ "$(wc -l <"$TMP/heads")" -eq 4 ] && [ "$(sort -u "$TMP/heads" | wc -l)" -eq 1 ] &&

@@ -241,7 +241,9 @@ static void draw_row(acbb_app *a, int y, acbb_rect r, const cols *c, const acbb_
     input_name(row->in.key, c, name, sizeof name);
     fmt_end(row->ok_lo, row->y_lo, lo, sizeof lo);
     fmt_end(row->ok_hi, row->y_hi, hi, sizeof hi);
-    snprintf(eff, sizeof eff, "%.3g", row->effect);
+    /* no effect measured (its runs failed) is not "no effect" */
+    if (row->ok_effect) snprintf(eff, sizeof eff, "%.3g", row->effect);
+    else snprintf(eff, sizeof eff, "-");
     if (c->morris && row->n_ee > 0) snprintf(tail, sizeof tail, "%9.3g %9.3g", row->mu_star, row->sigma);
     else if (c->morris) snprintf(tail, sizeof tail, "%9s %9s", "-", "-");
     else tornado(row, sn(a)->v.res.y0, c, tail);

@@ -100,6 +100,7 @@ static void oat_row(acbb_sens_row *row, double y0, int ok0, double ylo, double y
     row->y_hi = row->ok_hi ? yhi : 0.0;
     row->effect = 0.0;
     row->flips = 0;
+    row->ok_effect = ok0 ? row->ok_lo || row->ok_hi : row->ok_lo && row->ok_hi;
     if (!ok0) {
         if (row->ok_lo && row->ok_hi) row->effect = fabs(yhi - ylo);
         return;

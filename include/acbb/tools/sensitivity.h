@@ -101,6 +101,8 @@ typedef struct {
     double y_lo, y_hi;           /* metric at the ends (valid when ok_lo / ok_hi) */
     int ok_lo, ok_hi;
     double effect;               /* max |y(end) - y0| over the ends that ran */
+    int ok_effect;               /* effect measured: y0 and an end, or both ends
+                                    ran (else effect 0 means nothing) */
     int flips;                   /* an end has the other sign than y0 */
     double mu, mu_star, sigma;   /* Morris (n_ee > 0) */
     int n_ee;                    /* elementary effects kept */
