@@ -575,53 +575,62 @@ static void sweep_failures(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
     }
 }
 
-/* The sweep's losses (the switched-on kinds), total and wall time, in
- * blocks that keep to 80 columns: a column is 9 wide or its name's width
- * plus one ("ehl_rolling"); the reference profile's eight kinds take two
- * blocks (one line was 103 columns). */
-static void sweep_losses(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
+enum { SW_COL_TOTAL = -1, SW_COL_WALL = -2 }; /* after the loss kinds */
+
+static const char *sweep_col_name(int c)
+{
+    return c >= 0 ? acbb_loss_name((acbb_loss_kind)c) : c == SW_COL_TOTAL ? "total" : "wall ms";
+}
+
+/* 9 wide, or the name's width plus one ("ehl_rolling") */
+static int sweep_col_width(int c)
+{
+    int w = (int)strlen(sweep_col_name(c)) + 1;
+    return w > 9 ? w : 9;
+}
+
+/* One block of the losses table: columns col[c0 .. c1-1]. */
+static void sweep_loss_block(acbb_cli_out *o, const acbb_cli_point *pts, size_t n,
+                             const int *col, int c0, int c1)
 {
     FILE *f = o->f;
+    fprintf(f, "\n%-10s", "losses W");
+    for (int c = c0; c < c1; c++) fprintf(f, " %8s", sweep_col_name(col[c]));
+    fputc('\n', f);
+    for (size_t i = 0; i < n; i++) {
+        const acbb_cli_point *p = &pts[i];
+        fprintf(f, "%-10s", p->value);
+        if (!p->have_snap) {
+            fputs("        -\n", f);
+            continue;
+        }
+        double v[SW_N];
+        sweep_values(o, p, v);
+        for (int c = c0; c < c1; c++) {
+            int cw = sweep_col_width(col[c]);
+            if (col[c] >= 0) cell(o, cw, 4, 'g', v[SW_LOSS0 + col[c]]);
+            else if (col[c] == SW_COL_TOTAL) cell(o, cw, 4, 'g', v[SW_TOTAL]);
+            else cell(o, cw, 1, 'f', p->wall_ms);
+        }
+        fputc('\n', f);
+    }
+}
+
+/* The sweep's losses (the switched-on kinds), total and wall time, in
+ * blocks that keep to 80 columns; the reference profile's eight kinds
+ * take two blocks (one line was 103 columns). */
+static void sweep_losses(acbb_cli_out *o, const acbb_cli_point *pts, size_t n)
+{
     int col[ACBB_LOSS_KINDS + 2], nc = 0;
     for (int l = 0; l < ACBB_LOSS_KINDS; l++)
         if (n > 0 && acbb_loss_enabled(&pts[0].scene, (acbb_loss_kind)l)) col[nc++] = l;
-    col[nc++] = -1; /* total */
-    col[nc++] = -2; /* wall ms */
-    for (int c0 = 0; c0 < nc;) {
-        int c1 = c0, w = 10;
-        while (c1 < nc) {
-            const char *name = col[c1] >= 0 ? acbb_loss_name((acbb_loss_kind)col[c1]) : "total";
-            int cw = (int)strlen(name) + 1 > 9 ? (int)strlen(name) + 1 : 9;
-            if (c1 > c0 && w + cw > 80) break;
-            w += cw;
-            c1++;
-        }
-        fprintf(f, "\n%-10s", "losses W");
-        for (int c = c0; c < c1; c++) {
-            const char *name = col[c] >= 0 ? acbb_loss_name((acbb_loss_kind)col[c])
-                               : col[c] == -1 ? "total" : "wall ms";
-            fprintf(f, " %8s", name);
-        }
-        fputc('\n', f);
-        for (size_t i = 0; i < n; i++) {
-            const acbb_cli_point *p = &pts[i];
-            fprintf(f, "%-10s", p->value);
-            if (!p->have_snap) {
-                fputs("        -\n", f);
-                continue;
-            }
-            double v[SW_N];
-            sweep_values(o, p, v);
-            for (int c = c0; c < c1; c++) {
-                int cw = col[c] >= 0 && strlen(acbb_loss_name((acbb_loss_kind)col[c])) + 1 > 9
-                             ? (int)strlen(acbb_loss_name((acbb_loss_kind)col[c])) + 1 : 9;
-                if (col[c] >= 0) cell(o, cw, 4, 'g', v[SW_LOSS0 + col[c]]);
-                else if (col[c] == -1) cell(o, cw, 4, 'g', v[SW_TOTAL]);
-                else cell(o, cw, 1, 'f', p->wall_ms);
-            }
-            fputc('\n', f);
-        }
-        c0 = c1;
+    col[nc++] = SW_COL_TOTAL;
+    col[nc++] = SW_COL_WALL;
+    for (int c0 = 0, c1; c0 < nc; c0 = c1) {
+        int w = 10;
+        for (c1 = c0; c1 < nc && (c1 == c0 || w + sweep_col_width(col[c1]) <= 80); c1++)
+            w += sweep_col_width(col[c1]);
+        sweep_loss_block(o, pts, n, col, c0, c1);
     }
 }
 
