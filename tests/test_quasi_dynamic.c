@@ -288,6 +288,51 @@ static void test_own_restart(void)
     acbb_mech_free(f.m);
 }
 
+/* A transient step of many balls (skip and path on) ends a ball's solve
+ * at a residual sum of 1e-4 (its skip keeps far staler speeds); the steady
+ * polish (skip 1e-9, no path) solves that ball again though its inputs did
+ * not move, to the root a tight cold solve finds; a tight root is kept by
+ * the next step. */
+static void test_path_tol(void)
+{
+    ball_fixture f;
+    acbb_scene_default(&f.s);
+    if (!ok(fixture_setup(&f, 15000, 1000), "15000 rpm, 1000 N")) return;
+    acbb_qd *qd, *q1;
+    acbb_qd_new(f.s.contact_grid, &qd);
+    acbb_qd_new(f.s.contact_grid, &q1);
+    static acbb_mech_state cold;
+    acbb_ball_state b0 = f.st.ball[0], *b = &f.st.ball[0];
+    double change, w[4];
+    acbb_error err = { "" };
+    acbb_qd_set_skip(qd, 3e-3);
+    acbb_qd_set_path(qd, 1);
+    acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err);
+    double rl = residual(&f, &b0, b->qd_w);
+    ok(rl < 1e-4 && rl > 1e-9, "a transient step's solve: residual %.2e in (1e-9, 1e-4)", rl);
+    /* The film and tables follow the ball's speeds: the polish's residual
+     * is the one at the step's state, solved cold to compare. */
+    acbb_mech_state_copy(&cold, &f.st);
+    acbb_ball_state b1 = *b;
+    acbb_qd_update(q1, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &cold, &change, &err);
+    acbb_qd_set_skip(qd, 1e-9);
+    acbb_qd_set_path(qd, 0);
+    acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err);
+    double d = 0.0, rt = residual(&f, &b1, b->qd_w);
+    for (int k = 0; k < 4; k++)
+        d = fmax(d, fabs(cold.ball[0].qd_w[k] - b->qd_w[k]) / f.wi);
+    ok(rt < 1e-9 && d < 1e-9, "the polish solves it again: residual %.2e, %.1e of the ring "
+       "speed from a cold solve", rt, d);
+    memcpy(w, b->qd_w, sizeof w);
+    acbb_qd_set_skip(qd, 3e-3);
+    acbb_qd_set_path(qd, 1);
+    acbb_qd_update(qd, &f.s, &f.q, f.g, f.wi, &f.oil, &f.oil, &f.mix, &f.st, &change, &err);
+    ok(memcmp(w, b->qd_w, sizeof w) == 0, "the next step keeps the tight root");
+    acbb_qd_free(qd);
+    acbb_qd_free(q1);
+    acbb_mech_free(f.m);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -299,5 +344,6 @@ int main(void)
     test_neighbour_start();
     test_relax();
     test_own_restart();
+    test_path_tol();
     return done_testing();
 }
