@@ -453,6 +453,35 @@ static void test_skip_life(void)
        "skip_life: every other result bit for bit the same");
 }
 
+/* Issue 30, sixth round: snap_to makes each final snapshot in the
+ * caller's record (r->snap points there), the same bits as the worker's. */
+static acbb_snapshot to_rec[3];
+static acbb_snapshot *snap_to_cb(void *ctx, size_t i)
+{
+    (void)ctx;
+    return i < 3 ? &to_rec[i] : NULL;
+}
+
+static void test_snap_to(const acbb_scene *base)
+{
+    static batch_case a, b;
+    case_init(&a, base);
+    case_init(&b, base);
+    run_case(&a, 4, 1, ACBB_BATCH_AS_SCENE, NULL);
+    acbb_batch_opts o = { .jobs = 1, .cancel = &b.cancel, .scene = scene_cb, .step = step_cb,
+                          .done = done_cb, .ctx = &b, .snap_to = snap_to_cb };
+    acbb_batch_run(4, &o, NULL);
+    int same = 1, there = 1;
+    for (size_t i = 0; i < 4; i++) {
+        same = same && a.have_snap[i] && b.have_snap[i] && same_snap(&a.snap[i], &b.snap[i]);
+        there = there && (i < 3 ? b.res[i].snap == &to_rec[i] && same_snap(&to_rec[i], &a.snap[i])
+                                : b.res[i].snap != NULL);
+    }
+    ok(same && there && !strcmp(a.msg[0], b.msg[0]),
+       "snap_to: each final snapshot made in the caller's record (the worker's where it gives "
+       "none), the same bits and message as without");
+}
+
 int main(void)
 {
     /* No gsl_set_error_handler_off here: the engine turns GSL's aborting
@@ -465,6 +494,7 @@ int main(void)
     }
     test_warm();
     test_skip_life();
+    test_snap_to(&base);
     test_jobs_independent(&base);
     test_cancel_serial(&base);
     test_cancel_parallel(&base);

@@ -685,6 +685,38 @@ static void step_snapshot_case(acbb_sim *sim, const char *what)
     acbb_sim_free(sim);
 }
 
+/* Issue 30, sixth round: a perturbed study's hook (acbb_simx_snapshot_values)
+ * makes step 0 as a later step, not whole: the same loads, losses,
+ * expansions and smallest loss as the whole snapshot, the rest not made. */
+static void test_values_snapshot(void)
+{
+    static acbb_snapshot vals, whole;
+    acbb_sim *sim = combined_sim();
+    if (!sim) return;
+    for (int j = 0; j < ACBB_MAX_BALLS; j++) vals.balls[j].psi = -1.0 - j; /* stale */
+    vals.T[0] = -1.0;
+    acbb_simx_snapshot_values(sim, &vals);
+    acbb_sim_snapshot(sim, &whole);
+    int same = vals.iteration == 0 && whole.iteration == 0 && vals.n_balls == whole.n_balls
+               && vals.time == whole.time && vals.state == whole.state
+               && acbb_study_min_loss(&vals) == acbb_study_min_loss(&whole)
+               && vals.losses.total == whole.losses.total && vals.delta_x == whole.delta_x
+               && vals.exp_inner == whole.exp_inner && vals.exp_inner_cen == whole.exp_inner_cen
+               && vals.exp_outer == whole.exp_outer && vals.exp_ball == whole.exp_ball;
+    int kept = vals.T[0] == -1.0;
+    for (int j = 0; j < whole.n_balls; j++) {
+        same = same && vals.balls[j].Qi == whole.balls[j].Qi
+               && vals.balls[j].Qo == whole.balls[j].Qo && vals.balls[j].loss == whole.balls[j].loss;
+        kept = kept && vals.balls[j].psi == -1.0 - j;
+    }
+    ok(same && whole.balls[1].Qi != whole.balls[3].Qi,
+       "values snapshot at step 0: every ball's Qi, Qo, loss and the smallest loss the whole "
+       "snapshot's, bit for bit (balls differ)");
+    ok(kept, "values snapshot at step 0: the rest is not made (a stale azimuth and temperature "
+       "stay)");
+    acbb_sim_free(sim);
+}
+
 /* The same for a DB pair (issue 30, fifth round): a set's step snapshot is
  * bearing 0's, made from its values, not the whole set snapshot. */
 static void test_step_snapshot(void)
@@ -711,6 +743,7 @@ int main(void)
     test_whole();
     test_compare();
     test_step_snapshot();
+    test_values_snapshot();
     test_checkpoint();
     return done_testing();
 }

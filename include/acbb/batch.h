@@ -94,6 +94,12 @@ typedef acbb_status (*acbb_batch_scene_fn)(void *ctx, size_t i, acbb_scene *out,
  * touched. */
 typedef void (*acbb_batch_step_fn)(void *ctx, size_t i, const acbb_sim *sim);
 
+/* Where point i's final snapshot is made (on the worker, without the
+ * lock; only point i's data): the caller's record instead of the
+ * worker's, so `done` need not copy it (a study point's, 21 kB). NULL:
+ * the worker's. */
+typedef acbb_snapshot *(*acbb_batch_snap_fn)(void *ctx, size_t i);
+
 typedef struct {
     size_t index;
     int ran;                    /* 0: never started (a cancel came first: status ACBB_CANCELLED) */
@@ -121,6 +127,7 @@ typedef struct {
     int skip_liftoff;           /* acbb_sim_opts.skip_liftoff of every run */
     acbb_batch_warm_fn warm;    /* may be NULL: every point from ambient */
     acbb_batch_keep_fn keep;    /* may be NULL: no state kept */
+    acbb_batch_snap_fn snap_to; /* may be NULL: the final snapshot is the worker's */
 } acbb_batch_opts;
 
 typedef struct {

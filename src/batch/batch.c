@@ -136,12 +136,14 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
         step_ctx sc = { o, i };
         acbb_run_ctl ctl = { .hook = o->step ? step_hook : NULL, .ctx = &sc, .cancel = o->cancel };
         st = acbb_sim_drive(sim, &ctl);
-        acbb_sim_snapshot(sim, &w->snap);
-        r->snap = &w->snap;
+        acbb_snapshot *to = o->snap_to ? o->snap_to(o->ctx, i) : NULL;
+        if (!to) to = &w->snap;
+        acbb_sim_snapshot(sim, to);
+        r->snap = to;
         /* a warm-started point's state starts nothing: its caller has one */
         acbb_warm *kept = o->keep && !from ? acbb_simx_warm_save(sim) : NULL;
         if (kept) o->keep(o->ctx, i, kept);
-        snprintf(w->msg, sizeof w->msg, "%s", w->snap.message);
+        snprintf(w->msg, sizeof w->msg, "%s", to->message);
     } else {
         snprintf(w->msg, sizeof w->msg, "%s", err.msg[0] ? err.msg : acbb_status_name(st));
     }

@@ -617,6 +617,12 @@ void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o)
     else step_snapshot(sim, 0, o);
 }
 
+void acbb_simx_snapshot_values(const acbb_sim *sim, acbb_snapshot *o)
+{
+    if (sim->set || sim->spindle) acbb_simx_snapshot_step(sim, o);
+    else step_snapshot(sim, 0, o);
+}
+
 acbb_status acbb_sim_bearing_snapshot(const acbb_sim *sim, int k, acbb_snapshot *out)
 {
     if (sim->set) return acbb_set_sim_bearing_snapshot(sim->set, k, out);

@@ -33,6 +33,10 @@ double acbb_snap_max_pmax(const acbb_mech_state *ms);
  * life). For a hook that reads every step's losses and loads (the
  * study's, study.c). */
 void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o);
+/* The same values at every iteration, 0 included (a single bearing's;
+ * a set's and a spindle's as acbb_simx_snapshot_step): for a hook that
+ * reads no step whole (a perturbed study's, study.c). */
+void acbb_simx_snapshot_values(const acbb_sim *sim, acbb_snapshot *o);
 
 /* A converged single bearing's temperatures and mechanics (batch.h
  * acbb_warm), the start of a run of a scene that differs in values only:
