@@ -429,6 +429,41 @@ static void test_warm(void)
     acbb_warm_free(tw.kept);
 }
 
+/* Issue 30, sixth round: a transient takes of another transient's kept
+ * state only its set-up (the room-temperature mechanics at speed), and
+ * only when its mechanics are built the same: bit for bit its own run,
+ * with the set-up's continuation solves not made again. */
+static void test_setup_shared(void)
+{
+    static warm_case base, net, netw, mu, muw;
+    base.scene = load("presets/7008C.ini");
+    warm_run(&base, ACBB_BATCH_TRANSIENT, NULL);
+    acbb_error err = { { 0 } };
+    net.scene = base.scene; /* a network input: the mechanics read none */
+    acbb_scene_set(&net.scene, "mounting.h_face_W_m2K", "10000", &err);
+    mu.scene = base.scene; /* read by the mechanics (the gyroscopic moment's friction) */
+    acbb_scene_set(&mu.scene, "lubricant.boundary_friction", "0.12", &err);
+    netw.scene = net.scene;
+    muw.scene = mu.scene;
+    warm_run(&net, ACBB_BATCH_TRANSIENT, NULL);
+    warm_run(&netw, ACBB_BATCH_TRANSIENT, base.kept);
+    warm_run(&mu, ACBB_BATCH_TRANSIENT, NULL);
+    warm_run(&muw, ACBB_BATCH_TRANSIENT, base.kept);
+    long made = net.snap.work.mechanics_solves, shared = netw.snap.work.mechanics_solves;
+    ok(base.kept != NULL && net.snap.state == ACBB_RUN_CONVERGED
+       && same_snap(&net.snap, &netw.snap) && shared == made - 4,
+       "transient from a kept set-up (h_face changed): every result bit for bit its own run's, "
+       "%ld mechanics solves instead of %ld (the continuation's 4 taken)", shared, made);
+    ok(same_snap(&mu.snap, &muw.snap)
+       && muw.snap.work.mechanics_solves == mu.snap.work.mechanics_solves,
+       "transient whose mechanics differ (boundary friction): the set-up made afresh, the same "
+       "bits and solves");
+    ok(netw.kept == NULL && muw.kept == NULL, "a point given a start keeps none");
+    acbb_warm_free(base.kept);
+    acbb_warm_free(net.kept);
+    acbb_warm_free(mu.kept);
+}
+
 /* Issue 30: skip_life (the robustness's runs): the rating life is neither
  * made nor published (all zero), every other result the same bits. */
 static void test_skip_life(void)
@@ -494,6 +529,7 @@ int main(void)
     }
     test_warm();
     test_skip_life();
+    test_setup_shared();
     test_snap_to(&base);
     test_jobs_independent(&base);
     test_cancel_serial(&base);

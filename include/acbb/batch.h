@@ -71,10 +71,14 @@ void acbb_warm_free(acbb_warm *w);
 
 /* Point i's start (NULL: from ambient, as always); read on the worker
  * while the point sets up. Used for steady points: a transient's path
- * starts from ambient whatever is given. */
+ * starts from ambient whatever is given; of a state kept by a transient
+ * it takes the set-up's room-temperature mechanics at speed when its own
+ * mechanics are built the same at the same speed (the same bits, issue
+ * 30: the perturbed studies' transients). */
 typedef const acbb_warm *(*acbb_batch_warm_fn)(void *ctx, size_t i);
-/* Point i converged as a single bearing from no warm start: its state,
- * now the callee's (a point started from one keeps none). */
+/* Point i converged as a single bearing from no warm start: its state
+ * (a transient's with its set-up's mechanics), now the callee's (a point
+ * started from one keeps none). */
 typedef void (*acbb_batch_keep_fn)(void *ctx, size_t i, acbb_warm *w);
 
 typedef enum {

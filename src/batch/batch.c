@@ -128,9 +128,9 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
         apply_mode(&w->scene, mode);
         acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness, o->skip_life,
                              o->skip_liftoff };
-        from = o->warm && w->scene.thermal_mode == ACBB_THERMAL_STEADY ? o->warm(o->ctx, i)
-                                                                        : NULL;
-        st = acbb_simx_create_from(&w->scene, &so, from, &sim, &err);
+        /* a transient takes only the set-up (sim_priv.h), and keeps its own */
+        from = o->warm ? o->warm(o->ctx, i) : NULL;
+        st = acbb_simx_create_from(&w->scene, &so, from, o->keep && !from, &sim, &err);
     }
     if (st == ACBB_OK) {
         step_ctx sc = { o, i };
@@ -152,7 +152,7 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     r->wall_ms = acbb_now_ms() - t0;
 }
 
-void acbb_warm_free(acbb_warm *w) { free(w); }
+void acbb_warm_free(acbb_warm *w) { acbb_simx_warm_free(w); }
 
 static void report(pool *pl, acbb_batch_result *r)
 {

@@ -4,6 +4,7 @@
  * mechanics.c. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <gsl/gsl_multiroots.h>
 #include <gsl/gsl_roots.h>
 #include "mechanics.h"
@@ -84,6 +85,49 @@ void acbb_mech_free(acbb_mech *m)
 }
 
 const acbb_geometry *acbb_mech_geometry(const acbb_mech *m) { return &m->g; }
+
+/* The workspace's solver pointers cleared and its in-solve context (the
+ * expansions pointer into itself, the trial state) made its own: set
+ * afresh by every solve (mechanics.c acbb_mech_solve, solve_ring). */
+static void strip(acbb_mech *t, const acbb_mech *from)
+{
+    t->brent = t->brent_z = t->brent_a = NULL;
+    for (int n = 0; n <= MAX_RING_DOF; n++) t->ring_solver[n] = NULL;
+    t->e = from->e ? &t->e_copy : NULL;
+    t->trial = NULL;
+}
+
+acbb_mech *acbb_mech_keep(const acbb_mech *m)
+{
+    acbb_mech *t = malloc(sizeof *t);
+    if (!t) return NULL;
+    memcpy(t, m, sizeof *t); /* the padding too: acbb_mech_same compares bytes */
+    strip(t, m);
+    return t;
+}
+
+int acbb_mech_same(const acbb_mech *a, const acbb_mech *b)
+{
+    acbb_mech *t = acbb_mech_keep(a), *u = t ? acbb_mech_keep(b) : NULL;
+    int same = u && !t->e == !u->e;
+    if (same) t->e = u->e = NULL; /* each into itself */
+    same = same && memcmp(t, u, sizeof *t) == 0;
+    acbb_mech_free(t);
+    acbb_mech_free(u);
+    return same;
+}
+
+void acbb_mech_adopt(acbb_mech *dst, const acbb_mech *src)
+{
+    acbb_mech own = *dst;
+    memcpy(dst, src, sizeof *dst);
+    dst->brent = own.brent;
+    dst->brent_z = own.brent_z;
+    dst->brent_a = own.brent_a;
+    for (int n = 0; n <= MAX_RING_DOF; n++) dst->ring_solver[n] = own.ring_solver[n];
+    dst->e = src->e ? &dst->e_copy : NULL;
+    dst->trial = NULL;
+}
 
 void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
 {

@@ -215,6 +215,50 @@ static acbb_status initial_mechanics(acbb_sim *sim, const acbb_mech_state *warm,
     return ACBB_OK;
 }
 
+/* The set-up's mechanics of a transient from another run's (acbb_sim_setup)
+ * when this workspace is built the same at the same speed, else solved
+ * here; a run that keeps its own (keep_setup) copies the workspace as
+ * built and as left. The work counters count the solves made here only. */
+static int setup_fits(const acbb_sim *sim, const acbb_sim_setup *from)
+{
+    return from && memcmp(&from->omega, &sim->s.inner_speed, sizeof from->omega) == 0
+        && from->ms.n == sim->s.n_balls && acbb_mech_same(sim->mech, from->built);
+}
+
+static void setup_free(acbb_sim_setup *u)
+{
+    if (!u) return;
+    acbb_mech_free(u->built);
+    acbb_mech_free(u->ran);
+    free(u);
+}
+
+static acbb_status transient_mechanics(acbb_sim *sim, const acbb_sim_setup *from,
+                                       acbb_error *err)
+{
+    if (setup_fits(sim, from)) {
+        acbb_mech_adopt(sim->mech, from->ran);
+        acbb_mech_state_copy(&sim->ms, &from->ms);
+        return ACBB_OK;
+    }
+    acbb_sim_setup *u = sim->keep_setup ? calloc(1, sizeof *u) : NULL;
+    if (u && !(u->built = acbb_mech_keep(sim->mech))) {
+        free(u);
+        u = NULL;
+    }
+    acbb_status rc = initial_mechanics(sim, NULL, err);
+    if (u && (rc != ACBB_OK || !(u->ran = acbb_mech_keep(sim->mech)))) {
+        setup_free(u);
+        u = NULL;
+    }
+    if (u) {
+        u->omega = sim->s.inner_speed;
+        acbb_mech_state_copy(&u->ms, &sim->ms);
+        sim->setup = u;
+    }
+    return rc;
+}
+
 /* The bound met in the set-up: no state yet, nothing to keep (one text for
  * a bearing and a spindle; a set's is sim_set.c setup_wall's, the same). */
 static acbb_status setup_wall(const acbb_scene *s, acbb_error *err)
@@ -259,12 +303,17 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     arm_bound(sim); /* now that the dynamic workspace exists */
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
-    if (w && w->n_nodes != sim->nw.n) w = NULL;
+    /* A transient starts from ambient: of w only its set-up (above). */
+    int transient = s->thermal_mode != ACBB_THERMAL_STEADY;
+    const acbb_sim_setup *from = w && transient ? w->setup : NULL;
+    if (transient || (w && w->n_nodes != sim->nw.n)) w = NULL;
+    sim->warm_started = w != NULL;
     if (w) T_warm = w->T;
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
     sim->setting_up = 1;
-    rc = initial_mechanics(sim, w ? &w->ms : NULL, err);
+    rc = w || T_warm || !transient ? initial_mechanics(sim, w ? &w->ms : NULL, err)
+                                   : transient_mechanics(sim, from, err);
     if (rc == ACBB_OK && !sim->no_first_state)
         rc = acbb_simx_evaluate(sim, err);
     sim->setting_up = 0;
@@ -335,7 +384,8 @@ static int warm_fits(const acbb_warm *w, const acbb_scene *s)
 }
 
 static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
-                               const acbb_warm *w, acbb_sim **out, acbb_error *err)
+                               const acbb_warm *w, int keep_setup, acbb_sim **out,
+                               acbb_error *err)
 {
     if (!warm_fits(w, s)) w = NULL;
     acbb_sim *sim = calloc(1, sizeof *sim);
@@ -352,17 +402,19 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
     sim->skip_life = o->skip_life;
     sim->skip_liftoff = o->skip_liftoff;
     sim->no_first_state = member;
+    sim->keep_setup = keep_setup;
     double t0 = acbb_now_ms();
     acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
                    : s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
                    : sim_init(sim, s, NULL, w, err);
     if (sim->set || sim->spindle) sim->setup_ms = acbb_now_ms() - t0; /* sim_init times its own */
     if (rc != ACBB_OK) {
+        int warm = sim->warm_started;
         acbb_sim_free(sim);
         /* A warm start that failed starts again cold (unless stopped). */
-        if (w && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
+        if (warm && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
             if (err) *err = (acbb_error){ 0 };
-            return create_body(s, o, member, NULL, out, err);
+            return create_body(s, o, member, NULL, keep_setup, out, err);
         }
         return rc;
     }
@@ -380,7 +432,7 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 {
     static const acbb_sim_opts defaults; /* o == NULL: all zero */
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o ? o : &defaults, 0, NULL, out, err);
+    acbb_status rc = create_body(s, o ? o : &defaults, 0, NULL, 0, out, err);
     acbb_gsl_leave();
     return rc;
 }
@@ -388,34 +440,43 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                                     acbb_error *err)
 {
-    return create_body(s, o, 1, NULL, out, err);
+    return create_body(s, o, 1, NULL, 0, out, err);
 }
 
 acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
-                                  const acbb_warm *w, acbb_sim **out, acbb_error *err)
+                                  const acbb_warm *w, int keep_setup, acbb_sim **out,
+                                  acbb_error *err)
 {
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o, 0, w, out, err);
+    acbb_status rc = create_body(s, o, 0, w, keep_setup, out, err);
     acbb_gsl_leave();
     return rc;
 }
 
-acbb_warm *acbb_simx_warm_save(const acbb_sim *sim)
+acbb_warm *acbb_simx_warm_save(acbb_sim *sim)
 {
     if (sim->set || sim->run.state != ACBB_RUN_CONVERGED) return NULL;
     acbb_warm *w = malloc(sizeof *w);
     if (!w) return NULL;
     *w = (acbb_warm){ .network = sim->s.network, .model = sim->s.model,
                       .n_balls = sim->s.n_balls, .heating = sim->s.heating,
-                      .n_nodes = sim->nw.n };
+                      .n_nodes = sim->nw.n, .setup = sim->setup };
+    sim->setup = NULL;
     memcpy(w->T, sim->T, sizeof w->T);
     acbb_mech_state_copy(&w->ms, &sim->ms);
     return w;
 }
 
+void acbb_simx_warm_free(acbb_warm *w)
+{
+    if (w) setup_free(w->setup);
+    free(w);
+}
+
 void acbb_sim_free(acbb_sim *sim)
 {
     if (!sim) return;
+    setup_free(sim->setup);
     acbb_set_sim_free(sim->set);
     acbb_spindle_sim_free(sim->spindle);
     sim_release(sim);
