@@ -29,6 +29,7 @@
 #include "sim_priv.h"
 #include "sim_struct.h"
 #include "test_study_preset.h"
+#include "study_priv.h"
 
 /* ---- 1. the check table on constructed results ---- */
 
@@ -209,6 +210,61 @@ static void test_undefined(acbb_study_runs *r)
     ok(clean, "all-zero results: no item prints nan or inf");
 }
 
+/* Issue 30, sixth round: the check table without its texts
+ * (acbb_study_eval_verdicts, the perturbed studies') gives the item's and
+ * every check's verdict the texts give, or says it is not sure: where a
+ * number would print non-finite (sanitize turns that check NOT
+ * EVALUATED) it must not be. */
+static int same_verdicts(const acbb_study_item *a, const acbb_study_item *b)
+{
+    int same = a->verdict == b->verdict && a->n_checks == b->n_checks;
+    for (int k = 0; same && k < a->n_checks; k++)
+        same = strcmp(a->checks[k].id, b->checks[k].id) == 0
+               && a->checks[k].verdict == b->checks[k].verdict
+               && a->checks[k].info == b->checks[k].info;
+    return same;
+}
+
+static void text_free_case(const acbb_study_runs *r, const char *what, int *n_sure, int *n_bad)
+{
+    static acbb_study_item full, fast;
+    size_t n;
+    acbb_study_table(&n);
+    for (int i = 1; i <= (int)n; i++) {
+        acbb_study_eval_row(row(i), r, &full);
+        int sure = acbb_study_eval_verdicts(row(i), r, &fast);
+        *n_sure += sure;
+        if (sure && !same_verdicts(&full, &fast)) {
+            (*n_bad)++;
+            printf("#   %s: item %d's verdicts differ without text\n", what, i);
+        }
+    }
+}
+
+static void test_text_free(acbb_study_runs *r)
+{
+    int sure0 = 0, bad = 0, sure1 = 0;
+    reset(r); /* all zero: ratios 0/0 print nan */
+    text_free_case(r, "all zero", &sure0, &bad);
+    static acbb_study_item it;
+    int item2_sure = acbb_study_eval_verdicts(row(2), r, &it);
+    for (size_t i = 0; i < r->n; i++) { /* numbers that differ point to point */
+        acbb_snapshot *s = &r->all[i].last;
+        double x = 1.0 + 0.37 * (double)i;
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++) s->losses.P[l] = x * (1.0 + 0.1 * l);
+        s->losses.total = 7.0 * x;
+        s->T_outer_ring = 30.0 + x;
+        s->balls[0].Qi = 100.0 + x;
+        s->balls[0].Qo = 120.0 + x;
+        s->balls[0].film_i = 1e-7 * x;
+        r->all[i].first = *s;
+    }
+    text_free_case(r, "varied", &sure1, &bad);
+    ok(bad == 0 && !item2_sure && sure1 >= 12,
+       "check table without texts: every verdict the texts' where sure (%d + %d of 36 rows); "
+       "not sure where a number prints nan (item 2 on all-zero results)", sure0, sure1);
+}
+
 /* Item 18 from what the snapshots publish. */
 static void test_item18(acbb_study_runs *r)
 {
@@ -254,6 +310,7 @@ static void test_constructed(void)
     test_failed_run(r);
     test_undefined(r);
     test_item18(r);
+    test_text_free(r);
     /* Conclusion (2) maps onto 9a and 9b: evaluate the study as a whole. */
     reset(r);
     last(r, 0, ACBB_STUDY_S100, 0, ACBB_STUDY_TE)->losses.total = 1.0;
