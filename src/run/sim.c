@@ -267,6 +267,38 @@ static acbb_status setup_wall(const acbb_scene *s, acbb_error *err)
                           "reached during the set-up, before the first state", s->max_wall_s);
 }
 
+/* Clear the ball records [from, to) of sim's mechanics and losses. */
+static void clear_balls(acbb_sim *sim, int from, int to)
+{
+    to = to < ACBB_MAX_BALLS ? to : ACBB_MAX_BALLS;
+    if (from >= to) return;
+    memset(&sim->ms.ball[from], 0, (size_t)(to - from) * sizeof sim->ms.ball[0]);
+    memset(&sim->bl[from], 0, (size_t)(to - from) * sizeof sim->bl[0]);
+}
+
+/* A new Sim, all zero but the ball records past the scene's n balls in
+ * its mechanics and losses (60 % of it: issue 30, 0.08 G of `report
+ * --sensitivity`): no code reads a ball past ms.n (every loop over the
+ * balls ends at ms.n, or the solved ones before it; the checkpoints keep
+ * and best are malloc'd the same way, and tests/test_study.c runs with
+ * those records poisoned); sim_init clears more if the resolved scene
+ * has more balls (a designation's count). */
+static acbb_sim *sim_alloc(int n)
+{
+    acbb_sim *sim = malloc(sizeof *sim);
+    if (!sim) return NULL;
+    n = n < 0 ? 0 : n < ACBB_MAX_BALLS ? n : ACBB_MAX_BALLS;
+    char *p = (char *)sim, *ms_tail = (char *)&sim->ms.ball[n], *bl = (char *)sim->bl,
+         *bl_tail = (char *)&sim->bl[n];
+    char *ms_end = (char *)(&sim->ms + 1), *bl_end = (char *)(sim->bl + ACBB_MAX_BALLS);
+    memset(p, 0, (size_t)(ms_tail - p));
+    memset(ms_end, 0, (size_t)(bl - ms_end));
+    memset(bl, 0, (size_t)(bl_tail - bl));
+    memset(bl_end, 0, (size_t)(p + sizeof *sim - bl_end));
+    sim->cleared_balls = n;
+    return sim;
+}
+
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
                             const acbb_warm *w, acbb_error *err)
 {
@@ -275,6 +307,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     acbb_scene_resolve(s, &sim->resolved, NULL);
     sim->s = sim->resolved;
     s = &sim->s;
+    clear_balls(sim, sim->cleared_balls, s->n_balls);
+    sim->cleared_balls = s->n_balls > sim->cleared_balls ? s->n_balls : sim->cleared_balls;
     if (!sim->skip_life) /* once per scene, not per snapshot */
         acbb_life_static_basis(s, &sim->life_basis);
     double t0 = acbb_now_ms();
@@ -388,7 +422,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
                                acbb_error *err)
 {
     if (!warm_fits(w, s)) w = NULL;
-    acbb_sim *sim = calloc(1, sizeof *sim);
+    acbb_sim *sim = sim_alloc(s->n_balls);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))
         || !(sim->best = malloc(sizeof *sim->best))) {
         if (sim) free(sim->keep);
@@ -511,6 +545,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     memcpy(T, sim->T, sizeof T);
     acbb_sim *fresh = calloc(1, sizeof *fresh);
     if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    fresh->cleared_balls = ACBB_MAX_BALLS;
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
     fresh->skip_stiffness = sim->skip_stiffness;

@@ -92,6 +92,7 @@ struct acbb_sim {
     double deadline_ms;        /* fidelity.max_wall_s as a monotonic-clock deadline; 0 none */
     int keep_setup;            /* a transient keeps its set-up (acbb_simx_create_from) */
     int warm_started;          /* sim_init started from a warm state (acbb_warm) */
+    int cleared_balls;         /* ms.ball and bl are zero below this (sim.c sim_alloc) */
     acbb_sim_setup *setup;     /* owned: the kept set-up, until acbb_simx_warm_save */
 };
 
