@@ -91,6 +91,7 @@ typedef struct {
     acbb_scene scene;
     acbb_snapshot snap;
     char msg[520];
+    acbb_mech *spare;           /* the last run's mechanics workspace, renewed by the next */
 } slot;
 
 typedef struct {
@@ -130,7 +131,9 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
                              o->skip_liftoff };
         /* a transient takes only the set-up (sim_priv.h), and keeps its own */
         from = o->warm ? o->warm(o->ctx, i) : NULL;
-        st = acbb_simx_create_from(&w->scene, &so, from, o->keep && !from, &sim, &err);
+        acbb_simx_start start = { from, o->keep && !from, w->spare };
+        w->spare = NULL; /* the Sim's now */
+        st = acbb_simx_create_from(&w->scene, &so, &start, &sim, &err);
     }
     if (st == ACBB_OK) {
         step_ctx sc = { o, i };
@@ -147,7 +150,7 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     } else {
         snprintf(w->msg, sizeof w->msg, "%s", err.msg[0] ? err.msg : acbb_status_name(st));
     }
-    acbb_sim_free(sim);
+    w->spare = acbb_simx_free_spare(sim);
     r->status = st;
     r->wall_ms = acbb_now_ms() - t0;
 }
@@ -171,6 +174,7 @@ static void *pool_worker(void *arg)
 {
     pool *pl = arg;
     slot *w = malloc(sizeof *w);
+    if (w) w->spare = NULL;
     for (size_t i; (i = atomic_fetch_add(&pl->next, 1)) < pl->n;) {
         acbb_batch_result r = { .index = i, .ran = 1 };
         if (acbb_cancelled(pl->o->cancel)) {
@@ -185,6 +189,7 @@ static void *pool_worker(void *arg)
         }
         report(pl, &r);
     }
+    if (w) acbb_mech_free(w->spare);
     free(w);
     return NULL;
 }

@@ -86,6 +86,11 @@ static inline void acbb_mech_spread(acbb_mech_state *st)
 typedef struct acbb_mech acbb_mech;
 
 acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err);
+/* m made anew for scene s, as acbb_mech_new makes one, but in m's own
+ * solver workspaces (GSL's solvers are set afresh by every solve): a
+ * batch worker's runs reuse one (issue 30: 60 k instructions a run). On
+ * failure m is still m's to free. */
+acbb_status acbb_mech_renew(const acbb_scene *s, acbb_mech *m, acbb_error *err);
 void acbb_mech_free(acbb_mech *m);
 const acbb_geometry *acbb_mech_geometry(const acbb_mech *m);
 

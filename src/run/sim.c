@@ -326,7 +326,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
         return acbb_error_set(err, rc, "fidelity.contact_grid = %d: 1..%d", s->contact_grid,
                               ACBB_QUAD_MAX);
     if ((rc = acbb_network_build(s, &sim->nw, err)) != ACBB_OK) return rc;
-    if ((rc = acbb_mech_new(s, &sim->mech, err)) != ACBB_OK) return rc;
+    rc = sim->mech ? acbb_mech_renew(s, sim->mech, err) : acbb_mech_new(s, &sim->mech, err);
+    if (rc != ACBB_OK) return rc;
     if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->model == ACBB_MODEL_DYNAMIC && (acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK
@@ -418,17 +419,20 @@ static int warm_fits(const acbb_warm *w, const acbb_scene *s)
 }
 
 static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
-                               const acbb_warm *w, int keep_setup, acbb_sim **out,
-                               acbb_error *err)
+                               const acbb_simx_start *start, acbb_sim **out, acbb_error *err)
 {
-    if (!warm_fits(w, s)) w = NULL;
+    static const acbb_simx_start cold;
+    if (!start) start = &cold;
+    const acbb_warm *w = warm_fits(start->warm, s) ? start->warm : NULL;
     acbb_sim *sim = sim_alloc(s->n_balls);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))
         || !(sim->best = malloc(sizeof *sim->best))) {
         if (sim) free(sim->keep);
         free(sim);
+        acbb_mech_free(start->spare);
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
+    sim->mech = start->spare; /* renewed by sim_init; freed with the Sim */
     sim->cancel = o->cancel;
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
@@ -436,7 +440,7 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
     sim->skip_life = o->skip_life;
     sim->skip_liftoff = o->skip_liftoff;
     sim->no_first_state = member;
-    sim->keep_setup = keep_setup;
+    sim->keep_setup = start->keep_setup;
     double t0 = acbb_now_ms();
     acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
                    : s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
@@ -448,7 +452,8 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
         /* A warm start that failed starts again cold (unless stopped). */
         if (warm && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
             if (err) *err = (acbb_error){ 0 };
-            return create_body(s, o, member, NULL, keep_setup, out, err);
+            acbb_simx_start again = { .keep_setup = start->keep_setup };
+            return create_body(s, o, member, &again, out, err);
         }
         return rc;
     }
@@ -466,7 +471,7 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 {
     static const acbb_sim_opts defaults; /* o == NULL: all zero */
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o ? o : &defaults, 0, NULL, 0, out, err);
+    acbb_status rc = create_body(s, o ? o : &defaults, 0, NULL, out, err);
     acbb_gsl_leave();
     return rc;
 }
@@ -474,15 +479,14 @@ acbb_status acbb_sim_create(const acbb_scene *s, const acbb_sim_opts *o, acbb_si
 acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o, acbb_sim **out,
                                     acbb_error *err)
 {
-    return create_body(s, o, 1, NULL, 0, out, err);
+    return create_body(s, o, 1, NULL, out, err);
 }
 
 acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
-                                  const acbb_warm *w, int keep_setup, acbb_sim **out,
-                                  acbb_error *err)
+                                  const acbb_simx_start *st, acbb_sim **out, acbb_error *err)
 {
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o, 0, w, keep_setup, out, err);
+    acbb_status rc = create_body(s, o, 0, st, out, err);
     acbb_gsl_leave();
     return rc;
 }
@@ -505,6 +509,15 @@ void acbb_simx_warm_free(acbb_warm *w)
 {
     if (w) setup_free(w->setup);
     free(w);
+}
+
+acbb_mech *acbb_simx_free_spare(acbb_sim *sim)
+{
+    if (!sim) return NULL;
+    acbb_mech *m = sim->mech;
+    sim->mech = NULL;
+    acbb_sim_free(sim);
+    return m;
 }
 
 void acbb_sim_free(acbb_sim *sim)

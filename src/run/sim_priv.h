@@ -67,14 +67,23 @@ struct acbb_warm {
  * set-up sim kept (keep_setup) goes with it. */
 acbb_warm *acbb_simx_warm_save(acbb_sim *sim);
 void acbb_simx_warm_free(acbb_warm *w);
-/* acbb_sim_create started from w when it fits (NULL: cold): a steady
- * solve from its state (a warm start that fails starts again cold), a
- * transient from ambient, taking only w's set-up when its mechanics are
- * the same (bit for bit the run's own). keep_setup: a transient keeps its
- * set-up for acbb_simx_warm_save. */
+/* How a batch run starts (acbb_simx_create_from). */
+typedef struct {
+    /* NULL: cold. A steady solve starts from its state when it fits (a
+     * warm start that fails starts again cold); a transient from ambient,
+     * taking only its set-up when its mechanics are the same (bit for bit
+     * the run's own). */
+    const acbb_warm *warm;
+    int keep_setup;              /* a transient keeps its set-up for acbb_simx_warm_save */
+    /* NULL, or a mechanics workspace to renew (acbb_mech_renew) instead of
+     * a new one; the Sim's from here on, even on failure. */
+    acbb_mech *spare;
+} acbb_simx_start;
 acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
-                                  const acbb_warm *w, int keep_setup, acbb_sim **out,
-                                  acbb_error *err);
+                                  const acbb_simx_start *st, acbb_sim **out, acbb_error *err);
+/* acbb_sim_free, but the Sim's mechanics workspace is returned (NULL: it
+ * had none) to start another (acbb_simx_start.spare). */
+acbb_mech *acbb_simx_free_spare(acbb_sim *sim);
 
 /* acbb_sim_create of a member of a steady set (sim_set.c): its first state
  * at ambient is not evaluated (the set's set-up evaluates every member's,
