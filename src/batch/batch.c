@@ -150,7 +150,7 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
     } else {
         snprintf(w->msg, sizeof w->msg, "%s", err.msg[0] ? err.msg : acbb_status_name(st));
     }
-    w->spare = acbb_simx_free_spare(sim);
+    if (sim) w->spare = acbb_simx_free_spare(sim); /* else the spare is still w's, or freed */
     r->status = st;
     r->wall_ms = acbb_now_ms() - t0;
 }
