@@ -73,7 +73,8 @@ static const char *shadow_conv(tbuf *b, const char *p, va_list *ap)
     } else if (*p == 'c') {
         shadow(b, (char)va_arg(*ap, int));
     } else if (*p == 's') {
-        for (const char *s = va_arg(*ap, const char *); *s; s++) shadow(b, *s);
+        const char *s = va_arg(*ap, const char *);
+        for (s = s ? s : "(null)"; *s; s++) shadow(b, *s); /* as glibc prints NULL */
     } else if (*p == '%') {
         shadow(b, '%');
     } else {
