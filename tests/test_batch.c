@@ -429,6 +429,41 @@ static void test_warm(void)
     acbb_warm_free(tw.kept);
 }
 
+/* Issue 30, sixth round: a transient takes of another transient's kept
+ * state only its set-up (the room-temperature mechanics at speed), and
+ * only when its mechanics are built the same: bit for bit its own run,
+ * with the set-up's continuation solves not made again. */
+static void test_setup_shared(void)
+{
+    static warm_case base, net, netw, mu, muw;
+    base.scene = load("presets/7008C.ini");
+    warm_run(&base, ACBB_BATCH_TRANSIENT, NULL);
+    acbb_error err = { { 0 } };
+    net.scene = base.scene; /* a network input: the mechanics read none */
+    acbb_scene_set(&net.scene, "mounting.h_face_W_m2K", "10000", &err);
+    mu.scene = base.scene; /* read by the mechanics (the gyroscopic moment's friction) */
+    acbb_scene_set(&mu.scene, "lubricant.boundary_friction", "0.12", &err);
+    netw.scene = net.scene;
+    muw.scene = mu.scene;
+    warm_run(&net, ACBB_BATCH_TRANSIENT, NULL);
+    warm_run(&netw, ACBB_BATCH_TRANSIENT, base.kept);
+    warm_run(&mu, ACBB_BATCH_TRANSIENT, NULL);
+    warm_run(&muw, ACBB_BATCH_TRANSIENT, base.kept);
+    long made = net.snap.work.mechanics_solves, shared = netw.snap.work.mechanics_solves;
+    ok(base.kept != NULL && net.snap.state == ACBB_RUN_CONVERGED
+       && same_snap(&net.snap, &netw.snap) && shared == made - 4,
+       "transient from a kept set-up (h_face changed): every result bit for bit its own run's, "
+       "%ld mechanics solves instead of %ld (the continuation's 4 taken)", shared, made);
+    ok(same_snap(&mu.snap, &muw.snap)
+       && muw.snap.work.mechanics_solves == mu.snap.work.mechanics_solves,
+       "transient whose mechanics differ (boundary friction): the set-up made afresh, the same "
+       "bits and solves");
+    ok(netw.kept == NULL && muw.kept == NULL, "a point given a start keeps none");
+    acbb_warm_free(base.kept);
+    acbb_warm_free(net.kept);
+    acbb_warm_free(mu.kept);
+}
+
 /* Issue 30: skip_life (the robustness's runs): the rating life is neither
  * made nor published (all zero), every other result the same bits. */
 static void test_skip_life(void)
@@ -453,6 +488,74 @@ static void test_skip_life(void)
        "skip_life: every other result bit for bit the same");
 }
 
+/* Issue 30, sixth round: a worker renews its last run's mechanics
+ * workspace for the next (acbb_mech_renew): each run bit for bit a Sim of
+ * its own, through a radial load and back (learnt Jacobians, ring
+ * freedoms and predictors all made afresh). */
+static acbb_scene spare_scene[3];
+static acbb_status spare_scene_cb(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
+                                  acbb_error *err)
+{
+    (void)ctx, (void)mode, (void)err;
+    *out = spare_scene[i];
+    return ACBB_OK;
+}
+
+static void test_spare_mech(void)
+{
+    static batch_case c;
+    static acbb_snapshot own;
+    acbb_scene base = load("presets/7008C.ini"); /* quasi-dynamic, transient */
+    case_init(&c, &base);
+    for (int i = 0; i < 3; i++) spare_scene[i] = base;
+    spare_scene[1].radial_load = spare_scene[2].radial_load = 300.0;
+    spare_scene[2].h_face = 10000.0; /* the same loads and speed as the run before */
+    acbb_batch_opts o = { .jobs = 1, .scene = spare_scene_cb, .done = done_cb, .ctx = &c };
+    acbb_batch_run(3, &o, NULL);
+    int same = 1;
+    for (int i = 0; i < 3; i++) {
+        acbb_sim *sim = NULL;
+        acbb_error err = { { 0 } };
+        if (acbb_sim_create(&spare_scene[i], NULL, &sim, &err) == ACBB_OK) acbb_sim_run(sim);
+        acbb_sim_snapshot(sim, &own);
+        acbb_sim_free(sim);
+        same = same && c.have_snap[i] && own.state == ACBB_RUN_CONVERGED
+               && same_snap(&own, &c.snap[i])
+               && own.work.mechanics_solves == c.snap[i].work.mechanics_solves;
+    }
+    ok(same, "one worker's three runs (pure thrust; 300 N radial; the same with another face "
+       "film) in one renewed mechanics workspace: each the bits of a Sim of its own");
+}
+
+/* Issue 30, sixth round: snap_to makes each final snapshot in the
+ * caller's record (r->snap points there), the same bits as the worker's. */
+static acbb_snapshot to_rec[3];
+static acbb_snapshot *snap_to_cb(void *ctx, size_t i)
+{
+    (void)ctx;
+    return i < 3 ? &to_rec[i] : NULL;
+}
+
+static void test_snap_to(const acbb_scene *base)
+{
+    static batch_case a, b;
+    case_init(&a, base);
+    case_init(&b, base);
+    run_case(&a, 4, 1, ACBB_BATCH_AS_SCENE, NULL);
+    acbb_batch_opts o = { .jobs = 1, .cancel = &b.cancel, .scene = scene_cb, .step = step_cb,
+                          .done = done_cb, .ctx = &b, .snap_to = snap_to_cb };
+    acbb_batch_run(4, &o, NULL);
+    int same = 1, there = 1;
+    for (size_t i = 0; i < 4; i++) {
+        same = same && a.have_snap[i] && b.have_snap[i] && same_snap(&a.snap[i], &b.snap[i]);
+        there = there && (i < 3 ? b.res[i].snap == &to_rec[i] && same_snap(&to_rec[i], &a.snap[i])
+                                : b.res[i].snap != NULL);
+    }
+    ok(same && there && !strcmp(a.msg[0], b.msg[0]),
+       "snap_to: each final snapshot made in the caller's record (the worker's where it gives "
+       "none), the same bits and message as without");
+}
+
 int main(void)
 {
     /* No gsl_set_error_handler_off here: the engine turns GSL's aborting
@@ -465,6 +568,9 @@ int main(void)
     }
     test_warm();
     test_skip_life();
+    test_setup_shared();
+    test_snap_to(&base);
+    test_spare_mech();
     test_jobs_independent(&base);
     test_cancel_serial(&base);
     test_cancel_parallel(&base);

@@ -13,6 +13,7 @@
 
 #include "acbb/scene.h"
 #include "acbb/tools/scene_edit.h"
+#include "scene_internal.h"
 #include "acbb/tools/scene_schema.h"
 #include "tap.h"
 
@@ -876,6 +877,40 @@ static void test_apply_edits(void)
        "an edit without '=' is refused: %s", err.msg);
 }
 
+/* Issue 30, sixth round: the rules' range test of a value in SI units
+ * (acbb_sf_out_of_range_si) judges every field's ends as the reason text
+ * of a row scaled to SI did (scene_rules.c before): at each end and one
+ * step either side of it, open ends and closed. */
+static int si_agrees(const acbb_sfield *f, double v)
+{
+    acbb_sfield scaled = *f;
+    char why[160];
+    scaled.info.min *= f->scale;
+    scaled.info.max *= f->scale;
+    acbb_sf_range_reason(&scaled, v, why, sizeof why);
+    return acbb_sf_out_of_range_si(f, v) == (why[0] != '\0');
+}
+
+static void test_range_si(void)
+{
+    int agree = 1, n = 0, outside = 0;
+    for (size_t i = 0; i < acbb_sf_n; i++) {
+        const acbb_sfield *f = &acbb_sf_table[i];
+        if (f->info.type != ACBB_FIELD_REAL && f->info.type != ACBB_FIELD_INT) continue;
+        double ends[2] = { f->info.min * f->scale, f->info.max * f->scale };
+        for (int e = 0; e < 2; e++)
+            for (int d = -1; d <= 1; d++) {
+                double v = d < 0 ? nextafter(ends[e], -INFINITY)
+                         : d > 0 ? nextafter(ends[e], INFINITY) : ends[e];
+                agree = agree && si_agrees(f, v);
+                outside += acbb_sf_out_of_range_si(f, v);
+                n++;
+            }
+    }
+    ok(agree && outside > n / 4, "range test in SI: %d values at and beside every field's ends "
+       "judged as the scaled row's reason (%d outside)", n, outside);
+}
+
 int main(void)
 {
     snprintf(g_dir, sizeof g_dir, "%s/acbb-scene-XXXXXX",
@@ -890,6 +925,7 @@ int main(void)
     test_presets();
     test_round_trip();
     test_range_rules();
+    test_range_si();
     test_set_keys();
     test_cross_rules();
     test_ill_posed();

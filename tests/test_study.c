@@ -29,6 +29,7 @@
 #include "sim_priv.h"
 #include "sim_struct.h"
 #include "test_study_preset.h"
+#include "study_priv.h"
 
 /* ---- 1. the check table on constructed results ---- */
 
@@ -209,6 +210,61 @@ static void test_undefined(acbb_study_runs *r)
     ok(clean, "all-zero results: no item prints nan or inf");
 }
 
+/* Issue 30, sixth round: the check table without its texts
+ * (acbb_study_eval_verdicts, the perturbed studies') gives the item's and
+ * every check's verdict the texts give, or says it is not sure: where a
+ * number would print non-finite (sanitize turns that check NOT
+ * EVALUATED) it must not be. */
+static int same_verdicts(const acbb_study_item *a, const acbb_study_item *b)
+{
+    int same = a->verdict == b->verdict && a->n_checks == b->n_checks;
+    for (int k = 0; same && k < a->n_checks; k++)
+        same = strcmp(a->checks[k].id, b->checks[k].id) == 0
+               && a->checks[k].verdict == b->checks[k].verdict
+               && a->checks[k].info == b->checks[k].info;
+    return same;
+}
+
+static void text_free_case(const acbb_study_runs *r, const char *what, int *n_sure, int *n_bad)
+{
+    static acbb_study_item full, fast;
+    size_t n;
+    acbb_study_table(&n);
+    for (int i = 1; i <= (int)n; i++) {
+        acbb_study_eval_row(row(i), r, &full);
+        int sure = acbb_study_eval_verdicts(row(i), r, &fast);
+        *n_sure += sure;
+        if (sure && !same_verdicts(&full, &fast)) {
+            (*n_bad)++;
+            printf("#   %s: item %d's verdicts differ without text\n", what, i);
+        }
+    }
+}
+
+static void test_text_free(acbb_study_runs *r)
+{
+    int sure0 = 0, bad = 0, sure1 = 0;
+    reset(r); /* all zero: ratios 0/0 print nan */
+    text_free_case(r, "all zero", &sure0, &bad);
+    static acbb_study_item it;
+    int item2_sure = acbb_study_eval_verdicts(row(2), r, &it);
+    for (size_t i = 0; i < r->n; i++) { /* numbers that differ point to point */
+        acbb_snapshot *s = &r->all[i].last;
+        double x = 1.0 + 0.37 * (double)i;
+        for (int l = 0; l < ACBB_LOSS_KINDS; l++) s->losses.P[l] = x * (1.0 + 0.1 * l);
+        s->losses.total = 7.0 * x;
+        s->T_outer_ring = 30.0 + x;
+        s->balls[0].Qi = 100.0 + x;
+        s->balls[0].Qo = 120.0 + x;
+        s->balls[0].film_i = 1e-7 * x;
+        r->all[i].first = *s;
+    }
+    text_free_case(r, "varied", &sure1, &bad);
+    ok(bad == 0 && !item2_sure && sure1 >= 12,
+       "check table without texts: every verdict the texts' where sure (%d + %d of 36 rows); "
+       "not sure where a number prints nan (item 2 on all-zero results)", sure0, sure1);
+}
+
 /* Item 18 from what the snapshots publish. */
 static void test_item18(acbb_study_runs *r)
 {
@@ -254,6 +310,7 @@ static void test_constructed(void)
     test_failed_run(r);
     test_undefined(r);
     test_item18(r);
+    test_text_free(r);
     /* Conclusion (2) maps onto 9a and 9b: evaluate the study as a whole. */
     reset(r);
     last(r, 0, ACBB_STUDY_S100, 0, ACBB_STUDY_TE)->losses.total = 1.0;
@@ -615,6 +672,60 @@ static acbb_sim *combined_sim(void)
     return sim;
 }
 
+/* Issue 30, sixth round: a Sim's ball records past its balls are not
+ * cleared (sim.c sim_alloc) because nothing reads them: a run with them
+ * poisoned (NaN bytes) before every step is bit for bit a clean run, each
+ * step's snapshot and the steady polish's end alike. */
+static void poison(acbb_sim *sim)
+{
+    for (int j = sim->ms.n; j < ACBB_MAX_BALLS; j++) {
+        memset(&sim->ms.ball[j], 0xff, sizeof sim->ms.ball[j]);
+        memset(&sim->bl[j], 0xff, sizeof sim->bl[j]);
+    }
+}
+
+static int poisoned_run_same(const acbb_scene *s)
+{
+    static acbb_snapshot a, b;
+    acbb_sim *clean = NULL, *dirty = NULL;
+    acbb_error err = { { 0 } };
+    if (acbb_sim_create(s, NULL, &clean, &err) != ACBB_OK
+        || acbb_sim_create(s, NULL, &dirty, &err) != ACBB_OK) {
+        acbb_sim_free(clean);
+        return 0;
+    }
+    int same = dirty->ms.n < ACBB_MAX_BALLS, steps = 0;
+    for (acbb_status st = ACBB_OK; same && st == ACBB_OK && steps < 400; steps++) {
+        poison(dirty);
+        st = acbb_sim_step(dirty);
+        same = acbb_sim_step(clean) == st;
+        acbb_sim_snapshot(clean, &a);
+        acbb_sim_snapshot(dirty, &b);
+        same = same && a.state == b.state && a.n_balls == b.n_balls
+               && memcmp(a.T, b.T, sizeof a.T[0] * (size_t)a.n_nodes) == 0
+               && memcmp(&a.losses, &b.losses, sizeof a.losses) == 0
+               && memcmp(a.balls, b.balls, sizeof a.balls[0] * (size_t)a.n_balls) == 0;
+        if (a.state != ACBB_RUN_RUNNING) break;
+    }
+    same = same && a.state == ACBB_RUN_CONVERGED;
+    acbb_sim_free(clean);
+    acbb_sim_free(dirty);
+    return same;
+}
+
+static void test_unused_balls(void)
+{
+    acbb_scene s = preset();
+    int single = poisoned_run_same(&s);
+    s.radial_load = 300.0;
+    int combined = poisoned_run_same(&s);
+    s.thermal_mode = ACBB_THERMAL_STEADY;
+    int steady = poisoned_run_same(&s);
+    ok(single && combined && steady, "ball records past the bearing's balls poisoned before "
+       "every step: the same bits to steady state (pure thrust %d, combined %d, steady %d)",
+       single, combined, steady);
+}
+
 /* Issue 30: a single bearing's step checkpoint (sim_plant.c) holds the
  * solved balls only and restores the others as their images: every ball
  * view (loads, angles, speeds, film, losses) comes back bit for bit, and
@@ -685,6 +796,38 @@ static void step_snapshot_case(acbb_sim *sim, const char *what)
     acbb_sim_free(sim);
 }
 
+/* Issue 30, sixth round: a perturbed study's hook (acbb_simx_snapshot_values)
+ * makes step 0 as a later step, not whole: the same loads, losses,
+ * expansions and smallest loss as the whole snapshot, the rest not made. */
+static void test_values_snapshot(void)
+{
+    static acbb_snapshot vals, whole;
+    acbb_sim *sim = combined_sim();
+    if (!sim) return;
+    for (int j = 0; j < ACBB_MAX_BALLS; j++) vals.balls[j].psi = -1.0 - j; /* stale */
+    vals.T[0] = -1.0;
+    acbb_simx_snapshot_values(sim, &vals);
+    acbb_sim_snapshot(sim, &whole);
+    int same = vals.iteration == 0 && whole.iteration == 0 && vals.n_balls == whole.n_balls
+               && vals.time == whole.time && vals.state == whole.state
+               && acbb_study_min_loss(&vals) == acbb_study_min_loss(&whole)
+               && vals.losses.total == whole.losses.total && vals.delta_x == whole.delta_x
+               && vals.exp_inner == whole.exp_inner && vals.exp_inner_cen == whole.exp_inner_cen
+               && vals.exp_outer == whole.exp_outer && vals.exp_ball == whole.exp_ball;
+    int kept = vals.T[0] == -1.0;
+    for (int j = 0; j < whole.n_balls; j++) {
+        same = same && vals.balls[j].Qi == whole.balls[j].Qi
+               && vals.balls[j].Qo == whole.balls[j].Qo && vals.balls[j].loss == whole.balls[j].loss;
+        kept = kept && vals.balls[j].psi == -1.0 - j;
+    }
+    ok(same && whole.balls[1].Qi != whole.balls[3].Qi,
+       "values snapshot at step 0: every ball's Qi, Qo, loss and the smallest loss the whole "
+       "snapshot's, bit for bit (balls differ)");
+    ok(kept, "values snapshot at step 0: the rest is not made (a stale azimuth and temperature "
+       "stay)");
+    acbb_sim_free(sim);
+}
+
 /* The same for a DB pair (issue 30, fifth round): a set's step snapshot is
  * bearing 0's, made from its values, not the whole set snapshot. */
 static void test_step_snapshot(void)
@@ -711,6 +854,8 @@ int main(void)
     test_whole();
     test_compare();
     test_step_snapshot();
+    test_values_snapshot();
     test_checkpoint();
+    test_unused_balls();
     return done_testing();
 }

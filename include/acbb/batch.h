@@ -71,10 +71,14 @@ void acbb_warm_free(acbb_warm *w);
 
 /* Point i's start (NULL: from ambient, as always); read on the worker
  * while the point sets up. Used for steady points: a transient's path
- * starts from ambient whatever is given. */
+ * starts from ambient whatever is given; of a state kept by a transient
+ * it takes the set-up's room-temperature mechanics at speed when its own
+ * mechanics are built the same at the same speed (the same bits, issue
+ * 30: the perturbed studies' transients). */
 typedef const acbb_warm *(*acbb_batch_warm_fn)(void *ctx, size_t i);
-/* Point i converged as a single bearing from no warm start: its state,
- * now the callee's (a point started from one keeps none). */
+/* Point i converged as a single bearing from no warm start: its state
+ * (a transient's with its set-up's mechanics), now the callee's (a point
+ * started from one keeps none). */
 typedef void (*acbb_batch_keep_fn)(void *ctx, size_t i, acbb_warm *w);
 
 typedef enum {
@@ -93,6 +97,12 @@ typedef acbb_status (*acbb_batch_scene_fn)(void *ctx, size_t i, acbb_scene *out,
  * hook), on the worker, without the lock: only point i's data may be
  * touched. */
 typedef void (*acbb_batch_step_fn)(void *ctx, size_t i, const acbb_sim *sim);
+
+/* Where point i's final snapshot is made (on the worker, without the
+ * lock; only point i's data): the caller's record instead of the
+ * worker's, so `done` need not copy it (a study point's, 21 kB). NULL:
+ * the worker's. */
+typedef acbb_snapshot *(*acbb_batch_snap_fn)(void *ctx, size_t i);
 
 typedef struct {
     size_t index;
@@ -121,6 +131,7 @@ typedef struct {
     int skip_liftoff;           /* acbb_sim_opts.skip_liftoff of every run */
     acbb_batch_warm_fn warm;    /* may be NULL: every point from ambient */
     acbb_batch_keep_fn keep;    /* may be NULL: no state kept */
+    acbb_batch_snap_fn snap_to; /* may be NULL: the final snapshot is the worker's */
 } acbb_batch_opts;
 
 typedef struct {

@@ -91,6 +91,7 @@ typedef struct {
     acbb_scene scene;
     acbb_snapshot snap;
     char msg[520];
+    acbb_mech *spare;           /* the last run's mechanics workspace, renewed by the next */
 } slot;
 
 typedef struct {
@@ -128,29 +129,33 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
         apply_mode(&w->scene, mode);
         acbb_sim_opts so = { o->cancel, pl->sim_threads, o->skip_stiffness, o->skip_life,
                              o->skip_liftoff };
-        from = o->warm && w->scene.thermal_mode == ACBB_THERMAL_STEADY ? o->warm(o->ctx, i)
-                                                                        : NULL;
-        st = acbb_simx_create_from(&w->scene, &so, from, &sim, &err);
+        /* a transient takes only the set-up (sim_priv.h), and keeps its own */
+        from = o->warm ? o->warm(o->ctx, i) : NULL;
+        acbb_simx_start start = { from, o->keep && !from, w->spare };
+        w->spare = NULL; /* the Sim's now */
+        st = acbb_simx_create_from(&w->scene, &so, &start, &sim, &err);
     }
     if (st == ACBB_OK) {
         step_ctx sc = { o, i };
         acbb_run_ctl ctl = { .hook = o->step ? step_hook : NULL, .ctx = &sc, .cancel = o->cancel };
         st = acbb_sim_drive(sim, &ctl);
-        acbb_sim_snapshot(sim, &w->snap);
-        r->snap = &w->snap;
+        acbb_snapshot *to = o->snap_to ? o->snap_to(o->ctx, i) : NULL;
+        if (!to) to = &w->snap;
+        acbb_sim_snapshot(sim, to);
+        r->snap = to;
         /* a warm-started point's state starts nothing: its caller has one */
         acbb_warm *kept = o->keep && !from ? acbb_simx_warm_save(sim) : NULL;
         if (kept) o->keep(o->ctx, i, kept);
-        snprintf(w->msg, sizeof w->msg, "%s", w->snap.message);
+        snprintf(w->msg, sizeof w->msg, "%s", to->message);
     } else {
         snprintf(w->msg, sizeof w->msg, "%s", err.msg[0] ? err.msg : acbb_status_name(st));
     }
-    acbb_sim_free(sim);
+    if (sim) w->spare = acbb_simx_free_spare(sim); /* else the spare is still w's, or freed */
     r->status = st;
     r->wall_ms = acbb_now_ms() - t0;
 }
 
-void acbb_warm_free(acbb_warm *w) { free(w); }
+void acbb_warm_free(acbb_warm *w) { acbb_simx_warm_free(w); }
 
 static void report(pool *pl, acbb_batch_result *r)
 {
@@ -169,6 +174,7 @@ static void *pool_worker(void *arg)
 {
     pool *pl = arg;
     slot *w = malloc(sizeof *w);
+    if (w) w->spare = NULL;
     for (size_t i; (i = atomic_fetch_add(&pl->next, 1)) < pl->n;) {
         acbb_batch_result r = { .index = i, .ran = 1 };
         if (acbb_cancelled(pl->o->cancel)) {
@@ -183,6 +189,7 @@ static void *pool_worker(void *arg)
         }
         report(pl, &r);
     }
+    if (w) acbb_mech_free(w->spare);
     free(w);
     return NULL;
 }

@@ -31,6 +31,7 @@ const double acbb_study_speeds[ACBB_STUDY_NPTS] = { 2000, 4000, 6000, 8000,
 typedef struct {
     acbb_study_point *const *pts;
     size_t n, ran;
+    int checks_only;             /* acbb_study_run_list's */
     acbb_study_progress_fn progress; /* may be NULL; called under the batch's lock */
     void *ctx;
 } study_batch;
@@ -63,6 +64,16 @@ static int record_hook(void *ctx, const acbb_sim *sim)
     if (p->last.iteration == 0) p->first = p->last;
     record(p, &p->last);
     return 0;
+}
+
+/* A point only the check table reads (a perturbed study's): no item reads
+ * its step 0 (`first`), so from step 0 on only what record() reads is
+ * made (issue 30: the whole step 0 and its copy, 0.1 G of `report
+ * --sensitivity`). */
+static void record_values(acbb_study_point *p, const acbb_sim *sim)
+{
+    acbb_simx_snapshot_values(sim, &p->last);
+    record(p, &p->last);
 }
 
 /* Only the recorded points (the TE load sweep: items 4, 5 read its
@@ -99,7 +110,15 @@ static void point_keep(void *ctx, size_t i, acbb_warm *w)
 
 static void point_step(void *ctx, size_t i, const acbb_sim *sim)
 {
-    record_hook(((study_batch *)ctx)->pts[i], sim);
+    const study_batch *b = ctx;
+    if (b->checks_only) record_values(b->pts[i], sim);
+    else record_hook(b->pts[i], sim);
+}
+
+/* The run's final snapshot is made in the point's record (batch.h). */
+static acbb_snapshot *point_snap(void *ctx, size_t i)
+{
+    return &((study_batch *)ctx)->pts[i]->last;
 }
 
 static void point_done(void *ctx, const acbb_batch_result *r)
@@ -113,7 +132,7 @@ static void point_done(void *ctx, const acbb_batch_result *r)
         snprintf(p->message, sizeof p->message, "%s", r->message);
         if (!r->ran) return; /* a cancel came first: not counted as run */
     } else {
-        p->last = *r->snap;
+        if (r->snap != &p->last) p->last = *r->snap;
         p->ok = p->last.state == ACBB_RUN_CONVERGED && !p->oom;
         if (p->oom) {
             p->status = ACBB_ENOMEM;
@@ -131,13 +150,15 @@ static void point_done(void *ctx, const acbb_batch_result *r)
 void acbb_study_run_list(acbb_study_point *const *pts, size_t n, int jobs, int checks_only,
                          const atomic_int *cancel, acbb_study_progress_fn progress, void *ctx)
 {
-    study_batch b = { .pts = pts, .n = n, .progress = progress, .ctx = ctx };
+    study_batch b = { .pts = pts, .n = n, .checks_only = checks_only, .progress = progress,
+                      .ctx = ctx };
     /* No study item reads a stiffness (issue 30 lever 2: skip the probes),
      * nor a set's preload or lift-off (the DB pair's study). */
     acbb_batch_opts o = { .jobs = jobs, .cancel = cancel, .scene = point_scene,
                           .step = point_step, .done = point_done, .ctx = &b,
                           .skip_stiffness = 1, .skip_life = checks_only, .skip_liftoff = 1,
-                          .warm = point_warm, .keep = checks_only ? NULL : point_keep };
+                          .warm = point_warm, .keep = checks_only ? NULL : point_keep,
+                          .snap_to = point_snap };
     acbb_batch_run(n, &o, NULL);
 }
 

@@ -164,10 +164,17 @@ static void sanitize(acbb_study_check *c)
     c->verdict = V_NOT_EVAL;
 }
 
-void acbb_study_eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
-                         acbb_study_item *out)
+/* text 0: the text-free mode (study_priv.h); the record's header only is
+ * cleared (no text or value is written or read). */
+static void eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
+                     acbb_study_item *out, int text)
 {
-    memset(out, 0, sizeof *out);
+    if (text) {
+        memset(out, 0, sizeof *out);
+    } else {
+        out->n_checks = out->n_values = 0;
+        out->verdict = V_NOT_EVAL;
+    }
     out->num = row->num;
     out->statement = row->statement;
     out->l2 = row->l2;
@@ -175,10 +182,26 @@ void acbb_study_eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
     acbb_verdict v[ACBB_STUDY_MAX_CHECKS];
     int n = 0;
     for (int k = 0; k < out->n_checks; k++) {
-        sanitize(&out->checks[k]);
+        if (text) sanitize(&out->checks[k]);
         if (!out->checks[k].info) v[n++] = out->checks[k].verdict;
     }
     out->verdict = combine(v, n);
+}
+
+void acbb_study_eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
+                         acbb_study_item *out)
+{
+    eval_row(row, runs, out, 1);
+}
+
+int acbb_study_eval_verdicts(const acbb_study_row *row, const acbb_study_runs *runs,
+                             acbb_study_item *out)
+{
+    acbb_study_text_free(1);
+    eval_row(row, runs, out, 0);
+    int sure = !acbb_study_text_suspect();
+    acbb_study_text_free(0);
+    return sure;
 }
 
 acbb_verdict acbb_study_conclusion_verdict(const acbb_study *s, size_t i)

@@ -3,15 +3,111 @@
  * shapes MODEL.md section 12 speaks of (rises, falls, peaks, spread). */
 #include <math.h>
 #include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 #include "study_priv.h"
 
+static _Thread_local int t_free, t_suspect;
+
+void acbb_study_text_free(int on)
+{
+    t_free = on;
+    t_suspect = 0;
+}
+
+int acbb_study_text_suspect(void) { return t_suspect; }
+
+/* One character of the text-free mode's shadow text: a "nan" or "inf"
+ * ending here could be a token sanitize() (study_checks.c) would catch. */
+static void shadow(tbuf *b, char c)
+{
+    if ((b->win[0] == 'n' && b->win[1] == 'a' && c == 'n')
+        || (b->win[0] == 'i' && b->win[1] == 'n' && c == 'f'))
+        t_suspect = 1;
+    b->win[0] = b->win[1];
+    b->win[1] = c;
+    if (b->n < sizeof b->s - 1) b->n++;
+}
+
+static const char *skip_digits(const char *p, va_list *ap)
+{
+    if (*p == '*') {
+        (void)va_arg(*ap, int);
+        return p + 1;
+    }
+    while (*p >= '0' && *p <= '9') p++;
+    return p;
+}
+
+/* An integer argument of length modifier `len` ('l', 'L' for ll, 'z', 'j',
+ * 't' or 0) taken off the list. */
+static void skip_int(char len, va_list *ap)
+{
+    if (len == 'l') (void)va_arg(*ap, long);
+    else if (len == 'L') (void)va_arg(*ap, long long);
+    else if (len == 'z') (void)va_arg(*ap, size_t);
+    else if (len == 'j') (void)va_arg(*ap, intmax_t);
+    else if (len == 't') (void)va_arg(*ap, ptrdiff_t);
+    else (void)va_arg(*ap, int);
+}
+
+/* One conversion at p (after its '%'); the character after it, or NULL
+ * for one this mode does not know (the evaluation is then suspect). */
+static const char *shadow_conv(tbuf *b, const char *p, va_list *ap)
+{
+    while (*p && strchr("-+ #0", *p)) p++;
+    p = skip_digits(p, ap);
+    if (*p == '.') p = skip_digits(p + 1, ap);
+    char len = 0;
+    for (; *p && strchr("hlLzjt", *p); p++)
+        len = *p == 'l' && len == 'l' ? 'L' : *p == 'h' ? len : *p;
+    if (*p && strchr("fFeEgGaA", *p)) {
+        double x = len == 'L' ? (double)va_arg(*ap, long double) : va_arg(*ap, double);
+        if (!isfinite(x)) t_suspect = 1;
+        shadow(b, '0');
+    } else if (*p && strchr("diouxX", *p)) {
+        skip_int(len, ap);
+        shadow(b, '0');
+    } else if (*p == 'c') {
+        shadow(b, (char)va_arg(*ap, int));
+    } else if (*p == 's') {
+        const char *s = va_arg(*ap, const char *);
+        for (s = s ? s : "(null)"; *s; s++) shadow(b, *s); /* as glibc prints NULL */
+    } else if (*p == '%') {
+        shadow(b, '%');
+    } else {
+        return NULL;
+    }
+    return p + 1;
+}
+
+/* tb in the text-free mode: the shadow text is scanned, not written. */
+static void shadow_text(tbuf *b, const char *fmt, va_list ap)
+{
+    va_list a;
+    va_copy(a, ap);
+    for (const char *p = fmt; p && *p;) {
+        if (*p != '%') shadow(b, *p++);
+        else if (!(p = shadow_conv(b, p + 1, &a))) t_suspect = 1;
+    }
+    va_end(a);
+}
+
 void acbb_study_tb(tbuf *b, const char *fmt, ...)
 {
-    if (b->n >= sizeof b->s - 1) return;
     va_list ap;
     va_start(ap, fmt);
+    if (t_free) {
+        shadow_text(b, fmt, ap);
+        va_end(ap);
+        return;
+    }
+    if (b->n >= sizeof b->s - 1) {
+        va_end(ap);
+        return;
+    }
     int w = vsnprintf(b->s + b->n, sizeof b->s - b->n, fmt, ap);
     va_end(ap);
     if (w > 0) b->n += (size_t)w;
@@ -20,7 +116,7 @@ void acbb_study_tb(tbuf *b, const char *fmt, ...)
 
 void acbb_study_add_val(acbb_study_item *it, const char *key, double v)
 {
-    if (it->n_values >= ACBB_STUDY_MAX_VALUES) return;
+    if (t_free || it->n_values >= ACBB_STUDY_MAX_VALUES) return;
     snprintf(it->values[it->n_values].key, sizeof it->values[0].key, "%s", key);
     it->values[it->n_values++].v = v;
 }
@@ -33,7 +129,8 @@ acbb_study_check *acbb_study_add_check(acbb_study_item *it, const char *id, verd
     snprintf(c->id, sizeof c->id, "%s", id);
     c->verdict = v;
     c->info = 0;
-    memcpy(c->text, text->s, sizeof c->text);
+    if (t_free) c->text[0] = '\0';
+    else memcpy(c->text, text->s, sizeof c->text);
     return c;
 }
 
@@ -168,7 +265,7 @@ void acbb_study_val_series(acbb_study_item *it, const char *name, int blk, const
                            int a, int z)
 {
     char key[48];
-    for (int k = a; k <= z; k++) {
+    for (int k = a; !t_free && k <= z; k++) {
         snprintf(key, sizeof key, "%s_%g%s", name, xs(blk)[k], blk == BLK_LOAD ? "N" : "rpm");
         add_val(it, key, v[k]);
     }

@@ -92,7 +92,23 @@ void acbb_study_sign_end(const acbb_study_runs *r, const char *key, const char *
 typedef struct {
     char s[ACBB_STUDY_TEXT];
     size_t n;
+    char win[2];                 /* text-free mode: the last two characters (study_evidence.c) */
 } tbuf;
+
+/* Text-free mode (issue 30: a perturbed study's check table, whose texts
+ * only a changed verdict prints): on this thread tb formats nothing (n
+ * still counts what it would write), add_check keeps no text, add_val no
+ * value. A number printed non-finite, or "nan" or "inf" in the text it
+ * would have made (numbers as "0"), marks the evaluation suspect: its
+ * verdicts may differ from the text's (sanitize), so it is made again with
+ * text. */
+void acbb_study_text_free(int on);
+int acbb_study_text_suspect(void);
+/* acbb_study_eval_row without the texts (and values): 1 when its
+ * verdicts, item and checks, are the text's (none suspect), else 0 (make
+ * it with text). */
+int acbb_study_eval_verdicts(const acbb_study_row *row, const acbb_study_runs *runs,
+                             acbb_study_item *out);
 
 void acbb_study_tb(tbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void acbb_study_add_val(acbb_study_item *it, const char *key, double v);

@@ -187,19 +187,31 @@ static size_t share(rob_end *e, const acbb_study_runs *base, acbb_study_point **
     return n;
 }
 
+/* Check k of `it` changed against the base's `b` (not an info check). */
+static int changed(const acbb_study_item *b, const acbb_study_item *it, int k)
+{
+    const acbb_study_check *c = &it->checks[k];
+    int same = k < b->n_checks && strcmp(b->checks[k].id, c->id) == 0 &&
+               b->checks[k].verdict == c->verdict;
+    return !same && !c->info;
+}
+
+static int flips(const acbb_study_item *b, const acbb_study_item *it)
+{
+    int n = it->verdict != b->verdict;
+    for (int k = 0; !n && k < it->n_checks; k++) n = changed(b, it, k);
+    return n;
+}
+
 /* End e's item `it` against the base's `b`: a flip if a check (not info)
  * changed its verdict; item turns are kept ahead of partial ones. */
 static acbb_status add_flip(acbb_study_item_rob *ir, const rob_end *e, const acbb_study_item *b,
                             const acbb_study_item *it)
 {
+    if (!flips(b, it)) return ACBB_OK;
     acbb_study_flip f = { .verdict = it->verdict, .turns_item = it->verdict != b->verdict };
-    for (int k = 0; k < it->n_checks; k++) {
-        const acbb_study_check *c = &it->checks[k];
-        int same = k < b->n_checks && strcmp(b->checks[k].id, c->id) == 0 &&
-                   b->checks[k].verdict == c->verdict;
-        if (!same && !c->info) f.checks[f.n_checks++] = *c;
-    }
-    if (!f.n_checks && !f.turns_item) return ACBB_OK;
+    for (int k = 0; k < it->n_checks; k++)
+        if (changed(b, it, k)) f.checks[f.n_checks++] = it->checks[k];
     acbb_study_flip *a = realloc(ir->flips, (ir->n_flips + 1) * sizeof *a);
     if (!a) return ACBB_ENOMEM;
     ir->flips = a;
@@ -225,7 +237,10 @@ static acbb_status evaluate(const acbb_study_row *rows, const acbb_study_runs *b
         ir->verdict = b->verdict;
         ir->varied = rows[k].num != SANITY_ITEM;
         for (size_t j = 0; st == ACBB_OK && ir->varied && j < n_ends; j++) {
-            acbb_study_eval_row(&rows[k], &e[j].runs, it);
+            /* The texts only where a flip prints them (issue 30: 0.2 G of
+             * `report --sensitivity`); the same verdicts (study_priv.h). */
+            if (!acbb_study_eval_verdicts(&rows[k], &e[j].runs, it) || flips(b, it))
+                acbb_study_eval_row(&rows[k], &e[j].runs, it);
             st = add_flip(ir, &e[j], b, it);
         }
     }

@@ -86,8 +86,27 @@ static inline void acbb_mech_spread(acbb_mech_state *st)
 typedef struct acbb_mech acbb_mech;
 
 acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err);
+/* m made anew for scene s, as acbb_mech_new makes one, but in m's own
+ * solver workspaces (GSL's solvers are set afresh by every solve): a
+ * batch worker's runs reuse one (issue 30: 60 k instructions a run). On
+ * failure m is still m's to free. */
+acbb_status acbb_mech_renew(const acbb_scene *s, acbb_mech *m, acbb_error *err);
 void acbb_mech_free(acbb_mech *m);
 const acbb_geometry *acbb_mech_geometry(const acbb_mech *m);
+
+/* A copy of m without its solver workspaces (NULL; acbb_mech_free frees
+ * it): what m was built with and has learnt (Jacobians, predictors), to
+ * compare with another workspace or to hand on (acbb_mech_adopt). NULL
+ * when out of memory. */
+acbb_mech *acbb_mech_keep(const acbb_mech *m);
+/* 1 when a and b hold the same bits but for their solver workspaces: a
+ * solve from the same state then computes the same (every input of the
+ * mechanics is in the workspace; no scene is read after acbb_mech_new). */
+int acbb_mech_same(const acbb_mech *a, const acbb_mech *b);
+/* dst takes all of src (a kept copy) but its own solver workspaces: it
+ * continues as src's workspace would (GSL's solvers are set afresh by
+ * every solve). */
+void acbb_mech_adopt(acbb_mech *dst, const acbb_mech *src);
 
 /* Initial state: static thrust solution at zero speed and no expansion
  * (MODEL.md section 3 "Initial guesses"). */

@@ -4,6 +4,7 @@
  * mechanics.c. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <gsl/gsl_multiroots.h>
 #include <gsl/gsl_roots.h>
 #include "mechanics.h"
@@ -11,18 +12,15 @@
 
 /* ---- set-up ---- */
 
-acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
+/* m (all zero) set up for scene s: what acbb_mech_new and acbb_mech_renew
+ * make alike, the solver workspaces aside. */
+static acbb_status setup(acbb_mech *m, const acbb_scene *s, acbb_error *err)
 {
-    acbb_mech *m = calloc(1, sizeof *m);
-    for (int j = 0; m && j < ACBB_MAX_BALLS; j++) m->psi_key[j] = NAN;
-    if (!m) return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
+    for (int j = 0; j < ACBB_MAX_BALLS; j++) m->psi_key[j] = NAN;
     acbb_geometry_init(s, &m->g);
-    if (m->g.Z > ACBB_MAX_BALLS) {
-        int Z = m->g.Z;
-        free(m);
+    if (m->g.Z > ACBB_MAX_BALLS)
         return acbb_error_set(err, ACBB_EINVAL, "bearing.n_balls = %d: at most %d supported",
-                              Z, ACBB_MAX_BALLS);
-    }
+                              m->g.Z, ACBB_MAX_BALLS);
     int dyn = s->model != ACBB_MODEL_STATIC;
     m->centrifugal = dyn && s->centrifugal;
     m->gyroscopic = dyn && s->gyroscopic;
@@ -56,6 +54,18 @@ acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
      * tilt is 0 by symmetry like its axial offset, and not solved (its
      * tilt stiffness vanishes with the contact angle). */
     m->dof_thy = s->tilt == ACBB_TILT_HELD || m->centred ? 0 : m->dof_dz;
+    return ACBB_OK;
+}
+
+acbb_status acbb_mech_new(const acbb_scene *s, acbb_mech **out, acbb_error *err)
+{
+    acbb_mech *m = calloc(1, sizeof *m);
+    if (!m) return acbb_error_set(err, ACBB_ENOMEM, "mechanics: out of memory");
+    acbb_status rc = setup(m, s, err);
+    if (rc != ACBB_OK) {
+        free(m);
+        return rc;
+    }
     m->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     m->brent_z = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     m->brent_a = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -84,6 +94,63 @@ void acbb_mech_free(acbb_mech *m)
 }
 
 const acbb_geometry *acbb_mech_geometry(const acbb_mech *m) { return &m->g; }
+
+/* The workspace's solver pointers cleared and its in-solve context (the
+ * expansions pointer into itself, the trial state) made its own: set
+ * afresh by every solve (mechanics.c acbb_mech_solve, solve_ring). */
+static void strip(acbb_mech *t, const acbb_mech *from)
+{
+    t->brent = t->brent_z = t->brent_a = NULL;
+    for (int n = 0; n <= MAX_RING_DOF; n++) t->ring_solver[n] = NULL;
+    t->e = from->e ? &t->e_copy : NULL;
+    t->trial = NULL;
+}
+
+acbb_mech *acbb_mech_keep(const acbb_mech *m)
+{
+    acbb_mech *t = malloc(sizeof *t);
+    if (!t) return NULL;
+    memcpy(t, m, sizeof *t); /* the padding too: acbb_mech_same compares bytes */
+    strip(t, m);
+    return t;
+}
+
+int acbb_mech_same(const acbb_mech *a, const acbb_mech *b)
+{
+    acbb_mech *t = acbb_mech_keep(a), *u = t ? acbb_mech_keep(b) : NULL;
+    int same = u && !t->e == !u->e;
+    if (same) t->e = u->e = NULL; /* each into itself */
+    same = same && memcmp(t, u, sizeof *t) == 0;
+    acbb_mech_free(t);
+    acbb_mech_free(u);
+    return same;
+}
+
+/* m's solver workspaces are own's. */
+static void put_solvers(acbb_mech *m, const acbb_mech *own)
+{
+    m->brent = own->brent;
+    m->brent_z = own->brent_z;
+    m->brent_a = own->brent_a;
+    for (int n = 0; n <= MAX_RING_DOF; n++) m->ring_solver[n] = own->ring_solver[n];
+}
+
+acbb_status acbb_mech_renew(const acbb_scene *s, acbb_mech *m, acbb_error *err)
+{
+    acbb_mech own = *m;
+    memset(m, 0, sizeof *m); /* as calloc leaves a new one, padding too */
+    put_solvers(m, &own);
+    return setup(m, s, err);
+}
+
+void acbb_mech_adopt(acbb_mech *dst, const acbb_mech *src)
+{
+    acbb_mech own = *dst;
+    memcpy(dst, src, sizeof *dst);
+    put_solvers(dst, &own);
+    dst->e = src->e ? &dst->e_copy : NULL;
+    dst->trial = NULL;
+}
 
 void acbb_mech_set_transient(acbb_mech *m, double angle_tol)
 {

@@ -215,12 +215,88 @@ static acbb_status initial_mechanics(acbb_sim *sim, const acbb_mech_state *warm,
     return ACBB_OK;
 }
 
+/* The set-up's mechanics of a transient from another run's (acbb_sim_setup)
+ * when this workspace is built the same at the same speed, else solved
+ * here; a run that keeps its own (keep_setup) copies the workspace as
+ * built and as left. The work counters count the solves made here only. */
+static int setup_fits(const acbb_sim *sim, const acbb_sim_setup *from)
+{
+    return from && memcmp(&from->omega, &sim->s.inner_speed, sizeof from->omega) == 0
+        && from->ms.n == sim->s.n_balls && acbb_mech_same(sim->mech, from->built);
+}
+
+static void setup_free(acbb_sim_setup *u)
+{
+    if (!u) return;
+    acbb_mech_free(u->built);
+    acbb_mech_free(u->ran);
+    free(u);
+}
+
+static acbb_status transient_mechanics(acbb_sim *sim, const acbb_sim_setup *from,
+                                       acbb_error *err)
+{
+    if (setup_fits(sim, from)) {
+        acbb_mech_adopt(sim->mech, from->ran);
+        acbb_mech_state_copy(&sim->ms, &from->ms);
+        return ACBB_OK;
+    }
+    acbb_sim_setup *u = sim->keep_setup ? calloc(1, sizeof *u) : NULL;
+    if (u && !(u->built = acbb_mech_keep(sim->mech))) {
+        free(u);
+        u = NULL;
+    }
+    acbb_status rc = initial_mechanics(sim, NULL, err);
+    if (u && (rc != ACBB_OK || !(u->ran = acbb_mech_keep(sim->mech)))) {
+        setup_free(u);
+        u = NULL;
+    }
+    if (u) {
+        u->omega = sim->s.inner_speed;
+        acbb_mech_state_copy(&u->ms, &sim->ms);
+        sim->setup = u;
+    }
+    return rc;
+}
+
 /* The bound met in the set-up: no state yet, nothing to keep (one text for
  * a bearing and a spindle; a set's is sim_set.c setup_wall's, the same). */
 static acbb_status setup_wall(const acbb_scene *s, acbb_error *err)
 {
     return acbb_error_set(err, ACBB_WALL_LIMIT, "wall-clock bound fidelity.max_wall_s = %g s "
                           "reached during the set-up, before the first state", s->max_wall_s);
+}
+
+/* Clear the ball records [from, to) of sim's mechanics and losses. */
+static void clear_balls(acbb_sim *sim, int from, int to)
+{
+    to = to < ACBB_MAX_BALLS ? to : ACBB_MAX_BALLS;
+    if (from >= to) return;
+    memset(&sim->ms.ball[from], 0, (size_t)(to - from) * sizeof sim->ms.ball[0]);
+    memset(&sim->bl[from], 0, (size_t)(to - from) * sizeof sim->bl[0]);
+}
+
+/* A new Sim, all zero but the ball records past the scene's n balls in
+ * its mechanics and losses (60 % of it: issue 30, 0.08 G of `report
+ * --sensitivity`): no code reads a ball past ms.n (every loop over the
+ * balls ends at ms.n, or the solved ones before it; the checkpoints keep
+ * and best are malloc'd the same way, and tests/test_study.c runs with
+ * those records poisoned); sim_init clears more if the resolved scene
+ * has more balls (a designation's count). */
+static acbb_sim *sim_alloc(int n)
+{
+    acbb_sim *sim = malloc(sizeof *sim);
+    if (!sim) return NULL;
+    n = n < 0 ? 0 : n < ACBB_MAX_BALLS ? n : ACBB_MAX_BALLS;
+    char *p = (char *)sim, *ms_tail = (char *)&sim->ms.ball[n], *bl = (char *)sim->bl,
+         *bl_tail = (char *)&sim->bl[n];
+    char *ms_end = (char *)(&sim->ms + 1), *bl_end = (char *)(sim->bl + ACBB_MAX_BALLS);
+    memset(p, 0, (size_t)(ms_tail - p));
+    memset(ms_end, 0, (size_t)(bl - ms_end));
+    memset(bl, 0, (size_t)(bl_tail - bl));
+    memset(bl_end, 0, (size_t)(p + sizeof *sim - bl_end));
+    sim->cleared_balls = n;
+    return sim;
 }
 
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
@@ -231,6 +307,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     acbb_scene_resolve(s, &sim->resolved, NULL);
     sim->s = sim->resolved;
     s = &sim->s;
+    clear_balls(sim, sim->cleared_balls, s->n_balls);
+    sim->cleared_balls = s->n_balls > sim->cleared_balls ? s->n_balls : sim->cleared_balls;
     if (!sim->skip_life) /* once per scene, not per snapshot */
         acbb_life_static_basis(s, &sim->life_basis);
     double t0 = acbb_now_ms();
@@ -248,7 +326,8 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
         return acbb_error_set(err, rc, "fidelity.contact_grid = %d: 1..%d", s->contact_grid,
                               ACBB_QUAD_MAX);
     if ((rc = acbb_network_build(s, &sim->nw, err)) != ACBB_OK) return rc;
-    if ((rc = acbb_mech_new(s, &sim->mech, err)) != ACBB_OK) return rc;
+    rc = sim->mech ? acbb_mech_renew(s, sim->mech, err) : acbb_mech_new(s, &sim->mech, err);
+    if (rc != ACBB_OK) return rc;
     if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->model == ACBB_MODEL_DYNAMIC && (acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK
@@ -259,12 +338,17 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     arm_bound(sim); /* now that the dynamic workspace exists */
     if (s->preload == ACBB_PRELOAD_DISPLACEMENT && (rc = fix_preload(sim, err)) != ACBB_OK)
         return rc;
-    if (w && w->n_nodes != sim->nw.n) w = NULL;
+    /* A transient starts from ambient: of w only its set-up (above). */
+    int transient = s->thermal_mode != ACBB_THERMAL_STEADY;
+    const acbb_sim_setup *from = w && transient ? w->setup : NULL;
+    if (transient || (w && w->n_nodes != sim->nw.n)) w = NULL;
+    sim->warm_started = w != NULL;
     if (w) T_warm = w->T;
     for (int i = 0; i < sim->nw.n; i++)
         sim->T[i] = T_warm ? T_warm[i] : s->ambient_C;
     sim->setting_up = 1;
-    rc = initial_mechanics(sim, w ? &w->ms : NULL, err);
+    rc = w || T_warm || !transient ? initial_mechanics(sim, w ? &w->ms : NULL, err)
+                                   : transient_mechanics(sim, from, err);
     if (rc == ACBB_OK && !sim->no_first_state)
         rc = acbb_simx_evaluate(sim, err);
     sim->setting_up = 0;
@@ -335,16 +419,20 @@ static int warm_fits(const acbb_warm *w, const acbb_scene *s)
 }
 
 static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int member,
-                               const acbb_warm *w, acbb_sim **out, acbb_error *err)
+                               const acbb_simx_start *start, acbb_sim **out, acbb_error *err)
 {
-    if (!warm_fits(w, s)) w = NULL;
-    acbb_sim *sim = calloc(1, sizeof *sim);
+    static const acbb_simx_start cold;
+    if (!start) start = &cold;
+    const acbb_warm *w = warm_fits(start->warm, s) ? start->warm : NULL;
+    acbb_sim *sim = sim_alloc(s->n_balls);
     if (!sim || !(sim->keep = malloc(sizeof *sim->keep))
         || !(sim->best = malloc(sizeof *sim->best))) {
         if (sim) free(sim->keep);
         free(sim);
+        acbb_mech_free(start->spare);
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
+    sim->mech = start->spare; /* renewed by sim_init; freed with the Sim */
     sim->cancel = o->cancel;
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
@@ -352,17 +440,20 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
     sim->skip_life = o->skip_life;
     sim->skip_liftoff = o->skip_liftoff;
     sim->no_first_state = member;
+    sim->keep_setup = start->keep_setup;
     double t0 = acbb_now_ms();
     acbb_status rc = s->shaft_segments > 0 ? spindle_init(sim, s, err)
                    : s->set_arrangement != ACBB_SET_SINGLE ? set_init(sim, s, err)
                    : sim_init(sim, s, NULL, w, err);
     if (sim->set || sim->spindle) sim->setup_ms = acbb_now_ms() - t0; /* sim_init times its own */
     if (rc != ACBB_OK) {
+        int warm = sim->warm_started;
         acbb_sim_free(sim);
         /* A warm start that failed starts again cold (unless stopped). */
-        if (w && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
+        if (warm && rc != ACBB_CANCELLED && rc != ACBB_WALL_LIMIT) {
             if (err) *err = (acbb_error){ 0 };
-            return create_body(s, o, member, NULL, out, err);
+            acbb_simx_start again = { .keep_setup = start->keep_setup };
+            return create_body(s, o, member, &again, out, err);
         }
         return rc;
     }
@@ -392,30 +483,47 @@ acbb_status acbb_simx_create_member(const acbb_scene *s, const acbb_sim_opts *o,
 }
 
 acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
-                                  const acbb_warm *w, acbb_sim **out, acbb_error *err)
+                                  const acbb_simx_start *st, acbb_sim **out, acbb_error *err)
 {
     acbb_gsl_enter();
-    acbb_status rc = create_body(s, o, 0, w, out, err);
+    acbb_status rc = create_body(s, o, 0, st, out, err);
     acbb_gsl_leave();
     return rc;
 }
 
-acbb_warm *acbb_simx_warm_save(const acbb_sim *sim)
+acbb_warm *acbb_simx_warm_save(acbb_sim *sim)
 {
     if (sim->set || sim->run.state != ACBB_RUN_CONVERGED) return NULL;
     acbb_warm *w = malloc(sizeof *w);
     if (!w) return NULL;
     *w = (acbb_warm){ .network = sim->s.network, .model = sim->s.model,
                       .n_balls = sim->s.n_balls, .heating = sim->s.heating,
-                      .n_nodes = sim->nw.n };
+                      .n_nodes = sim->nw.n, .setup = sim->setup };
+    sim->setup = NULL;
     memcpy(w->T, sim->T, sizeof w->T);
     acbb_mech_state_copy(&w->ms, &sim->ms);
     return w;
 }
 
+void acbb_simx_warm_free(acbb_warm *w)
+{
+    if (w) setup_free(w->setup);
+    free(w);
+}
+
+acbb_mech *acbb_simx_free_spare(acbb_sim *sim)
+{
+    if (!sim) return NULL;
+    acbb_mech *m = sim->mech;
+    sim->mech = NULL;
+    acbb_sim_free(sim);
+    return m;
+}
+
 void acbb_sim_free(acbb_sim *sim)
 {
     if (!sim) return;
+    setup_free(sim->setup);
     acbb_set_sim_free(sim->set);
     acbb_spindle_sim_free(sim->spindle);
     sim_release(sim);
@@ -450,6 +558,7 @@ static acbb_status restart_body(acbb_sim *sim, const acbb_scene *s, int warm, ac
     memcpy(T, sim->T, sizeof T);
     acbb_sim *fresh = calloc(1, sizeof *fresh);
     if (!fresh) return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
+    fresh->cleared_balls = ACBB_MAX_BALLS;
     fresh->cancel = sim->cancel;
     fresh->threads = sim->threads;
     fresh->skip_stiffness = sim->skip_stiffness;
@@ -614,6 +723,12 @@ void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o)
 {
     if (sim->run.iter == 0 || sim->spindle) snapshot(sim, o, sim->run.iter == 0);
     else if (sim->set) set_step_snapshot(sim, o);
+    else step_snapshot(sim, 0, o);
+}
+
+void acbb_simx_snapshot_values(const acbb_sim *sim, acbb_snapshot *o)
+{
+    if (sim->set || sim->spindle) acbb_simx_snapshot_step(sim, o);
     else step_snapshot(sim, 0, o);
 }
 

@@ -33,10 +33,27 @@ double acbb_snap_max_pmax(const acbb_mech_state *ms);
  * life). For a hook that reads every step's losses and loads (the
  * study's, study.c). */
 void acbb_simx_snapshot_step(const acbb_sim *sim, acbb_snapshot *o);
+/* The same values at every iteration, 0 included (a single bearing's;
+ * a set's and a spindle's as acbb_simx_snapshot_step): for a hook that
+ * reads no step whole (a perturbed study's, study.c). */
+void acbb_simx_snapshot_values(const acbb_sim *sim, acbb_snapshot *o);
 
 /* A converged single bearing's temperatures and mechanics (batch.h
  * acbb_warm), the start of a run of a scene that differs in values only:
  * the same network, balls, model and heating, or it is not used. */
+/* A transient single bearing's set-up up to its first state: the
+ * room-temperature mechanics at speed (sim.c initial_mechanics) with the
+ * workspace it was solved in, as built (`built`) and as the continuation
+ * left it (`ran`). Another scene whose workspace is built the same
+ * (acbb_mech_same) at the same speed reaches the same bits (issue 30:
+ * the perturbed studies' transients, whose inputs the mechanics mostly
+ * does not read). */
+typedef struct {
+    acbb_mech *built, *ran;
+    double omega;
+    acbb_mech_state ms;
+} acbb_sim_setup;
+
 struct acbb_warm {
     acbb_network_kind network;
     acbb_model_level model;
@@ -44,13 +61,29 @@ struct acbb_warm {
     int n_balls, n_nodes;
     double T[ACBB_MAX_NODES];
     acbb_mech_state ms;
+    acbb_sim_setup *setup;       /* owned; NULL: the run kept none */
 };
-/* NULL when sim is not a converged single bearing (or out of memory). */
-acbb_warm *acbb_simx_warm_save(const acbb_sim *sim);
-/* acbb_sim_create started from w when it fits (NULL: cold); a warm start
- * that fails starts again cold. */
+/* NULL when sim is not a converged single bearing (or out of memory); the
+ * set-up sim kept (keep_setup) goes with it. */
+acbb_warm *acbb_simx_warm_save(acbb_sim *sim);
+void acbb_simx_warm_free(acbb_warm *w);
+/* How a batch run starts (acbb_simx_create_from). */
+typedef struct {
+    /* NULL: cold. A steady solve starts from its state when it fits (a
+     * warm start that fails starts again cold); a transient from ambient,
+     * taking only its set-up when its mechanics are the same (bit for bit
+     * the run's own). */
+    const acbb_warm *warm;
+    int keep_setup;              /* a transient keeps its set-up for acbb_simx_warm_save */
+    /* NULL, or a mechanics workspace to renew (acbb_mech_renew) instead of
+     * a new one; the Sim's from here on, even on failure. */
+    acbb_mech *spare;
+} acbb_simx_start;
 acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
-                                  const acbb_warm *w, acbb_sim **out, acbb_error *err);
+                                  const acbb_simx_start *st, acbb_sim **out, acbb_error *err);
+/* acbb_sim_free, but the Sim's mechanics workspace is returned (NULL: it
+ * had none) to start another (acbb_simx_start.spare). */
+acbb_mech *acbb_simx_free_spare(acbb_sim *sim);
 
 /* acbb_sim_create of a member of a steady set (sim_set.c): its first state
  * at ambient is not evaluated (the set's set-up evaluates every member's,

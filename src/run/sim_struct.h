@@ -18,6 +18,7 @@
 #include "steady_polish.h"
 #include "life_static.h"
 #include "stepper.h"
+#include "sim_priv.h"
 
 #define QD_PASSES 4            /* mechanics <-> Level-2 passes when converging a state */
 #define QD_TOL 1e-9            /* relative change of omega_m that ends the passes */
@@ -89,6 +90,10 @@ struct acbb_sim {
     double bound_axial, bound_radial; /* loads sim->mech was built with (schedule) */
     double setup_ms;           /* computing time of the set-up (sim_init) */
     double deadline_ms;        /* fidelity.max_wall_s as a monotonic-clock deadline; 0 none */
+    int keep_setup;            /* a transient keeps its set-up (acbb_simx_create_from) */
+    int warm_started;          /* sim_init started from a warm state (acbb_warm) */
+    int cleared_balls;         /* ms.ball and bl are zero below this (sim.c sim_alloc) */
+    acbb_sim_setup *setup;     /* owned: the kept set-up, until acbb_simx_warm_save */
 };
 
 /* sim_eval.c: one evaluation of the mechanical/tribological state at T^k

@@ -50,6 +50,9 @@ size_t acbb_sf_n_choices(const acbb_sfield *f);
 
 /* Why v (preset units) is out of f's range; "" if it is inside. */
 void acbb_sf_range_reason(const acbb_sfield *f, double v, char *buf, size_t n);
+/* 1 when v (SI units) is outside f's range: the scene rules' test of every
+ * field, without the reason's text or a scaled copy of the row. */
+int acbb_sf_out_of_range_si(const acbb_sfield *f, double v);
 
 /* The row of section.key, or NULL. */
 const acbb_sfield *acbb_sf_find(const char *section, const char *key);

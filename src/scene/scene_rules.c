@@ -58,11 +58,7 @@ static acbb_status rule_ranges(const acbb_scene *s, acbb_error *err)
             return acbb_error_set(err, ACBB_EINVAL, "%s.%s = %s: must be a finite number",
                                   f->info.section, f->info.key, val);
         }
-        acbb_sfield scaled = *f;
-        scaled.info.min *= f->scale;
-        scaled.info.max *= f->scale;
-        acbb_sf_range_reason(&scaled, v, why, sizeof why);
-        if (why[0]) {
+        if (acbb_sf_out_of_range_si(f, v)) {
             acbb_scene_field_format(s, i, val, sizeof val);
             acbb_sf_range_reason(f, v / f->scale, why, sizeof why);
             return acbb_error_set(err, ACBB_EINVAL, "%s.%s = %s: %s", f->info.section,

@@ -493,12 +493,27 @@ static const char *unit_suffix(const acbb_sfield *f, char *buf, size_t n)
 
 /* Why v (preset units) is out of range; "" if it is inside. A value below
  * the range names the lower bound only; above it, the whole range. */
+/* v against f's ends times `scale` (1: preset units; f->scale: SI): -1
+ * below, 1 above, 0 inside. */
+static int range_side(const acbb_sfield *f, double v, double scale)
+{
+    bool lo_open = f->ends == OC || f->ends == OO, hi_open = f->ends == CO || f->ends == OO;
+    double lo = f->info.min * scale, hi = f->info.max * scale;
+    if (lo_open ? v <= lo : v < lo) return -1;
+    return (hi_open ? v >= hi : v > hi) ? 1 : 0;
+}
+
+int acbb_sf_out_of_range_si(const acbb_sfield *f, double v)
+{
+    return range_side(f, v, f->scale) != 0;
+}
+
 void acbb_sf_range_reason(const acbb_sfield *f, double v, char *buf, size_t n)
 {
     const acbb_field_info *in = &f->info;
     bool lo_open = f->ends == OC || f->ends == OO, hi_open = f->ends == CO || f->ends == OO;
-    bool below = lo_open ? v <= in->min : v < in->min;
-    bool above = hi_open ? v >= in->max : v > in->max;
+    int side = range_side(f, v, 1.0);
+    bool below = side < 0, above = side > 0;
     if (!below && !above) { /* every field of every validation: no text to make */
         buf[0] = '\0';
         return;
