@@ -13,6 +13,7 @@
 #include "tap.h"
 #include "acbb/batch.h"
 #include "acbb/tools/sweep.h"
+#include "acbb/tools/fidelity.h"
 
 #define NPTS 6
 #define MAXN 16
@@ -488,11 +489,9 @@ static void test_skip_life(void)
        "skip_life: every other result bit for bit the same");
 }
 
-/* Issue 30, sixth round: a worker renews its last run's mechanics
- * workspace for the next (acbb_mech_renew): each run bit for bit a Sim of
- * its own, through a radial load and back (learnt Jacobians, ring
- * freedoms and predictors all made afresh). */
-static acbb_scene spare_scene[3];
+/* The scenes a spare-workspace test's worker runs in turn. */
+#define SPARE_MAX 4
+static acbb_scene spare_scene[SPARE_MAX];
 static acbb_status spare_scene_cb(void *ctx, size_t i, acbb_scene *out, acbb_batch_mode *mode,
                                   acbb_error *err)
 {
@@ -501,30 +500,77 @@ static acbb_status spare_scene_cb(void *ctx, size_t i, acbb_scene *out, acbb_bat
     return ACBB_OK;
 }
 
-static void test_spare_mech(void)
+/* 1 if one worker's runs of spare_scene[0..n) each converge to the bits
+ * (and mechanics solves) of a Sim of its own. */
+static int spare_runs_own_bits(int n)
 {
     static batch_case c;
     static acbb_snapshot own;
-    acbb_scene base = load("presets/7008C.ini"); /* quasi-dynamic, transient */
-    case_init(&c, &base);
-    for (int i = 0; i < 3; i++) spare_scene[i] = base;
-    spare_scene[1].radial_load = spare_scene[2].radial_load = 300.0;
-    spare_scene[2].h_face = 10000.0; /* the same loads and speed as the run before */
+    case_init(&c, &spare_scene[0]);
     acbb_batch_opts o = { .jobs = 1, .scene = spare_scene_cb, .done = done_cb, .ctx = &c };
-    acbb_batch_run(3, &o, NULL);
+    acbb_batch_run((size_t)n, &o, NULL);
     int same = 1;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < n; i++) {
         acbb_sim *sim = NULL;
         acbb_error err = { { 0 } };
         if (acbb_sim_create(&spare_scene[i], NULL, &sim, &err) == ACBB_OK) acbb_sim_run(sim);
         acbb_sim_snapshot(sim, &own);
         acbb_sim_free(sim);
-        same = same && c.have_snap[i] && own.state == ACBB_RUN_CONVERGED
-               && same_snap(&own, &c.snap[i])
-               && own.work.mechanics_solves == c.snap[i].work.mechanics_solves;
+        int one = c.have_snap[i] && own.state == ACBB_RUN_CONVERGED
+                  && same_snap(&own, &c.snap[i])
+                  && own.work.mechanics_solves == c.snap[i].work.mechanics_solves;
+        if (!one) printf("# run %d differs from its own Sim's\n", i);
+        same = same && one;
     }
-    ok(same, "one worker's three runs (pure thrust; 300 N radial; the same with another face "
-       "film) in one renewed mechanics workspace: each the bits of a Sim of its own");
+    return same;
+}
+
+/* Issue 30, sixth round: a worker renews its last run's mechanics
+ * workspace for the next (acbb_mech_renew): each run bit for bit a Sim of
+ * its own, through a radial load and back (learnt Jacobians, ring
+ * freedoms and predictors all made afresh). */
+static void test_spare_mech(void)
+{
+    acbb_scene base = load("presets/7008C.ini"); /* quasi-dynamic, transient */
+    for (int i = 0; i < 3; i++) spare_scene[i] = base;
+    spare_scene[1].radial_load = spare_scene[2].radial_load = 300.0;
+    spare_scene[2].h_face = 10000.0; /* the same loads and speed as the run before */
+    ok(spare_runs_own_bits(3), "one worker's three runs (pure thrust; 300 N radial; the same "
+       "with another face film) in one renewed mechanics workspace: each the bits of a Sim of "
+       "its own");
+}
+
+/* Issue 30, seventh round: a worker renews its last run's Level-2
+ * workspace for the next too (acbb_qd_renew), and keeps it through a run
+ * at another level: each run bit for bit a Sim of its own, with Jacobians,
+ * skipped inputs and root histories of other balls, speeds and modes
+ * before it (cleared), and another contact grid (new traction tables). */
+static void test_spare_qd(void)
+{
+    static const struct {
+        double radial, rpm;
+        acbb_thermal_mode mode;
+        acbb_model_level model;
+        int grid;
+    } pt[SPARE_MAX] = {
+        { 300.0, 15000.0, ACBB_THERMAL_STEADY, ACBB_MODEL_QUASI_DYNAMIC, 6 },
+        { 300.0, 15000.0, ACBB_THERMAL_STEADY, ACBB_MODEL_QUASI_STATIC, 6 }, /* keeps it */
+        { 0.0, 12000.0, ACBB_THERMAL_TRANSIENT, ACBB_MODEL_QUASI_DYNAMIC, 6 },
+        { 300.0, 18000.0, ACBB_THERMAL_TRANSIENT, ACBB_MODEL_QUASI_DYNAMIC, 5 },
+    };
+    acbb_scene base = load("presets/7008C.ini"); /* quasi-dynamic, transient, grid 6 */
+    for (int i = 0; i < SPARE_MAX; i++) {
+        acbb_scene *s = &spare_scene[i];
+        acbb_scene_resolve(&base, s, NULL);
+        s->radial_load = pt[i].radial;
+        s->inner_speed = pt[i].rpm * M_PI / 30.0;
+        s->thermal_mode = pt[i].mode;
+        s->model = pt[i].model;
+        s->contact_grid = pt[i].grid;
+    }
+    ok(spare_runs_own_bits(SPARE_MAX), "one worker's four runs (300 N radial steady; the same "
+       "quasi-static; axial transient at 12000 rpm; radial transient at 18000 rpm on a 5-point "
+       "grid) in one renewed Level-2 workspace: each the bits of a Sim of its own");
 }
 
 /* Issue 30, sixth round: snap_to makes each final snapshot in the
@@ -571,6 +617,7 @@ int main(void)
     test_setup_shared();
     test_snap_to(&base);
     test_spare_mech();
+    test_spare_qd();
     test_jobs_independent(&base);
     test_cancel_serial(&base);
     test_cancel_parallel(&base);

@@ -91,7 +91,7 @@ typedef struct {
     acbb_scene scene;
     acbb_snapshot snap;
     char msg[520];
-    acbb_mech *spare;           /* the last run's mechanics workspace, renewed by the next */
+    acbb_simx_spare spare;      /* the last run's workspaces, renewed by the next */
 } slot;
 
 typedef struct {
@@ -132,7 +132,7 @@ static void run_point(const pool *pl, slot *w, size_t i, acbb_batch_result *r)
         /* a transient takes only the set-up (sim_priv.h), and keeps its own */
         from = o->warm ? o->warm(o->ctx, i) : NULL;
         acbb_simx_start start = { from, o->keep && !from, w->spare };
-        w->spare = NULL; /* the Sim's now */
+        w->spare = (acbb_simx_spare){ 0 }; /* the Sim's now */
         st = acbb_simx_create_from(&w->scene, &so, &start, &sim, &err);
     }
     if (st == ACBB_OK) {
@@ -174,7 +174,7 @@ static void *pool_worker(void *arg)
 {
     pool *pl = arg;
     slot *w = malloc(sizeof *w);
-    if (w) w->spare = NULL;
+    if (w) w->spare = (acbb_simx_spare){ 0 };
     for (size_t i; (i = atomic_fetch_add(&pl->next, 1)) < pl->n;) {
         acbb_batch_result r = { .index = i, .ran = 1 };
         if (acbb_cancelled(pl->o->cancel)) {
@@ -189,7 +189,7 @@ static void *pool_worker(void *arg)
         }
         report(pl, &r);
     }
-    if (w) acbb_mech_free(w->spare);
+    if (w) acbb_simx_spare_free(w->spare);
     free(w);
     return NULL;
 }

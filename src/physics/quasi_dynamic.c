@@ -7,6 +7,7 @@
  * solved by GSL's hybridsj with a finite-difference Jacobian of fixed
  * absolute steps (GSL's own relative steps fail at wy ~ 0). */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
@@ -28,26 +29,32 @@
 #define STALE_EVALS 4 /* a Broyden solve of more residuals: its Jacobian had gone stale */
 #define PRED_INPUTS 7  /* loads, angles, inlet viscosities, inner-ring speed */
 
+/* What Level 2 keeps of one ball from update to update. */
+typedef struct {
+    /* Last Jacobian (scaled unknowns and residuals) for the Broyden steps
+     * of the next update; J_ok = 0: none yet. */
+    double J[16];
+    int J_ok;
+    /* 1: the last Broyden solve was slow, the next one starts from the
+     * analytic Jacobian (the kept one had gone stale) */
+    int J_stale;
+    /* Inputs of the last solve (acbb_ball_inputs); in_ok = 0: none. */
+    double in[ACBB_BALL_INPUTS];
+    int in_ok;
+    double tol_used; /* the residual the last solve ended below */
+    /* The last two roots and the inputs they were solved at (PRED_INPUTS
+     * of them), newest first; nh: how many are kept. */
+    double xh[2][4], uh[2][PRED_INPUTS];
+    int nh;
+} qd_ball;
+
 struct acbb_qd {
     acbb_traction_contact ci, co;
     gsl_multiroot_fdfsolver *solver;
-    /* Last Jacobian of each ball (scaled unknowns and residuals) for the
-     * Broyden steps of the next update; J_ok[j] = 0: none yet. */
-    double J[ACBB_MAX_BALLS][16];
-    int J_ok[ACBB_MAX_BALLS];
-    /* 1: ball j's last Broyden solve was slow, its next one starts from
-     * the analytic Jacobian (the kept one had gone stale) */
-    int J_stale[ACBB_MAX_BALLS];
-    /* Inputs of each ball's last solve (acbb_ball_inputs); in_ok[j] = 0: none. */
-    double in[ACBB_MAX_BALLS][ACBB_BALL_INPUTS];
-    int in_ok[ACBB_MAX_BALLS];
-    double tol_used[ACBB_MAX_BALLS]; /* the residual ball j's last solve ended below */
     double skip_tol;    /* 0: every update solves every ball */
     int path;           /* 1: transient steps (acbb_qd_set_path): predicted starts */
-    /* Each ball's last two roots and the inputs they were solved at
-     * (PRED_INPUTS of them), newest first; nh[j]: how many are kept. */
-    double xh[ACBB_MAX_BALLS][2][4], uh[ACBB_MAX_BALLS][2][PRED_INPUTS];
-    int nh[ACBB_MAX_BALLS];
+    int used;           /* b[used..] are all zero (no update reached them) */
+    qd_ball b[ACBB_MAX_BALLS]; /* last: acbb_qd_renew clears all before it */
 };
 
 typedef struct {
@@ -190,6 +197,23 @@ acbb_status acbb_qd_new(int grid, acbb_qd **out)
     return ACBB_OK;
 }
 
+/* As calloc leaves a new one, but of the balls only those an update
+ * reached (the whole 26 kB cost as much as the allocations saved). */
+acbb_status acbb_qd_renew(acbb_qd *q, int grid)
+{
+    acbb_traction_contact ci = q->ci, co = q->co;
+    gsl_multiroot_fdfsolver *solver = q->solver;
+    memset(q->b, 0, sizeof q->b[0] * (size_t)q->used);
+    memset(q, 0, offsetof(acbb_qd, b));
+    q->ci = ci;
+    q->co = co;
+    q->solver = solver;
+    if (acbb_traction_contact_renew(&q->ci, grid) != ACBB_OK
+        || acbb_traction_contact_renew(&q->co, grid) != ACBB_OK)
+        return ACBB_ENOMEM;
+    return ACBB_OK;
+}
+
 void acbb_qd_free(acbb_qd *q)
 {
     if (!q) return;
@@ -279,17 +303,17 @@ static acbb_status continuation(acbb_qd *q, gsl_multiroot_function_fdf *F, const
 static int broyden_from(acbb_qd *q, qd_ctx *c, int j, const double *x0, double x[4])
 {
     double J[16], f[4], xa[4];
-    memcpy(J, q->J[j], sizeof J);
+    memcpy(J, q->b[j].J, sizeof J);
     memcpy(xa, x0, sizeof xa);
     acbb_broyden_opts o = { 0 };
     double Ja[16];
-    if (q->path && q->J_stale[j] && (o.have_f = qd_fj(xa, c, f, Ja)))
+    if (q->path && q->b[j].J_stale && (o.have_f = qd_fj(xa, c, f, Ja)))
         memcpy(J, Ja, sizeof J);
     int before = c->evals;
     if (!acbb_broyden_ex(eval, c, 4, J, xa, f, c->tol, 8, &o)) return 0;
-    q->J_stale[j] = q->path && c->evals - before > STALE_EVALS;
-    memcpy(q->J[j], J, sizeof J);
-    q->J_ok[j] = 1;
+    q->b[j].J_stale = q->path && c->evals - before > STALE_EVALS;
+    memcpy(q->b[j].J, J, sizeof J);
+    q->b[j].J_ok = 1;
     memcpy(x, xa, sizeof xa);
     return 1;
 }
@@ -307,7 +331,7 @@ static int broyden_from(acbb_qd *q, qd_ctx *c, int j, const double *x0, double x
 static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const double *xn)
 {
     double J[16], f[4], xa[4];
-    int own = q->J_ok[j];
+    int own = q->b[j].J_ok;
     if (own && broyden_from(q, c, j, x, x))
         return ACBB_OK;
     int from_nb = !own && xn;
@@ -320,16 +344,16 @@ static acbb_status solve_speeds(acbb_qd *q, qd_ctx *c, int j, double x[4], const
      * BENCHMARKS.md round 3). */
     memcpy(xa, from_nb ? xn : x, sizeof xa);
     if ((q->skip_tol > 0.0 || from_nb || own) && newton_analytic(c, xa, J)) {
-        memcpy(q->J[j], J, sizeof J);
-        q->J_ok[j] = 1;
+        memcpy(q->b[j].J, J, sizeof J);
+        q->b[j].J_ok = 1;
         memcpy(x, xa, sizeof xa);
         return ACBB_OK;
     }
-    q->J_ok[j] = 0;
+    q->b[j].J_ok = 0;
     gsl_multiroot_function_fdf F = { qd_f, qd_df, qd_fdf, 4, c };
     if (newton(q, &F, x) == ACBB_OK) {
-        gsl_matrix_view JM = gsl_matrix_view_array(q->J[j], 4, 4);
-        q->J_ok[j] = qd_df(q->solver->x, c, &JM.matrix) == GSL_SUCCESS;
+        gsl_matrix_view JM = gsl_matrix_view_array(q->b[j].J, 4, 4);
+        q->b[j].J_ok = qd_df(q->solver->x, c, &JM.matrix) == GSL_SUCCESS;
     } else if (continuation(q, &F, x) != ACBB_OK)
         return ACBB_DIVERGED;
     for (int d = 0; d < 4; d++) x[d] = gsl_vector_get(q->solver->x, d);
@@ -373,8 +397,9 @@ static acbb_status solve_ball(acbb_qd *q, const acbb_scene *s, const acbb_quad *
  * is the same to RES_TOL, issue 30). 0: no history or the inputs turned. */
 static int predict(const acbb_qd *q, int j, const double u[PRED_INPUTS], double x[4])
 {
-    if (q->nh[j] < 2 || !q->J_ok[j]) return 0;
-    const double *u0 = q->uh[j][0], *u1 = q->uh[j][1];
+    const qd_ball *h = &q->b[j];
+    if (h->nh < 2 || !h->J_ok) return 0;
+    const double *u0 = h->uh[0], *u1 = h->uh[1];
     double num = 0.0, den = 0.0;
     for (int k = 0; k < PRED_INPUTS; k++) {
         /* Angles (2, 3) in radians, the others relative. */
@@ -385,18 +410,19 @@ static int predict(const acbb_qd *q, int j, const double u[PRED_INPUTS], double 
     }
     double t = den > 0.0 ? num / den : 0.0; /* 0: the inputs did not move */
     if (!(t > 0.0 && t < 4.0)) return 0;
-    for (int d = 0; d < 4; d++) x[d] = q->xh[j][0][d] + t * (q->xh[j][0][d] - q->xh[j][1][d]);
+    for (int d = 0; d < 4; d++) x[d] = h->xh[0][d] + t * (h->xh[0][d] - h->xh[1][d]);
     return 1;
 }
 
 /* Ball j's root x at inputs u into its history. */
 static void remember(acbb_qd *q, int j, const double u[PRED_INPUTS], const double *w, double wi)
 {
-    memcpy(q->xh[j][1], q->xh[j][0], sizeof q->xh[j][0]);
-    memcpy(q->uh[j][1], q->uh[j][0], sizeof q->uh[j][0]);
-    for (int d = 0; d < 4; d++) q->xh[j][0][d] = w[d] / wi;
-    memcpy(q->uh[j][0], u, sizeof q->uh[j][0]);
-    q->nh[j] = q->nh[j] < 2 ? q->nh[j] + 1 : 2;
+    qd_ball *h = &q->b[j];
+    memcpy(h->xh[1], h->xh[0], sizeof h->xh[0]);
+    memcpy(h->uh[1], h->uh[0], sizeof h->uh[0]);
+    for (int d = 0; d < 4; d++) h->xh[0][d] = w[d] / wi;
+    memcpy(h->uh[0], u, sizeof h->uh[0]);
+    h->nh = h->nh < 2 ? h->nh + 1 : 2;
 }
 
 /* Weights of the transient-step skip (acbb_ball_moved, inputs in the order
@@ -424,11 +450,12 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
     *change = 0.0;
     if (omega_i <= 0.0) return ACBB_OK;
     int nb = acbb_mech_distinct(st), jn = -1; /* last ball solved here with a Jacobian */
+    if (nb > q->used) q->used = nb;
     for (int j = 0; j < nb; j++) {
         acbb_ball_state *b = &st->ball[j];
         if (b->Qi < MIN_LOAD || b->Qo < MIN_LOAD) {
             b->traction_valid = 0;
-            q->J_ok[j] = q->in_ok[j] = q->nh[j] = 0;
+            q->b[j].J_ok = q->b[j].in_ok = q->b[j].nh = 0;
             continue;
         }
         /* Inside a transient step a ball whose inputs barely moved keeps
@@ -437,9 +464,9 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
          * its last solve was as tight as the polish's. */
         double in[ACBB_BALL_INPUTS];
         acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, in);
-        if (q->skip_tol > 0.0 && q->in_ok[j] && b->traction_valid
-            && q->tol_used[j] <= qd_tol(q)
-            && acbb_ball_moved(q->in[j], in, skip_weights) < q->skip_tol)
+        if (q->skip_tol > 0.0 && q->b[j].in_ok && b->traction_valid
+            && q->b[j].tol_used <= qd_tol(q)
+            && acbb_ball_moved(q->b[j].in, in, skip_weights) < q->skip_tol)
             continue;
         double wm0 = b->kin.omega_m, u[PRED_INPUTS], x0[4];
         memcpy(u, in, sizeof u[0] * 6);
@@ -447,13 +474,13 @@ acbb_status acbb_qd_update(acbb_qd *q, const acbb_scene *s, const acbb_quad *qua
         int pr = q->path && predict(q, j, u, x0);
         acbb_status rc = solve_ball(q, s, quad, g, omega_i, oil_i, oil_o, mix, b, j,
                                     jn >= 0 ? &st->ball[jn] : NULL, pr ? x0 : NULL);
-        q->in_ok[j] = rc == ACBB_OK;
-        q->tol_used[j] = qd_tol(q);
+        q->b[j].in_ok = rc == ACBB_OK;
+        q->b[j].tol_used = qd_tol(q);
         if (rc == ACBB_OK) remember(q, j, u, b->qd_w, omega_i);
-        else q->nh[j] = 0;
-        if (rc == ACBB_OK && q->J_ok[j]) jn = j;
+        else q->b[j].nh = 0;
+        if (rc == ACBB_OK && q->b[j].J_ok) jn = j;
         /* Recorded after the solve: its speeds are the reference. */
-        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->in[j]);
+        acbb_ball_inputs(b, oil_i->eta0, oil_o->eta0, omega_i, q->b[j].in);
         if (rc != ACBB_OK)
             return acbb_error_set(err, rc, "quasi-dynamic kinematics of ball %d did not converge "
                                   "(Qi %.3g N, Qo %.3g N)", j + 1, b->Qi, b->Qo);

@@ -17,6 +17,13 @@
 typedef struct acbb_qd acbb_qd;
 
 acbb_status acbb_qd_new(int grid, acbb_qd **out);
+/* q made anew for grid, as acbb_qd_new makes one (every ball's Jacobian,
+ * inputs, tolerances and root history cleared, skip and path off), in
+ * q's own traction tables (if that size) and GSL solver, which every
+ * hybrid solve sets afresh (gsl_multiroot_fdfsolver_set): a batch
+ * worker's runs reuse one (issue 30: about 48 k instructions a run of
+ * allocations and clearing). On failure q is still q's to free. */
+acbb_status acbb_qd_renew(acbb_qd *q, int grid);
 void acbb_qd_free(acbb_qd *q);
 
 /* Solve Level 2 for every distinct ball of st at inner-ring speed omega_i,

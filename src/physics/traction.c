@@ -13,19 +13,36 @@ static void cross(const double a[3], const double b[3], double o[3])
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid)
+/* tc (cleared) laid out in P, room for cap points (NULL P: none). */
+static void lay_out(acbb_traction_contact *tc, double *P, int cap)
 {
     memset(tc, 0, sizeof *tc);
-    int cap = grid * grid;
-    tc->P = malloc(sizeof(double) * 8 * (size_t)cap);
-    if (!tc->P) return ACBB_ENOMEM;
+    if (!P) return;
+    tc->P = P;
     tc->w = tc->P + 3 * cap;
     tc->p = tc->w + cap;
     tc->eta = tc->p + cap;
     tc->tb = tc->eta + cap;
     tc->tlim = tc->tb + cap;
     tc->cap = cap;
-    return ACBB_OK;
+}
+
+acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid)
+{
+    int cap = grid * grid;
+    double *P = malloc(sizeof(double) * 8 * (size_t)cap);
+    lay_out(tc, P, cap);
+    return P ? ACBB_OK : ACBB_ENOMEM;
+}
+
+acbb_status acbb_traction_contact_renew(acbb_traction_contact *tc, int grid)
+{
+    if (tc->P && tc->cap == grid * grid) {
+        lay_out(tc, tc->P, tc->cap);
+        return ACBB_OK;
+    }
+    acbb_traction_contact_free(tc);
+    return acbb_traction_contact_init(tc, grid);
 }
 
 void acbb_traction_contact_free(acbb_traction_contact *tc)

@@ -39,6 +39,11 @@ typedef struct {
 } acbb_traction_contact;
 
 acbb_status acbb_traction_contact_init(acbb_traction_contact *tc, int grid);
+/* tc as acbb_traction_contact_init makes it for grid, in its own tables if
+ * they are that size: every scalar cleared; the tables are written by
+ * prepare before eval reads them (a batch's runs reuse one). On failure
+ * tc is still the caller's to free. */
+acbb_status acbb_traction_contact_renew(acbb_traction_contact *tc, int grid);
 void acbb_traction_contact_free(acbb_traction_contact *tc);
 
 /* asinh(x) for x > 0 by the identities a C library uses (W. Kahan's, in

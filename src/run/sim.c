@@ -299,6 +299,15 @@ static acbb_sim *sim_alloc(int n)
     return sim;
 }
 
+/* The Level-2 workspace: a batch's spare renewed, else a new one. */
+static acbb_status qd_make(acbb_sim *sim, int grid)
+{
+    if (!sim->qd_idle) return acbb_qd_new(grid, &sim->qd);
+    sim->qd = sim->qd_idle; /* freed with the Sim even if the renewal fails */
+    sim->qd_idle = NULL;
+    return acbb_qd_renew(sim->qd, grid);
+}
+
 static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_warm,
                             const acbb_warm *w, acbb_error *err)
 {
@@ -328,7 +337,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     if ((rc = acbb_network_build(s, &sim->nw, err)) != ACBB_OK) return rc;
     rc = sim->mech ? acbb_mech_renew(s, sim->mech, err) : acbb_mech_new(s, &sim->mech, err);
     if (rc != ACBB_OK) return rc;
-    if (s->model == ACBB_MODEL_QUASI_DYNAMIC && acbb_qd_new(s->contact_grid, &sim->qd) != ACBB_OK)
+    if (s->model == ACBB_MODEL_QUASI_DYNAMIC && qd_make(sim, s->contact_grid) != ACBB_OK)
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     if (s->model == ACBB_MODEL_DYNAMIC && (acbb_dyn_new(s->contact_grid, &sim->dyn) != ACBB_OK
                                            || acbb_dyn_set_threads(sim->dyn, sim->threads)
@@ -372,6 +381,8 @@ static void sim_release(acbb_sim *sim)
     sim->mech = NULL;
     acbb_qd_free(sim->qd);
     sim->qd = NULL;
+    acbb_qd_free(sim->qd_idle);
+    sim->qd_idle = NULL;
     acbb_dyn_free(sim->dyn);
     sim->dyn = NULL;
     if (sim->nw.net) acbb_network_free(&sim->nw);
@@ -429,10 +440,11 @@ static acbb_status create_body(const acbb_scene *s, const acbb_sim_opts *o, int 
         || !(sim->best = malloc(sizeof *sim->best))) {
         if (sim) free(sim->keep);
         free(sim);
-        acbb_mech_free(start->spare);
+        acbb_simx_spare_free(start->spare);
         return acbb_error_set(err, ACBB_ENOMEM, "out of memory");
     }
-    sim->mech = start->spare; /* renewed by sim_init; freed with the Sim */
+    sim->mech = start->spare.mech; /* renewed by sim_init; freed with the Sim */
+    sim->qd_idle = start->spare.qd; /* taken by sim_init at Level 2 (qd_make) */
     sim->cancel = o->cancel;
     sim->polish_relax = 1.0;
     sim->threads = o->threads > 0 ? o->threads : DYN_THREADS;
@@ -511,13 +523,22 @@ void acbb_simx_warm_free(acbb_warm *w)
     free(w);
 }
 
-acbb_mech *acbb_simx_free_spare(acbb_sim *sim)
+acbb_simx_spare acbb_simx_free_spare(acbb_sim *sim)
 {
-    if (!sim) return NULL;
-    acbb_mech *m = sim->mech;
+    acbb_simx_spare sp = { 0 };
+    if (!sim) return sp;
+    acbb_qd **q = sim->qd ? &sim->qd : &sim->qd_idle;
+    sp = (acbb_simx_spare){ sim->mech, *q };
     sim->mech = NULL;
+    *q = NULL;
     acbb_sim_free(sim);
-    return m;
+    return sp;
+}
+
+void acbb_simx_spare_free(acbb_simx_spare sp)
+{
+    acbb_mech_free(sp.mech);
+    acbb_qd_free(sp.qd);
 }
 
 void acbb_sim_free(acbb_sim *sim)

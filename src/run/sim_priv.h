@@ -6,6 +6,7 @@
 #include "acbb/sim.h"
 #include "acbb/batch.h"
 #include "mechanics.h"
+#include "quasi_dynamic.h"
 #include "expansion.h"
 #include "losses.h"
 
@@ -67,6 +68,14 @@ struct acbb_warm {
  * set-up sim kept (keep_setup) goes with it. */
 acbb_warm *acbb_simx_warm_save(acbb_sim *sim);
 void acbb_simx_warm_free(acbb_warm *w);
+/* A batch worker's workspaces from its last run, renewed by the next
+ * instead of new ones (acbb_mech_renew, acbb_qd_renew); each NULL if none. */
+typedef struct {
+    acbb_mech *mech;
+    acbb_qd *qd;                 /* Level 2: a run at another level keeps it for later */
+} acbb_simx_spare;
+void acbb_simx_spare_free(acbb_simx_spare sp);
+
 /* How a batch run starts (acbb_simx_create_from). */
 typedef struct {
     /* NULL: cold. A steady solve starts from its state when it fits (a
@@ -75,15 +84,15 @@ typedef struct {
      * the run's own). */
     const acbb_warm *warm;
     int keep_setup;              /* a transient keeps its set-up for acbb_simx_warm_save */
-    /* NULL, or a mechanics workspace to renew (acbb_mech_renew) instead of
-     * a new one; the Sim's from here on, even on failure. */
-    acbb_mech *spare;
+    /* Workspaces to renew instead of new ones; the Sim's from here on,
+     * even on failure. */
+    acbb_simx_spare spare;
 } acbb_simx_start;
 acbb_status acbb_simx_create_from(const acbb_scene *s, const acbb_sim_opts *o,
                                   const acbb_simx_start *st, acbb_sim **out, acbb_error *err);
-/* acbb_sim_free, but the Sim's mechanics workspace is returned (NULL: it
- * had none) to start another (acbb_simx_start.spare). */
-acbb_mech *acbb_simx_free_spare(acbb_sim *sim);
+/* acbb_sim_free, but the Sim's mechanics and Level-2 workspaces (or the
+ * spare it kept) are returned to start another (acbb_simx_start.spare). */
+acbb_simx_spare acbb_simx_free_spare(acbb_sim *sim);
 
 /* acbb_sim_create of a member of a steady set (sim_set.c): its first state
  * at ambient is not evaluated (the set's set-up evaluates every member's,

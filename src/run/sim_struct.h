@@ -54,6 +54,7 @@ struct acbb_sim {
     acbb_scene s;              /* `resolved` at the run's operating point */
     acbb_mech *mech;
     acbb_qd *qd;               /* quasi-dynamic workspace (NULL below that level) */
+    acbb_qd *qd_idle;          /* a batch's spare Level-2 workspace while at another level */
     acbb_dyn *dyn;             /* dynamic workspace (dynamic level only) */
     acbb_mech_state ms;        /* last accepted mechanics */
     checkpoint *keep;          /* scratch for step rollback (owned) */
