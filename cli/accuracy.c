@@ -17,6 +17,7 @@
 #include "acbb/scene.h"
 #include "acbb/tools/scene_schema.h"
 #include "accuracy.h"
+#include "accuracy_row.h"
 #include "commands.h"
 #include "common.h"
 #include "exit.h"
@@ -95,41 +96,11 @@ static int check_args(acc_args *o, const acbb_cli_args *a)
 
 /* ---- formatting ---- */
 
-/* "model=static": the key without its "fidelity." section (every knob is
- * in [fidelity], the table header says so). */
-static void setting_label(const acbb_accuracy_row *r, char *buf, size_t n)
-{
-    const char *dot = strchr(r->key, '.');
-    snprintf(buf, n, "%s=%s", dot ? dot + 1 : r->key, r->value);
-}
-
-static const char *row_status(const acbb_accuracy_row *r)
-{
-    if (r->skipped) return "skipped";
-    return r->status == ACBB_OK ? "converged" : acbb_status_name(r->status);
-}
-
-static const char *mark(const acbb_accuracy_row *r)
-{
-    if (r->is_reference && r->is_default) return "RD";
-    if (r->is_reference) return "R";
-    return r->is_default ? "D" : "";
-}
-
 static void print_row(const acbb_accuracy_row *r)
 {
-    char label[96], e[5][16];
-    setting_label(r, label, sizeof label);
-    const double errs[5] = { r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide };
-    for (int k = 0; k < 5; k++) acbb_accuracy_format_pct(errs[k], e[k], sizeof e[k]);
-    char ms[16], wu[16];
-    if (isfinite(r->wall_ms)) snprintf(ms, sizeof ms, "%7.1f", r->wall_ms);
-    else snprintf(ms, sizeof ms, "%7s", "-");
-    /* 80 columns: work keeps a decimal below 1000 M */
-    if (isfinite(r->work)) snprintf(wu, sizeof wu, "%6.*f", r->work < 999.95 ? 1 : 0, r->work);
-    else snprintf(wu, sizeof wu, "%6s", "-");
-    printf("%-19s %-2s %-9s%s%s%7s%7s%7s%7s%7s\n", label, mark(r), row_status(r), ms,
-           wu, e[0], e[1], e[2], e[3], e[4]);
+    char line[160];
+    acbb_cli_acc_row(r, line, sizeof line);
+    puts(line);
 }
 
 static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t n)
@@ -144,8 +115,9 @@ static void print_table(const acc_args *a, const acbb_accuracy_row *rows, size_t
            "inner contact the load Qi, angle alpha and sliding speed slide. work: cost in\n"
            "work units (M instructions, from the Sim's counters: repeatable).\n\n",
            ACBB_ACCURACY_T_FLOOR_K);
-    printf("%-19s %-2s %-9s%7s%6s%7s%7s%7s%7s%7s\n", "setting", "", "status", "ms",
-           "work", "loss%", "T%", "Qi%", "alpha%", "slide%");
+    char header[160];
+    acbb_cli_acc_header(header, sizeof header);
+    puts(header);
     acbb_accuracy_knob last = ACBB_KNOB_COUNT;
     for (size_t i = 0; i < n; i++) {
         if (rows[i].skipped) continue;
@@ -161,13 +133,13 @@ static void print_notes(const acbb_accuracy_row *rows, size_t n)
     for (size_t i = 0; i < n; i++) {
         if (rows[i].status == ACBB_OK) continue;
         char label[96];
-        setting_label(&rows[i], label, sizeof label);
+        acbb_cli_acc_label(&rows[i], label, sizeof label);
         if (!any) putchar('\n');
         any = true;
         if (rows[i].skipped)
             printf("note: %s skipped, not available: %s\n", label, rows[i].message);
         else
-            printf("note: %s %s: %s\n", label, row_status(&rows[i]), rows[i].message);
+            printf("note: %s %s: %s\n", label, acbb_cli_acc_status(&rows[i]), rows[i].message);
     }
 }
 
@@ -191,7 +163,7 @@ static void print_frontier(const acbb_accuracy_row *rows, size_t n)
         }
         const acbb_accuracy_row *r = &rows[picks[k]];
         char label[96], el[16], eT[16], vs[64];
-        setting_label(r, label, sizeof label);
+        acbb_cli_acc_label(r, label, sizeof label);
         acbb_accuracy_format_pct(r->e_loss, el, sizeof el);
         acbb_accuracy_format_pct(r->e_T, eT, sizeof eT);
         if (picks[k] == ref)
@@ -221,7 +193,7 @@ static void csv_rows(FILE *f, const acbb_accuracy_row *rows, size_t n)
     for (size_t i = 0; i < n; i++) {
         const acbb_accuracy_row *r = &rows[i];
         fprintf(f, "%s,%s,%s,%d,%d,%s,%ld", acbb_accuracy_knob_name(r->knob), r->key, r->value,
-                r->is_reference, r->is_default, row_status(r), r->iterations);
+                r->is_reference, r->is_default, acbb_cli_acc_status(r), r->iterations);
         const double v[] = { r->wall_ms, r->loss, r->dT_outer, r->Qi, r->alpha_i / ACBB_DEG, r->slide_i,
                              r->e_loss, r->e_T, r->e_Qi, r->e_alpha, r->e_slide, r->work };
         for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) csv_num(f, v[k]);
@@ -275,8 +247,8 @@ static int say_failed(const acbb_accuracy_row *rows, size_t n)
         ran++;
         if (rows[i].status == ACBB_OK || failed++) continue;
         char label[96];
-        setting_label(&rows[i], label, sizeof label);
-        snprintf(first, sizeof first, "%s: %s: %s", label, row_status(&rows[i]),
+        acbb_cli_acc_label(&rows[i], label, sizeof label);
+        snprintf(first, sizeof first, "%s: %s: %s", label, acbb_cli_acc_status(&rows[i]),
                  rows[i].message);
     }
     return acbb_cli_runs_failed("bench accuracy", failed, ran, first,
