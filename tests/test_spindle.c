@@ -124,9 +124,32 @@ static void test_rigid_one_support(void)
     }
     ok(run_sim(ref, &b), "(a) set converged: %s", b.message);
     const acbb_spindle_set_view *f = &a.spindle.sets[0];
-    is_close(f->axial_N, FA, 1e-9, 1e-9, "(a) front set's thrust = the nose's");
-    is_close(f->radial_N, FR, 1e-9, 1e-9, "(a) front set's radial load = the nose's");
-    is_close(f->moment_Nm, FRONT_X * FR, 1e-9, 1e-9, "(a) front set's moment = F_r a");
+    /* The front set's loads are its support's reaction at the shaft's
+     * solution, a sum over its members' balls. Each ball is solved to a
+     * force residual of mech_tol x its bearing's load per ball
+     * (mechanics.c ball_force_scale); over the set's balls that is
+     * mech_tol x sum(|Fx| + |Fz|) of the members, at most mech_tol x
+     * sqrt(2) x the sum of their inner contact loads Qi (the set alone
+     * carries the same balls' loads: asserted below to 1e-6). The shaft's
+     * Newton takes its last step whole once it is below 100 mech_tol of the
+     * displacements (spindle_mech.c) with a tangent good to 1e-4, which
+     * leaves 1e-2 of that on top. The moment's error is those forces on
+     * arms up to the pitch radius plus a member's offset from the set's
+     * centre. A balance off by 1e-6 of the loads fails (3.8x on the thrust
+     * here: 1.5e-4 N against 3.9e-5 N); 1e-9 of them (a different, equally
+     * converged root: 48.00000006 N m once) does not. */
+    acbb_set_sim *front = sp->st[ACBB_FRONT].ss;
+    double sum_q = 0.0, arm = 0.0;
+    for (int k = 0; k < 2; k++) {
+        acbb_sim_bearing_snapshot(ref, k, &bb);
+        for (int j = 0; j < bb.n_balls; j++) sum_q += bb.balls[j].Qi;
+        arm = fmax(arm, fabs(sp->st[ACBB_FRONT].w.x[k]));
+    }
+    arm += 0.5 * acbb_mech_geometry(front->b[0]->mech)->dm;
+    const double tol_F = r.mech_tol * M_SQRT2 * sum_q, tol_M = tol_F * arm;
+    is_close(f->axial_N, FA, 0.0, tol_F, "(a) front set's thrust = the nose's");
+    is_close(f->radial_N, FR, 0.0, tol_F, "(a) front set's radial load = the nose's");
+    is_close(f->moment_Nm, FRONT_X * FR, 0.0, tol_M, "(a) front set's moment = F_r a");
     for (int k = 0; k < 2; k++) {
         acbb_sim_bearing_snapshot(ref, k, &bb);
         double Q = 0.0, ai = 0.0, ao = 0.0;
