@@ -506,7 +506,8 @@ static void test_first_shared(void)
     base.scene = load("presets/7008C.ini");
     warm_run(&base, ACBB_BATCH_TRANSIENT, NULL);
     /* key, value, 1: its passes taken (a thermal network's input, an
-     * expansion coefficient); 0: read by Level 2, made afresh */
+     * expansion coefficient, the rolling hysteresis, the oil's specific
+     * heat); 0: read by Level 2, made afresh */
     static const struct {
         const char *key, *val;
         int taken;
@@ -514,7 +515,8 @@ static void test_first_shared(void)
         { "mounting.h_fit_outer_W_m2K", "20000", 1 }, { "mounting.h_fit_inner_W_m2K", "1000", 1 },
         { "mounting.h_natural_W_m2K", "50", 1 }, { "thermal.contact_multiplier", "2", 1 },
         { "lubricant.mixture_k_W_mK", "0.06", 1 }, { "surroundings.cap_h_W_m2K", "50", 1 },
-        { "materials.ring_expansion_ppm_K", "13", 1 },
+        { "materials.ring_expansion_ppm_K", "13", 1 }, { "lubricant.hysteresis_loss", "0.01", 1 },
+        { "lubricant.oil_cp_J_kgK", "2100", 1 },
         { "lubricant.limiting_shear_ratio", "0.1", 0 }, { "lubricant.drag_coefficient", "0.5", 0 },
         { "lubricant.oil_k_W_mK", "0.15", 0 },
     };
