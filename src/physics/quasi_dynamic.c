@@ -214,6 +214,49 @@ acbb_status acbb_qd_renew(acbb_qd *q, int grid)
     return ACBB_OK;
 }
 
+/* tc: src's scalars in the tables of `tables` (acbb_traction_prepare
+ * writes the tables of every contact an update solves before
+ * acbb_traction_eval reads them). */
+static void contact_scalars(acbb_traction_contact *tc, const acbb_traction_contact *src,
+                            const acbb_traction_contact *tables)
+{
+    acbb_traction_contact own = *tables;
+    *tc = *src;
+    tc->cap = own.cap;
+    tc->P = own.P;
+    tc->w = own.w;
+    tc->p = own.p;
+    tc->eta = own.eta;
+    tc->tb = own.tb;
+    tc->tlim = own.tlim;
+}
+
+acbb_qd *acbb_qd_save(const acbb_qd *q)
+{
+    size_t head = offsetof(acbb_qd, b), n = head + sizeof q->b[0] * (size_t)q->used;
+    acbb_qd *t = malloc(n);
+    if (!t) return NULL;
+    memcpy(t, q, n);
+    static const acbb_traction_contact no_tables = { 0 };
+    t->solver = NULL; /* nor q's tables */
+    contact_scalars(&t->ci, &q->ci, &no_tables);
+    contact_scalars(&t->co, &q->co, &no_tables);
+    return t;
+}
+
+void acbb_qd_restore(acbb_qd *q, const acbb_qd *saved)
+{
+    /* q's balls past saved's are cleared, as saved's were. */
+    if (q->used > saved->used)
+        memset(&q->b[saved->used], 0, sizeof q->b[0] * (size_t)(q->used - saved->used));
+    memcpy(q->b, saved->b, sizeof q->b[0] * (size_t)saved->used);
+    contact_scalars(&q->ci, &saved->ci, &q->ci);
+    contact_scalars(&q->co, &saved->co, &q->co);
+    q->skip_tol = saved->skip_tol;
+    q->path = saved->path;
+    q->used = saved->used;
+}
+
 void acbb_qd_free(acbb_qd *q)
 {
     if (!q) return;

@@ -25,6 +25,17 @@ acbb_status acbb_qd_new(int grid, acbb_qd **out);
  * allocations and clearing). On failure q is still q's to free. */
 acbb_status acbb_qd_renew(acbb_qd *q, int grid);
 void acbb_qd_free(acbb_qd *q);
+/* What q's updates leave for the next (issue 30: a perturbed transient
+ * takes its first state's Level 2 from the base run's, sim_first.c):
+ * every ball's record (Jacobian, flags, inputs, tolerance, root
+ * history), the skip and path settings and the traction contacts'
+ * scalars; not the contacts' point tables, which every solve prepares
+ * before it reads them, nor the GSL solver, which every hybrid solve
+ * sets afresh. A malloc'd copy (free() it; NULL when out of memory);
+ * acbb_qd_restore puts it into q, which is then, for every later
+ * update, the q it was saved from. */
+acbb_qd *acbb_qd_save(const acbb_qd *q);
+void acbb_qd_restore(acbb_qd *q, const acbb_qd *saved);
 
 /* Solve Level 2 for every distinct ball of st at inner-ring speed omega_i,
  * writing qd_w, tr_i, tr_o and traction_valid. Balls with a contact load

@@ -228,6 +228,7 @@ static int setup_fits(const acbb_sim *sim, const acbb_sim_setup *from)
 static void setup_free(acbb_sim_setup *u)
 {
     if (!u) return;
+    acbb_simx_first_free(u->first);
     acbb_mech_free(u->built);
     acbb_mech_free(u->ran);
     free(u);
@@ -239,6 +240,7 @@ static acbb_status transient_mechanics(acbb_sim *sim, const acbb_sim_setup *from
     if (setup_fits(sim, from)) {
         acbb_mech_adopt(sim->mech, from->ran);
         acbb_mech_state_copy(&sim->ms, &from->ms);
+        sim->setup_from = from; /* its first state too, if the same (sim_first.c) */
         return ACBB_OK;
     }
     acbb_sim_setup *u = sim->keep_setup ? calloc(1, sizeof *u) : NULL;
@@ -361,6 +363,7 @@ static acbb_status sim_init(acbb_sim *sim, const acbb_scene *s, const double *T_
     if (rc == ACBB_OK && !sim->no_first_state)
         rc = acbb_simx_evaluate(sim, err);
     sim->setting_up = 0;
+    sim->setup_from = NULL; /* the caller's */
     sim->setup_ms = acbb_now_ms() - t0;
     if (rc == ACBB_WALL_LIMIT) return setup_wall(s, err);
     if (rc != ACBB_OK) return rc;

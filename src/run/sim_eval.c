@@ -242,7 +242,7 @@ static acbb_status level2_pass(acbb_sim *sim, const acbb_oil_state *oi, const ac
 /* Equilibrium, and at the quasi-dynamic level the ball speeds from
  * traction equilibrium, iterated a few passes (the remaining mismatch
  * shrinks over the thermal steps; the final polish converges it). */
-static acbb_status mechanics(acbb_sim *sim, const oil_env *oil, acbb_error *err)
+static acbb_status converge(acbb_sim *sim, const oil_env *oil, acbb_error *err)
 {
     /* Inside a transient step with warm ball speeds the Level-2 pass below
      * re-solves the equilibrium anyway, so the first solve is skipped (the
@@ -277,6 +277,18 @@ static acbb_status mechanics(acbb_sim *sim, const oil_env *oil, acbb_error *err)
         if (rc != ACBB_OK || change < QD_TOL) return rc;
     }
     return ACBB_OK;
+}
+
+/* The set-up's first state takes its passes from a run that made them
+ * with the same inputs, or keeps its own for others (sim_first.c). */
+static acbb_status mechanics(acbb_sim *sim, const oil_env *oil, acbb_error *err)
+{
+    if (sim->setting_up && acbb_simx_first_take(sim, &oil->i, &oil->o, &oil->mix))
+        return ACBB_OK;
+    acbb_status rc = converge(sim, oil, err);
+    if (rc == ACBB_OK && sim->setting_up)
+        acbb_simx_first_keep(sim, &oil->i, &oil->o, &oil->mix);
+    return rc;
 }
 
 /* Mechanics + losses + network resistances at T^k. */

@@ -49,10 +49,12 @@ void acbb_simx_snapshot_values(const acbb_sim *sim, acbb_snapshot *o);
  * (acbb_mech_same) at the same speed reaches the same bits (issue 30:
  * the perturbed studies' transients, whose inputs the mechanics mostly
  * does not read). */
+typedef struct acbb_sim_first acbb_sim_first;
 typedef struct {
     acbb_mech *built, *ran;
     double omega;
     acbb_mech_state ms;
+    acbb_sim_first *first;       /* owned: its first state's passes (sim_first.c); NULL none */
 } acbb_sim_setup;
 
 struct acbb_warm {

@@ -95,7 +95,20 @@ struct acbb_sim {
     int warm_started;          /* sim_init started from a warm state (acbb_warm) */
     int cleared_balls;         /* ms.ball and bl are zero below this (sim.c sim_alloc) */
     acbb_sim_setup *setup;     /* owned: the kept set-up, until acbb_simx_warm_save */
+    const acbb_sim_setup *setup_from; /* the set-up taken (not owned), during sim_init only */
 };
+
+/* sim_first.c: the first state's mechanics and Level-2 passes of a
+ * transient that took its set-up (setup_from) from a run that kept them,
+ * when every input of those passes is the same bits: 1 if taken (sim's
+ * state, mechanics and Level-2 workspaces as the passes would leave
+ * them), 0 (nothing changed) if they are to be made. _keep: the passes
+ * just made, into sim's own kept set-up. */
+int acbb_simx_first_take(acbb_sim *sim, const acbb_oil_state *oi, const acbb_oil_state *oo,
+                         const acbb_mixture *mix);
+void acbb_simx_first_keep(acbb_sim *sim, const acbb_oil_state *oi, const acbb_oil_state *oo,
+                          const acbb_mixture *mix);
+void acbb_simx_first_free(acbb_sim_first *f);
 
 /* sim_eval.c: one evaluation of the mechanical/tribological state at T^k
  * (expansions, mechanics, losses, network, heat sources); its inputs to
