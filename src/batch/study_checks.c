@@ -174,6 +174,8 @@ static void eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
     } else {
         out->n_checks = out->n_values = 0;
         out->verdict = V_NOT_EVAL;
+        out->text_free = 1;
+        out->text_suspect = 0;
     }
     out->num = row->num;
     out->statement = row->statement;
@@ -197,10 +199,9 @@ void acbb_study_eval_row(const acbb_study_row *row, const acbb_study_runs *runs,
 int acbb_study_eval_verdicts(const acbb_study_row *row, const acbb_study_runs *runs,
                              acbb_study_item *out)
 {
-    acbb_study_text_free(1);
     eval_row(row, runs, out, 0);
-    int sure = !acbb_study_text_suspect();
-    acbb_study_text_free(0);
+    int sure = !out->text_suspect;
+    out->text_free = out->text_suspect = 0;
     return sure;
 }
 

@@ -9,23 +9,13 @@
 #include <string.h>
 #include "study_priv.h"
 
-static _Thread_local int t_free, t_suspect;
-
-void acbb_study_text_free(int on)
-{
-    t_free = on;
-    t_suspect = 0;
-}
-
-int acbb_study_text_suspect(void) { return t_suspect; }
-
 /* One character of the text-free mode's shadow text: a "nan" or "inf"
  * ending here could be a token sanitize() (study_checks.c) would catch. */
 static void shadow(tbuf *b, char c)
 {
     if ((b->win[0] == 'n' && b->win[1] == 'a' && c == 'n')
         || (b->win[0] == 'i' && b->win[1] == 'n' && c == 'f'))
-        t_suspect = 1;
+        b->it->text_suspect = 1;
     b->win[0] = b->win[1];
     b->win[1] = c;
     if (b->n < sizeof b->s - 1) b->n++;
@@ -65,7 +55,7 @@ static const char *shadow_conv(tbuf *b, const char *p, va_list *ap)
         len = *p == 'l' && len == 'l' ? 'L' : *p == 'h' ? len : *p;
     if (*p && strchr("fFeEgGaA", *p)) {
         double x = len == 'L' ? (double)va_arg(*ap, long double) : va_arg(*ap, double);
-        if (!isfinite(x)) t_suspect = 1;
+        if (!isfinite(x)) b->it->text_suspect = 1;
         shadow(b, '0');
     } else if (*p && strchr("diouxX", *p)) {
         skip_int(len, ap);
@@ -90,7 +80,7 @@ static void shadow_text(tbuf *b, const char *fmt, va_list ap)
     va_copy(a, ap);
     for (const char *p = fmt; p && *p;) {
         if (*p != '%') shadow(b, *p++);
-        else if (!(p = shadow_conv(b, p + 1, &a))) t_suspect = 1;
+        else if (!(p = shadow_conv(b, p + 1, &a))) b->it->text_suspect = 1;
     }
     va_end(a);
 }
@@ -99,7 +89,7 @@ void acbb_study_tb(tbuf *b, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    if (t_free) {
+    if (b->it && b->it->text_free) {
         shadow_text(b, fmt, ap);
         va_end(ap);
         return;
@@ -116,7 +106,7 @@ void acbb_study_tb(tbuf *b, const char *fmt, ...)
 
 void acbb_study_add_val(acbb_study_item *it, const char *key, double v)
 {
-    if (t_free || it->n_values >= ACBB_STUDY_MAX_VALUES) return;
+    if (it->text_free || it->n_values >= ACBB_STUDY_MAX_VALUES) return;
     snprintf(it->values[it->n_values].key, sizeof it->values[0].key, "%s", key);
     it->values[it->n_values++].v = v;
 }
@@ -129,7 +119,7 @@ acbb_study_check *acbb_study_add_check(acbb_study_item *it, const char *id, verd
     snprintf(c->id, sizeof c->id, "%s", id);
     c->verdict = v;
     c->info = 0;
-    if (t_free) c->text[0] = '\0';
+    if (it->text_free) c->text[0] = '\0';
     else memcpy(c->text, text->s, sizeof c->text);
     return c;
 }
@@ -140,7 +130,7 @@ bool acbb_study_need(acbb_study_item *it, const char *id, const acbb_study_runs 
     for (int i = 0; i < 2 * NL; i++) {
         const acbb_study_point *p = &r->sweep[lv][blk][i];
         if (p->ok) continue;
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         tb(&t, "run %s failed (%s): %s", p->label, acbb_status_name(p->status), p->message);
         add_check(it, id, V_NOT_EVAL, &t);
         return false;
@@ -265,7 +255,7 @@ void acbb_study_val_series(acbb_study_item *it, const char *name, int blk, const
                            int a, int z)
 {
     char key[48];
-    for (int k = a; !t_free && k <= z; k++) {
+    for (int k = a; !it->text_free && k <= z; k++) {
         snprintf(key, sizeof key, "%s_%g%s", name, xs(blk)[k], blk == BLK_LOAD ? "N" : "rpm");
         add_val(it, key, v[k]);
     }
@@ -293,7 +283,7 @@ void acbb_study_light_large(acbb_study_item *it, const char *ida, const char *id
     int n1 = 0, n2 = 0;
     for (int k = 0; k < N_LIGHT; k++) n1 += wte[k] > te[k];
     for (int k = N_LIGHT; k < NL; k++) n2 += te[k] > wte[k];
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     tb_pairs(&t, what, BLK_LOAD, te, wte, 0, N_LIGHT - 1, 4);
     tb(&t, fmt_light, n1, N_LIGHT);
     add_check(it, ida, V(n1 == N_LIGHT), &t);

@@ -53,7 +53,7 @@ void acbb_study_item2(const acbb_study_runs *c, acbb_study_item *it)
     val_series(it, "share_pct", BLK_LOAD, pct, 0, NL - 1);
     for (int half = 0; half < 2; half++) {
         int a = half ? N_LIGHT : 0, z = half ? NL - 1 : N_LIGHT - 1, n = 0;
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         tb(&t, "share of %s in sum|dP_k| (dP_k = TE-WTE of each loss):",
            half ? "P_t+P_r" : "P_t+P_L");
         for (int k = a; k <= z; k++) {
@@ -85,7 +85,7 @@ void acbb_study_item3(const acbb_study_runs *c, acbb_study_item *it)
             }
         }
     add_val(it, "max_rel_dPv_pct", 100.0 * worst);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     tb(&t, "max |P_v(TE)-P_v(WTE)|/P_v(WTE) over the 24 TE/WTE pairs = %.3g %% (at %g %s, %s "
        "sweep); need < 2 %%", 100.0 * worst, xs(wb)[wk], xunit(wb),
        wb == BLK_LOAD ? "15000 rpm load" : wb == BLK_S100 ? "100 N speed" : "1000 N speed");
@@ -113,7 +113,7 @@ static bool need_traj(acbb_study_item *it, const char *id, const acbb_study_runs
     for (int k = 0; k < NL; k++) {
         const acbb_study_point *p = P(c, LV_BASE, BLK_LOAD, k, TE);
         if (p->n_traj > 0 && p->traj) continue;
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         tb(&t, "run %s: no transient recorded", p->label);
         add_check(it, id, V_NOT_EVAL, &t);
         return false;
@@ -127,7 +127,7 @@ static bool need_traj(acbb_study_item *it, const char *id, const acbb_study_runs
  * solve's, another branch (MODEL.md 14). */
 static void runaway_note(acbb_study_item *it, const char *id, const acbb_study_runs *c)
 {
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     for (int k = 0; k < NL; k++) {
         const acbb_study_point *p = P(c, LV_BASE, BLK_LOAD, k, TE);
         if (p->runaway_t > 0.0) tb(&t, "%s%g N at t = %.0f s", t.n ? ", " : "", k_loads[k],
@@ -164,7 +164,7 @@ void acbb_study_item4(const acbb_study_runs *c, acbb_study_item *it)
 {
     if (!need(it, "4", c, LV_BASE, BLK_LOAD) || !need_traj(it, "4", c)) return;
     int n_early = 0, n_final = 0, n_one = 0, n_ball = 0;
-    tbuf ta = { .n = 0 }, tc = { .n = 0 }, td = { .n = 0 };
+    tbuf ta = TB(it), tc = TB(it), td = TB(it);
     tb(&ta, "(theta_i+theta_icen) - theta_o um at step 0 / final:");
     tb(&tc, "sign changes of (theta_i+theta_icen) - theta_o over time (at t s):");
     tb(&td, "final theta_ba / min(theta_i+theta_icen, theta_o), need <= %.2f:",
@@ -195,7 +195,7 @@ void acbb_study_item4(const acbb_study_runs *c, acbb_study_item *it)
     static const getter g[3] = { g_exp_in, g_exp_out, g_exp_ball };
     static const char *const nm[3] = { "theta_i+theta_icen", "theta_o", "theta_ba" };
     static const char *const key[3] = { "exp_inner_um", "exp_outer_um", "exp_ball_um" };
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     bool ok = true;
     tb(&t, "final expansions um (TE); need falling over 50-200 N, rising over 400-1000 N. ");
     for (int i = 0; i < 3; i++) {
@@ -228,7 +228,7 @@ static size_t argmax_traj(const acbb_study_point *p, int what)
 void acbb_study_item5(const acbb_study_runs *c, acbb_study_item *it)
 {
     if (!need(it, "5", c, LV_BASE, BLK_LOAD) || !need_traj(it, "5", c)) return;
-    tbuf tr = { .n = 0 }, tp = { .n = 0 }, tl = { .n = 0 }, tg = { .n = 0 }, tx = { .n = 0 };
+    tbuf tr = TB(it), tp = TB(it), tl = TB(it), tg = TB(it), tx = TB(it);
     int n_rise = 0, n_peak = 0, n_light = 0, n_large = 0, n_dx = 0;
     tb(&tr, "peak rise of Qi/Qo over step 0 (need > %.1f %%):", 100.0 * REPORT_RISE);
     tb(&tp, "time of Qi peak / of max (theta_i+theta_icen-theta_o) / end of run s, final Qi "
@@ -305,7 +305,7 @@ void acbb_study_item5(const acbb_study_runs *c, acbb_study_item *it)
 static void item6_static(const acbb_study_runs *c, const double *wi, const double *wo,
                          acbb_study_item *it)
 {
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     int n = 0;
     for (int k = 0; k < N_LIGHT; k++) {
         const acbb_study_point *p = &c->statics[k];
@@ -340,7 +340,7 @@ void acbb_study_item6(const acbb_study_runs *c, acbb_study_item *it)
     val_series(it, "alpha_i_WTE_deg", BLK_LOAD, wi, 0, NL - 1);
     val_series(it, "alpha_o_WTE_deg", BLK_LOAD, wo, 0, NL - 1);
 
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     int n = 0;
     /* MODEL.md 12: "room temperature" is the WTE state, not step 0 of the TE
      * run (which already carries the centrifugal ring growth). */
@@ -386,7 +386,7 @@ void acbb_study_item7(const acbb_study_runs *c, acbb_study_item *it)
     double te[NL], wte[NL];
     if (!load_pair(c, it, "7", LV_BASE, acbb_study_g_T5, "T5", "C", te, wte)) return;
     bool a = incr(te, 3, NL - 1), b = incr(wte, 3, NL - 1);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     tb_pairs(&t, "T5 C", BLK_LOAD, te, wte, 0, NL - 1, 5);
     tb(&t, "; over 200-1000 N: TE %s, WTE %s", a ? "increases" : "does not increase",
        b ? "increases" : "does not increase");
@@ -409,7 +409,7 @@ void acbb_study_item8(const acbb_study_runs *c, acbb_study_item *it)
         }
         val_series(it, half ? "T5_WTE_minus_TE_mK_1000N" : "T5_WTE_minus_TE_mK_100N", blk, d, 0,
                    NL - 1);
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         tb(&t, "at %s: T5(WTE)-T5(TE) mK:", half ? "1000 N" : "100 N");
         for (int k = 0; k < NL; k++)
             tb(&t, " %g rpm %+.2f%s", k_speeds[k], d[k], k < NL - 1 ? "," : "");
@@ -429,7 +429,7 @@ void acbb_study_item9(const acbb_study_runs *c, acbb_study_item *it)
         double w = acbb_study_g_total(&P(c, LV_BASE, blk, k, WTE)->last);
         double r = fabs(te - w) / w;
         add_val(it, half ? "rel_dPT_pct_16000rpm_1000N" : "rel_dPT_pct_2000rpm_100N", 100.0 * r);
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         tb(&t, "%g rpm, %s: P_T TE %.4g W, WTE %.4g W, |dP_T|/P_T(WTE) = %.3g %%; need %s",
            k_speeds[k], half ? "1000 N" : "100 N", te, w, 100.0 * r, half ? "> 10 %" : "< 5 %");
         add_check(it, id, V(half ? r > 0.10 : r < 0.05), &t);

@@ -39,7 +39,7 @@ void acbb_study_item10(const acbb_study_runs *c, acbb_study_item *it)
         fw[k] = 100.0 * lw[k] / pw[k];
     }
     val_series(it, "P_L_share_TE_pct", BLK_LOAD, ft, 0, NL - 1);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     int n = 0;
     for (int k = 0; k < N_LIGHT; k++) n += ft[k] >= 100.0 * REPORT_SIGNIFICANT;
     tb_series(&t, "P_L/P_T % (TE)", BLK_LOAD, ft, 0, NL - 1, 3);
@@ -68,7 +68,7 @@ void acbb_study_item12(const acbb_study_runs *c, acbb_study_item *it)
 {
     double te[NL], wte[NL];
     if (!load_pair(c, it, "12", LV_L2, g_spin, "P_s", "W", te, wte)) return;
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     tb(&t, "P_s W (TE/WTE): 50 N %.4g/%.4g, 100 N %.4g/%.4g; need P_s(50 N) < P_s(100 N)",
        te[0], wte[0], te[1], wte[1]);
     add_check(it, "12a", V(te[0] < te[1] && wte[0] < wte[1]), &t);
@@ -95,7 +95,7 @@ void acbb_study_item13(const acbb_study_runs *c, acbb_study_item *it)
         for (int m = 0; m < 2; m++) series(c, LV_BASE, b, m, g_rolling, v[b][m]);
     val_series(it, "P_r_TE_W", BLK_LOAD, v[BLK_LOAD][TE], 0, NL - 1);
     val_series(it, "P_r_WTE_W", BLK_LOAD, v[BLK_LOAD][WTE], 0, NL - 1);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     bool a = incr(v[BLK_LOAD][TE], 0, NL - 1) && incr(v[BLK_LOAD][WTE], 0, NL - 1);
     tb_pairs(&t, "P_r W", BLK_LOAD, v[BLK_LOAD][TE], v[BLK_LOAD][WTE], 0, NL - 1, 4);
     tb(&t, "; increases with F_x: %s", a ? "yes" : "no");
@@ -142,7 +142,7 @@ void acbb_study_item14(const acbb_study_runs *c, acbb_study_item *it)
                 }
             }
     add_val(it, "max_rel_dhc_pct", 100.0 * worst);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     tb(&t, "max |h_c(TE)-h_c(WTE)|/h_c(WTE) over 24 pairs x 2 contacts = %.3g %% (%s contact, "
        "%g %s of the %s sweep: %.4g vs %.4g um); need < 5 %%", 100.0 * worst,
        wc ? "outer" : "inner", xs(wb)[wk], xunit(wb),
@@ -163,7 +163,7 @@ void acbb_study_item15(const acbb_study_runs *c, acbb_study_item *it)
         series(c, LV_L2, BLK_S100, WTE, g_slide_o, ow);
         val_series(it, "slide_i_TE_mps_100N", BLK_S100, it_, 0, NL - 1);
         val_series(it, "slide_o_TE_mps_100N", BLK_S100, ot, 0, NL - 1);
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         bool a = incr(it_, 0, NL - 1) && incr(iw, 0, NL - 1);
         tb(&t, "100 N ");
         tb_pairs(&t, "inner sliding m/s", BLK_S100, it_, iw, 0, NL - 1, 3);
@@ -193,7 +193,7 @@ void acbb_study_item15(const acbb_study_runs *c, acbb_study_item *it)
             worst = fmax(worst, fmax(it_[k], ot[k]) / u);
         }
         add_val(it, "slide_over_orbit_max_pct_1000N", 100.0 * worst);
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         tb(&t, "1000 N: largest sliding speed / orbital speed omega_m d_m/2 = %.3g %% (TE); "
            "micro-scale if < %.0f %%", 100.0 * worst, 100.0 * REPORT_MICRO);
         if (ok100) {
@@ -237,7 +237,7 @@ void acbb_study_item16(const acbb_study_runs *c, acbb_study_item *it)
     val_series(it, "spin_i_TE_radps_1000N", BLK_S1000, si[1][TE], 0, NL - 1);
     val_series(it, "spin_o_TE_radps_1000N", BLK_S1000, so[1][TE], 0, NL - 1);
     for (int h = 0; h < 2; h++) {
-        tbuf t = { .n = 0 };
+        tbuf t = TB(it);
         bool a = incr(si[h][TE], 0, NL - 1) && incr(si[h][WTE], 0, NL - 1);
         tb(&t, "%s ", h ? "1000 N" : "100 N");
         tb_pairs(&t, "|omega_si| rad/s", BLK_S100, si[h][TE], si[h][WTE], 0, NL - 1, 4);
@@ -248,7 +248,7 @@ void acbb_study_item16(const acbb_study_runs *c, acbb_study_item *it)
     double sso[2][NL];
     series(c, LV_L2, BLK_S100, TE, g_spin_o_signed, sso[TE]);
     series(c, LV_L2, BLK_S100, WTE, g_spin_o_signed, sso[WTE]);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     acbb_study_shape sh[2];
     bool pt = acbb_study_peak_tail(sso[TE], 0, NL - 1, &sh[TE]);
     bool p = acbb_study_peak_tail(sso[WTE], 0, NL - 1, &sh[WTE]) && pt;
@@ -306,7 +306,7 @@ void acbb_study_item17(const acbb_study_runs *c, acbb_study_item *it)
     val_series(it, "abs_omega_x_TE_radps", BLK_LOAD, wx[TE], 0, NL - 1);
     val_series(it, "omega_z_TE_radps", BLK_LOAD, wz[TE], 0, NL - 1);
     val_series(it, "abs_omega_y_TE_radps", BLK_LOAD, wy[TE], 0, NL - 1);
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     bool a = true;
     for (int m = 0; m < 2; m++) {
         double early = wx[m][0] - wx[m][N_LIGHT], late = fabs(wx[m][N_LIGHT] - wx[m][NL - 1]);
@@ -337,7 +337,7 @@ void acbb_study_item17(const acbb_study_runs *c, acbb_study_item *it)
 static void item18_zero(const acbb_study_runs *c, acbb_study_item *it)
 {
     const acbb_study_point *z = c->zero;
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     if (!z->ok) {
         tb(&t, "zero-speed run failed (%s): %s", acbb_status_name(z->status), z->message);
         add_check(it, "18a", V_NOT_EVAL, &t);
@@ -358,7 +358,7 @@ static void item18_zero(const acbb_study_runs *c, acbb_study_item *it)
  * the snapshot); 18d: no loss term below zero at any step of any run. */
 static void item18_balance(const acbb_study_runs *c, acbb_study_item *it)
 {
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     double worst = 0.0, worst_abs = 0.0, min_loss = INFINITY;
     size_t n_ok = 0;
     const char *wl = "";
@@ -394,7 +394,7 @@ void acbb_study_item18(const acbb_study_runs *c, acbb_study_item *it)
     /* The other two sanity statements need the physics recomputed below the
      * sim API; they are tests, not study checks (the study reads snapshots
      * only). Reported so the reader knows where they are judged. */
-    tbuf t = { .n = 0 };
+    tbuf t = TB(it);
     tb(&t, "the static thrust solution vs the closed-form relation of docs/physics.md section 3 "
        "(bisection, K_n at the operating angle), to 1e-4: judged by tests/test_study.c, "
        "not from the study's runs");

@@ -93,17 +93,17 @@ typedef struct {
     char s[ACBB_STUDY_TEXT];
     size_t n;
     char win[2];                 /* text-free mode: the last two characters (study_evidence.c) */
+    acbb_study_item *it;         /* the item the text is for (its text_free mode) */
 } tbuf;
+#define TB(item) { .n = 0, .it = (item) }
 
 /* Text-free mode (issue 30: a perturbed study's check table, whose texts
- * only a changed verdict prints): on this thread tb formats nothing (n
- * still counts what it would write), add_check keeps no text, add_val no
- * value. A number printed non-finite, or "nan" or "inf" in the text it
- * would have made (numbers as "0"), marks the evaluation suspect: its
- * verdicts may differ from the text's (sanitize), so it is made again with
- * text. */
-void acbb_study_text_free(int on);
-int acbb_study_text_suspect(void);
+ * only a changed verdict prints), on while an item's text_free is set: tb
+ * formats nothing for it (n still counts what it would write), add_check
+ * keeps no text, add_val no value. A number printed non-finite, or "nan"
+ * or "inf" in the text it would have made (numbers as "0"), sets the
+ * item's text_suspect: its verdicts may differ from the text's (sanitize),
+ * so it is made again with text. */
 /* acbb_study_eval_row without the texts (and values): 1 when its
  * verdicts, item and checks, are the text's (none suspect), else 0 (make
  * it with text). */

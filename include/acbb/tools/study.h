@@ -130,6 +130,10 @@ typedef struct {
     acbb_study_check checks[ACBB_STUDY_MAX_CHECKS];
     int n_values;
     acbb_study_value values[ACBB_STUDY_MAX_VALUES];
+    /* Internal to the check table's evaluation, 0 in every result: the
+     * text-free mode (a perturbed study's rows: no text or value made) and
+     * whether a text it did not make could have changed a verdict. */
+    int text_free, text_suspect;
 } acbb_study_item;
 
 /* One row of the check table. fn appends checks and values to `out`
